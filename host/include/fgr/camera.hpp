@@ -1,0 +1,40 @@
+#pragma once
+// Pinhole camera geometry: the orthonormal basis of a view, the primary ray through a pixel, and
+// smooth interpolation of a view along a keyframed camera path.
+
+#include <glm/vec3.hpp>
+
+#include "fgr/scene.hpp"
+
+namespace fgr {
+
+struct CameraBasis {
+    glm::vec3 eye{0.0f};
+    glm::vec3 forward{0.0f, 1.0f, 0.0f};
+    glm::vec3 right{1.0f, 0.0f, 0.0f};
+    glm::vec3 up{0.0f, 0.0f, 1.0f};
+    float tan_half_fov = 1.0f;  // of the horizontal field of view
+};
+
+// forward = normalize(target - position), right = normalize(cross(forward, view.up)),
+// up = cross(right, forward). An up hint parallel to the view direction is replaced by a world
+// axis so the basis stays finite.
+CameraBasis camera_basis(const CameraView& view);
+
+// Angle (radians, small-angle approximation) one pixel subtends at the image centre.
+float pixel_angle(const CameraBasis& basis, int width);
+
+// Unit direction of the ray through image point (px, py), pixel (0, 0) being the top-left one and
+// (px + 0.5, py + 0.5) its centre. Square pixels: the vertical extent follows from the aspect.
+glm::vec3 primary_ray_direction(const CameraBasis& basis, int width, int height, float px,
+                                float py);
+
+// The view at `time` along a path (clamped to the first and last keyframe times). Position, target
+// and fov follow a uniform Catmull-Rom spline through the keyframes in each segment's local
+// parameter, the end keyframes doubling as their own outer neighbours; fov is kept in [1, 179].
+// Up is a normalised lerp of the segment's ups, made orthogonal to the resulting view direction.
+// At a keyframe's time position, target and fov are that keyframe's, and the basis is the one the
+// keyframe itself gives. Throws std::invalid_argument for a path without keyframes.
+CameraView evaluate_camera_path(const CameraPath& path, float time);
+
+}  // namespace fgr

@@ -1,0 +1,35 @@
+#pragma once
+// Assembling a scene's OpenCL program: switches + kernel library prelude + generated parameter
+// accessors + the scene's source + the library's marching, shading and entry points. Every
+// piece starts with a #line directive, so compiler messages name the scene's own file and line.
+
+#include <cstdint>
+#include <string>
+
+#include "fgr/scene.hpp"
+
+namespace fgr {
+
+// Compile-time choices: each distinct set is a distinct program.
+struct KernelSwitches {
+    int packet_width = 1;  // rays per work-item: 1, 4, 8 or 16
+    uint64_t effects = 0;  // fgr_effect_flag bits compiled in
+};
+
+struct AssembledProgram {
+    std::string source;
+    std::string options;  // clBuildProgram options: the -D switches
+};
+
+AssembledProgram assemble_program(const Scene& scene, const KernelSwitches& switches);
+
+// "#define param_<id> ..." lines reading each parameter from the buffer `fgr_params`.
+std::string param_accessors(const Scene& scene);
+
+// The -D options for the switches, e.g. "-DFGR_WIDTH=16 -DFGR_EFFECT_SHADOWS".
+std::string switch_options(const KernelSwitches& switches);
+
+// Names of the effect bits, in bit order ("shadows", "ambient_occlusion").
+std::string effect_names(uint64_t effects);
+
+}  // namespace fgr

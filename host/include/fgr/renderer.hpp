@@ -1,0 +1,85 @@
+#pragma once
+// Rendering one scene on one OpenCL device: builds (or fetches from the cache) the scene's
+// program once, then renders frames whose camera and parameters change freely without a rebuild.
+
+#include <span>
+#include <vector>
+
+#include <glm/vec3.hpp>
+
+#include "fgr/image_io.hpp"
+#include "fgr/kernel_assembly.hpp"
+#include "fgr/opencl_device.hpp"
+#include "fgr/program_cache.hpp"
+#include "fgr/scene.hpp"
+
+namespace fgr {
+
+struct FrameRequest {
+    int width = 640;
+    int height = 480;
+    CameraView view;
+    std::vector<float> params;  // laid out as default_param_values(scene)
+};
+
+struct Frame {
+    Image8 image;               // sRGB, gamma-encoded
+    std::vector<float> depth;   // row-major distance along the ray; -1 where the ray missed
+    long hits = 0;              // pixels whose ray met the surface
+    double render_ms = 0.0;     // kernel, read-back and encoding; no build, no file output
+};
+
+// Image sizes fgr accepts; larger would not fit device buffers on small machines.
+constexpr int kMaxImageSide = 16384;
+
+class Renderer {
+public:
+    // Throws KernelBuildError when the scene's source does not compile.
+    Renderer(const ComputeDevice& device, ProgramCache& cache, const Scene& scene,
+             const KernelSwitches& switches);
+
+    Frame render(const FrameRequest& request);
+
+    // The scene's DE at each point, evaluated by the kernel (same packets, same maths).
+    std::vector<float> probe_de(std::span<const glm::vec3> points,
+                                const std::vector<float>& params);
+
+    const BuildReport& build_report() const { return build_report_; }
+    const KernelSwitches& switches() const { return switches_; }
+
+private:
+    // One tiny launch of each kernel, so the driver's just-in-time work is done before the first
+    // timed frame (counted in build_report().build_ms).
+    void warm_up();
+    cl::Buffer upload(const std::vector<float>& values);
+
+    const ComputeDevice& device_;
+    const Scene& scene_;
+    KernelSwitches switches_;
+    BuildReport build_report_;
+    cl::Program program_;
+    cl::Kernel render_kernel_;
+    cl::Kernel probe_kernel_;
+    cl::Buffer lights_;
+};
+
+// Linear RGB planes (tile-major, as the kernel stores them) to an sRGB image in rows.
+struct TileLayout {
+    int packet_width;
+    int tile_w;
+    int tile_h;
+    int tiles_x;
+    int tiles_y;
+    int plane_size() const { return tiles_x * tiles_y * packet_width; }
+    // Index in a plane of pixel (x, y).
+    int index(int x, int y) const {
+        const int tile = (y / tile_h) * tiles_x + x / tile_w;
+        return tile * packet_width + (y % tile_h) * tile_w + x % tile_w;
+    }
+};
+TileLayout tile_layout(int packet_width, int width, int height);
+
+// Linear [0, 1] to 8-bit sRGB (values outside are clamped, NaN becomes 0).
+uint8_t encode_srgb(float linear);
+
+}  // namespace fgr

@@ -1,0 +1,96 @@
+#pragma once
+// The host's own copy of a scene description: everything a plugin described, validated and owned
+// by the host, so the plugin's memory is never touched after loading.
+
+#include <array>
+#include <cstdint>
+#include <filesystem>
+#include <string>
+#include <vector>
+
+#include <glm/vec3.hpp>
+
+namespace fgr {
+
+enum class ParamType { Float, Int, Bool, Vec3, Colour };
+
+struct ParamInfo {
+    std::string id;
+    std::string label;
+    std::string group;
+    std::string description;
+    ParamType type = ParamType::Float;
+    float min_value = 0.0f;
+    float max_value = 1.0f;
+    std::array<float, 3> default_value{};
+    std::vector<std::string> choices;  // Int only: names of min..max, empty when not an enum
+    bool builtin = false;              // a quality knob the host adds to every scene
+};
+
+// Floats a parameter occupies in the kernel's parameter buffer.
+int param_components(ParamType type);
+const char* param_type_name(ParamType type);
+
+struct CameraView {
+    glm::vec3 position{0.0f};
+    glm::vec3 target{0.0f};
+    glm::vec3 up{0.0f, 0.0f, 1.0f};
+    float fov_degrees = 60.0f;  // horizontal
+};
+
+struct NamedCamera {
+    std::string name;
+    CameraView view;
+};
+
+struct Keyframe {
+    float time = 0.0f;
+    CameraView view;
+};
+
+struct CameraPath {
+    std::string name;
+    std::vector<Keyframe> keyframes;  // at least two, strictly increasing time
+    float duration() const { return keyframes.back().time - keyframes.front().time; }
+};
+
+enum class LightType { Directional, Point };
+
+struct Light {
+    LightType type = LightType::Directional;
+    glm::vec3 vector{0.0f, 0.0f, 1.0f};  // towards the light (directional) or position (point)
+    glm::vec3 colour{1.0f};
+    float intensity = 1.0f;
+};
+
+struct MarchSettings {
+    uint32_t max_steps = 256;
+    float max_distance = 10.0f;
+    float hit_threshold = 1.0f;  // in pixel footprints
+    uint32_t de_iterations = 12;
+};
+
+struct Scene {
+    std::string id;
+    std::string name;
+    std::string description;
+    std::string source;       // OpenCL C source of the DE (and optional colour)
+    std::string source_name;  // file name shown in compiler messages
+    std::filesystem::path plugin_file;
+    std::vector<ParamInfo> params;  // the scene's own, then the built-in quality knobs
+    std::vector<NamedCamera> cameras;  // [0] is the default view
+    std::vector<CameraPath> camera_paths;
+    std::vector<Light> lights;
+    uint64_t effects = 0;
+    MarchSettings march;
+
+    const ParamInfo* find_param(const std::string& param_id) const;
+    const NamedCamera* find_camera(const std::string& camera_name) const;
+    const CameraPath* find_camera_path(const std::string& path_name) const;
+};
+
+// Appends the built-in quality parameters (max_steps, max_distance, hit_threshold, iterations)
+// with defaults from the scene's march settings.
+void add_builtin_params(Scene& scene);
+
+}  // namespace fgr

@@ -1,0 +1,293 @@
+#include "fgr/cli.hpp"
+
+#include <algorithm>
+#include <cstdio>
+#include <filesystem>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include <CLI/CLI.hpp>
+#include <fmt/format.h>
+#include <spdlog/sinks/stdout_color_sinks.h>
+#include <spdlog/spdlog.h>
+
+#include "fgr/camera.hpp"
+#include "fgr/discovery.hpp"
+#include "fgr/image_io.hpp"
+#include "fgr/opencl_device.hpp"
+#include "fgr/parameters.hpp"
+#include "fgr/program_cache.hpp"
+#include "fgr/renderer.hpp"
+
+namespace fgr {
+namespace {
+
+constexpr int kExitFailure = 1;
+constexpr int kExitUsage = 2;
+
+// A failure while running (not the user's typing): exit code 1.
+struct RuntimeFailure : std::runtime_error {
+    using std::runtime_error::runtime_error;
+};
+
+struct RenderOptions {
+    std::string scene;
+    std::string output;
+    int width = 640;
+    int height = 480;
+    std::vector<std::string> assignments;
+    std::optional<std::string> camera;
+    std::optional<std::string> camera_path;
+    std::optional<float> time;
+    int device = -1;
+    int packet_width = 0;  // 0: the device's preference
+};
+
+Discovery discover() { return discover_scenes(plugin_search_path(executable_dir())); }
+
+std::string scene_ids(const std::vector<Scene>& scenes) {
+    std::string ids;
+    for (const auto& scene : scenes) ids += (ids.empty() ? "" : ", ") + scene.id;
+    return ids.empty() ? "none found" : ids;
+}
+
+const Scene& find_scene(const Discovery& found, const std::string& id) {
+    for (const auto& scene : found.scenes) {
+        if (scene.id == id) return scene;
+    }
+    throw UsageError(fmt::format("unknown scene '{}' (available: {})", id, scene_ids(found.scenes)));
+}
+
+std::string range_text(const ParamInfo& param) {
+    if (param.type == ParamType::Bool) return "true|false";
+    if (!param.choices.empty()) {
+        std::string names;
+        for (const auto& choice : param.choices) names += (names.empty() ? "" : "|") + choice;
+        return names;
+    }
+    return fmt::format("[{}, {}]", param.min_value, param.max_value);
+}
+
+std::string default_text(const ParamInfo& param) {
+    const auto& value = param.default_value;
+    if (param_components(param.type) == 3) return fmt::format("{},{},{}", value[0], value[1], value[2]);
+    if (!param.choices.empty()) {
+        return param.choices.at(static_cast<size_t>(value[0] - param.min_value));
+    }
+    if (param.type == ParamType::Bool) return value[0] != 0.0f ? "true" : "false";
+    return fmt::format("{}", value[0]);
+}
+
+void print_scene(const Scene& scene) {
+    fmt::print("{}  {} - {}\n", scene.id, scene.name, scene.description);
+    fmt::print("  plugin: {}\n", scene.plugin_file.string());
+    fmt::print("  parameters:\n");
+    for (const auto& param : scene.params) {
+        fmt::print("    {:<16} {:<7} {:<24} default {:<10} {} ({})\n", param.id,
+                   param_type_name(param.type), range_text(param), default_text(param),
+                   param.label, param.group);
+    }
+    std::string cameras;
+    for (const auto& camera : scene.cameras) cameras += (cameras.empty() ? "" : ", ") + camera.name;
+    fmt::print("  cameras: {} (default: {})\n", cameras, scene.cameras.front().name);
+    std::string paths;
+    for (const auto& path : scene.camera_paths) {
+        paths += fmt::format("{}{} ({}-{} s, {} keyframes)", paths.empty() ? "" : ", ", path.name,
+                             path.keyframes.front().time, path.keyframes.back().time,
+                             path.keyframes.size());
+    }
+    fmt::print("  camera paths: {}\n", paths.empty() ? "none" : paths);
+    fmt::print("  effects: {}\n", effect_names(scene.effects));
+}
+
+int command_list() {
+    const Discovery found = discover();
+    if (found.scenes.empty()) {
+        fmt::print("no scenes found; searched:\n");
+        for (const auto& dir : plugin_search_path(executable_dir())) fmt::print("  {}\n", dir.string());
+        return 0;
+    }
+    for (size_t i = 0; i < found.scenes.size(); ++i) {
+        if (i > 0) fmt::print("\n");
+        print_scene(found.scenes[i]);
+    }
+    return 0;
+}
+
+int command_info() {
+    const auto devices = list_devices();
+    if (devices.empty()) {
+        throw RuntimeFailure("no OpenCL device found (install an OpenCL driver, e.g. pocl-opencl-icd)");
+    }
+    for (const auto& device : devices) {
+        fmt::print("device {}: {}\n", device.index, device.name);
+        fmt::print("  platform:       {}\n", device.platform);
+        fmt::print("  type:           {}\n", device.is_gpu ? "GPU" : device.is_cpu ? "CPU" : "other");
+        fmt::print("  version:        {} (driver {}, {})\n", device.version, device.driver_version,
+                   device.opencl_c_version);
+        fmt::print("  compute units:  {}\n", device.compute_units);
+        fmt::print("  global memory:  {} MiB\n", device.global_memory_bytes >> 20);
+        fmt::print("  double:         {}\n", device.has_fp64 ? "yes (cl_khr_fp64)" : "no");
+        fmt::print("  packet width:   {} rays per work-item\n", preferred_packet_width(device));
+    }
+    return 0;
+}
+
+CameraView choose_view(const Scene& scene, const RenderOptions& options) {
+    if (options.camera_path) {
+        const CameraPath* path = scene.find_camera_path(*options.camera_path);
+        if (!path) {
+            throw UsageError(fmt::format("scene '{}' has no camera path '{}' (see `fgr list`)",
+                                         scene.id, *options.camera_path));
+        }
+        const float first = path->keyframes.front().time, last = path->keyframes.back().time;
+        if (!(*options.time >= first && *options.time <= last)) {
+            throw UsageError(fmt::format("--time {} is outside camera path '{}' [{}, {}]",
+                                         *options.time, path->name, first, last));
+        }
+        return evaluate_camera_path(*path, *options.time);
+    }
+    if (options.camera) {
+        const NamedCamera* camera = scene.find_camera(*options.camera);
+        if (!camera) {
+            throw UsageError(fmt::format("scene '{}' has no camera '{}' (see `fgr list`)", scene.id,
+                                         *options.camera));
+        }
+        return camera->view;
+    }
+    return scene.cameras.front().view;
+}
+
+void check_output_path(const std::filesystem::path& output) {
+    std::string extension = output.extension().string();
+    std::transform(extension.begin(), extension.end(), extension.begin(),
+                   [](unsigned char c) { return static_cast<char>(std::tolower(c)); });
+    if (extension != ".png") {
+        throw UsageError(fmt::format("output '{}' must be a .png file", output.string()));
+    }
+    const auto directory = output.has_parent_path() ? output.parent_path() : ".";
+    std::error_code error;
+    if (!std::filesystem::is_directory(directory, error)) {
+        throw RuntimeFailure(fmt::format("cannot write '{}': directory '{}' does not exist",
+                                         output.string(), directory.string()));
+    }
+}
+
+int command_render(const RenderOptions& options) {
+    if (options.time && !options.camera_path) throw UsageError("--time needs --camera-path");
+    if (options.camera_path && !options.time) throw UsageError("--camera-path needs --time");
+    const Discovery found = discover();
+    const Scene& scene = find_scene(found, options.scene);
+    std::vector<float> params = default_param_values(scene);
+    for (const auto& assignment : options.assignments) set_param_from_text(scene, params, assignment);
+    FrameRequest request;
+    request.width = options.width;
+    request.height = options.height;
+    request.view = choose_view(scene, options);
+    request.params = std::move(params);
+    check_output_path(options.output);
+
+    if (options.device >= static_cast<int>(list_devices().size())) {
+        throw UsageError(fmt::format("no OpenCL device {} (see `fgr info`)", options.device));
+    }
+    const ComputeDevice device = open_device(options.device);
+    const KernelSwitches switches{
+        options.packet_width ? options.packet_width : preferred_packet_width(device.info),
+        scene.effects};
+    spdlog::info("building '{}' for {} ({} rays per work-item, effects: {})", scene.id,
+                 device.info.name, switches.packet_width, effect_names(switches.effects));
+    ProgramCache cache(ProgramCache::default_directory());
+    Renderer renderer(device, cache, scene, switches);
+    spdlog::info("kernel ready in {:.0f} ms", renderer.build_report().build_ms);
+
+    const Frame frame = renderer.render(request);
+    fmt::print("render_ms {:.1f}\n", frame.render_ms);
+    fmt::print("hits {}\n", frame.hits);
+    try {
+        write_png(options.output, frame.image);
+    } catch (const std::runtime_error& error) {
+        throw RuntimeFailure(error.what());
+    }
+    fmt::print("wrote {} ({}x{})\n", options.output, frame.image.width, frame.image.height);
+    return 0;
+}
+
+void add_render_command(CLI::App& app, RenderOptions& options) {
+    CLI::App* render = app.add_subcommand("render", "render one image of a scene to a PNG file");
+    render->add_option("scene", options.scene, "scene id (see `fgr list`)")->required();
+    render->add_option("-o,--output", options.output, "output PNG file")->required();
+    render->add_option("--width", options.width, "image width in pixels")
+        ->check(CLI::Range(1, kMaxImageSide));
+    render->add_option("--height", options.height, "image height in pixels")
+        ->check(CLI::Range(1, kMaxImageSide));
+    render->add_option("--set", options.assignments, "set a parameter: id=value (repeatable)")
+        ->allow_extra_args(false);
+    auto* camera = render->add_option("--camera", options.camera, "named camera of the scene");
+    auto* path = render->add_option("--camera-path", options.camera_path, "camera path of the scene");
+    path->excludes(camera);
+    render->add_option("--time", options.time, "time along the camera path, in seconds");
+    render->add_option("--device", options.device, "OpenCL device index (see `fgr info`)")
+        ->check(CLI::NonNegativeNumber);
+    render->add_option("--packet-width", options.packet_width,
+                       "rays per work-item (default: 16 on CPUs, 1 on GPUs)")
+        ->check(CLI::IsMember({1, 4, 8, 16}));
+}
+
+void configure_logging(bool verbose) {
+    auto logger = spdlog::stderr_color_mt("fgr");
+    logger->set_pattern("fgr: %^%l%$: %v");
+    spdlog::set_default_logger(logger);
+    spdlog::set_level(verbose ? spdlog::level::debug : spdlog::level::info);
+}
+
+int report_error(const std::string& message, int code) {
+    // Errors are one line: keep only the first line of messages that carry more.
+    std::fprintf(stderr, "fgr: error: %s\n", message.substr(0, message.find('\n')).c_str());
+    return code;
+}
+
+}  // namespace
+
+int run_cli(int argc, char** argv) {
+    CLI::App app{"fgr: real-time ray marching of 3D fractals"};
+    app.require_subcommand(1);
+    bool verbose = false;
+    app.add_flag("-v,--verbose", verbose, "debug logging");
+    app.add_subcommand("list", "list the scenes found, with parameters, cameras and camera paths");
+    app.add_subcommand("info", "list OpenCL platforms and devices");
+    RenderOptions render_options;
+    add_render_command(app, render_options);
+    if (argc < 2) {
+        std::fputs(app.help().c_str(), stdout);
+        return report_error("no command given (commands: list, info, render)", kExitUsage);
+    }
+    if (const std::string first = argv[1]; !first.empty() && first.front() != '-' &&
+        first != "list" && first != "info" && first != "render") {
+        return report_error(fmt::format("unknown command '{}' (commands: list, info, render)", first),
+                            kExitUsage);
+    }
+    try {
+        app.parse(argc, argv);
+    } catch (const CLI::CallForHelp& help) {
+        return app.exit(help);
+    } catch (const CLI::ParseError& error) {
+        return report_error(error.what(), kExitUsage);
+    }
+    configure_logging(verbose);
+    try {
+        const std::string command = app.get_subcommands().front()->get_name();
+        if (command == "list") return command_list();
+        if (command == "info") return command_info();
+        return command_render(render_options);
+    } catch (const UsageError& error) {
+        return report_error(error.what(), kExitUsage);
+    } catch (const KernelBuildError& error) {
+        std::fprintf(stderr, "%s\n", error.build_log().c_str());
+        return report_error(error.what(), kExitFailure);
+    } catch (const std::exception& error) {
+        return report_error(error.what(), kExitFailure);
+    }
+}
+
+}  // namespace fgr

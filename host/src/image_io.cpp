@@ -1,0 +1,274 @@
+#include "fgr/image_io.hpp"
+
+#include <png.h>
+#include <unistd.h>
+
+#include <atomic>
+#include <cerrno>
+#include <csetjmp>
+#include <cstddef>
+#include <cstdio>
+#include <stdexcept>
+#include <string>
+#include <system_error>
+#include <utility>
+#include <vector>
+
+namespace fgr {
+namespace {
+
+namespace fs = std::filesystem;
+
+// Refuse to allocate for absurd headers in files we read (2^28 pixels is 16k x 16k).
+constexpr std::size_t kMaxReadPixels = std::size_t{1} << 28;
+constexpr std::size_t kPngSignatureBytes = 8;
+
+std::string quoted(const fs::path& path) { return "'" + path.string() + "'"; }
+
+[[noreturn]] void fail_write(const fs::path& path, const std::string& reason) {
+    throw std::runtime_error("cannot write " + quoted(path) + ": " + reason);
+}
+
+[[noreturn]] void fail_read(const fs::path& path, const std::string& reason) {
+    throw std::runtime_error("cannot read " + quoted(path) + ": " + reason);
+}
+
+std::string errno_message(int error) { return std::generic_category().message(error); }
+
+// libpng reports an error by calling a handler that must not return. Ours keeps the message for
+// the exception thrown once control is back in C++ code, then jumps to the setjmp point.
+struct PngErrorSink {
+    char message[256] = "libpng error";
+};
+
+[[noreturn]] void record_png_error(png_structp png, png_const_charp message) {
+    auto* sink = static_cast<PngErrorSink*>(png_get_error_ptr(png));
+    std::snprintf(sink->message, sizeof sink->message, "%s", message);
+    png_longjmp(png, 1);
+}
+
+// Warnings concern recoverable oddities (e.g. unknown chunks); a library must not print them.
+void ignore_png_warning(png_structp, png_const_charp) {}
+
+// The handles of one encode or decode. They live in the caller of the function that calls setjmp,
+// so a longjmp never skips their destructors and never leaves them indeterminate.
+struct PngWriter {
+    std::FILE* file = nullptr;
+    png_structp png = nullptr;
+    png_infop info = nullptr;
+    PngErrorSink error;
+
+    PngWriter() = default;
+    PngWriter(const PngWriter&) = delete;
+    PngWriter& operator=(const PngWriter&) = delete;
+    ~PngWriter() {
+        if (png != nullptr) png_destroy_write_struct(&png, &info);
+        if (file != nullptr) std::fclose(file);
+    }
+};
+
+struct PngReader {
+    std::FILE* file = nullptr;
+    png_structp png = nullptr;
+    png_infop info = nullptr;
+    PngErrorSink error;
+
+    PngReader() = default;
+    PngReader(const PngReader&) = delete;
+    PngReader& operator=(const PngReader&) = delete;
+    ~PngReader() {
+        if (png != nullptr) png_destroy_read_struct(&png, &info, nullptr);
+        if (file != nullptr) std::fclose(file);
+    }
+};
+
+// Deletes the file on scope exit unless it was committed (renamed into place).
+struct TemporaryFile {
+    fs::path path;
+    bool committed = false;
+
+    explicit TemporaryFile(fs::path temporary) : path(std::move(temporary)) {}
+    TemporaryFile(const TemporaryFile&) = delete;
+    TemporaryFile& operator=(const TemporaryFile&) = delete;
+    ~TemporaryFile() {
+        if (!committed) {
+            std::error_code ignored;
+            fs::remove(path, ignored);
+        }
+    }
+};
+
+void validate_image(const fs::path& path, const Image8& image) {
+    if (image.width <= 0 || image.height <= 0) {
+        throw std::invalid_argument("cannot write " + quoted(path) + ": image is " +
+                                    std::to_string(image.width) + "x" +
+                                    std::to_string(image.height));
+    }
+    const std::size_t expected =
+        std::size_t{3} * std::size_t(image.width) * std::size_t(image.height);
+    if (image.rgb.size() != expected) {
+        throw std::invalid_argument(
+            "cannot write " + quoted(path) + ": " + std::to_string(image.width) + "x" +
+            std::to_string(image.height) + " image needs " + std::to_string(expected) +
+            " bytes, has " + std::to_string(image.rgb.size()));
+    }
+}
+
+// Beside the target, so the final rename stays within one file system and is atomic. The pid and
+// a counter keep concurrent writers (processes or threads) off each other's temporaries.
+fs::path temporary_path_for(const fs::path& target) {
+    static std::atomic<unsigned> counter{0};
+    const std::string suffix =
+        ".tmp-" + std::to_string(::getpid()) + "-" + std::to_string(counter.fetch_add(1));
+    return target.parent_path() / (target.filename().string() + suffix);
+}
+
+void write_rows(png_structp png, png_infop info, const Image8& image) {
+    png_set_IHDR(png, info, static_cast<png_uint_32>(image.width),
+                 static_cast<png_uint_32>(image.height), 8, PNG_COLOR_TYPE_RGB, PNG_INTERLACE_NONE,
+                 PNG_COMPRESSION_TYPE_DEFAULT, PNG_FILTER_TYPE_DEFAULT);
+    png_write_info(png, info);
+    const std::size_t stride = std::size_t{3} * std::size_t(image.width);
+    for (std::size_t y = 0; y < std::size_t(image.height); ++y) {
+        png_write_row(png, image.rgb.data() + y * stride);
+    }
+    png_write_end(png, info);
+}
+
+// False (message in writer.error) when libpng failed. Keeps no locals of its own: anything
+// modified between setjmp and the longjmp would be indeterminate afterwards.
+bool encode(PngWriter& writer, const Image8& image) {
+    if (setjmp(png_jmpbuf(writer.png))) {
+        return false;
+    }
+    write_rows(writer.png, writer.info, image);
+    return true;
+}
+
+// Flushes to the disk before the rename, so a crash cannot leave the target renamed but empty.
+std::string close_durably(std::FILE*& owned_file) {
+    std::FILE* file = std::exchange(owned_file, nullptr);
+    if (std::fflush(file) != 0 || ::fsync(::fileno(file)) != 0) {
+        const int error = errno;
+        std::fclose(file);
+        return errno_message(error);
+    }
+    if (std::fclose(file) != 0) {
+        return errno_message(errno);
+    }
+    return {};
+}
+
+// Empty on success, else why the file could not be written.
+std::string encode_to_file(const fs::path& file_path, const Image8& image) {
+    PngWriter writer;
+    writer.file = std::fopen(file_path.c_str(), "wb");
+    if (writer.file == nullptr) {
+        return errno_message(errno);
+    }
+    writer.png = png_create_write_struct(PNG_LIBPNG_VER_STRING, &writer.error, record_png_error,
+                                         ignore_png_warning);
+    if (writer.png == nullptr || (writer.info = png_create_info_struct(writer.png)) == nullptr) {
+        return "out of memory";
+    }
+    png_init_io(writer.png, writer.file);
+    if (!encode(writer, image)) {
+        return writer.error.message;
+    }
+    return close_durably(writer.file);
+}
+
+// Expands every PNG flavour to 8-bit RGB rows.
+void request_rgb8(png_structp png) {
+    png_set_expand(png);  // palette to RGB, low-bit grey to 8 bits, tRNS to alpha
+    png_set_strip_16(png);
+    png_set_strip_alpha(png);
+    png_set_gray_to_rgb(png);
+    png_set_interlace_handling(png);
+}
+
+void read_rows(png_structp png, png_infop info, Image8& image, std::vector<png_bytep>& rows) {
+    png_read_info(png, info);
+    request_rgb8(png);
+    png_read_update_info(png, info);
+    const png_uint_32 width = png_get_image_width(png, info);
+    const png_uint_32 height = png_get_image_height(png, info);
+    if (std::size_t(width) * height > kMaxReadPixels) {
+        png_error(png, "image too large");
+    }
+    const std::size_t stride = std::size_t{3} * width;
+    if (png_get_rowbytes(png, info) != stride) {
+        png_error(png, "unexpected row size after conversion to RGB");
+    }
+    image.width = static_cast<int>(width);
+    image.height = static_cast<int>(height);
+    image.rgb.resize(stride * height);
+    rows.resize(height);
+    for (std::size_t y = 0; y < height; ++y) {
+        rows[y] = image.rgb.data() + y * stride;
+    }
+    png_read_image(png, rows.data());
+    png_read_end(png, nullptr);
+}
+
+// False (message in reader.error) when libpng failed; see encode() for why it has no locals.
+bool decode(PngReader& reader, Image8& image, std::vector<png_bytep>& rows) {
+    if (setjmp(png_jmpbuf(reader.png))) {
+        return false;
+    }
+    read_rows(reader.png, reader.info, image, rows);
+    return true;
+}
+
+bool has_png_signature(std::FILE* file) {
+    png_byte signature[kPngSignatureBytes];
+    return std::fread(signature, 1, sizeof signature, file) == sizeof signature &&
+           png_sig_cmp(signature, 0, sizeof signature) == 0;
+}
+
+}  // namespace
+
+void write_png(const fs::path& path, const Image8& image) {
+    validate_image(path, image);
+    if (!path.has_filename()) {
+        fail_write(path, "not a file name");
+    }
+    TemporaryFile temporary(temporary_path_for(path));
+    const std::string failure = encode_to_file(temporary.path, image);
+    if (!failure.empty()) {
+        fail_write(path, failure);
+    }
+    std::error_code error;
+    fs::rename(temporary.path, path, error);
+    if (error) {
+        fail_write(path, error.message());
+    }
+    temporary.committed = true;
+}
+
+Image8 read_png(const fs::path& path) {
+    PngReader reader;
+    reader.file = std::fopen(path.c_str(), "rb");
+    if (reader.file == nullptr) {
+        fail_read(path, errno_message(errno));
+    }
+    if (!has_png_signature(reader.file)) {
+        fail_read(path, "not a PNG file");
+    }
+    reader.png = png_create_read_struct(PNG_LIBPNG_VER_STRING, &reader.error, record_png_error,
+                                        ignore_png_warning);
+    if (reader.png == nullptr || (reader.info = png_create_info_struct(reader.png)) == nullptr) {
+        fail_read(path, "out of memory");
+    }
+    png_init_io(reader.png, reader.file);
+    png_set_sig_bytes(reader.png, static_cast<int>(kPngSignatureBytes));
+
+    Image8 image;
+    std::vector<png_bytep> rows;
+    if (!decode(reader, image, rows)) {
+        fail_read(path, reader.error.message);
+    }
+    return image;
+}
+
+}  // namespace fgr

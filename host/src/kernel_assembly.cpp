@@ -1,0 +1,92 @@
+#include "fgr/kernel_assembly.hpp"
+
+#include <array>
+#include <fmt/format.h>
+
+#include "fgr/kernel_library.hpp"
+#include "fgr/parameters.hpp"
+#include "fgr/plugin.h"
+
+namespace fgr {
+namespace {
+
+struct EffectSwitch {
+    uint64_t bit;
+    const char* macro;
+    const char* name;
+};
+
+constexpr std::array kEffectSwitches{
+    EffectSwitch{FGR_EFFECT_SHADOWS, "FGR_EFFECT_SHADOWS", "shadows"},
+    EffectSwitch{FGR_EFFECT_AMBIENT_OCCLUSION, "FGR_EFFECT_AMBIENT_OCCLUSION", "ambient_occlusion"},
+};
+
+// A file name is quoted in #line, so quotes, backslashes and newlines in it are replaced.
+std::string line_directive_name(std::string name) {
+    for (char& c : name) {
+        if (c == '"' || c == '\\' || c == '\n' || c == '\r') c = '_';
+    }
+    return name;
+}
+
+void append_file(std::string& out, const std::string& name, const char* source) {
+    out += fmt::format("#line 1 \"{}\"\n", line_directive_name(name));
+    out += source;
+    if (!out.empty() && out.back() != '\n') out += '\n';
+}
+
+std::string accessor(const ParamInfo& param, int offset) {
+    const std::string slot = fmt::format("fgr_params[{}]", offset);
+    switch (param.type) {
+        case ParamType::Float: return fmt::format("#define param_{} ({})\n", param.id, slot);
+        case ParamType::Int: return fmt::format("#define param_{} ((int){})\n", param.id, slot);
+        case ParamType::Bool:
+            return fmt::format("#define param_{} ({} != 0.0f)\n", param.id, slot);
+        case ParamType::Vec3:
+        case ParamType::Colour:
+            return fmt::format("#define param_{} v3_splat(fgr_params[{}], fgr_params[{}], fgr_params[{}])\n",
+                               param.id, offset, offset + 1, offset + 2);
+    }
+    return {};
+}
+
+}  // namespace
+
+std::string param_accessors(const Scene& scene) {
+    std::string out;
+    const auto offsets = param_offsets(scene);
+    for (size_t i = 0; i < scene.params.size(); ++i) out += accessor(scene.params[i], offsets[i]);
+    return out;
+}
+
+std::string switch_options(const KernelSwitches& switches) {
+    std::string options = fmt::format("-DFGR_WIDTH={}", switches.packet_width);
+    for (const auto& effect : kEffectSwitches) {
+        if (switches.effects & effect.bit) options += fmt::format(" -D{}", effect.macro);
+    }
+    return options;
+}
+
+std::string effect_names(uint64_t effects) {
+    std::string names;
+    for (const auto& effect : kEffectSwitches) {
+        if (!(effects & effect.bit)) continue;
+        if (!names.empty()) names += ",";
+        names += effect.name;
+    }
+    return names.empty() ? "none" : names;
+}
+
+AssembledProgram assemble_program(const Scene& scene, const KernelSwitches& switches) {
+    AssembledProgram program;
+    program.options = switch_options(switches);
+    std::string& source = program.source;
+    for (const auto& file : kernel_prelude()) append_file(source, file.name, file.source);
+    append_file(source, fmt::format("<parameters of {}>", scene.id),
+                param_accessors(scene).c_str());
+    append_file(source, scene.source_name, scene.source.c_str());
+    for (const auto& file : kernel_postlude()) append_file(source, file.name, file.source);
+    return program;
+}
+
+}  // namespace fgr

@@ -1,0 +1,151 @@
+#include "fgr/program_cache.hpp"
+
+#include <unistd.h>
+
+#include <chrono>
+#include <cstdlib>
+#include <fstream>
+#include <iterator>
+
+#include <fmt/format.h>
+#include <spdlog/spdlog.h>
+
+namespace fgr {
+namespace {
+
+// Portable options every program gets: the kernels are OpenCL C 1.2 so they run on PoCL as well
+// as on GPU drivers.
+constexpr const char* kBaseOptions = "-cl-std=CL1.2";
+
+std::string full_options(const AssembledProgram& program) {
+    return fmt::format("{} {}", kBaseOptions, program.options);
+}
+
+uint64_t fnv1a(uint64_t hash, std::string_view bytes) {
+    for (unsigned char byte : bytes) {
+        hash ^= byte;
+        hash *= 0x100000001b3ull;
+    }
+    // A separator, so ("ab","c") and ("a","bc") hash differently.
+    hash ^= 0xff;
+    return hash * 0x100000001b3ull;
+}
+
+double elapsed_ms(std::chrono::steady_clock::time_point since) {
+    return std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - since)
+        .count();
+}
+
+std::string build_log(const cl::Program& program, const cl::Device& device) {
+    try {
+        return program.getBuildInfo<CL_PROGRAM_BUILD_LOG>(device);
+    } catch (const cl::Error&) {
+        return "(no build log)";
+    }
+}
+
+}  // namespace
+
+ProgramCache::ProgramCache(std::filesystem::path directory) : directory_(std::move(directory)) {}
+
+std::filesystem::path ProgramCache::default_directory() {
+    if (const char* dir = std::getenv("FGR_CACHE_DIR"); dir && *dir) return dir;
+    if (const char* xdg = std::getenv("XDG_CACHE_HOME"); xdg && *xdg) {
+        return std::filesystem::path(xdg) / "fgr" / "kernels";
+    }
+    if (const char* home = std::getenv("HOME"); home && *home) {
+        return std::filesystem::path(home) / ".cache" / "fgr" / "kernels";
+    }
+    return {};
+}
+
+std::string ProgramCache::cache_key(const ComputeDevice& device, const AssembledProgram& program) {
+    const std::string options = full_options(program);
+    const std::string_view parts[] = {program.source,           options,
+                                      device.info.platform,     device.info.name,
+                                      device.info.version,      device.info.driver_version};
+    uint64_t hash = 0xcbf29ce484222325ull;
+    for (std::string_view part : parts) hash = fnv1a(hash, part);
+    return fmt::format("{:016x}", hash);
+}
+
+cl::Program ProgramCache::build(const ComputeDevice& device, const AssembledProgram& program,
+                                BuildReport* report) {
+    const auto start = std::chrono::steady_clock::now();
+    BuildReport local;
+    BuildReport& result = report ? *report : local;
+    const std::string key = cache_key(device, program);
+    if (auto found = programs_.find(key); found != programs_.end()) {
+        result = {elapsed_ms(start), BuildReport::Origin::Memory};
+        return found->second;
+    }
+    const std::filesystem::path file =
+        directory_.empty() ? std::filesystem::path() : directory_ / (key + ".bin");
+    cl::Program built;
+    if (!file.empty()) built = load_binary(device, program, file);
+    if (built()) {
+        result.origin = BuildReport::Origin::Disk;
+    } else {
+        built = cl::Program(device.context, program.source);
+        try {
+            built.build({device.device}, full_options(program).c_str());
+        } catch (const cl::Error&) {
+            throw KernelBuildError("OpenCL program failed to compile",
+                                   build_log(built, device.device));
+        }
+        result.origin = BuildReport::Origin::Compiled;
+        if (!file.empty()) store_binary(built, file);
+    }
+    result.build_ms = elapsed_ms(start);
+    spdlog::debug("program {} ready in {:.0f} ms ({})", key, result.build_ms,
+                  result.origin == BuildReport::Origin::Disk ? "disk cache" : "compiled");
+    programs_.emplace(key, built);
+    return built;
+}
+
+cl::Program ProgramCache::load_binary(const ComputeDevice& device, const AssembledProgram& program,
+                                      const std::filesystem::path& file) {
+    std::ifstream in(file, std::ios::binary);
+    if (!in) return {};
+    std::vector<unsigned char> bytes((std::istreambuf_iterator<char>(in)),
+                                     std::istreambuf_iterator<char>());
+    if (bytes.empty()) return {};
+    try {
+        cl::Program loaded(device.context, {device.device}, cl::Program::Binaries{bytes});
+        loaded.build({device.device}, full_options(program).c_str());
+        return loaded;
+    } catch (const cl::Error& error) {
+        // A stale or damaged cache entry is not an error: drop it and compile afresh.
+        spdlog::debug("ignoring cached program {}: {}", file.string(), cl_error_name(error.err()));
+        std::error_code ignored;
+        std::filesystem::remove(file, ignored);
+        return {};
+    }
+}
+
+void ProgramCache::store_binary(const cl::Program& program, const std::filesystem::path& file) {
+    try {
+        const auto binaries = program.getInfo<CL_PROGRAM_BINARIES>();
+        if (binaries.empty() || binaries.front().empty()) {
+            spdlog::debug("driver returned no program binary to cache");
+            return;
+        }
+        std::error_code error;
+        std::filesystem::create_directories(file.parent_path(), error);
+        // Write then rename, so a concurrent reader never sees half a binary.
+        const auto temp = file.string() + fmt::format(".tmp-{}", ::getpid());
+        {
+            std::ofstream out(temp, std::ios::binary);
+            out.write(reinterpret_cast<const char*>(binaries.front().data()),
+                      static_cast<std::streamsize>(binaries.front().size()));
+            if (!out) throw std::runtime_error("write failed");
+        }
+        std::filesystem::rename(temp, file, error);
+        if (error) std::filesystem::remove(temp, error);
+    } catch (const std::exception& error) {
+        // The cache only saves time; failing to fill it must never fail a render.
+        spdlog::debug("could not cache program binary {}: {}", file.string(), error.what());
+    }
+}
+
+}  // namespace fgr

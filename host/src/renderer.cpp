@@ -1,0 +1,203 @@
+#include "fgr/renderer.hpp"
+
+#include <array>
+#include <chrono>
+#include <cmath>
+#include <stdexcept>
+
+#include <glm/geometric.hpp>
+
+#include "fgr/camera.hpp"
+#include "fgr/parameters.hpp"
+
+namespace fgr {
+namespace {
+
+// Mirrors `camera_frame` in kernels/fgr_render.cl (float4 members keep both layouts equal).
+struct CameraFrame {
+    cl_float4 eye;
+    cl_float4 forward;
+    cl_float4 right;
+    cl_float4 up;
+    cl_float tan_half_fov;
+    cl_float pixel_angle;
+    cl_int width;
+    cl_int height;
+};
+static_assert(sizeof(CameraFrame) == 80, "must match camera_frame in fgr_render.cl");
+
+constexpr int kLightFloats = 8;  // FGR_LIGHT_FLOATS in fgr_shade.cl
+
+cl_float4 to_float4(glm::vec3 v) { return {{v.x, v.y, v.z, 0.0f}}; }
+
+CameraFrame camera_frame(const CameraView& view, int width, int height) {
+    const CameraBasis basis = camera_basis(view);
+    return {to_float4(basis.eye), to_float4(basis.forward), to_float4(basis.right),
+            to_float4(basis.up),  basis.tan_half_fov,       pixel_angle(basis, width),
+            width,                height};
+}
+
+std::vector<float> light_values(const Scene& scene) {
+    std::vector<float> values;
+    for (const Light& light : scene.lights) {
+        const glm::vec3 vector =
+            light.type == LightType::Directional ? glm::normalize(light.vector) : light.vector;
+        values.insert(values.end(), {light.type == LightType::Point ? 1.0f : 0.0f, vector.x,
+                                     vector.y, vector.z, light.colour.r, light.colour.g,
+                                     light.colour.b, light.intensity});
+    }
+    return values;
+}
+
+void check_request(const Scene& scene, const FrameRequest& request) {
+    if (request.width < 1 || request.height < 1 || request.width > kMaxImageSide ||
+        request.height > kMaxImageSide) {
+        throw std::invalid_argument("image size must be between 1x1 and 16384x16384");
+    }
+    if (request.params.size() != default_param_values(scene).size()) {
+        throw std::invalid_argument("parameter buffer does not match the scene's parameters");
+    }
+}
+
+// 4096 steps over [0, 1] keep every 8-bit output code reachable.
+const std::array<uint8_t, 4097>& srgb_table() {
+    static const auto table = [] {
+        std::array<uint8_t, 4097> values{};
+        for (size_t i = 0; i < values.size(); ++i) {
+            const double linear = static_cast<double>(i) / 4096.0;
+            const double encoded = linear <= 0.0031308 ? 12.92 * linear
+                                                        : 1.055 * std::pow(linear, 1.0 / 2.4) - 0.055;
+            values[i] = static_cast<uint8_t>(std::lround(std::clamp(encoded, 0.0, 1.0) * 255.0));
+        }
+        return values;
+    }();
+    return table;
+}
+
+// Work-items per work-group. Fixed rather than left to the driver so that the warm-up launch in
+// the constructor compiles exactly the work-group function later frames use (PoCL specialises
+// its code per local size), keeping JIT time out of render_ms.
+int work_group_size(const ComputeDevice& device) { return device.info.is_cpu ? 8 : 64; }
+
+cl::NDRange global_range(int items, int group) {
+    return cl::NDRange(static_cast<size_t>((items + group - 1) / group) * group);
+}
+
+double elapsed_ms(std::chrono::steady_clock::time_point since) {
+    return std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - since)
+        .count();
+}
+
+}  // namespace
+
+uint8_t encode_srgb(float linear) {
+    if (!(linear > 0.0f)) return 0;  // also NaN
+    if (linear >= 1.0f) return 255;
+    return srgb_table()[static_cast<size_t>(linear * 4096.0f + 0.5f)];
+}
+
+TileLayout tile_layout(int packet_width, int width, int height) {
+    const int tile_w = packet_width == 1 ? 1 : packet_width == 4 ? 2 : 4;
+    const int tile_h = packet_width / tile_w;
+    return {packet_width, tile_w, tile_h, (width + tile_w - 1) / tile_w,
+            (height + tile_h - 1) / tile_h};
+}
+
+Renderer::Renderer(const ComputeDevice& device, ProgramCache& cache, const Scene& scene,
+                   const KernelSwitches& switches)
+    : device_(device), scene_(scene), switches_(switches) {
+    program_ = cache.build(device, assemble_program(scene, switches), &build_report_);
+    render_kernel_ = cl::Kernel(program_, "fgr_render");
+    probe_kernel_ = cl::Kernel(program_, "fgr_probe_de");
+    lights_ = upload(light_values(scene));
+    warm_up();
+}
+
+void Renderer::warm_up() {
+    FrameRequest tiny;
+    tiny.width = 1;
+    tiny.height = 1;
+    tiny.view = scene_.cameras.front().view;
+    tiny.params = default_param_values(scene_);
+    const auto start = std::chrono::steady_clock::now();
+    render(tiny);
+    const glm::vec3 origin(0.0f);
+    probe_de(std::span(&origin, 1), tiny.params);
+    build_report_.build_ms += elapsed_ms(start);
+}
+
+cl::Buffer Renderer::upload(const std::vector<float>& values) {
+    return cl::Buffer(device_.context, CL_MEM_READ_ONLY | CL_MEM_COPY_HOST_PTR,
+                      values.size() * sizeof(float), const_cast<float*>(values.data()));
+}
+
+Frame Renderer::render(const FrameRequest& request) {
+    check_request(scene_, request);
+    const TileLayout layout = tile_layout(switches_.packet_width, request.width, request.height);
+    const int plane = layout.plane_size();
+    const auto start = std::chrono::steady_clock::now();
+
+    cl::Buffer params = upload(request.params);
+    cl::Buffer planes(device_.context, CL_MEM_WRITE_ONLY, sizeof(float) * 4 * plane);
+    const int tiles = layout.tiles_x * layout.tiles_y;
+    render_kernel_.setArg(0, planes);
+    render_kernel_.setArg(1, plane);
+    render_kernel_.setArg(2, tiles);
+    render_kernel_.setArg(3, camera_frame(request.view, request.width, request.height));
+    render_kernel_.setArg(4, params);
+    render_kernel_.setArg(5, lights_);
+    render_kernel_.setArg(6, static_cast<cl_int>(scene_.lights.size()));
+    const int group = work_group_size(device_);
+    device_.queue.enqueueNDRangeKernel(render_kernel_, cl::NullRange, global_range(tiles, group),
+                                       cl::NDRange(group));
+    std::vector<float> host(static_cast<size_t>(plane) * 4);
+    device_.queue.enqueueReadBuffer(planes, CL_TRUE, 0, host.size() * sizeof(float), host.data());
+
+    Frame frame;
+    frame.image.width = request.width;
+    frame.image.height = request.height;
+    frame.image.rgb.resize(static_cast<size_t>(request.width) * request.height * 3);
+    frame.depth.resize(static_cast<size_t>(request.width) * request.height);
+    for (int y = 0; y < request.height; ++y) {
+        for (int x = 0; x < request.width; ++x) {
+            const size_t source = layout.index(x, y);
+            const size_t pixel = static_cast<size_t>(y) * request.width + x;
+            for (int c = 0; c < 3; ++c) {
+                frame.image.rgb[pixel * 3 + c] = encode_srgb(host[c * plane + source]);
+            }
+            frame.depth[pixel] = host[3 * static_cast<size_t>(plane) + source];
+            frame.hits += frame.depth[pixel] >= 0.0f;
+        }
+    }
+    frame.render_ms = elapsed_ms(start);
+    return frame;
+}
+
+std::vector<float> Renderer::probe_de(std::span<const glm::vec3> points,
+                                      const std::vector<float>& params) {
+    if (points.empty()) return {};
+    const int width = switches_.packet_width;
+    const int packets = static_cast<int>((points.size() + width - 1) / width);
+    const int plane = packets * width;
+    std::vector<float> coordinates(static_cast<size_t>(plane) * 3, 0.0f);
+    for (size_t i = 0; i < points.size(); ++i) {
+        for (int c = 0; c < 3; ++c) coordinates[c * plane + i] = points[i][c];
+    }
+    cl::Buffer input = upload(coordinates);
+    cl::Buffer params_buffer = upload(params);
+    cl::Buffer output(device_.context, CL_MEM_WRITE_ONLY, sizeof(float) * plane);
+    probe_kernel_.setArg(0, input);
+    probe_kernel_.setArg(1, plane);
+    probe_kernel_.setArg(2, packets);
+    probe_kernel_.setArg(3, output);
+    probe_kernel_.setArg(4, params_buffer);
+    const int group = work_group_size(device_);
+    device_.queue.enqueueNDRangeKernel(probe_kernel_, cl::NullRange, global_range(packets, group),
+                                       cl::NDRange(group));
+    std::vector<float> distances(plane);
+    device_.queue.enqueueReadBuffer(output, CL_TRUE, 0, sizeof(float) * plane, distances.data());
+    distances.resize(points.size());
+    return distances;
+}
+
+}  // namespace fgr

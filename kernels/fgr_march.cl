@@ -1,0 +1,44 @@
+/* fgr kernel library: sphere tracing of a packet of rays.
+ *
+ * A ray hits when the distance estimate falls below the pixel's footprint at that distance:
+ * DE(p) < hit_threshold * t * pixel_angle. Surfaces are resolved exactly as finely as the image
+ * can show them, no finer, which is what makes far detail cheap. */
+
+typedef struct march_result {
+    real t;     /* distance along the ray of the last evaluated point */
+    mask hit;   /* lanes that met the surface */
+    mask steps; /* DE evaluations taken per lane (an int per lane) */
+} march_result;
+
+/* Marches every lane of `active` from origin along dir until it hits, passes max_distance, or has
+ * taken max_steps. Inactive lanes are not evaluated for hits and keep t = 0. */
+inline march_result march_rays(vec3 origin, vec3 dir, mask active, float pixel_angle,
+                               float hit_threshold, int max_steps, float max_distance, PARAMS) {
+    march_result result;
+    result.t = fgr_real(0.0f);
+    result.hit = (mask)(0);
+    result.steps = (mask)(0);
+    const float footprint = hit_threshold * pixel_angle;
+    for (int step = 0; step < max_steps; ++step) {
+        if (!fgr_any(active)) break;
+        real dist = scene_de(v3_mad(origin, dir, result.t), PARAMS_PASS);
+        mask now_hit = active & (dist < result.t * footprint);
+        result.hit |= now_hit;
+        active &= !now_hit;
+        result.t = select(result.t, result.t + dist, active);
+        fgr_count_if(result.steps, active | now_hit);
+        active &= result.t <= max_distance;
+    }
+    return result;
+}
+
+/* Surface normal from the DE's gradient, with the four-tap tetrahedron stencil (four DE
+ * evaluations instead of six for central differences). `eps` is per lane so the stencil scales
+ * with the pixel footprint at the hit. */
+inline vec3 estimate_normal(vec3 p, real eps, PARAMS) {
+    real a = scene_de(v3(p.x + eps, p.y - eps, p.z - eps), PARAMS_PASS);
+    real b = scene_de(v3(p.x - eps, p.y - eps, p.z + eps), PARAMS_PASS);
+    real c = scene_de(v3(p.x - eps, p.y + eps, p.z - eps), PARAMS_PASS);
+    real d = scene_de(v3(p.x + eps, p.y + eps, p.z + eps), PARAMS_PASS);
+    return v3_normalize(v3(a - b - c + d, -a - b + c + d, -a + b - c + d));
+}

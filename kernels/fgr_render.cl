@@ -1,0 +1,107 @@
+/* fgr kernel library: the entry points.
+ *
+ * Work decomposition: work-item g renders tile g, FGR_TILE_W x FGR_TILE_H pixels in the lanes of
+ * one packet (a 1x1 tile when FGR_WIDTH is 1). Neighbouring pixels march nearly the same path, so
+ * the lanes of a packet stay busy together. Results are stored tile-major in planes
+ * (r, g, b, depth), each lane at tile * FGR_WIDTH + lane, with vector stores; the host re-orders
+ * them into rows while encoding the image. */
+
+#if FGR_WIDTH == 1
+#define FGR_TILE_W 1
+#define FGR_LANE_X ((real)(0.0f))
+#define FGR_LANE_Y ((real)(0.0f))
+#define fgr_store(value, tile, plane) ((plane)[tile] = (value))
+#define fgr_load(tile, plane) ((plane)[tile])
+#elif FGR_WIDTH == 4
+#define FGR_TILE_W 2
+#define FGR_LANE_X ((real)(0, 1, 0, 1))
+#define FGR_LANE_Y ((real)(0, 0, 1, 1))
+#define fgr_store(value, tile, plane) vstore4((value), (tile), (plane))
+#define fgr_load(tile, plane) vload4((tile), (plane))
+#elif FGR_WIDTH == 8
+#define FGR_TILE_W 4
+#define FGR_LANE_X ((real)(0, 1, 2, 3, 0, 1, 2, 3))
+#define FGR_LANE_Y ((real)(0, 0, 0, 0, 1, 1, 1, 1))
+#define fgr_store(value, tile, plane) vstore8((value), (tile), (plane))
+#define fgr_load(tile, plane) vload8((tile), (plane))
+#elif FGR_WIDTH == 16
+#define FGR_TILE_W 4
+#define FGR_LANE_X ((real)(0, 1, 2, 3, 0, 1, 2, 3, 0, 1, 2, 3, 0, 1, 2, 3))
+#define FGR_LANE_Y ((real)(0, 0, 0, 0, 1, 1, 1, 1, 2, 2, 2, 2, 3, 3, 3, 3))
+#define fgr_store(value, tile, plane) vstore16((value), (tile), (plane))
+#define fgr_load(tile, plane) vload16((tile), (plane))
+#endif
+#define FGR_TILE_H (FGR_WIDTH / FGR_TILE_W)
+
+/* The camera as the host sends it: eye, then the orthonormal basis, each padded to a float4. */
+typedef struct camera_frame {
+    float4 eye;
+    float4 forward;
+    float4 right;
+    float4 up;
+    float tan_half_fov;
+    float pixel_angle; /* 2 * tan_half_fov / width: one pixel's angular footprint */
+    int width;
+    int height;
+} camera_frame;
+
+inline vec3 splat_float4(float4 v) { return v3_splat(v.x, v.y, v.z); }
+
+/* The quality knobs, read from the built-in parameters so changing them never recompiles. */
+#define FGR_MAX_STEPS ((int)param_max_steps)
+#define FGR_MAX_DISTANCE (param_max_distance)
+#define FGR_HIT_THRESHOLD (param_hit_threshold)
+
+__kernel void fgr_render(__global float* planes, int plane_size, int tile_count,
+                         camera_frame camera, PARAMS, __constant const float* lights,
+                         int light_count) {
+    const int tile = get_global_id(0);
+    /* The host rounds the global size up to whole work-groups. */
+    if (tile >= tile_count) return;
+    const int tiles_x = (camera.width + FGR_TILE_W - 1) / FGR_TILE_W;
+    const real px = (float)((tile % tiles_x) * FGR_TILE_W) + FGR_LANE_X;
+    const real py = (float)((tile / tiles_x) * FGR_TILE_H) + FGR_LANE_Y;
+    /* Lanes past the image edge (partial tiles) start inactive and cost no steps. */
+    const mask inside = (px < (float)camera.width) & (py < (float)camera.height);
+
+    const float aspect = (float)camera.height / (float)camera.width;
+    const real u = (2.0f * (px + 0.5f) / (float)camera.width - 1.0f) * camera.tan_half_fov;
+    const real v = (1.0f - 2.0f * (py + 0.5f) / (float)camera.height) * camera.tan_half_fov * aspect;
+    vec3 dir = v3_add(splat_float4(camera.forward),
+                      v3_add(v3_scale(splat_float4(camera.right), u),
+                             v3_scale(splat_float4(camera.up), v)));
+    dir = v3_normalize(dir);
+    const vec3 eye = splat_float4(camera.eye);
+
+    march_result hit = march_rays(eye, dir, inside, camera.pixel_angle, FGR_HIT_THRESHOLD,
+                                  FGR_MAX_STEPS, FGR_MAX_DISTANCE, PARAMS_PASS);
+
+    vec3 colour = background(dir);
+    real depth = fgr_real(-1.0f);
+    if (fgr_any(hit.hit)) {
+        vec3 p = v3_mad(eye, dir, hit.t);
+        real eps = fmax(hit.t * camera.pixel_angle * 0.5f, 1e-7f);
+        vec3 n = estimate_normal(p, eps, PARAMS_PASS);
+        vec3 lit = shade_surface(p, n, dir, eps, hit.steps, FGR_MAX_STEPS, lights, light_count,
+                                 camera.pixel_angle, FGR_HIT_THRESHOLD, FGR_MAX_DISTANCE,
+                                 PARAMS_PASS);
+        colour = v3_select(colour, lit, hit.hit);
+        depth = select(depth, hit.t, hit.hit);
+    }
+    fgr_store(colour.x, tile, planes);
+    fgr_store(colour.y, tile, planes + plane_size);
+    fgr_store(colour.z, tile, planes + 2 * plane_size);
+    fgr_store(depth, tile, planes + 3 * plane_size);
+}
+
+/* Evaluates the scene's DE at `count` points given as planes x, y, z (padded to whole packets):
+ * used by tests to compare the kernel's DE with a host implementation, and by tools that need the
+ * distance at a point (e.g. camera speed). */
+__kernel void fgr_probe_de(__global const float* points, int plane_size, int packet_count,
+                           __global float* out, PARAMS) {
+    const int packet = get_global_id(0);
+    if (packet >= packet_count) return;
+    vec3 p = v3(fgr_load(packet, points), fgr_load(packet, points + plane_size),
+                fgr_load(packet, points + 2 * plane_size));
+    fgr_store(scene_de(p, PARAMS_PASS), packet, out);
+}

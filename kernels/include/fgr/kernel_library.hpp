@@ -1,0 +1,19 @@
+#pragma once
+// The OpenCL C kernel library, embedded in the binary. A scene's program is
+//   switches + prelude files + parameter accessors + scene source + postlude files.
+
+#include <span>
+
+namespace fgr {
+
+struct KernelFile {
+    const char* name;    // file name under kernels/, used in #line directives
+    const char* source;  // NUL-terminated OpenCL C
+};
+
+// Types and maths a scene's source may use: fgr_types.cl, fgr_vec3.cl.
+std::span<const KernelFile> kernel_prelude();
+// Marching, shading and the kernel entry points, which call the scene's functions.
+std::span<const KernelFile> kernel_postlude();
+
+}  // namespace fgr

@@ -1,0 +1,30 @@
+#include "fgr/kernel_library.hpp"
+
+#include <array>
+
+#include "fgr_march_cl.h"
+#include "fgr_render_cl.h"
+#include "fgr_shade_cl.h"
+#include "fgr_types_cl.h"
+#include "fgr_vec3_cl.h"
+
+namespace fgr {
+
+std::span<const KernelFile> kernel_prelude() {
+    static constexpr std::array files{
+        KernelFile{"fgr_types.cl", fgr_types_cl},
+        KernelFile{"fgr_vec3.cl", fgr_vec3_cl},
+    };
+    return files;
+}
+
+std::span<const KernelFile> kernel_postlude() {
+    static constexpr std::array files{
+        KernelFile{"fgr_march.cl", fgr_march_cl},
+        KernelFile{"fgr_shade.cl", fgr_shade_cl},
+        KernelFile{"fgr_render.cl", fgr_render_cl},
+    };
+    return files;
+}
+
+}  // namespace fgr

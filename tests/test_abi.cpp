@@ -1,0 +1,618 @@
+// The plugin ABI: struct layouts pinned, version packing, and copy_scene_description's validation
+// of in-memory descriptions, valid and malformed.
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <cstddef>
+#include <limits>
+#include <string>
+#include <vector>
+
+#include "fgr/plugin.h"
+#include "fgr/plugin_loader.hpp"
+
+namespace fgr {
+namespace {
+
+// --- Layout --------------------------------------------------------------------------------------
+// Plugins compiled against ABI 1 depend on these exact sizes and offsets (x86_64 SysV). Both a
+// compile-time check and a test expectation, so a layout change names the field that moved.
+
+#define PIN_SIZE(type, expected)                                      \
+    static_assert(sizeof(type) == (expected), #type " changed size"); \
+    EXPECT_EQ(sizeof(type), std::size_t{expected}) << #type
+
+#define PIN_OFFSET(type, field, expected)                                           \
+    static_assert(offsetof(type, field) == (expected), #type "::" #field " moved"); \
+    EXPECT_EQ(offsetof(type, field), std::size_t{expected}) << #type "::" #field
+
+TEST(AbiLayout, StructHeader) {
+    PIN_SIZE(fgr_struct_header, 8);
+    PIN_OFFSET(fgr_struct_header, struct_size, 0);
+    PIN_OFFSET(fgr_struct_header, abi_version, 4);
+}
+
+TEST(AbiLayout, ParamDesc) {
+    PIN_SIZE(fgr_param_desc, 72);
+    PIN_OFFSET(fgr_param_desc, header, 0);
+    PIN_OFFSET(fgr_param_desc, id, 8);
+    PIN_OFFSET(fgr_param_desc, label, 16);
+    PIN_OFFSET(fgr_param_desc, group, 24);
+    PIN_OFFSET(fgr_param_desc, type, 32);
+    PIN_OFFSET(fgr_param_desc, min_value, 36);
+    PIN_OFFSET(fgr_param_desc, max_value, 40);
+    PIN_OFFSET(fgr_param_desc, default_value, 44);
+    PIN_OFFSET(fgr_param_desc, choices, 56);
+    PIN_OFFSET(fgr_param_desc, description, 64);
+}
+
+TEST(AbiLayout, Camera) {
+    PIN_SIZE(fgr_camera, 56);
+    PIN_OFFSET(fgr_camera, name, 8);
+    PIN_OFFSET(fgr_camera, position, 16);
+    PIN_OFFSET(fgr_camera, target, 28);
+    PIN_OFFSET(fgr_camera, up, 40);
+    PIN_OFFSET(fgr_camera, fov_degrees, 52);
+}
+
+TEST(AbiLayout, Keyframe) {
+    PIN_SIZE(fgr_keyframe, 52);
+    PIN_OFFSET(fgr_keyframe, time, 8);
+    PIN_OFFSET(fgr_keyframe, position, 12);
+    PIN_OFFSET(fgr_keyframe, target, 24);
+    PIN_OFFSET(fgr_keyframe, up, 36);
+    PIN_OFFSET(fgr_keyframe, fov_degrees, 48);
+}
+
+TEST(AbiLayout, CameraPath) {
+    PIN_SIZE(fgr_camera_path, 32);
+    PIN_OFFSET(fgr_camera_path, name, 8);
+    PIN_OFFSET(fgr_camera_path, keyframes, 16);
+    PIN_OFFSET(fgr_camera_path, keyframe_count, 24);
+}
+
+TEST(AbiLayout, Light) {
+    PIN_SIZE(fgr_light, 40);
+    PIN_OFFSET(fgr_light, type, 8);
+    PIN_OFFSET(fgr_light, vector, 12);
+    PIN_OFFSET(fgr_light, colour, 24);
+    PIN_OFFSET(fgr_light, intensity, 36);
+}
+
+TEST(AbiLayout, MarchSettings) {
+    PIN_SIZE(fgr_march_settings, 24);
+    PIN_OFFSET(fgr_march_settings, max_steps, 8);
+    PIN_OFFSET(fgr_march_settings, max_distance, 12);
+    PIN_OFFSET(fgr_march_settings, hit_threshold, 16);
+    PIN_OFFSET(fgr_march_settings, de_iterations, 20);
+}
+
+TEST(AbiLayout, SceneDesc) {
+    PIN_SIZE(fgr_scene_desc, 144);
+    PIN_OFFSET(fgr_scene_desc, id, 8);
+    PIN_OFFSET(fgr_scene_desc, name, 16);
+    PIN_OFFSET(fgr_scene_desc, description, 24);
+    PIN_OFFSET(fgr_scene_desc, source, 32);
+    PIN_OFFSET(fgr_scene_desc, source_name, 40);
+    PIN_OFFSET(fgr_scene_desc, params, 48);
+    PIN_OFFSET(fgr_scene_desc, param_count, 56);
+    PIN_OFFSET(fgr_scene_desc, cameras, 64);
+    PIN_OFFSET(fgr_scene_desc, camera_count, 72);
+    PIN_OFFSET(fgr_scene_desc, camera_paths, 80);
+    PIN_OFFSET(fgr_scene_desc, camera_path_count, 88);
+    PIN_OFFSET(fgr_scene_desc, lights, 96);
+    PIN_OFFSET(fgr_scene_desc, light_count, 104);
+    PIN_OFFSET(fgr_scene_desc, effects, 112);
+    PIN_OFFSET(fgr_scene_desc, march, 120);
+}
+
+TEST(AbiVersion, PackingMacros) {
+    static_assert(FGR_ABI_VERSION == ((FGR_ABI_VERSION_MAJOR << 16) | FGR_ABI_VERSION_MINOR));
+    EXPECT_EQ(FGR_ABI_VERSION_MAJOR, 1u);
+    EXPECT_EQ(FGR_ABI_MAJOR(FGR_ABI_VERSION), FGR_ABI_VERSION_MAJOR);
+    EXPECT_EQ(FGR_ABI_MINOR(FGR_ABI_VERSION), FGR_ABI_VERSION_MINOR);
+    EXPECT_EQ(FGR_ABI_MAJOR(0x00030007u), 3u);
+    EXPECT_EQ(FGR_ABI_MINOR(0x00030007u), 7u);
+    EXPECT_EQ(FGR_ABI_MINOR(0xffffffffu), 0xffffu);
+    const fgr_struct_header header = FGR_HEADER(fgr_light);
+    EXPECT_EQ(header.struct_size, sizeof(fgr_light));
+    EXPECT_EQ(header.abi_version, FGR_ABI_VERSION);
+}
+
+// --- A valid description, built in memory --------------------------------------------------------
+
+// Owns every array the description points into; tests break one field and expect a refusal.
+// Not copyable: `desc` points into the object's own members.
+struct SceneBuilder {
+    SceneBuilder() {
+        // clang-format off
+        params = {
+            {FGR_HEADER(fgr_param_desc), "power", "Power", "Fractal", FGR_PARAM_FLOAT, 1.0f, 16.0f,
+             {8.0f, 0.0f, 0.0f}, nullptr, "exponent of the iteration"},
+            {FGR_HEADER(fgr_param_desc), "colouring", nullptr, nullptr, FGR_PARAM_INT, 0.0f, 2.0f,
+             {1.0f, 0.0f, 0.0f}, "orbit|normal|flat", nullptr},
+            {FGR_HEADER(fgr_param_desc), "tint", "Tint", "Look", FGR_PARAM_COLOUR, 0.0f, 1.0f,
+             {0.5f, 0.6f, 0.7f}, nullptr, nullptr},
+            {FGR_HEADER(fgr_param_desc), "julia_mode", "Julia", "Fractal", FGR_PARAM_BOOL, 0.0f,
+             1.0f, {0.0f, 0.0f, 0.0f}, nullptr, nullptr},
+        };
+        cameras = {
+            {FGR_HEADER(fgr_camera), "front", {0, -3, 0}, {0, 0, 0}, {0, 0, 1}, 60.0f},
+            {FGR_HEADER(fgr_camera), "top-down", {0, 0, 3}, {0, 0, 0}, {0, 1, 0}, 45.0f},
+        };
+        keyframes = {
+            {FGR_HEADER(fgr_keyframe), 0.0f, {0, -3, 0}, {0, 0, 0}, {0, 0, 1}, 60.0f},
+            {FGR_HEADER(fgr_keyframe), 2.0f, {3, 0, 0}, {0, 0, 0}, {0, 0, 1}, 60.0f},
+            {FGR_HEADER(fgr_keyframe), 5.0f, {0, 3, 0}, {0, 0, 0}, {0, 0, 1}, 50.0f},
+        };
+        paths = {{FGR_HEADER(fgr_camera_path), "orbit", keyframes.data(), 3}};
+        lights = {
+            {FGR_HEADER(fgr_light), FGR_LIGHT_DIRECTIONAL, {0, 0, 2}, {1, 1, 1}, 1.0f},
+            {FGR_HEADER(fgr_light), FGR_LIGHT_POINT, {1, 2, 3}, {1, 0.5f, 0}, 4.0f},
+        };
+        desc = {FGR_HEADER(fgr_scene_desc),
+                "test-scene",
+                "Test scene",
+                "a scene built in memory",
+                "real scene_de(vec3 p, PARAMS) { return length(p) - 1; }\n",
+                "test.cl",
+                params.data(),
+                static_cast<uint32_t>(params.size()),
+                cameras.data(),
+                static_cast<uint32_t>(cameras.size()),
+                paths.data(),
+                static_cast<uint32_t>(paths.size()),
+                lights.data(),
+                static_cast<uint32_t>(lights.size()),
+                FGR_EFFECT_ALL_V1,
+                {FGR_HEADER(fgr_march_settings), 256, 10.0f, 1.5f, 12}};
+        // clang-format on
+    }
+    SceneBuilder(const SceneBuilder&) = delete;
+    SceneBuilder& operator=(const SceneBuilder&) = delete;
+
+    std::vector<fgr_param_desc> params;
+    std::vector<fgr_camera> cameras;
+    std::vector<fgr_keyframe> keyframes;
+    std::vector<fgr_camera_path> paths;
+    std::vector<fgr_light> lights;
+    fgr_scene_desc desc{};
+};
+
+class CopyScene : public ::testing::Test {
+protected:
+    // Expects a refusal whose reason contains `reason_part`.
+    void expect_refused(const std::string& reason_part) {
+        expect_refused(&built.desc, reason_part);
+    }
+    static void expect_refused(const fgr_scene_desc* desc, const std::string& reason_part) {
+        const LoadResult result = copy_scene_description(desc);
+        EXPECT_FALSE(result.scene.has_value());
+        EXPECT_NE(result.error.find(reason_part), std::string::npos)
+            << "reason was: " << result.error << "\nexpected it to contain: " << reason_part;
+        EXPECT_EQ(result.error.find('\n'), std::string::npos) << "reason must be one line";
+    }
+    Scene expect_accepted() {
+        LoadResult result = copy_scene_description(&built.desc);
+        EXPECT_TRUE(result.scene.has_value()) << result.error;
+        return result.scene.value_or(Scene{});
+    }
+
+    SceneBuilder built;
+};
+
+constexpr float kNaN = std::numeric_limits<float>::quiet_NaN();
+
+TEST_F(CopyScene, CopiesEverything) {
+    const Scene scene = expect_accepted();
+    EXPECT_EQ(scene.id, "test-scene");
+    EXPECT_EQ(scene.name, "Test scene");
+    EXPECT_EQ(scene.description, "a scene built in memory");
+    EXPECT_EQ(scene.source, built.desc.source);
+    EXPECT_EQ(scene.source_name, "test.cl");
+    EXPECT_TRUE(scene.plugin_file.empty());
+    EXPECT_EQ(scene.effects, uint64_t{FGR_EFFECT_ALL_V1});
+    EXPECT_EQ(scene.march.max_steps, 256u);
+    EXPECT_FLOAT_EQ(scene.march.max_distance, 10.0f);
+    EXPECT_FLOAT_EQ(scene.march.hit_threshold, 1.5f);
+    EXPECT_EQ(scene.march.de_iterations, 12u);
+}
+
+TEST_F(CopyScene, CopiesParams) {
+    const Scene scene = expect_accepted();
+    ASSERT_EQ(scene.params.size(), 4u + 4u);
+    const ParamInfo& power = scene.params[0];
+    EXPECT_EQ(power.id, "power");
+    EXPECT_EQ(power.label, "Power");
+    EXPECT_EQ(power.group, "Fractal");
+    EXPECT_EQ(power.description, "exponent of the iteration");
+    EXPECT_EQ(power.type, ParamType::Float);
+    EXPECT_FLOAT_EQ(power.min_value, 1.0f);
+    EXPECT_FLOAT_EQ(power.max_value, 16.0f);
+    EXPECT_FLOAT_EQ(power.default_value[0], 8.0f);
+    EXPECT_FALSE(power.builtin);
+
+    const ParamInfo& colouring = scene.params[1];
+    EXPECT_EQ(colouring.label, "colouring") << "NULL label means the id";
+    EXPECT_EQ(colouring.group, "Scene") << "NULL group means Scene";
+    EXPECT_EQ(colouring.description, "");
+    EXPECT_EQ(colouring.choices, (std::vector<std::string>{"orbit", "normal", "flat"}));
+
+    const ParamInfo& tint = scene.params[2];
+    EXPECT_EQ(tint.type, ParamType::Colour);
+    EXPECT_EQ(tint.default_value, (std::array<float, 3>{0.5f, 0.6f, 0.7f}));
+    EXPECT_EQ(scene.params[3].type, ParamType::Bool);
+}
+
+TEST_F(CopyScene, AppendsBuiltinParamsFromMarchSettings) {
+    const Scene scene = expect_accepted();
+    const std::vector<std::pair<std::string, float>> expected = {{"max_steps", 256.0f},
+                                                                 {"max_distance", 10.0f},
+                                                                 {"hit_threshold", 1.5f},
+                                                                 {"iterations", 12.0f}};
+    for (const auto& [id, default_value] : expected) {
+        const ParamInfo* param = scene.find_param(id);
+        ASSERT_NE(param, nullptr) << id;
+        EXPECT_TRUE(param->builtin) << id;
+        EXPECT_EQ(param->group, "Quality") << id;
+        EXPECT_FLOAT_EQ(param->default_value[0], default_value) << id;
+    }
+    EXPECT_EQ(scene.params[4].id, "max_steps") << "built-ins come after the scene's own";
+    EXPECT_EQ(scene.find_param("max_steps")->type, ParamType::Int);
+    EXPECT_EQ(scene.find_param("hit_threshold")->description,
+              "hit when DE < threshold * pixel footprint");
+    EXPECT_EQ(scene.find_param("iterations")->description, "distance estimator iterations");
+    EXPECT_EQ(scene.find_param("nonexistent"), nullptr);
+}
+
+TEST_F(CopyScene, CopiesCamerasAndPaths) {
+    const Scene scene = expect_accepted();
+    ASSERT_EQ(scene.cameras.size(), 2u);
+    EXPECT_EQ(scene.cameras[0].name, "front");
+    EXPECT_EQ(scene.cameras[0].view.position, glm::vec3(0, -3, 0));
+    EXPECT_EQ(scene.cameras[0].view.up, glm::vec3(0, 0, 1));
+    EXPECT_FLOAT_EQ(scene.cameras[1].view.fov_degrees, 45.0f);
+    ASSERT_NE(scene.find_camera("top-down"), nullptr);
+    EXPECT_EQ(scene.find_camera("top-down")->view.position, glm::vec3(0, 0, 3));
+    EXPECT_EQ(scene.find_camera("side"), nullptr);
+
+    const CameraPath* orbit = scene.find_camera_path("orbit");
+    ASSERT_NE(orbit, nullptr);
+    ASSERT_EQ(orbit->keyframes.size(), 3u);
+    EXPECT_FLOAT_EQ(orbit->keyframes[2].time, 5.0f);
+    EXPECT_EQ(orbit->keyframes[1].view.position, glm::vec3(3, 0, 0));
+    EXPECT_FLOAT_EQ(orbit->duration(), 5.0f);
+    EXPECT_EQ(scene.find_camera_path("spiral"), nullptr);
+}
+
+TEST_F(CopyScene, CopiesLightsNormalisingDirections) {
+    const Scene scene = expect_accepted();
+    ASSERT_EQ(scene.lights.size(), 2u);
+    EXPECT_EQ(scene.lights[0].type, LightType::Directional);
+    EXPECT_EQ(scene.lights[0].vector, glm::vec3(0, 0, 1));
+    EXPECT_EQ(scene.lights[1].type, LightType::Point);
+    EXPECT_EQ(scene.lights[1].vector, glm::vec3(1, 2, 3)) << "a position is not normalised";
+    EXPECT_EQ(scene.lights[1].colour, glm::vec3(1, 0.5f, 0));
+    EXPECT_FLOAT_EQ(scene.lights[1].intensity, 4.0f);
+}
+
+TEST_F(CopyScene, DefaultsSourceNameToId) {
+    built.desc.source_name = nullptr;
+    EXPECT_EQ(expect_accepted().source_name, "test-scene.cl");
+}
+
+TEST_F(CopyScene, AcceptsNoParamsAndNoPaths) {
+    built.desc.params = nullptr;
+    built.desc.param_count = 0;
+    built.desc.camera_paths = nullptr;
+    built.desc.camera_path_count = 0;
+    const Scene scene = expect_accepted();
+    EXPECT_EQ(scene.params.size(), 4u);
+    EXPECT_TRUE(scene.camera_paths.empty());
+}
+
+// --- Versions and struct sizes -------------------------------------------------------------------
+
+TEST_F(CopyScene, RefusesNullDescription) { expect_refused(nullptr, "NULL"); }
+
+TEST_F(CopyScene, RefusesTooSmallStruct) {
+    built.desc.header.struct_size = offsetof(fgr_scene_desc, march);
+    expect_refused("description struct too small (120 bytes)");
+}
+
+TEST_F(CopyScene, RefusesOtherMajorVersion) {
+    built.desc.header.abi_version = 2u << 16;
+    expect_refused("ABI major version 2, host supports 1");
+}
+
+// A plugin built against a newer minor version: its structs carry appended fields.
+struct NewerSceneDesc {
+    fgr_scene_desc v1;
+    uint64_t appended_field;
+};
+struct NewerParamDesc {
+    fgr_param_desc v1;
+    double appended_field;
+};
+
+TEST_F(CopyScene, AcceptsNewerMinorWithBiggerStructs) {
+    NewerSceneDesc newer{built.desc, 42};
+    newer.v1.header = {sizeof(NewerSceneDesc), FGR_ABI_VERSION + 1};
+    std::vector<NewerParamDesc> newer_params;
+    for (const fgr_param_desc& param : built.params) {
+        newer_params.push_back({param, 1.0});
+        newer_params.back().v1.header = {sizeof(NewerParamDesc), FGR_ABI_VERSION + 1};
+    }
+    newer.v1.params = &newer_params[0].v1;
+
+    const LoadResult result = copy_scene_description(&newer.v1);
+    ASSERT_TRUE(result.scene.has_value()) << result.error;
+    ASSERT_EQ(result.scene->params.size(), 8u);
+    EXPECT_EQ(result.scene->params[2].id, "tint") << "elements read with the bigger stride";
+    EXPECT_FLOAT_EQ(result.scene->params[2].default_value[2], 0.7f);
+    EXPECT_EQ(result.scene->params[3].id, "julia_mode");
+}
+
+TEST_F(CopyScene, RefusesMixedElementSizes) {
+    built.lights[1].header.struct_size += 8;
+    expect_refused("light 1 has struct_size");
+}
+
+TEST_F(CopyScene, RefusesTooSmallElement) {
+    for (fgr_camera& camera : built.cameras) camera.header.struct_size = 16;
+    expect_refused("camera struct too small");
+}
+
+TEST_F(CopyScene, RefusesElementWithOtherMajorVersion) {
+    built.params[0].header.abi_version = 2u << 16;
+    expect_refused("parameter has ABI major version 2");
+}
+
+// --- Scene identity and source -------------------------------------------------------------------
+
+TEST_F(CopyScene, RefusesBadIds) {
+    for (const char* id : {"", "Mandelbulb", "1bulb", "-bulb", "bulb box", "bulb.so"}) {
+        built.desc.id = id;
+        expect_refused("must match [a-z][a-z0-9_-]*");
+    }
+    const std::string too_long(64, 'a');
+    built.desc.id = too_long.c_str();
+    expect_refused("longer than 63");
+    built.desc.id = nullptr;
+    expect_refused("scene id is NULL");
+}
+
+TEST_F(CopyScene, AcceptsIdAtLengthLimit) {
+    const std::string longest = "a" + std::string(62, '-');
+    built.desc.id = longest.c_str();
+    EXPECT_EQ(expect_accepted().id, longest);
+}
+
+TEST_F(CopyScene, RefusesMissingTexts) {
+    built.desc.name = "";
+    expect_refused("scene name is empty");
+    built.desc.name = nullptr;
+    expect_refused("scene name is NULL");
+    built.desc.name = "Test";
+    built.desc.description = nullptr;
+    expect_refused("scene description is NULL");
+}
+
+TEST_F(CopyScene, RefusesNullSource) {
+    built.desc.source = nullptr;
+    expect_refused("source is NULL");
+}
+
+TEST_F(CopyScene, RefusesEmptyAndOversizedSource) {
+    built.desc.source = "";
+    expect_refused("source is empty");
+    const std::string huge((4u << 20) + 1, ' ');
+    built.desc.source = huge.c_str();
+    expect_refused("source longer than 4194304 bytes");
+}
+
+// --- Parameters ----------------------------------------------------------------------------------
+
+TEST_F(CopyScene, RefusesMinGreaterThanMax) {
+    built.params[0].min_value = 17.0f;
+    expect_refused("parameter 'power': min 17 greater than max 16");
+}
+
+TEST_F(CopyScene, RefusesNanDefault) {
+    built.params[0].default_value[0] = kNaN;
+    expect_refused("parameter 'power': default not finite");
+}
+
+TEST_F(CopyScene, RefusesInfiniteRange) {
+    built.params[0].max_value = std::numeric_limits<float>::infinity();
+    expect_refused("parameter 'power': min/max not finite");
+}
+
+TEST_F(CopyScene, RefusesDefaultOutOfRange) {
+    built.params[0].default_value[0] = 20.0f;
+    expect_refused("parameter 'power': default 20 outside [1, 16]");
+}
+
+TEST_F(CopyScene, RefusesVectorComponentOutOfRange) {
+    built.params[2].default_value[2] = 1.5f;
+    expect_refused("parameter 'tint': default 1.5 outside [0, 1]");
+}
+
+TEST_F(CopyScene, RefusesWrongChoiceCount) {
+    built.params[1].choices = "orbit|normal";
+    expect_refused("parameter 'colouring': 2 choices for 3 values");
+}
+
+TEST_F(CopyScene, RefusesEmptyChoiceName) {
+    built.params[1].choices = "orbit||flat";
+    expect_refused("parameter 'colouring': empty name in choices");
+}
+
+TEST_F(CopyScene, RefusesChoicesOnFloat) {
+    built.params[0].choices = "a|b";
+    expect_refused("parameter 'power': choices are only allowed on int");
+}
+
+TEST_F(CopyScene, RefusesNonIntegralInt) {
+    built.params[1].default_value[0] = 0.5f;
+    expect_refused("parameter 'colouring': int min, max and default must be integral");
+}
+
+TEST_F(CopyScene, RefusesBadBool) {
+    built.params[3].default_value[0] = 0.5f;
+    expect_refused("parameter 'julia_mode': bool default must be 0 or 1");
+    built.params[3].default_value[0] = 1.0f;
+    built.params[3].max_value = 2.0f;
+    expect_refused("parameter 'julia_mode': bool needs min 0 and max 1");
+}
+
+TEST_F(CopyScene, RefusesUnknownParamType) {
+    built.params[0].type = 5;
+    expect_refused("parameter 'power': unknown type 5");
+}
+
+TEST_F(CopyScene, RefusesDuplicateParamId) {
+    built.params[2].id = "power";
+    expect_refused("parameter 'power': duplicate id");
+}
+
+TEST_F(CopyScene, RefusesParamIdOfBuiltin) {
+    built.params[0].id = "iterations";
+    expect_refused("parameter 'iterations': id is reserved for a built-in");
+}
+
+TEST_F(CopyScene, RefusesBadParamIds) {
+    // '-' is allowed in scene ids but not here: a parameter id becomes a C identifier.
+    for (const char* id : {"", "bail-out", "Power", "2x", "_x"}) {
+        built.params[0].id = id;
+        expect_refused("id must match [a-z][a-z0-9_]*");
+    }
+    built.params[0].id = nullptr;
+    expect_refused("parameter 0 id is NULL");
+}
+
+TEST_F(CopyScene, RefusesNullParamArray) {
+    built.desc.params = nullptr;
+    expect_refused("parameter count is 4 but the array is NULL");
+}
+
+TEST_F(CopyScene, RefusesTooManyParams) {
+    built.desc.param_count = 1025;
+    expect_refused("parameter count 1025 outside [0, 1024]");
+}
+
+// --- Cameras and paths ---------------------------------------------------------------------------
+
+TEST_F(CopyScene, RefusesZeroCameras) {
+    built.desc.camera_count = 0;
+    expect_refused("camera count 0 outside [1, 256]");
+}
+
+TEST_F(CopyScene, RefusesBadFov) {
+    for (float fov : {0.0f, 180.0f, -10.0f}) {
+        built.cameras[1].fov_degrees = fov;
+        expect_refused("camera 'top-down': fov");
+    }
+    built.cameras[1].fov_degrees = kNaN;
+    expect_refused("camera 'top-down': numbers not finite");
+}
+
+TEST_F(CopyScene, RefusesCameraAtItsTarget) {
+    built.cameras[0].target[1] = -3.0f;
+    expect_refused("camera 'front': position equals target");
+}
+
+TEST_F(CopyScene, RefusesUpParallelToView) {
+    built.cameras[0].up[0] = 0.0f;
+    built.cameras[0].up[1] = 2.0f;
+    built.cameras[0].up[2] = 0.0f;
+    expect_refused("camera 'front': up is zero or parallel");
+}
+
+TEST_F(CopyScene, RefusesBadCameraNames) {
+    built.cameras[1].name = "front";
+    expect_refused("camera 'front': duplicate name");
+    built.cameras[1].name = "Top View";
+    expect_refused("must match [a-z0-9_-]+");
+}
+
+TEST_F(CopyScene, RefusesKeyframeTimesNotIncreasing) {
+    built.keyframes[2].time = 2.0f;
+    expect_refused("camera path 'orbit' keyframe 2: time 2 not after 2");
+}
+
+TEST_F(CopyScene, RefusesSingleKeyframe) {
+    built.paths[0].keyframe_count = 1;
+    expect_refused("camera path 'orbit' keyframe count 1 outside [2, 10000]");
+}
+
+TEST_F(CopyScene, RefusesBadKeyframeView) {
+    built.keyframes[1].fov_degrees = 200.0f;
+    expect_refused("camera path 'orbit' keyframe 1: fov 200 outside (0, 180)");
+}
+
+// --- Lights, effects, march settings -------------------------------------------------------------
+
+TEST_F(CopyScene, RefusesUnknownEffectBit) {
+    built.desc.effects = FGR_EFFECT_SHADOWS | (uint64_t{1} << 2) | (uint64_t{1} << 40);
+    expect_refused("unknown effect bits 0x10000000004");
+}
+
+TEST_F(CopyScene, RefusesZeroLights) {
+    built.desc.light_count = 0;
+    expect_refused("light count 0 outside [1, 16]");
+}
+
+TEST_F(CopyScene, RefusesSeventeenLights) {
+    std::vector<fgr_light> many(17, built.lights[0]);
+    built.desc.lights = many.data();
+    built.desc.light_count = 17;
+    expect_refused("light count 17 outside [1, 16]");
+}
+
+TEST_F(CopyScene, RefusesNegativeIntensity) {
+    built.lights[1].intensity = -1.0f;
+    expect_refused("light 1: negative intensity -1");
+}
+
+TEST_F(CopyScene, RefusesNegativeColour) {
+    built.lights[0].colour[1] = -0.1f;
+    expect_refused("light 0: negative colour");
+}
+
+TEST_F(CopyScene, RefusesZeroDirection) {
+    built.lights[0].vector[2] = 0.0f;
+    expect_refused("light 0: zero direction");
+}
+
+TEST_F(CopyScene, RefusesUnknownLightType) {
+    built.lights[0].type = 7;
+    expect_refused("light 0: unknown type 7");
+}
+
+TEST_F(CopyScene, RefusesZeroMaxSteps) {
+    built.desc.march.max_steps = 0;
+    expect_refused("march settings: max_steps 0 outside [1, 100000]");
+}
+
+TEST_F(CopyScene, RefusesBadMarchSettings) {
+    built.desc.march.de_iterations = 1001;
+    expect_refused("de_iterations 1001 outside [1, 1000]");
+    built.desc.march.de_iterations = 12;
+    built.desc.march.hit_threshold = 0.0f;
+    expect_refused("hit_threshold 0 must be finite and > 0");
+    built.desc.march.hit_threshold = 1.0f;
+    built.desc.march.max_distance = kNaN;
+    expect_refused("max_distance nan must be finite and > 0");
+    built.desc.march.max_distance = 2e6f;
+    expect_refused("march settings: max_distance 2000000 outside the built-in range");
+}
+
+TEST_F(CopyScene, RefusesTooSmallMarchStruct) {
+    built.desc.march.header.struct_size = 8;
+    expect_refused("march settings struct too small");
+}
+
+}  // namespace
+}  // namespace fgr

@@ -1,0 +1,556 @@
+// The fgr command line, run as a child process: every bad input is one "fgr: error: " line on
+// stderr, a non-zero exit and no output file; valid renders write an 8-bit RGB PNG of the asked
+// size and print render_ms and hits.
+
+#include <gtest/gtest.h>
+
+#include <fcntl.h>
+#include <poll.h>
+#include <signal.h>
+#include <sys/types.h>
+#include <sys/wait.h>
+#include <unistd.h>
+
+#include <algorithm>
+#include <array>
+#include <cctype>
+#include <cerrno>
+#include <chrono>
+#include <cmath>
+#include <cstdint>
+#include <cstdlib>
+#include <cstring>
+#include <filesystem>
+#include <fstream>
+#include <iterator>
+#include <optional>
+#include <sstream>
+#include <string>
+#include <vector>
+
+extern char** environ;
+
+namespace fgr {
+namespace {
+namespace fs = std::filesystem;
+
+const fs::path kFgrExe = FGR_TEST_FGR_EXE;
+constexpr std::chrono::seconds kTimeout{120};
+
+// --- Running fgr ---------------------------------------------------------------------------------
+
+struct RunResult {
+    int exit_code = -1;   // valid when exited
+    bool exited = false;  // terminated through exit()
+    int term_signal = 0;  // the signal that killed it, 0 if none
+    bool timed_out = false;
+    std::string out;
+    std::string err;
+};
+
+std::string describe(const std::vector<std::string>& args) {
+    std::string text = "fgr";
+    for (const std::string& arg : args) text += " '" + arg + "'";
+    return text;
+}
+
+std::ostream& operator<<(std::ostream& os, const RunResult& result) {
+    if (result.timed_out) os << "timed out after " << kTimeout.count() << " s; ";
+    if (result.exited) os << "exit " << result.exit_code;
+    if (result.term_signal != 0) os << "killed by signal " << result.term_signal;
+    return os << "\n--- stdout ---\n" << result.out << "--- stderr ---\n" << result.err << "---";
+}
+
+// A pipe whose ends close themselves; both ends are close-on-exec.
+class Pipe {
+public:
+    Pipe() {
+        if (pipe2(fds_.data(), O_CLOEXEC) != 0) fds_ = {-1, -1};
+    }
+    Pipe(const Pipe&) = delete;
+    Pipe& operator=(const Pipe&) = delete;
+    ~Pipe() {
+        close_read();
+        close_write();
+    }
+    bool ok() const { return fds_[0] >= 0; }
+    int read_end() const { return fds_[0]; }
+    int write_end() const { return fds_[1]; }
+    void close_read() { close_fd(fds_[0]); }
+    void close_write() { close_fd(fds_[1]); }
+
+private:
+    static void close_fd(int& fd) {
+        if (fd >= 0) ::close(fd);
+        fd = -1;
+    }
+    std::array<int, 2> fds_{};
+};
+
+// Runs fgr with `args` in `working_dir`, capturing stdout and stderr. The child gets the caller's
+// environment minus FGR_PLUGIN_PATH, so it must find its plugins next to itself. A child still
+// running after kTimeout is killed and reported as timed out.
+RunResult run_fgr(const std::vector<std::string>& args, const fs::path& working_dir) {
+    RunResult result;
+
+    // Everything the child needs is prepared before fork(): after it only async-signal-safe calls.
+    const std::string exe = kFgrExe.string();
+    const std::string cwd = working_dir.string();
+    std::vector<std::string> storage;
+    storage.push_back(exe);
+    storage.insert(storage.end(), args.begin(), args.end());
+    std::vector<char*> argv;
+    for (std::string& arg : storage) argv.push_back(arg.data());
+    argv.push_back(nullptr);
+    std::vector<char*> envp;
+    for (char** entry = environ; *entry != nullptr; ++entry) {
+        if (std::strncmp(*entry, "FGR_PLUGIN_PATH=", 16) != 0) envp.push_back(*entry);
+    }
+    envp.push_back(nullptr);
+
+    Pipe out_pipe;
+    Pipe err_pipe;
+    if (!out_pipe.ok() || !err_pipe.ok()) {
+        result.err = std::string("test harness: pipe2 failed: ") + std::strerror(errno);
+        return result;
+    }
+
+    const pid_t pid = fork();
+    if (pid < 0) {
+        result.err = std::string("test harness: fork failed: ") + std::strerror(errno);
+        return result;
+    }
+    if (pid == 0) {
+        const int null_fd = ::open("/dev/null", O_RDONLY);
+        if (null_fd < 0 || dup2(null_fd, STDIN_FILENO) < 0) _exit(126);
+        if (dup2(out_pipe.write_end(), STDOUT_FILENO) < 0) _exit(126);
+        if (dup2(err_pipe.write_end(), STDERR_FILENO) < 0) _exit(126);
+        if (chdir(cwd.c_str()) != 0) _exit(126);
+        execve(exe.c_str(), argv.data(), envp.data());
+        _exit(127);
+    }
+    out_pipe.close_write();
+    err_pipe.close_write();
+
+    const auto deadline = std::chrono::steady_clock::now() + kTimeout;
+    std::array<pollfd, 2> polled{
+        {{out_pipe.read_end(), POLLIN, 0}, {err_pipe.read_end(), POLLIN, 0}}};
+    std::array<std::string*, 2> sinks{&result.out, &result.err};
+    int open_streams = 2;
+    while (open_streams > 0) {
+        const auto left = std::chrono::duration_cast<std::chrono::milliseconds>(
+            deadline - std::chrono::steady_clock::now());
+        if (left.count() <= 0) {
+            result.timed_out = true;
+            kill(pid, SIGKILL);
+            break;
+        }
+        const int ready = poll(polled.data(), polled.size(), static_cast<int>(left.count()));
+        if (ready < 0) {
+            if (errno == EINTR) continue;
+            kill(pid, SIGKILL);
+            break;
+        }
+        for (std::size_t i = 0; i < polled.size(); ++i) {
+            if (polled[i].fd < 0 || polled[i].revents == 0) continue;
+            char buffer[4096];
+            const ssize_t n = ::read(polled[i].fd, buffer, sizeof buffer);
+            if (n > 0) {
+                sinks[i]->append(buffer, static_cast<std::size_t>(n));
+            } else if (n == 0 || errno != EINTR) {
+                polled[i].fd = -1;  // poll() ignores negative descriptors
+                --open_streams;
+            }
+        }
+    }
+
+    int status = 0;
+    while (waitpid(pid, &status, 0) < 0 && errno == EINTR) {
+    }
+    if (WIFEXITED(status)) {
+        result.exited = true;
+        result.exit_code = WEXITSTATUS(status);
+    } else if (WIFSIGNALED(status)) {
+        result.term_signal = WTERMSIG(status);
+    }
+    return result;
+}
+
+// --- Fixture: a fresh, empty working directory per test -----------------------------------------
+
+class TempDir {
+public:
+    TempDir() {
+        std::string pattern = (fs::temp_directory_path() / "fgr_cli_test.XXXXXX").string();
+        if (mkdtemp(pattern.data()) != nullptr) path_ = pattern;
+    }
+    TempDir(const TempDir&) = delete;
+    TempDir& operator=(const TempDir&) = delete;
+    ~TempDir() {
+        std::error_code ignored;
+        if (!path_.empty()) fs::remove_all(path_, ignored);
+    }
+    const fs::path& path() const { return path_; }
+
+private:
+    fs::path path_;
+};
+
+std::vector<std::string> directory_listing(const fs::path& directory) {
+    std::vector<std::string> names;
+    std::error_code error;
+    for (const fs::directory_entry& entry : fs::directory_iterator(directory, error)) {
+        names.push_back(entry.path().filename().string());
+    }
+    std::sort(names.begin(), names.end());
+    return names;
+}
+
+std::string joined(const std::vector<std::string>& names) {
+    std::string text;
+    for (const std::string& name : names) text += (text.empty() ? "" : ", ") + name;
+    return text.empty() ? "(empty)" : text;
+}
+
+class CliTest : public ::testing::Test {
+protected:
+    void SetUp() override {
+        ASSERT_FALSE(dir_.path().empty()) << "cannot create a temporary directory";
+        ASSERT_TRUE(fs::exists(kFgrExe)) << kFgrExe << " does not exist; build the fgr target";
+    }
+
+    RunResult run(const std::vector<std::string>& args) {
+        RunResult result = run_fgr(args, dir_.path());
+        EXPECT_FALSE(result.timed_out) << describe(args) << ": " << result;
+        EXPECT_EQ(result.term_signal, 0) << describe(args) << ": " << result;
+        return result;
+    }
+
+    fs::path out_png() const { return dir_.path() / "out.png"; }
+    const fs::path& dir() const { return dir_.path(); }
+
+private:
+    TempDir dir_;
+};
+
+// --- Output checks ------------------------------------------------------------------------------
+
+std::string lower(std::string text) {
+    for (char& c : text) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
+    return text;
+}
+
+bool contains(const std::string& text, const std::string& part) {
+    return lower(text).find(lower(part)) != std::string::npos;
+}
+
+// The value after `key ` on the line starting with it, or nothing if there is no such line.
+std::optional<std::string> line_value(const std::string& text, const std::string& key) {
+    std::istringstream lines(text);
+    std::string line;
+    while (std::getline(lines, line)) {
+        if (!line.empty() && line.back() == '\r') line.pop_back();
+        if (line.rfind(key + " ", 0) == 0) return line.substr(key.size() + 1);
+    }
+    return std::nullopt;
+}
+
+std::optional<double> parse_double(const std::string& text) {
+    if (text.empty() || std::isspace(static_cast<unsigned char>(text.front()))) return std::nullopt;
+    char* end = nullptr;
+    const double value = std::strtod(text.c_str(), &end);
+    if (end != text.c_str() + text.size() || !std::isfinite(value)) return std::nullopt;
+    return value;
+}
+
+std::optional<long long> parse_integer(const std::string& text) {
+    if (text.empty() || !std::isdigit(static_cast<unsigned char>(text.front()))) {
+        return std::nullopt;
+    }
+    char* end = nullptr;
+    errno = 0;
+    const long long value = std::strtoll(text.c_str(), &end, 10);
+    if (end != text.c_str() + text.size() || errno != 0) return std::nullopt;
+    return value;
+}
+
+// Checks the render report on stdout and returns the hit count (-1 on failure).
+long long expect_render_report(const RunResult& result, int width, int height) {
+    const std::optional<std::string> ms = line_value(result.out, "render_ms");
+    const std::optional<std::string> hits = line_value(result.out, "hits");
+    EXPECT_TRUE(ms.has_value()) << "no `render_ms` line: " << result;
+    EXPECT_TRUE(hits.has_value()) << "no `hits` line: " << result;
+    if (!ms || !hits) return -1;
+    const std::optional<double> ms_value = parse_double(*ms);
+    EXPECT_TRUE(ms_value.has_value()) << "render_ms is not a number: '" << *ms << "'";
+    if (ms_value) {
+        EXPECT_GE(*ms_value, 0.0);
+    }
+    const std::optional<long long> hit_count = parse_integer(*hits);
+    EXPECT_TRUE(hit_count.has_value()) << "hits is not a non-negative integer: '" << *hits << "'";
+    if (!hit_count) return -1;
+    EXPECT_LE(*hit_count, static_cast<long long>(width) * height);
+    return *hit_count;
+}
+
+std::uint32_t big_endian_u32(const std::string& bytes, std::size_t offset) {
+    std::uint32_t value = 0;
+    for (std::size_t i = 0; i < 4; ++i) {
+        value = (value << 8) | static_cast<unsigned char>(bytes[offset + i]);
+    }
+    return value;
+}
+
+// Reads the PNG signature and IHDR chunk directly: width x height, 8-bit, colour type 2 (RGB).
+void expect_rgb_png(const fs::path& file, std::uint32_t width, std::uint32_t height) {
+    std::ifstream in(file, std::ios::binary);
+    ASSERT_TRUE(in) << file << " cannot be opened";
+    const std::string bytes((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+    ASSERT_GE(bytes.size(), 33u) << file << " is too short for a PNG";
+    const std::string signature("\x89PNG\r\n\x1a\n", 8);
+    ASSERT_EQ(bytes.substr(0, 8), signature) << file << " lacks the PNG signature";
+    EXPECT_EQ(big_endian_u32(bytes, 8), 13u) << "IHDR length";
+    EXPECT_EQ(bytes.substr(12, 4), "IHDR");
+    EXPECT_EQ(big_endian_u32(bytes, 16), width) << "IHDR width";
+    EXPECT_EQ(big_endian_u32(bytes, 20), height) << "IHDR height";
+    EXPECT_EQ(static_cast<unsigned char>(bytes[24]), 8) << "bit depth";
+    EXPECT_EQ(static_cast<unsigned char>(bytes[25]), 2) << "colour type (2 = RGB)";
+}
+
+// An error is exactly one line on stderr starting with "fgr: error: ".
+void expect_one_error_line(const RunResult& result) {
+    std::string err = result.err;
+    if (!err.empty() && err.back() == '\n') err.pop_back();
+    EXPECT_FALSE(err.empty()) << "nothing on stderr: " << result;
+    EXPECT_EQ(err.find('\n'), std::string::npos) << "more than one line on stderr: " << result;
+    EXPECT_EQ(err.rfind("fgr: error: ", 0), 0u)
+        << "stderr does not start with 'fgr: error: ': " << result;
+}
+
+// --- Bad input ----------------------------------------------------------------------------------
+
+constexpr int kAnyFailure = -1;  // any non-zero exit code
+
+struct BadInput {
+    const char* name;                  // test name suffix
+    std::vector<std::string> args;     // "{out}" is replaced by the output path
+    int exit_code;                     // expected exit code, or kAnyFailure
+    std::vector<std::string> mention;  // each must appear in the message (case-insensitive)
+    const char* out_name = "out.png";  // output path, relative to the test's directory
+};
+
+void PrintTo(const BadInput& input, std::ostream* os) { *os << input.name; }
+
+std::vector<std::string> render_args(std::vector<std::string> extra) {
+    std::vector<std::string> args{"render",  "mandelbulb", "-o",       "{out}",
+                                  "--width", "16",         "--height", "12"};
+    args.insert(args.end(), extra.begin(), extra.end());
+    return args;
+}
+
+std::vector<std::string> sized_render_args(std::vector<std::string> extra) {
+    std::vector<std::string> args{"render", "mandelbulb", "-o", "{out}"};
+    args.insert(args.end(), extra.begin(), extra.end());
+    return args;
+}
+
+const std::vector<BadInput> kBadInputs = {
+    {"UnknownScene",
+     {"render", "nosuchscene", "-o", "{out}", "--width", "16", "--height", "12"},
+     2,
+     {"nosuchscene"}},
+    {"UnknownParameter", render_args({"--set", "nosuchparam=1"}), 2, {"nosuchparam"}},
+    {"SetWithoutEquals", render_args({"--set", "power8"}), 2, {"power8"}},
+    {"NonNumericValue", render_args({"--set", "power=abc"}), 2, {"power"}},
+    {"TrailingJunkInValue", render_args({"--set", "power=8x"}), 2, {"power"}},
+    {"EmptyValue", render_args({"--set", "power="}), 2, {"power"}},
+    {"NanValue", render_args({"--set", "power=nan"}), 2, {"power"}},
+    {"InfValue", render_args({"--set", "power=inf"}), 2, {"power"}},
+    {"NegativeInfValue", render_args({"--set", "power=-inf"}), 2, {"power"}},
+    {"ValueAboveRange", render_args({"--set", "power=99"}), 2, {"power", "2", "16"}},
+    {"ValueBelowRange", render_args({"--set", "power=1"}), 2, {"power", "2", "16"}},
+    {"NonIntegerForIntParameter", render_args({"--set", "iterations=2.5"}), 2, {"iterations"}},
+    {"UnknownEnumName", render_args({"--set", "variant=bogus"}), 2, {"variant"}},
+    {"ZeroWidth", sized_render_args({"--width", "0", "--height", "12"}), 2, {"width"}},
+    {"ZeroHeight", sized_render_args({"--width", "16", "--height", "0"}), 2, {"height"}},
+    {"NegativeWidth", sized_render_args({"--width", "-5", "--height", "12"}), 2, {}},
+    {"AbsurdWidth", sized_render_args({"--width", "100000", "--height", "12"}), 2, {"width"}},
+    {"NonNumericWidth", sized_render_args({"--width", "abc", "--height", "12"}), 2, {"width"}},
+    {"UnknownCamera", render_args({"--camera", "nosuchcam"}), 2, {"nosuchcam"}},
+    {"UnknownCameraPath",
+     render_args({"--camera-path", "nosuchpath", "--time", "1"}),
+     2,
+     {"nosuchpath"}},
+    {"TimeWithoutCameraPath", render_args({"--time", "1"}), 2, {"time"}},
+    {"CameraAndCameraPath",
+     render_args({"--camera", "top", "--camera-path", "orbit", "--time", "1"}),
+     2,
+     {"camera"}},
+    {"CameraPathWithoutTime", render_args({"--camera-path", "orbit"}), 2, {"time"}},
+    {"OutputInMissingDirectory", render_args({}), 1, {"missing_dir"}, "missing_dir/out.png"},
+    {"MissingOutput", {"render", "mandelbulb", "--width", "16", "--height", "12"}, 2, {}},
+    {"OutputNotPng", render_args({}), 2, {".png"}, "out.jpg"},
+    {"NoSuchDevice", render_args({"--device", "99"}), kAnyFailure, {"device"}},
+    {"BadPacketWidth", render_args({"--packet-width", "3"}), 2, {"packet"}},
+    {"UnknownSubcommand", {"frobnicate"}, 2, {"frobnicate"}},
+    {"NoSubcommand", {}, kAnyFailure, {}},
+};
+
+class CliBadInput : public CliTest, public ::testing::WithParamInterface<BadInput> {};
+
+TEST_P(CliBadInput, FailsWithOneErrorLineAndNoOutput) {
+    const BadInput& input = GetParam();
+    const fs::path out = dir() / input.out_name;
+    std::vector<std::string> args = input.args;
+    for (std::string& arg : args) {
+        if (arg == "{out}") arg = out.string();
+    }
+
+    const RunResult result = run(args);
+    SCOPED_TRACE(describe(args));
+    ASSERT_TRUE(result.exited) << result;
+    EXPECT_NE(result.exit_code, 0) << result;
+    if (input.exit_code != kAnyFailure) {
+        EXPECT_EQ(result.exit_code, input.exit_code) << result;
+    }
+    expect_one_error_line(result);
+    for (const std::string& part : input.mention) {
+        EXPECT_TRUE(contains(result.err, part))
+            << "message should mention '" << part << "': " << result;
+    }
+    EXPECT_FALSE(fs::exists(out)) << out << " was written";
+    // The working directory and the output's directory are the same fresh directory: anything
+    // left there (a partial file, FILE.png.tmp-*, a created missing_dir) is a leftover.
+    EXPECT_TRUE(directory_listing(dir()).empty())
+        << "left behind: " << joined(directory_listing(dir()));
+}
+
+INSTANTIATE_TEST_SUITE_P(Cli, CliBadInput, ::testing::ValuesIn(kBadInputs),
+                         [](const ::testing::TestParamInfo<BadInput>& param_info) {
+                             return std::string(param_info.param.name);
+                         });
+
+TEST_F(CliTest, NoSubcommandPrintsUsage) {
+    const RunResult result = run({});
+    ASSERT_TRUE(result.exited) << result;
+    EXPECT_NE(result.exit_code, 0) << result;
+    EXPECT_TRUE(contains(result.out + result.err, "render")) << "no usage shown: " << result;
+}
+
+// --- Valid renders ------------------------------------------------------------------------------
+
+constexpr int kWidth = 64;
+constexpr int kHeight = 48;
+
+TEST_F(CliTest, RendersSmallImage) {
+    const RunResult result = run({"render", "mandelbulb", "-o", out_png().string(), "--width",
+                                  std::to_string(kWidth), "--height", std::to_string(kHeight)});
+    ASSERT_TRUE(result.exited) << result;
+    ASSERT_EQ(result.exit_code, 0) << result;
+    const long long hits = expect_render_report(result, kWidth, kHeight);
+    EXPECT_GT(hits, 0) << "the canonical view of the mandelbulb should hit the surface";
+    expect_rgb_png(out_png(), kWidth, kHeight);
+    EXPECT_EQ(directory_listing(dir()), std::vector<std::string>{"out.png"});
+}
+
+TEST_F(CliTest, RelativeOutputPathIsInWorkingDirectory) {
+    const RunResult result =
+        run({"render", "mandelbulb", "-o", "rel.png", "--width", "24", "--height", "16"});
+    ASSERT_TRUE(result.exited) << result;
+    ASSERT_EQ(result.exit_code, 0) << result;
+    expect_rgb_png(dir() / "rel.png", 24, 16);
+}
+
+TEST_F(CliTest, NonSquareSizeReachesHeader) {
+    const RunResult result =
+        run({"render", "mandelbulb", "-o", out_png().string(), "--width", "37", "--height", "5"});
+    ASSERT_TRUE(result.exited) << result;
+    ASSERT_EQ(result.exit_code, 0) << result;
+    expect_render_report(result, 37, 5);
+    expect_rgb_png(out_png(), 37, 5);
+}
+
+TEST_F(CliTest, OverwritesExistingOutput) {
+    {
+        std::ofstream junk(out_png(), std::ios::binary);
+        junk << std::string(10000, 'x');
+    }
+    const RunResult result = run({"render", "mandelbulb", "-o", out_png().string(), "--width",
+                                  std::to_string(kWidth), "--height", std::to_string(kHeight)});
+    ASSERT_TRUE(result.exited) << result;
+    ASSERT_EQ(result.exit_code, 0) << result;
+    expect_rgb_png(out_png(), kWidth, kHeight);
+    EXPECT_EQ(directory_listing(dir()), std::vector<std::string>{"out.png"});
+}
+
+TEST_F(CliTest, SameRenderTwiceHitsSamePixels) {
+    const std::vector<std::string> args{"render",  "mandelbulb", "-o",       out_png().string(),
+                                        "--width", "32",         "--height", "24"};
+    const RunResult first = run(args);
+    const RunResult second = run(args);
+    ASSERT_EQ(first.exit_code, 0) << first;
+    ASSERT_EQ(second.exit_code, 0) << second;
+    EXPECT_EQ(line_value(first.out, "hits"), line_value(second.out, "hits"));
+}
+
+struct ValidRender {
+    const char* name;
+    std::vector<std::string> extra;
+};
+
+void PrintTo(const ValidRender& input, std::ostream* os) { *os << input.name; }
+
+const std::vector<ValidRender> kValidRenders = {
+    {"PowerAndEnumByName", {"--set", "power=6", "--set", "variant=latitude"}},
+    {"EnumByNumber", {"--set", "variant=1"}},
+    {"RangeEndpoints", {"--set", "power=2", "--set", "bailout=64"}},
+    {"QualityIterations", {"--set", "iterations=8"}},
+    {"CameraTop", {"--camera", "top"}},
+    {"CameraClose", {"--camera", "close"}},
+    {"CameraPathOrbit", {"--camera-path", "orbit", "--time", "2.5"}},
+    {"CameraPathDiveStart", {"--camera-path", "dive", "--time", "0"}},
+    {"PacketWidth4", {"--packet-width", "4"}},
+    {"Device0", {"--device", "0"}},
+};
+
+class CliValidRender : public CliTest, public ::testing::WithParamInterface<ValidRender> {};
+
+TEST_P(CliValidRender, Succeeds) {
+    std::vector<std::string> args{"render",  "mandelbulb", "-o",       out_png().string(),
+                                  "--width", "32",         "--height", "24"};
+    args.insert(args.end(), GetParam().extra.begin(), GetParam().extra.end());
+    const RunResult result = run(args);
+    SCOPED_TRACE(describe(args));
+    ASSERT_TRUE(result.exited) << result;
+    ASSERT_EQ(result.exit_code, 0) << result;
+    expect_render_report(result, 32, 24);
+    expect_rgb_png(out_png(), 32, 24);
+}
+
+INSTANTIATE_TEST_SUITE_P(Cli, CliValidRender, ::testing::ValuesIn(kValidRenders),
+                         [](const ::testing::TestParamInfo<ValidRender>& param_info) {
+                             return std::string(param_info.param.name);
+                         });
+
+// --- list and info ------------------------------------------------------------------------------
+
+TEST_F(CliTest, ListShowsMandelbulbParametersCamerasAndPaths) {
+    const RunResult result = run({"list"});
+    ASSERT_TRUE(result.exited) << result;
+    ASSERT_EQ(result.exit_code, 0) << result;
+    for (const char* word : {"mandelbulb", "power", "bailout", "variant", "iterations", "canonical",
+                             "top", "close", "orbit", "dive"}) {
+        EXPECT_NE(result.out.find(word), std::string::npos)
+            << "missing '" << word << "': " << result;
+    }
+}
+
+TEST_F(CliTest, InfoListsADevice) {
+    const RunResult result = run({"info"});
+    ASSERT_TRUE(result.exited) << result;
+    ASSERT_EQ(result.exit_code, 0) << result;
+    EXPECT_TRUE(contains(result.out, "device")) << result;
+}
+
+}  // namespace
+}  // namespace fgr

@@ -1,0 +1,187 @@
+// PNG writing (atomic replacement, failure cleanup) and reading.
+
+#include <gtest/gtest.h>
+#include <unistd.h>
+
+#include <cstdint>
+#include <filesystem>
+#include <fstream>
+#include <iterator>
+#include <stdexcept>
+#include <string>
+#include <vector>
+
+#include "fgr/image_io.hpp"
+
+namespace fgr {
+namespace {
+
+namespace fs = std::filesystem;
+
+Image8 gradient(int width, int height) {
+    Image8 image;
+    image.width = width;
+    image.height = height;
+    for (int y = 0; y < height; ++y) {
+        for (int x = 0; x < width; ++x) {
+            image.rgb.push_back(static_cast<uint8_t>(x * 255 / (width - 1)));
+            image.rgb.push_back(static_cast<uint8_t>(y * 255 / (height - 1)));
+            image.rgb.push_back(static_cast<uint8_t>((x * 7 + y * 13) % 256));
+        }
+    }
+    return image;
+}
+
+Image8 solid(int width, int height, uint8_t value) {
+    return {width, height, std::vector<uint8_t>(std::size_t(3 * width * height), value)};
+}
+
+void write_bytes(const fs::path& path, const std::vector<uint8_t>& bytes) {
+    std::ofstream out(path, std::ios::binary);
+    out.write(reinterpret_cast<const char*>(bytes.data()), std::streamsize(bytes.size()));
+}
+
+std::vector<uint8_t> read_bytes(const fs::path& path) {
+    std::ifstream in(path, std::ios::binary);
+    return {std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>()};
+}
+
+// Each test gets a fresh directory of its own, removed afterwards.
+class ImageIo : public ::testing::Test {
+protected:
+    void SetUp() override {
+        const auto* test = ::testing::UnitTest::GetInstance()->current_test_info();
+        directory_ = fs::temp_directory_path() /
+                     ("fgr_image_io_" + std::to_string(::getpid()) + "_" + test->name());
+        fs::remove_all(directory_);
+        fs::create_directories(directory_);
+    }
+    void TearDown() override {
+        std::error_code ignored;
+        fs::remove_all(directory_, ignored);
+    }
+
+    // Names of leftover temporaries ("<name>.tmp-<pid>-<n>") in the test directory.
+    std::vector<std::string> temporaries() const {
+        std::vector<std::string> found;
+        for (const auto& entry : fs::recursive_directory_iterator(directory_)) {
+            const std::string name = entry.path().filename().string();
+            if (name.find(".tmp-") != std::string::npos) found.push_back(name);
+        }
+        return found;
+    }
+
+    fs::path directory_;
+};
+
+TEST_F(ImageIo, RoundTripsAGradientExactly) {
+    const Image8 image = gradient(37, 23);
+    const fs::path file = directory_ / "gradient.png";
+    write_png(file, image);
+    const Image8 read = read_png(file);
+    EXPECT_EQ(read.width, 37);
+    EXPECT_EQ(read.height, 23);
+    EXPECT_EQ(read.rgb, image.rgb);
+    EXPECT_TRUE(temporaries().empty());
+}
+
+TEST_F(ImageIo, WritingIntoAMissingDirectoryThrowsAndLeavesNothing) {
+    const fs::path file = directory_ / "missing" / "x.png";
+    try {
+        write_png(file, gradient(4, 4));
+        FAIL() << "expected std::runtime_error";
+    } catch (const std::runtime_error& error) {
+        EXPECT_EQ(std::string(error.what()),
+                  "cannot write '" + file.string() + "': No such file or directory");
+    }
+    EXPECT_FALSE(fs::exists(directory_ / "missing"));
+    EXPECT_TRUE(fs::is_empty(directory_));
+}
+
+TEST_F(ImageIo, ReplacesAnExistingFile) {
+    const fs::path file = directory_ / "frame.png";
+    write_png(file, solid(8, 8, 10));
+    write_png(file, gradient(16, 9));
+    const Image8 read = read_png(file);
+    EXPECT_EQ(read.width, 16);
+    EXPECT_EQ(read.rgb, gradient(16, 9).rgb);
+    EXPECT_TRUE(temporaries().empty());
+}
+
+TEST_F(ImageIo, InvalidImageThrowsAndLeavesTheTargetUntouched) {
+    const fs::path file = directory_ / "frame.png";
+    write_png(file, solid(8, 8, 10));
+    const std::vector<uint8_t> before = read_bytes(file);
+
+    Image8 short_buffer = solid(8, 8, 200);
+    short_buffer.rgb.pop_back();
+    EXPECT_THROW(write_png(file, short_buffer), std::invalid_argument);
+    EXPECT_THROW(write_png(file, Image8{}), std::invalid_argument);
+    EXPECT_THROW(write_png(file, Image8{-2, 3, {}}), std::invalid_argument);
+
+    EXPECT_EQ(read_bytes(file), before);
+    EXPECT_TRUE(temporaries().empty());
+}
+
+TEST_F(ImageIo, FailedRenameRemovesTheTemporary) {
+    // A non-empty directory at the target: the whole PNG gets written, then the rename fails
+    // (even for root), which exercises cleanup after a complete temporary exists.
+    const fs::path target = directory_ / "occupied.png";
+    fs::create_directories(target / "inside");
+    EXPECT_THROW(write_png(target, gradient(5, 5)), std::runtime_error);
+    EXPECT_TRUE(fs::is_directory(target / "inside"));
+    EXPECT_TRUE(temporaries().empty());
+}
+
+TEST_F(ImageIo, ReadingATextFileThrows) {
+    const fs::path file = directory_ / "notes.png";
+    std::ofstream(file) << "this is not a PNG file, only text\n";
+    EXPECT_THROW(read_png(file), std::runtime_error);
+}
+
+TEST_F(ImageIo, ReadingAMissingFileThrows) {
+    EXPECT_THROW(read_png(directory_ / "absent.png"), std::runtime_error);
+}
+
+TEST_F(ImageIo, ReadingATruncatedPngThrows) {
+    const fs::path file = directory_ / "truncated.png";
+    write_png(file, gradient(64, 64));
+    std::vector<uint8_t> bytes = read_bytes(file);
+    bytes.resize(bytes.size() / 2);
+    write_bytes(file, bytes);
+    EXPECT_THROW(read_png(file), std::runtime_error);
+}
+
+// Hand-built 2 x 1 PNGs in the flavours read_png converts.
+TEST_F(ImageIo, ReadsGreyPaletteAndAlphaImagesAsRgb) {
+    const std::vector<uint8_t> grey = {
+        0x89, 0x50, 0x4e, 0x47, 0x0d, 0x0a, 0x1a, 0x0a, 0x00, 0x00, 0x00, 0x0d, 0x49, 0x48,
+        0x44, 0x52, 0x00, 0x00, 0x00, 0x02, 0x00, 0x00, 0x00, 0x01, 0x08, 0x00, 0x00, 0x00,
+        0x00, 0xd1, 0x49, 0x20, 0x56, 0x00, 0x00, 0x00, 0x0b, 0x49, 0x44, 0x41, 0x54, 0x78,
+        0xda, 0x63, 0x10, 0xf8, 0x00, 0x00, 0x01, 0x13, 0x01, 0x01, 0xe6, 0xff, 0x11, 0x1b,
+        0x00, 0x00, 0x00, 0x00, 0x49, 0x45, 0x4e, 0x44, 0xae, 0x42, 0x60, 0x82};
+    const std::vector<uint8_t> rgba = {
+        0x89, 0x50, 0x4e, 0x47, 0x0d, 0x0a, 0x1a, 0x0a, 0x00, 0x00, 0x00, 0x0d, 0x49, 0x48, 0x44,
+        0x52, 0x00, 0x00, 0x00, 0x02, 0x00, 0x00, 0x00, 0x01, 0x08, 0x06, 0x00, 0x00, 0x00, 0xf4,
+        0x22, 0x7f, 0x8a, 0x00, 0x00, 0x00, 0x11, 0x49, 0x44, 0x41, 0x54, 0x78, 0xda, 0x63, 0x60,
+        0x64, 0x62, 0x66, 0x38, 0x91, 0x62, 0xd4, 0x00, 0x00, 0x05, 0x61, 0x01, 0xe5, 0x22, 0xe3,
+        0x1c, 0xa7, 0x00, 0x00, 0x00, 0x00, 0x49, 0x45, 0x4e, 0x44, 0xae, 0x42, 0x60, 0x82};
+    const std::vector<uint8_t> palette = {
+        0x89, 0x50, 0x4e, 0x47, 0x0d, 0x0a, 0x1a, 0x0a, 0x00, 0x00, 0x00, 0x0d, 0x49, 0x48, 0x44,
+        0x52, 0x00, 0x00, 0x00, 0x02, 0x00, 0x00, 0x00, 0x01, 0x08, 0x03, 0x00, 0x00, 0x00, 0xc3,
+        0xfc, 0x8f, 0xb8, 0x00, 0x00, 0x00, 0x06, 0x50, 0x4c, 0x54, 0x45, 0x09, 0x08, 0x07, 0x28,
+        0x32, 0x3c, 0xdb, 0x8e, 0xa4, 0xd1, 0x00, 0x00, 0x00, 0x0b, 0x49, 0x44, 0x41, 0x54, 0x78,
+        0xda, 0x63, 0x60, 0x64, 0x00, 0x00, 0x00, 0x05, 0x00, 0x02, 0x42, 0xc2, 0x44, 0x9f, 0x00,
+        0x00, 0x00, 0x00, 0x49, 0x45, 0x4e, 0x44, 0xae, 0x42, 0x60, 0x82};
+    const fs::path file = directory_ / "flavour.png";
+
+    write_bytes(file, grey);
+    EXPECT_EQ(read_png(file).rgb, (std::vector<uint8_t>{16, 16, 16, 240, 240, 240}));
+    write_bytes(file, rgba);  // alpha 0 and 128: dropped, not composited
+    EXPECT_EQ(read_png(file).rgb, (std::vector<uint8_t>{1, 2, 3, 200, 100, 50}));
+    write_bytes(file, palette);  // indices 1, 0
+    EXPECT_EQ(read_png(file).rgb, (std::vector<uint8_t>{40, 50, 60, 9, 8, 7}));
+}
+
+}  // namespace
+}  // namespace fgr

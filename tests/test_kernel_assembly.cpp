@@ -1,0 +1,141 @@
+// Kernel assembly: the switches a program is built with, the generated parameter accessors, build
+// errors mapped to the scene's own lines, the on-disk program cache, and parameters that change
+// without a rebuild.
+#include <filesystem>
+#include <fstream>
+
+#include <gtest/gtest.h>
+
+#include "fgr/kernel_assembly.hpp"
+#include "fgr/parameters.hpp"
+#include "fgr/plugin.h"
+#include "fgr/program_cache.hpp"
+#include "fgr/renderer.hpp"
+#include "test_scenes.hpp"
+
+namespace fgr {
+namespace {
+
+TEST(KernelAssembly, OptionsCarryPacketWidthAndOnlyRequestedEffects) {
+    const std::string plain = switch_options({16, 0});
+    EXPECT_NE(plain.find("-DFGR_WIDTH=16"), std::string::npos);
+    EXPECT_EQ(plain.find("FGR_EFFECT_"), std::string::npos);
+
+    const std::string shadows = switch_options({1, FGR_EFFECT_SHADOWS});
+    EXPECT_NE(shadows.find("-DFGR_WIDTH=1"), std::string::npos);
+    EXPECT_NE(shadows.find("-DFGR_EFFECT_SHADOWS"), std::string::npos);
+    EXPECT_EQ(shadows.find("FGR_EFFECT_AMBIENT_OCCLUSION"), std::string::npos);
+
+    const std::string both = switch_options({8, FGR_EFFECT_SHADOWS | FGR_EFFECT_AMBIENT_OCCLUSION});
+    EXPECT_NE(both.find("-DFGR_EFFECT_SHADOWS"), std::string::npos);
+    EXPECT_NE(both.find("-DFGR_EFFECT_AMBIENT_OCCLUSION"), std::string::npos);
+    EXPECT_EQ(effect_names(FGR_EFFECT_SHADOWS | FGR_EFFECT_AMBIENT_OCCLUSION),
+              "shadows,ambient_occlusion");
+    EXPECT_EQ(effect_names(0), "none");
+}
+
+TEST(KernelAssembly, AccessorsFollowTheBufferLayout) {
+    Scene scene = test::inline_scene("real scene_de(vec3 p, PARAMS) { return v3_length(p) - 1.0f; }");
+    scene.params.insert(scene.params.begin(),
+                        {ParamInfo{.id = "scale", .type = ParamType::Float},
+                         ParamInfo{.id = "offset", .type = ParamType::Vec3},
+                         ParamInfo{.id = "count", .type = ParamType::Int},
+                         ParamInfo{.id = "enabled", .type = ParamType::Bool}});
+    const std::string accessors = param_accessors(scene);
+    EXPECT_NE(accessors.find("#define param_scale (fgr_params[0])"), std::string::npos);
+    EXPECT_NE(accessors.find("#define param_offset v3_splat(fgr_params[1], fgr_params[2], fgr_params[3])"),
+              std::string::npos);
+    EXPECT_NE(accessors.find("#define param_count ((int)fgr_params[4])"), std::string::npos);
+    EXPECT_NE(accessors.find("#define param_enabled (fgr_params[5] != 0.0f)"), std::string::npos);
+    // The built-in quality knobs follow the scene's own parameters.
+    EXPECT_NE(accessors.find("#define param_max_steps ((int)fgr_params[6])"), std::string::npos);
+}
+
+TEST(KernelAssembly, SceneSourceIsTaggedWithItsOwnFileName) {
+    const Scene scene = test::inline_scene("real scene_de(vec3 p, PARAMS) { return p.x; }");
+    const AssembledProgram program = assemble_program(scene, {1, 0});
+    const size_t scene_line = program.source.find("#line 1 \"inline.cl\"\nreal scene_de");
+    ASSERT_NE(scene_line, std::string::npos);
+    EXPECT_LT(program.source.find("#line 1 \"fgr_types.cl\""), scene_line);
+    EXPECT_GT(program.source.find("#line 1 \"fgr_render.cl\""), scene_line);
+}
+
+TEST(KernelAssembly, BuildErrorsNameTheScenesFileAndLine) {
+    const ComputeDevice device = open_device(-1);
+    ProgramCache cache{std::filesystem::path()};
+    // Line 3 uses an undeclared identifier.
+    const Scene scene = test::inline_scene(
+        "/* a broken scene */\n"
+        "real scene_de(vec3 p, PARAMS) {\n"
+        "    return v3_length(p) - undeclared_radius;\n"
+        "}\n");
+    try {
+        Renderer renderer(device, cache, scene, {preferred_packet_width(device.info), 0});
+        FAIL() << "a scene that does not compile must throw";
+    } catch (const KernelBuildError& error) {
+        EXPECT_NE(error.build_log().find("inline.cl:3:"), std::string::npos) << error.build_log();
+        EXPECT_NE(error.build_log().find("undeclared_radius"), std::string::npos);
+    }
+}
+
+class ProgramCacheTest : public ::testing::Test {
+protected:
+    void SetUp() override {
+        directory_ = std::filesystem::temp_directory_path() /
+                     ("fgr-cache-test-" + std::to_string(::getpid()));
+        std::filesystem::remove_all(directory_);
+    }
+    void TearDown() override { std::filesystem::remove_all(directory_); }
+    std::filesystem::path directory_;
+};
+
+TEST_F(ProgramCacheTest, SecondBuildComesFromDiskAndADamagedEntryIsRebuilt) {
+    const ComputeDevice device = open_device(-1);
+    const Scene scene = test::inline_scene("real scene_de(vec3 p, PARAMS) { return v3_length(p) - 0.5f; }");
+    const AssembledProgram program = assemble_program(scene, {4, 0});
+    BuildReport report;
+    ProgramCache(directory_).build(device, program, &report);
+    EXPECT_EQ(report.origin, BuildReport::Origin::Compiled);
+    const auto entry = directory_ / (ProgramCache::cache_key(device, program) + ".bin");
+    ASSERT_TRUE(std::filesystem::exists(entry));
+
+    ProgramCache fresh(directory_);
+    fresh.build(device, program, &report);
+    EXPECT_EQ(report.origin, BuildReport::Origin::Disk);
+    fresh.build(device, program, &report);
+    EXPECT_EQ(report.origin, BuildReport::Origin::Memory);
+
+    std::ofstream(entry, std::ios::binary | std::ios::trunc) << "not a program binary";
+    ProgramCache(directory_).build(device, program, &report);
+    EXPECT_EQ(report.origin, BuildReport::Origin::Compiled);
+}
+
+TEST(ProgramCacheKey, DependsOnSourceSwitchesAndDevice) {
+    ComputeDevice device;
+    device.info.name = "device A";
+    const Scene scene = test::inline_scene("real scene_de(vec3 p, PARAMS) { return p.x; }");
+    const AssembledProgram base = assemble_program(scene, {8, 0});
+    const std::string key = ProgramCache::cache_key(device, base);
+    EXPECT_EQ(key, ProgramCache::cache_key(device, base));
+    EXPECT_NE(key, ProgramCache::cache_key(device, assemble_program(scene, {8, FGR_EFFECT_SHADOWS})));
+    EXPECT_NE(key, ProgramCache::cache_key(device, assemble_program(scene, {16, 0})));
+    ComputeDevice other = device;
+    other.info.name = "device B";
+    EXPECT_NE(key, ProgramCache::cache_key(other, base));
+}
+
+TEST(KernelAssembly, ChangingParametersNeedsNoRebuild) {
+    const ComputeDevice device = open_device(-1);
+    ProgramCache cache{std::filesystem::path()};
+    const Scene scene = test::sphere_scene();
+    Renderer renderer(device, cache, scene, {preferred_packet_width(device.info), 0});
+    FrameRequest request{48, 32, scene.cameras.front().view, default_param_values(scene)};
+    const long small_hits = renderer.render(request).hits;
+    set_param_from_text(scene, request.params, "radius=0.9");
+    const long large_hits = renderer.render(request).hits;
+    EXPECT_GT(small_hits, 0);
+    EXPECT_GT(large_hits, small_hits * 2);
+}
+
+}  // namespace
+}  // namespace fgr
