@@ -2,8 +2,10 @@
 // A plain C++ Mandelbulb, written straight from the formulas with trigonometry, to check the
 // kernel's DE (which uses complex powers for integer exponents) and its march against.
 
+#include <algorithm>
 #include <cmath>
 
+#include <glm/geometric.hpp>
 #include <glm/vec3.hpp>
 
 namespace fgr::test {

@@ -1,0 +1,138 @@
+// Rendering: the canonical view against a scalar C++ march, the same image at every packet width,
+// determinism, partial tiles, lighting, and parameters and camera paths reaching the image.
+#include <cmath>
+#include <set>
+
+#include <gtest/gtest.h>
+
+#include "fgr/camera.hpp"
+#include "fgr/parameters.hpp"
+#include "fgr/plugin_loader.hpp"
+#include "fgr/program_cache.hpp"
+#include "fgr/renderer.hpp"
+#include "mandelbulb_reference.hpp"
+#include "test_scenes.hpp"
+
+namespace fgr {
+namespace {
+
+class RenderTest : public ::testing::Test {
+protected:
+    static void SetUpTestSuite() {
+        device_ = new ComputeDevice(open_device(-1));
+        LoadResult loaded =
+            load_scene_plugin(std::filesystem::path(FGR_TEST_PLUGIN_DIR) / "mandelbulb.so");
+        ASSERT_TRUE(loaded.scene) << loaded.error;
+        mandelbulb_ = new Scene(std::move(*loaded.scene));
+    }
+    static void TearDownTestSuite() {
+        delete mandelbulb_;
+        delete device_;
+    }
+
+    Frame render(const Scene& scene, int width, int height, int packet_width = 0,
+                 const std::vector<std::string>& assignments = {}) {
+        FrameRequest request{width, height, scene.cameras.front().view, default_param_values(scene)};
+        for (const auto& assignment : assignments) set_param_from_text(scene, request.params, assignment);
+        return render(scene, request, packet_width);
+    }
+
+    Frame render(const Scene& scene, const FrameRequest& request, int packet_width = 0) {
+        const int width = packet_width ? packet_width : preferred_packet_width(device_->info);
+        Renderer renderer(*device_, cache_, scene, {width, scene.effects});
+        return renderer.render(request);
+    }
+
+    static ComputeDevice* device_;
+    static Scene* mandelbulb_;
+    ProgramCache cache_{std::filesystem::path()};
+};
+ComputeDevice* RenderTest::device_ = nullptr;
+Scene* RenderTest::mandelbulb_ = nullptr;
+
+double mean_abs_difference(const Image8& a, const Image8& b) {
+    double sum = 0.0;
+    for (size_t i = 0; i < a.rgb.size(); ++i) sum += std::abs(int(a.rgb[i]) - int(b.rgb[i]));
+    return sum / static_cast<double>(a.rgb.size());
+}
+
+TEST_F(RenderTest, CanonicalViewHitsMatchAScalarReferenceMarch) {
+    const long expected = test::canonical_view_hits(160, 120, test::BulbParams{});
+    const Frame frame = render(*mandelbulb_, 160, 120);
+    ASSERT_GT(expected, 160 * 120 / 10);
+    EXPECT_NEAR(static_cast<double>(frame.hits), static_cast<double>(expected), expected * 0.005);
+}
+
+TEST_F(RenderTest, EveryPacketWidthRendersTheSameImage) {
+    const Frame scalar = render(*mandelbulb_, 64, 48, 1);
+    for (int width : {4, 8, 16}) {
+        const Frame packets = render(*mandelbulb_, 64, 48, width);
+        EXPECT_NEAR(packets.hits, scalar.hits, scalar.hits * 0.002) << "width " << width;
+        EXPECT_LT(mean_abs_difference(packets.image, scalar.image), 0.5) << "width " << width;
+    }
+}
+
+TEST_F(RenderTest, PartialTilesAtOddSizesMatchOneRayPerWorkItem) {
+    const Frame scalar = render(*mandelbulb_, 37, 23, 1);
+    const Frame packets = render(*mandelbulb_, 37, 23, 16);
+    ASSERT_EQ(packets.image.rgb.size(), size_t(37 * 23 * 3));
+    EXPECT_NEAR(packets.hits, scalar.hits, 2);
+    EXPECT_LT(mean_abs_difference(packets.image, scalar.image), 1.0);
+}
+
+TEST_F(RenderTest, SameSettingsGiveBitIdenticalImages) {
+    const Frame first = render(*mandelbulb_, 64, 48);
+    const Frame second = render(*mandelbulb_, 64, 48);
+    EXPECT_EQ(first.image.rgb, second.image.rgb);
+    EXPECT_EQ(first.depth, second.depth);
+}
+
+TEST_F(RenderTest, DefaultViewIsANonTrivialImage) {
+    const Frame frame = render(*mandelbulb_, 80, 60);
+    const double hit_fraction = double(frame.hits) / (80 * 60);
+    EXPECT_GT(hit_fraction, 0.3);
+    EXPECT_LT(hit_fraction, 0.8);
+    EXPECT_LT(frame.depth[0], 0.0f);                  // the corner sees the sky
+    EXPECT_GT(frame.depth[30 * 80 + 40], 0.0f);       // the centre sees the bulb
+    std::set<uint8_t> greys(frame.image.rgb.begin(), frame.image.rgb.end());
+    EXPECT_GT(greys.size(), 100u);                    // shaded, not flat
+    for (float depth : frame.depth) ASSERT_FALSE(std::isnan(depth));
+}
+
+TEST_F(RenderTest, ParametersChangeTheImage) {
+    const Frame power8 = render(*mandelbulb_, 64, 48);
+    const Frame power4 = render(*mandelbulb_, 64, 48, 0, {"power=4"});
+    const Frame latitude = render(*mandelbulb_, 64, 48, 0, {"variant=latitude"});
+    EXPECT_NE(power8.hits, power4.hits);
+    EXPECT_GT(mean_abs_difference(power8.image, power4.image), 5.0);
+    EXPECT_GT(mean_abs_difference(power8.image, latitude.image), 5.0);
+}
+
+TEST_F(RenderTest, CameraPathStartRendersItsFirstKeyframe) {
+    const CameraPath* orbit = mandelbulb_->find_camera_path("orbit");
+    ASSERT_NE(orbit, nullptr);
+    FrameRequest request{64, 48, evaluate_camera_path(*orbit, 0.0f), default_param_values(*mandelbulb_)};
+    const Frame start = render(*mandelbulb_, request);
+    EXPECT_EQ(start.image.rgb, render(*mandelbulb_, 64, 48).image.rgb);
+    request.view = evaluate_camera_path(*orbit, 3.0f);
+    EXPECT_GT(mean_abs_difference(render(*mandelbulb_, request).image, start.image), 5.0);
+}
+
+TEST_F(RenderTest, SurfacesFacingTheLightAreBrighter) {
+    Scene sphere = test::sphere_scene();
+    sphere.lights = {Light{LightType::Directional, {0.0f, 0.0f, 1.0f}, {1.0f, 1.0f, 1.0f}, 1.0f}};
+    const Frame frame = render(sphere, 64, 64);
+    auto brightness = [&](int x, int y) {
+        const size_t i = (static_cast<size_t>(y) * 64 + x) * 3;
+        return frame.image.rgb[i] + frame.image.rgb[i + 1] + frame.image.rgb[i + 2];
+    };
+    // The sphere (radius 0.4 at distance 3, 60 degree view) covers the middle ~30 pixels.
+    ASSERT_GT(frame.depth[26 * 64 + 32], 0.0f);
+    ASSERT_GT(frame.depth[38 * 64 + 32], 0.0f);
+    EXPECT_GT(brightness(32, 26), brightness(32, 38) + 100);
+    // Lit from above: the top of the sphere must be near the surface colour, the bottom ambient.
+    EXPECT_LT(brightness(32, 38), 3 * 90);
+}
+
+}  // namespace
+}  // namespace fgr
