@@ -113,7 +113,8 @@ TEST_F(RenderTest, CameraPathStartRendersItsFirstKeyframe) {
     ASSERT_NE(orbit, nullptr);
     FrameRequest request{64, 48, evaluate_camera_path(*orbit, 0.0f), default_param_values(*mandelbulb_)};
     const Frame start = render(*mandelbulb_, request);
-    EXPECT_EQ(start.image.rgb, render(*mandelbulb_, 64, 48).image.rgb);
+    // Same view up to float rounding of the re-orthogonalised basis.
+    EXPECT_LT(mean_abs_difference(start.image, render(*mandelbulb_, 64, 48).image), 0.1);
     request.view = evaluate_camera_path(*orbit, 3.0f);
     EXPECT_GT(mean_abs_difference(render(*mandelbulb_, request).image, start.image), 5.0);
 }

@@ -94,6 +94,9 @@ cl::Program ProgramCache::build(const ComputeDevice& device, const AssembledProg
                                    build_log(built, device.device));
         }
         result.origin = BuildReport::Origin::Compiled;
+        if (const std::string log = build_log(built, device.device); log.size() > 1) {
+            spdlog::debug("OpenCL build log:\n{}", log);
+        }
         if (!file.empty()) store_binary(built, file);
     }
     result.build_ms = elapsed_ms(start);

@@ -44,11 +44,12 @@ static const fgr_camera_path paths[] = {
     {FGR_HEADER(fgr_camera_path), "dive", dive_keys, sizeof dive_keys / sizeof dive_keys[0]},
 };
 
+/* A warm key light from the upper left of the canonical view and a cool fill from the right. */
 static const fgr_light lights[] = {
-    {FGR_HEADER(fgr_light), FGR_LIGHT_DIRECTIONAL, {0.577f, -0.3f, 0.76f}, {1.0f, 0.95f, 0.85f},
-     1.6f},
-    {FGR_HEADER(fgr_light), FGR_LIGHT_DIRECTIONAL, {-0.6f, 0.7f, -0.2f}, {0.35f, 0.45f, 0.7f},
-     0.5f},
+    {FGR_HEADER(fgr_light), FGR_LIGHT_DIRECTIONAL, {-0.1f, -0.75f, 0.75f}, {1.0f, 0.93f, 0.82f},
+     1.1f},
+    {FGR_HEADER(fgr_light), FGR_LIGHT_DIRECTIONAL, {0.7f, 0.5f, -0.3f}, {0.45f, 0.55f, 0.8f},
+     0.35f},
 };
 
 static const fgr_scene_desc scene = {

@@ -1,0 +1,58 @@
+#!/usr/bin/env bash
+# Sets up, builds and runs fgr on Debian 12. The two Quick start commands of the README:
+#
+#   ./build.sh render   install what is missing, build, render the default scene to mandelbulb.png
+#   ./build.sh test     install what is missing, build, run every test (what CI runs)
+#
+# Needs root or sudo only when packages are missing. BUILD_DIR (default: build) picks the build tree.
+set -euo pipefail
+
+repo=$(cd "$(dirname "$0")" && pwd)
+build_dir=${BUILD_DIR:-$repo/build}
+jobs=$(nproc)
+
+# Debian packages fgr needs to build and test: compiler and build tools, OpenCL (PoCL runs it on
+# the CPU), and the libraries named in the README.
+packages=(
+    cmake ninja-build g++ pkg-config
+    ocl-icd-opencl-dev opencl-headers opencl-clhpp-headers pocl-opencl-icd clinfo
+    libspdlog-dev libfmt-dev libglm-dev libpng-dev libcli11-dev libgtest-dev
+)
+
+install_missing_packages() {
+    local missing=()
+    for package in "${packages[@]}"; do
+        dpkg-query -W -f='${Status}' "$package" 2>/dev/null | grep -q "install ok installed" ||
+            missing+=("$package")
+    done
+    [[ ${#missing[@]} -eq 0 ]] && return 0
+    echo "build.sh: installing ${missing[*]}" >&2
+    local sudo=()
+    [[ $(id -u) -eq 0 ]] || sudo=(sudo)
+    "${sudo[@]}" apt-get update -q
+    DEBIAN_FRONTEND=noninteractive "${sudo[@]}" apt-get install -y -q --no-install-recommends "${missing[@]}"
+}
+
+build() {
+    cmake -S "$repo" -B "$build_dir" -G Ninja -DCMAKE_BUILD_TYPE=Release
+    cmake --build "$build_dir" -j "$jobs"
+}
+
+command=${1:-render}
+case "$command" in
+    render)
+        install_missing_packages
+        build
+        "$build_dir/bin/fgr" render mandelbulb -o "${2:-mandelbulb.png}"
+        ;;
+    test)
+        install_missing_packages
+        build
+        # Each test case runs as its own process; two at a time keeps a 2-core machine busy.
+        ctest --test-dir "$build_dir" --output-on-failure -j "$jobs"
+        ;;
+    *)
+        echo "usage: ./build.sh [render [OUT.png] | test]" >&2
+        exit 2
+        ;;
+esac
