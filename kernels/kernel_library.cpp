@@ -2,8 +2,11 @@
 
 #include <array>
 
+#include "fgr_colour_cl.h"
+#include "fgr_folds_cl.h"
 #include "fgr_march_cl.h"
 #include "fgr_render_cl.h"
+#include "fgr_sdf_cl.h"
 #include "fgr_shade_cl.h"
 #include "fgr_types_cl.h"
 #include "fgr_vec3_cl.h"
@@ -14,6 +17,9 @@ std::span<const KernelFile> kernel_prelude() {
     static constexpr std::array files{
         KernelFile{"fgr_types.cl", fgr_types_cl},
         KernelFile{"fgr_vec3.cl", fgr_vec3_cl},
+        KernelFile{"fgr_sdf.cl", fgr_sdf_cl},
+        KernelFile{"fgr_folds.cl", fgr_folds_cl},
+        KernelFile{"fgr_colour.cl", fgr_colour_cl},
     };
     return files;
 }

@@ -2,7 +2,7 @@
  * Its default camera is the canonical view fgr is benchmarked on (see bench/). */
 #include <stddef.h>
 
-#include "fgr/plugin.h"
+#include "fgr/scene_helpers.h"
 #include "mandelbulb_cl.h" /* mandelbulb_cl: the OpenCL source, embedded at build time */
 
 static const fgr_param_desc params[] = {
@@ -13,6 +13,7 @@ static const fgr_param_desc params[] = {
     {FGR_HEADER(fgr_param_desc), "variant", "Angle form", "Fractal", FGR_PARAM_INT, 0.0f, 1.0f,
      {0.0f, 0.0f, 0.0f}, "colatitude|latitude",
      "colatitude: theta = atan2(sqrt(x^2+y^2), z); latitude: theta = asin(z/r) (Mandelbulber2)"},
+    FGR_COLOUR_PARAMS(0, 0, 1.0f, 0.95f, 0.9f),
 };
 
 /* Camera (2, -2, 1) looking at the origin, horizontal field of view 2 atan(0.5) = 53.13 degrees. */

@@ -77,7 +77,8 @@ inline vec3 bulb_power_real(vec3 z, real r, real r_n, float n, int latitude_form
     return v3_scale(v3(horizontal * cos_phi, horizontal * sin_phi, vertical), r_n);
 }
 
-real scene_de(vec3 p, PARAMS) {
+/* Iterates z -> z^n + p; returns the DE and, when `record` is set, fills *trap with the orbit. */
+inline real bulb_iterate(vec3 p, PARAMS, int record, orbit_trap* trap) {
     const float power = param_power;
     const float bailout = param_bailout;
     const int latitude_form = param_variant == 1;
@@ -100,7 +101,20 @@ real scene_de(vec3 p, PARAMS) {
         dr = select(dr, power * r_pow * dr + 1.0f, active);
         z = v3_select(z, v3_add(z_n, p), active);
         r = v3_length(z);
+        if (record) *trap = trap_update(*trap, z, active);
     }
     /* r = 0 never escapes (the origin is inside): distance 0, never log(0) * 0 = NaN. */
     return select(0.5f * log(r) * r / dr, fgr_real(0.0f), r <= 0.0f);
+}
+
+real scene_de(vec3 p, PARAMS) {
+    orbit_trap unused;
+    return bulb_iterate(p, PARAMS_PASS, 0, &unused);
+}
+
+#define FGR_SCENE_HAS_COLOUR
+vec3 scene_colour(vec3 p, PARAMS) {
+    orbit_trap trap = trap_init();
+    bulb_iterate(p, PARAMS_PASS, 1, &trap);
+    return trap_colour(trap, param_colour_mode, param_palette, param_base_colour);
 }

@@ -11,7 +11,8 @@ struct KernelFile {
     const char* source;  // NUL-terminated OpenCL C
 };
 
-// Types and maths a scene's source may use: fgr_types.cl, fgr_vec3.cl.
+// Types and maths a scene's source may use: packet types, vec3 maths, the SDF toolkit
+// (primitives, combinators, transforms), IFS folds and orbit-trap colouring.
 std::span<const KernelFile> kernel_prelude();
 // Marching, shading and the kernel entry points, which call the scene's functions.
 std::span<const KernelFile> kernel_postlude();

@@ -1,0 +1,1 @@
+/* fgr kernel library: signed distance functions (being written). */

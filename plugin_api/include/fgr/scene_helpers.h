@@ -1,0 +1,71 @@
+/*
+ * Conveniences for writing scene descriptions in C: initialisers for the common structs. Not part
+ * of the ABI contract itself (they only expand to fgr/plugin.h initialisers); C11 and C++.
+ */
+#ifndef FGR_SCENE_HELPERS_H
+#define FGR_SCENE_HELPERS_H
+
+#include "fgr/plugin.h"
+
+/* A float parameter. */
+#define FGR_FLOAT_PARAM(id, label, group, min, max, value, description)                     \
+    {                                                                                      \
+        FGR_HEADER(fgr_param_desc), id, label, group, FGR_PARAM_FLOAT, min, max, {value, 0.0f, \
+                                                                                 0.0f},     \
+            NULL, description                                                              \
+    }
+
+/* An integer parameter. */
+#define FGR_INT_PARAM(id, label, group, min, max, value, description)                         \
+    {                                                                                        \
+        FGR_HEADER(fgr_param_desc), id, label, group, FGR_PARAM_INT, (float)(min), (float)(max), \
+            {(float)(value), 0.0f, 0.0f}, NULL, description                                  \
+    }
+
+/* An enumeration: an int parameter 0 .. n-1 whose values are named by "a|b|c". */
+#define FGR_ENUM_PARAM(id, label, group, count, value, choices, description)                  \
+    {                                                                                        \
+        FGR_HEADER(fgr_param_desc), id, label, group, FGR_PARAM_INT, 0.0f, (float)((count)-1), \
+            {(float)(value), 0.0f, 0.0f}, choices, description                               \
+    }
+
+/* A vec3 parameter, every component in [min, max]. */
+#define FGR_VEC3_PARAM(id, label, group, min, max, x, y, z, description)                     \
+    {                                                                                       \
+        FGR_HEADER(fgr_param_desc), id, label, group, FGR_PARAM_VEC3, min, max, {x, y, z}, NULL, \
+            description                                                                     \
+    }
+
+/* The three colouring parameters kernels/fgr_colour.cl's trap_colour() reads:
+ * colour_mode (which orbit trap), palette (which ramp) and base_colour (the scene's tint). */
+#define FGR_COLOUR_PARAMS(mode, palette, r, g, b)                                              \
+    FGR_ENUM_PARAM("colour_mode", "Colour by", "Colour", 4, mode, "point|planes|axes|iterations", \
+                   "orbit trap that drives the palette"),                                     \
+        FGR_ENUM_PARAM("palette", "Palette", "Colour", 5, palette,                             \
+                       "ember|ocean|forest|pastel|mono", "colour ramp"),                        \
+    {                                                                                           \
+        FGR_HEADER(fgr_param_desc), "base_colour", "Base colour", "Colour", FGR_PARAM_COLOUR,   \
+            0.0f, 1.0f, {r, g, b}, NULL, "tint multiplying the palette"                         \
+    }
+
+/* A camera looking from (px, py, pz) at (tx, ty, tz) with +z up; fov is horizontal, degrees. */
+#define FGR_CAMERA_Z_UP(name, px, py, pz, tx, ty, tz, fov) \
+    { FGR_HEADER(fgr_camera), name, {px, py, pz}, {tx, ty, tz}, {0.0f, 0.0f, 1.0f}, fov }
+
+/* A keyframe at `time` seconds, +z up. */
+#define FGR_KEYFRAME_Z_UP(time, px, py, pz, tx, ty, tz, fov) \
+    { FGR_HEADER(fgr_keyframe), time, {px, py, pz}, {tx, ty, tz}, {0.0f, 0.0f, 1.0f}, fov }
+
+/* A camera path over a static array of keyframes. */
+#define FGR_CAMERA_PATH(name, keys) \
+    { FGR_HEADER(fgr_camera_path), name, keys, (uint32_t)(sizeof(keys) / sizeof((keys)[0])) }
+
+#define FGR_DIRECTIONAL_LIGHT(x, y, z, r, g, b, intensity) \
+    { FGR_HEADER(fgr_light), FGR_LIGHT_DIRECTIONAL, {x, y, z}, {r, g, b}, intensity }
+
+#define FGR_POINT_LIGHT(x, y, z, r, g, b, intensity) \
+    { FGR_HEADER(fgr_light), FGR_LIGHT_POINT, {x, y, z}, {r, g, b}, intensity }
+
+#define FGR_COUNT(array) ((uint32_t)(sizeof(array) / sizeof((array)[0])))
+
+#endif /* FGR_SCENE_HELPERS_H */
