@@ -61,7 +61,9 @@ field() {
 }
 
 run_fgr() {
-    "$fgr" render mandelbulb --camera canonical --width "$width" --height "$height" -o "$tmp/fgr.png"
+    # step_factor=1: the reference's march rule exactly (t += DE); fgr's default steps 0.8 DE.
+    "$fgr" render mandelbulb --camera canonical --set step_factor=1 \
+        --width "$width" --height "$height" -o "$tmp/fgr.png"
 }
 
 run_reference() {

@@ -10,24 +10,39 @@ typedef struct march_result {
     mask steps; /* DE evaluations taken per lane (an int per lane) */
 } march_result;
 
+/* How far and how finely rays march: the built-in quality parameters, read once per kernel. */
+typedef struct march_limits {
+    float footprint;    /* hit when DE < footprint * t: hit_threshold * pixel_angle */
+    int max_steps;
+    float max_distance;
+    float step_factor;  /* rays advance step_factor * DE */
+} march_limits;
+
+inline march_limits scene_march_limits(float pixel_angle, PARAMS) {
+    march_limits limits;
+    limits.footprint = param_hit_threshold * pixel_angle;
+    limits.max_steps = param_max_steps;
+    limits.max_distance = param_max_distance;
+    limits.step_factor = param_step_factor;
+    return limits;
+}
+
 /* Marches every lane of `active` from origin along dir until it hits, passes max_distance, or has
  * taken max_steps. Inactive lanes are not evaluated for hits and keep t = 0. */
-inline march_result march_rays(vec3 origin, vec3 dir, mask active, float pixel_angle,
-                               float hit_threshold, int max_steps, float max_distance, PARAMS) {
+inline march_result march_rays(vec3 origin, vec3 dir, mask active, march_limits limits, PARAMS) {
     march_result result;
     result.t = fgr_real(0.0f);
     result.hit = (mask)(0);
     result.steps = (mask)(0);
-    const float footprint = hit_threshold * pixel_angle;
-    for (int step = 0; step < max_steps; ++step) {
+    for (int step = 0; step < limits.max_steps; ++step) {
         if (!fgr_any(active)) break;
         real dist = scene_de(v3_mad(origin, dir, result.t), PARAMS_PASS);
-        mask now_hit = active & (dist < result.t * footprint);
+        mask now_hit = active & (dist < result.t * limits.footprint);
         result.hit |= now_hit;
         active &= !now_hit;
-        result.t = select(result.t, result.t + dist, active);
+        result.t = select(result.t, mad(dist, limits.step_factor, result.t), active);
         fgr_count_if(result.steps, active | now_hit);
-        active &= result.t <= max_distance;
+        active &= result.t <= limits.max_distance;
     }
     return result;
 }

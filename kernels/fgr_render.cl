@@ -47,11 +47,6 @@ typedef struct camera_frame {
 
 inline vec3 splat_float4(float4 v) { return v3_splat(v.x, v.y, v.z); }
 
-/* The quality knobs, read from the built-in parameters so changing them never recompiles. */
-#define FGR_MAX_STEPS ((int)param_max_steps)
-#define FGR_MAX_DISTANCE (param_max_distance)
-#define FGR_HIT_THRESHOLD (param_hit_threshold)
-
 __kernel void fgr_render(__global float* planes, int plane_size, int tile_count,
                          camera_frame camera, PARAMS, __constant const float* lights,
                          int light_count) {
@@ -73,8 +68,8 @@ __kernel void fgr_render(__global float* planes, int plane_size, int tile_count,
     dir = v3_normalize(dir);
     const vec3 eye = splat_float4(camera.eye);
 
-    march_result hit = march_rays(eye, dir, inside, camera.pixel_angle, FGR_HIT_THRESHOLD,
-                                  FGR_MAX_STEPS, FGR_MAX_DISTANCE, PARAMS_PASS);
+    const march_limits limits = scene_march_limits(camera.pixel_angle, PARAMS_PASS);
+    march_result hit = march_rays(eye, dir, inside, limits, PARAMS_PASS);
 
     vec3 colour = background(dir);
     real depth = fgr_real(-1.0f);
@@ -82,8 +77,7 @@ __kernel void fgr_render(__global float* planes, int plane_size, int tile_count,
         vec3 p = v3_mad(eye, dir, hit.t);
         real eps = fmax(hit.t * camera.pixel_angle * 0.5f, 1e-7f);
         vec3 n = estimate_normal(p, eps, PARAMS_PASS);
-        vec3 lit = shade_surface(p, n, dir, eps, hit.steps, FGR_MAX_STEPS, lights, light_count,
-                                 camera.pixel_angle, FGR_HIT_THRESHOLD, FGR_MAX_DISTANCE,
+        vec3 lit = shade_surface(p, n, dir, eps, hit.steps, limits, lights, light_count,
                                  PARAMS_PASS);
         colour = v3_select(colour, lit, hit.hit);
         depth = select(depth, hit.t, hit.hit);
@@ -104,4 +98,18 @@ __kernel void fgr_probe_de(__global const float* points, int plane_size, int pac
     vec3 p = v3(fgr_load(packet, points), fgr_load(packet, points + plane_size),
                 fgr_load(packet, points + 2 * plane_size));
     fgr_store(scene_de(p, PARAMS_PASS), packet, out);
+}
+
+/* The surface normal the shading uses at each point (planes x, y, z in and out), with stencil
+ * size eps: lets tests check normals are finite and unit length wherever rays can hit. */
+__kernel void fgr_probe_normal(__global const float* points, int plane_size, int packet_count,
+                               float eps, __global float* out, PARAMS) {
+    const int packet = get_global_id(0);
+    if (packet >= packet_count) return;
+    vec3 p = v3(fgr_load(packet, points), fgr_load(packet, points + plane_size),
+                fgr_load(packet, points + 2 * plane_size));
+    vec3 n = estimate_normal(p, fgr_real(eps), PARAMS_PASS);
+    fgr_store(n.x, packet, out);
+    fgr_store(n.y, packet, out + plane_size);
+    fgr_store(n.z, packet, out + 2 * plane_size);
 }

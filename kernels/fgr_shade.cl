@@ -39,25 +39,23 @@ inline vec3 light_direction(__constant const float* light, vec3 p, real* falloff
 #ifdef FGR_EFFECT_SHADOWS
 /* 1 where the light is visible from p, 0 where the surface blocks it: a march towards the light
  * that counts any hit before max_distance as an occluder. */
-inline real light_visibility(vec3 p, vec3 to_light, mask lit, float pixel_angle,
-                             float hit_threshold, int max_steps, float max_distance, PARAMS) {
-    march_result shadow =
-        march_rays(p, to_light, lit, pixel_angle, hit_threshold, max_steps, max_distance, PARAMS_PASS);
+inline real light_visibility(vec3 p, vec3 to_light, mask lit, march_limits limits, PARAMS) {
+    march_result shadow = march_rays(p, to_light, lit, limits, PARAMS_PASS);
     return select(fgr_real(1.0f), fgr_real(0.0f), shadow.hit);
 }
 #endif
 
 /* Linear colour of surface point p with normal n seen along view_dir. `steps` feeds the cheap
  * step-count ambient occlusion when the scene asks for it. */
-inline vec3 shade_surface(vec3 p, vec3 n, vec3 view_dir, real eps, mask steps, int max_steps,
-                          __constant const float* lights, int light_count, float pixel_angle,
-                          float hit_threshold, float max_distance, PARAMS) {
+inline vec3 shade_surface(vec3 p, vec3 n, vec3 view_dir, real eps, mask steps,
+                          march_limits limits, __constant const float* lights, int light_count,
+                          PARAMS) {
     vec3 albedo = scene_colour(p, PARAMS_PASS);
     real ambient = fgr_real(FGR_AMBIENT);
 #ifdef FGR_EFFECT_AMBIENT_OCCLUSION
     /* Rays that needed many steps crept past nearby geometry: darken them (the classic
      * step-count AO; costs nothing beyond the march already done). */
-    real occlusion = 1.0f - convert_real(steps) / (float)max_steps;
+    real occlusion = 1.0f - convert_real(steps) / (float)limits.max_steps;
     ambient *= occlusion * occlusion;
 #endif
     vec3 colour = v3_scale(albedo, ambient);
@@ -72,8 +70,7 @@ inline vec3 shade_surface(vec3 p, vec3 n, vec3 view_dir, real eps, mask steps, i
         real strength = light[7] * falloff * select(fgr_real(0.0f), fgr_real(1.0f), diffuse > 0.0f);
 #ifdef FGR_EFFECT_SHADOWS
         vec3 start = v3_mad(p, n, 2.0f * eps);
-        strength *= light_visibility(start, l, diffuse > 0.0f, pixel_angle, hit_threshold,
-                                     max_steps, max_distance, PARAMS_PASS);
+        strength *= light_visibility(start, l, diffuse > 0.0f, limits, PARAMS_PASS);
 #endif
         vec3 light_colour = v3_splat(light[4], light[5], light[6]);
         vec3 lit = v3(albedo.x * diffuse + specular, albedo.y * diffuse + specular,

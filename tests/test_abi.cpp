@@ -81,15 +81,16 @@ TEST(AbiLayout, Light) {
 }
 
 TEST(AbiLayout, MarchSettings) {
-    PIN_SIZE(fgr_march_settings, 24);
+    PIN_SIZE(fgr_march_settings, 28);
     PIN_OFFSET(fgr_march_settings, max_steps, 8);
     PIN_OFFSET(fgr_march_settings, max_distance, 12);
     PIN_OFFSET(fgr_march_settings, hit_threshold, 16);
     PIN_OFFSET(fgr_march_settings, de_iterations, 20);
+    PIN_OFFSET(fgr_march_settings, step_factor, 24);
 }
 
 TEST(AbiLayout, SceneDesc) {
-    PIN_SIZE(fgr_scene_desc, 144);
+    PIN_SIZE(fgr_scene_desc, 152);
     PIN_OFFSET(fgr_scene_desc, id, 8);
     PIN_OFFSET(fgr_scene_desc, name, 16);
     PIN_OFFSET(fgr_scene_desc, description, 24);
@@ -166,7 +167,7 @@ struct SceneBuilder {
                 lights.data(),
                 static_cast<uint32_t>(lights.size()),
                 FGR_EFFECT_ALL_V1,
-                {FGR_HEADER(fgr_march_settings), 256, 10.0f, 1.5f, 12}};
+                {FGR_HEADER(fgr_march_settings), 256, 10.0f, 1.5f, 12, 0.9f}};
         // clang-format on
     }
     SceneBuilder(const SceneBuilder&) = delete;
@@ -217,11 +218,12 @@ TEST_F(CopyScene, CopiesEverything) {
     EXPECT_FLOAT_EQ(scene.march.max_distance, 10.0f);
     EXPECT_FLOAT_EQ(scene.march.hit_threshold, 1.5f);
     EXPECT_EQ(scene.march.de_iterations, 12u);
+    EXPECT_FLOAT_EQ(scene.march.step_factor, 0.9f);
 }
 
 TEST_F(CopyScene, CopiesParams) {
     const Scene scene = expect_accepted();
-    ASSERT_EQ(scene.params.size(), 4u + 4u);
+    ASSERT_EQ(scene.params.size(), 4u + 5u);
     const ParamInfo& power = scene.params[0];
     EXPECT_EQ(power.id, "power");
     EXPECT_EQ(power.label, "Power");
@@ -308,7 +310,7 @@ TEST_F(CopyScene, AcceptsNoParamsAndNoPaths) {
     built.desc.camera_paths = nullptr;
     built.desc.camera_path_count = 0;
     const Scene scene = expect_accepted();
-    EXPECT_EQ(scene.params.size(), 4u);
+    EXPECT_EQ(scene.params.size(), 5u);
     EXPECT_TRUE(scene.camera_paths.empty());
 }
 
@@ -348,7 +350,7 @@ TEST_F(CopyScene, AcceptsNewerMinorWithBiggerStructs) {
 
     const LoadResult result = copy_scene_description(&newer.v1);
     ASSERT_TRUE(result.scene.has_value()) << result.error;
-    ASSERT_EQ(result.scene->params.size(), 8u);
+    ASSERT_EQ(result.scene->params.size(), 9u);
     EXPECT_EQ(result.scene->params[2].id, "tint") << "elements read with the bigger stride";
     EXPECT_FLOAT_EQ(result.scene->params[2].default_value[2], 0.7f);
     EXPECT_EQ(result.scene->params[3].id, "julia_mode");
@@ -607,6 +609,19 @@ TEST_F(CopyScene, RefusesBadMarchSettings) {
     expect_refused("max_distance nan must be finite and > 0");
     built.desc.march.max_distance = 2e6f;
     expect_refused("march settings: max_distance 2000000 outside the built-in range");
+    built.desc.march.max_distance = 10.0f;
+    built.desc.march.step_factor = 1.5f;
+    expect_refused("march settings: step_factor 1.5 outside [0, 1]");
+    built.desc.march.step_factor = -0.5f;
+    expect_refused("march settings: step_factor -0.5 outside [0, 1]");
+}
+
+TEST_F(CopyScene, ZeroStepFactorMeansFullSteps) {
+    built.desc.march.step_factor = 0.0f;
+    const LoadResult result = copy_scene_description(&built.desc);
+    ASSERT_TRUE(result.scene) << result.error;
+    EXPECT_FLOAT_EQ(result.scene->march.step_factor, 1.0f);
+    EXPECT_FLOAT_EQ(result.scene->find_param("step_factor")->default_value[0], 1.0f);
 }
 
 TEST_F(CopyScene, RefusesTooSmallMarchStruct) {

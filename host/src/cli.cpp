@@ -42,6 +42,7 @@ struct RenderOptions {
     std::optional<float> time;
     int device = -1;
     int packet_width = 0;  // 0: the device's preference
+    bool all = false;      // every scene's default view into the directory `output`
 };
 
 Discovery discover() { return discover_scenes(plugin_search_path(executable_dir())); }
@@ -174,30 +175,37 @@ void check_output_path(const std::filesystem::path& output) {
     }
 }
 
-int command_render(const RenderOptions& options) {
+// Checks that do not need a scene: option combinations and the output location.
+void check_render_options(const RenderOptions& options) {
+    if (options.all) {
+        if (!options.scene.empty()) throw UsageError("give a SCENE or --all, not both");
+        if (!options.assignments.empty() || options.camera || options.camera_path || options.time) {
+            throw UsageError("--all renders each scene's default view: no --set, --camera or --time");
+        }
+        return;
+    }
+    if (options.scene.empty()) throw UsageError("render needs a SCENE (see `fgr list`) or --all");
     if (options.time && !options.camera_path) throw UsageError("--time needs --camera-path");
     if (options.camera_path && !options.time) throw UsageError("--camera-path needs --time");
-    const Discovery found = discover();
-    const Scene& scene = find_scene(found, options.scene);
-    std::vector<float> params = default_param_values(scene);
-    for (const auto& assignment : options.assignments) set_param_from_text(scene, params, assignment);
-    FrameRequest request;
-    request.width = options.width;
-    request.height = options.height;
-    request.view = choose_view(scene, options);
-    request.params = std::move(params);
     check_output_path(options.output);
+}
 
+ComputeDevice open_requested_device(const RenderOptions& options) {
     if (options.device >= static_cast<int>(list_devices().size())) {
         throw UsageError(fmt::format("no OpenCL device {} (see `fgr info`)", options.device));
     }
-    const ComputeDevice device = open_device(options.device);
+    return open_device(options.device);
+}
+
+// Builds the scene's kernel, renders `request` and writes the PNG; prints the figures.
+void render_to_file(const Scene& scene, const FrameRequest& request, const ComputeDevice& device,
+                    ProgramCache& cache, const RenderOptions& options,
+                    const std::filesystem::path& output) {
     const KernelSwitches switches{
         options.packet_width ? options.packet_width : preferred_packet_width(device.info),
         scene.effects};
     spdlog::info("building '{}' for {} ({} rays per work-item, effects: {})", scene.id,
                  device.info.name, switches.packet_width, effect_names(switches.effects));
-    ProgramCache cache(ProgramCache::default_directory());
     Renderer renderer(device, cache, scene, switches);
     spdlog::info("kernel ready in {:.0f} ms", renderer.build_report().build_ms);
 
@@ -205,18 +213,60 @@ int command_render(const RenderOptions& options) {
     fmt::print("render_ms {:.1f}\n", frame.render_ms);
     fmt::print("hits {}\n", frame.hits);
     try {
-        write_png(options.output, frame.image);
+        write_png(output, frame.image);
     } catch (const std::runtime_error& error) {
         throw RuntimeFailure(error.what());
     }
-    fmt::print("wrote {} ({}x{})\n", options.output, frame.image.width, frame.image.height);
+    fmt::print("wrote {} ({}x{})\n", output.string(), frame.image.width, frame.image.height);
+}
+
+FrameRequest default_request(const Scene& scene, const RenderOptions& options) {
+    return {options.width, options.height, scene.cameras.front().view, default_param_values(scene)};
+}
+
+int render_all(const RenderOptions& options) {
+    const std::filesystem::path directory = options.output;
+    std::error_code error;
+    std::filesystem::create_directories(directory, error);
+    if (error || !std::filesystem::is_directory(directory)) {
+        throw RuntimeFailure(fmt::format("cannot create directory '{}'", directory.string()));
+    }
+    const Discovery found = discover();
+    if (found.scenes.empty()) throw RuntimeFailure("no scenes found (see `fgr list`)");
+    const ComputeDevice device = open_requested_device(options);
+    ProgramCache cache(ProgramCache::default_directory());
+    for (size_t i = 0; i < found.scenes.size(); ++i) {
+        const Scene& scene = found.scenes[i];
+        fmt::print("scene {} ({}/{})\n", scene.id, i + 1, found.scenes.size());
+        render_to_file(scene, default_request(scene, options), device, cache, options,
+                       directory / (scene.id + ".png"));
+    }
+    return 0;
+}
+
+int command_render(const RenderOptions& options) {
+    check_render_options(options);
+    if (options.all) return render_all(options);
+    const Discovery found = discover();
+    const Scene& scene = find_scene(found, options.scene);
+    FrameRequest request = default_request(scene, options);
+    for (const auto& assignment : options.assignments) {
+        set_param_from_text(scene, request.params, assignment);
+    }
+    request.view = choose_view(scene, options);
+    const ComputeDevice device = open_requested_device(options);
+    ProgramCache cache(ProgramCache::default_directory());
+    render_to_file(scene, request, device, cache, options, options.output);
     return 0;
 }
 
 void add_render_command(CLI::App& app, RenderOptions& options) {
-    CLI::App* render = app.add_subcommand("render", "render one image of a scene to a PNG file");
-    render->add_option("scene", options.scene, "scene id (see `fgr list`)")->required();
-    render->add_option("-o,--output", options.output, "output PNG file")->required();
+    CLI::App* render = app.add_subcommand(
+        "render", "render one image of a scene to a PNG file, or every scene's default view");
+    render->add_option("scene", options.scene, "scene id (see `fgr list`)");
+    render->add_flag("--all", options.all, "render every scene's default view into the directory -o");
+    render->add_option("-o,--output", options.output, "output PNG file (a directory with --all)")
+        ->required();
     render->add_option("--width", options.width, "image width in pixels")
         ->check(CLI::Range(1, kMaxImageSide));
     render->add_option("--height", options.height, "image height in pixels")

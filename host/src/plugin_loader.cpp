@@ -36,7 +36,7 @@ constexpr std::size_t kV1CameraPathSize =
     offsetof(fgr_camera_path, keyframe_count) + sizeof(fgr_camera_path::keyframe_count);
 constexpr std::size_t kV1LightSize = offsetof(fgr_light, intensity) + sizeof(fgr_light::intensity);
 constexpr std::size_t kV1MarchSize =
-    offsetof(fgr_march_settings, de_iterations) + sizeof(fgr_march_settings::de_iterations);
+    offsetof(fgr_march_settings, step_factor) + sizeof(fgr_march_settings::step_factor);
 
 constexpr std::size_t kMaxIdLength = 63;
 constexpr std::size_t kMaxSourceBytes = 4u << 20;
@@ -53,9 +53,6 @@ constexpr uint32_t kMinKeyframes = 2;
 constexpr uint32_t kMaxKeyframes = 10000;
 constexpr uint32_t kMaxMarchSteps = 100000;
 constexpr uint32_t kMaxDeIterations = 1000;
-
-constexpr std::array<std::string_view, 4> kBuiltinParamIds = {"max_steps", "max_distance",
-                                                              "hit_threshold", "iterations"};
 
 // --- Failure reporting ---------------------------------------------------------------------------
 
@@ -274,8 +271,7 @@ std::vector<ParamInfo> copy_params(const fgr_scene_desc& desc) {
     std::set<std::string> seen_ids;
     for (uint32_t i = 0; i < array.size(); ++i) {
         ParamInfo param = copy_param(array[i], i);
-        if (std::find(kBuiltinParamIds.begin(), kBuiltinParamIds.end(), param.id) !=
-            kBuiltinParamIds.end()) {
+        if (is_builtin_param_id(param.id)) {
             fail("parameter '{}': id is reserved for a built-in parameter", param.id);
         }
         if (!seen_ids.insert(param.id).second) fail("parameter '{}': duplicate id", param.id);
@@ -425,7 +421,13 @@ MarchSettings copy_march(const fgr_march_settings& march) {
         fail("march settings: de_iterations {} outside [1, {}]", march.de_iterations,
              kMaxDeIterations);
     }
-    return {march.max_steps, march.max_distance, march.hit_threshold, march.de_iterations};
+    if (!(march.step_factor >= 0.0f && march.step_factor <= 1.0f)) {
+        fail("march settings: step_factor {} outside [0, 1]", march.step_factor);
+    }
+    // 0, what an initialiser that leaves the field out gives, means full steps.
+    const float step_factor = march.step_factor > 0.0f ? march.step_factor : 1.0f;
+    return {march.max_steps, march.max_distance, march.hit_threshold, march.de_iterations,
+            step_factor};
 }
 
 // The march settings become the built-in parameters' defaults, so they must also fit those

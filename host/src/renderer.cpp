@@ -109,6 +109,7 @@ Renderer::Renderer(const ComputeDevice& device, ProgramCache& cache, const Scene
     program_ = cache.build(device, assemble_program(scene, switches), &build_report_);
     render_kernel_ = cl::Kernel(program_, "fgr_render");
     probe_kernel_ = cl::Kernel(program_, "fgr_probe_de");
+    normal_kernel_ = cl::Kernel(program_, "fgr_probe_normal");
     lights_ = upload(light_values(scene));
     warm_up();
 }
@@ -123,6 +124,7 @@ void Renderer::warm_up() {
     render(tiny);
     const glm::vec3 origin(0.0f);
     probe_de(std::span(&origin, 1), tiny.params);
+    probe_normals(std::span(&origin, 1), tiny.params, 1e-3f);
     build_report_.build_ms += elapsed_ms(start);
 }
 
@@ -158,12 +160,15 @@ Frame Renderer::render(const FrameRequest& request) {
     frame.image.height = request.height;
     frame.image.rgb.resize(static_cast<size_t>(request.width) * request.height * 3);
     frame.depth.resize(static_cast<size_t>(request.width) * request.height);
+    frame.linear.resize(frame.image.rgb.size());
     for (int y = 0; y < request.height; ++y) {
         for (int x = 0; x < request.width; ++x) {
             const size_t source = layout.index(x, y);
             const size_t pixel = static_cast<size_t>(y) * request.width + x;
             for (int c = 0; c < 3; ++c) {
-                frame.image.rgb[pixel * 3 + c] = encode_srgb(host[c * plane + source]);
+                const float value = host[c * plane + source];
+                frame.linear[pixel * 3 + c] = value;
+                frame.image.rgb[pixel * 3 + c] = encode_srgb(value);
             }
             frame.depth[pixel] = host[3 * static_cast<size_t>(plane) + source];
             frame.hits += frame.depth[pixel] >= 0.0f;
@@ -173,17 +178,22 @@ Frame Renderer::render(const FrameRequest& request) {
     return frame;
 }
 
+cl::Buffer Renderer::upload_points(std::span<const glm::vec3> points, int* packets, int* plane) {
+    const int width = switches_.packet_width;
+    *packets = static_cast<int>((points.size() + width - 1) / width);
+    *plane = *packets * width;
+    std::vector<float> coordinates(static_cast<size_t>(*plane) * 3, 0.0f);
+    for (size_t i = 0; i < points.size(); ++i) {
+        for (int c = 0; c < 3; ++c) coordinates[c * *plane + i] = points[i][c];
+    }
+    return upload(coordinates);
+}
+
 std::vector<float> Renderer::probe_de(std::span<const glm::vec3> points,
                                       const std::vector<float>& params) {
     if (points.empty()) return {};
-    const int width = switches_.packet_width;
-    const int packets = static_cast<int>((points.size() + width - 1) / width);
-    const int plane = packets * width;
-    std::vector<float> coordinates(static_cast<size_t>(plane) * 3, 0.0f);
-    for (size_t i = 0; i < points.size(); ++i) {
-        for (int c = 0; c < 3; ++c) coordinates[c * plane + i] = points[i][c];
-    }
-    cl::Buffer input = upload(coordinates);
+    int packets = 0, plane = 0;
+    cl::Buffer input = upload_points(points, &packets, &plane);
     cl::Buffer params_buffer = upload(params);
     cl::Buffer output(device_.context, CL_MEM_WRITE_ONLY, sizeof(float) * plane);
     probe_kernel_.setArg(0, input);
@@ -198,6 +208,31 @@ std::vector<float> Renderer::probe_de(std::span<const glm::vec3> points,
     device_.queue.enqueueReadBuffer(output, CL_TRUE, 0, sizeof(float) * plane, distances.data());
     distances.resize(points.size());
     return distances;
+}
+
+std::vector<glm::vec3> Renderer::probe_normals(std::span<const glm::vec3> points,
+                                               const std::vector<float>& params, float eps) {
+    if (points.empty()) return {};
+    int packets = 0, plane = 0;
+    cl::Buffer input = upload_points(points, &packets, &plane);
+    cl::Buffer params_buffer = upload(params);
+    cl::Buffer output(device_.context, CL_MEM_WRITE_ONLY, sizeof(float) * 3 * plane);
+    normal_kernel_.setArg(0, input);
+    normal_kernel_.setArg(1, plane);
+    normal_kernel_.setArg(2, packets);
+    normal_kernel_.setArg(3, eps);
+    normal_kernel_.setArg(4, output);
+    normal_kernel_.setArg(5, params_buffer);
+    const int group = work_group_size(device_);
+    device_.queue.enqueueNDRangeKernel(normal_kernel_, cl::NullRange, global_range(packets, group),
+                                       cl::NDRange(group));
+    std::vector<float> planes(static_cast<size_t>(plane) * 3);
+    device_.queue.enqueueReadBuffer(output, CL_TRUE, 0, sizeof(float) * planes.size(), planes.data());
+    std::vector<glm::vec3> normals(points.size());
+    for (size_t i = 0; i < points.size(); ++i) {
+        normals[i] = {planes[i], planes[plane + i], planes[2 * static_cast<size_t>(plane) + i]};
+    }
+    return normals;
 }
 
 }  // namespace fgr

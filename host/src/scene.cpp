@@ -73,6 +73,12 @@ const CameraPath* Scene::find_camera_path(const std::string& path_name) const {
     return find_by(camera_paths, path_name, [](const CameraPath& path) { return path.name; });
 }
 
+bool is_builtin_param_id(std::string_view id) {
+    Scene probe;
+    add_builtin_params(probe);
+    return probe.find_param(std::string(id)) != nullptr;
+}
+
 void add_builtin_params(Scene& scene) {
     const MarchSettings& march = scene.march;
     scene.params.push_back(builtin_param("max_steps", "Max steps", ParamType::Int, 1.0f, 100000.0f,
@@ -87,6 +93,9 @@ void add_builtin_params(Scene& scene) {
     scene.params.push_back(builtin_param("iterations", "Iterations", ParamType::Int, 1.0f, 1000.0f,
                                          static_cast<float>(march.de_iterations),
                                          "distance estimator iterations"));
+    scene.params.push_back(builtin_param("step_factor", "Step factor", ParamType::Float, 0.05f,
+                                         1.0f, march.step_factor,
+                                         "rays advance step_factor * DE (< 1 for estimated DEs)"));
 }
 
 }  // namespace fgr

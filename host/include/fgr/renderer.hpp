@@ -24,6 +24,7 @@ struct FrameRequest {
 
 struct Frame {
     Image8 image;               // sRGB, gamma-encoded
+    std::vector<float> linear;  // row-major linear RGB before encoding (3 floats a pixel)
     std::vector<float> depth;   // row-major distance along the ray; -1 where the ray missed
     long hits = 0;              // pixels whose ray met the surface
     double render_ms = 0.0;     // kernel, read-back and encoding; no build, no file output
@@ -44,6 +45,10 @@ public:
     std::vector<float> probe_de(std::span<const glm::vec3> points,
                                 const std::vector<float>& params);
 
+    // The shading normal at each point, with finite-difference stencil size eps.
+    std::vector<glm::vec3> probe_normals(std::span<const glm::vec3> points,
+                                         const std::vector<float>& params, float eps);
+
     const BuildReport& build_report() const { return build_report_; }
     const KernelSwitches& switches() const { return switches_; }
 
@@ -52,6 +57,8 @@ private:
     // timed frame (counted in build_report().build_ms).
     void warm_up();
     cl::Buffer upload(const std::vector<float>& values);
+    // Points as planes x, y, z padded to whole packets, and the packet count.
+    cl::Buffer upload_points(std::span<const glm::vec3> points, int* packets, int* plane);
 
     const ComputeDevice& device_;
     const Scene& scene_;
@@ -60,6 +67,7 @@ private:
     cl::Program program_;
     cl::Kernel render_kernel_;
     cl::Kernel probe_kernel_;
+    cl::Kernel normal_kernel_;
     cl::Buffer lights_;
 };
 

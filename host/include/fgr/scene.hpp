@@ -6,6 +6,7 @@
 #include <cstdint>
 #include <filesystem>
 #include <string>
+#include <string_view>
 #include <vector>
 
 #include <glm/vec3.hpp>
@@ -68,6 +69,7 @@ struct MarchSettings {
     float max_distance = 10.0f;
     float hit_threshold = 1.0f;  // in pixel footprints
     uint32_t de_iterations = 12;
+    float step_factor = 1.0f;  // rays advance step_factor * DE
 };
 
 struct Scene {
@@ -89,8 +91,11 @@ struct Scene {
     const CameraPath* find_camera_path(const std::string& path_name) const;
 };
 
-// Appends the built-in quality parameters (max_steps, max_distance, hit_threshold, iterations)
-// with defaults from the scene's march settings.
+// Appends the built-in quality parameters (max_steps, max_distance, hit_threshold, iterations,
+// step_factor) with defaults from the scene's march settings.
 void add_builtin_params(Scene& scene);
+
+// Whether `id` names one of those built-in parameters (a scene may not declare it).
+bool is_builtin_param_id(std::string_view id);
 
 }  // namespace fgr

@@ -141,13 +141,17 @@ typedef enum fgr_effect_flag {
 #define FGR_EFFECT_ALL_V1 (FGR_EFFECT_SHADOWS | FGR_EFFECT_AMBIENT_OCCLUSION)
 
 /* How rays are marched. These are quality knobs: they reach the kernel as built-in parameters
- * (max_steps, max_distance, hit_threshold, iterations), so changing them never recompiles. */
+ * (max_steps, max_distance, hit_threshold, iterations, step_factor), so changing them never
+ * recompiles. */
 typedef struct fgr_march_settings {
     fgr_struct_header header;
     uint32_t max_steps;   /* DE evaluations per ray at most, >= 1 */
     float max_distance;   /* rays stop beyond this distance from the camera, > 0 */
     float hit_threshold;  /* a ray hits when DE < hit_threshold * t * pixel_angle; > 0 */
     uint32_t de_iterations; /* default of the built-in `iterations` parameter, >= 1 */
+    float step_factor;      /* rays advance step_factor * DE, in (0, 1] (0 means 1): below 1 for
+                               DEs that are estimates rather than strict bounds (escape-time
+                               fractals), so the march never steps past the surface */
 } fgr_march_settings;
 
 /* ---------------------------------------------------------------------------------------------

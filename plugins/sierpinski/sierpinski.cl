@@ -1,0 +1,102 @@
+/* Sierpinski tetrahedron as a kaleidoscopic IFS (Knighty's KIFS, as in Syntopia's Fragmentarium).
+ *
+ * Each iteration folds space into the quarter nearest the corner (1, 1, 1) of the tetrahedron
+ * with corners (1,1,1), (-1,-1,1), (1,-1,-1), (-1,1,-1), optionally twists it, and blows that
+ * corner's copy up to full size:
+ *
+ *     z <- R fold_sierpinski(z) * scale - offset * (scale - 1)
+ *
+ * After n iterations the point is measured against the base tetrahedron and the distance scaled
+ * back by scale^-n. Every step is a reflection, a rotation or a uniform scaling, so the estimate
+ * is 1-Lipschitz in p: a true lower bound on the distance to the surface it draws, for every
+ * scale, offset and twist. With scale >= 2, offset (1, 1, 1) and no twist that surface is the
+ * level-n Sierpinski tetrahedron: 4^n tetrahedra of size 2^-n.
+ *
+ * The loop keeps w = z * scale^-i instead of z. It is the same map (folds and rotations commute
+ * with scaling), but w stays in p's units: z itself would grow like scale^n, which overflows
+ * float for far points or high iteration counts, where w merely stops changing. */
+
+#define SIERPINSKI_SQRT3 1.73205081f
+#define SIERPINSKI_INV_SQRT3 0.57735027f
+/* Orbit traps are recorded while scale^i is a finite float; deeper levels never change them. */
+#define SIERPINSKI_TRAP_MIN_SIZE 1e-30f
+
+/* Rotation by a uniform angle about a fixed unit axis: Rodrigues' matrix, built once per call
+ * from the parameter so the loop does a matrix multiply instead of trigonometry. */
+typedef struct twist_matrix {
+    float3 row_x, row_y, row_z;
+} twist_matrix;
+
+inline twist_matrix twist_about(float3 axis, float degrees) {
+    float s, c = 1.0f;
+    s = sincos(radians(degrees), &c);
+    float t = 1.0f - c;
+    twist_matrix m;
+    m.row_x = (float3)(t * axis.x * axis.x + c, t * axis.x * axis.y - s * axis.z,
+                       t * axis.x * axis.z + s * axis.y);
+    m.row_y = (float3)(t * axis.x * axis.y + s * axis.z, t * axis.y * axis.y + c,
+                       t * axis.y * axis.z - s * axis.x);
+    m.row_z = (float3)(t * axis.x * axis.z - s * axis.y, t * axis.y * axis.z + s * axis.x,
+                       t * axis.z * axis.z + c);
+    return m;
+}
+
+inline vec3 twist_apply(twist_matrix m, vec3 p) {
+    return v3(m.row_x.x * p.x + m.row_x.y * p.y + m.row_x.z * p.z,
+              m.row_y.x * p.x + m.row_y.y * p.y + m.row_y.z * p.z,
+              m.row_z.x * p.x + m.row_z.y * p.y + m.row_z.z * p.z);
+}
+
+/* Lower bound on the distance to the regular tetrahedron with corners size * (1,1,1),
+ * size * (-1,-1,1), size * (1,-1,-1), size * (-1,1,-1). The largest signed distance to its four
+ * face planes is exact over the faces but only a third of the truth towards a corner, where the
+ * distance to its circumsphere is exact; both are bounds, so their maximum is. */
+inline real sd_tetrahedron_bound(vec3 p, float size) {
+    real faces = fmax(fmax(-p.x - p.y - p.z, p.x + p.y - p.z), fmax(p.y + p.z - p.x, p.x + p.z - p.y));
+    real to_planes = (faces - size) * SIERPINSKI_INV_SQRT3;
+    real to_circumsphere = v3_length(p) - SIERPINSKI_SQRT3 * size;
+    return fmax(to_planes, to_circumsphere);
+}
+
+/* World to fractal coordinates: a rotation taking world +z to the diagonal (1, 1, 1), so the
+ * tetrahedron stands on a face with its apex up the z axis at (0, 0, sqrt(3)). */
+inline vec3 tetrahedron_frame(vec3 p) {
+    const float3 across = (float3)(0.70710678f, -0.70710678f, 0.0f);   /* world x */
+    const float3 depth = (float3)(0.40824829f, 0.40824829f, -0.81649658f); /* world y */
+    const float up = SIERPINSKI_INV_SQRT3;                                /* world z */
+    return v3(across.x * p.x + depth.x * p.y + up * p.z, across.y * p.x + depth.y * p.y + up * p.z,
+              depth.z * p.y + up * p.z);
+}
+
+/* Runs the KIFS for p; returns the DE and, when `record` is set, fills *trap with the orbit. */
+inline real sierpinski_iterate(vec3 p, PARAMS, int record, orbit_trap* trap) {
+    const float scale = param_scale;
+    const vec3 offset = param_offset;
+    /* The twist turns about the diagonal (world z), through the corner being blown up. */
+    const twist_matrix twist = twist_about((float3)(SIERPINSKI_INV_SQRT3), param_twist);
+    const int twisted = param_twist != 0.0f;
+    vec3 w = tetrahedron_frame(p); /* the orbit point z_i times scale^-i */
+    float size = 1.0f;             /* scale^-i: the size of one level-i tetrahedron */
+    for (int i = 0; i < param_iterations; ++i) {
+        w = fold_sierpinski(w);
+        if (twisted) w = twist_apply(twist, w);
+        size /= scale;
+        w = v3_sub(w, v3_scale(offset, (scale - 1.0f) * size));
+        if (record && size > SIERPINSKI_TRAP_MIN_SIZE) {
+            *trap = trap_update(*trap, v3_scale(w, 1.0f / size), FGR_TRUE);
+        }
+    }
+    return sd_tetrahedron_bound(w, size);
+}
+
+real scene_de(vec3 p, PARAMS) {
+    orbit_trap unused;
+    return sierpinski_iterate(p, PARAMS_PASS, 0, &unused);
+}
+
+#define FGR_SCENE_HAS_COLOUR
+vec3 scene_colour(vec3 p, PARAMS) {
+    orbit_trap trap = trap_init();
+    sierpinski_iterate(p, PARAMS_PASS, 1, &trap);
+    return trap_colour(trap, param_colour_mode, param_palette, param_base_colour);
+}

@@ -1,0 +1,258 @@
+// Numerical stability of every scene plugin that is built: the DE never overestimates, nothing
+// produces NaN or Inf in the hard cases (the origin, huge points, a camera inside the fractal,
+// every parameter at its extremes, every camera path), and each default view is a real image.
+// New plugins under plugins/ are picked up automatically.
+#include <algorithm>
+#include <cmath>
+#include <map>
+#include <memory>
+#include <random>
+
+#include <glm/geometric.hpp>
+#include <gtest/gtest.h>
+#include <spdlog/spdlog.h>
+
+#include "fgr/camera.hpp"
+#include "fgr/discovery.hpp"
+#include "fgr/parameters.hpp"
+#include "fgr/program_cache.hpp"
+#include "fgr/renderer.hpp"
+
+namespace fgr {
+namespace {
+
+const std::vector<Scene>& all_scenes() {
+    static const std::vector<Scene> scenes = [] {
+        spdlog::set_level(spdlog::level::err);
+        auto found = discover_scenes({FGR_TEST_PLUGIN_DIR}).scenes;
+        spdlog::set_level(spdlog::level::info);
+        return found;
+    }();
+    return scenes;
+}
+
+std::vector<std::string> scene_ids() {
+    std::vector<std::string> ids;
+    for (const auto& scene : all_scenes()) ids.push_back(scene.id);
+    return ids;
+}
+
+// One device and one built program per scene for the whole suite.
+struct SceneRig {
+    const Scene* scene = nullptr;
+    std::unique_ptr<Renderer> renderer;
+};
+
+class SceneStability : public ::testing::TestWithParam<std::string> {
+protected:
+    static ComputeDevice& device() {
+        static ComputeDevice opened = open_device(-1);
+        return opened;
+    }
+
+    SceneRig& rig() {
+        static ProgramCache cache{ProgramCache::default_directory()};
+        static std::map<std::string, SceneRig> rigs;
+        SceneRig& found = rigs[GetParam()];
+        if (!found.renderer) {
+            for (const auto& scene : all_scenes()) {
+                if (scene.id == GetParam()) found.scene = &scene;
+            }
+            found.renderer = std::make_unique<Renderer>(
+                device(), cache, *found.scene,
+                KernelSwitches{preferred_packet_width(device().info), found.scene->effects});
+        }
+        return found;
+    }
+
+    const Scene& scene() { return *rig().scene; }
+    Renderer& renderer() { return *rig().renderer; }
+
+    // Points around the default camera's target, within the camera's distance of it: the region
+    // the default view looks at, and everything between it and the camera.
+    std::vector<glm::vec3> region_points(int count, unsigned seed) {
+        const CameraView& view = scene().cameras.front().view;
+        const float radius = glm::length(view.position - view.target);
+        std::mt19937 rng(seed);
+        std::uniform_real_distribution<float> unit(-1.0f, 1.0f);
+        std::vector<glm::vec3> points;
+        for (int i = 0; i < count; ++i) {
+            points.push_back(view.target + radius * glm::vec3(unit(rng), unit(rng), unit(rng)));
+        }
+        return points;
+    }
+
+    Frame render(const CameraView& view, const std::vector<float>& params, int width = 48,
+                 int height = 32) {
+        return renderer().render(FrameRequest{width, height, view, params});
+    }
+};
+
+void expect_all_finite(const Frame& frame, const std::string& what) {
+    for (size_t i = 0; i < frame.linear.size(); ++i) {
+        ASSERT_TRUE(std::isfinite(frame.linear[i])) << what << ": pixel value " << i / 3;
+    }
+    for (size_t i = 0; i < frame.depth.size(); ++i) {
+        ASSERT_TRUE(std::isfinite(frame.depth[i])) << what << ": depth " << i;
+    }
+}
+
+TEST_P(SceneStability, DistanceIsOneLipschitz) {
+    const auto defaults = default_param_values(scene());
+    std::mt19937 rng(11);
+    std::uniform_real_distribution<float> unit(-1.0f, 1.0f);
+    const auto first = region_points(3000, 5);
+    const CameraView& view = scene().cameras.front().view;
+    const float radius = glm::length(view.position - view.target);
+    std::vector<glm::vec3> second;
+    for (const auto& p : first) {
+        const glm::vec3 direction = glm::normalize(glm::vec3(unit(rng), unit(rng), unit(rng)) + 1e-6f);
+        const float step = radius * std::pow(10.0f, -3.0f + 2.5f * (unit(rng) + 1.0f) * 0.5f);
+        second.push_back(p + direction * step);
+    }
+    const auto de_first = renderer().probe_de(first, defaults);
+    const auto de_second = renderer().probe_de(second, defaults);
+    // The march advances step_factor * DE, so that is what must not exceed the distance.
+    const float step_factor = param_value(scene(), defaults, "step_factor");
+    int violations = 0;
+    float worst = 0.0f;
+    for (size_t i = 0; i < first.size(); ++i) {
+        ASSERT_TRUE(std::isfinite(de_first[i]) && std::isfinite(de_second[i])) << "pair " << i;
+        // Inside the set a DE's value is not a distance (the march stops there): compare the
+        // distances to the set, max(DE, 0).
+        const float separation = glm::length(first[i] - second[i]);
+        const float ratio = step_factor *
+            std::abs(std::max(de_first[i], 0.0f) - std::max(de_second[i], 0.0f)) / separation;
+        worst = std::max(worst, ratio);
+        // Float rounding of two DE values near |p| ~ radius allows a small absolute slack.
+        violations += ratio > 1.02f + 2e-6f * radius / separation;
+    }
+    EXPECT_EQ(violations, 0) << "worst step_factor * |dDE| / |dp| = " << worst;
+}
+
+TEST_P(SceneStability, NoSurfaceWithinTheDistanceEstimate) {
+    const auto defaults = default_param_values(scene());
+    const auto centres = region_points(400, 21);
+    const auto radii = renderer().probe_de(centres, defaults);
+    std::mt19937 rng(3);
+    std::uniform_real_distribution<float> unit(-1.0f, 1.0f);
+    std::vector<glm::vec3> probes;
+    for (size_t i = 0; i < centres.size(); ++i) {
+        if (!(radii[i] > 0.0f)) continue;
+        for (int k = 0; k < 8; ++k) {
+            glm::vec3 offset(unit(rng), unit(rng), unit(rng));
+            if (glm::length(offset) > 1.0f || glm::length(offset) < 1e-3f) offset *= 0.5f;
+            probes.push_back(centres[i] + offset * (0.95f * radii[i]));
+        }
+    }
+    ASSERT_GT(probes.size(), 200u) << "the default view's region is almost all inside the set";
+    const auto inside_ball = renderer().probe_de(probes, defaults);
+    for (size_t i = 0; i < probes.size(); ++i) {
+        EXPECT_GT(inside_ball[i], 0.0f) << "point " << i << " lies inside the set but within the "
+                                        << "DE ball of a point outside it";
+    }
+}
+
+TEST_P(SceneStability, DistanceAndNormalFiniteAtSingularPoints) {
+    const auto defaults = default_param_values(scene());
+    const CameraView& view = scene().cameras.front().view;
+    std::vector<glm::vec3> points{{0, 0, 0},        {-0.0f, -0.0f, -0.0f}, {1, 0, 0},
+                                  {0, 1, 0},        {0, 0, 1},             {0, 0, -1},
+                                  {1e6f, 0, 0},     {0, -1e6f, 0},         {0, 0, 1e6f},
+                                  {1e6f, 1e6f, 1e6f}, {-1e12f, 1e12f, 0},  {1e-30f, 0, 0},
+                                  view.position,    view.target};
+    const auto distances = renderer().probe_de(points, defaults);
+    const auto normals = renderer().probe_normals(points, defaults, 1e-4f);
+    for (size_t i = 0; i < points.size(); ++i) {
+        EXPECT_TRUE(std::isfinite(distances[i])) << "DE at point " << i;
+        EXPECT_TRUE(std::isfinite(normals[i].x) && std::isfinite(normals[i].y) &&
+                    std::isfinite(normals[i].z))
+            << "normal at point " << i;
+    }
+}
+
+TEST_P(SceneStability, DefaultViewIsANonTrivialImage) {
+    const Frame frame = render(scene().cameras.front().view, default_param_values(scene()), 96, 64);
+    expect_all_finite(frame, "default view");
+    const double hit_fraction = double(frame.hits) / (96 * 64);
+    EXPECT_GT(hit_fraction, 0.05);
+    EXPECT_LT(hit_fraction, 0.97);
+    double mean = 0.0, mean_square = 0.0;
+    for (uint8_t value : frame.image.rgb) {
+        mean += value;
+        mean_square += double(value) * value;
+    }
+    mean /= frame.image.rgb.size();
+    mean_square /= frame.image.rgb.size();
+    EXPECT_GT(std::sqrt(mean_square - mean * mean), 10.0) << "the image is nearly uniform";
+    EXPECT_GT(mean, 15.0) << "the image is nearly black";
+}
+
+TEST_P(SceneStability, HardCameraPlacementsStayFinite) {
+    const auto defaults = default_param_values(scene());
+    const CameraView& home = scene().cameras.front().view;
+    CameraView inside = home;  // at the origin: inside most fractals, looking outwards
+    inside.position = {0.0f, 0.0f, 0.0f};
+    inside.target = {1.0f, 0.3f, 0.2f};
+    expect_all_finite(render(inside, defaults), "camera at the origin");
+    CameraView through_origin = home;  // the centre pixel's ray passes exactly through 0
+    through_origin.target = {0.0f, 0.0f, 0.0f};
+    expect_all_finite(render(through_origin, defaults, 33, 33), "ray through the origin");
+    CameraView grazing = home;  // a narrow view along the silhouette
+    const glm::vec3 side = glm::normalize(glm::cross(home.target - home.position, home.up));
+    grazing.target = home.target + side * glm::length(home.target - home.position) * 0.5f;
+    grazing.fov_degrees = 5.0f;
+    expect_all_finite(render(grazing, defaults), "grazing view");
+    CameraView far_away = home;
+    far_away.position = home.target + (home.position - home.target) * 1000.0f;
+    expect_all_finite(render(far_away, defaults), "distant camera");
+}
+
+TEST_P(SceneStability, EveryParameterAtItsExtremesStaysFinite) {
+    const auto offsets = param_offsets(scene());
+    for (size_t i = 0; i < scene().params.size(); ++i) {
+        const ParamInfo& param = scene().params[i];
+        // Huge step or distance limits only make the same image slower.
+        if (param.id == "max_steps" || param.id == "max_distance") continue;
+        for (float extreme : {param.min_value, param.max_value}) {
+            std::vector<float> values = default_param_values(scene());
+            for (int c = 0; c < param_components(param.type); ++c) values[offsets[i] + c] = extreme;
+            const std::string what = param.id + " = " + std::to_string(extreme);
+            expect_all_finite(render(scene().cameras.front().view, values, 24, 16), what);
+            const std::vector<glm::vec3> origin{{0, 0, 0}, {0.5f, 0.5f, 0.5f}};
+            for (float distance : renderer().probe_de(origin, values)) {
+                EXPECT_TRUE(std::isfinite(distance)) << what;
+            }
+        }
+    }
+}
+
+TEST_P(SceneStability, EveryCameraAndPathRenders) {
+    const auto defaults = default_param_values(scene());
+    for (const auto& camera : scene().cameras) {
+        const Frame frame = render(camera.view, defaults);
+        expect_all_finite(frame, "camera " + camera.name);
+        EXPECT_GT(frame.hits, 0) << "camera " << camera.name << " sees nothing";
+    }
+    ASSERT_FALSE(scene().camera_paths.empty()) << "every scene needs at least one camera path";
+    for (const auto& path : scene().camera_paths) {
+        const float start = path.keyframes.front().time;
+        for (float fraction : {0.0f, 0.37f, 0.81f, 1.0f}) {
+            const float time = start + fraction * path.duration();
+            const Frame frame = render(evaluate_camera_path(path, time), defaults);
+            const std::string what = "path " + path.name + " at " + std::to_string(time);
+            expect_all_finite(frame, what);
+            EXPECT_GT(frame.hits, 0) << what << " sees nothing";
+        }
+    }
+}
+
+INSTANTIATE_TEST_SUITE_P(Scenes, SceneStability, ::testing::ValuesIn(scene_ids()),
+                         [](const auto& info) {
+                             std::string name = info.param;
+                             std::replace(name.begin(), name.end(), '-', '_');
+                             return name;
+                         });
+
+}  // namespace
+}  // namespace fgr
