@@ -28,8 +28,11 @@ inline march_limits scene_march_limits(float pixel_angle, PARAMS) {
 }
 
 /* Marches every lane of `active` from origin along dir until it hits, passes max_distance, or has
- * taken max_steps. Inactive lanes are not evaluated for hits and keep t = 0. */
-inline march_result march_rays(vec3 origin, vec3 dir, mask active, march_limits limits, PARAMS) {
+ * taken max_steps. Inactive lanes are not evaluated for hits and keep t = 0. `travelled` is the
+ * distance the ray covered before origin (a reflected ray's first leg): the hit footprint grows
+ * with the whole path, so secondary rays resolve no finer than the pixel they end up in. */
+inline march_result march_rays_after(vec3 origin, vec3 dir, mask active, real travelled,
+                                     march_limits limits, PARAMS) {
     march_result result;
     result.t = fgr_real(0.0f);
     result.hit = (mask)(0);
@@ -37,7 +40,7 @@ inline march_result march_rays(vec3 origin, vec3 dir, mask active, march_limits 
     for (int step = 0; step < limits.max_steps; ++step) {
         if (!fgr_any(active)) break;
         real dist = scene_de(v3_mad(origin, dir, result.t), PARAMS_PASS);
-        mask now_hit = active & (dist < result.t * limits.footprint);
+        mask now_hit = active & (dist < (result.t + travelled) * limits.footprint);
         result.hit |= now_hit;
         active &= !now_hit;
         result.t = select(result.t, mad(dist, limits.step_factor, result.t), active);
@@ -45,6 +48,10 @@ inline march_result march_rays(vec3 origin, vec3 dir, mask active, march_limits 
         active &= result.t <= limits.max_distance;
     }
     return result;
+}
+
+inline march_result march_rays(vec3 origin, vec3 dir, mask active, march_limits limits, PARAMS) {
+    return march_rays_after(origin, dir, active, fgr_real(0.0f), limits, PARAMS_PASS);
 }
 
 /* Surface normal from the DE's gradient, with the four-tap tetrahedron stencil (four DE

@@ -77,8 +77,12 @@ __kernel void fgr_render(__global float* planes, int plane_size, int tile_count,
         vec3 p = v3_mad(eye, dir, hit.t);
         real eps = fmax(hit.t * camera.pixel_angle * 0.5f, 1e-7f);
         vec3 n = estimate_normal(p, eps, PARAMS_PASS);
-        vec3 lit = shade_surface(p, n, dir, eps, hit.steps, limits, lights, light_count,
-                                 PARAMS_PASS);
+        vec3 lit = shade_surface(p, n, dir, eps, hit.steps, hit.t, 1, limits, lights,
+                                 light_count, PARAMS_PASS);
+#ifdef FGR_EFFECT_REFLECTIONS
+        lit = add_reflection(lit, p, n, dir, eps, hit.t, hit.hit, limits, lights, light_count,
+                             PARAMS_PASS);
+#endif
         colour = v3_select(colour, lit, hit.hit);
         depth = select(depth, hit.t, hit.hit);
     }

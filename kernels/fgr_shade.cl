@@ -36,20 +36,48 @@ inline vec3 light_direction(__constant const float* light, vec3 p, real* falloff
     return v; /* the host normalised directional vectors */
 }
 
-#ifdef FGR_EFFECT_SHADOWS
+#if defined(FGR_EFFECT_SOFT_SHADOWS)
+/* Penumbra sharpness k: visibility is min over the shadow ray of k * DE / t, so a ray that passes
+ * an occluder at distance d after travelling t is dimmed by how narrowly it missed. */
+#define FGR_SOFT_SHADOW_SHARPNESS 12.0f
+
+/* Soft visibility in [0, 1] of the light along to_light from p. `travelled` is the primary ray's
+ * length, which sets the footprint below which the shadow ray counts as blocked. */
+inline real light_visibility(vec3 p, vec3 to_light, mask lit, real travelled, march_limits limits,
+                             PARAMS) {
+    real visibility = select(fgr_real(0.0f), fgr_real(1.0f), lit);
+    real t = fgr_real(0.0f);
+    mask active = lit;
+    for (int step = 0; step < limits.max_steps; ++step) {
+        if (!fgr_any(active)) break;
+        real dist = scene_de(v3_mad(p, to_light, t), PARAMS_PASS);
+        mask blocked = active & (dist < (t + travelled) * limits.footprint);
+        real penumbra = FGR_SOFT_SHADOW_SHARPNESS * dist / fmax(t, 1e-6f);
+        visibility = select(visibility, fmin(visibility, penumbra), active & (t > 0.0f));
+        visibility = select(visibility, fgr_real(0.0f), blocked);
+        active &= !blocked & (visibility > 0.002f);
+        t = select(t, mad(dist, limits.step_factor, t), active);
+        active &= t <= limits.max_distance;
+    }
+    visibility = clamp(visibility, 0.0f, 1.0f);
+    return visibility * visibility * (3.0f - 2.0f * visibility); /* smoothstep: softer edge */
+}
+#elif defined(FGR_EFFECT_SHADOWS)
 /* 1 where the light is visible from p, 0 where the surface blocks it: a march towards the light
  * that counts any hit before max_distance as an occluder. */
-inline real light_visibility(vec3 p, vec3 to_light, mask lit, march_limits limits, PARAMS) {
-    march_result shadow = march_rays(p, to_light, lit, limits, PARAMS_PASS);
+inline real light_visibility(vec3 p, vec3 to_light, mask lit, real travelled, march_limits limits,
+                             PARAMS) {
+    march_result shadow = march_rays_after(p, to_light, lit, travelled, limits, PARAMS_PASS);
     return select(fgr_real(1.0f), fgr_real(0.0f), shadow.hit);
 }
 #endif
 
-/* Linear colour of surface point p with normal n seen along view_dir. `steps` feeds the cheap
- * step-count ambient occlusion when the scene asks for it. */
-inline vec3 shade_surface(vec3 p, vec3 n, vec3 view_dir, real eps, mask steps,
-                          march_limits limits, __constant const float* lights, int light_count,
-                          PARAMS) {
+/* Linear colour of surface point p with normal n seen along view_dir, reached after `travelled`
+ * along the (possibly reflected) ray. `steps` feeds the cheap step-count ambient occlusion when
+ * the scene asks for it; `with_shadows` lets reflections skip shadow rays. */
+inline vec3 shade_surface(vec3 p, vec3 n, vec3 view_dir, real eps, mask steps, real travelled,
+                          int with_shadows, march_limits limits, __constant const float* lights,
+                          int light_count, PARAMS) {
     vec3 albedo = scene_colour(p, PARAMS_PASS);
     real ambient = fgr_real(FGR_AMBIENT);
 #ifdef FGR_EFFECT_AMBIENT_OCCLUSION
@@ -68,9 +96,11 @@ inline vec3 shade_surface(vec3 p, vec3 n, vec3 view_dir, real eps, mask steps,
         vec3 half_vector = v3_normalize(v3_add(l, to_eye));
         real specular = FGR_SPECULAR * pow(fmax(v3_dot(n, half_vector), 0.0f), FGR_SHININESS);
         real strength = light[7] * falloff * select(fgr_real(0.0f), fgr_real(1.0f), diffuse > 0.0f);
-#ifdef FGR_EFFECT_SHADOWS
-        vec3 start = v3_mad(p, n, 2.0f * eps);
-        strength *= light_visibility(start, l, diffuse > 0.0f, limits, PARAMS_PASS);
+#if defined(FGR_EFFECT_SHADOWS) || defined(FGR_EFFECT_SOFT_SHADOWS)
+        if (with_shadows) {
+            vec3 start = v3_mad(p, n, 2.0f * eps);
+            strength *= light_visibility(start, l, diffuse > 0.0f, travelled, limits, PARAMS_PASS);
+        }
 #endif
         vec3 light_colour = v3_splat(light[4], light[5], light[6]);
         vec3 lit = v3(albedo.x * diffuse + specular, albedo.y * diffuse + specular,
@@ -79,3 +109,43 @@ inline vec3 shade_surface(vec3 p, vec3 n, vec3 view_dir, real eps, mask steps,
     }
     return colour;
 }
+
+#ifdef FGR_EFFECT_REFLECTIONS
+#ifndef FGR_SCENE_HAS_REFLECTIVITY
+/* Reflectivity at normal incidence for scenes that do not set it per material. */
+inline real scene_reflectivity(vec3 p, PARAMS) {
+    (void)p;
+    (void)fgr_params;
+    return fgr_real(0.15f);
+}
+#endif
+
+/* One mirror bounce: the reflected ray is marched and shaded (without shadow rays, which a
+ * reflection rarely shows), then blended in by the surface's reflectivity raised towards 1 at
+ * grazing angles (Schlick's Fresnel approximation). Lanes in `surface` only. */
+inline vec3 add_reflection(vec3 colour, vec3 p, vec3 n, vec3 dir, real eps, real travelled,
+                           mask surface, march_limits limits, __constant const float* lights,
+                           int light_count, PARAMS) {
+    real cos_in = fmax(-v3_dot(dir, n), 0.0f);
+    vec3 reflected = v3_normalize(v3_mad(dir, n, 2.0f * cos_in));
+    real r0 = scene_reflectivity(p, PARAMS_PASS);
+    real grazing = 1.0f - cos_in;
+    real fresnel = r0 + (1.0f - r0) * grazing * grazing * grazing * grazing * grazing;
+    vec3 start = v3_mad(p, n, 2.0f * eps);
+    march_result bounce = march_rays_after(start, reflected, surface & (r0 > 0.0f), travelled,
+                                           limits, PARAMS_PASS);
+    vec3 seen = background(reflected);
+    if (fgr_any(bounce.hit)) {
+        vec3 q = v3_mad(start, reflected, bounce.t);
+        real q_eps = fmax((travelled + bounce.t) * limits.footprint * 0.5f, 1e-7f);
+        vec3 q_normal = estimate_normal(q, q_eps, PARAMS_PASS);
+        vec3 q_colour = shade_surface(q, q_normal, reflected, q_eps, bounce.steps,
+                                      travelled + bounce.t, 0, limits, lights, light_count,
+                                      PARAMS_PASS);
+        seen = v3_select(seen, q_colour, bounce.hit);
+    }
+    real weight = select(fgr_real(0.0f), fresnel, surface);
+    return v3(mix(colour.x, seen.x, weight), mix(colour.y, seen.y, weight),
+              mix(colour.z, seen.z, weight));
+}
+#endif

@@ -43,6 +43,7 @@ struct RenderOptions {
     int device = -1;
     int packet_width = 0;  // 0: the device's preference
     bool all = false;      // every scene's default view into the directory `output`
+    std::string effect_changes;  // "+shadows,-ambient_occlusion": over the scene's own effects
 };
 
 Discovery discover() { return discover_scenes(plugin_search_path(executable_dir())); }
@@ -177,6 +178,11 @@ void check_output_path(const std::filesystem::path& output) {
 
 // Checks that do not need a scene: option combinations and the output location.
 void check_render_options(const RenderOptions& options) {
+    try {
+        apply_effect_changes(0, options.effect_changes);
+    } catch (const std::invalid_argument& error) {
+        throw UsageError(error.what());
+    }
     if (options.all) {
         if (!options.scene.empty()) throw UsageError("give a SCENE or --all, not both");
         if (!options.assignments.empty() || options.camera || options.camera_path || options.time) {
@@ -203,7 +209,7 @@ void render_to_file(const Scene& scene, const FrameRequest& request, const Compu
                     const std::filesystem::path& output) {
     const KernelSwitches switches{
         options.packet_width ? options.packet_width : preferred_packet_width(device.info),
-        scene.effects};
+        apply_effect_changes(scene.effects, options.effect_changes)};
     spdlog::info("building '{}' for {} ({} rays per work-item, effects: {})", scene.id,
                  device.info.name, switches.packet_width, effect_names(switches.effects));
     Renderer renderer(device, cache, scene, switches);
@@ -277,6 +283,8 @@ void add_render_command(CLI::App& app, RenderOptions& options) {
     auto* path = render->add_option("--camera-path", options.camera_path, "camera path of the scene");
     path->excludes(camera);
     render->add_option("--time", options.time, "time along the camera path, in seconds");
+    render->add_option("--effects", options.effect_changes,
+                       "change the scene's effects, e.g. +shadows,-ambient_occlusion");
     render->add_option("--device", options.device, "OpenCL device index (see `fgr info`)")
         ->check(CLI::NonNegativeNumber);
     render->add_option("--packet-width", options.packet_width,

@@ -1,6 +1,8 @@
 #include "fgr/kernel_assembly.hpp"
 
+#include <algorithm>
 #include <array>
+#include <stdexcept>
 #include <fmt/format.h>
 
 #include "fgr/kernel_library.hpp"
@@ -19,6 +21,8 @@ struct EffectSwitch {
 constexpr std::array kEffectSwitches{
     EffectSwitch{FGR_EFFECT_SHADOWS, "FGR_EFFECT_SHADOWS", "shadows"},
     EffectSwitch{FGR_EFFECT_AMBIENT_OCCLUSION, "FGR_EFFECT_AMBIENT_OCCLUSION", "ambient_occlusion"},
+    EffectSwitch{FGR_EFFECT_SOFT_SHADOWS, "FGR_EFFECT_SOFT_SHADOWS", "soft_shadows"},
+    EffectSwitch{FGR_EFFECT_REFLECTIONS, "FGR_EFFECT_REFLECTIONS", "reflections"},
 };
 
 // A file name is quoted in #line, so quotes, backslashes and newlines in it are replaced.
@@ -75,6 +79,26 @@ std::string effect_names(uint64_t effects) {
         names += effect.name;
     }
     return names.empty() ? "none" : names;
+}
+
+uint64_t apply_effect_changes(uint64_t effects, std::string_view changes) {
+    size_t start = 0;
+    while (start <= changes.size()) {
+        const size_t comma = std::min(changes.find(',', start), changes.size());
+        std::string_view item = changes.substr(start, comma - start);
+        start = comma + 1;
+        if (item.empty()) continue;
+        const bool remove = item.front() == '-';
+        if (item.front() == '-' || item.front() == '+') item.remove_prefix(1);
+        const auto known = std::find_if(kEffectSwitches.begin(), kEffectSwitches.end(),
+                                         [&](const EffectSwitch& effect) { return item == effect.name; });
+        if (known == kEffectSwitches.end()) {
+            throw std::invalid_argument(fmt::format("unknown effect '{}' (known: {})", item,
+                                                    effect_names(~uint64_t{0})));
+        }
+        effects = remove ? (effects & ~known->bit) : (effects | known->bit);
+    }
+    return effects;
 }
 
 AssembledProgram assemble_program(const Scene& scene, const KernelSwitches& switches) {

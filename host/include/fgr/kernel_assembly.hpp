@@ -5,6 +5,7 @@
 
 #include <cstdint>
 #include <string>
+#include <string_view>
 
 #include "fgr/scene.hpp"
 
@@ -29,7 +30,12 @@ std::string param_accessors(const Scene& scene);
 // The -D options for the switches, e.g. "-DFGR_WIDTH=16 -DFGR_EFFECT_SHADOWS".
 std::string switch_options(const KernelSwitches& switches);
 
-// Names of the effect bits, in bit order ("shadows", "ambient_occlusion").
+// Names of the effect bits, in bit order ("shadows,ambient_occlusion"), or "none".
 std::string effect_names(uint64_t effects);
+
+// Applies a comma-separated list of changes to `effects`: "+name" or "name" adds an effect,
+// "-name" removes it, e.g. "+shadows,-ambient_occlusion". Throws std::invalid_argument naming an
+// unknown effect and listing the known ones.
+uint64_t apply_effect_changes(uint64_t effects, std::string_view changes);
 
 }  // namespace fgr

@@ -135,10 +135,14 @@ typedef struct fgr_light {
  * an effect not asked for leaves no code behind. Bits not listed here are reserved and rejected.
  */
 typedef enum fgr_effect_flag {
-    FGR_EFFECT_SHADOWS = 1u << 0,          /* hard shadows towards every light */
-    FGR_EFFECT_AMBIENT_OCCLUSION = 1u << 1 /* darkening from the march's step count */
+    FGR_EFFECT_SHADOWS = 1u << 0,           /* hard shadows towards every light */
+    FGR_EFFECT_AMBIENT_OCCLUSION = 1u << 1, /* darkening from the march's step count */
+    FGR_EFFECT_SOFT_SHADOWS = 1u << 2,      /* penumbrae from near misses (replaces hard ones) */
+    FGR_EFFECT_REFLECTIONS = 1u << 3        /* one mirror bounce, Fresnel-weighted */
 } fgr_effect_flag;
-#define FGR_EFFECT_ALL_V1 (FGR_EFFECT_SHADOWS | FGR_EFFECT_AMBIENT_OCCLUSION)
+#define FGR_EFFECT_ALL_V1                                                     \
+    (FGR_EFFECT_SHADOWS | FGR_EFFECT_AMBIENT_OCCLUSION | FGR_EFFECT_SOFT_SHADOWS | \
+     FGR_EFFECT_REFLECTIONS)
 
 /* How rays are marched. These are quality knobs: they reach the kernel as built-in parameters
  * (max_steps, max_distance, hit_threshold, iterations, step_factor), so changing them never
