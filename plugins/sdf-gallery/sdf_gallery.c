@@ -30,7 +30,7 @@ static const fgr_param_desc params[] = {
 static const fgr_camera cameras[] = {
     FGR_CAMERA_Z_UP("front", 0.0f, -12.5f, 10.0f, 0.0f, -0.9f, 0.0f, 66.0f),
     FGR_CAMERA_Z_UP("primitives", -4.0f, -9.5f, 3.2f, -2.2f, -3.0f, 0.8f, 50.0f),
-    FGR_CAMERA_Z_UP("transforms", 3.5f, -1.0f, 4.2f, 2.2f, 3.75f, 0.8f, 55.0f),
+    FGR_CAMERA_Z_UP("transforms", -3.75f, -1.5f, 3.6f, -3.75f, 3.75f, 0.9f, 62.0f),
     FGR_CAMERA_Z_UP("top", 0.0f, -1.0f, 18.0f, 0.0f, 0.0f, 0.0f, 60.0f),
 };
 
