@@ -36,6 +36,13 @@ inline vec3 light_direction(__constant const float* light, vec3 p, real* falloff
     return v; /* the host normalised directional vectors */
 }
 
+/* Where a secondary ray (shadow, reflection) starts from a surface point p reached after
+ * `travelled`: two hit thresholds out along the normal, so the ray does not count the surface it
+ * leaves as a hit (at exactly one threshold, rounding decides per pixel: visible contour lines). */
+inline vec3 leave_surface(vec3 p, vec3 n, real travelled, march_limits limits) {
+    return v3_mad(p, n, 2.0f * travelled * limits.footprint + 1e-6f);
+}
+
 #if defined(FGR_EFFECT_SOFT_SHADOWS)
 /* Penumbra sharpness k: visibility is min over the shadow ray of k * DE / t, so a ray that passes
  * an occluder at distance d after travelling t is dimmed by how narrowly it missed. */
@@ -47,16 +54,23 @@ inline real light_visibility(vec3 p, vec3 to_light, mask lit, real travelled, ma
                              PARAMS) {
     real visibility = select(fgr_real(0.0f), fgr_real(1.0f), lit);
     real t = fgr_real(0.0f);
+    real previous = fgr_real(1e10f);
     mask active = lit;
     for (int step = 0; step < limits.max_steps; ++step) {
         if (!fgr_any(active)) break;
         real dist = scene_de(v3_mad(p, to_light, t), PARAMS_PASS);
         mask blocked = active & (dist < (t + travelled) * limits.footprint);
-        real penumbra = FGR_SOFT_SHADOW_SHARPNESS * dist / fmax(t, 1e-6f);
+        /* Closest approach between this sample and the previous one (the two DE spheres'
+         * intersection), not just at the samples: without it, long steps leave bands. */
+        real along = dist * dist / (2.0f * previous);
+        real closest = sqrt(fmax(dist * dist - along * along, 0.0f));
+        real penumbra = FGR_SOFT_SHADOW_SHARPNESS * closest / fmax(t - along, 1e-6f);
         visibility = select(visibility, fmin(visibility, penumbra), active & (t > 0.0f));
         visibility = select(visibility, fgr_real(0.0f), blocked);
+        previous = select(previous, dist, active);
         active &= !blocked & (visibility > 0.002f);
-        t = select(t, mad(dist, limits.step_factor, t), active);
+        /* Capped steps sample the penumbra of thin occluders the shadow ray passes. */
+        t = select(t, t + fmin(dist * limits.step_factor, 0.05f + 0.25f * t), active);
         active &= t <= limits.max_distance;
     }
     visibility = clamp(visibility, 0.0f, 1.0f);
@@ -98,7 +112,7 @@ inline vec3 shade_surface(vec3 p, vec3 n, vec3 view_dir, real eps, mask steps, r
         real strength = light[7] * falloff * select(fgr_real(0.0f), fgr_real(1.0f), diffuse > 0.0f);
 #if defined(FGR_EFFECT_SHADOWS) || defined(FGR_EFFECT_SOFT_SHADOWS)
         if (with_shadows) {
-            vec3 start = v3_mad(p, n, 2.0f * eps);
+            vec3 start = leave_surface(p, n, travelled, limits);
             strength *= light_visibility(start, l, diffuse > 0.0f, travelled, limits, PARAMS_PASS);
         }
 #endif
@@ -131,7 +145,7 @@ inline vec3 add_reflection(vec3 colour, vec3 p, vec3 n, vec3 dir, real eps, real
     real r0 = scene_reflectivity(p, PARAMS_PASS);
     real grazing = 1.0f - cos_in;
     real fresnel = r0 + (1.0f - r0) * grazing * grazing * grazing * grazing * grazing;
-    vec3 start = v3_mad(p, n, 2.0f * eps);
+    vec3 start = leave_surface(p, n, travelled, limits);
     march_result bounce = march_rays_after(start, reflected, surface & (r0 > 0.0f), travelled,
                                            limits, PARAMS_PASS);
     vec3 seen = background(reflected);
@@ -144,7 +158,7 @@ inline vec3 add_reflection(vec3 colour, vec3 p, vec3 n, vec3 dir, real eps, real
                                       PARAMS_PASS);
         seen = v3_select(seen, q_colour, bounce.hit);
     }
-    real weight = select(fgr_real(0.0f), fresnel, surface);
+    real weight = select(fgr_real(0.0f), fresnel, surface & (r0 > 0.0f));
     return v3(mix(colour.x, seen.x, weight), mix(colour.y, seen.y, weight),
               mix(colour.z, seen.z, weight));
 }

@@ -4,6 +4,7 @@
 
 #include "fgr_colour_cl.h"
 #include "fgr_folds_cl.h"
+#include "fgr_fractals_cl.h"
 #include "fgr_march_cl.h"
 #include "fgr_render_cl.h"
 #include "fgr_sdf_cl.h"
@@ -20,6 +21,7 @@ std::span<const KernelFile> kernel_prelude() {
         KernelFile{"fgr_sdf.cl", fgr_sdf_cl},
         KernelFile{"fgr_folds.cl", fgr_folds_cl},
         KernelFile{"fgr_colour.cl", fgr_colour_cl},
+        KernelFile{"fgr_fractals.cl", fgr_fractals_cl},
     };
     return files;
 }

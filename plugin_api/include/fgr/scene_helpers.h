@@ -5,6 +5,8 @@
 #ifndef FGR_SCENE_HELPERS_H
 #define FGR_SCENE_HELPERS_H
 
+#include <stddef.h>
+
 #include "fgr/plugin.h"
 
 /* A float parameter. */
