@@ -196,6 +196,11 @@ private:
     fs::path path_;
 };
 
+std::string read_file(const fs::path& file) {
+    std::ifstream in(file, std::ios::binary);
+    return std::string(std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>());
+}
+
 std::vector<std::string> directory_listing(const fs::path& directory) {
     std::vector<std::string> names;
     std::error_code error;
@@ -392,6 +397,10 @@ const std::vector<BadInput> kBadInputs = {
     {"OutputNotPng", render_args({}), 2, {".png"}, "out.jpg"},
     {"NoSuchDevice", render_args({"--device", "99"}), kAnyFailure, {"device"}},
     {"BadPacketWidth", render_args({"--packet-width", "3"}), 2, {"packet"}},
+    {"UnknownEffect", render_args({"--effects", "+sparkles"}), 2, {"sparkles", "shadows"}},
+    {"AllWithScene", {"render", "--all", "mandelbulb", "-o", "{out}"}, 2, {"--all"}},
+    {"AllWithSet", {"render", "--all", "-o", "{out}", "--set", "power=8"}, 2, {"--all"}},
+    {"NoSceneNorAll", {"render", "-o", "{out}"}, 2, {"scene"}},
     {"UnknownSubcommand", {"frobnicate"}, 2, {"frobnicate"}},
     {"NoSubcommand", {}, kAnyFailure, {}},
 };
@@ -533,6 +542,40 @@ INSTANTIATE_TEST_SUITE_P(Cli, CliValidRender, ::testing::ValuesIn(kValidRenders)
                          });
 
 // --- list and info ------------------------------------------------------------------------------
+
+TEST_F(CliTest, RenderAllWritesEverySceneListed) {
+    const RunResult list = run({"list"});
+    ASSERT_EQ(list.exit_code, 0) << list;
+    const fs::path gallery = dir() / "gallery";
+    const RunResult result =
+        run({"render", "--all", "-o", gallery.string(), "--width", "24", "--height", "16"});
+    ASSERT_EQ(result.exit_code, 0) << result;
+    // Every scene in `fgr list` (a line starting with its id) has its own PNG.
+    std::istringstream lines(list.out);
+    int scenes = 0;
+    for (std::string line; std::getline(lines, line);) {
+        if (line.empty() || line.front() == ' ') continue;
+        const std::string id = line.substr(0, line.find(' '));
+        expect_rgb_png(gallery / (id + ".png"), 24, 16);
+        ++scenes;
+    }
+    EXPECT_GE(scenes, 2);
+    EXPECT_EQ(static_cast<int>(directory_listing(gallery).size()), scenes);
+}
+
+TEST_F(CliTest, EffectChangesReachTheKernel) {
+    const fs::path plain = dir() / "plain.png";
+    const fs::path shadowed = dir() / "shadowed.png";
+    const RunResult first = run({"render", "mandelbulb", "-o", plain.string(), "--width", "48",
+                                 "--height", "32", "--effects", "-ambient_occlusion"});
+    const RunResult second = run({"render", "mandelbulb", "-o", shadowed.string(), "--width",
+                                  "48", "--height", "32", "--effects", "+shadows"});
+    ASSERT_EQ(first.exit_code, 0) << first;
+    ASSERT_EQ(second.exit_code, 0) << second;
+    EXPECT_NE(read_file(plain), read_file(shadowed));
+    EXPECT_NE(first.err.find("effects: none"), std::string::npos) << first.err;
+    EXPECT_NE(second.err.find("effects: shadows,ambient_occlusion"), std::string::npos) << second.err;
+}
 
 TEST_F(CliTest, ListShowsMandelbulbParametersCamerasAndPaths) {
     const RunResult result = run({"list"});
