@@ -14,33 +14,34 @@ static const fgr_param_desc params[] = {
                    "corner each copy is scaled towards, in the tetrahedron's own frame"),
     FGR_FLOAT_PARAM("twist", "Twist", "Fractal", -180.0f, 180.0f, 0.0f,
                     "degrees each level turns about the vertical axis"),
-    FGR_COLOUR_PARAMS(1, 0, 1.0f, 0.96f, 0.92f),
+    FGR_COLOUR_PARAMS(0, 3, 1.0f, 0.97f, 0.95f),
 };
 
 /* The tetrahedron spans z in [-0.58, 1.73] and a circumradius of 1.73: the views aim a little
  * above its centroid so apex and base both sit inside the frame. */
 static const fgr_camera cameras[] = {
-    FGR_CAMERA_Z_UP("front", 1.929f, 4.137f, 1.933f, 0.0f, 0.0f, 0.45f, FOV),
+    FGR_CAMERA_Z_UP("front", 3.636f, 4.038f, 1.805f, 0.0f, 0.0f, 0.45f, FOV),
     FGR_CAMERA_Z_UP("below", 2.2f, 3.0f, -2.4f, 0.0f, 0.0f, 0.2f, FOV),
-    FGR_CAMERA_Z_UP("inside", 0.12f, 0.9f, 0.1f, 0.0f, 0.0f, 0.05f, 70.0f),
+    FGR_CAMERA_Z_UP("window", 0.12f, 0.9f, 0.1f, 0.0f, 0.0f, 0.05f, 70.0f),
 };
 
-/* One turn about the vertical axis at 18 degrees elevation, distance 4.8, in 12 seconds. */
+/* One turn about the vertical axis at 14 degrees elevation, distance 5.6, in 12 seconds. */
 static const fgr_keyframe orbit_keys[] = {
-    FGR_KEYFRAME_Z_UP(0.0f, 1.929f, 4.137f, 1.933f, 0.0f, 0.0f, 0.45f, FOV),
-    FGR_KEYFRAME_Z_UP(1.5f, -1.561f, 4.290f, 1.933f, 0.0f, 0.0f, 0.45f, FOV),
-    FGR_KEYFRAME_Z_UP(3.0f, -4.137f, 1.929f, 1.933f, 0.0f, 0.0f, 0.45f, FOV),
-    FGR_KEYFRAME_Z_UP(4.5f, -4.290f, -1.561f, 1.933f, 0.0f, 0.0f, 0.45f, FOV),
-    FGR_KEYFRAME_Z_UP(6.0f, -1.929f, -4.137f, 1.933f, 0.0f, 0.0f, 0.45f, FOV),
-    FGR_KEYFRAME_Z_UP(7.5f, 1.561f, -4.290f, 1.933f, 0.0f, 0.0f, 0.45f, FOV),
-    FGR_KEYFRAME_Z_UP(9.0f, 4.137f, -1.929f, 1.933f, 0.0f, 0.0f, 0.45f, FOV),
-    FGR_KEYFRAME_Z_UP(10.5f, 4.290f, 1.561f, 1.933f, 0.0f, 0.0f, 0.45f, FOV),
-    FGR_KEYFRAME_Z_UP(12.0f, 1.929f, 4.137f, 1.933f, 0.0f, 0.0f, 0.45f, FOV),
+    FGR_KEYFRAME_Z_UP(0.0f, 3.636f, 4.038f, 1.805f, 0.0f, 0.0f, 0.45f, FOV),
+    FGR_KEYFRAME_Z_UP(1.5f, -0.284f, 5.426f, 1.805f, 0.0f, 0.0f, 0.45f, FOV),
+    FGR_KEYFRAME_Z_UP(3.0f, -4.038f, 3.636f, 1.805f, 0.0f, 0.0f, 0.45f, FOV),
+    FGR_KEYFRAME_Z_UP(4.5f, -5.426f, -0.284f, 1.805f, 0.0f, 0.0f, 0.45f, FOV),
+    FGR_KEYFRAME_Z_UP(6.0f, -3.636f, -4.038f, 1.805f, 0.0f, 0.0f, 0.45f, FOV),
+    FGR_KEYFRAME_Z_UP(7.5f, 0.284f, -5.426f, 1.805f, 0.0f, 0.0f, 0.45f, FOV),
+    FGR_KEYFRAME_Z_UP(9.0f, 4.038f, -3.636f, 1.805f, 0.0f, 0.0f, 0.45f, FOV),
+    FGR_KEYFRAME_Z_UP(10.5f, 5.426f, 0.284f, 1.805f, 0.0f, 0.0f, 0.45f, FOV),
+    FGR_KEYFRAME_Z_UP(12.0f, 3.636f, 4.038f, 1.805f, 0.0f, 0.0f, 0.45f, FOV),
 };
 
-/* From the front view through the hole in the middle of the front face into the central void. */
+/* From the front view up to the hole in the middle of the front face, looking through it into
+ * the central void. */
 static const fgr_keyframe fly_in_keys[] = {
-    FGR_KEYFRAME_Z_UP(0.0f, 1.929f, 4.137f, 1.933f, 0.0f, 0.0f, 0.45f, FOV),
+    FGR_KEYFRAME_Z_UP(0.0f, 3.636f, 4.038f, 1.805f, 0.0f, 0.0f, 0.45f, FOV),
     FGR_KEYFRAME_Z_UP(3.0f, 0.6f, 2.2f, 0.6f, 0.0f, 0.0f, 0.2f, 55.0f),
     FGR_KEYFRAME_Z_UP(6.0f, 0.12f, 0.9f, 0.1f, 0.0f, 0.0f, 0.05f, 70.0f),
 };
@@ -50,10 +51,11 @@ static const fgr_camera_path paths[] = {
     FGR_CAMERA_PATH("fly-in", fly_in_keys),
 };
 
-/* A warm key from the upper left of the front view, a cool fill from low on the right. */
+/* A warm key from above the front view's left, grazing both faces it shows, and a cool fill from
+ * low on the right. */
 static const fgr_light lights[] = {
-    FGR_DIRECTIONAL_LIGHT(-0.45f, 0.6f, 0.75f, 1.0f, 0.92f, 0.8f, 1.1f),
-    FGR_DIRECTIONAL_LIGHT(0.8f, 0.2f, -0.15f, 0.45f, 0.55f, 0.85f, 0.35f),
+    FGR_DIRECTIONAL_LIGHT(0.69f, 0.12f, 0.7f, 1.0f, 0.92f, 0.8f, 1.1f),
+    FGR_DIRECTIONAL_LIGHT(-0.5f, 0.85f, -0.1f, 0.45f, 0.55f, 0.85f, 0.4f),
 };
 
 static const fgr_scene_desc scene = {
@@ -72,8 +74,9 @@ static const fgr_scene_desc scene = {
     lights,
     FGR_COUNT(lights),
     FGR_EFFECT_AMBIENT_OCCLUSION | FGR_EFFECT_SHADOWS,
-    /* 2^-10 tetrahedra are about a pixel wide at 640 pixels from the front view. */
-    {FGR_HEADER(fgr_march_settings), 192u, 16.0f, 1.0f, 10u},
+    /* 2^-10 tetrahedra are about a pixel wide at 640 pixels from the front view. The DE is a
+     * strict bound, so rays take full steps (step factor 1). */
+    {FGR_HEADER(fgr_march_settings), 192u, 16.0f, 1.0f, 10u, 1.0f},
 };
 
 FGR_PLUGIN_EXPORT const fgr_scene_desc* fgr_scene_entry(void) { return &scene; }

@@ -18,8 +18,9 @@
 
 #define SIERPINSKI_SQRT3 1.73205081f
 #define SIERPINSKI_INV_SQRT3 0.57735027f
-/* Orbit traps are recorded while scale^i is a finite float; deeper levels never change them. */
-#define SIERPINSKI_TRAP_MIN_SIZE 1e-30f
+/* Orbit traps see the first few levels only: deeper ones vary faster than a pixel and would turn
+ * the colour into speckle. */
+#define SIERPINSKI_TRAP_LEVELS 4
 
 /* Rotation by a uniform angle about a fixed unit axis: Rodrigues' matrix, built once per call
  * from the parameter so the loop does a matrix multiply instead of trigonometry. */
@@ -28,8 +29,8 @@ typedef struct twist_matrix {
 } twist_matrix;
 
 inline twist_matrix twist_about(float3 axis, float degrees) {
-    float s, c = 1.0f;
-    s = sincos(radians(degrees), &c);
+    float c = 1.0f;
+    float s = sincos(radians(degrees), &c);
     float t = 1.0f - c;
     twist_matrix m;
     m.row_x = (float3)(t * axis.x * axis.x + c, t * axis.x * axis.y - s * axis.z,
@@ -52,7 +53,8 @@ inline vec3 twist_apply(twist_matrix m, vec3 p) {
  * face planes is exact over the faces but only a third of the truth towards a corner, where the
  * distance to its circumsphere is exact; both are bounds, so their maximum is. */
 inline real sd_tetrahedron_bound(vec3 p, float size) {
-    real faces = fmax(fmax(-p.x - p.y - p.z, p.x + p.y - p.z), fmax(p.y + p.z - p.x, p.x + p.z - p.y));
+    real faces =
+        fmax(fmax(-p.x - p.y - p.z, p.x + p.y - p.z), fmax(p.y + p.z - p.x, p.x + p.z - p.y));
     real to_planes = (faces - size) * SIERPINSKI_INV_SQRT3;
     real to_circumsphere = v3_length(p) - SIERPINSKI_SQRT3 * size;
     return fmax(to_planes, to_circumsphere);
@@ -82,7 +84,7 @@ inline real sierpinski_iterate(vec3 p, PARAMS, int record, orbit_trap* trap) {
         if (twisted) w = twist_apply(twist, w);
         size /= scale;
         w = v3_sub(w, v3_scale(offset, (scale - 1.0f) * size));
-        if (record && size > SIERPINSKI_TRAP_MIN_SIZE) {
+        if (record && i < SIERPINSKI_TRAP_LEVELS) {
             *trap = trap_update(*trap, v3_scale(w, 1.0f / size), FGR_TRUE);
         }
     }
