@@ -34,6 +34,21 @@ TEST(KernelAssembly, OptionsCarryPacketWidthAndOnlyRequestedEffects) {
     EXPECT_EQ(effect_names(0), "none");
 }
 
+TEST(KernelAssembly, EffectChangesAddAndRemoveByName) {
+    const uint64_t base = FGR_EFFECT_AMBIENT_OCCLUSION;
+    EXPECT_EQ(apply_effect_changes(base, ""), base);
+    EXPECT_EQ(apply_effect_changes(base, "+shadows"), base | FGR_EFFECT_SHADOWS);
+    EXPECT_EQ(apply_effect_changes(base, "reflections,-ambient_occlusion"),
+              uint64_t{FGR_EFFECT_REFLECTIONS});
+    EXPECT_EQ(apply_effect_changes(base, "+soft_shadows,,-soft_shadows"), base);
+    EXPECT_THROW(apply_effect_changes(base, "+glitter"), std::invalid_argument);
+    EXPECT_THROW(apply_effect_changes(base, "-"), std::invalid_argument);
+    const std::string options = switch_options({16, apply_effect_changes(0, "soft_shadows,reflections")});
+    EXPECT_NE(options.find("-DFGR_EFFECT_SOFT_SHADOWS"), std::string::npos);
+    EXPECT_NE(options.find("-DFGR_EFFECT_REFLECTIONS"), std::string::npos);
+    EXPECT_EQ(options.find("-DFGR_EFFECT_SHADOWS"), std::string::npos);
+}
+
 TEST(KernelAssembly, AccessorsFollowTheBufferLayout) {
     Scene scene = test::inline_scene("real scene_de(vec3 p, PARAMS) { return v3_length(p) - 1.0f; }");
     scene.params.insert(scene.params.begin(),
