@@ -245,6 +245,22 @@ TEST_P(SceneStability, EveryCameraAndPathRenders) {
     }
 }
 
+// The GPU layout (one ray per work-item) compiles the same scene source without packets: it must
+// render the same picture as the CPU's packets.
+TEST_P(SceneStability, OneRayPerWorkItemRendersTheSameImage) {
+    ProgramCache cache{ProgramCache::default_directory()};
+    Renderer scalar(device(), cache, scene(), KernelSwitches{1, scene().effects});
+    const FrameRequest request{40, 30, scene().cameras.front().view, default_param_values(scene())};
+    const Frame one = scalar.render(request);
+    const Frame packets = renderer().render(request);
+    EXPECT_NEAR(one.hits, packets.hits, 0.01 * packets.hits + 2);
+    double difference = 0.0;
+    for (size_t i = 0; i < one.image.rgb.size(); ++i) {
+        difference += std::abs(int(one.image.rgb[i]) - int(packets.image.rgb[i]));
+    }
+    EXPECT_LT(difference / one.image.rgb.size(), 2.0);
+}
+
 INSTANTIATE_TEST_SUITE_P(Scenes, SceneStability, ::testing::ValuesIn(scene_ids()),
                          [](const auto& info) {
                              std::string name = info.param;
