@@ -25,7 +25,23 @@ inline real quaternion_length(quaternion_packet q) {
 
 /* Every orbit leaving the ball of radius R = (1 + sqrt(1 + 4|c|)) / 2 escapes: beyond it
  * |q^2 + c| >= |q|^2 - |c| > |q| and the gap only grows. So the whole set lies inside it. */
-inline float julia_set_radius(float c_length) { return 0.5f * (1.0f + sqrt(1.0f + 4.0f * c_length)); }
+inline float julia_set_radius(float c_length) {
+    return 0.5f * (1.0f + sqrt(1.0f + 4.0f * c_length));
+}
+
+/* The orbit's estimate 0.5 r log(r) / dr is G / (2 |G'|) for the potential G = log(r) / 2^n.
+ * Near the set (G -> 0) it is the distance; far out it grows like r log r, faster than the
+ * distance. Koebe's bound for Julia sets, sinh(G) / (2 e^G |G'|), is the same near the set and
+ * saturates far out: it is the estimate times (1 - e^(-2G)) / (2G). */
+inline real potential_bound(real r, real dr, real potential_scale) {
+    real log_r = log(r);
+    real potential = log_r * potential_scale;
+    real estimate = 0.5f * r * log_r / dr;
+    real koebe_factor = (1.0f - exp(-2.0f * potential)) / (2.0f * potential);
+    /* Inside (r < 1) and at G -> 0 the factor is 1; r = 0 or dr = 0 only occur inside. */
+    real bound = select(estimate, estimate * koebe_factor, potential > 1e-4f);
+    return select(bound, fgr_real(0.0f), r <= 0.0f | dr <= 0.0f);
+}
 
 /* Iterates q -> q^2 + c from q = (p, slice_w); returns the DE and, when `record` is set, fills
  * *trap with the orbit's x, y, z. */
@@ -39,11 +55,13 @@ inline real julia_iterate(vec3 p, PARAMS, int record, orbit_trap* trap) {
     q.w = fgr_real(param_slice_w);
     real r = quaternion_length(q);
     real dr = fgr_real(1.0f);
+    real potential_scale = fgr_real(1.0f); /* 2^-n after n iterations */
     for (int i = 0; i < param_iterations; ++i) {
         mask active = r <= bailout;
         if (!fgr_any(active)) break;
         quaternion_packet next = quaternion_square(q);
         dr = select(dr, 2.0f * r * dr, active);
+        potential_scale = select(potential_scale, 0.5f * potential_scale, active);
         q.x = select(q.x, next.x + c_x, active);
         q.y = select(q.y, next.y + c_y, active);
         q.z = select(q.z, next.z + c_z, active);
@@ -51,13 +69,10 @@ inline real julia_iterate(vec3 p, PARAMS, int record, orbit_trap* trap) {
         r = quaternion_length(q);
         if (record) *trap = trap_update(*trap, v3(q.x, q.y, q.z), active);
     }
-    /* An orbit through 0 has dr = 0 and r log r = 0: guard both (such lanes are inside). */
-    real orbit_bound = select(0.5f * r * log(r) / dr, fgr_real(0.0f), r <= 0.0f | dr <= 0.0f);
-    /* Far from the set one or two iterations escape and r log r / dr grows faster than the
-     * distance; the set's bounding ball is exact there and never overestimates. */
+    /* Far from the set the bounding ball is the better bound; both never overestimate. */
     float c_length = sqrt(c_x * c_x + c_y * c_y + c_z * c_z + c_w * c_w);
     real ball_bound = v3_length(p) - julia_set_radius(c_length);
-    return fmax(orbit_bound, ball_bound);
+    return fmax(potential_bound(r, dr, potential_scale), ball_bound);
 }
 
 real scene_de(vec3 p, PARAMS) {

@@ -1,8 +1,10 @@
 /* Mandelbox (Tom Lowe, 2010): the iteration z -> scale * sphere_fold(box_fold(z)) + p.
  *
- * Distance estimate: DE = (|z| - escape_margin) / |dr| with the running derivative
+ * Distance estimate: DE = |z| / dr with the running derivative
  * dr -> dr * |scale| * (sphere fold's local scale) + 1, the folds' stretch bounding how fast z
- * moves with p. */
+ * moves with p. Folds and derivative are continuous in p, so the DE only jumps where the number of
+ * iterations before escape changes, by about (fold offsets) / bailout relative: the large default
+ * bailout (10^4) keeps those jumps below the march's tolerance. */
 
 /* |scale| <= 1 never escapes (every point is inside): magnitudes below this are raised to it. */
 #define MANDELBOX_MIN_ABS_SCALE 1.2f
