@@ -8,6 +8,9 @@ typedef struct march_result {
     real t;     /* distance along the ray of the last evaluated point */
     mask hit;   /* lanes that met the surface */
     mask steps; /* DE evaluations taken per lane (an int per lane) */
+#ifdef FGR_EFFECT_GLOW
+    real closest; /* smallest DE met along the ray: how near a miss passed the surface */
+#endif
 } march_result;
 
 /* How far and how finely rays march: the built-in quality parameters, read once per kernel. */
@@ -37,9 +40,15 @@ inline march_result march_rays_after(vec3 origin, vec3 dir, mask active, real tr
     result.t = fgr_real(0.0f);
     result.hit = (mask)(0);
     result.steps = (mask)(0);
+#ifdef FGR_EFFECT_GLOW
+    result.closest = fgr_real(1e20f);
+#endif
     for (int step = 0; step < limits.max_steps; ++step) {
         if (!fgr_any(active)) break;
         real dist = scene_de(v3_mad(origin, dir, result.t), PARAMS_PASS);
+#ifdef FGR_EFFECT_GLOW
+        result.closest = select(result.closest, fmin(result.closest, dist), active);
+#endif
         mask now_hit = active & (dist < (result.t + travelled) * limits.footprint);
         result.hit |= now_hit;
         active &= !now_hit;

@@ -47,8 +47,22 @@ typedef struct camera_frame {
 
 inline vec3 splat_float4(float4 v) { return v3_splat(v.x, v.y, v.z); }
 
+/* Primary ray of sample `sample` through pixel (px, py): jittered in the pixel for anti-aliasing
+ * and, with depth of field, from a point on the lens (radius `aperture`) towards the point of
+ * the pixel's ray at the focus distance, which therefore stays sharp. */
+inline vec3 primary_direction(camera_frame camera, real px, real py, camera_sample s) {
+    const float aspect = (float)camera.height / (float)camera.width;
+    const real u = (2.0f * (px + s.pixel_x) / (float)camera.width - 1.0f) * camera.tan_half_fov;
+    const real v = (1.0f - 2.0f * (py + s.pixel_y) / (float)camera.height) * camera.tan_half_fov *
+                   aspect;
+    return v3_add(splat_float4(camera.forward), v3_add(v3_scale(splat_float4(camera.right), u),
+                                                       v3_scale(splat_float4(camera.up), v)));
+}
+
+/* Renders sample `sample` of every pixel of the tile. Sample 0 writes the planes; later samples
+ * add to them (the host divides by the sample count), and only sample 0 writes depth. */
 __kernel void fgr_render(__global float* planes, int plane_size, int tile_count,
-                         camera_frame camera, PARAMS, __constant const float* lights,
+                         camera_frame camera, int sample, PARAMS, __constant const float* lights,
                          int light_count) {
     const int tile = get_global_id(0);
     /* The host rounds the global size up to whole work-groups. */
@@ -59,14 +73,18 @@ __kernel void fgr_render(__global float* planes, int plane_size, int tile_count,
     /* Lanes past the image edge (partial tiles) start inactive and cost no steps. */
     const mask inside = (px < (float)camera.width) & (py < (float)camera.height);
 
-    const float aspect = (float)camera.height / (float)camera.width;
-    const real u = (2.0f * (px + 0.5f) / (float)camera.width - 1.0f) * camera.tan_half_fov;
-    const real v = (1.0f - 2.0f * (py + 0.5f) / (float)camera.height) * camera.tan_half_fov * aspect;
-    vec3 dir = v3_add(splat_float4(camera.forward),
-                      v3_add(v3_scale(splat_float4(camera.right), u),
-                             v3_scale(splat_float4(camera.up), v)));
-    dir = v3_normalize(dir);
-    const vec3 eye = splat_float4(camera.eye);
+    const camera_sample jitter = sample_camera(px, py, sample);
+    vec3 through_pixel = primary_direction(camera, px, py, jitter);
+    vec3 eye = splat_float4(camera.eye);
+    vec3 dir = v3_normalize(through_pixel);
+#ifdef FGR_EFFECT_DEPTH_OF_FIELD
+    /* through_pixel has unit length along `forward`, so the focus plane is at
+     * eye + through_pixel * focus_distance. */
+    vec3 focus = v3_mad(eye, through_pixel, fgr_real(param_focus_distance));
+    eye = v3_add(eye, v3_add(v3_scale(splat_float4(camera.right), jitter.lens_x * param_aperture),
+                             v3_scale(splat_float4(camera.up), jitter.lens_y * param_aperture)));
+    dir = v3_normalize(v3_sub(focus, eye));
+#endif
 
     const march_limits limits = scene_march_limits(camera.pixel_angle, PARAMS_PASS);
     march_result hit = march_rays(eye, dir, inside, limits, PARAMS_PASS);
@@ -86,10 +104,20 @@ __kernel void fgr_render(__global float* planes, int plane_size, int tile_count,
         colour = v3_select(colour, lit, hit.hit);
         depth = select(depth, hit.t, hit.hit);
     }
+#ifdef FGR_EFFECT_GLOW
+    colour = apply_glow(colour, hit.closest, !hit.hit, PARAMS_PASS);
+#endif
+#ifdef FGR_EFFECT_FOG
+    colour = apply_fog(colour, hit.t, hit.hit, PARAMS_PASS);
+#endif
+    if (sample > 0) {
+        colour = v3_add(colour, v3(fgr_load(tile, planes), fgr_load(tile, planes + plane_size),
+                                   fgr_load(tile, planes + 2 * plane_size)));
+    }
     fgr_store(colour.x, tile, planes);
     fgr_store(colour.y, tile, planes + plane_size);
     fgr_store(colour.z, tile, planes + 2 * plane_size);
-    fgr_store(depth, tile, planes + 3 * plane_size);
+    if (sample == 0) fgr_store(depth, tile, planes + 3 * plane_size);
 }
 
 /* Evaluates the scene's DE at `count` points given as planes x, y, z (padded to whole packets):

@@ -36,6 +36,23 @@ inline vec3 light_direction(__constant const float* light, vec3 p, real* falloff
     return v; /* the host normalised directional vectors */
 }
 
+#ifdef FGR_EFFECT_SAMPLED_OCCLUSION
+/* Ambient occlusion from five DE probes along the normal at distances h = r/5 .. r (r is the
+ * built-in parameter ao_radius): in open space DE(p + h n) = h, so every unit the DE falls short
+ * of h is geometry crowding the point. Nearer probes weigh more. */
+inline real sampled_occlusion(vec3 p, vec3 n, PARAMS) {
+    real shortfall = fgr_real(0.0f);
+    float weight = 1.0f;
+    for (int i = 1; i <= 5; ++i) {
+        float h = param_ao_radius * (float)i / 5.0f;
+        real dist = scene_de(v3_mad(p, n, fgr_real(h)), PARAMS_PASS);
+        shortfall += weight * fmax(h - dist, 0.0f);
+        weight *= 0.6f;
+    }
+    return clamp(1.0f - 3.0f * shortfall / param_ao_radius, 0.0f, 1.0f);
+}
+#endif
+
 /* Where a secondary ray (shadow, reflection) starts from a surface point p reached after
  * `travelled`: two hit thresholds out along the normal, so the ray does not count the surface it
  * leaves as a hit (at exactly one threshold, rounding decides per pixel: visible contour lines). */
@@ -44,10 +61,6 @@ inline vec3 leave_surface(vec3 p, vec3 n, real travelled, march_limits limits) {
 }
 
 #if defined(FGR_EFFECT_SOFT_SHADOWS)
-/* Penumbra sharpness k: visibility is min over the shadow ray of k * DE / t, so a ray that passes
- * an occluder at distance d after travelling t is dimmed by how narrowly it missed. */
-#define FGR_SOFT_SHADOW_SHARPNESS 12.0f
-
 /* Soft visibility in [0, 1] of the light along to_light from p. `travelled` is the primary ray's
  * length, which sets the footprint below which the shadow ray counts as blocked. */
 inline real light_visibility(vec3 p, vec3 to_light, mask lit, real travelled, march_limits limits,
@@ -64,7 +77,10 @@ inline real light_visibility(vec3 p, vec3 to_light, mask lit, real travelled, ma
          * intersection), not just at the samples: without it, long steps leave bands. */
         real along = dist * dist / (2.0f * previous);
         real closest = sqrt(fmax(dist * dist - along * along, 0.0f));
-        real penumbra = FGR_SOFT_SHADOW_SHARPNESS * closest / fmax(t - along, 1e-6f);
+        /* Penumbra: visibility is min over the ray of k * DE / t, so a ray that passes an
+         * occluder at distance d after travelling t is dimmed by how narrowly it missed; the
+         * sharpness k is the built-in parameter shadow_sharpness. */
+        real penumbra = param_shadow_sharpness * closest / fmax(t - along, 1e-6f);
         visibility = select(visibility, fmin(visibility, penumbra), active & (t > 0.0f));
         visibility = select(visibility, fgr_real(0.0f), blocked);
         previous = select(previous, dist, active);
@@ -100,6 +116,9 @@ inline vec3 shade_surface(vec3 p, vec3 n, vec3 view_dir, real eps, mask steps, r
     real occlusion = 1.0f - convert_real(steps) / (float)limits.max_steps;
     ambient *= occlusion * occlusion;
 #endif
+#ifdef FGR_EFFECT_SAMPLED_OCCLUSION
+    ambient *= sampled_occlusion(p, n, PARAMS_PASS);
+#endif
     vec3 colour = v3_scale(albedo, ambient);
     vec3 to_eye = v3_neg(view_dir);
     for (int i = 0; i < light_count; ++i) {
@@ -134,32 +153,50 @@ inline real scene_reflectivity(vec3 p, PARAMS) {
 }
 #endif
 
-/* One mirror bounce: the reflected ray is marched and shaded (without shadow rays, which a
- * reflection rarely shows), then blended in by the surface's reflectivity raised towards 1 at
- * grazing angles (Schlick's Fresnel approximation). Lanes in `surface` only. */
+/* Mirror reflections, up to the built-in parameter reflection_bounces deep: each bounce marches
+ * the reflected ray and shades what it meets (without shadow rays, which a reflection rarely
+ * shows), weighted by the surface's reflectivity raised towards 1 at grazing angles (Schlick's
+ * Fresnel approximation) times the weights of the bounces before it. Lanes in `surface` only. */
 inline vec3 add_reflection(vec3 colour, vec3 p, vec3 n, vec3 dir, real eps, real travelled,
                            mask surface, march_limits limits, __constant const float* lights,
                            int light_count, PARAMS) {
-    real cos_in = fmax(-v3_dot(dir, n), 0.0f);
-    vec3 reflected = v3_normalize(v3_mad(dir, n, 2.0f * cos_in));
-    real r0 = scene_reflectivity(p, PARAMS_PASS);
-    real grazing = 1.0f - cos_in;
-    real fresnel = r0 + (1.0f - r0) * grazing * grazing * grazing * grazing * grazing;
-    vec3 start = leave_surface(p, n, travelled, limits);
-    march_result bounce = march_rays_after(start, reflected, surface & (r0 > 0.0f), travelled,
-                                           limits, PARAMS_PASS);
-    vec3 seen = background(reflected);
-    if (fgr_any(bounce.hit)) {
-        vec3 q = v3_mad(start, reflected, bounce.t);
-        real q_eps = fmax((travelled + bounce.t) * limits.footprint * 0.5f, 1e-7f);
-        vec3 q_normal = estimate_normal(q, q_eps, PARAMS_PASS);
-        vec3 q_colour = shade_surface(q, q_normal, reflected, q_eps, bounce.steps,
-                                      travelled + bounce.t, 0, limits, lights, light_count,
-                                      PARAMS_PASS);
-        seen = v3_select(seen, q_colour, bounce.hit);
+    real throughput = fgr_real(1.0f); /* how much of this path's light reaches the eye */
+    vec3 result = colour;
+    vec3 mirror_colour = colour;      /* colour of the surface the current bounce leaves */
+    for (int bounce = 0; bounce < param_reflection_bounces; ++bounce) {
+        if (!fgr_any(surface)) break;
+        real cos_in = fmax(-v3_dot(dir, n), 0.0f);
+        vec3 reflected = v3_normalize(v3_mad(dir, n, 2.0f * cos_in));
+        real r0 = scene_reflectivity(p, PARAMS_PASS);
+        real grazing = 1.0f - cos_in;
+        real fresnel = r0 + (1.0f - r0) * grazing * grazing * grazing * grazing * grazing;
+        surface &= r0 > 0.0f;
+        vec3 start = leave_surface(p, n, travelled, limits);
+        march_result next = march_rays_after(start, reflected, surface, travelled, limits,
+                                             PARAMS_PASS);
+        vec3 seen = background(reflected);
+        vec3 q = v3_mad(start, reflected, next.t);
+        real q_eps = fmax((travelled + next.t) * limits.footprint * 0.5f, 1e-7f);
+        vec3 q_normal = n;
+        if (fgr_any(next.hit)) {
+            q_normal = estimate_normal(q, q_eps, PARAMS_PASS);
+            vec3 q_colour = shade_surface(q, q_normal, reflected, q_eps, next.steps,
+                                          travelled + next.t, 0, limits, lights, light_count,
+                                          PARAMS_PASS);
+            seen = v3_select(seen, q_colour, next.hit);
+        }
+        /* This surface shows (1 - F) of its own colour and F of what it reflects. */
+        real weight = select(fgr_real(0.0f), throughput * fresnel, surface);
+        result = v3_add(result, v3_scale(v3_sub(seen, mirror_colour), weight));
+        throughput *= select(fgr_real(0.0f), fresnel, surface);
+        surface &= next.hit;
+        mirror_colour = seen;
+        p = q;
+        n = q_normal;
+        dir = reflected;
+        eps = q_eps;
+        travelled += next.t;
     }
-    real weight = select(fgr_real(0.0f), fresnel, surface & (r0 > 0.0f));
-    return v3(mix(colour.x, seen.x, weight), mix(colour.y, seen.y, weight),
-              mix(colour.z, seen.z, weight));
+    return result;
 }
 #endif

@@ -27,24 +27,32 @@
 #if FGR_WIDTH == 1
 typedef float real;
 typedef int mask;
+typedef uint ulanes;
+#define convert_ulanes convert_uint
 #define convert_real convert_float
 #define fgr_any(m) ((m) != 0)
 #define fgr_all(m) ((m) != 0)
 #elif FGR_WIDTH == 4
 typedef float4 real;
 typedef int4 mask;
+typedef uint4 ulanes;
+#define convert_ulanes convert_uint4
 #define convert_real convert_float4
 #define fgr_any(m) any(m)
 #define fgr_all(m) all(m)
 #elif FGR_WIDTH == 8
 typedef float8 real;
 typedef int8 mask;
+typedef uint8 ulanes;
+#define convert_ulanes convert_uint8
 #define convert_real convert_float8
 #define fgr_any(m) any(m)
 #define fgr_all(m) all(m)
 #elif FGR_WIDTH == 16
 typedef float16 real;
 typedef int16 mask;
+typedef uint16 ulanes;
+#define convert_ulanes convert_uint16
 #define convert_real convert_float16
 #define fgr_any(m) any(m)
 #define fgr_all(m) all(m)
@@ -64,6 +72,8 @@ typedef int16 mask;
 
 /* Lane-wise counter increment where m holds. */
 #define fgr_count_if(counter, m) ((counter) = select((counter), (counter) + 1, (m)))
+
+/*   ulanes an unsigned int per lane        (for hashing: random numbers per pixel) */
 
 typedef struct vec3 {
     real x, y, z;

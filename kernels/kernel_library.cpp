@@ -3,6 +3,7 @@
 #include <array>
 
 #include "fgr_colour_cl.h"
+#include "fgr_effects_cl.h"
 #include "fgr_folds_cl.h"
 #include "fgr_fractals_cl.h"
 #include "fgr_march_cl.h"
@@ -30,6 +31,7 @@ std::span<const KernelFile> kernel_postlude() {
     static constexpr std::array files{
         KernelFile{"fgr_march.cl", fgr_march_cl},
         KernelFile{"fgr_shade.cl", fgr_shade_cl},
+        KernelFile{"fgr_effects.cl", fgr_effects_cl},
         KernelFile{"fgr_render.cl", fgr_render_cl},
     };
     return files;

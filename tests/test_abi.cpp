@@ -223,7 +223,7 @@ TEST_F(CopyScene, CopiesEverything) {
 
 TEST_F(CopyScene, CopiesParams) {
     const Scene scene = expect_accepted();
-    ASSERT_EQ(scene.params.size(), 4u + 5u);
+    ASSERT_EQ(scene.params.size(), 4u + builtin_param_count());
     const ParamInfo& power = scene.params[0];
     EXPECT_EQ(power.id, "power");
     EXPECT_EQ(power.label, "Power");
@@ -310,7 +310,7 @@ TEST_F(CopyScene, AcceptsNoParamsAndNoPaths) {
     built.desc.camera_paths = nullptr;
     built.desc.camera_path_count = 0;
     const Scene scene = expect_accepted();
-    EXPECT_EQ(scene.params.size(), 5u);
+    EXPECT_EQ(scene.params.size(), builtin_param_count());
     EXPECT_TRUE(scene.camera_paths.empty());
 }
 
@@ -350,7 +350,7 @@ TEST_F(CopyScene, AcceptsNewerMinorWithBiggerStructs) {
 
     const LoadResult result = copy_scene_description(&newer.v1);
     ASSERT_TRUE(result.scene.has_value()) << result.error;
-    ASSERT_EQ(result.scene->params.size(), 9u);
+    ASSERT_EQ(result.scene->params.size(), 4u + builtin_param_count());
     EXPECT_EQ(result.scene->params[2].id, "tint") << "elements read with the bigger stride";
     EXPECT_FLOAT_EQ(result.scene->params[2].default_value[2], 0.7f);
     EXPECT_EQ(result.scene->params[3].id, "julia_mode");
@@ -557,8 +557,8 @@ TEST_F(CopyScene, RefusesBadKeyframeView) {
 // --- Lights, effects, march settings -------------------------------------------------------------
 
 TEST_F(CopyScene, RefusesUnknownEffectBit) {
-    built.desc.effects = FGR_EFFECT_SHADOWS | (uint64_t{1} << 4) | (uint64_t{1} << 40);
-    expect_refused("unknown effect bits 0x10000000010");
+    built.desc.effects = FGR_EFFECT_SHADOWS | (uint64_t{1} << 8) | (uint64_t{1} << 40);
+    expect_refused("unknown effect bits 0x10000000100");
 }
 
 TEST_F(CopyScene, RefusesZeroLights) {

@@ -67,7 +67,7 @@ TEST(Discovery, FindsTheGoodFixtureWithItsData) {
     EXPECT_EQ(scene.plugin_file, kFixtureDir / "good_scene.so");
     EXPECT_EQ(scene.source_name, "fixture.cl");
     EXPECT_NE(scene.source.find("scene_de"), std::string::npos);
-    ASSERT_EQ(scene.params.size(), 1u + 5u);
+    ASSERT_EQ(scene.params.size(), 1u + builtin_param_count());
     EXPECT_EQ(scene.params[0].id, "scale");
     EXPECT_FLOAT_EQ(scene.params[0].default_value[0], 1.0f);
     EXPECT_NE(scene.find_param("iterations"), nullptr);

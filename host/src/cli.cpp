@@ -41,6 +41,7 @@ struct RenderOptions {
     std::optional<std::string> camera_path;
     std::optional<float> time;
     int device = -1;
+    int samples = 1;       // per pixel, jittered (anti-aliasing, depth of field)
     int packet_width = 0;  // 0: the device's preference
     bool all = false;      // every scene's default view into the directory `output`
     std::string effect_changes;  // "+shadows,-ambient_occlusion": over the scene's own effects
@@ -227,7 +228,8 @@ void render_to_file(const Scene& scene, const FrameRequest& request, const Compu
 }
 
 FrameRequest default_request(const Scene& scene, const RenderOptions& options) {
-    return {options.width, options.height, scene.cameras.front().view, default_param_values(scene)};
+    return {options.width, options.height, scene.cameras.front().view, default_param_values(scene),
+            options.samples};
 }
 
 int render_all(const RenderOptions& options) {
@@ -283,6 +285,9 @@ void add_render_command(CLI::App& app, RenderOptions& options) {
     auto* path = render->add_option("--camera-path", options.camera_path, "camera path of the scene");
     path->excludes(camera);
     render->add_option("--time", options.time, "time along the camera path, in seconds");
+    render->add_option("--spp", options.samples,
+                       "samples per pixel, jittered and averaged: anti-aliasing, depth of field")
+        ->check(CLI::Range(1, kMaxSamples));
     render->add_option("--effects", options.effect_changes,
                        "change the scene's effects, e.g. +shadows,-ambient_occlusion");
     render->add_option("--device", options.device, "OpenCL device index (see `fgr info`)")

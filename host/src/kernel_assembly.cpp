@@ -23,6 +23,10 @@ constexpr std::array kEffectSwitches{
     EffectSwitch{FGR_EFFECT_AMBIENT_OCCLUSION, "FGR_EFFECT_AMBIENT_OCCLUSION", "ambient_occlusion"},
     EffectSwitch{FGR_EFFECT_SOFT_SHADOWS, "FGR_EFFECT_SOFT_SHADOWS", "soft_shadows"},
     EffectSwitch{FGR_EFFECT_REFLECTIONS, "FGR_EFFECT_REFLECTIONS", "reflections"},
+    EffectSwitch{FGR_EFFECT_SAMPLED_OCCLUSION, "FGR_EFFECT_SAMPLED_OCCLUSION", "sampled_occlusion"},
+    EffectSwitch{FGR_EFFECT_GLOW, "FGR_EFFECT_GLOW", "glow"},
+    EffectSwitch{FGR_EFFECT_FOG, "FGR_EFFECT_FOG", "fog"},
+    EffectSwitch{FGR_EFFECT_DEPTH_OF_FIELD, "FGR_EFFECT_DEPTH_OF_FIELD", "depth_of_field"},
 };
 
 // A file name is quoted in #line, so quotes, backslashes and newlines in it are replaced.

@@ -1,5 +1,6 @@
 #include "fgr/renderer.hpp"
 
+#include <algorithm>
 #include <array>
 #include <chrono>
 #include <cmath>
@@ -54,6 +55,9 @@ void check_request(const Scene& scene, const FrameRequest& request) {
         request.height > kMaxImageSide) {
         throw std::invalid_argument("image size must be between 1x1 and 16384x16384");
     }
+    if (request.samples < 1 || request.samples > kMaxSamples) {
+        throw std::invalid_argument("samples per pixel must be between 1 and 4096");
+    }
     if (request.params.size() != default_param_values(scene).size()) {
         throw std::invalid_argument("parameter buffer does not match the scene's parameters");
     }
@@ -89,6 +93,19 @@ double elapsed_ms(std::chrono::steady_clock::time_point since) {
 }
 
 }  // namespace
+
+float tone_map(float linear, ToneMap op) {
+    if (!(linear > 0.0f)) return 0.0f;  // also NaN
+    switch (op) {
+        case ToneMap::Clamp: return std::min(linear, 1.0f);
+        case ToneMap::Reinhard: return linear / (1.0f + linear);
+        case ToneMap::Aces:
+            return std::clamp(linear * (2.51f * linear + 0.03f) /
+                                  (linear * (2.43f * linear + 0.59f) + 0.14f),
+                              0.0f, 1.0f);
+    }
+    return 0.0f;
+}
 
 uint8_t encode_srgb(float linear) {
     if (!(linear > 0.0f)) return 0;  // also NaN
@@ -140,18 +157,22 @@ Frame Renderer::render(const FrameRequest& request) {
     const auto start = std::chrono::steady_clock::now();
 
     cl::Buffer params = upload(request.params);
-    cl::Buffer planes(device_.context, CL_MEM_WRITE_ONLY, sizeof(float) * 4 * plane);
+    cl::Buffer planes(device_.context, CL_MEM_READ_WRITE, sizeof(float) * 4 * plane);
     const int tiles = layout.tiles_x * layout.tiles_y;
     render_kernel_.setArg(0, planes);
     render_kernel_.setArg(1, plane);
     render_kernel_.setArg(2, tiles);
     render_kernel_.setArg(3, camera_frame(request.view, request.width, request.height));
-    render_kernel_.setArg(4, params);
-    render_kernel_.setArg(5, lights_);
-    render_kernel_.setArg(6, static_cast<cl_int>(scene_.lights.size()));
+    render_kernel_.setArg(5, params);
+    render_kernel_.setArg(6, lights_);
+    render_kernel_.setArg(7, static_cast<cl_int>(scene_.lights.size()));
     const int group = work_group_size(device_);
-    device_.queue.enqueueNDRangeKernel(render_kernel_, cl::NullRange, global_range(tiles, group),
-                                       cl::NDRange(group));
+    // Samples accumulate in the planes, one launch each, in order (in-order queue).
+    for (int sample = 0; sample < request.samples; ++sample) {
+        render_kernel_.setArg(4, sample);
+        device_.queue.enqueueNDRangeKernel(render_kernel_, cl::NullRange,
+                                           global_range(tiles, group), cl::NDRange(group));
+    }
     std::vector<float> host(static_cast<size_t>(plane) * 4);
     device_.queue.enqueueReadBuffer(planes, CL_TRUE, 0, host.size() * sizeof(float), host.data());
 
@@ -161,14 +182,17 @@ Frame Renderer::render(const FrameRequest& request) {
     frame.image.rgb.resize(static_cast<size_t>(request.width) * request.height * 3);
     frame.depth.resize(static_cast<size_t>(request.width) * request.height);
     frame.linear.resize(frame.image.rgb.size());
+    const float average = 1.0f / static_cast<float>(request.samples);
+    const float exposure = param_value(scene_, request.params, "exposure");
+    const auto op = static_cast<ToneMap>(param_value(scene_, request.params, "tone_map"));
     for (int y = 0; y < request.height; ++y) {
         for (int x = 0; x < request.width; ++x) {
             const size_t source = layout.index(x, y);
             const size_t pixel = static_cast<size_t>(y) * request.width + x;
             for (int c = 0; c < 3; ++c) {
-                const float value = host[c * plane + source];
+                const float value = host[c * plane + source] * average;
                 frame.linear[pixel * 3 + c] = value;
-                frame.image.rgb[pixel * 3 + c] = encode_srgb(value);
+                frame.image.rgb[pixel * 3 + c] = encode_srgb(tone_map(value * exposure, op));
             }
             frame.depth[pixel] = host[3 * static_cast<size_t>(plane) + source];
             frame.hits += frame.depth[pixel] >= 0.0f;

@@ -2,6 +2,8 @@
 
 #include <algorithm>
 
+#include <glm/geometric.hpp>
+
 namespace fgr {
 
 int param_components(ParamType type) {
@@ -45,11 +47,12 @@ const Item* find_by(const std::vector<Item>& items, const std::string& wanted, K
 }
 
 ParamInfo builtin_param(std::string id, std::string label, ParamType type, float min_value,
-                        float max_value, float default_value, std::string description) {
+                        float max_value, float default_value, std::string description,
+                        std::string group = "Quality") {
     ParamInfo param;
     param.id = std::move(id);
     param.label = std::move(label);
-    param.group = "Quality";
+    param.group = std::move(group);
     param.description = std::move(description);
     param.type = type;
     param.min_value = min_value;
@@ -57,6 +60,59 @@ ParamInfo builtin_param(std::string id, std::string label, ParamType type, float
     param.default_value = {default_value, 0.0f, 0.0f};
     param.builtin = true;
     return param;
+}
+
+ParamInfo effect_param(std::string id, std::string label, ParamType type, float min_value,
+                       float max_value, float default_value, std::string description) {
+    return builtin_param(std::move(id), std::move(label), type, min_value, max_value,
+                         default_value, std::move(description), "Effects");
+}
+
+ParamInfo colour_param(std::string id, std::string label, glm::vec3 value, std::string description) {
+    ParamInfo param = effect_param(std::move(id), std::move(label), ParamType::Colour, 0.0f, 1.0f,
+                                   0.0f, std::move(description));
+    param.default_value = {value.r, value.g, value.b};
+    return param;
+}
+
+// Distance from the default camera to what it looks at: where depth of field focuses by default.
+float default_focus_distance(const Scene& scene) {
+    if (scene.cameras.empty()) return 1.0f;
+    const CameraView& view = scene.cameras.front().view;
+    return std::clamp(glm::length(view.target - view.position), 0.001f, 1e5f);
+}
+
+// The knobs of the effects and of the colour pipeline. They exist in every scene; an effect that
+// is not compiled in never reads its parameters, so they cost nothing.
+void add_effect_params(Scene& scene) {
+    ParamInfo tone_map = effect_param("tone_map", "Tone mapping", ParamType::Int, 0.0f, 2.0f, 2.0f,
+                                      "linear to display: clamp, Reinhard, or ACES filmic");
+    tone_map.choices = {"clamp", "reinhard", "aces"};
+    auto& params = scene.params;
+    params.push_back(effect_param("exposure", "Exposure", ParamType::Float, 0.01f, 100.0f, 1.0f,
+                                  "linear colour is multiplied by this before tone mapping"));
+    params.push_back(std::move(tone_map));
+    params.push_back(effect_param("shadow_sharpness", "Shadow sharpness", ParamType::Float, 1.0f,
+                                  128.0f, 12.0f, "soft shadows: higher is a narrower penumbra"));
+    params.push_back(effect_param("ao_radius", "Occlusion radius", ParamType::Float, 0.001f,
+                                  100.0f, 0.1f, "sampled occlusion: how far along the normal it probes"));
+    params.push_back(colour_param("glow_colour", "Glow colour", {0.45f, 0.65f, 1.0f},
+                                  "colour rays that miss pick up near the surface"));
+    params.push_back(effect_param("glow_strength", "Glow strength", ParamType::Float, 0.0f, 20.0f,
+                                  1.0f, "glow at zero distance from the surface"));
+    params.push_back(effect_param("glow_radius", "Glow radius", ParamType::Float, 0.0001f, 10.0f,
+                                  0.05f, "distance over which glow falls to 1/e"));
+    params.push_back(colour_param("fog_colour", "Fog colour", {0.10f, 0.12f, 0.17f},
+                                  "colour distant surfaces fade to"));
+    params.push_back(effect_param("fog_density", "Fog density", ParamType::Float, 0.0f, 100.0f,
+                                  0.15f, "fog: fraction of light lost per unit distance"));
+    params.push_back(effect_param("reflection_bounces", "Reflection bounces", ParamType::Int, 1.0f,
+                                  8.0f, 1.0f, "mirror bounces followed per ray"));
+    params.push_back(effect_param("aperture", "Aperture", ParamType::Float, 0.0f, 10.0f, 0.05f,
+                                  "depth of field: lens radius"));
+    params.push_back(effect_param("focus_distance", "Focus distance", ParamType::Float, 0.001f,
+                                  1e5f, default_focus_distance(scene),
+                                  "depth of field: distance of the sharp plane"));
 }
 
 }  // namespace
@@ -71,6 +127,12 @@ const NamedCamera* Scene::find_camera(const std::string& camera_name) const {
 
 const CameraPath* Scene::find_camera_path(const std::string& path_name) const {
     return find_by(camera_paths, path_name, [](const CameraPath& path) { return path.name; });
+}
+
+std::size_t builtin_param_count() {
+    Scene probe;
+    add_builtin_params(probe);
+    return probe.params.size();
 }
 
 bool is_builtin_param_id(std::string_view id) {
@@ -96,6 +158,7 @@ void add_builtin_params(Scene& scene) {
     scene.params.push_back(builtin_param("step_factor", "Step factor", ParamType::Float, 0.05f,
                                          1.0f, march.step_factor,
                                          "rays advance step_factor * DE (< 1 for estimated DEs)"));
+    add_effect_params(scene);
 }
 
 }  // namespace fgr

@@ -20,11 +20,12 @@ struct FrameRequest {
     int height = 480;
     CameraView view;
     std::vector<float> params;  // laid out as default_param_values(scene)
+    int samples = 1;            // per pixel: 1 is the pixel centre; more are jittered and averaged
 };
 
 struct Frame {
     Image8 image;               // sRGB, gamma-encoded
-    std::vector<float> linear;  // row-major linear RGB before encoding (3 floats a pixel)
+    std::vector<float> linear;  // row-major linear RGB, averaged over samples, before exposure
     std::vector<float> depth;   // row-major distance along the ray; -1 where the ray missed
     long hits = 0;              // pixels whose ray met the surface
     double render_ms = 0.0;     // kernel, read-back and encoding; no build, no file output
@@ -89,5 +90,14 @@ TileLayout tile_layout(int packet_width, int width, int height);
 
 // Linear [0, 1] to 8-bit sRGB (values outside are clamped, NaN becomes 0).
 uint8_t encode_srgb(float linear);
+
+enum class ToneMap { Clamp = 0, Reinhard = 1, Aces = 2 };
+
+// Scene-referred linear value (after exposure) to display-referred [0, 1]: clamp, Reinhard's
+// x / (1 + x), or Narkowicz's fit of the ACES filmic curve.
+float tone_map(float linear, ToneMap op);
+
+// Samples per pixel fgr accepts.
+constexpr int kMaxSamples = 4096;
 
 }  // namespace fgr

@@ -98,4 +98,7 @@ void add_builtin_params(Scene& scene);
 // Whether `id` names one of those built-in parameters (a scene may not declare it).
 bool is_builtin_param_id(std::string_view id);
 
+// How many built-in parameters add_builtin_params appends.
+std::size_t builtin_param_count();
+
 }  // namespace fgr

@@ -138,11 +138,16 @@ typedef enum fgr_effect_flag {
     FGR_EFFECT_SHADOWS = 1u << 0,           /* hard shadows towards every light */
     FGR_EFFECT_AMBIENT_OCCLUSION = 1u << 1, /* darkening from the march's step count */
     FGR_EFFECT_SOFT_SHADOWS = 1u << 2,      /* penumbrae from near misses (replaces hard ones) */
-    FGR_EFFECT_REFLECTIONS = 1u << 3        /* one mirror bounce, Fresnel-weighted */
+    FGR_EFFECT_REFLECTIONS = 1u << 3,       /* mirror bounces, Fresnel-weighted */
+    FGR_EFFECT_SAMPLED_OCCLUSION = 1u << 4, /* ambient occlusion from DE probes along the normal */
+    FGR_EFFECT_GLOW = 1u << 5,              /* rays that miss glow by how near they passed */
+    FGR_EFFECT_FOG = 1u << 6,               /* exponential distance fog */
+    FGR_EFFECT_DEPTH_OF_FIELD = 1u << 7     /* thin lens; converges over samples (--spp) */
 } fgr_effect_flag;
-#define FGR_EFFECT_ALL_V1                                                     \
-    (FGR_EFFECT_SHADOWS | FGR_EFFECT_AMBIENT_OCCLUSION | FGR_EFFECT_SOFT_SHADOWS | \
-     FGR_EFFECT_REFLECTIONS)
+#define FGR_EFFECT_ALL_V1                                                          \
+    (FGR_EFFECT_SHADOWS | FGR_EFFECT_AMBIENT_OCCLUSION | FGR_EFFECT_SOFT_SHADOWS |      \
+     FGR_EFFECT_REFLECTIONS | FGR_EFFECT_SAMPLED_OCCLUSION | FGR_EFFECT_GLOW | FGR_EFFECT_FOG | \
+     FGR_EFFECT_DEPTH_OF_FIELD)
 
 /* How rays are marched. These are quality knobs: they reach the kernel as built-in parameters
  * (max_steps, max_distance, hit_threshold, iterations, step_factor), so changing them never

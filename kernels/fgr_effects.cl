@@ -1,0 +1,66 @@
+/* fgr kernel library: effects applied along the primary ray (fog, glow) and the camera's sampling
+ * (anti-aliasing jitter, thin-lens depth of field). Each effect exists only when its switch is
+ * compiled in; sampling is always available because the sample count is a runtime choice. */
+
+/* A well-mixed 32-bit hash (Chris Wellons' lowbias32) per lane. */
+inline ulanes hash_lanes(ulanes x) {
+    x ^= x >> 16;
+    x *= 0x7feb352du;
+    x ^= x >> 15;
+    x *= 0x846ca68bu;
+    x ^= x >> 16;
+    return x;
+}
+
+/* A uniform number in [0, 1) per lane from a hash. */
+inline real unit_random(ulanes hashed) {
+    return convert_real(hashed >> 8) * (1.0f / 16777216.0f);
+}
+
+/* Where in the pixel, and where on the lens, sample `sample` of pixel (px, py) goes: sample 0 is
+ * the pixel's centre through the lens centre (so one sample renders exactly the un-jittered
+ * image); later samples are uniformly random, independent per pixel. */
+typedef struct camera_sample {
+    real pixel_x, pixel_y; /* offset in the pixel, [0, 1) */
+    real lens_x, lens_y;   /* point on the unit disc */
+} camera_sample;
+
+inline camera_sample sample_camera(real px, real py, int sample) {
+    camera_sample s;
+    if (sample == 0) {
+        s.pixel_x = s.pixel_y = fgr_real(0.5f);
+        s.lens_x = s.lens_y = fgr_real(0.0f);
+        return s;
+    }
+    ulanes seed = convert_ulanes(px) * 73856093u ^ convert_ulanes(py) * 19349663u ^
+                  (ulanes)((uint)sample * 83492791u);
+    ulanes h1 = hash_lanes(seed), h2 = hash_lanes(h1), h3 = hash_lanes(h2), h4 = hash_lanes(h3);
+    s.pixel_x = unit_random(h1);
+    s.pixel_y = unit_random(h2);
+    /* Uniform on the disc: radius sqrt(u), angle 2 pi v. */
+    real radius = sqrt(unit_random(h3));
+    real cos_angle, sin_angle = sincos(6.28318531f * unit_random(h4), &cos_angle);
+    s.lens_x = radius * cos_angle;
+    s.lens_y = radius * sin_angle;
+    return s;
+}
+
+#ifdef FGR_EFFECT_FOG
+/* Exponential distance fog: a surface at distance t keeps exp(-density t) of its colour and takes
+ * the rest from the fog; rays that miss see only fog. */
+inline vec3 apply_fog(vec3 colour, real t, mask hit, PARAMS) {
+    real keep = select(fgr_real(0.0f), exp(-param_fog_density * t), hit);
+    vec3 fog = param_fog_colour;
+    return v3(mix(fog.x, colour.x, keep), mix(fog.y, colour.y, keep), mix(fog.z, colour.z, keep));
+}
+#endif
+
+#ifdef FGR_EFFECT_GLOW
+/* Glow around the surface: rays that miss pick up glow_colour * glow_strength, fading as
+ * exp(-closest / glow_radius) with the closest their march came to the surface. */
+inline vec3 apply_glow(vec3 colour, real closest, mask missed, PARAMS) {
+    real amount = select(fgr_real(0.0f),
+                         param_glow_strength * exp(-fmax(closest, 0.0f) / param_glow_radius), missed);
+    return v3_add(colour, v3_scale(param_glow_colour, amount));
+}
+#endif
