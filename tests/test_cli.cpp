@@ -397,6 +397,9 @@ const std::vector<BadInput> kBadInputs = {
     {"OutputNotPng", render_args({}), 2, {".png"}, "out.jpg"},
     {"NoSuchDevice", render_args({"--device", "99"}), kAnyFailure, {"device"}},
     {"BadPacketWidth", render_args({"--packet-width", "3"}), 2, {"packet"}},
+    {"ZeroSamples", render_args({"--spp", "0"}), 2, {"spp"}},
+    {"AbsurdSamples", render_args({"--spp", "100000"}), 2, {"spp"}},
+    {"BadBitDepth", render_args({"--bit-depth", "12"}), 2, {"bit-depth"}},
     {"UnknownEffect", render_args({"--effects", "+sparkles"}), 2, {"sparkles", "shadows"}},
     {"AllWithScene", {"render", "--all", "mandelbulb", "-o", "{out}"}, 2, {"--all"}},
     {"AllWithSet", {"render", "--all", "-o", "{out}", "--set", "power=8"}, 2, {"--all"}},
@@ -575,6 +578,18 @@ TEST_F(CliTest, EffectChangesReachTheKernel) {
     EXPECT_NE(read_file(plain), read_file(shadowed));
     EXPECT_NE(first.err.find("effects: none"), std::string::npos) << first.err;
     EXPECT_NE(second.err.find("effects: shadows,ambient_occlusion"), std::string::npos) << second.err;
+}
+
+TEST_F(CliTest, SixteenBitOutputIsLinear) {
+    const fs::path file = dir() / "linear.png";
+    const RunResult result = run({"render", "mandelbulb", "-o", file.string(), "--width", "20",
+                                  "--height", "10", "--bit-depth", "16", "--spp", "2"});
+    ASSERT_EQ(result.exit_code, 0) << result;
+    const std::string bytes = read_file(file);
+    ASSERT_GT(bytes.size(), 26u);
+    EXPECT_EQ(big_endian_u32(bytes, 16), 20u);
+    EXPECT_EQ(static_cast<unsigned char>(bytes[24]), 16u);  // bit depth
+    EXPECT_NE(bytes.find("gAMA"), std::string::npos);
 }
 
 TEST_F(CliTest, ListShowsMandelbulbParametersCamerasAndPaths) {

@@ -185,3 +185,48 @@ TEST_F(ImageIo, ReadsGreyPaletteAndAlphaImagesAsRgb) {
 
 }  // namespace
 }  // namespace fgr
+
+namespace fgr {
+namespace {
+
+std::string file_bytes(const fs::path& file) {
+    std::ifstream in(file, std::ios::binary);
+    return std::string(std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>());
+}
+
+class ImageIo16 : public ImageIo {};
+
+TEST_F(ImageIo16, WritesSixteenBitLinearSamples) {
+    Image16 image{3, 2, {}};
+    for (int i = 0; i < 18; ++i) image.rgb.push_back(static_cast<uint16_t>(i * 3641 + 7));
+    const fs::path file = directory_ / "linear.png";
+    write_png16_linear(file, image);
+    const std::string bytes = file_bytes(file);
+    ASSERT_GT(bytes.size(), 33u);
+    EXPECT_EQ(static_cast<unsigned char>(bytes[24]), 16u);  // IHDR bit depth
+    EXPECT_EQ(static_cast<unsigned char>(bytes[25]), 2u);   // RGB
+    EXPECT_NE(bytes.find("gAMA"), std::string::npos);       // tagged linear, not sRGB
+    EXPECT_EQ(bytes.find("sRGB"), std::string::npos);
+    // Reading back reduces to 8 bits: the high byte of each sample.
+    const Image8 read = read_png(file);
+    ASSERT_EQ(read.rgb.size(), image.rgb.size());
+    for (size_t i = 0; i < image.rgb.size(); ++i) EXPECT_EQ(read.rgb[i], image.rgb[i] >> 8);
+    EXPECT_TRUE(temporaries().empty());
+}
+
+TEST_F(ImageIo16, EightBitFilesAreTaggedSrgb) {
+    const fs::path file = directory_ / "display.png";
+    write_png(file, gradient(4, 4));
+    EXPECT_NE(file_bytes(file).find("sRGB"), std::string::npos);
+}
+
+TEST_F(ImageIo16, InvalidImageLeavesTheTargetUntouched) {
+    const fs::path file = directory_ / "keep.png";
+    write_png(file, gradient(4, 4));
+    const std::string before = file_bytes(file);
+    EXPECT_THROW(write_png16_linear(file, Image16{2, 2, {1, 2, 3}}), std::invalid_argument);
+    EXPECT_EQ(file_bytes(file), before);
+}
+
+}  // namespace
+}  // namespace fgr

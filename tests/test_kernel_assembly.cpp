@@ -41,6 +41,8 @@ TEST(KernelAssembly, EffectChangesAddAndRemoveByName) {
     EXPECT_EQ(apply_effect_changes(base, "reflections,-ambient_occlusion"),
               uint64_t{FGR_EFFECT_REFLECTIONS});
     EXPECT_EQ(apply_effect_changes(base, "+soft_shadows,,-soft_shadows"), base);
+    EXPECT_EQ(apply_effect_changes(base, "none"), 0u);
+    EXPECT_EQ(apply_effect_changes(base, "none,+fog"), uint64_t{FGR_EFFECT_FOG});
     EXPECT_THROW(apply_effect_changes(base, "+glitter"), std::invalid_argument);
     EXPECT_THROW(apply_effect_changes(base, "-"), std::invalid_argument);
     const std::string options = switch_options({16, apply_effect_changes(0, "soft_shadows,reflections")});

@@ -42,6 +42,7 @@ struct RenderOptions {
     std::optional<float> time;
     int device = -1;
     int samples = 1;       // per pixel, jittered (anti-aliasing, depth of field)
+    int bit_depth = 8;     // 8: tone-mapped sRGB; 16: linear
     int packet_width = 0;  // 0: the device's preference
     bool all = false;      // every scene's default view into the directory `output`
     std::string effect_changes;  // "+shadows,-ambient_occlusion": over the scene's own effects
@@ -220,7 +221,12 @@ void render_to_file(const Scene& scene, const FrameRequest& request, const Compu
     fmt::print("render_ms {:.1f}\n", frame.render_ms);
     fmt::print("hits {}\n", frame.hits);
     try {
-        write_png(output, frame.image);
+        if (options.bit_depth == 16) {
+            write_png16_linear(output, linear_image16(frame, param_value(scene, request.params,
+                                                                         "exposure")));
+        } else {
+            write_png(output, frame.image);
+        }
     } catch (const std::runtime_error& error) {
         throw RuntimeFailure(error.what());
     }
@@ -288,6 +294,9 @@ void add_render_command(CLI::App& app, RenderOptions& options) {
     render->add_option("--spp", options.samples,
                        "samples per pixel, jittered and averaged: anti-aliasing, depth of field")
         ->check(CLI::Range(1, kMaxSamples));
+    render->add_option("--bit-depth", options.bit_depth,
+                       "8: tone-mapped sRGB PNG (default); 16: linear 16-bit PNG (exposure only)")
+        ->check(CLI::IsMember({8, 16}));
     render->add_option("--effects", options.effect_changes,
                        "change the scene's effects, e.g. +shadows,-ambient_occlusion");
     render->add_option("--device", options.device, "OpenCL device index (see `fgr info`)")

@@ -98,7 +98,19 @@ struct TemporaryFile {
     }
 };
 
-void validate_image(const fs::path& path, const Image8& image) {
+// What the encoder needs of either image type: rows of big-endian samples and the colour space.
+struct PngPixels {
+    int width = 0;
+    int height = 0;
+    int bit_depth = 8;
+    bool linear = false;            // gAMA 1.0 instead of sRGB
+    std::vector<uint8_t> storage;   // 16-bit samples, big-endian as PNG stores them
+    const uint8_t* bytes = nullptr;
+    std::size_t row_bytes() const { return std::size_t(width) * 3 * std::size_t(bit_depth / 8); }
+};
+
+template <typename Image>
+void validate_image(const fs::path& path, const Image& image) {
     if (image.width <= 0 || image.height <= 0) {
         throw std::invalid_argument("cannot write " + quoted(path) + ": image is " +
                                     std::to_string(image.width) + "x" +
@@ -110,7 +122,7 @@ void validate_image(const fs::path& path, const Image8& image) {
         throw std::invalid_argument(
             "cannot write " + quoted(path) + ": " + std::to_string(image.width) + "x" +
             std::to_string(image.height) + " image needs " + std::to_string(expected) +
-            " bytes, has " + std::to_string(image.rgb.size()));
+            " samples, has " + std::to_string(image.rgb.size()));
     }
 }
 
@@ -123,21 +135,26 @@ fs::path temporary_path_for(const fs::path& target) {
     return target.parent_path() / (target.filename().string() + suffix);
 }
 
-void write_rows(png_structp png, png_infop info, const Image8& image) {
+void write_rows(png_structp png, png_infop info, const PngPixels& image) {
     png_set_IHDR(png, info, static_cast<png_uint_32>(image.width),
-                 static_cast<png_uint_32>(image.height), 8, PNG_COLOR_TYPE_RGB, PNG_INTERLACE_NONE,
-                 PNG_COMPRESSION_TYPE_DEFAULT, PNG_FILTER_TYPE_DEFAULT);
+                 static_cast<png_uint_32>(image.height), image.bit_depth, PNG_COLOR_TYPE_RGB,
+                 PNG_INTERLACE_NONE, PNG_COMPRESSION_TYPE_DEFAULT, PNG_FILTER_TYPE_DEFAULT);
+    if (image.linear) {
+        png_set_gAMA(png, info, 1.0);
+    } else {
+        png_set_sRGB_gAMA_and_cHRM(png, info, PNG_sRGB_INTENT_PERCEPTUAL);
+    }
     png_write_info(png, info);
-    const std::size_t stride = std::size_t{3} * std::size_t(image.width);
+    const std::size_t stride = image.row_bytes();
     for (std::size_t y = 0; y < std::size_t(image.height); ++y) {
-        png_write_row(png, image.rgb.data() + y * stride);
+        png_write_row(png, image.bytes + y * stride);
     }
     png_write_end(png, info);
 }
 
 // False (message in writer.error) when libpng failed. Keeps no locals of its own: anything
 // modified between setjmp and the longjmp would be indeterminate afterwards.
-bool encode(PngWriter& writer, const Image8& image) {
+bool encode(PngWriter& writer, const PngPixels& image) {
     if (setjmp(png_jmpbuf(writer.png))) {
         return false;
     }
@@ -160,7 +177,7 @@ std::string close_durably(std::FILE*& owned_file) {
 }
 
 // Empty on success, else why the file could not be written.
-std::string encode_to_file(const fs::path& file_path, const Image8& image) {
+std::string encode_to_file(const fs::path& file_path, const PngPixels& image) {
     PngWriter writer;
     writer.file = std::fopen(file_path.c_str(), "wb");
     if (writer.file == nullptr) {
@@ -226,10 +243,8 @@ bool has_png_signature(std::FILE* file) {
            png_sig_cmp(signature, 0, sizeof signature) == 0;
 }
 
-}  // namespace
-
-void write_png(const fs::path& path, const Image8& image) {
-    validate_image(path, image);
+// Encodes to a temporary beside `path`, then renames it over `path`.
+void write_pixels_atomically(const fs::path& path, const PngPixels& image) {
     if (!path.has_filename()) {
         fail_write(path, "not a file name");
     }
@@ -244,6 +259,33 @@ void write_png(const fs::path& path, const Image8& image) {
         fail_write(path, error.message());
     }
     temporary.committed = true;
+}
+
+}  // namespace
+
+void write_png(const fs::path& path, const Image8& image) {
+    validate_image(path, image);
+    PngPixels pixels;
+    pixels.width = image.width;
+    pixels.height = image.height;
+    pixels.bytes = image.rgb.data();
+    write_pixels_atomically(path, pixels);
+}
+
+void write_png16_linear(const fs::path& path, const Image16& image) {
+    validate_image(path, image);
+    PngPixels pixels;
+    pixels.width = image.width;
+    pixels.height = image.height;
+    pixels.bit_depth = 16;
+    pixels.linear = true;
+    pixels.storage.reserve(image.rgb.size() * 2);
+    for (uint16_t sample : image.rgb) {
+        pixels.storage.push_back(static_cast<uint8_t>(sample >> 8));
+        pixels.storage.push_back(static_cast<uint8_t>(sample & 0xff));
+    }
+    pixels.bytes = pixels.storage.data();
+    write_pixels_atomically(path, pixels);
 }
 
 Image8 read_png(const fs::path& path) {

@@ -92,6 +92,10 @@ uint64_t apply_effect_changes(uint64_t effects, std::string_view changes) {
         std::string_view item = changes.substr(start, comma - start);
         start = comma + 1;
         if (item.empty()) continue;
+        if (item == "none") {
+            effects = 0;
+            continue;
+        }
         const bool remove = item.front() == '-';
         if (item.front() == '-' || item.front() == '+') item.remove_prefix(1);
         const auto known = std::find_if(kEffectSwitches.begin(), kEffectSwitches.end(),

@@ -94,6 +94,17 @@ double elapsed_ms(std::chrono::steady_clock::time_point since) {
 
 }  // namespace
 
+Image16 linear_image16(const Frame& frame, float exposure) {
+    Image16 image{frame.image.width, frame.image.height, {}};
+    image.rgb.reserve(frame.linear.size());
+    for (float value : frame.linear) {
+        const float scaled = value * exposure;
+        const float clamped = scaled > 0.0f ? std::min(scaled, 1.0f) : 0.0f;  // NaN to 0
+        image.rgb.push_back(static_cast<uint16_t>(std::lround(clamped * 65535.0f)));
+    }
+    return image;
+}
+
 float tone_map(float linear, ToneMap op) {
     if (!(linear > 0.0f)) return 0.0f;  // also NaN
     switch (op) {

@@ -34,7 +34,7 @@ std::string switch_options(const KernelSwitches& switches);
 std::string effect_names(uint64_t effects);
 
 // Applies a comma-separated list of changes to `effects`: "+name" or "name" adds an effect,
-// "-name" removes it, e.g. "+shadows,-ambient_occlusion". Throws std::invalid_argument naming an
+// "-name" removes it, "none" removes all, e.g. "+shadows,-ambient_occlusion" or "none,+fog". Throws std::invalid_argument naming an
 // unknown effect and listing the known ones.
 uint64_t apply_effect_changes(uint64_t effects, std::string_view changes);
 

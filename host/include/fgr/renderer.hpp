@@ -91,6 +91,10 @@ TileLayout tile_layout(int packet_width, int width, int height);
 // Linear [0, 1] to 8-bit sRGB (values outside are clamped, NaN becomes 0).
 uint8_t encode_srgb(float linear);
 
+// The frame's linear colour times `exposure`, clamped to [0, 1], at 16 bits: scene-referred output
+// for compositing or grading elsewhere (no tone mapping, no sRGB curve).
+Image16 linear_image16(const Frame& frame, float exposure);
+
 enum class ToneMap { Clamp = 0, Reinhard = 1, Aces = 2 };
 
 // Scene-referred linear value (after exposure) to display-referred [0, 1]: clamp, Reinhard's
