@@ -33,8 +33,9 @@ configs=(
     "glow|none,+glow|"
     "fog|none,+fog|"
     "depth_of_field (1 sample)|none,+depth_of_field|"
+    "refraction|none,+refraction|"
     "anti-aliasing, 4 samples|none|--spp 4"
-    "all effects|none,+soft_shadows,+ambient_occlusion,+sampled_occlusion,+reflections,+glow,+fog,+depth_of_field|"
+    "all effects|none,+soft_shadows,+ambient_occlusion,+sampled_occlusion,+reflections,+glow,+fog,+depth_of_field,+refraction|"
 )
 
 render_ms() {  # scene effects extra...

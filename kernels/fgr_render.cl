@@ -97,6 +97,10 @@ __kernel void fgr_render(__global float* planes, int plane_size, int tile_count,
         vec3 n = estimate_normal(p, eps, PARAMS_PASS);
         vec3 lit = shade_surface(p, n, dir, eps, hit.steps, hit.t, 1, limits, lights,
                                  light_count, PARAMS_PASS);
+#ifdef FGR_EFFECT_REFRACTION
+        lit = add_refraction(lit, p, n, dir, eps, hit.t, hit.hit, limits, lights, light_count,
+                             PARAMS_PASS);
+#endif
 #ifdef FGR_EFFECT_REFLECTIONS
         lit = add_reflection(lit, p, n, dir, eps, hit.t, hit.hit, limits, lights, light_count,
                              PARAMS_PASS);

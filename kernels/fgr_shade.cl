@@ -200,3 +200,79 @@ inline vec3 add_reflection(vec3 colour, vec3 p, vec3 n, vec3 dir, real eps, real
     return result;
 }
 #endif
+
+#ifdef FGR_EFFECT_REFRACTION
+#ifndef FGR_SCENE_HAS_TRANSMISSION
+/* How much light passes into the surface, for scenes that do not set it per material: the
+ * built-in parameter `transmission`. */
+inline real scene_transmission(vec3 p, PARAMS) {
+    (void)p;
+    return fgr_real(param_transmission);
+}
+#endif
+
+/* Snell's law for unit vectors: the direction after crossing into a medium with index ratio eta =
+ * n_from / n_to, or the mirror direction where total internal reflection happens. */
+inline vec3 refract_or_reflect(vec3 dir, vec3 n, real eta) {
+    real cos_in = -v3_dot(dir, n);
+    real k = 1.0f - eta * eta * (1.0f - cos_in * cos_in);
+    vec3 reflected = v3_mad(dir, n, 2.0f * cos_in);
+    vec3 refracted = v3_add(v3_scale(dir, eta), v3_scale(n, eta * cos_in - sqrt(fmax(k, 0.0f))));
+    return v3_normalize(v3_select(refracted, reflected, k < 0.0f));
+}
+
+/* Transparency: light enters the surface (index of refraction `ior`), crosses the solid, which
+ * absorbs exp(-absorption * length) tinted by its colour (Beer-Lambert), leaves it bending back,
+ * and shows what lies behind (shaded without shadow rays). Blended over the surface colour by the
+ * material's transmission times (1 - Fresnel reflectance). Inside a solid the DE is negative, so
+ * the crossing marches -DE until the surface is reached again. */
+inline vec3 add_refraction(vec3 colour, vec3 p, vec3 n, vec3 dir, real eps, real travelled,
+                           mask surface, march_limits limits, __constant const float* lights,
+                           int light_count, PARAMS) {
+    real transmission = select(fgr_real(0.0f), scene_transmission(p, PARAMS_PASS), surface);
+    mask active = transmission > 0.0f;
+    if (!fgr_any(active)) return colour;
+    vec3 albedo = scene_colour(p, PARAMS_PASS);
+    vec3 inside_dir = refract_or_reflect(dir, n, fgr_real(1.0f / param_ior));
+    /* Cross the solid: step by |DE| until the far surface (DE back to >= 0 within a footprint). */
+    vec3 start = v3_mad(p, n, -2.0f * travelled * limits.footprint - 1e-6f);
+    real t = fgr_real(0.0f);
+    mask crossing = active;
+    for (int step = 0; step < limits.max_steps; ++step) {
+        if (!fgr_any(crossing)) break;
+        real dist = -scene_de(v3_mad(start, inside_dir, t), PARAMS_PASS);
+        crossing &= dist >= (t + travelled) * limits.footprint;
+        t = select(t, t + fmax(dist * limits.step_factor, limits.footprint), crossing);
+        crossing &= t <= limits.max_distance;
+    }
+    vec3 exit_point = v3_mad(start, inside_dir, t);
+    real exit_eps = fmax((travelled + t) * limits.footprint * 0.5f, 1e-7f);
+    vec3 exit_normal = estimate_normal(exit_point, exit_eps, PARAMS_PASS);
+    vec3 out_dir = refract_or_reflect(inside_dir, v3_neg(exit_normal), fgr_real(param_ior));
+    vec3 behind_start = v3_mad(exit_point, exit_normal, 2.0f * (travelled + t) * limits.footprint + 1e-6f);
+    march_result behind = march_rays_after(behind_start, out_dir, active, travelled + t, limits,
+                                           PARAMS_PASS);
+    vec3 seen = background(out_dir);
+    if (fgr_any(behind.hit)) {
+        vec3 q = v3_mad(behind_start, out_dir, behind.t);
+        real q_eps = fmax((travelled + t + behind.t) * limits.footprint * 0.5f, 1e-7f);
+        vec3 q_normal = estimate_normal(q, q_eps, PARAMS_PASS);
+        vec3 q_colour = shade_surface(q, q_normal, out_dir, q_eps, behind.steps,
+                                      travelled + t + behind.t, 0, limits, lights, light_count,
+                                      PARAMS_PASS);
+        seen = v3_select(seen, q_colour, behind.hit);
+    }
+    /* Beer-Lambert: each colour channel decays at a rate that grows as the albedo darkens. */
+    real path = t * param_absorption;
+    vec3 absorbed = v3(seen.x * exp(-path * (1.0f - albedo.x)), seen.y * exp(-path * (1.0f - albedo.y)),
+                       seen.z * exp(-path * (1.0f - albedo.z)));
+    real cos_in = fmax(-v3_dot(dir, n), 0.0f);
+    real r0 = (param_ior - 1.0f) / (param_ior + 1.0f);
+    r0 *= r0;
+    real grazing = 1.0f - cos_in;
+    real fresnel = r0 + (1.0f - r0) * grazing * grazing * grazing * grazing * grazing;
+    real weight = select(fgr_real(0.0f), transmission * (1.0f - fresnel), active);
+    return v3(mix(colour.x, absorbed.x, weight), mix(colour.y, absorbed.y, weight),
+              mix(colour.z, absorbed.z, weight));
+}
+#endif

@@ -557,8 +557,8 @@ TEST_F(CopyScene, RefusesBadKeyframeView) {
 // --- Lights, effects, march settings -------------------------------------------------------------
 
 TEST_F(CopyScene, RefusesUnknownEffectBit) {
-    built.desc.effects = FGR_EFFECT_SHADOWS | (uint64_t{1} << 8) | (uint64_t{1} << 40);
-    expect_refused("unknown effect bits 0x10000000100");
+    built.desc.effects = FGR_EFFECT_SHADOWS | (uint64_t{1} << 9) | (uint64_t{1} << 40);
+    expect_refused("unknown effect bits 0x10000000200");
 }
 
 TEST_F(CopyScene, RefusesZeroLights) {

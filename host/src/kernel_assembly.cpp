@@ -27,6 +27,7 @@ constexpr std::array kEffectSwitches{
     EffectSwitch{FGR_EFFECT_GLOW, "FGR_EFFECT_GLOW", "glow"},
     EffectSwitch{FGR_EFFECT_FOG, "FGR_EFFECT_FOG", "fog"},
     EffectSwitch{FGR_EFFECT_DEPTH_OF_FIELD, "FGR_EFFECT_DEPTH_OF_FIELD", "depth_of_field"},
+    EffectSwitch{FGR_EFFECT_REFRACTION, "FGR_EFFECT_REFRACTION", "refraction"},
 };
 
 // A file name is quoted in #line, so quotes, backslashes and newlines in it are replaced.

@@ -108,6 +108,13 @@ void add_effect_params(Scene& scene) {
                                   0.15f, "fog: fraction of light lost per unit distance"));
     params.push_back(effect_param("reflection_bounces", "Reflection bounces", ParamType::Int, 1.0f,
                                   8.0f, 1.0f, "mirror bounces followed per ray"));
+    params.push_back(effect_param("transmission", "Transmission", ParamType::Float, 0.0f, 1.0f,
+                                  0.6f, "refraction: light passing into surfaces (scenes may set "
+                                        "it per material)"));
+    params.push_back(effect_param("ior", "Index of refraction", ParamType::Float, 1.0f, 3.0f,
+                                  1.5f, "refraction: 1.33 water, 1.5 glass, 2.4 diamond"));
+    params.push_back(effect_param("absorption", "Absorption", ParamType::Float, 0.0f, 100.0f, 1.0f,
+                                  "refraction: light absorbed per unit length inside, tinted"));
     params.push_back(effect_param("aperture", "Aperture", ParamType::Float, 0.0f, 10.0f, 0.05f,
                                   "depth of field: lens radius"));
     params.push_back(effect_param("focus_distance", "Focus distance", ParamType::Float, 0.001f,

@@ -142,12 +142,13 @@ typedef enum fgr_effect_flag {
     FGR_EFFECT_SAMPLED_OCCLUSION = 1u << 4, /* ambient occlusion from DE probes along the normal */
     FGR_EFFECT_GLOW = 1u << 5,              /* rays that miss glow by how near they passed */
     FGR_EFFECT_FOG = 1u << 6,               /* exponential distance fog */
-    FGR_EFFECT_DEPTH_OF_FIELD = 1u << 7     /* thin lens; converges over samples (--spp) */
+    FGR_EFFECT_DEPTH_OF_FIELD = 1u << 7,    /* thin lens; converges over samples (--spp) */
+    FGR_EFFECT_REFRACTION = 1u << 8         /* transparency: refraction through solids, absorption */
 } fgr_effect_flag;
 #define FGR_EFFECT_ALL_V1                                                          \
     (FGR_EFFECT_SHADOWS | FGR_EFFECT_AMBIENT_OCCLUSION | FGR_EFFECT_SOFT_SHADOWS |      \
      FGR_EFFECT_REFLECTIONS | FGR_EFFECT_SAMPLED_OCCLUSION | FGR_EFFECT_GLOW | FGR_EFFECT_FOG | \
-     FGR_EFFECT_DEPTH_OF_FIELD)
+     FGR_EFFECT_DEPTH_OF_FIELD | FGR_EFFECT_REFRACTION)
 
 /* How rays are marched. These are quality knobs: they reach the kernel as built-in parameters
  * (max_steps, max_distance, hit_threshold, iterations, step_factor), so changing them never
