@@ -47,9 +47,10 @@ inline camera_sample sample_camera(real px, real py, int sample) {
 
 #ifdef FGR_EFFECT_FOG
 /* Exponential distance fog: a surface at distance t keeps exp(-density t) of its colour and takes
- * the rest from the fog; rays that miss see only fog. */
-inline vec3 apply_fog(vec3 colour, real t, mask hit, PARAMS) {
-    real keep = select(fgr_real(0.0f), exp(-param_fog_density * t), hit);
+ * the rest from the fog; rays that miss see the sky through the fog out to max_distance, so a
+ * density of 0 leaves the image untouched. */
+inline vec3 apply_fog(vec3 colour, real t, mask hit, float max_distance, PARAMS) {
+    real keep = exp(-param_fog_density * select(fgr_real(max_distance), t, hit));
     vec3 fog = param_fog_colour;
     return v3(mix(fog.x, colour.x, keep), mix(fog.y, colour.y, keep), mix(fog.z, colour.z, keep));
 }

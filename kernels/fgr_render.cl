@@ -112,7 +112,7 @@ __kernel void fgr_render(__global float* planes, int plane_size, int tile_count,
     colour = apply_glow(colour, hit.closest, !hit.hit, PARAMS_PASS);
 #endif
 #ifdef FGR_EFFECT_FOG
-    colour = apply_fog(colour, hit.t, hit.hit, PARAMS_PASS);
+    colour = apply_fog(colour, hit.t, hit.hit, limits.max_distance, PARAMS_PASS);
 #endif
     if (sample > 0) {
         colour = v3_add(colour, v3(fgr_load(tile, planes), fgr_load(tile, planes + plane_size),

@@ -81,7 +81,10 @@ inline real light_visibility(vec3 p, vec3 to_light, mask lit, real travelled, ma
          * occluder at distance d after travelling t is dimmed by how narrowly it missed; the
          * sharpness k is the built-in parameter shadow_sharpness. */
         real penumbra = param_shadow_sharpness * closest / fmax(t - along, 1e-6f);
-        visibility = select(visibility, fmin(visibility, penumbra), active & (t > 0.0f));
+        /* On the first steps off a flat lit surface the two DE spheres nest (along = dist, so
+         * t - along <= 0): no closest approach to measure there, and using it speckled lit
+         * floors with black pixels. */
+        visibility = select(visibility, fmin(visibility, penumbra), active & (t > along));
         visibility = select(visibility, fgr_real(0.0f), blocked);
         previous = select(previous, dist, active);
         active &= !blocked & (visibility > 0.002f);
