@@ -1,6 +1,7 @@
 // Kernel assembly: the switches a program is built with, the generated parameter accessors, build
 // errors mapped to the scene's own lines, the on-disk program cache, and parameters that change
 // without a rebuild.
+#include <cstdio>
 #include <filesystem>
 #include <fstream>
 
@@ -49,6 +50,45 @@ TEST(KernelAssembly, EffectChangesAddAndRemoveByName) {
     EXPECT_NE(options.find("-DFGR_EFFECT_SOFT_SHADOWS"), std::string::npos);
     EXPECT_NE(options.find("-DFGR_EFFECT_REFLECTIONS"), std::string::npos);
     EXPECT_EQ(options.find("-DFGR_EFFECT_SHADOWS"), std::string::npos);
+}
+
+// The assembled program after preprocessing with the program's own -D switches (GNU cpp stands in
+// for the OpenCL compiler's preprocessor): the code the device compiler actually sees.
+std::string preprocessed(const AssembledProgram& program) {
+    const auto source = std::filesystem::temp_directory_path() /
+                        ("fgr-assembly-" + std::to_string(::getpid()) + ".cl");
+    std::ofstream(source) << program.source;
+    const std::string command = "cpp -P " + program.options + " " + source.string() + " 2>/dev/null";
+    std::string output;
+    if (FILE* pipe = ::popen(command.c_str(), "r")) {
+        char buffer[4096];
+        for (size_t n; (n = std::fread(buffer, 1, sizeof buffer, pipe)) > 0;) output.append(buffer, n);
+        ::pclose(pipe);
+    }
+    std::filesystem::remove(source);
+    return output;
+}
+
+TEST(KernelAssembly, DisabledEffectsLeaveNoCodeInTheProgram) {
+    const Scene scene = test::sphere_scene();
+    const std::string plain = preprocessed(assemble_program(scene, {16, 0}));
+    ASSERT_NE(plain.find("fgr_render"), std::string::npos) << "preprocessing failed";
+    const struct {
+        uint64_t effect;
+        const char* code;  // a function only that effect's code defines
+    } effects[] = {{FGR_EFFECT_SHADOWS, "light_visibility"},
+                   {FGR_EFFECT_SOFT_SHADOWS, "light_visibility"},
+                   {FGR_EFFECT_SAMPLED_OCCLUSION, "sampled_occlusion"},
+                   {FGR_EFFECT_REFLECTIONS, "add_reflection"},
+                   {FGR_EFFECT_REFRACTION, "add_refraction"},
+                   {FGR_EFFECT_GLOW, "apply_glow"},
+                   {FGR_EFFECT_FOG, "apply_fog"},
+                   {FGR_EFFECT_DEPTH_OF_FIELD, "focus"}};
+    for (const auto& effect : effects) {
+        EXPECT_EQ(plain.find(effect.code), std::string::npos) << effect.code;
+        const std::string with = preprocessed(assemble_program(scene, {16, effect.effect}));
+        EXPECT_NE(with.find(effect.code), std::string::npos) << effect.code;
+    }
 }
 
 TEST(KernelAssembly, AccessorsFollowTheBufferLayout) {
