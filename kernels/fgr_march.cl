@@ -30,12 +30,13 @@ inline march_limits scene_march_limits(float pixel_angle, PARAMS) {
     return limits;
 }
 
-/* Marches every lane of `active` from origin along dir until it hits, passes max_distance, or has
- * taken max_steps. Inactive lanes are not evaluated for hits and keep t = 0. `travelled` is the
- * distance the ray covered before origin (a reflected ray's first leg): the hit footprint grows
- * with the whole path, so secondary rays resolve no finer than the pixel they end up in. */
-inline march_result march_rays_after(vec3 origin, vec3 dir, mask active, real travelled,
-                                     march_limits limits, PARAMS) {
+/* Marches every lane of `active` from origin along dir until it hits, passes `reach` (per lane:
+ * max_distance, or the distance to a point light for shadow rays), or has taken max_steps.
+ * Inactive lanes are not evaluated for hits and keep t = 0. `travelled` is the distance the ray
+ * covered before origin (a reflected ray's first leg): the hit footprint grows with the whole
+ * path, so secondary rays resolve no finer than the pixel they end up in. */
+inline march_result march_rays_within(vec3 origin, vec3 dir, mask active, real travelled,
+                                      real reach, march_limits limits, PARAMS) {
     march_result result;
     result.t = fgr_real(0.0f);
     result.hit = (mask)(0);
@@ -54,9 +55,15 @@ inline march_result march_rays_after(vec3 origin, vec3 dir, mask active, real tr
         active &= !now_hit;
         result.t = select(result.t, mad(dist, limits.step_factor, result.t), active);
         fgr_count_if(result.steps, active | now_hit);
-        active &= result.t <= limits.max_distance;
+        active &= result.t <= reach;
     }
     return result;
+}
+
+inline march_result march_rays_after(vec3 origin, vec3 dir, mask active, real travelled,
+                                     march_limits limits, PARAMS) {
+    return march_rays_within(origin, dir, active, travelled, fgr_real(limits.max_distance), limits,
+                             PARAMS_PASS);
 }
 
 inline march_result march_rays(vec3 origin, vec3 dir, mask active, march_limits limits, PARAMS) {

@@ -23,16 +23,20 @@ inline vec3 background(vec3 dir) {
               mix(fgr_real(0.030f), fgr_real(0.20f), h));
 }
 
-/* Direction towards light `i` from p, and the light's irradiance scale there (1/d^2 for points). */
-inline vec3 light_direction(__constant const float* light, vec3 p, real* falloff) {
+/* Direction towards `light` from p, the light's irradiance scale there (1/d^2 for points), and
+ * how far a shadow ray must look for occluders (to the light, or max_distance for the sun). */
+inline vec3 light_direction(__constant const float* light, vec3 p, float max_distance,
+                            real* falloff, real* reach) {
     vec3 v = v3_splat(light[1], light[2], light[3]);
     if ((int)light[0] == FGR_LIGHT_POINT) {
         vec3 to_light = v3_sub(v, p);
         real dist2 = fmax(v3_length2(to_light), 1e-8f);
         *falloff = 1.0f / dist2;
+        *reach = fmin(sqrt(dist2), max_distance);
         return v3_scale(to_light, rsqrt(dist2));
     }
     *falloff = fgr_real(1.0f);
+    *reach = fgr_real(max_distance);
     return v; /* the host normalised directional vectors */
 }
 
@@ -63,8 +67,8 @@ inline vec3 leave_surface(vec3 p, vec3 n, real travelled, march_limits limits) {
 #if defined(FGR_EFFECT_SOFT_SHADOWS)
 /* Soft visibility in [0, 1] of the light along to_light from p. `travelled` is the primary ray's
  * length, which sets the footprint below which the shadow ray counts as blocked. */
-inline real light_visibility(vec3 p, vec3 to_light, mask lit, real travelled, march_limits limits,
-                             PARAMS) {
+inline real light_visibility(vec3 p, vec3 to_light, mask lit, real travelled, real reach,
+                             march_limits limits, PARAMS) {
     real visibility = select(fgr_real(0.0f), fgr_real(1.0f), lit);
     real t = fgr_real(0.0f);
     real previous = fgr_real(1e10f);
@@ -90,17 +94,17 @@ inline real light_visibility(vec3 p, vec3 to_light, mask lit, real travelled, ma
         active &= !blocked & (visibility > 0.002f);
         /* Capped steps sample the penumbra of thin occluders the shadow ray passes. */
         t = select(t, t + fmin(dist * limits.step_factor, 0.05f + 0.25f * t), active);
-        active &= t <= limits.max_distance;
+        active &= t <= reach;
     }
     visibility = clamp(visibility, 0.0f, 1.0f);
     return visibility * visibility * (3.0f - 2.0f * visibility); /* smoothstep: softer edge */
 }
 #elif defined(FGR_EFFECT_SHADOWS)
 /* 1 where the light is visible from p, 0 where the surface blocks it: a march towards the light
- * that counts any hit before max_distance as an occluder. */
-inline real light_visibility(vec3 p, vec3 to_light, mask lit, real travelled, march_limits limits,
-                             PARAMS) {
-    march_result shadow = march_rays_after(p, to_light, lit, travelled, limits, PARAMS_PASS);
+ * that counts any hit before the light (`reach`) as an occluder. */
+inline real light_visibility(vec3 p, vec3 to_light, mask lit, real travelled, real reach,
+                             march_limits limits, PARAMS) {
+    march_result shadow = march_rays_within(p, to_light, lit, travelled, reach, limits, PARAMS_PASS);
     return select(fgr_real(1.0f), fgr_real(0.0f), shadow.hit);
 }
 #endif
@@ -126,8 +130,8 @@ inline vec3 shade_surface(vec3 p, vec3 n, vec3 view_dir, real eps, mask steps, r
     vec3 to_eye = v3_neg(view_dir);
     for (int i = 0; i < light_count; ++i) {
         __constant const float* light = lights + i * FGR_LIGHT_FLOATS;
-        real falloff;
-        vec3 l = light_direction(light, p, &falloff);
+        real falloff, reach;
+        vec3 l = light_direction(light, p, limits.max_distance, &falloff, &reach);
         real diffuse = fmax(v3_dot(n, l), 0.0f);
         vec3 half_vector = v3_normalize(v3_add(l, to_eye));
         real specular = FGR_SPECULAR * pow(fmax(v3_dot(n, half_vector), 0.0f), FGR_SHININESS);
@@ -135,7 +139,8 @@ inline vec3 shade_surface(vec3 p, vec3 n, vec3 view_dir, real eps, mask steps, r
 #if defined(FGR_EFFECT_SHADOWS) || defined(FGR_EFFECT_SOFT_SHADOWS)
         if (with_shadows) {
             vec3 start = leave_surface(p, n, travelled, limits);
-            strength *= light_visibility(start, l, diffuse > 0.0f, travelled, limits, PARAMS_PASS);
+            strength *= light_visibility(start, l, diffuse > 0.0f, travelled, reach, limits,
+                                         PARAMS_PASS);
         }
 #endif
         vec3 light_colour = v3_splat(light[4], light[5], light[6]);

@@ -223,6 +223,23 @@ TEST_F(EffectTest, ShadowsDarkenTheFloorUnderAnOccluderAndNothingElse) {
     }
 }
 
+TEST_F(EffectTest, OccludersBeyondAPointLightCastNoShadow) {
+    // The light hangs between the floor and the slab: nothing lies between them and the floor.
+    Scene scene = shadow_scene();
+    scene.lights = {Light{LightType::Point, {0.0f, 0.0f, 0.8f}, {1.0f, 1.0f, 1.0f}, 1.0f}};
+    const FrameRequest req = request(scene);
+    const Frame plain = renderer(scene, 0)->render(req);
+    const auto points = hit_points(plain, req.view);
+    const auto under = pixels_where(
+        points, [](glm::vec3 p) { return on_floor(p) && footprint_distance(p) < -0.1f; });
+    ASSERT_GT(under.size(), 40u);
+    for (uint64_t effect : {uint64_t{FGR_EFFECT_SHADOWS}, uint64_t{FGR_EFFECT_SOFT_SHADOWS}}) {
+        SCOPED_TRACE(effect_names(effect));
+        const Frame shadowed = renderer(scene, effect)->render(req);
+        EXPECT_LT(max_abs_difference(shadowed, plain, under), 1e-3);
+    }
+}
+
 TEST_F(EffectTest, SoftShadowsHaveAPenumbraThatSharpnessNarrows) {
     const Scene scene = shadow_scene();
     const FrameRequest req = request(scene);
