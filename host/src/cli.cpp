@@ -88,7 +88,7 @@ void print_scene(const Scene& scene) {
     fmt::print("  plugin: {}\n", scene.plugin_file.string());
     fmt::print("  parameters:\n");
     for (const auto& param : scene.params) {
-        fmt::print("    {:<16} {:<7} {:<24} default {:<10} {} ({})\n", param.id,
+        fmt::print("    {:<20} {:<7} {:<30} default {:<16} {} ({})\n", param.id,
                    param_type_name(param.type), range_text(param), default_text(param),
                    param.label, param.group);
     }
