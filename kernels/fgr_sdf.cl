@@ -113,13 +113,15 @@ inline real sd_octahedron(vec3 p, float size) {
 }
 
 /* Regular tetrahedron with vertices (s, s, s), (s, -s, -s), (-s, s, -s), (-s, -s, s), s = size.
- * Bound: the largest signed distance to its four face planes, exact inside and up to a factor 3
- * short near the vertices outside. */
+ * Bound: the largest signed distance to its four face planes, exact inside and over the faces but
+ * up to a factor 3 short towards a vertex, where the distance to the circumsphere (radius
+ * sqrt(3) s) is the better bound; both are bounds, so their maximum is. */
 inline real sd_tetrahedron(vec3 p, float size) {
     /* The faces' outward normals are (-1,-1,-1), (-1,1,1), (1,-1,1), (1,1,-1) over sqrt(3); the
      * largest of the four dot products pairs up as |x + y| - z and |x - y| + z. */
     real planes = fmax(fabs(p.x + p.y) - p.z, fabs(p.x - p.y) + p.z);
-    return (planes - size) * FGR_INV_SQRT3;
+    real to_planes = (planes - size) * FGR_INV_SQRT3;
+    return fmax(to_planes, v3_length(p) - FGR_SQRT3 * size);
 }
 
 /* ---------------------------------------------------------------------------------------------
@@ -164,6 +166,33 @@ inline real op_smooth_intersection(real d1, real d2, float k) {
 /* ---------------------------------------------------------------------------------------------
  * Transforms. Each returns the point at which to evaluate the untransformed shape.
  */
+
+/* A rotation by a uniform angle about a fixed unit axis (Rodrigues' matrix), built once from
+ * parameters so a loop applying it does a matrix multiply instead of trigonometry. */
+typedef struct rotation3 {
+    float3 row_x, row_y, row_z;
+} rotation3;
+
+inline rotation3 rotation_about_axis(float3 axis, float degrees) {
+    float c = 1.0f;
+    float s = sincos(radians(degrees), &c);
+    float t = 1.0f - c;
+    rotation3 m;
+    m.row_x = (float3)(t * axis.x * axis.x + c, t * axis.x * axis.y - s * axis.z,
+                       t * axis.x * axis.z + s * axis.y);
+    m.row_y = (float3)(t * axis.x * axis.y + s * axis.z, t * axis.y * axis.y + c,
+                       t * axis.y * axis.z - s * axis.x);
+    m.row_z = (float3)(t * axis.x * axis.z - s * axis.y, t * axis.y * axis.z + s * axis.x,
+                       t * axis.z * axis.z + c);
+    return m;
+}
+
+/* Applies rotation m to p. Isometry: exact stays exact. */
+inline vec3 op_rotate(vec3 p, rotation3 m) {
+    return v3(m.row_x.x * p.x + m.row_x.y * p.y + m.row_x.z * p.z,
+              m.row_y.x * p.x + m.row_y.y * p.y + m.row_y.z * p.z,
+              m.row_z.x * p.x + m.row_z.y * p.y + m.row_z.z * p.z);
+}
 
 /* Moves a shape so its origin sits at `offset`. Isometry: exact stays exact. */
 inline vec3 op_translate(vec3 p, vec3 offset) { return v3_sub(p, offset); }

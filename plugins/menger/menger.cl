@@ -25,52 +25,18 @@
  * the colour into speckle. */
 #define MENGER_TRAP_LEVELS 4
 
-/* Rotation by a uniform angle about a fixed unit axis: Rodrigues' matrix, built once per call
- * from the parameter so the loop does a matrix multiply instead of trigonometry. */
-typedef struct twist_matrix {
-    float3 row_x, row_y, row_z;
-} twist_matrix;
-
-inline twist_matrix twist_about(float3 axis, float degrees) {
-    float c = 1.0f;
-    float s = sincos(radians(degrees), &c);
-    float t = 1.0f - c;
-    twist_matrix m;
-    m.row_x = (float3)(t * axis.x * axis.x + c, t * axis.x * axis.y - s * axis.z,
-                       t * axis.x * axis.z + s * axis.y);
-    m.row_y = (float3)(t * axis.x * axis.y + s * axis.z, t * axis.y * axis.y + c,
-                       t * axis.y * axis.z - s * axis.x);
-    m.row_z = (float3)(t * axis.x * axis.z - s * axis.y, t * axis.y * axis.z + s * axis.x,
-                       t * axis.z * axis.z + c);
-    return m;
-}
-
-inline vec3 twist_apply(twist_matrix m, vec3 p) {
-    return v3(m.row_x.x * p.x + m.row_x.y * p.y + m.row_x.z * p.z,
-              m.row_y.x * p.x + m.row_y.y * p.y + m.row_y.z * p.z,
-              m.row_z.x * p.x + m.row_z.y * p.y + m.row_z.z * p.z);
-}
-
-/* Exact signed distance to the cube [-half_size, half_size]^3. */
-inline real sd_cube(vec3 p, float half_size) {
-    vec3 q = v3_sub(v3_abs(p), v3_splat(half_size, half_size, half_size));
-    real outside = v3_length(v3_max(q, v3_splat(0.0f, 0.0f, 0.0f)));
-    real inside = fmin(fmax(q.x, fmax(q.y, q.z)), 0.0f);
-    return outside + inside;
-}
-
 /* Runs the KIFS for p; returns the DE and, when `record` is set, fills *trap with the orbit. */
 inline real menger_iterate(vec3 p, PARAMS, int record, orbit_trap* trap) {
     const float scale = param_scale;
     const vec3 offset = param_offset;
     /* The twist turns about the cube's diagonal, through the corner cube being blown up. */
-    const twist_matrix twist = twist_about((float3)(0.57735027f), param_twist);
+    const rotation3 twist = rotation_about_axis((float3)(0.57735027f), param_twist);
     const int twisted = param_twist != 0.0f;
     vec3 w = p;        /* the orbit point z_i times scale^-i */
     float size = 1.0f; /* scale^-i: the half-size of one level-i cube */
     for (int i = 0; i < param_iterations; ++i) {
         w = fold_menger(w);
-        if (twisted) w = twist_apply(twist, w);
+        if (twisted) w = op_rotate(w, twist);
         size /= scale;
         const float shift = (scale - 1.0f) * size;
         w = v3_sub(w, v3_scale(offset, shift));
@@ -80,7 +46,7 @@ inline real menger_iterate(vec3 p, PARAMS, int record, orbit_trap* trap) {
             *trap = trap_update(*trap, v3_scale(w, 1.0f / size), FGR_TRUE);
         }
     }
-    return sd_cube(w, size);
+    return sd_box(w, v3_splat(size, size, size));
 }
 
 real scene_de(vec3 p, PARAMS) {

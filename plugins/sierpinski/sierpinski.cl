@@ -16,49 +16,10 @@
  * with scaling), but w stays in p's units: z itself would grow like scale^n, which overflows
  * float for far points or high iteration counts, where w merely stops changing. */
 
-#define SIERPINSKI_SQRT3 1.73205081f
 #define SIERPINSKI_INV_SQRT3 0.57735027f
 /* Orbit traps see the first few levels only: deeper ones vary faster than a pixel and would turn
  * the colour into speckle. */
 #define SIERPINSKI_TRAP_LEVELS 4
-
-/* Rotation by a uniform angle about a fixed unit axis: Rodrigues' matrix, built once per call
- * from the parameter so the loop does a matrix multiply instead of trigonometry. */
-typedef struct twist_matrix {
-    float3 row_x, row_y, row_z;
-} twist_matrix;
-
-inline twist_matrix twist_about(float3 axis, float degrees) {
-    float c = 1.0f;
-    float s = sincos(radians(degrees), &c);
-    float t = 1.0f - c;
-    twist_matrix m;
-    m.row_x = (float3)(t * axis.x * axis.x + c, t * axis.x * axis.y - s * axis.z,
-                       t * axis.x * axis.z + s * axis.y);
-    m.row_y = (float3)(t * axis.x * axis.y + s * axis.z, t * axis.y * axis.y + c,
-                       t * axis.y * axis.z - s * axis.x);
-    m.row_z = (float3)(t * axis.x * axis.z - s * axis.y, t * axis.y * axis.z + s * axis.x,
-                       t * axis.z * axis.z + c);
-    return m;
-}
-
-inline vec3 twist_apply(twist_matrix m, vec3 p) {
-    return v3(m.row_x.x * p.x + m.row_x.y * p.y + m.row_x.z * p.z,
-              m.row_y.x * p.x + m.row_y.y * p.y + m.row_y.z * p.z,
-              m.row_z.x * p.x + m.row_z.y * p.y + m.row_z.z * p.z);
-}
-
-/* Lower bound on the distance to the regular tetrahedron with corners size * (1,1,1),
- * size * (-1,-1,1), size * (1,-1,-1), size * (-1,1,-1). The largest signed distance to its four
- * face planes is exact over the faces but only a third of the truth towards a corner, where the
- * distance to its circumsphere is exact; both are bounds, so their maximum is. */
-inline real sd_tetrahedron_bound(vec3 p, float size) {
-    real faces =
-        fmax(fmax(-p.x - p.y - p.z, p.x + p.y - p.z), fmax(p.y + p.z - p.x, p.x + p.z - p.y));
-    real to_planes = (faces - size) * SIERPINSKI_INV_SQRT3;
-    real to_circumsphere = v3_length(p) - SIERPINSKI_SQRT3 * size;
-    return fmax(to_planes, to_circumsphere);
-}
 
 /* World to fractal coordinates: a rotation taking world +z to the diagonal (1, 1, 1), so the
  * tetrahedron stands on a face with its apex up the z axis at (0, 0, sqrt(3)). */
@@ -75,20 +36,20 @@ inline real sierpinski_iterate(vec3 p, PARAMS, int record, orbit_trap* trap) {
     const float scale = param_scale;
     const vec3 offset = param_offset;
     /* The twist turns about the diagonal (world z), through the corner being blown up. */
-    const twist_matrix twist = twist_about((float3)(SIERPINSKI_INV_SQRT3), param_twist);
+    const rotation3 twist = rotation_about_axis((float3)(SIERPINSKI_INV_SQRT3), param_twist);
     const int twisted = param_twist != 0.0f;
     vec3 w = tetrahedron_frame(p); /* the orbit point z_i times scale^-i */
     float size = 1.0f;             /* scale^-i: the size of one level-i tetrahedron */
     for (int i = 0; i < param_iterations; ++i) {
         w = fold_sierpinski(w);
-        if (twisted) w = twist_apply(twist, w);
+        if (twisted) w = op_rotate(w, twist);
         size /= scale;
         w = v3_sub(w, v3_scale(offset, (scale - 1.0f) * size));
         if (record && i < SIERPINSKI_TRAP_LEVELS) {
             *trap = trap_update(*trap, v3_scale(w, 1.0f / size), FGR_TRUE);
         }
     }
-    return sd_tetrahedron_bound(w, size);
+    return sd_tetrahedron(w, size);
 }
 
 real scene_de(vec3 p, PARAMS) {
