@@ -35,24 +35,12 @@ static const fgr_light lights[] = {
     FGR_POINT_LIGHT(-1.2f, -2.6f, 2.4f, 0.55f, 0.7f, 1.0f, 5.0f),
 };
 
-static const fgr_scene_desc scene = {
-    FGR_HEADER(fgr_scene_desc),
-    "benchmark",
-    "Benchmark",
+static const fgr_scene_desc scene = FGR_SCENE(
+    "benchmark", "Benchmark",
     "Mandelbulb, Menger sponge and primitives on a mirror floor: every effect at once",
-    benchmark_cl,
-    "benchmark.cl",
-    params,
-    FGR_COUNT(params),
-    cameras,
-    FGR_COUNT(cameras),
-    paths,
-    FGR_COUNT(paths),
-    lights,
-    FGR_COUNT(lights),
+    benchmark_cl, "benchmark.cl", params, cameras, paths, lights,
     FGR_EFFECT_AMBIENT_OCCLUSION | FGR_EFFECT_SOFT_SHADOWS | FGR_EFFECT_REFLECTIONS,
     /* The bulb's DE is an estimate (see plugins/mandelbulb): advance 0.8 DE. */
-    {FGR_HEADER(fgr_march_settings), 256u, 30.0f, 1.0f, 8u, 0.8f},
-};
+    FGR_MARCH(256u, 30.0f, 1.0f, 8u, 0.8f));
 
 FGR_PLUGIN_EXPORT const fgr_scene_desc* fgr_scene_entry(void) { return &scene; }

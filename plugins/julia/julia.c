@@ -55,23 +55,11 @@ static const fgr_light lights[] = {
  * 0.9 DE for a margin where the 4D potential's slice bends sharply. */
 #define JULIA_STEP_FACTOR 0.9f
 
-static const fgr_scene_desc scene = {
-    FGR_HEADER(fgr_scene_desc),
-    "julia",
-    "Quaternion Julia",
+static const fgr_scene_desc scene = FGR_SCENE(
+    "julia", "Quaternion Julia",
     "3D slice of the quaternion Julia set q -> q^2 + c, analytic running-derivative DE",
-    julia_cl,
-    "julia.cl",
-    params,
-    FGR_COUNT(params),
-    cameras,
-    FGR_COUNT(cameras),
-    paths,
-    FGR_COUNT(paths),
-    lights,
-    FGR_COUNT(lights),
+    julia_cl, "julia.cl", params, cameras, paths, lights,
     FGR_EFFECT_AMBIENT_OCCLUSION | FGR_EFFECT_SHADOWS,
-    {FGR_HEADER(fgr_march_settings), 256u, 10.0f, 1.0f, 12u, JULIA_STEP_FACTOR},
-};
+    FGR_MARCH(256u, 10.0f, 1.0f, 12u, JULIA_STEP_FACTOR));
 
 FGR_PLUGIN_EXPORT const fgr_scene_desc* fgr_scene_entry(void) { return &scene; }

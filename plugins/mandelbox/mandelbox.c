@@ -57,23 +57,11 @@ static const fgr_light lights[] = {
  * rays advance 0.9 DE for a margin at the fold seams. */
 #define MANDELBOX_STEP_FACTOR 0.9f
 
-static const fgr_scene_desc scene = {
-    FGR_HEADER(fgr_scene_desc),
-    "mandelbox",
-    "Mandelbox",
+static const fgr_scene_desc scene = FGR_SCENE(
+    "mandelbox", "Mandelbox",
     "Mandelbox: box fold, sphere fold and scale, running-derivative DE",
-    mandelbox_cl,
-    "mandelbox.cl",
-    params,
-    FGR_COUNT(params),
-    cameras,
-    FGR_COUNT(cameras),
-    paths,
-    FGR_COUNT(paths),
-    lights,
-    FGR_COUNT(lights),
+    mandelbox_cl, "mandelbox.cl", params, cameras, paths, lights,
     FGR_EFFECT_AMBIENT_OCCLUSION | FGR_EFFECT_SHADOWS,
-    {FGR_HEADER(fgr_march_settings), 256u, 60.0f, 1.0f, 16u, MANDELBOX_STEP_FACTOR},
-};
+    FGR_MARCH(256u, 60.0f, 1.0f, 16u, MANDELBOX_STEP_FACTOR));
 
 FGR_PLUGIN_EXPORT const fgr_scene_desc* fgr_scene_entry(void) { return &scene; }

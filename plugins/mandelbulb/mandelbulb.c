@@ -58,23 +58,11 @@ static const fgr_light lights[] = {
  * reference comparison (bench/compare_reference.sh) sets step_factor=1, the reference's rule. */
 #define MANDELBULB_STEP_FACTOR 0.8f
 
-static const fgr_scene_desc scene = {
-    FGR_HEADER(fgr_scene_desc),
-    "mandelbulb",
-    "Mandelbulb",
+static const fgr_scene_desc scene = FGR_SCENE(
+    "mandelbulb", "Mandelbulb",
     "power-n Mandelbulb, analytic running-derivative DE",
-    mandelbulb_cl,
-    "mandelbulb.cl",
-    params,
-    sizeof params / sizeof params[0],
-    cameras,
-    sizeof cameras / sizeof cameras[0],
-    paths,
-    sizeof paths / sizeof paths[0],
-    lights,
-    sizeof lights / sizeof lights[0],
+    mandelbulb_cl, "mandelbulb.cl", params, cameras, paths, lights,
     FGR_EFFECT_AMBIENT_OCCLUSION,
-    {FGR_HEADER(fgr_march_settings), 256u, 10.0f, 1.0f, 12u, MANDELBULB_STEP_FACTOR},
-};
+    FGR_MARCH(256u, 10.0f, 1.0f, 12u, MANDELBULB_STEP_FACTOR));
 
 FGR_PLUGIN_EXPORT const fgr_scene_desc* fgr_scene_entry(void) { return &scene; }

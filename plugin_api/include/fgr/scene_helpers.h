@@ -70,4 +70,19 @@
 
 #define FGR_COUNT(array) ((uint32_t)(sizeof(array) / sizeof((array)[0])))
 
+/* March settings: at most `steps` DE evaluations per ray, rays stop beyond `distance`, hit when
+ * DE < threshold * pixel footprint, `iterations` DE iterations by default, rays advance
+ * step_factor * DE (1 for strict bounds, below 1 for estimated DEs). */
+#define FGR_MARCH(steps, distance, threshold, iterations, step_factor) \
+    { FGR_HEADER(fgr_march_settings), steps, distance, threshold, iterations, step_factor }
+
+/* A whole scene description from static arrays of params, cameras, camera paths and lights. */
+#define FGR_SCENE(id, name, description, source, source_name, params, cameras, paths, lights,   \
+                  effects, march)                                                                 \
+    {                                                                                             \
+        FGR_HEADER(fgr_scene_desc), id, name, description, source, source_name, params,           \
+            FGR_COUNT(params), cameras, FGR_COUNT(cameras), paths, FGR_COUNT(paths), lights,      \
+            FGR_COUNT(lights), effects, march                                                     \
+    }
+
 #endif /* FGR_SCENE_HELPERS_H */
