@@ -137,3 +137,21 @@ TEST_F(RenderTest, SurfacesFacingTheLightAreBrighter) {
 
 }  // namespace
 }  // namespace fgr
+
+namespace fgr {
+namespace {
+
+TEST_F(RenderTest, SampleProgressIsReportedInOrderAndChangesNothing) {
+    FrameRequest request{32, 24, mandelbulb_->cameras.front().view,
+                         default_param_values(*mandelbulb_), 5};
+    const Frame quiet = render(*mandelbulb_, request);
+    std::vector<std::pair<int, int>> reports;
+    request.on_sample = [&](int done, int total) { reports.emplace_back(done, total); };
+    const Frame reported = render(*mandelbulb_, request);
+    ASSERT_EQ(reports.size(), 5u);
+    for (int i = 0; i < 5; ++i) EXPECT_EQ(reports[i], std::make_pair(i + 1, 5));
+    EXPECT_EQ(reported.image.rgb, quiet.image.rgb);
+}
+
+}  // namespace
+}  // namespace fgr

@@ -217,7 +217,14 @@ void render_to_file(const Scene& scene, const FrameRequest& request, const Compu
     Renderer renderer(device, cache, scene, switches);
     spdlog::info("kernel ready in {:.0f} ms", renderer.build_report().build_ms);
 
-    const Frame frame = renderer.render(request);
+    FrameRequest reported = request;
+    if (request.samples >= 8) {
+        // Long multi-sample renders say how far they are, about every tenth of the way.
+        reported.on_sample = [step = std::max(1, request.samples / 10)](int done, int total) {
+            if (done % step == 0 || done == total) spdlog::info("sample {}/{}", done, total);
+        };
+    }
+    const Frame frame = renderer.render(reported);
     fmt::print("render_ms {:.1f}\n", frame.render_ms);
     fmt::print("hits {}\n", frame.hits);
     try {

@@ -183,6 +183,10 @@ Frame Renderer::render(const FrameRequest& request) {
         render_kernel_.setArg(4, sample);
         device_.queue.enqueueNDRangeKernel(render_kernel_, cl::NullRange,
                                            global_range(tiles, group), cl::NDRange(group));
+        if (request.on_sample) {
+            device_.queue.finish();  // report each sample as it completes
+            request.on_sample(sample + 1, request.samples);
+        }
     }
     std::vector<float> host(static_cast<size_t>(plane) * 4);
     device_.queue.enqueueReadBuffer(planes, CL_TRUE, 0, host.size() * sizeof(float), host.data());

@@ -2,6 +2,7 @@
 // Rendering one scene on one OpenCL device: builds (or fetches from the cache) the scene's
 // program once, then renders frames whose camera and parameters change freely without a rebuild.
 
+#include <functional>
 #include <span>
 #include <vector>
 
@@ -21,6 +22,8 @@ struct FrameRequest {
     CameraView view;
     std::vector<float> params;  // laid out as default_param_values(scene)
     int samples = 1;            // per pixel: 1 is the pixel centre; more are jittered and averaged
+    // Called after each finished sample with (samples done, samples in all), when set.
+    std::function<void(int, int)> on_sample;
 };
 
 struct Frame {
