@@ -6,6 +6,12 @@
  *
  *     return trap_colour(trap, param_colour_mode, param_palette, param_base_colour);
  *
+ * or, for a fractal whose `iterate(vec3 p, PARAMS, int record, orbit_trap* trap)` returns the DE
+ * and records the orbit when asked, both scene functions at once:
+ *
+ *     #define FGR_SCENE_HAS_COLOUR
+ *     FGR_TRAP_COLOURED_SCENE(iterate)
+ *
  * declaring the parameters with FGR_COLOUR_PARAMS (see sdk/README.md):
  *   colour_mode  point|planes|axes|iterations  which trap drives the palette
  *   palette      one of FGR_PALETTE_NAMES        the colour ramp
@@ -93,3 +99,16 @@ inline vec3 trap_colour(orbit_trap trap, int mode, int palette_index, vec3 base)
     vec3 ramp = palette(t, palette_index);
     return v3_mul(v3_max(ramp, v3_splat(0.0f, 0.0f, 0.0f)), base);
 }
+
+/* scene_de and scene_colour of a fractal coloured by its orbit: `iterate` runs the iteration once
+ * for the distance, and again recording the orbit trap at the (few) points being shaded. */
+#define FGR_TRAP_COLOURED_SCENE(iterate)                                                    \
+    real scene_de(vec3 p, PARAMS) {                                                         \
+        orbit_trap unused;                                                                  \
+        return iterate(p, PARAMS_PASS, 0, &unused);                                         \
+    }                                                                                       \
+    vec3 scene_colour(vec3 p, PARAMS) {                                                     \
+        orbit_trap trap = trap_init();                                                      \
+        iterate(p, PARAMS_PASS, 1, &trap);                                                  \
+        return trap_colour(trap, param_colour_mode, param_palette, param_base_colour);      \
+    }

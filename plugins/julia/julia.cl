@@ -75,14 +75,5 @@ inline real julia_iterate(vec3 p, PARAMS, int record, orbit_trap* trap) {
     return fmax(potential_bound(r, dr, potential_scale), ball_bound);
 }
 
-real scene_de(vec3 p, PARAMS) {
-    orbit_trap unused;
-    return julia_iterate(p, PARAMS_PASS, 0, &unused);
-}
-
 #define FGR_SCENE_HAS_COLOUR
-vec3 scene_colour(vec3 p, PARAMS) {
-    orbit_trap trap = trap_init();
-    julia_iterate(p, PARAMS_PASS, 1, &trap);
-    return trap_colour(trap, param_colour_mode, param_palette, param_base_colour);
-}
+FGR_TRAP_COLOURED_SCENE(julia_iterate)

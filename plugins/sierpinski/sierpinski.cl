@@ -52,14 +52,5 @@ inline real sierpinski_iterate(vec3 p, PARAMS, int record, orbit_trap* trap) {
     return sd_tetrahedron(w, size);
 }
 
-real scene_de(vec3 p, PARAMS) {
-    orbit_trap unused;
-    return sierpinski_iterate(p, PARAMS_PASS, 0, &unused);
-}
-
 #define FGR_SCENE_HAS_COLOUR
-vec3 scene_colour(vec3 p, PARAMS) {
-    orbit_trap trap = trap_init();
-    sierpinski_iterate(p, PARAMS_PASS, 1, &trap);
-    return trap_colour(trap, param_colour_mode, param_palette, param_base_colour);
-}
+FGR_TRAP_COLOURED_SCENE(sierpinski_iterate)
