@@ -139,7 +139,7 @@ __kernel void fgr_probe_de(__global const float* points, int plane_size, int pac
 /* The surface normal the shading uses at each point (planes x, y, z in and out), with stencil
  * size eps: lets tests check normals are finite and unit length wherever rays can hit. */
 __kernel void fgr_probe_normal(__global const float* points, int plane_size, int packet_count,
-                               float eps, __global float* out, PARAMS) {
+                               __global float* out, PARAMS, float eps) {
     const int packet = get_global_id(0);
     if (packet >= packet_count) return;
     vec3 p = v3(fgr_load(packet, points), fgr_load(packet, points + plane_size),

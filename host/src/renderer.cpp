@@ -228,23 +228,36 @@ cl::Buffer Renderer::upload_points(std::span<const glm::vec3> points, int* packe
     return upload(coordinates);
 }
 
+std::vector<float> Renderer::run_probe(cl::Kernel& kernel, std::span<const glm::vec3> points,
+                                       const std::vector<float>& params, int outputs,
+                                       const std::function<void(cl::Kernel&)>& set_extra_args,
+                                       int* plane) {
+    int packets = 0;
+    cl::Buffer input = upload_points(points, &packets, plane);
+    cl::Buffer params_buffer = upload(params);
+    const size_t output_floats = static_cast<size_t>(*plane) * outputs;
+    cl::Buffer output(device_.context, CL_MEM_WRITE_ONLY, sizeof(float) * output_floats);
+    kernel.setArg(0, input);
+    kernel.setArg(1, *plane);
+    kernel.setArg(2, packets);
+    kernel.setArg(3, output);
+    kernel.setArg(4, params_buffer);
+    set_extra_args(kernel);  // the kernel's own arguments, from index 5
+    const int group = work_group_size(device_);
+    device_.queue.enqueueNDRangeKernel(kernel, cl::NullRange, global_range(packets, group),
+                                       cl::NDRange(group));
+    std::vector<float> planes(output_floats);
+    device_.queue.enqueueReadBuffer(output, CL_TRUE, 0, sizeof(float) * planes.size(),
+                                    planes.data());
+    return planes;
+}
+
 std::vector<float> Renderer::probe_de(std::span<const glm::vec3> points,
                                       const std::vector<float>& params) {
     if (points.empty()) return {};
-    int packets = 0, plane = 0;
-    cl::Buffer input = upload_points(points, &packets, &plane);
-    cl::Buffer params_buffer = upload(params);
-    cl::Buffer output(device_.context, CL_MEM_WRITE_ONLY, sizeof(float) * plane);
-    probe_kernel_.setArg(0, input);
-    probe_kernel_.setArg(1, plane);
-    probe_kernel_.setArg(2, packets);
-    probe_kernel_.setArg(3, output);
-    probe_kernel_.setArg(4, params_buffer);
-    const int group = work_group_size(device_);
-    device_.queue.enqueueNDRangeKernel(probe_kernel_, cl::NullRange, global_range(packets, group),
-                                       cl::NDRange(group));
-    std::vector<float> distances(plane);
-    device_.queue.enqueueReadBuffer(output, CL_TRUE, 0, sizeof(float) * plane, distances.data());
+    int plane = 0;
+    std::vector<float> distances =
+        run_probe(probe_kernel_, points, params, 1, [](cl::Kernel&) {}, &plane);
     distances.resize(points.size());
     return distances;
 }
@@ -252,21 +265,10 @@ std::vector<float> Renderer::probe_de(std::span<const glm::vec3> points,
 std::vector<glm::vec3> Renderer::probe_normals(std::span<const glm::vec3> points,
                                                const std::vector<float>& params, float eps) {
     if (points.empty()) return {};
-    int packets = 0, plane = 0;
-    cl::Buffer input = upload_points(points, &packets, &plane);
-    cl::Buffer params_buffer = upload(params);
-    cl::Buffer output(device_.context, CL_MEM_WRITE_ONLY, sizeof(float) * 3 * plane);
-    normal_kernel_.setArg(0, input);
-    normal_kernel_.setArg(1, plane);
-    normal_kernel_.setArg(2, packets);
-    normal_kernel_.setArg(3, eps);
-    normal_kernel_.setArg(4, output);
-    normal_kernel_.setArg(5, params_buffer);
-    const int group = work_group_size(device_);
-    device_.queue.enqueueNDRangeKernel(normal_kernel_, cl::NullRange, global_range(packets, group),
-                                       cl::NDRange(group));
-    std::vector<float> planes(static_cast<size_t>(plane) * 3);
-    device_.queue.enqueueReadBuffer(output, CL_TRUE, 0, sizeof(float) * planes.size(), planes.data());
+    int plane = 0;
+    const std::vector<float> planes = run_probe(
+        normal_kernel_, points, params, 3, [eps](cl::Kernel& kernel) { kernel.setArg(5, eps); },
+        &plane);
     std::vector<glm::vec3> normals(points.size());
     for (size_t i = 0; i < points.size(); ++i) {
         normals[i] = {planes[i], planes[plane + i], planes[2 * static_cast<size_t>(plane) + i]};

@@ -63,6 +63,12 @@ private:
     cl::Buffer upload(const std::vector<float>& values);
     // Points as planes x, y, z padded to whole packets, and the packet count.
     cl::Buffer upload_points(std::span<const glm::vec3> points, int* packets, int* plane);
+    // Runs a probe kernel (points, plane, packets, output, params, [own args]) over `points`;
+    // returns its `outputs` planes of *plane floats each.
+    std::vector<float> run_probe(cl::Kernel& kernel, std::span<const glm::vec3> points,
+                                 const std::vector<float>& params, int outputs,
+                                 const std::function<void(cl::Kernel&)>& set_extra_args,
+                                 int* plane);
 
     const ComputeDevice& device_;
     const Scene& scene_;
