@@ -1,9 +1,9 @@
 #include "fgr/image_io.hpp"
 
-#include <png.h>
-#include <unistd.h>
+#include "fgr/atomic_file.hpp"
 
-#include <atomic>
+#include <png.h>
+
 #include <cerrno>
 #include <csetjmp>
 #include <cstddef>
@@ -82,22 +82,6 @@ struct PngReader {
     }
 };
 
-// Deletes the file on scope exit unless it was committed (renamed into place).
-struct TemporaryFile {
-    fs::path path;
-    bool committed = false;
-
-    explicit TemporaryFile(fs::path temporary) : path(std::move(temporary)) {}
-    TemporaryFile(const TemporaryFile&) = delete;
-    TemporaryFile& operator=(const TemporaryFile&) = delete;
-    ~TemporaryFile() {
-        if (!committed) {
-            std::error_code ignored;
-            fs::remove(path, ignored);
-        }
-    }
-};
-
 // What the encoder needs of either image type: rows of big-endian samples and the colour space.
 struct PngPixels {
     int width = 0;
@@ -126,15 +110,6 @@ void validate_image(const fs::path& path, const Image& image) {
     }
 }
 
-// Beside the target, so the final rename stays within one file system and is atomic. The pid and
-// a counter keep concurrent writers (processes or threads) off each other's temporaries.
-fs::path temporary_path_for(const fs::path& target) {
-    static std::atomic<unsigned> counter{0};
-    const std::string suffix =
-        ".tmp-" + std::to_string(::getpid()) + "-" + std::to_string(counter.fetch_add(1));
-    return target.parent_path() / (target.filename().string() + suffix);
-}
-
 void write_rows(png_structp png, png_infop info, const PngPixels& image) {
     png_set_IHDR(png, info, static_cast<png_uint_32>(image.width),
                  static_cast<png_uint_32>(image.height), image.bit_depth, PNG_COLOR_TYPE_RGB,
@@ -160,20 +135,6 @@ bool encode(PngWriter& writer, const PngPixels& image) {
     }
     write_rows(writer.png, writer.info, image);
     return true;
-}
-
-// Flushes to the disk before the rename, so a crash cannot leave the target renamed but empty.
-std::string close_durably(std::FILE*& owned_file) {
-    std::FILE* file = std::exchange(owned_file, nullptr);
-    if (std::fflush(file) != 0 || ::fsync(::fileno(file)) != 0) {
-        const int error = errno;
-        std::fclose(file);
-        return errno_message(error);
-    }
-    if (std::fclose(file) != 0) {
-        return errno_message(errno);
-    }
-    return {};
 }
 
 // Empty on success, else why the file could not be written.
@@ -245,20 +206,11 @@ bool has_png_signature(std::FILE* file) {
 
 // Encodes to a temporary beside `path`, then renames it over `path`.
 void write_pixels_atomically(const fs::path& path, const PngPixels& image) {
-    if (!path.has_filename()) {
-        fail_write(path, "not a file name");
-    }
-    TemporaryFile temporary(temporary_path_for(path));
-    const std::string failure = encode_to_file(temporary.path, image);
+    const std::string failure = replace_file_atomically(
+        path, [&](const fs::path& temporary) { return encode_to_file(temporary, image); });
     if (!failure.empty()) {
         fail_write(path, failure);
     }
-    std::error_code error;
-    fs::rename(temporary.path, path, error);
-    if (error) {
-        fail_write(path, error.message());
-    }
-    temporary.committed = true;
 }
 
 }  // namespace
