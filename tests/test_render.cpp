@@ -153,5 +153,50 @@ TEST_F(RenderTest, SampleProgressIsReportedInOrderAndChangesNothing) {
     EXPECT_EQ(reported.image.rgb, quiet.image.rgb);
 }
 
+// The viewer refines one sample at a time: samples rendered singly from first_sample k and averaged
+// must give the image one multi-sample render gives.
+TEST_F(RenderTest, SamplesRenderedOneAtATimeAverageToTheMultiSampleImage) {
+    FrameRequest request{48, 36, mandelbulb_->cameras.front().view,
+                         default_param_values(*mandelbulb_), 4};
+    const Frame together = render(*mandelbulb_, request);
+    std::vector<float> sum(together.linear.size(), 0.0f);
+    for (int sample = 0; sample < 4; ++sample) {
+        request.samples = 1;
+        request.first_sample = sample;
+        const Frame single = render(*mandelbulb_, request);
+        for (size_t i = 0; i < sum.size(); ++i) sum[i] += single.linear[i];
+        if (sample > 0) EXPECT_EQ(single.hits, 0) << "depth comes from sample 0 only";
+    }
+    double largest = 0.0;
+    for (size_t i = 0; i < sum.size(); ++i) {
+        largest = std::max(largest, double(std::abs(sum[i] / 4.0f - together.linear[i])));
+    }
+    EXPECT_LT(largest, 1e-5);
+    // A jittered sample on its own differs from the centre sample somewhere.
+    request.first_sample = 0;
+    const Frame centre = render(*mandelbulb_, request);
+    request.first_sample = 1;
+    EXPECT_NE(render(*mandelbulb_, request).linear, centre.linear);
+}
+
+TEST_F(RenderTest, CancelStopsAFrameAndANeverCancellingHookChangesNothing) {
+    FrameRequest request{64, 48, mandelbulb_->cameras.front().view,
+                         default_param_values(*mandelbulb_)};
+    const Frame plain = render(*mandelbulb_, request);
+    int polls = 0;
+    request.cancel = [&] { return ++polls > 3; };
+    const Frame stopped = render(*mandelbulb_, request);
+    EXPECT_TRUE(stopped.cancelled);
+    EXPECT_TRUE(stopped.image.rgb.empty());
+    EXPECT_EQ(polls, 4) << "polled once per band until it said stop";
+    polls = 0;
+    request.cancel = [&] { ++polls; return false; };
+    const Frame banded = render(*mandelbulb_, request);
+    EXPECT_FALSE(banded.cancelled);
+    EXPECT_GT(polls, 4);
+    EXPECT_EQ(banded.image.rgb, plain.image.rgb);
+    EXPECT_EQ(banded.hits, plain.hits);
+}
+
 }  // namespace
 }  // namespace fgr

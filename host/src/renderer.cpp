@@ -58,6 +58,9 @@ void check_request(const Scene& scene, const FrameRequest& request) {
     if (request.samples < 1 || request.samples > kMaxSamples) {
         throw std::invalid_argument("samples per pixel must be between 1 and 4096");
     }
+    if (request.first_sample < 0 || request.first_sample > kMaxSamples) {
+        throw std::invalid_argument("first sample must be between 0 and 4096");
+    }
     if (request.params.size() != default_param_values(scene).size()) {
         throw std::invalid_argument("parameter buffer does not match the scene's parameters");
     }
@@ -82,6 +85,9 @@ const std::array<uint8_t, 4097>& srgb_table() {
 // the constructor compiles exactly the work-group function later frames use (PoCL specialises
 // its code per local size), keeping JIT time out of render_ms.
 int work_group_size(const ComputeDevice& device) { return device.info.is_cpu ? 8 : 64; }
+
+// A cancellable frame runs in this many launches.
+constexpr int kCancelBands = 32;
 
 cl::NDRange global_range(int items, int group) {
     return cl::NDRange(static_cast<size_t>((items + group - 1) / group) * group);
@@ -161,6 +167,26 @@ cl::Buffer Renderer::upload(const std::vector<float>& values) {
                       values.size() * sizeof(float), const_cast<float*>(values.data()));
 }
 
+bool Renderer::launch_tiles(int tiles, int group, const std::function<bool()>& cancel) {
+    if (!cancel) {
+        device_.queue.enqueueNDRangeKernel(render_kernel_, cl::NullRange, global_range(tiles, group),
+                                           cl::NDRange(group));
+        return true;
+    }
+    // Bands of whole work-groups, offset through the global work offset (get_global_id includes
+    // it), so cancelling costs at most one band.
+    const int groups = (tiles + group - 1) / group;
+    const int band = std::max(1, (groups + kCancelBands - 1) / kCancelBands) * group;
+    for (int first = 0; first < tiles; first += band) {
+        if (cancel()) return false;
+        device_.queue.enqueueNDRangeKernel(render_kernel_, cl::NDRange(first),
+                                           global_range(std::min(band, tiles - first), group),
+                                           cl::NDRange(group));
+        device_.queue.finish();
+    }
+    return !cancel();
+}
+
 Frame Renderer::render(const FrameRequest& request) {
     check_request(scene_, request);
     const TileLayout layout = tile_layout(switches_.packet_width, request.width, request.height);
@@ -178,14 +204,23 @@ Frame Renderer::render(const FrameRequest& request) {
     render_kernel_.setArg(6, lights_);
     render_kernel_.setArg(7, static_cast<cl_int>(scene_.lights.size()));
     const int group = work_group_size(device_);
-    // Samples accumulate in the planes, one launch each, in order (in-order queue).
-    for (int sample = 0; sample < request.samples; ++sample) {
-        render_kernel_.setArg(4, sample);
-        device_.queue.enqueueNDRangeKernel(render_kernel_, cl::NullRange,
-                                           global_range(tiles, group), cl::NDRange(group));
+    // Samples accumulate in the planes, one launch each, in order (in-order queue). Sample 0
+    // overwrites them; a request starting later starts from zeroed planes instead.
+    if (request.first_sample > 0) {
+        device_.queue.enqueueFillBuffer(planes, 0.0f, 0, sizeof(float) * 3 * plane);
+        device_.queue.enqueueFillBuffer(planes, -1.0f, sizeof(float) * 3 * plane,
+                                        sizeof(float) * plane);
+    }
+    for (int done = 0; done < request.samples; ++done) {
+        render_kernel_.setArg(4, request.first_sample + done);
+        if (!launch_tiles(tiles, group, request.cancel)) {
+            Frame cancelled;
+            cancelled.cancelled = true;
+            return cancelled;
+        }
         if (request.on_sample) {
             device_.queue.finish();  // report each sample as it completes
-            request.on_sample(sample + 1, request.samples);
+            request.on_sample(done + 1, request.samples);
         }
     }
     std::vector<float> host(static_cast<size_t>(plane) * 4);

@@ -22,16 +22,25 @@ struct FrameRequest {
     CameraView view;
     std::vector<float> params;  // laid out as default_param_values(scene)
     int samples = 1;            // per pixel: 1 is the pixel centre; more are jittered and averaged
+    // Index of the first sample rendered: samples first_sample .. first_sample + samples - 1, so
+    // a caller can accumulate one sample at a time and get the same image as one long render
+    // (sample 0 is the pixel centre, later ones are jittered).
+    int first_sample = 0;
     // Called after each finished sample with (samples done, samples in all), when set.
     std::function<void(int, int)> on_sample;
+    // Polled between bands of tiles, when set: returning true abandons the frame (Frame::cancelled),
+    // so an interactive caller never waits for a slow frame it no longer wants.
+    std::function<bool()> cancel;
 };
 
 struct Frame {
     Image8 image;               // sRGB, gamma-encoded
     std::vector<float> linear;  // row-major linear RGB, averaged over samples, before exposure
     std::vector<float> depth;   // row-major distance along the ray; -1 where the ray missed
+                                // (written by sample 0 only: all -1 when first_sample > 0)
     long hits = 0;              // pixels whose ray met the surface
     double render_ms = 0.0;     // kernel, read-back and encoding; no build, no file output
+    bool cancelled = false;     // FrameRequest::cancel stopped it: no pixels
 };
 
 // Image sizes fgr accepts; larger would not fit device buffers on small machines.
@@ -61,6 +70,8 @@ private:
     // timed frame (counted in build_report().build_ms).
     void warm_up();
     cl::Buffer upload(const std::vector<float>& values);
+    // Launches the render kernel over `tiles`; false when `cancel` (if set) asked to stop.
+    bool launch_tiles(int tiles, int group, const std::function<bool()>& cancel);
     // Points as planes x, y, z padded to whole packets, and the packet count.
     cl::Buffer upload_points(std::span<const glm::vec3> points, int* packets, int* plane);
     // Runs a probe kernel (points, plane, packets, output, params, [own args]) over `points`;
