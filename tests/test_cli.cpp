@@ -4,12 +4,8 @@
 
 #include <gtest/gtest.h>
 
-#include <fcntl.h>
-#include <poll.h>
-#include <signal.h>
-#include <sys/types.h>
-#include <sys/wait.h>
-#include <unistd.h>
+#include "child_process.hpp"
+
 
 #include <algorithm>
 #include <array>
@@ -28,8 +24,6 @@
 #include <string>
 #include <vector>
 
-extern char** environ;
-
 namespace fgr {
 namespace {
 namespace fs = std::filesystem;
@@ -39,167 +33,27 @@ constexpr std::chrono::seconds kTimeout{120};
 
 // --- Running fgr ---------------------------------------------------------------------------------
 
-struct RunResult {
-    int exit_code = -1;   // valid when exited
-    bool exited = false;  // terminated through exit()
-    int term_signal = 0;  // the signal that killed it, 0 if none
-    bool timed_out = false;
-    std::string out;
-    std::string err;
-};
+using test::read_file;
+using test::RunResult;
 
-std::string describe(const std::vector<std::string>& args) {
-    std::string text = "fgr";
-    for (const std::string& arg : args) text += " '" + arg + "'";
-    return text;
-}
+std::string describe(const std::vector<std::string>& args) { return test::describe("fgr", args); }
 
-std::ostream& operator<<(std::ostream& os, const RunResult& result) {
-    if (result.timed_out) os << "timed out after " << kTimeout.count() << " s; ";
-    if (result.exited) os << "exit " << result.exit_code;
-    if (result.term_signal != 0) os << "killed by signal " << result.term_signal;
-    return os << "\n--- stdout ---\n" << result.out << "--- stderr ---\n" << result.err << "---";
-}
-
-// A pipe whose ends close themselves; both ends are close-on-exec.
-class Pipe {
-public:
-    Pipe() {
-        if (pipe2(fds_.data(), O_CLOEXEC) != 0) fds_ = {-1, -1};
-    }
-    Pipe(const Pipe&) = delete;
-    Pipe& operator=(const Pipe&) = delete;
-    ~Pipe() {
-        close_read();
-        close_write();
-    }
-    bool ok() const { return fds_[0] >= 0; }
-    int read_end() const { return fds_[0]; }
-    int write_end() const { return fds_[1]; }
-    void close_read() { close_fd(fds_[0]); }
-    void close_write() { close_fd(fds_[1]); }
-
-private:
-    static void close_fd(int& fd) {
-        if (fd >= 0) ::close(fd);
-        fd = -1;
-    }
-    std::array<int, 2> fds_{};
-};
-
-// Runs fgr with `args` in `working_dir`, capturing stdout and stderr. The child gets the caller's
-// environment minus FGR_PLUGIN_PATH, so it must find its plugins next to itself. A child still
-// running after kTimeout is killed and reported as timed out.
+// Runs fgr with `args` in `working_dir`. The child gets the caller's environment minus
+// FGR_PLUGIN_PATH, so it must find its plugins next to itself.
 RunResult run_fgr(const std::vector<std::string>& args, const fs::path& working_dir) {
-    RunResult result;
-
-    // Everything the child needs is prepared before fork(): after it only async-signal-safe calls.
-    const std::string exe = kFgrExe.string();
-    const std::string cwd = working_dir.string();
-    std::vector<std::string> storage;
-    storage.push_back(exe);
-    storage.insert(storage.end(), args.begin(), args.end());
-    std::vector<char*> argv;
-    for (std::string& arg : storage) argv.push_back(arg.data());
-    argv.push_back(nullptr);
-    std::vector<char*> envp;
-    for (char** entry = environ; *entry != nullptr; ++entry) {
-        if (std::strncmp(*entry, "FGR_PLUGIN_PATH=", 16) != 0) envp.push_back(*entry);
-    }
-    envp.push_back(nullptr);
-
-    Pipe out_pipe;
-    Pipe err_pipe;
-    if (!out_pipe.ok() || !err_pipe.ok()) {
-        result.err = std::string("test harness: pipe2 failed: ") + std::strerror(errno);
-        return result;
-    }
-
-    const pid_t pid = fork();
-    if (pid < 0) {
-        result.err = std::string("test harness: fork failed: ") + std::strerror(errno);
-        return result;
-    }
-    if (pid == 0) {
-        const int null_fd = ::open("/dev/null", O_RDONLY);
-        if (null_fd < 0 || dup2(null_fd, STDIN_FILENO) < 0) _exit(126);
-        if (dup2(out_pipe.write_end(), STDOUT_FILENO) < 0) _exit(126);
-        if (dup2(err_pipe.write_end(), STDERR_FILENO) < 0) _exit(126);
-        if (chdir(cwd.c_str()) != 0) _exit(126);
-        execve(exe.c_str(), argv.data(), envp.data());
-        _exit(127);
-    }
-    out_pipe.close_write();
-    err_pipe.close_write();
-
-    const auto deadline = std::chrono::steady_clock::now() + kTimeout;
-    std::array<pollfd, 2> polled{
-        {{out_pipe.read_end(), POLLIN, 0}, {err_pipe.read_end(), POLLIN, 0}}};
-    std::array<std::string*, 2> sinks{&result.out, &result.err};
-    int open_streams = 2;
-    while (open_streams > 0) {
-        const auto left = std::chrono::duration_cast<std::chrono::milliseconds>(
-            deadline - std::chrono::steady_clock::now());
-        if (left.count() <= 0) {
-            result.timed_out = true;
-            kill(pid, SIGKILL);
-            break;
-        }
-        const int ready = poll(polled.data(), polled.size(), static_cast<int>(left.count()));
-        if (ready < 0) {
-            if (errno == EINTR) continue;
-            kill(pid, SIGKILL);
-            break;
-        }
-        for (std::size_t i = 0; i < polled.size(); ++i) {
-            if (polled[i].fd < 0 || polled[i].revents == 0) continue;
-            char buffer[4096];
-            const ssize_t n = ::read(polled[i].fd, buffer, sizeof buffer);
-            if (n > 0) {
-                sinks[i]->append(buffer, static_cast<std::size_t>(n));
-            } else if (n == 0 || errno != EINTR) {
-                polled[i].fd = -1;  // poll() ignores negative descriptors
-                --open_streams;
-            }
-        }
-    }
-
-    int status = 0;
-    while (waitpid(pid, &status, 0) < 0 && errno == EINTR) {
-    }
-    if (WIFEXITED(status)) {
-        result.exited = true;
-        result.exit_code = WEXITSTATUS(status);
-    } else if (WIFSIGNALED(status)) {
-        result.term_signal = WTERMSIG(status);
-    }
-    return result;
+    test::ChildOptions options;
+    options.working_dir = working_dir;
+    options.environment["FGR_PLUGIN_PATH"] = std::nullopt;
+    options.timeout = kTimeout;
+    return test::run_child(kFgrExe, args, options);
 }
 
 // --- Fixture: a fresh, empty working directory per test -----------------------------------------
 
-class TempDir {
+class TempDir : public test::TempDir {
 public:
-    TempDir() {
-        std::string pattern = (fs::temp_directory_path() / "fgr_cli_test.XXXXXX").string();
-        if (mkdtemp(pattern.data()) != nullptr) path_ = pattern;
-    }
-    TempDir(const TempDir&) = delete;
-    TempDir& operator=(const TempDir&) = delete;
-    ~TempDir() {
-        std::error_code ignored;
-        if (!path_.empty()) fs::remove_all(path_, ignored);
-    }
-    const fs::path& path() const { return path_; }
-
-private:
-    fs::path path_;
+    TempDir() : test::TempDir("fgr_cli_test") {}
 };
-
-std::string read_file(const fs::path& file) {
-    std::ifstream in(file, std::ios::binary);
-    return std::string(std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>());
-}
 
 std::vector<std::string> directory_listing(const fs::path& directory) {
     std::vector<std::string> names;
