@@ -3,6 +3,8 @@
 #include <algorithm>
 #include <cstdio>
 #include <filesystem>
+#include <map>
+#include <tuple>
 #include <optional>
 #include <string>
 #include <vector>
@@ -13,12 +15,14 @@
 #include <spdlog/spdlog.h>
 
 #include "fgr/camera.hpp"
+#include "fgr/camera_path_file.hpp"
 #include "fgr/discovery.hpp"
 #include "fgr/image_io.hpp"
 #include "fgr/opencl_device.hpp"
 #include "fgr/parameters.hpp"
 #include "fgr/program_cache.hpp"
 #include "fgr/renderer.hpp"
+#include "fgr/viewer/viewer.hpp"
 
 namespace fgr {
 namespace {
@@ -138,19 +142,38 @@ int command_info() {
     return 0;
 }
 
+// A camera path given by name (one of the scene's) or as a JSON file the viewer saved.
+CameraPath find_camera_path(const Scene& scene, const std::string& argument) {
+    if (looks_like_camera_path_file(argument)) {
+        CameraPathFile file;
+        try {
+            file = read_camera_path_file(argument);
+        } catch (const std::runtime_error& error) {
+            throw UsageError(error.what());
+        }
+        if (!file.scene.empty() && file.scene != scene.id) {
+            spdlog::warn("camera path '{}' was recorded in scene '{}', rendering it in '{}'",
+                         argument, file.scene, scene.id);
+        }
+        return file.path;
+    }
+    const CameraPath* path = scene.find_camera_path(argument);
+    if (!path) {
+        throw UsageError(fmt::format("scene '{}' has no camera path '{}' (see `fgr list`)",
+                                     scene.id, argument));
+    }
+    return *path;
+}
+
 CameraView choose_view(const Scene& scene, const RenderOptions& options) {
     if (options.camera_path) {
-        const CameraPath* path = scene.find_camera_path(*options.camera_path);
-        if (!path) {
-            throw UsageError(fmt::format("scene '{}' has no camera path '{}' (see `fgr list`)",
-                                         scene.id, *options.camera_path));
-        }
-        const float first = path->keyframes.front().time, last = path->keyframes.back().time;
+        const CameraPath path = find_camera_path(scene, *options.camera_path);
+        const float first = path.keyframes.front().time, last = path.keyframes.back().time;
         if (!(*options.time >= first && *options.time <= last)) {
             throw UsageError(fmt::format("--time {} is outside camera path '{}' [{}, {}]",
-                                         *options.time, path->name, first, last));
+                                         *options.time, path.name, first, last));
         }
-        return evaluate_camera_path(*path, *options.time);
+        return evaluate_camera_path(path, *options.time);
     }
     if (options.camera) {
         const NamedCamera* camera = scene.find_camera(*options.camera);
@@ -241,8 +264,13 @@ void render_to_file(const Scene& scene, const FrameRequest& request, const Compu
 }
 
 FrameRequest default_request(const Scene& scene, const RenderOptions& options) {
-    return {options.width, options.height, scene.cameras.front().view, default_param_values(scene),
-            options.samples};
+    FrameRequest request;
+    request.width = options.width;
+    request.height = options.height;
+    request.view = scene.cameras.front().view;
+    request.params = default_param_values(scene);
+    request.samples = options.samples;
+    return request;
 }
 
 int render_all(const RenderOptions& options) {
@@ -295,7 +323,8 @@ void add_render_command(CLI::App& app, RenderOptions& options) {
     render->add_option("--set", options.assignments, "set a parameter: id=value (repeatable)")
         ->allow_extra_args(false);
     auto* camera = render->add_option("--camera", options.camera, "named camera of the scene");
-    auto* path = render->add_option("--camera-path", options.camera_path, "camera path of the scene");
+    auto* path = render->add_option("--camera-path", options.camera_path,
+                                    "camera path of the scene, or a .json file saved by `fgr view`");
     path->excludes(camera);
     render->add_option("--time", options.time, "time along the camera path, in seconds");
     render->add_option("--spp", options.samples,
@@ -311,6 +340,90 @@ void add_render_command(CLI::App& app, RenderOptions& options) {
     render->add_option("--packet-width", options.packet_width,
                        "rays per work-item (default: 16 on CPUs, 1 on GPUs)")
         ->check(CLI::IsMember({1, 4, 8, 16}));
+}
+
+// Window sizes offered by --preset and in the viewer's panel.
+const std::map<std::string, std::pair<int, int>>& window_presets() {
+    static const std::map<std::string, std::pair<int, int>> presets = {
+        {"1366x768", {1366, 768}},
+        {"1920x1080", {1920, 1080}},
+        {"2560x1440", {2560, 1440}},
+        {"3840x2160", {3840, 2160}}};
+    return presets;
+}
+
+struct ViewCommandOptions {
+    viewer::ViewerOptions viewer;
+    std::string preset;
+    std::string camera_path_file;
+    std::string replay;
+    double exit_after = 0.0;
+};
+
+void add_view_command(CLI::App& app, ViewCommandOptions& options) {
+    CLI::App* view = app.add_subcommand(
+        "view", "open the interactive viewer (press H in it for the key bindings)");
+    viewer::ViewerOptions& viewer = options.viewer;
+    view->add_option("scene", viewer.scene, "scene to open first (default: mandelbulb)");
+    view->add_option("--width", viewer.width, "window width in pixels (default 1280)")
+        ->check(CLI::Range(64, kMaxImageSide));
+    view->add_option("--height", viewer.height, "window height in pixels (default 720)")
+        ->check(CLI::Range(64, kMaxImageSide));
+    std::vector<std::string> names;
+    for (const auto& [name, size] : window_presets()) names.push_back(name);
+    view->add_option("--preset", options.preset, "window size preset")
+        ->check(CLI::IsMember(names));
+    view->add_flag("--fullscreen", viewer.fullscreen, "start fullscreen (F11 toggles)");
+    view->add_option("--target-ms", viewer.target_ms,
+                     "frame time to hold while moving, in ms (default 33)")
+        ->check(CLI::Range(5.0, 1000.0));
+    view->add_option("--samples", viewer.sample_cap,
+                     "samples per pixel accumulated when still and for screenshots (default 16)")
+        ->check(CLI::Range(1, 1024));
+    view->add_option("--set", viewer.assignments, "set a parameter of the first scene: id=value")
+        ->allow_extra_args(false);
+    view->add_option("--effects", viewer.effect_changes,
+                     "change the first scene's effects, e.g. +shadows,-ambient_occlusion");
+    view->add_option("--camera-path", options.camera_path_file,
+                     "a .json camera path saved by the viewer, to play with P");
+    view->add_option("--output-dir", viewer.output_dir,
+                     "where F12 screenshots and saved camera paths go (default: .)");
+    view->add_option("--replay", options.replay, "feed timed input events from a file");
+    view->add_option("--exit-after", options.exit_after, "quit after this many seconds")
+        ->check(CLI::PositiveNumber);
+    view->add_flag("--stats", viewer.print_stats,
+                   "print frame-time statistics and the final camera on exit");
+    view->add_option("--device", viewer.device, "OpenCL device index (see `fgr info`)")
+        ->check(CLI::NonNegativeNumber);
+    view->add_option("--packet-width", viewer.packet_width,
+                     "rays per work-item (default: 16 on CPUs, 1 on GPUs)")
+        ->check(CLI::IsMember({1, 4, 8, 16}));
+}
+
+int command_view(ViewCommandOptions& options) {
+    viewer::ViewerOptions& viewer = options.viewer;
+    if (!options.preset.empty()) {
+        std::tie(viewer.width, viewer.height) = window_presets().at(options.preset);
+    }
+    try {
+        apply_effect_changes(0, viewer.effect_changes);
+    } catch (const std::invalid_argument& error) {
+        throw UsageError(error.what());
+    }
+    if (!options.camera_path_file.empty()) {
+        if (!looks_like_camera_path_file(options.camera_path_file)) {
+            throw UsageError("--camera-path must name a .json file saved by the viewer");
+        }
+        viewer.camera_path_file = options.camera_path_file;
+    }
+    if (!options.replay.empty()) viewer.replay = options.replay;
+    if (options.exit_after > 0.0) viewer.exit_after_seconds = options.exit_after;
+    std::error_code error;
+    if (!std::filesystem::is_directory(viewer.output_dir, error)) {
+        throw UsageError(fmt::format("--output-dir '{}' is not a directory",
+                                     viewer.output_dir.string()));
+    }
+    return viewer::run_viewer(viewer);
 }
 
 void configure_logging(bool verbose) {
@@ -337,13 +450,16 @@ int run_cli(int argc, char** argv) {
     app.add_subcommand("info", "list OpenCL platforms and devices");
     RenderOptions render_options;
     add_render_command(app, render_options);
+    ViewCommandOptions view_options;
+    add_view_command(app, view_options);
     if (argc < 2) {
         std::fputs(app.help().c_str(), stdout);
-        return report_error("no command given (commands: list, info, render)", kExitUsage);
+        return report_error("no command given (commands: list, info, render, view)", kExitUsage);
     }
     if (const std::string first = argv[1]; !first.empty() && first.front() != '-' &&
-        first != "list" && first != "info" && first != "render") {
-        return report_error(fmt::format("unknown command '{}' (commands: list, info, render)", first),
+        first != "list" && first != "info" && first != "render" && first != "view") {
+        return report_error(
+            fmt::format("unknown command '{}' (commands: list, info, render, view)", first),
                             kExitUsage);
     }
     try {
@@ -358,6 +474,7 @@ int run_cli(int argc, char** argv) {
         const std::string command = app.get_subcommands().front()->get_name();
         if (command == "list") return command_list();
         if (command == "info") return command_info();
+        if (command == "view") return command_view(view_options);
         return command_render(render_options);
     } catch (const UsageError& error) {
         return report_error(error.what(), kExitUsage);

@@ -1,0 +1,141 @@
+#pragma once
+// The viewer's render thread. The window thread posts the state to show (latest wins) and takes
+// finished frames; it never waits on OpenCL. The worker builds kernels (keeping the last image on
+// screen meanwhile), renders previews at a reduced resolution while the view changes, refines the
+// still view sample by sample, renders screenshots at full quality, and reports the distance
+// estimate at the camera for the fly speed.
+
+#include <cmath>
+#include <condition_variable>
+#include <cstdint>
+#include <deque>
+#include <filesystem>
+#include <map>
+#include <memory>
+#include <mutex>
+#include <optional>
+#include <string>
+#include <thread>
+#include <utility>
+#include <vector>
+
+#include "fgr/image_io.hpp"
+#include "fgr/opencl_device.hpp"
+#include "fgr/program_cache.hpp"
+#include "fgr/renderer.hpp"
+#include "fgr/scene.hpp"
+#include "fgr/viewer/adaptive_quality.hpp"
+
+namespace fgr::viewer {
+
+// Everything that decides the image. `generation` changes whenever anything else but
+// `interactive` does, so the worker knows when to restart refinement.
+struct ViewState {
+    int scene = 0;  // index into the worker's scene list
+    uint64_t effects = 0;
+    CameraView view;
+    std::vector<float> params;
+    int width = 1;   // full resolution
+    int height = 1;
+    bool interactive = false;  // the view is changing: preview frames, no refinement
+    uint64_t generation = 0;
+};
+
+struct DisplayFrame {
+    Image8 image;  // tone-mapped sRGB at the rendered size
+    float scale = 1.0f;    // rendered size / full size
+    int samples = 1;       // samples per pixel averaged into it
+    double render_ms = 0;  // the pass that produced it
+    uint64_t generation = 0;
+};
+
+struct WorkerStatus {
+    bool compiling = false;
+    std::string compiling_scene;  // id of the scene being built
+    std::string error;            // build failure of the shown (scene, effects), one line
+    std::string error_log;        // the compiler's output for it
+    float de_at_camera = -1.0f;   // < 0 until known
+    bool idle = false;            // the posted state is fully refined (or failed to build)
+    uint64_t idle_generation = 0; // ... for this generation
+    int pending_screenshots = 0;
+};
+
+struct ScreenshotRequest {
+    ViewState state;  // rendered at state.width x state.height
+    int samples = 16;
+    std::filesystem::path file;
+};
+
+class RenderWorker {
+public:
+    // Opens the OpenCL device on the calling thread (throws std::runtime_error when there is
+    // none), then starts the render thread. `scenes` must outlive the worker.
+    RenderWorker(const std::vector<Scene>& scenes, int device_index, int packet_width,
+                 QualitySettings quality);
+    ~RenderWorker();
+    RenderWorker(const RenderWorker&) = delete;
+    RenderWorker& operator=(const RenderWorker&) = delete;
+
+    void submit(ViewState state);
+    void set_quality(QualitySettings quality);
+    void request_screenshot(ScreenshotRequest request);
+
+    // The newest frame finished since the last call, if any.
+    std::optional<DisplayFrame> take_frame();
+    WorkerStatus status() const;
+    // One-line messages for the panel's log (screenshots written, build failures), oldest first.
+    std::vector<std::string> take_messages();
+    const DeviceInfo& device_info() const { return device_.info; }
+
+    // Finishes pending screenshots, abandons refinement, and stops the thread.
+    void stop();
+
+private:
+    struct RendererKey {
+        int scene;
+        uint64_t effects;
+        auto operator<=>(const RendererKey&) const = default;
+    };
+
+    void run();
+    // The state to work on, or none when the thread should stop; waits while idle.
+    bool next_job(ViewState* state, std::optional<ScreenshotRequest>* screenshot);
+    Renderer* renderer_for(const ViewState& state);
+    void render_pass(Renderer& renderer, const ViewState& state);
+    void render_preview(Renderer& renderer, const ViewState& state, float scale);
+    void refine(Renderer& renderer, const ViewState& state, int sample);
+    void take_screenshot(const ScreenshotRequest& request);
+    void probe_camera(Renderer& renderer, const ViewState& state);
+    void publish(DisplayFrame frame);
+    void mark_idle(uint64_t generation);
+    void post_message(std::string message);
+
+    const std::vector<Scene>& scenes_;
+    ComputeDevice device_;
+    int packet_width_;
+    ProgramCache cache_;
+    std::map<RendererKey, std::unique_ptr<Renderer>> renderers_;  // render thread only
+    std::map<RendererKey, std::pair<std::string, std::string>> failures_;  // summary, log
+
+    // Refinement of the current generation (render thread only).
+    uint64_t accumulated_generation_ = UINT64_MAX;
+    int accumulated_samples_ = 0;
+    std::vector<float> accumulation_;  // sum of linear RGB over the samples
+    int probed_scene_ = -1;
+    glm::vec3 probed_position_{NAN};
+    std::vector<float> probed_params_;
+
+    mutable std::mutex mutex_;
+    std::condition_variable wake_;
+    std::optional<ViewState> state_;
+    QualityController quality_;
+    std::deque<ScreenshotRequest> screenshots_;
+    std::optional<DisplayFrame> frame_;
+    WorkerStatus status_;
+    uint64_t previewed_generation_ = UINT64_MAX;  // the last interactive state previewed
+    std::vector<std::string> messages_;
+    bool stopping_ = false;
+    std::thread thread_;
+};
+
+}  // namespace fgr::viewer

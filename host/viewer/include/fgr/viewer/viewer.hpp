@@ -1,0 +1,35 @@
+#pragma once
+// `fgr view`: the interactive window. Rendering runs on its own thread, so input and the panel
+// never wait on a slow frame; see README "Viewer" for the controls.
+
+#include <filesystem>
+#include <optional>
+#include <string>
+#include <vector>
+
+namespace fgr::viewer {
+
+struct ViewerOptions {
+    std::string scene;              // id to open first; empty: mandelbulb, else the first found
+    int width = 1280;               // window size in pixels
+    int height = 720;
+    bool fullscreen = false;
+    double target_ms = 33.0;        // frame time to hold while the view changes
+    int sample_cap = 16;            // samples per pixel accumulated while still, and for F12
+    int device = -1;                // OpenCL device index, -1: first GPU, else first device
+    int packet_width = 0;           // 0: the device's preference
+    std::vector<std::string> assignments;   // --set id=value for the first scene
+    std::string effect_changes;             // --effects for the first scene
+    std::optional<std::filesystem::path> camera_path_file;  // load (and list) a recorded path
+    std::filesystem::path output_dir = ".";  // screenshots and saved camera paths
+    std::optional<std::filesystem::path> replay;  // scripted input (see replay.hpp)
+    std::optional<double> exit_after_seconds;
+    bool print_stats = false;       // frame-time statistics and the final camera on stdout
+};
+
+// Runs the viewer until the window is closed, Escape, --exit-after or the replay's quit.
+// Returns the process exit code. Throws fgr::UsageError for bad options (exit code 2) and
+// std::runtime_error for failures (no display, no OpenCL device...).
+int run_viewer(const ViewerOptions& options);
+
+}  // namespace fgr::viewer

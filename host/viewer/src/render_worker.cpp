@@ -1,0 +1,319 @@
+#include "fgr/viewer/render_worker.hpp"
+
+#include <algorithm>
+#include <cmath>
+
+#include <fmt/format.h>
+#include <spdlog/spdlog.h>
+
+#include "fgr/parameters.hpp"
+
+namespace fgr::viewer {
+namespace {
+
+// Linear RGB (already averaged) to what the window shows: exposure, tone map, sRGB.
+Image8 display_image(const Scene& scene, const std::vector<float>& params,
+                     const std::vector<float>& linear, float scale_by, int width, int height) {
+    const float exposure = param_value(scene, params, "exposure") * scale_by;
+    const auto op = static_cast<ToneMap>(param_value(scene, params, "tone_map"));
+    Image8 image{width, height, std::vector<uint8_t>(linear.size())};
+    for (size_t i = 0; i < linear.size(); ++i) {
+        image.rgb[i] = encode_srgb(tone_map(linear[i] * exposure, op));
+    }
+    return image;
+}
+
+FrameRequest frame_request(const ViewState& state, int width, int height) {
+    FrameRequest request;
+    request.width = width;
+    request.height = height;
+    request.view = state.view;
+    request.params = state.params;
+    return request;
+}
+
+}  // namespace
+
+RenderWorker::RenderWorker(const std::vector<Scene>& scenes, int device_index, int packet_width,
+                           QualitySettings quality)
+    : scenes_(scenes),
+      device_(open_device(device_index)),
+      packet_width_(packet_width ? packet_width : preferred_packet_width(device_.info)),
+      cache_(ProgramCache::default_directory()),
+      quality_(quality) {
+    thread_ = std::thread([this] { run(); });
+}
+
+RenderWorker::~RenderWorker() { stop(); }
+
+void RenderWorker::stop() {
+    {
+        std::lock_guard lock(mutex_);
+        stopping_ = true;
+    }
+    wake_.notify_all();
+    if (thread_.joinable()) thread_.join();
+}
+
+void RenderWorker::submit(ViewState state) {
+    {
+        std::lock_guard lock(mutex_);
+        if (state_ && state_->generation == state.generation &&
+            state_->interactive == state.interactive) {
+            return;
+        }
+        if (!state_ || state_->generation != state.generation) status_.idle = false;
+        state_ = std::move(state);
+    }
+    wake_.notify_all();
+}
+
+void RenderWorker::set_quality(QualitySettings quality) {
+    {
+        std::lock_guard lock(mutex_);
+        quality_.set_settings(quality);
+        status_.idle = false;  // a higher cap means more samples to add
+    }
+    wake_.notify_all();
+}
+
+void RenderWorker::request_screenshot(ScreenshotRequest request) {
+    {
+        std::lock_guard lock(mutex_);
+        screenshots_.push_back(std::move(request));
+        status_.pending_screenshots = static_cast<int>(screenshots_.size());
+    }
+    wake_.notify_all();
+}
+
+std::optional<DisplayFrame> RenderWorker::take_frame() {
+    std::lock_guard lock(mutex_);
+    return std::exchange(frame_, std::nullopt);
+}
+
+WorkerStatus RenderWorker::status() const {
+    std::lock_guard lock(mutex_);
+    return status_;
+}
+
+std::vector<std::string> RenderWorker::take_messages() {
+    std::lock_guard lock(mutex_);
+    return std::exchange(messages_, {});
+}
+
+void RenderWorker::post_message(std::string message) {
+    std::lock_guard lock(mutex_);
+    messages_.push_back(std::move(message));
+}
+
+void RenderWorker::publish(DisplayFrame frame) {
+    std::lock_guard lock(mutex_);
+    frame_ = std::move(frame);
+}
+
+void RenderWorker::mark_idle(uint64_t generation) {
+    std::lock_guard lock(mutex_);
+    if (state_ && state_->generation == generation && !state_->interactive) {
+        status_.idle = true;
+        status_.idle_generation = generation;
+    }
+}
+
+bool RenderWorker::next_job(ViewState* state, std::optional<ScreenshotRequest>* screenshot) {
+    std::unique_lock lock(mutex_);
+    // Work is a screenshot, or a state not yet fully refined; an interactive state already
+    // previewed waits for the next change (or for the view to settle).
+    wake_.wait(lock, [this] {
+        return stopping_ || !screenshots_.empty() ||
+               (state_ && !status_.idle &&
+                !(state_->interactive && state_->generation == previewed_generation_));
+    });
+    if (!screenshots_.empty()) {
+        *screenshot = std::move(screenshots_.front());
+        screenshots_.pop_front();
+        return true;
+    }
+    if (stopping_) return false;
+    *state = *state_;
+    return true;
+}
+
+void RenderWorker::run() {
+    for (;;) {
+        ViewState state;
+        std::optional<ScreenshotRequest> screenshot;
+        if (!next_job(&state, &screenshot)) return;
+        try {
+            if (screenshot) {
+                take_screenshot(*screenshot);
+                std::lock_guard lock(mutex_);
+                status_.pending_screenshots = static_cast<int>(screenshots_.size());
+                continue;
+            }
+            Renderer* renderer = renderer_for(state);
+            if (renderer == nullptr) {
+                mark_idle(state.generation);  // the build failed: nothing to refine
+                continue;
+            }
+            render_pass(*renderer, state);
+        } catch (const std::exception& error) {
+            // A render that fails (device out of memory, lost device) must not end the viewer:
+            // report it and wait for the next change.
+            spdlog::error("render failed: {}", error.what());
+            post_message(fmt::format("render failed: {}", error.what()));
+            mark_idle(state.generation);
+        }
+    }
+}
+
+Renderer* RenderWorker::renderer_for(const ViewState& state) {
+    const RendererKey key{state.scene, state.effects};
+    if (auto found = renderers_.find(key); found != renderers_.end()) {
+        std::lock_guard lock(mutex_);
+        status_.error.clear();
+        status_.error_log.clear();
+        return found->second.get();
+    }
+    const Scene& scene = scenes_.at(static_cast<size_t>(state.scene));
+    if (auto failed = failures_.find(key); failed != failures_.end()) {
+        std::lock_guard lock(mutex_);
+        std::tie(status_.error, status_.error_log) = failed->second;
+        return nullptr;
+    }
+    {
+        std::lock_guard lock(mutex_);
+        status_.compiling = true;
+        status_.compiling_scene = scene.id;
+    }
+    std::unique_ptr<Renderer> renderer;
+    std::pair<std::string, std::string> failure;
+    try {
+        renderer = std::make_unique<Renderer>(device_, cache_, scene,
+                                              KernelSwitches{packet_width_, state.effects});
+        spdlog::info("kernel for '{}' (effects: {}) ready in {:.0f} ms", scene.id,
+                     effect_names(state.effects), renderer->build_report().build_ms);
+    } catch (const KernelBuildError& error) {
+        failure = {fmt::format("scene '{}': {}", scene.id, error.what()), error.build_log()};
+    } catch (const cl::Error& error) {
+        failure = {fmt::format("scene '{}': {} failed: {}", scene.id, error.what(),
+                               cl_error_name(error.err())),
+                   ""};
+    }
+    std::lock_guard lock(mutex_);
+    status_.compiling = false;
+    status_.compiling_scene.clear();
+    if (!renderer) {
+        spdlog::error("{}", failure.first);
+        if (!failure.second.empty()) fmt::print(stderr, "{}\n", failure.second);
+        messages_.push_back(failure.first);
+        std::tie(status_.error, status_.error_log) = failure;
+        failures_[key] = failure;
+        return nullptr;
+    }
+    status_.error.clear();
+    status_.error_log.clear();
+    return (renderers_[key] = std::move(renderer)).get();
+}
+
+void RenderWorker::render_pass(Renderer& renderer, const ViewState& state) {
+    probe_camera(renderer, state);
+    if (accumulated_generation_ != state.generation) {
+        accumulated_generation_ = state.generation;
+        accumulated_samples_ = 0;
+    }
+    RenderPass pass;
+    {
+        std::lock_guard lock(mutex_);
+        pass = quality_.next_pass(state.interactive, accumulated_samples_,
+                                  int64_t{state.width} * state.height);
+    }
+    switch (pass.kind) {
+        case RenderPass::Kind::Preview: render_preview(renderer, state, pass.scale); break;
+        case RenderPass::Kind::Refine: refine(renderer, state, pass.sample); break;
+        case RenderPass::Kind::Idle: mark_idle(state.generation); break;
+    }
+}
+
+void RenderWorker::render_preview(Renderer& renderer, const ViewState& state, float scale) {
+    const int width = scaled_size(state.width, scale);
+    const int height = scaled_size(state.height, scale);
+    // Previews are short by design and never cancelled: while the view keeps changing, every
+    // one of them would be.
+    Frame frame = renderer.render(frame_request(state, width, height));
+    {
+        std::lock_guard lock(mutex_);
+        quality_.record_frame(int64_t{width} * height, frame.render_ms);
+        previewed_generation_ = state.generation;
+    }
+    publish({std::move(frame.image), scale, 1, frame.render_ms, state.generation});
+}
+
+void RenderWorker::refine(Renderer& renderer, const ViewState& state, int sample) {
+    FrameRequest request = frame_request(state, state.width, state.height);
+    request.first_sample = sample;
+    request.cancel = [this, generation = state.generation] {
+        std::lock_guard lock(mutex_);
+        return stopping_ || (state_ && state_->generation != generation);
+    };
+    Frame frame = renderer.render(request);
+    if (frame.cancelled) return;
+    {
+        std::lock_guard lock(mutex_);
+        quality_.record_frame(int64_t{state.width} * state.height, frame.render_ms);
+    }
+    if (sample == 0) {
+        accumulation_ = std::move(frame.linear);
+        accumulated_samples_ = 1;
+        publish({std::move(frame.image), 1.0f, 1, frame.render_ms, state.generation});
+        return;
+    }
+    for (size_t i = 0; i < accumulation_.size(); ++i) accumulation_[i] += frame.linear[i];
+    ++accumulated_samples_;
+    const Scene& scene = scenes_.at(static_cast<size_t>(state.scene));
+    publish({display_image(scene, state.params, accumulation_, 1.0f / static_cast<float>(accumulated_samples_),
+                           state.width, state.height),
+             1.0f, accumulated_samples_, frame.render_ms, state.generation});
+}
+
+void RenderWorker::take_screenshot(const ScreenshotRequest& request) {
+    const ViewState& state = request.state;
+    Renderer* renderer = renderer_for(state);
+    if (renderer == nullptr) {
+        const std::string message =
+            fmt::format("screenshot not taken: the kernel for this view did not build");
+        spdlog::error("{}", message);
+        post_message(message);
+        return;
+    }
+    spdlog::info("screenshot: rendering {}x{} at {} samples per pixel", state.width, state.height,
+                 request.samples);
+    FrameRequest frame_request_full = frame_request(state, state.width, state.height);
+    frame_request_full.samples = request.samples;
+    const Frame frame = renderer->render(frame_request_full);
+    try {
+        write_png(request.file, frame.image);
+    } catch (const std::exception& error) {
+        spdlog::error("screenshot: {}", error.what());
+        post_message(fmt::format("screenshot failed: {}", error.what()));
+        return;
+    }
+    spdlog::info("screenshot: wrote {} ({}x{}, {} spp, {:.0f} ms)", request.file.string(),
+                 state.width, state.height, request.samples, frame.render_ms);
+    post_message(fmt::format("wrote {}", request.file.string()));
+}
+
+void RenderWorker::probe_camera(Renderer& renderer, const ViewState& state) {
+    if (state.scene == probed_scene_ && state.view.position == probed_position_ &&
+        state.params == probed_params_) {
+        return;
+    }
+    const std::vector<float> de = renderer.probe_de(std::span(&state.view.position, 1),
+                                                    state.params);
+    probed_scene_ = state.scene;
+    probed_position_ = state.view.position;
+    probed_params_ = state.params;
+    std::lock_guard lock(mutex_);
+    status_.de_at_camera = std::isfinite(de.at(0)) ? std::abs(de[0]) : -1.0f;
+}
+
+}  // namespace fgr::viewer

@@ -1,0 +1,138 @@
+// Camera path JSON files: what the viewer saves is what `fgr render --camera-path FILE` reads back,
+// and every malformed file is refused with a one-line reason.
+#include <filesystem>
+#include <fstream>
+
+#include <gtest/gtest.h>
+
+#include "fgr/camera.hpp"
+#include "fgr/camera_path_file.hpp"
+
+namespace fgr {
+namespace {
+
+CameraPathFile sample_path() {
+    CameraPathFile file;
+    file.scene = "mandelbulb";
+    file.path.name = "recorded";
+    file.path.keyframes = {{0.0f, {{2.0f, -2.0f, 1.0f}, {0.0f, 0.0f, 0.0f}, {0, 0, 1}, 60.0f}},
+                           {2.0f, {{0.5f, -3.0f, 0.25f}, {0.1f, 0.0f, 0.0f}, {0, 0, 1}, 45.5f}},
+                           {5.5f, {{-1.0f, 1.0f, 2.0f}, {0.0f, 0.2f, 0.0f}, {0, 1, 0}, 30.0f}}};
+    return file;
+}
+
+std::string keyframes_json(const std::string& keyframes) {
+    return R"({"format": "fgr-camera-path", "version": 1, "scene": "s", "name": "n", "keyframes": )" +
+           keyframes + "}";
+}
+
+constexpr const char* kKeyframe0 = R"({"time": 0, "position": [1, 0, 0], "target": [0, 0, 0]})";
+
+std::string two_keyframes(const std::string& second) {
+    return keyframes_json(std::string("[") + kKeyframe0 + ", " + second + "]");
+}
+
+TEST(CameraPathFile, JsonRoundTripKeepsEveryKeyframeExactly) {
+    const CameraPathFile original = sample_path();
+    const CameraPathFile parsed = parse_camera_path_json(camera_path_json(original));
+    EXPECT_EQ(parsed.scene, "mandelbulb");
+    EXPECT_EQ(parsed.path.name, "recorded");
+    ASSERT_EQ(parsed.path.keyframes.size(), 3u);
+    for (size_t i = 0; i < 3; ++i) {
+        const Keyframe& a = original.path.keyframes[i];
+        const Keyframe& b = parsed.path.keyframes[i];
+        EXPECT_EQ(a.time, b.time);
+        EXPECT_EQ(a.view.position, b.view.position);
+        EXPECT_EQ(a.view.target, b.view.target);
+        EXPECT_EQ(a.view.up, b.view.up);
+        EXPECT_EQ(a.view.fov_degrees, b.view.fov_degrees);
+    }
+    // The parsed path evaluates like the original.
+    const CameraView mid = evaluate_camera_path(parsed.path, 3.0f);
+    const CameraView expected = evaluate_camera_path(original.path, 3.0f);
+    EXPECT_EQ(mid.position, expected.position);
+}
+
+TEST(CameraPathFile, MissingUpAndFovTakeDefaults) {
+    const CameraPathFile file = parse_camera_path_json(
+        two_keyframes(R"({"time": 1, "position": [0, 1, 0], "target": [0, 0, 0]})"));
+    EXPECT_EQ(file.path.keyframes[1].view.up, glm::vec3(0, 0, 1));
+    EXPECT_EQ(file.path.keyframes[1].view.fov_degrees, 60.0f);
+}
+
+TEST(CameraPathFile, MalformedFilesAreRefusedWithTheReason) {
+    const std::vector<std::pair<std::string, std::string>> cases = {
+        {"{not json", "not valid JSON"},
+        {"[1, 2]", "must be a JSON object"},
+        {R"({"format": "other", "version": 1})", "\"format\""},
+        {R"({"format": "fgr-camera-path", "version": 2, "keyframes": []})", "version"},
+        {keyframes_json("{}"), "\"keyframes\" must be an array"},
+        {keyframes_json(std::string("[") + kKeyframe0 + "]"), "at least two keyframes"},
+        {two_keyframes(R"({"time": 0, "position": [0, 1, 0], "target": [0, 0, 0]})"),
+         "keyframe 1 \"time\" must be after"},
+        {two_keyframes(R"({"time": 1, "position": [0, 1], "target": [0, 0, 0]})"),
+         "keyframe 1 \"position\" must be an array of 3 numbers"},
+        {two_keyframes(R"({"time": 1, "target": [0, 0, 0]})"), "keyframe 1 \"position\" is missing"},
+        {two_keyframes(R"({"time": 1, "position": [0, "a", 0], "target": [0, 0, 0]})"),
+         "must be a number"},
+        {two_keyframes(R"({"time": 1, "position": [0, 1e39, 0], "target": [0, 0, 0]})"),
+         "must be finite"},
+        {two_keyframes(R"({"time": 1, "position": [0, 0, 0], "target": [0, 0, 0]})"),
+         "target equal to position"},
+        {two_keyframes(R"({"time": 1, "position": [0, 1, 0], "target": [0, 0, 0], "fov": 180})"),
+         "\"fov\" must be in (0, 180)"},
+        {two_keyframes(R"({"time": 1, "position": [0, 1, 0], "target": [0, 0, 0], "up": [0,0,0]})"),
+         "\"up\" must not be zero"},
+        {two_keyframes(R"({"position": [0, 1, 0], "target": [0, 0, 0]})"), "\"time\" is missing"},
+    };
+    for (const auto& [text, reason] : cases) {
+        try {
+            parse_camera_path_json(text);
+            ADD_FAILURE() << "accepted: " << text;
+        } catch (const std::runtime_error& error) {
+            EXPECT_NE(std::string(error.what()).find(reason), std::string::npos)
+                << "for " << text << " got: " << error.what();
+            EXPECT_EQ(std::string(error.what()).find('\n'), std::string::npos);
+        }
+    }
+}
+
+TEST(CameraPathFile, FilesAreWrittenAtomicallyAndReadBack) {
+    const auto directory = std::filesystem::temp_directory_path() / "fgr_camera_path_file_test";
+    std::filesystem::remove_all(directory);
+    std::filesystem::create_directories(directory);
+    const auto file = directory / "path.json";
+    write_camera_path_file(file, sample_path());
+    EXPECT_EQ(read_camera_path_file(file).path.keyframes.size(), 3u);
+    // Only the file itself: no temporaries left beside it.
+    EXPECT_EQ(std::distance(std::filesystem::directory_iterator(directory),
+                            std::filesystem::directory_iterator()),
+              1);
+    EXPECT_THROW(write_camera_path_file(directory / "missing" / "p.json", sample_path()),
+                 std::runtime_error);
+    try {
+        read_camera_path_file(directory / "absent.json");
+        ADD_FAILURE() << "read a missing file";
+    } catch (const std::runtime_error& error) {
+        EXPECT_NE(std::string(error.what()).find("absent.json"), std::string::npos);
+    }
+    std::ofstream(directory / "bad.json") << "{";
+    try {
+        read_camera_path_file(directory / "bad.json");
+        ADD_FAILURE() << "read a broken file";
+    } catch (const std::runtime_error& error) {
+        EXPECT_NE(std::string(error.what()).find("bad.json': not valid JSON"), std::string::npos)
+            << error.what();
+    }
+    std::filesystem::remove_all(directory);
+}
+
+TEST(CameraPathFile, OnlyJsonArgumentsAreTakenForFiles) {
+    EXPECT_TRUE(looks_like_camera_path_file("flight.json"));
+    EXPECT_TRUE(looks_like_camera_path_file("/tmp/a/b.json"));
+    EXPECT_FALSE(looks_like_camera_path_file("orbit"));
+    EXPECT_FALSE(looks_like_camera_path_file(".json"));
+}
+
+}  // namespace
+}  // namespace fgr
