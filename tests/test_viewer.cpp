@@ -242,6 +242,27 @@ TEST_F(ViewerTest, RecordedPathIsSavedAndRendersFromTheCommandLine) {
     EXPECT_TRUE(fs::exists(dir() / "path.png"));
 }
 
+TEST_F(ViewerTest, ResizingRendersAtTheNewSizeAndPPlaysTheScenesPath) {
+    const ViewerRun run = view(R"(0 wait_idle
+0 resize 320 200
+0.5 wait_idle
+0 key F12
+0 key P
+1.5 quit
+)");
+    ASSERT_EQ(run.result.exit_code, 0) << run.result;
+    ASSERT_EQ(run.screenshots.size(), 1u) << run.result;
+    const Image8 shot = read_png(run.screenshots[0]);
+    EXPECT_EQ(shot.width, 320);
+    EXPECT_EQ(shot.height, 200);
+    // No movement keys: only the camera path moved the camera off its default (2, -2, 1).
+    const std::vector<double> position = stat_values(run.result.out, "camera_position");
+    ASSERT_EQ(position.size(), 3u) << run.result;
+    EXPECT_GT(std::abs(position[0] - 2.0) + std::abs(position[1] + 2.0) + std::abs(position[2] - 1.0),
+              0.05)
+        << run.result;
+}
+
 TEST_F(ViewerTest, SurvivesASceneWhoseKernelDoesNotCompile) {
     // The fixture folder comes first in the search path, so the broken scene opens first.
     const ViewerRun run = view(R"(0 wait_idle

@@ -241,6 +241,7 @@ private:
     void submit_view();
     void receive_frame();
     bool view_idle() const;
+    void log_refined_view();  // once each time the view becomes fully refined (debug level)
 
     // Actions.
     void switch_scene(int index);
@@ -309,6 +310,7 @@ private:
     double last_change_ = -1e9;
     uint64_t generation_ = 0;
     WorkerStatus status_;
+    bool was_idle_ = false;
     std::optional<DisplayFrame> shown_;  // image data lives in the texture; this keeps its facts
     ImVec2 panel_min_{0, 0}, panel_max_{0, 0};
     std::deque<std::string> messages_;
@@ -407,6 +409,7 @@ int ViewerApp::run() {
         ui_stats_.add(dt * 1000.0);
 
         status_ = worker_->status();
+        log_refined_view();
         feed_replay();
         pump_events();
         update_playback(dt);
@@ -665,6 +668,15 @@ void ViewerApp::receive_frame() {
     shown_ = std::move(frame);
 }
 
+void ViewerApp::log_refined_view() {
+    const bool idle = view_idle();
+    if (idle && !was_idle_ && shown_) {
+        spdlog::debug("view refined: {}x{}, {} samples per pixel", last_state_.width,
+                      last_state_.height, shown_->samples);
+    }
+    was_idle_ = idle;
+}
+
 bool ViewerApp::view_idle() const {
     return status_.idle && status_.idle_generation == generation_ && !status_.compiling &&
            status_.pending_screenshots == 0 && !last_state_.interactive;
@@ -896,7 +908,11 @@ void ViewerApp::draw_camera_section() {
     ImGui::SliderFloat("fov", &current.camera.fov_degrees, 5.0f, 150.0f, "%.0f deg");
     ImGui::SliderFloat("speed", &speed_factor_, 1e-3f, 1e3f, "%.3g x DE/s",
                        ImGuiSliderFlags_Logarithmic);
-    ImGui::Text("distance to surface %.3g", double(status_.de_at_camera));
+    if (status_.de_at_camera >= 0.0f) {
+        ImGui::Text("distance to surface %.3g", double(status_.de_at_camera));
+    } else {
+        ImGui::TextDisabled("distance to surface unknown");
+    }
 
     const std::vector<CameraPath> paths = playable_paths();
     if (!paths.empty()) {
@@ -1055,6 +1071,8 @@ void ViewerApp::draw_help() {
     const ImVec2 display = ImGui::GetIO().DisplaySize;
     ImGui::SetNextWindowPos(ImVec2(display.x * 0.5f, display.y * 0.5f), ImGuiCond_Always,
                             ImVec2(0.5f, 0.5f));
+    ImGui::SetNextWindowBgAlpha(0.95f);
+    ImGui::SetNextWindowFocus();
     ImGui::Begin("Key bindings", &show_help_,
                  ImGuiWindowFlags_AlwaysAutoResize | ImGuiWindowFlags_NoCollapse);
     if (ImGui::BeginTable("keys", 2, ImGuiTableFlags_RowBg)) {

@@ -1,0 +1,197 @@
+// The viewer's render thread without a window: a still view is refined sample by sample to the
+// cap and then left alone, a moving view gets reduced-resolution previews, a newer view abandons
+// refinement of an older one, a kernel that fails to build is reported while the worker keeps
+// serving other scenes, screenshots are written at full size even when stop() follows at once,
+// and the distance estimate at the camera is reported for the fly speed.
+#include <gtest/gtest.h>
+
+#include <chrono>
+#include <filesystem>
+#include <functional>
+#include <thread>
+
+#include "child_process.hpp"
+#include "fgr/image_io.hpp"
+#include "fgr/opencl_device.hpp"
+#include "fgr/parameters.hpp"
+#include "fgr/program_cache.hpp"
+#include "fgr/renderer.hpp"
+#include "fgr/viewer/render_worker.hpp"
+#include "test_scenes.hpp"
+
+namespace fgr::viewer {
+namespace {
+
+using namespace std::chrono_literals;
+
+constexpr int kSphere = 0;
+constexpr int kBroken = 1;
+
+std::vector<Scene> worker_scenes() {
+    Scene broken = test::inline_scene("real scene_de(vec3 p, PARAMS) { return undeclared_radius; }");
+    broken.id = "broken";
+    return {test::sphere_scene(), broken};
+}
+
+class RenderWorkerTest : public ::testing::Test {
+protected:
+    ViewState state(int scene, int width, int height, uint64_t generation,
+                    bool interactive = false) const {
+        ViewState view;
+        view.scene = scene;
+        view.effects = scenes_[static_cast<size_t>(scene)].effects;
+        view.view = scenes_[static_cast<size_t>(scene)].cameras.front().view;
+        view.params = default_param_values(scenes_[static_cast<size_t>(scene)]);
+        view.width = width;
+        view.height = height;
+        view.generation = generation;
+        view.interactive = interactive;
+        return view;
+    }
+
+    // Polls until `done` holds (collecting frames on the way) or two minutes pass.
+    bool wait_for(const std::function<bool()>& done) {
+        const auto deadline = std::chrono::steady_clock::now() + 120s;
+        while (std::chrono::steady_clock::now() < deadline) {
+            if (auto frame = worker_->take_frame()) frames_.push_back(std::move(*frame));
+            if (done()) return true;
+            std::this_thread::sleep_for(2ms);
+        }
+        return false;
+    }
+
+    bool wait_idle(uint64_t generation) {
+        return wait_for([&] {
+            const WorkerStatus status = worker_->status();
+            return status.idle && status.idle_generation == generation;
+        });
+    }
+
+    std::vector<Scene> scenes_ = worker_scenes();
+    std::unique_ptr<RenderWorker> worker_ =
+        std::make_unique<RenderWorker>(scenes_, -1, 0, QualitySettings{33.0, 3, 0.1f});
+    std::vector<DisplayFrame> frames_;
+};
+
+TEST_F(RenderWorkerTest, StillViewIsRefinedToTheSampleCapThenLeftAlone) {
+    worker_->submit(state(kSphere, 64, 48, 1));
+    ASSERT_TRUE(wait_idle(1));
+    // Frames are handed over latest-wins, so a quick one may be superseded before it is taken.
+    ASSERT_FALSE(frames_.empty());
+    EXPECT_EQ(frames_.back().samples, 3);
+    for (size_t i = 0; i < frames_.size(); ++i) {
+        if (i > 0) EXPECT_GT(frames_[i].samples, frames_[i - 1].samples);
+        EXPECT_EQ(frames_[i].scale, 1.0f);
+        EXPECT_EQ(frames_[i].image.width, 64);
+        EXPECT_EQ(frames_[i].generation, 1u);
+    }
+    // The accumulated image is the one a 3-sample render gives.
+    ComputeDevice device = open_device(-1);
+    ProgramCache cache{std::filesystem::path()};
+    Renderer renderer(device, cache, scenes_[kSphere],
+                      {preferred_packet_width(device.info), scenes_[kSphere].effects});
+    FrameRequest request;
+    request.width = 64;
+    request.height = 48;
+    request.view = scenes_[kSphere].cameras.front().view;
+    request.params = default_param_values(scenes_[kSphere]);
+    request.samples = 3;
+    const Image8 expected = renderer.render(request).image;
+    int largest = 0;
+    for (size_t i = 0; i < expected.rgb.size(); ++i) {
+        largest = std::max(largest, std::abs(int(expected.rgb[i]) - int(frames_.back().image.rgb[i])));
+    }
+    EXPECT_LE(largest, 1);
+    // Idle means idle: nothing more arrives for the same view.
+    std::this_thread::sleep_for(200ms);
+    EXPECT_FALSE(worker_->take_frame().has_value());
+}
+
+TEST_F(RenderWorkerTest, MovingViewGetsPreviewsAtTheResolutionThatHoldsTheTarget) {
+    worker_->set_quality({0.5, 3, 0.1f});  // a target no full frame can meet
+    worker_->submit(state(kSphere, 256, 192, 1));
+    ASSERT_TRUE(wait_idle(1));  // measures the cost per pixel
+    frames_.clear();
+    for (uint64_t generation = 2; generation < 6; ++generation) {
+        ViewState moving = state(kSphere, 256, 192, generation, true);
+        moving.view.position.x += 0.01f * static_cast<float>(generation);
+        worker_->submit(moving);
+        ASSERT_TRUE(wait_for([&] { return !frames_.empty() && frames_.back().generation == generation; }));
+    }
+    for (const DisplayFrame& frame : frames_) {
+        EXPECT_LT(frame.scale, 1.0f);
+        EXPECT_GE(frame.scale, 0.1f);
+        EXPECT_EQ(frame.samples, 1);
+        EXPECT_EQ(frame.image.width, scaled_size(256, frame.scale));
+        EXPECT_EQ(frame.image.height, scaled_size(192, frame.scale));
+    }
+    // An interactive view already previewed is not rendered again until it changes.
+    frames_.clear();
+    std::this_thread::sleep_for(200ms);
+    EXPECT_FALSE(worker_->take_frame().has_value());
+}
+
+TEST_F(RenderWorkerTest, ANewerViewAbandonsRefiningTheOlderOne) {
+    worker_->set_quality({33.0, 1000, 0.1f});
+    worker_->submit(state(kSphere, 320, 240, 1));
+    ASSERT_TRUE(wait_for([&] { return !frames_.empty(); }));
+    ViewState moved = state(kSphere, 320, 240, 2);
+    moved.view.position.z += 0.5f;
+    worker_->submit(moved);
+    ASSERT_TRUE(wait_for([&] { return frames_.back().generation == 2 && frames_.back().samples >= 2; }));
+    // Once the newer view shows, no frame of the older one follows; its refinement (1000
+    // samples) was abandoned, or the test would have timed out waiting.
+    bool seen_new = false;
+    for (const DisplayFrame& frame : frames_) {
+        seen_new |= frame.generation == 2;
+        if (seen_new) EXPECT_EQ(frame.generation, 2u);
+    }
+}
+
+TEST_F(RenderWorkerTest, ABrokenKernelIsReportedAndOtherScenesStillRender) {
+    worker_->submit(state(kBroken, 32, 24, 1));
+    ASSERT_TRUE(wait_idle(1));
+    WorkerStatus status = worker_->status();
+    EXPECT_NE(status.error.find("broken"), std::string::npos) << status.error;
+    EXPECT_NE(status.error_log.find("undeclared_radius"), std::string::npos) << status.error_log;
+    EXPECT_TRUE(frames_.empty());
+    const std::vector<std::string> messages = worker_->take_messages();
+    ASSERT_EQ(messages.size(), 1u);
+
+    worker_->submit(state(kSphere, 32, 24, 2));
+    ASSERT_TRUE(wait_idle(2));
+    EXPECT_FALSE(frames_.empty());
+    EXPECT_TRUE(worker_->status().error.empty());
+    // Going back does not rebuild: the failure is remembered, not retried on every change.
+    worker_->submit(state(kBroken, 32, 24, 3));
+    ASSERT_TRUE(wait_idle(3));
+    EXPECT_FALSE(worker_->status().error.empty());
+    EXPECT_TRUE(worker_->take_messages().empty());
+}
+
+TEST_F(RenderWorkerTest, ScreenshotsAreFinishedBeforeStopReturns) {
+    test::TempDir dir("fgr_worker_test");
+    ScreenshotRequest request;
+    request.state = state(kSphere, 120, 90, 1);
+    request.samples = 4;
+    request.file = dir.path() / "shot.png";
+    worker_->request_screenshot(request);
+    worker_->stop();
+    const Image8 shot = read_png(dir.path() / "shot.png");
+    EXPECT_EQ(shot.width, 120);
+    EXPECT_EQ(shot.height, 90);
+    const std::vector<std::string> messages = worker_->take_messages();
+    ASSERT_EQ(messages.size(), 1u);
+    EXPECT_NE(messages[0].find("shot.png"), std::string::npos);
+}
+
+TEST_F(RenderWorkerTest, ReportsTheDistanceEstimateAtTheCamera) {
+    EXPECT_LT(worker_->status().de_at_camera, 0.0f) << "unknown before the first frame";
+    worker_->submit(state(kSphere, 16, 12, 1));
+    ASSERT_TRUE(wait_idle(1));
+    // The camera is 3 from the centre of a sphere of radius 0.4.
+    EXPECT_NEAR(worker_->status().de_at_camera, 2.6f, 1e-4f);
+}
+
+}  // namespace
+}  // namespace fgr::viewer
