@@ -14,6 +14,7 @@
 #include "fgr/image_io.hpp"
 #include "fgr/opencl_device.hpp"
 #include "fgr/parameters.hpp"
+#include "fgr/plugin.h"
 #include "fgr/program_cache.hpp"
 #include "fgr/renderer.hpp"
 #include "fgr/viewer/render_worker.hpp"
@@ -167,6 +168,19 @@ TEST_F(RenderWorkerTest, ABrokenKernelIsReportedAndOtherScenesStillRender) {
     ASSERT_TRUE(wait_idle(3));
     EXPECT_FALSE(worker_->status().error.empty());
     EXPECT_TRUE(worker_->take_messages().empty());
+}
+
+TEST_F(RenderWorkerTest, ChangingTheEffectsBuildsTheirKernelAndChangesTheImage) {
+    worker_->submit(state(kSphere, 48, 36, 1));
+    ASSERT_TRUE(wait_idle(1));
+    const Image8 plain = frames_.back().image;
+    ViewState glowing = state(kSphere, 48, 36, 2);
+    glowing.effects = FGR_EFFECT_GLOW;  // near misses around the sphere light up
+    worker_->submit(glowing);
+    ASSERT_TRUE(wait_idle(2));
+    EXPECT_TRUE(worker_->status().error.empty()) << worker_->status().error;
+    EXPECT_EQ(frames_.back().generation, 2u);
+    EXPECT_NE(frames_.back().image.rgb, plain.rgb);
 }
 
 TEST_F(RenderWorkerTest, ScreenshotsAreFinishedBeforeStopReturns) {
