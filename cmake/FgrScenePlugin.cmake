@@ -1,16 +1,27 @@
+# fgr_add_scene_plugin(NAME SOURCES file.c... [CL_SOURCES file.cl...])
+#
+# Builds the scene plugin NAME.so: a shared library that exports only fgr_scene_entry. Each
+# CL source is embedded as a C array in a generated header <stem>_cl.h, as
+#   static const char <stem>_cl[];       the OpenCL source, NUL-terminated
+#   static const char <stem>_cl_path[];  its absolute path, for `fgr view --dev` to watch
+# so the .so is self-contained. Used by fgr's own plugins (in its source tree) and by scenes
+# built against an installed fgr (find_package(fgr)); the .so goes to FGR_PLUGIN_OUTPUT_DIR when
+# that is set, else to the current binary directory.
 set(FGR_EMBED_SCRIPT ${CMAKE_CURRENT_LIST_DIR}/embed.cmake)
-# fgr_add_scene_plugin(NAME SOURCES... [CL_SOURCES file.cl...])
-# Builds a scene plugin: a shared library exporting only fgr_scene_entry, written to
-# ${FGR_PLUGIN_OUTPUT_DIR}. CL sources are embedded as C strings so the .so is self-contained.
+
 function(fgr_add_scene_plugin name)
     cmake_parse_arguments(ARG "" "" "SOURCES;CL_SOURCES" ${ARGN})
+    if(NOT ARG_SOURCES)
+        message(FATAL_ERROR "fgr_add_scene_plugin(${name}): no SOURCES")
+    endif()
     set(embedded)
     foreach(cl ${ARG_CL_SOURCES})
         get_filename_component(cl_abs ${cl} ABSOLUTE)
         get_filename_component(cl_name ${cl} NAME_WE)
+        string(MAKE_C_IDENTIFIER ${cl_name} cl_symbol)
         set(out ${CMAKE_CURRENT_BINARY_DIR}/${cl_name}_cl.h)
         add_custom_command(OUTPUT ${out}
-            COMMAND ${CMAKE_COMMAND} -DINPUT=${cl_abs} -DOUTPUT=${out} -DVARIABLE=${cl_name}_cl
+            COMMAND ${CMAKE_COMMAND} -DINPUT=${cl_abs} -DOUTPUT=${out} -DVARIABLE=${cl_symbol}_cl
                     -P ${FGR_EMBED_SCRIPT}
             DEPENDS ${cl_abs} ${FGR_EMBED_SCRIPT}
             COMMENT "Embedding ${cl}")
@@ -18,9 +29,21 @@ function(fgr_add_scene_plugin name)
     endforeach()
     add_library(${name} MODULE ${ARG_SOURCES} ${embedded})
     target_include_directories(${name} PRIVATE ${CMAKE_CURRENT_BINARY_DIR})
-    target_link_libraries(${name} PRIVATE fgr_plugin_api fgr_warnings)
+    if(TARGET fgr_plugin_api)  # inside fgr's own build
+        target_link_libraries(${name} PRIVATE fgr_plugin_api fgr_warnings)
+    else()
+        target_link_libraries(${name} PRIVATE fgr::plugin_api)
+        target_compile_options(${name} PRIVATE
+            $<$<C_COMPILER_ID:GNU,Clang>:-Wall -Wextra -Wpedantic>)
+    endif()
     set_target_properties(${name} PROPERTIES
         PREFIX "" OUTPUT_NAME "${name}"
-        LIBRARY_OUTPUT_DIRECTORY ${FGR_PLUGIN_OUTPUT_DIR}
+        C_STANDARD 11 C_STANDARD_REQUIRED ON
         C_VISIBILITY_PRESET hidden CXX_VISIBILITY_PRESET hidden)
+    if(FGR_PLUGIN_OUTPUT_DIR)
+        set_target_properties(${name} PROPERTIES LIBRARY_OUTPUT_DIRECTORY ${FGR_PLUGIN_OUTPUT_DIR})
+    endif()
+    if(FGR_INSTALL_PLUGIN_DIR)  # fgr's own plugins install beside the fgr binary
+        install(TARGETS ${name} LIBRARY DESTINATION ${FGR_INSTALL_PLUGIN_DIR})
+    endif()
 endfunction()

@@ -137,7 +137,7 @@ TEST(LoadScenePlugin, RefusesMissingFile) {
 TEST(PluginSearchPath, EnvironmentThenExecutableThenHome) {
     const ScopedEnv plugin_path("FGR_PLUGIN_PATH", "/first::/second/dir:");
     const ScopedEnv home("HOME", "/home/tester");
-    const std::vector<fs::path> expected = {"/first", "/second/dir", "/opt/fgr/plugins",
+    const std::vector<fs::path> expected = {"/first", "/second/dir", "/opt/fgr/" FGR_TEST_LIBDIR "/fgr/plugins",
                                             "/home/tester/.local/share/fgr/plugins"};
     EXPECT_EQ(plugin_search_path("/opt/fgr/bin"), expected);
 }
@@ -145,7 +145,7 @@ TEST(PluginSearchPath, EnvironmentThenExecutableThenHome) {
 TEST(PluginSearchPath, WithoutEnvironment) {
     const ScopedEnv plugin_path("FGR_PLUGIN_PATH", nullptr);
     const ScopedEnv home("HOME", nullptr);
-    EXPECT_EQ(plugin_search_path("/opt/fgr/bin"), std::vector<fs::path>{"/opt/fgr/plugins"});
+    EXPECT_EQ(plugin_search_path("/opt/fgr/bin"), std::vector<fs::path>{"/opt/fgr/" FGR_TEST_LIBDIR "/fgr/plugins"});
 }
 
 TEST(PluginSearchPath, EnvironmentRestoredAfterScope) {

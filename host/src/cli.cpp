@@ -22,6 +22,7 @@
 #include "fgr/parameters.hpp"
 #include "fgr/program_cache.hpp"
 #include "fgr/renderer.hpp"
+#include "fgr/scaffold.hpp"
 #include "fgr/viewer/viewer.hpp"
 
 namespace fgr {
@@ -426,6 +427,35 @@ int command_view(ViewCommandOptions& options) {
     return viewer::run_viewer(viewer);
 }
 
+struct NewSceneOptions {
+    std::string name;
+    std::string directory;  // default: ./NAME
+};
+
+void add_new_scene_command(CLI::App& app, NewSceneOptions& options) {
+    CLI::App* command = app.add_subcommand(
+        "new-scene", "create a scene plugin project from the SDK template, ready to build");
+    command->add_option("name", options.name, "scene id, e.g. my-kifs")->required();
+    command->add_option("--dir", options.directory, "project directory (default: ./NAME)");
+}
+
+int command_new_scene(const NewSceneOptions& options) {
+    const std::filesystem::path directory =
+        std::filesystem::path(options.directory.empty() ? options.name : options.directory);
+    const std::filesystem::path prefix = executable_dir().parent_path();
+    const std::vector<std::filesystem::path> files = scaffold_scene(options.name, directory, prefix);
+    fmt::print("created scene '{}' in {}:\n", options.name, directory.string());
+    for (const auto& file : files) fmt::print("  {}\n", file.string());
+    const std::string dir = directory.string();
+    fmt::print("next:\n"
+               "  cmake -S {0} -B {0}/build && cmake --build {0}/build\n"
+               "  mkdir -p ~/.local/share/fgr/plugins && cp {0}/build/{1}.so "
+               "~/.local/share/fgr/plugins/\n"
+               "  fgr render {1} -o {1}.png\n",
+               dir, options.name);
+    return 0;
+}
+
 void configure_logging(bool verbose) {
     auto logger = spdlog::stderr_color_mt("fgr");
     logger->set_pattern("fgr: %^%l%$: %v");
@@ -452,14 +482,18 @@ int run_cli(int argc, char** argv) {
     add_render_command(app, render_options);
     ViewCommandOptions view_options;
     add_view_command(app, view_options);
+    NewSceneOptions new_scene_options;
+    add_new_scene_command(app, new_scene_options);
     if (argc < 2) {
         std::fputs(app.help().c_str(), stdout);
-        return report_error("no command given (commands: list, info, render, view)", kExitUsage);
+        return report_error("no command given (commands: list, info, render, view, new-scene)", kExitUsage);
     }
     if (const std::string first = argv[1]; !first.empty() && first.front() != '-' &&
-        first != "list" && first != "info" && first != "render" && first != "view") {
+        first != "list" && first != "info" && first != "render" && first != "view" &&
+        first != "new-scene") {
         return report_error(
-            fmt::format("unknown command '{}' (commands: list, info, render, view)", first),
+            fmt::format("unknown command '{}' (commands: list, info, render, view, new-scene)",
+                        first),
                             kExitUsage);
     }
     try {
@@ -475,6 +509,7 @@ int run_cli(int argc, char** argv) {
         if (command == "list") return command_list();
         if (command == "info") return command_info();
         if (command == "view") return command_view(view_options);
+        if (command == "new-scene") return command_new_scene(new_scene_options);
         return command_render(render_options);
     } catch (const UsageError& error) {
         return report_error(error.what(), kExitUsage);

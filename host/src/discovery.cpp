@@ -98,7 +98,9 @@ std::vector<fs::path> plugin_search_path(const fs::path& exe_dir) {
     std::vector<fs::path> directories;
     if (const char* env = std::getenv("FGR_PLUGIN_PATH")) directories = split_path_list(env);
     // An unknown executable directory must not turn into a path relative to the working directory.
-    if (!exe_dir.empty()) directories.push_back((exe_dir / ".." / "plugins").lexically_normal());
+    if (!exe_dir.empty()) {
+        directories.push_back((exe_dir / FGR_PLUGINS_FROM_BIN).lexically_normal());
+    }
     const char* home = std::getenv("HOME");
     if (home != nullptr && *home != '\0') {
         directories.push_back(fs::path(home) / ".local" / "share" / "fgr" / "plugins");

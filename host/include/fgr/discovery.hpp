@@ -10,7 +10,8 @@
 namespace fgr {
 
 // In order: each directory of $FGR_PLUGIN_PATH (colon-separated, empty entries ignored),
-// <exe_dir>/../plugins, and ~/.local/share/fgr/plugins (when $HOME is set).
+// <exe_dir>/../lib/fgr/plugins (the libdir fgr was built for: built and installed trees match),
+// and ~/.local/share/fgr/plugins (when $HOME is set).
 std::vector<std::filesystem::path> plugin_search_path(const std::filesystem::path& exe_dir);
 
 // Directory holding the running executable (/proc/self/exe).

@@ -38,6 +38,13 @@
             description                                                                     \
     }
 
+/* A linear RGB colour with components in [0, 1]. */
+#define FGR_COLOUR_PARAM(id, label, group, r, g, b, description)                                 \
+    {                                                                                            \
+        FGR_HEADER(fgr_param_desc), id, label, group, FGR_PARAM_COLOUR, 0.0f, 1.0f, {r, g, b}, NULL, \
+            description                                                                          \
+    }
+
 /* The three colouring parameters kernels/fgr_colour.cl's trap_colour() reads:
  * colour_mode (which orbit trap), palette (which ramp) and base_colour (the scene's tint). */
 #define FGR_COLOUR_PARAMS(mode, palette, r, g, b)                                              \

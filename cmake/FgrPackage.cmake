@@ -1,0 +1,37 @@
+# The CMake package scene authors build against: `find_package(fgr)` gives the target
+# fgr::plugin_api (the plugin ABI headers) and the function fgr_add_scene_plugin(). Installed
+# into <prefix>/<libdir>/cmake/fgr; the build tree gets the same files under the same relative
+# path, so a scene can also be built against a build of fgr that was never installed.
+include(CMakePackageConfigHelpers)
+
+write_basic_package_version_file(${CMAKE_BINARY_DIR}/${FGR_INSTALL_CMAKE_DIR}/fgrConfigVersion.cmake
+    VERSION ${PROJECT_VERSION} COMPATIBILITY SameMajorVersion)
+
+# Installed: targets from the export set, helper scripts beside the config.
+install(TARGETS fgr_plugin_api EXPORT fgrTargets)
+install(EXPORT fgrTargets NAMESPACE fgr:: DESTINATION ${FGR_INSTALL_CMAKE_DIR})
+set(FGR_CONFIG_KERNEL_DIR ${FGR_INSTALL_KERNEL_DIR})
+configure_package_config_file(cmake/fgrConfig.cmake.in
+    ${CMAKE_BINARY_DIR}/fgrConfig-install.cmake
+    INSTALL_DESTINATION ${FGR_INSTALL_CMAKE_DIR} PATH_VARS FGR_CONFIG_KERNEL_DIR)
+install(FILES ${CMAKE_BINARY_DIR}/fgrConfig-install.cmake DESTINATION ${FGR_INSTALL_CMAKE_DIR}
+    RENAME fgrConfig.cmake)
+install(FILES ${CMAKE_BINARY_DIR}/${FGR_INSTALL_CMAKE_DIR}/fgrConfigVersion.cmake
+    cmake/FgrScenePlugin.cmake cmake/embed.cmake DESTINATION ${FGR_INSTALL_CMAKE_DIR})
+
+# Build tree: the same config, pointing at the source tree's headers and kernels.
+export(EXPORT fgrTargets NAMESPACE fgr::
+    FILE ${CMAKE_BINARY_DIR}/${FGR_INSTALL_CMAKE_DIR}/fgrTargets.cmake)
+set(FGR_CONFIG_KERNEL_DIR ${PROJECT_SOURCE_DIR}/kernels)
+configure_package_config_file(cmake/fgrConfig.cmake.in
+    ${CMAKE_BINARY_DIR}/${FGR_INSTALL_CMAKE_DIR}/fgrConfig.cmake
+    INSTALL_DESTINATION ${CMAKE_BINARY_DIR}/${FGR_INSTALL_CMAKE_DIR}
+    INSTALL_PREFIX ${CMAKE_BINARY_DIR} PATH_VARS FGR_CONFIG_KERNEL_DIR)
+foreach(script FgrScenePlugin.cmake embed.cmake)
+    configure_file(cmake/${script} ${CMAKE_BINARY_DIR}/${FGR_INSTALL_CMAKE_DIR}/${script} COPYONLY)
+endforeach()
+
+# The kernel library's source and the SDK guide, for scene authors to read.
+install(DIRECTORY kernels/ DESTINATION ${FGR_INSTALL_KERNEL_DIR} FILES_MATCHING PATTERN "*.cl")
+install(FILES sdk/README.md DESTINATION ${CMAKE_INSTALL_DATADIR}/fgr/sdk)
+install(DIRECTORY sdk/template sdk/examples DESTINATION ${CMAKE_INSTALL_DATADIR}/fgr/sdk)

@@ -1,0 +1,24 @@
+/* @SCENE_NAME@ (@SCENE_ID@): the distance estimator and the colour.
+ *
+ * fgr evaluates many rays at once, so `real` is a float or a vector of floats and `vec3` holds
+ * one of them per axis; write the maths once with the v3_* helpers and it runs on CPUs (16 rays
+ * per work-item) and GPUs (one). The kernel library (sd_* primitives, op_* combinators, fold_*
+ * folds, orbit traps and palettes) is available here; see fgr's SDK guide. */
+
+/* A lower bound on the distance from p to the surface: the ball of radius param_radius, pushed
+ * in and out by sine bumps. op_displace_sine divides by the bumps' steepest slope, so the result
+ * stays a bound and rays never step through the surface. */
+real scene_de(vec3 p, PARAMS) {
+    real ball = sd_sphere(p, param_radius);
+    return op_displace_sine(ball, p, param_bumps, param_frequency);
+}
+
+/* Albedo in linear RGB: the tint on the bumps' tops, fading to white in the hollows. */
+#define FGR_SCENE_HAS_COLOUR
+vec3 scene_colour(vec3 p, PARAMS) {
+    real wave = sin(param_frequency * p.x) * sin(param_frequency * p.y) *
+                sin(param_frequency * p.z);
+    real t = clamp(0.5f + 1.5f * wave, 0.0f, 1.0f);
+    vec3 white = v3_splat(0.9f, 0.9f, 0.88f);
+    return v3_add(v3_scale(white, 1.0f - t), v3_scale(param_tint, t));
+}

@@ -1,0 +1,81 @@
+#!/usr/bin/env bash
+# The new-user path, as a user would walk it (ctest runs it; so does CI):
+#   1. install fgr into a temporary prefix,
+#   2. `fgr new-scene` a scene outside any source tree and build it against that prefix only,
+#   3. drop the .so into a plugin folder (FGR_PLUGIN_PATH, then ~/.local/share/fgr/plugins),
+#   4. see it in `fgr list` and render it,
+#   5. do the same for every example in sdk/examples.
+#
+#   tests/sdk_end_to_end.sh BUILD_DIR SOURCE_DIR
+set -euo pipefail
+build_dir=$(realpath "$1")
+source_dir=$(realpath "$2")
+work=$(mktemp -d)
+trap 'rm -rf "$work"' EXIT
+fail() { echo "sdk_end_to_end: FAILED: $*" >&2; exit 1; }
+step() { echo "== $*"; }
+
+prefix=$work/prefix
+# A fresh home (no user plugins, a home to install into), but the usual kernel cache.
+export XDG_CACHE_HOME=${XDG_CACHE_HOME:-$HOME/.cache}
+export HOME=$work/home
+mkdir -p "$HOME"
+unset FGR_PLUGIN_PATH
+
+step "install into $prefix"
+cmake --install "$build_dir" --prefix "$prefix" > "$work/install.log"
+fgr=$prefix/bin/fgr
+for file in bin/fgr include/fgr/plugin.h include/fgr/scene_helpers.h \
+            lib/cmake/fgr/fgrConfig.cmake lib/cmake/fgr/FgrScenePlugin.cmake \
+            share/fgr/kernels/fgr_sdf.cl share/fgr/sdk/README.md; do
+    [[ -e $prefix/$file ]] || fail "install is missing $file"
+done
+ls "$prefix"/lib*/fgr/plugins/mandelbulb.so > /dev/null 2>&1 || find "$prefix" -name mandelbulb.so | grep -q . ||
+    fail "install is missing the built-in plugins"
+
+step "the installed fgr finds its own plugins"
+"$fgr" list > "$work/list.txt"
+grep -q "^mandelbulb " "$work/list.txt" || fail "installed fgr does not list mandelbulb"
+
+step "fgr new-scene my-kifs"
+cd "$work"
+"$fgr" new-scene my-kifs > "$work/new-scene.txt"
+for file in CMakeLists.txt my_kifs.c my_kifs.cl README.md; do
+    [[ -f my-kifs/$file ]] || fail "new-scene did not write $file"
+done
+! grep -rq "@SCENE_\|@FGR_PREFIX@" my-kifs || fail "unfilled placeholders in the new project"
+
+step "build it against the prefix, with the exact commands the README gives"
+cmake -S my-kifs -B my-kifs/build > "$work/configure.log" || { cat "$work/configure.log"; fail "configure"; }
+cmake --build my-kifs/build > "$work/build.log" 2>&1 || { cat "$work/build.log"; fail "build"; }
+[[ -f my-kifs/build/my-kifs.so ]] || fail "no my-kifs.so"
+if grep -q "$source_dir" my-kifs/build/CMakeCache.txt; then
+    fail "the scene's build refers to the engine's source tree"
+fi
+
+step "drop it into FGR_PLUGIN_PATH: listed and rendered"
+mkdir -p plugins && cp my-kifs/build/my-kifs.so plugins/
+FGR_PLUGIN_PATH=$work/plugins "$fgr" list > "$work/list2.txt"
+grep -q "^my-kifs " "$work/list2.txt" || fail "my-kifs not listed from FGR_PLUGIN_PATH"
+FGR_PLUGIN_PATH=$work/plugins "$fgr" render my-kifs -o my-kifs.png --width 96 --height 72 > "$work/render.txt"
+hits=$(awk '/^hits /{print $2}' "$work/render.txt")
+[[ -f my-kifs.png && ${hits:-0} -gt 500 ]] || fail "my-kifs rendered no surface (hits ${hits:-none})"
+
+step "drop it into ~/.local/share/fgr/plugins: listed"
+mkdir -p "$HOME/.local/share/fgr/plugins" && mv plugins/my-kifs.so "$HOME/.local/share/fgr/plugins/"
+"$fgr" list > "$work/list3.txt"
+grep -q "^my-kifs " "$work/list3.txt" || fail "my-kifs not listed from ~/.local/share/fgr/plugins"
+
+for example in "$source_dir"/sdk/examples/*/; do
+    name=$(basename "$example")
+    step "example $name: copy out, build against the prefix, render"
+    cp -r "$example" "$work/$name"
+    cmake -S "$work/$name" -B "$work/$name/build" -DCMAKE_PREFIX_PATH="$prefix" > "$work/$name.log" ||
+        { cat "$work/$name.log"; fail "configure $name"; }
+    cmake --build "$work/$name/build" >> "$work/$name.log" 2>&1 || { cat "$work/$name.log"; fail "build $name"; }
+    mkdir -p "$work/examples" && cp "$work/$name"/build/*.so "$work/examples/"
+    FGR_PLUGIN_PATH=$work/examples "$fgr" render "$name" -o "$name.png" --width 96 --height 72 > "$work/$name.txt"
+    hits=$(awk '/^hits /{print $2}' "$work/$name.txt")
+    [[ ${hits:-0} -gt 500 ]] || fail "$name rendered no surface (hits ${hits:-none})"
+done
+echo "sdk_end_to_end: the new-user path works"
