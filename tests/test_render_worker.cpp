@@ -28,10 +28,11 @@ using namespace std::chrono_literals;
 constexpr int kSphere = 0;
 constexpr int kBroken = 1;
 
-std::vector<Scene> worker_scenes() {
+std::vector<std::shared_ptr<const Scene>> worker_scenes() {
     Scene broken = test::inline_scene("real scene_de(vec3 p, PARAMS) { return undeclared_radius; }");
     broken.id = "broken";
-    return {test::sphere_scene(), broken};
+    return {std::make_shared<const Scene>(test::sphere_scene()),
+            std::make_shared<const Scene>(broken)};
 }
 
 class RenderWorkerTest : public ::testing::Test {
@@ -39,10 +40,10 @@ protected:
     ViewState state(int scene, int width, int height, uint64_t generation,
                     bool interactive = false) const {
         ViewState view;
-        view.scene = scene;
-        view.effects = scenes_[static_cast<size_t>(scene)].effects;
-        view.view = scenes_[static_cast<size_t>(scene)].cameras.front().view;
-        view.params = default_param_values(scenes_[static_cast<size_t>(scene)]);
+        view.scene = scenes_[static_cast<size_t>(scene)];
+        view.effects = view.scene->effects;
+        view.view = view.scene->cameras.front().view;
+        view.params = default_param_values(*view.scene);
         view.width = width;
         view.height = height;
         view.generation = generation;
@@ -68,9 +69,9 @@ protected:
         });
     }
 
-    std::vector<Scene> scenes_ = worker_scenes();
+    std::vector<std::shared_ptr<const Scene>> scenes_ = worker_scenes();
     std::unique_ptr<RenderWorker> worker_ =
-        std::make_unique<RenderWorker>(scenes_, -1, 0, QualitySettings{33.0, 3, 0.1f});
+        std::make_unique<RenderWorker>(-1, 0, QualitySettings{33.0, 3, 0.1f});
     std::vector<DisplayFrame> frames_;
 };
 
@@ -89,13 +90,13 @@ TEST_F(RenderWorkerTest, StillViewIsRefinedToTheSampleCapThenLeftAlone) {
     // The accumulated image is the one a 3-sample render gives.
     ComputeDevice device = open_device(-1);
     ProgramCache cache{std::filesystem::path()};
-    Renderer renderer(device, cache, scenes_[kSphere],
-                      {preferred_packet_width(device.info), scenes_[kSphere].effects});
+    Renderer renderer(device, cache, *scenes_[kSphere],
+                      {preferred_packet_width(device.info), scenes_[kSphere]->effects});
     FrameRequest request;
     request.width = 64;
     request.height = 48;
-    request.view = scenes_[kSphere].cameras.front().view;
-    request.params = default_param_values(scenes_[kSphere]);
+    request.view = scenes_[kSphere]->cameras.front().view;
+    request.params = default_param_values(*scenes_[kSphere]);
     request.samples = 3;
     const Image8 expected = renderer.render(request).image;
     int largest = 0;
@@ -181,6 +182,35 @@ TEST_F(RenderWorkerTest, ChangingTheEffectsBuildsTheirKernelAndChangesTheImage) 
     EXPECT_TRUE(worker_->status().error.empty()) << worker_->status().error;
     EXPECT_EQ(frames_.back().generation, 2u);
     EXPECT_NE(frames_.back().image.rgb, plain.rgb);
+}
+
+TEST_F(RenderWorkerTest, AReloadIsBuiltBeforeItIsAcceptedAndABrokenOneIsRefused) {
+    Scene bigger = *scenes_[kSphere];
+    bigger.source = "real scene_de(vec3 p, PARAMS) { return v3_length(p) - 2.0f * param_radius; }";
+    Scene broken = *scenes_[kSphere];
+    broken.source = "real scene_de(vec3 p, PARAMS) { return v3_length(p) - missing_name; }";
+    worker_->request_reload({std::make_shared<const Scene>(bigger), scenes_[kSphere], 0});
+    worker_->request_reload({std::make_shared<const Scene>(broken), scenes_[kSphere], 0});
+    std::vector<ReloadResult> results;
+    ASSERT_TRUE(wait_for([&] {
+        for (ReloadResult& result : worker_->take_reloads()) results.push_back(std::move(result));
+        return results.size() == 2 && worker_->status().pending_reloads == 0;
+    }));
+    EXPECT_TRUE(results[0].ok) << results[0].error;
+    EXPECT_FALSE(results[1].ok);
+    EXPECT_NE(results[1].error.find(scenes_[kSphere]->id), std::string::npos);
+    EXPECT_NE(results[1].error_log.find("missing_name"), std::string::npos);
+    // The accepted version renders what it says: a sphere twice the size fills more pixels.
+    ViewState before = state(kSphere, 48, 36, 1);
+    worker_->submit(before);
+    ASSERT_TRUE(wait_idle(1));
+    const Image8 small = frames_.back().image;
+    ViewState after = before;
+    after.scene = results[0].request.candidate;
+    after.generation = 2;
+    worker_->submit(after);
+    ASSERT_TRUE(wait_idle(2));
+    EXPECT_NE(frames_.back().image.rgb, small.rgb);
 }
 
 TEST_F(RenderWorkerTest, ScreenshotsAreFinishedBeforeStopReturns) {

@@ -7,6 +7,9 @@
 #include <unistd.h>
 
 #include <algorithm>
+#include <atomic>
+#include <functional>
+#include <thread>
 #include <cmath>
 #include <filesystem>
 #include <fstream>
@@ -115,6 +118,43 @@ double mean_abs_difference(const Image8& a, const Image8& b) {
     double sum = 0.0;
     for (size_t i = 0; i < a.rgb.size(); ++i) sum += std::abs(int(a.rgb[i]) - int(b.rgb[i]));
     return sum / static_cast<double>(a.rgb.size());
+}
+
+// Runs actions[i] once `directory` holds i + 1 PNG files (the viewer's screenshots), on a thread
+// beside the blocking viewer run: how a test changes files while the viewer watches them.
+class AfterEachScreenshot {
+public:
+    AfterEachScreenshot(fs::path directory, std::vector<std::function<void()>> actions)
+        : thread_([this, directory, actions] { run(directory, actions); }) {}
+    ~AfterEachScreenshot() {
+        stop_ = true;
+        thread_.join();
+    }
+    AfterEachScreenshot(const AfterEachScreenshot&) = delete;
+    AfterEachScreenshot& operator=(const AfterEachScreenshot&) = delete;
+
+private:
+    void run(const fs::path& directory, const std::vector<std::function<void()>>& actions) {
+        size_t done = 0;
+        while (!stop_ && done < actions.size()) {
+            size_t shots = 0;
+            for (const auto& entry : fs::directory_iterator(directory)) {
+                shots += entry.path().extension() == ".png";
+            }
+            if (shots > done) {
+                actions[done++]();
+            } else {
+                std::this_thread::sleep_for(std::chrono::milliseconds(50));
+            }
+        }
+    }
+    std::atomic<bool> stop_{false};
+    std::thread thread_;
+};
+
+// Copies over the target in place, as `cp` does when a user drops in a rebuilt plugin.
+void drop_in(const fs::path& from, const fs::path& to) {
+    fs::copy_file(from, to, fs::copy_options::overwrite_existing);
 }
 
 double length(const std::vector<double>& v) { return std::sqrt(v[0] * v[0] + v[1] * v[1] + v[2] * v[2]); }
@@ -282,6 +322,93 @@ TEST_F(ViewerTest, SurvivesASceneWhoseKernelDoesNotCompile) {
     ASSERT_EQ(run.screenshots.size(), 1u) << run.result;
     EXPECT_EQ(read_png(run.screenshots[0]).width, kWidth);
     EXPECT_NE(stat_text(run.result.out, "scene"), "fixture-broken");
+}
+
+TEST_F(ViewerTest, RebuiltPluginsAreReloadedAndBrokenUpdatesKeepTheWorkingVersion) {
+    const fs::path fixtures = FGR_TEST_FIXTURE_DIR;
+    const fs::path plugins = dir() / "plugins";
+    fs::create_directory(plugins);
+    fs::copy_file(fixtures / "good_scene.so", plugins / "fixture.so");
+    // Each phase waits long enough for the watcher (two polls, 1 s) to see the change.
+    const std::string script = R"(0 wait_idle
+0 key F12
+3 wait_idle
+0 key F12
+3 wait_idle
+0 key F12
+3 wait_idle
+0 key PageUp
+0 wait_idle
+0 key F12
+0.2 quit
+)";
+    ViewerRun run;
+    {
+        AfterEachScreenshot changes(
+            dir(), {[&] { drop_in(fixtures / "reload" / "reload_bigger.so", plugins / "fixture.so"); },
+                    [&] { drop_in(fixtures / "reload" / "reload_broken.so", plugins / "fixture.so"); },
+                    [&] {
+                        drop_in(fixtures / "bad_param.so", plugins / "fixture.so");
+                        drop_in(fixtures / "reload" / "reload_other.so", plugins / "other.so");
+                    }});
+        run = view(script, {"fixture-good"}, plugins);
+    }
+    ASSERT_EQ(run.result.exit_code, 0) << run.result;
+    ASSERT_EQ(run.screenshots.size(), 4u) << run.result;
+    const Image8 original = read_png(run.screenshots[0]);
+    const Image8 rebuilt = read_png(run.screenshots[1]);
+    const Image8 after_broken = read_png(run.screenshots[2]);
+    EXPECT_GT(mean_abs_difference(original, rebuilt), 5.0) << "the bigger sphere did not show";
+    EXPECT_EQ(after_broken.rgb, rebuilt.rgb) << "a broken update replaced the working version";
+    const std::string& err = run.result.err;
+    EXPECT_NE(err.find("reloaded 'fixture-good'"), std::string::npos) << run.result;
+    EXPECT_NE(err.find("update of 'fixture-good' refused"), std::string::npos) << run.result;
+    EXPECT_NE(err.find("undeclared_radius"), std::string::npos) << run.result;
+    EXPECT_NE(err.find("keeping the version loaded before"), std::string::npos)
+        << "an invalid description is reported" << run.result;
+    // A plugin dropped in while running appears as a new scene (last in the list: PageUp from
+    // the first scene reaches it).
+    EXPECT_NE(err.find("new scene 'fixture-other'"), std::string::npos) << run.result;
+    EXPECT_EQ(stat_text(run.result.out, "scene"), "fixture-other") << run.result;
+}
+
+TEST_F(ViewerTest, DevModeReloadsAnEditedSourceAndKeepsTheLastOneThatCompiles) {
+    const fs::path fixtures = FGR_TEST_FIXTURE_DIR;
+    const fs::path source = fixtures / "dev" / "dev_scene.cl";  // the path the plugin names
+    std::ofstream(source) << "real scene_de(vec3 p, PARAMS) { return v3_length(p) - param_scale; }\n";
+    const fs::path plugins = dir() / "plugins";
+    fs::create_directory(plugins);
+    fs::copy_file(fixtures / "dev" / "dev_scene.so", plugins / "dev_scene.so");
+    const std::string script = R"(0 wait_idle
+0 key F12
+3 wait_idle
+0 key F12
+3 wait_idle
+0 key F12
+0.2 quit
+)";
+    ViewerRun run;
+    {
+        AfterEachScreenshot edits(
+            dir(), {[&] {
+                        std::ofstream(source) << "real scene_de(vec3 p, PARAMS) {\n"
+                                                 "    return v3_length(p) - 1.5f * param_scale;\n}\n";
+                    },
+                    [&] {
+                        std::ofstream(source) << "real scene_de(vec3 p, PARAMS) {\n"
+                                                 "    return v3_length(p) - typo_radius;\n}\n";
+                    }});
+        run = view(script, {"fixture-dev", "--dev"}, plugins);
+    }
+    ASSERT_EQ(run.result.exit_code, 0) << run.result;
+    ASSERT_EQ(run.screenshots.size(), 3u) << run.result;
+    const Image8 original = read_png(run.screenshots[0]);
+    const Image8 edited = read_png(run.screenshots[1]);
+    EXPECT_GT(mean_abs_difference(original, edited), 5.0) << "the edit did not show";
+    EXPECT_EQ(read_png(run.screenshots[2]).rgb, edited.rgb) << "a broken edit replaced the scene";
+    // The compiler's message names the edited file and the line of the typo.
+    EXPECT_NE(run.result.err.find("dev_scene.cl:2:"), std::string::npos) << run.result;
+    EXPECT_NE(run.result.err.find("typo_radius"), std::string::npos) << run.result;
 }
 
 TEST_F(ViewerTest, ExitAfterEndsCleanlyWithFrameStatistics) {

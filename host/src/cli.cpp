@@ -392,6 +392,8 @@ void add_view_command(CLI::App& app, ViewCommandOptions& options) {
     view->add_option("--replay", options.replay, "feed timed input events from a file");
     view->add_option("--exit-after", options.exit_after, "quit after this many seconds")
         ->check(CLI::PositiveNumber);
+    view->add_flag("--dev", viewer.dev,
+                   "scene development: reload a scene when its .cl source file is saved");
     view->add_flag("--stats", viewer.print_stats,
                    "print frame-time statistics and the final camera on exit");
     view->add_option("--device", viewer.device, "OpenCL device index (see `fgr info`)")

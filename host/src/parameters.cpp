@@ -1,5 +1,6 @@
 #include "fgr/parameters.hpp"
 
+#include <algorithm>
 #include <cctype>
 #include <charconv>
 #include <cmath>
@@ -134,6 +135,31 @@ float param_value(const Scene& scene, const std::vector<float>& values, std::str
         if (scene.params[i].id == id) return values.at(offsets[i]);
     }
     throw std::out_of_range(fmt::format("scene '{}' has no parameter '{}'", scene.id, id));
+}
+
+std::vector<float> carry_param_values(const Scene& from, const std::vector<float>& values,
+                                      const Scene& to) {
+    std::vector<float> carried = default_param_values(to);
+    const std::vector<int> from_offsets = param_offsets(from);
+    const std::vector<int> to_offsets = param_offsets(to);
+    for (size_t i = 0; i < to.params.size(); ++i) {
+        const ParamInfo& param = to.params[i];
+        const ParamInfo* old = from.find_param(param.id);
+        if (old == nullptr || old->type != param.type) continue;
+        const auto old_offset = static_cast<size_t>(
+            from_offsets[static_cast<size_t>(old - from.params.data())]);
+        const int components = param_components(param.type);
+        bool edited = false;
+        for (int c = 0; c < components; ++c) {
+            edited |= values.at(old_offset + c) != old->default_value[static_cast<size_t>(c)];
+        }
+        if (!edited) continue;  // untouched: the new version's default
+        for (int c = 0; c < components; ++c) {
+            carried[static_cast<size_t>(to_offsets[i] + c)] =
+                std::clamp(values.at(old_offset + c), param.min_value, param.max_value);
+        }
+    }
+    return carried;
 }
 
 }  // namespace fgr

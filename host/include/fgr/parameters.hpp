@@ -28,6 +28,12 @@ std::vector<float> default_param_values(const Scene& scene);
 void set_param_from_text(const Scene& scene, std::vector<float>& values,
                          std::string_view assignment);
 
+// Values for `to` (a new version of the scene `from`): a parameter the user changed from its
+// default in `values` keeps that value (clamped to the new range) when `to` still has it with the
+// same type; every other parameter takes `to`'s default, so a rebuilt plugin's new defaults show.
+std::vector<float> carry_param_values(const Scene& from, const std::vector<float>& values,
+                                      const Scene& to);
+
 // Reads a parameter's first component back, e.g. for the built-in quality knobs.
 float param_value(const Scene& scene, const std::vector<float>& values, std::string_view id);
 

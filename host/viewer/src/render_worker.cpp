@@ -34,10 +34,8 @@ FrameRequest frame_request(const ViewState& state, int width, int height) {
 
 }  // namespace
 
-RenderWorker::RenderWorker(const std::vector<Scene>& scenes, int device_index, int packet_width,
-                           QualitySettings quality)
-    : scenes_(scenes),
-      device_(open_device(device_index)),
+RenderWorker::RenderWorker(int device_index, int packet_width, QualitySettings quality)
+    : device_(open_device(device_index)),
       packet_width_(packet_width ? packet_width : preferred_packet_width(device_.info)),
       cache_(ProgramCache::default_directory()),
       quality_(quality) {
@@ -86,6 +84,20 @@ void RenderWorker::request_screenshot(ScreenshotRequest request) {
     wake_.notify_all();
 }
 
+void RenderWorker::request_reload(ReloadRequest request) {
+    {
+        std::lock_guard lock(mutex_);
+        reloads_.push_back(std::move(request));
+        status_.pending_reloads = static_cast<int>(reloads_.size());
+    }
+    wake_.notify_all();
+}
+
+std::vector<ReloadResult> RenderWorker::take_reloads() {
+    std::lock_guard lock(mutex_);
+    return std::exchange(reload_results_, {});
+}
+
 std::optional<DisplayFrame> RenderWorker::take_frame() {
     std::lock_guard lock(mutex_);
     return std::exchange(frame_, std::nullopt);
@@ -119,37 +131,45 @@ void RenderWorker::mark_idle(uint64_t generation) {
     }
 }
 
-bool RenderWorker::next_job(ViewState* state, std::optional<ScreenshotRequest>* screenshot) {
+std::optional<RenderWorker::Job> RenderWorker::next_job() {
     std::unique_lock lock(mutex_);
-    // Work is a screenshot, or a state not yet fully refined; an interactive state already
-    // previewed waits for the next change (or for the view to settle).
+    // Work is a screenshot, a reload, or a state not yet fully refined; an interactive state
+    // already previewed waits for the next change (or for the view to settle).
     wake_.wait(lock, [this] {
-        return stopping_ || !screenshots_.empty() ||
+        return stopping_ || !screenshots_.empty() || !reloads_.empty() ||
                (state_ && !status_.idle &&
                 !(state_->interactive && state_->generation == previewed_generation_));
     });
+    Job job;
     if (!screenshots_.empty()) {
-        *screenshot = std::move(screenshots_.front());
+        job.screenshot = std::move(screenshots_.front());
         screenshots_.pop_front();
-        return true;
+        return job;
     }
-    if (stopping_) return false;
-    *state = *state_;
-    return true;
+    if (!reloads_.empty()) {
+        job.reload = std::move(reloads_.front());
+        reloads_.pop_front();
+        return job;
+    }
+    if (stopping_) return std::nullopt;
+    job.view = *state_;
+    return job;
 }
 
 void RenderWorker::run() {
-    for (;;) {
-        ViewState state;
-        std::optional<ScreenshotRequest> screenshot;
-        if (!next_job(&state, &screenshot)) return;
+    while (std::optional<Job> job = next_job()) {
         try {
-            if (screenshot) {
-                take_screenshot(*screenshot);
+            if (job->screenshot) {
+                take_screenshot(*job->screenshot);
                 std::lock_guard lock(mutex_);
                 status_.pending_screenshots = static_cast<int>(screenshots_.size());
                 continue;
             }
+            if (job->reload) {
+                reload(*job->reload);
+                continue;
+            }
+            const ViewState& state = *job->view;
             Renderer* renderer = renderer_for(state);
             if (renderer == nullptr) {
                 mark_idle(state.generation);  // the build failed: nothing to refine
@@ -161,58 +181,71 @@ void RenderWorker::run() {
             // report it and wait for the next change.
             spdlog::error("render failed: {}", error.what());
             post_message(fmt::format("render failed: {}", error.what()));
-            mark_idle(state.generation);
+            if (job->view) mark_idle(job->view->generation);
         }
     }
 }
 
-Renderer* RenderWorker::renderer_for(const ViewState& state) {
-    const RendererKey key{state.scene, state.effects};
+Renderer* RenderWorker::build_renderer(const std::shared_ptr<const Scene>& scene,
+                                       uint64_t effects,
+                                       std::pair<std::string, std::string>* failure) {
+    const RendererKey key{scene.get(), effects};
     if (auto found = renderers_.find(key); found != renderers_.end()) {
-        std::lock_guard lock(mutex_);
-        status_.error.clear();
-        status_.error_log.clear();
-        return found->second.get();
+        return found->second.renderer.get();
     }
-    const Scene& scene = scenes_.at(static_cast<size_t>(state.scene));
     if (auto failed = failures_.find(key); failed != failures_.end()) {
-        std::lock_guard lock(mutex_);
-        std::tie(status_.error, status_.error_log) = failed->second;
+        *failure = failed->second.message;
         return nullptr;
     }
     {
         std::lock_guard lock(mutex_);
         status_.compiling = true;
-        status_.compiling_scene = scene.id;
+        status_.compiling_scene = scene->id;
     }
     std::unique_ptr<Renderer> renderer;
-    std::pair<std::string, std::string> failure;
     try {
-        renderer = std::make_unique<Renderer>(device_, cache_, scene,
-                                              KernelSwitches{packet_width_, state.effects});
-        spdlog::info("kernel for '{}' (effects: {}) ready in {:.0f} ms", scene.id,
-                     effect_names(state.effects), renderer->build_report().build_ms);
+        renderer = std::make_unique<Renderer>(device_, cache_, *scene,
+                                              KernelSwitches{packet_width_, effects});
+        spdlog::info("kernel for '{}' (effects: {}) ready in {:.0f} ms", scene->id,
+                     effect_names(effects), renderer->build_report().build_ms);
     } catch (const KernelBuildError& error) {
-        failure = {fmt::format("scene '{}': {}", scene.id, error.what()), error.build_log()};
+        *failure = {fmt::format("scene '{}': {}", scene->id, error.what()), error.build_log()};
     } catch (const cl::Error& error) {
-        failure = {fmt::format("scene '{}': {} failed: {}", scene.id, error.what(),
-                               cl_error_name(error.err())),
-                   ""};
+        *failure = {fmt::format("scene '{}': {} failed: {}", scene->id, error.what(),
+                                cl_error_name(error.err())),
+                    ""};
     }
-    std::lock_guard lock(mutex_);
-    status_.compiling = false;
-    status_.compiling_scene.clear();
+    {
+        std::lock_guard lock(mutex_);
+        status_.compiling = false;
+        status_.compiling_scene.clear();
+    }
     if (!renderer) {
-        spdlog::error("{}", failure.first);
-        if (!failure.second.empty()) fmt::print(stderr, "{}\n", failure.second);
-        messages_.push_back(failure.first);
-        std::tie(status_.error, status_.error_log) = failure;
-        failures_[key] = failure;
+        spdlog::error("{}", failure->first);
+        if (!failure->second.empty()) fmt::print(stderr, "{}\n", failure->second);
+        failures_[key] = {scene, *failure};
         return nullptr;
     }
-    status_.error.clear();
-    status_.error_log.clear();
-    return (renderers_[key] = std::move(renderer)).get();
+    return (renderers_[key] = {scene, std::move(renderer)}).renderer.get();
+}
+
+Renderer* RenderWorker::renderer_for(const ViewState& state) {
+    const bool known = renderers_.count({state.scene.get(), state.effects}) ||
+                       failures_.count({state.scene.get(), state.effects});
+    std::pair<std::string, std::string> failure;
+    Renderer* renderer = build_renderer(state.scene, state.effects, &failure);
+    std::lock_guard lock(mutex_);
+    if (renderer == nullptr && !known) messages_.push_back(failure.first);
+    std::tie(status_.error, status_.error_log) = failure;
+    return renderer;
+}
+
+void RenderWorker::reload(const ReloadRequest& request) {
+    std::pair<std::string, std::string> failure;
+    const bool ok = build_renderer(request.candidate, request.effects, &failure) != nullptr;
+    std::lock_guard lock(mutex_);
+    reload_results_.push_back({request, ok, failure.first, failure.second});
+    status_.pending_reloads = static_cast<int>(reloads_.size());
 }
 
 void RenderWorker::render_pass(Renderer& renderer, const ViewState& state) {
@@ -269,8 +302,7 @@ void RenderWorker::refine(Renderer& renderer, const ViewState& state, int sample
     }
     for (size_t i = 0; i < accumulation_.size(); ++i) accumulation_[i] += frame.linear[i];
     ++accumulated_samples_;
-    const Scene& scene = scenes_.at(static_cast<size_t>(state.scene));
-    publish({display_image(scene, state.params, accumulation_, 1.0f / static_cast<float>(accumulated_samples_),
+    publish({display_image(*state.scene, state.params, accumulation_, 1.0f / static_cast<float>(accumulated_samples_),
                            state.width, state.height),
              1.0f, accumulated_samples_, frame.render_ms, state.generation});
 }

@@ -13,9 +13,11 @@
 #include <cmath>
 #include <ctime>
 #include <deque>
+#include <fstream>
 #include <map>
 #include <memory>
 #include <set>
+#include <sstream>
 
 #include <fmt/format.h>
 #include <spdlog/spdlog.h>
@@ -26,6 +28,8 @@
 #include "fgr/kernel_assembly.hpp"
 #include "fgr/parameters.hpp"
 #include "fgr/plugin.h"
+#include "fgr/plugin_loader.hpp"
+#include "fgr/viewer/file_watcher.hpp"
 #include "fgr/viewer/fly_camera.hpp"
 #include "fgr/viewer/frame_stats.hpp"
 #include "fgr/viewer/render_worker.hpp"
@@ -44,6 +48,8 @@ constexpr float kShiftSpeedUp = 4.0f;
 constexpr float kWheelSpeedStep = 1.25f;
 constexpr float kPanelWidth = 340.0f;
 constexpr size_t kMessagesKept = 6;
+// How often plugin folders (and in --dev mode scene sources) are checked for changes.
+constexpr double kWatchSeconds = 0.5;
 
 const std::pair<const char*, std::pair<int, int>> kWindowPresets[] = {
     {"1366x768", {1366, 768}},
@@ -243,6 +249,14 @@ private:
     bool view_idle() const;
     void log_refined_view();  // once each time the view becomes fully refined (debug level)
 
+    // Hot reload.
+    void watch_sources();
+    void poll_sources();
+    void reload_plugin(const std::filesystem::path& file);
+    void reload_source(const std::filesystem::path& file);
+    void apply_reloads();
+    void adopt_scene(size_t index, const std::shared_ptr<const Scene>& scene);
+
     // Actions.
     void switch_scene(int index);
     void reset_camera(int camera_index);
@@ -269,13 +283,13 @@ private:
     void draw_build_error();
 
     std::vector<CameraPath> playable_paths() const;
-    const Scene& scene() const { return scenes_[static_cast<size_t>(scene_index_)]; }
+    const Scene& scene() const { return *scenes_[static_cast<size_t>(scene_index_)]; }
     SceneSession& session() { return sessions_.at(scene_index_); }
     const SceneSession& session() const { return sessions_.at(scene_index_); }
     void print_stats() const;
 
     ViewerOptions options_;
-    std::vector<Scene> scenes_;
+    std::vector<std::shared_ptr<const Scene>> scenes_;
     std::optional<CameraPathFile> loaded_path_;
     std::vector<ReplayEvent> replay_events_;
 
@@ -315,6 +329,9 @@ private:
     ImVec2 panel_min_{0, 0}, panel_max_{0, 0};
     std::deque<std::string> messages_;
     std::set<std::filesystem::path> screenshot_files_;
+    FileWatcher watcher_;
+    double next_watch_ = 0.0;
+    std::pair<std::string, std::string> reload_error_;  // a refused update: summary, log
 
     FrameStats render_stats_;
     FrameStats ui_stats_;
@@ -324,7 +341,8 @@ private:
 };
 
 ViewerApp::ViewerApp(const ViewerOptions& options, std::vector<Scene> scenes)
-    : options_(options), scenes_(std::move(scenes)) {
+    : options_(options) {
+    for (Scene& scene : scenes) scenes_.push_back(std::make_shared<const Scene>(std::move(scene)));
     quality_.target_ms = options.target_ms;
     quality_.sample_cap = options.sample_cap;
     fullscreen_ = options.fullscreen;
@@ -350,16 +368,16 @@ void ViewerApp::prepare_first_scene() {
     // Without a choice, the Mandelbulb (fgr's default scene) if it is installed.
     const std::string wanted = options_.scene.empty() ? "mandelbulb" : options_.scene;
     const auto default_scene = std::find_if(scenes_.begin(), scenes_.end(),
-                                            [&](const Scene& s) { return s.id == wanted; });
+                                            [&](const auto& s) { return s->id == wanted; });
     if (options_.scene.empty() && default_scene != scenes_.end()) {
         scene_index_ = static_cast<int>(default_scene - scenes_.begin());
     }
     if (!options_.scene.empty()) {
         const auto found = std::find_if(scenes_.begin(), scenes_.end(),
-                                        [&](const Scene& s) { return s.id == options_.scene; });
+                                        [&](const auto& s) { return s->id == options_.scene; });
         if (found == scenes_.end()) {
             std::string ids;
-            for (const Scene& s : scenes_) ids += (ids.empty() ? "" : ", ") + s.id;
+            for (const auto& s : scenes_) ids += (ids.empty() ? "" : ", ") + s->id;
             throw UsageError(
                 fmt::format("unknown scene '{}' (available: {})", options_.scene, ids));
         }
@@ -396,8 +414,8 @@ void ViewerApp::open_window() {
 
 int ViewerApp::run() {
     open_window();
-    worker_ = std::make_unique<RenderWorker>(scenes_, options_.device, options_.packet_width,
-                                             quality_);
+    worker_ = std::make_unique<RenderWorker>(options_.device, options_.packet_width, quality_);
+    watch_sources();
     spdlog::info("viewer on {}; press H for the key bindings", worker_->device_info().name);
     if (!replay_events_.empty()) replay_ = std::make_unique<ReplayClock>(replay_events_);
     start_ = std::chrono::steady_clock::now();
@@ -417,6 +435,8 @@ int ViewerApp::run() {
         submit_view();
         receive_frame();
         for (std::string& message : worker_->take_messages()) add_message(std::move(message));
+        poll_sources();
+        apply_reloads();
         draw_ui();
         if (options_.exit_after_seconds && seconds_since(start_) >= *options_.exit_after_seconds) {
             quit_ = true;
@@ -636,7 +656,7 @@ void ViewerApp::submit_view() {
     int width = 0, height = 0;
     SDL_GL_GetDrawableSize(window_.get(), &width, &height);
     ViewState state;
-    state.scene = scene_index_;
+    state.scene = scenes_[static_cast<size_t>(scene_index_)];
     state.effects = session().effects;
     state.view = session().camera.to_view();
     state.params = session().params;
@@ -679,7 +699,126 @@ void ViewerApp::log_refined_view() {
 
 bool ViewerApp::view_idle() const {
     return status_.idle && status_.idle_generation == generation_ && !status_.compiling &&
-           status_.pending_screenshots == 0 && !last_state_.interactive;
+           status_.pending_screenshots == 0 && status_.pending_reloads == 0 &&
+           !last_state_.interactive;
+}
+
+// --- Hot reload --------------------------------------------------------------------------------
+
+void ViewerApp::watch_sources() {
+    for (const auto& directory : plugin_search_path(executable_dir())) {
+        watcher_.watch_directory(directory);
+    }
+    if (options_.dev) {
+        // A scene built with fgr_add_scene_plugin names its .cl file by absolute path.
+        for (const auto& scene : scenes_) {
+            const std::filesystem::path source = scene->source_name;
+            if (source.is_absolute() && std::filesystem::exists(source)) {
+                watcher_.watch_file(source);
+                spdlog::info("watching {} for '{}'", source.string(), scene->id);
+            }
+        }
+    }
+    watcher_.poll();  // what is there now is what was loaded
+}
+
+void ViewerApp::poll_sources() {
+    const double now = seconds_since(start_);
+    if (now < next_watch_) return;
+    next_watch_ = now + kWatchSeconds;
+    for (const std::filesystem::path& file : watcher_.poll()) {
+        if (file.extension() == ".so") {
+            reload_plugin(file);
+        } else {
+            reload_source(file);
+        }
+    }
+}
+
+void ViewerApp::reload_plugin(const std::filesystem::path& file) {
+    LoadResult loaded = load_scene_plugin(file);
+    if (!loaded.scene) {
+        const std::string message =
+            fmt::format("{}: {} (keeping the version loaded before)", file.string(), loaded.error);
+        spdlog::error("{}", message);
+        add_message(message);
+        reload_error_ = {message, ""};
+        return;
+    }
+    auto candidate = std::make_shared<const Scene>(std::move(*loaded.scene));
+    const auto same_id = std::find_if(scenes_.begin(), scenes_.end(),
+                                      [&](const auto& s) { return s->id == candidate->id; });
+    if (same_id == scenes_.end()) {
+        spdlog::info("new scene '{}' from {}", candidate->id, file.string());
+        add_message(fmt::format("new scene '{}'", candidate->id));
+        scenes_.push_back(candidate);
+        if (options_.dev) watcher_.watch_file(candidate->source_name);
+        return;
+    }
+    if ((*same_id)->plugin_file != candidate->plugin_file) {
+        spdlog::warn("{}: scene '{}' is already loaded from {}; ignored", file.string(),
+                     candidate->id, (*same_id)->plugin_file.string());
+        return;
+    }
+    const int index = static_cast<int>(same_id - scenes_.begin());
+    const uint64_t effects =
+        sessions_.count(index) ? sessions_.at(index).effects : candidate->effects;
+    spdlog::info("{} changed: building the new '{}'", file.string(), candidate->id);
+    worker_->request_reload({candidate, *same_id, effects});
+}
+
+void ViewerApp::reload_source(const std::filesystem::path& file) {
+    std::ifstream in(file, std::ios::binary);
+    std::ostringstream text;
+    text << in.rdbuf();
+    if (!in && !in.eof()) {
+        add_message(fmt::format("cannot read {}", file.string()));
+        return;
+    }
+    for (size_t i = 0; i < scenes_.size(); ++i) {
+        if (scenes_[i]->source_name != file.string()) continue;
+        Scene edited = *scenes_[i];
+        edited.source = text.str();
+        const uint64_t effects =
+            sessions_.count(int(i)) ? sessions_.at(int(i)).effects : edited.effects;
+        spdlog::info("{} changed: building the new '{}'", file.string(), edited.id);
+        worker_->request_reload({std::make_shared<const Scene>(std::move(edited)), scenes_[i],
+                                 effects});
+    }
+}
+
+void ViewerApp::apply_reloads() {
+    for (const ReloadResult& result : worker_->take_reloads()) {
+        const auto running = std::find(scenes_.begin(), scenes_.end(), result.request.replaces);
+        if (running == scenes_.end()) continue;  // replaced again meanwhile
+        const std::string& id = result.request.candidate->id;
+        if (!result.ok) {
+            const std::string message =
+                fmt::format("update of '{}' refused, keeping the previous version: {}", id,
+                            result.error);
+            spdlog::error("{}", message);
+            add_message(message);
+            reload_error_ = {message, result.error_log};
+            continue;
+        }
+        adopt_scene(static_cast<size_t>(running - scenes_.begin()), result.request.candidate);
+        reload_error_ = {};
+        spdlog::info("reloaded '{}'", id);
+        add_message(fmt::format("reloaded '{}'", id));
+    }
+}
+
+// The new version takes the old one's place; its session keeps the camera and every parameter
+// that still exists, and follows the scene's effects unless the user had changed them.
+void ViewerApp::adopt_scene(size_t index, const std::shared_ptr<const Scene>& scene) {
+    const std::shared_ptr<const Scene> old = scenes_[index];
+    scenes_[index] = scene;
+    const auto session = sessions_.find(static_cast<int>(index));
+    if (session == sessions_.end()) return;
+    session->second.params = carry_param_values(*old, session->second.params, *scene);
+    if (session->second.effects == old->effects) session->second.effects = scene->effects;
+    const int cameras = static_cast<int>(scene->cameras.size());
+    session->second.camera_index = std::min(session->second.camera_index, cameras - 1);
 }
 
 // --- Actions ---------------------------------------------------------------------------------
@@ -884,7 +1023,7 @@ void ViewerApp::draw_scene_section() {
     if (!ImGui::CollapsingHeader("Scene", ImGuiTreeNodeFlags_DefaultOpen)) return;
     for (size_t i = 0; i < scenes_.size(); ++i) {
         const bool selected = static_cast<int>(i) == scene_index_;
-        if (ImGui::Selectable(fmt::format("{}  ({})", scenes_[i].name, scenes_[i].id).c_str(),
+        if (ImGui::Selectable(fmt::format("{}  ({})", scenes_[i]->name, scenes_[i]->id).c_str(),
                               selected) &&
             !selected) {
             switch_scene(static_cast<int>(i));
@@ -1091,6 +1230,20 @@ void ViewerApp::draw_help() {
 }
 
 void ViewerApp::draw_build_error() {
+    if (!reload_error_.first.empty()) {
+        const ImVec2 display = ImGui::GetIO().DisplaySize;
+        ImGui::SetNextWindowPos(ImVec2(16, display.y * 0.25f), ImGuiCond_Appearing);
+        ImGui::SetNextWindowSize(ImVec2(std::min(640.0f, display.x * 0.6f), display.y * 0.45f),
+                                 ImGuiCond_Appearing);
+        bool open = true;
+        ImGui::Begin("Update refused", &open);
+        ImGui::TextColored(ImVec4(1, 0.4f, 0.4f, 1), "%s", reload_error_.first.c_str());
+        ImGui::BeginChild("log", ImVec2(0, 0), true, ImGuiWindowFlags_HorizontalScrollbar);
+        ImGui::TextUnformatted(reload_error_.second.c_str());
+        ImGui::EndChild();
+        ImGui::End();
+        if (!open) reload_error_ = {};
+    }
     if (status_.error.empty()) return;
     const ImVec2 display = ImGui::GetIO().DisplaySize;
     ImGui::SetNextWindowPos(ImVec2(16, display.y * 0.3f), ImGuiCond_Appearing);

@@ -31,7 +31,7 @@ namespace fgr::viewer {
 // Everything that decides the image. `generation` changes whenever anything else but
 // `interactive` does, so the worker knows when to restart refinement.
 struct ViewState {
-    int scene = 0;  // index into the worker's scene list
+    std::shared_ptr<const Scene> scene;
     uint64_t effects = 0;
     CameraView view;
     std::vector<float> params;
@@ -58,6 +58,7 @@ struct WorkerStatus {
     bool idle = false;            // the posted state is fully refined (or failed to build)
     uint64_t idle_generation = 0; // ... for this generation
     int pending_screenshots = 0;
+    int pending_reloads = 0;
 };
 
 struct ScreenshotRequest {
@@ -66,12 +67,26 @@ struct ScreenshotRequest {
     std::filesystem::path file;
 };
 
+// A new version of a scene (a rebuilt plugin, an edited .cl file) to try before it replaces the
+// running one: its kernel must build first, so a broken update never takes a working scene away.
+struct ReloadRequest {
+    std::shared_ptr<const Scene> candidate;
+    std::shared_ptr<const Scene> replaces;  // the version running now
+    uint64_t effects = 0;                   // the effects it will be shown with
+};
+
+struct ReloadResult {
+    ReloadRequest request;
+    bool ok = false;
+    std::string error;      // one line, when !ok
+    std::string error_log;  // the compiler's output, when it has one
+};
+
 class RenderWorker {
 public:
     // Opens the OpenCL device on the calling thread (throws std::runtime_error when there is
-    // none), then starts the render thread. `scenes` must outlive the worker.
-    RenderWorker(const std::vector<Scene>& scenes, int device_index, int packet_width,
-                 QualitySettings quality);
+    // none), then starts the render thread.
+    RenderWorker(int device_index, int packet_width, QualitySettings quality);
     ~RenderWorker();
     RenderWorker(const RenderWorker&) = delete;
     RenderWorker& operator=(const RenderWorker&) = delete;
@@ -79,6 +94,9 @@ public:
     void submit(ViewState state);
     void set_quality(QualitySettings quality);
     void request_screenshot(ScreenshotRequest request);
+    void request_reload(ReloadRequest request);
+    // Reloads finished since the last call, in the order requested.
+    std::vector<ReloadResult> take_reloads();
 
     // The newest frame finished since the last call, if any.
     std::optional<DisplayFrame> take_frame();
@@ -92,15 +110,30 @@ public:
 
 private:
     struct RendererKey {
-        int scene;
+        const Scene* scene;
         uint64_t effects;
         auto operator<=>(const RendererKey&) const = default;
     };
+    struct CachedRenderer {
+        std::shared_ptr<const Scene> scene;  // kept alive for the renderer, which refers to it
+        std::unique_ptr<Renderer> renderer;
+    };
+    struct Job {
+        std::optional<ScreenshotRequest> screenshot;
+        std::optional<ReloadRequest> reload;
+        std::optional<ViewState> view;
+    };
 
     void run();
-    // The state to work on, or none when the thread should stop; waits while idle.
-    bool next_job(ViewState* state, std::optional<ScreenshotRequest>* screenshot);
+    // The next thing to do, or nothing when the thread should stop; waits while idle.
+    std::optional<Job> next_job();
+    // The renderer for the state's scene and effects, building it when needed; null when the
+    // build failed (the status then carries the error).
     Renderer* renderer_for(const ViewState& state);
+    // Builds (or finds) the renderer; on failure returns null and fills `failure`.
+    Renderer* build_renderer(const std::shared_ptr<const Scene>& scene, uint64_t effects,
+                             std::pair<std::string, std::string>* failure);
+    void reload(const ReloadRequest& request);
     void render_pass(Renderer& renderer, const ViewState& state);
     void render_preview(Renderer& renderer, const ViewState& state, float scale);
     void refine(Renderer& renderer, const ViewState& state, int sample);
@@ -110,18 +143,23 @@ private:
     void mark_idle(uint64_t generation);
     void post_message(std::string message);
 
-    const std::vector<Scene>& scenes_;
     ComputeDevice device_;
     int packet_width_;
     ProgramCache cache_;
-    std::map<RendererKey, std::unique_ptr<Renderer>> renderers_;  // render thread only
-    std::map<RendererKey, std::pair<std::string, std::string>> failures_;  // summary, log
+    std::map<RendererKey, CachedRenderer> renderers_;  // render thread only
+    // Keys are scene addresses: each entry keeps its scene alive so no new scene can reuse the
+    // address while the entry exists.
+    struct Failure {
+        std::shared_ptr<const Scene> scene;
+        std::pair<std::string, std::string> message;  // summary, log
+    };
+    std::map<RendererKey, Failure> failures_;
 
     // Refinement of the current generation (render thread only).
     uint64_t accumulated_generation_ = UINT64_MAX;
     int accumulated_samples_ = 0;
     std::vector<float> accumulation_;  // sum of linear RGB over the samples
-    int probed_scene_ = -1;
+    std::shared_ptr<const Scene> probed_scene_;
     glm::vec3 probed_position_{NAN};
     std::vector<float> probed_params_;
 
@@ -130,6 +168,8 @@ private:
     std::optional<ViewState> state_;
     QualityController quality_;
     std::deque<ScreenshotRequest> screenshots_;
+    std::deque<ReloadRequest> reloads_;
+    std::vector<ReloadResult> reload_results_;
     std::optional<DisplayFrame> frame_;
     WorkerStatus status_;
     uint64_t previewed_generation_ = UINT64_MAX;  // the last interactive state previewed

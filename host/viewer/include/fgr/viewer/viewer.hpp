@@ -25,6 +25,7 @@ struct ViewerOptions {
     std::optional<std::filesystem::path> replay;  // scripted input (see replay.hpp)
     std::optional<double> exit_after_seconds;
     bool print_stats = false;       // frame-time statistics and the final camera on stdout
+    bool dev = false;               // also watch scenes' .cl sources and reload them on change
 };
 
 // Runs the viewer until the window is closed, Escape, --exit-after or the replay's quit.
