@@ -83,6 +83,21 @@ std::string optional_string(const char* text, std::size_t max_length, std::strin
     return bounded_string(text, max_length, what);
 }
 
+// A plugin's text as it may appear in a refusal: bytes outside printable ASCII become \xNN, so a
+// newline or a terminal escape in a bad id cannot break the one-line reason.
+std::string printable(std::string_view text) {
+    std::string out;
+    for (const char c : text) {
+        const auto byte = static_cast<unsigned char>(c);
+        if (byte >= 0x20 && byte < 0x7f) {
+            out += c;
+        } else {
+            out += fmt::format("\\x{:02x}", byte);
+        }
+    }
+    return out;
+}
+
 bool is_lower_or_digit(char c) { return (c >= 'a' && c <= 'z') || (c >= '0' && c <= '9'); }
 
 // [a-z][a-z0-9_]* plus '-' when allow_dash, at most kMaxIdLength chars.
@@ -123,13 +138,14 @@ glm::vec3 to_vec3(const float (&values)[3]) { return {values[0], values[1], valu
 
 // --- Struct arrays -------------------------------------------------------------------------------
 
+// The major version first: another major may lay out everything else differently.
 void check_header(const fgr_struct_header& header, std::size_t v1_size, std::string_view what) {
-    if (header.struct_size < v1_size) {
-        fail("{} struct too small ({} bytes, ABI 1.0 needs {})", what, header.struct_size, v1_size);
-    }
     const uint32_t major = FGR_ABI_MAJOR(header.abi_version);
     if (major != FGR_ABI_VERSION_MAJOR) {
         fail("{} has ABI major version {}, host supports {}", what, major, FGR_ABI_VERSION_MAJOR);
+    }
+    if (header.struct_size < v1_size) {
+        fail("{} struct too small ({} bytes, ABI 1.0 needs {})", what, header.struct_size, v1_size);
     }
 }
 
@@ -238,7 +254,7 @@ ParamInfo copy_param(const fgr_param_desc& desc, uint32_t index) {
     std::string where = fmt::format("parameter {}", index);
     ParamInfo param;
     param.id = bounded_string(desc.id, kMaxIdLength, where + " id");
-    where = fmt::format("parameter '{}'", param.id);
+    where = fmt::format("parameter '{}'", printable(param.id));
     // No '-': the id becomes part of a C identifier (param_<id>) in the kernel.
     if (!is_identifier(param.id, false)) fail("{}: id must match [a-z][a-z0-9_]*", where);
     param.type = param_type_from(desc.type, where);
@@ -306,7 +322,7 @@ CameraView copy_view(const float (&position)[3], const float (&target)[3], const
 
 std::string copy_name(const char* name, const std::string& where) {
     std::string copy = bounded_string(name, kMaxIdLength, where + " name");
-    if (!is_name(copy)) fail("{}: name '{}' must match [a-z0-9_-]+", where, copy);
+    if (!is_name(copy)) fail("{}: name '{}' must match [a-z0-9_-]+", where, printable(copy));
     return copy;
 }
 
@@ -384,10 +400,12 @@ Light copy_light(const fgr_light& light, uint32_t index) {
     }
     if (copy.intensity < 0.0f) fail("{}: negative intensity {}", where, copy.intensity);
     if (copy.type == LightType::Directional) {
-        // Normalised here so the kernel never has to.
-        const float length = glm::length(copy.vector);
-        if (!(length > 0.0f) || !std::isfinite(length)) fail("{}: zero direction", where);
-        copy.vector /= length;
+        // Normalised here so the kernel never has to. In double: the squared length of a float
+        // vector with tiny (1e-22) or huge (1e20) components under- or overflows float.
+        const glm::dvec3 direction(copy.vector);
+        const double length = glm::length(direction);
+        if (!(length > 0.0)) fail("{}: zero direction", where);
+        copy.vector = glm::vec3(direction / length);
     }
     return copy;
 }
@@ -445,13 +463,14 @@ void check_builtin_defaults(const Scene& scene) {
 
 // --- The scene -----------------------------------------------------------------------------------
 
+// The major version first: a 2.x description may be smaller than 1.0's and still be valid 2.x.
 void check_scene_header(const fgr_scene_desc& desc) {
-    if (desc.header.struct_size < kV1SceneDescSize) {
-        fail("description struct too small ({} bytes)", desc.header.struct_size);
-    }
     const uint32_t major = FGR_ABI_MAJOR(desc.header.abi_version);
     if (major != FGR_ABI_VERSION_MAJOR) {
         fail("ABI major version {}, host supports {}", major, FGR_ABI_VERSION_MAJOR);
+    }
+    if (desc.header.struct_size < kV1SceneDescSize) {
+        fail("description struct too small ({} bytes)", desc.header.struct_size);
     }
 }
 
@@ -460,7 +479,7 @@ Scene copy_checked(const fgr_scene_desc& desc) {
     Scene scene;
     scene.id = bounded_string(desc.id, kMaxIdLength, "scene id");
     if (!is_identifier(scene.id, true)) {
-        fail("scene id '{}' must match [a-z][a-z0-9_-]*", scene.id);
+        fail("scene id '{}' must match [a-z][a-z0-9_-]*", printable(scene.id));
     }
     scene.name = bounded_string(desc.name, kMaxTextLength, "scene name");
     if (scene.name.empty()) fail("scene name is empty");

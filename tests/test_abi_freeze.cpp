@@ -1,0 +1,345 @@
+// The ABI 1.0 freeze. tests/fixtures/frozen_v1 builds a plugin against the frozen copy of the 1.0
+// header (tests/abi_v1/fgr/plugin.h); here the current host loads it with every field intact and
+// renders it, its table of 1.0 offsets and sizes matches the current header's, the same plugin
+// claiming major version 2 is refused by name, and the frozen copy itself has not changed.
+
+#include <dlfcn.h>
+#include <gtest/gtest.h>
+
+#include <array>
+#include <chrono>
+#include <cstddef>
+#include <cstdint>
+#include <filesystem>
+#include <glm/geometric.hpp>
+#include <glm/vec3.hpp>
+#include <memory>
+#include <sstream>
+#include <string>
+#include <string_view>
+#include <vector>
+
+#include "child_process.hpp"
+#include "fgr/discovery.hpp"
+#include "fgr/opencl_device.hpp"
+#include "fgr/parameters.hpp"
+#include "fgr/plugin.h"
+#include "fgr/plugin_loader.hpp"
+#include "fgr/program_cache.hpp"
+#include "fgr/renderer.hpp"
+#include "fixtures/frozen_v1/frozen_layout.h"
+
+namespace fgr {
+namespace {
+namespace fs = std::filesystem;
+
+const fs::path kFrozenDir = fs::path(FGR_TEST_FIXTURE_DIR) / "frozen_v1";
+const fs::path kFrozenPlugin = kFrozenDir / "frozen_v1.so";
+const fs::path kMajor2Plugin = kFrozenDir / "frozen_v1_major2.so";
+const fs::path kFrozenHeader = fs::path(__FILE__).parent_path() / "abi_v1" / "fgr" / "plugin.h";
+
+// FNV-1a (64 bit) of tests/abi_v1/fgr/plugin.h as committed. Never update it: see
+// FrozenHeaderNeverChanges.
+constexpr uint64_t kFrozenHeaderHash = 0x725cb0f5e489cfb4u;
+
+// How many rows ABI 1.0 has in each list of frozen_layout.h: a row dropped from a list would
+// otherwise quietly stop being checked.
+constexpr std::size_t kV1StructCount = 8;
+constexpr std::size_t kV1FieldCount = 55;
+constexpr std::size_t kV1ConstantCount = 18;
+
+Scene load_frozen_scene() {
+    LoadResult loaded = load_scene_plugin(kFrozenPlugin);
+    if (!loaded.scene) {
+        ADD_FAILURE() << kFrozenPlugin << ": " << loaded.error;
+        return Scene{};
+    }
+    return std::move(*loaded.scene);
+}
+
+void expect_vec3(const glm::vec3& actual, const glm::vec3& expected, const std::string& what) {
+    for (glm::vec3::length_type i = 0; i < 3; ++i) {
+        EXPECT_FLOAT_EQ(actual[i], expected[i]) << what << " component " << i;
+    }
+}
+
+void expect_view(const CameraView& view, const glm::vec3& position, const glm::vec3& target,
+                 const glm::vec3& up, float fov_degrees, const std::string& what) {
+    expect_vec3(view.position, position, what + " position");
+    expect_vec3(view.target, target, what + " target");
+    expect_vec3(view.up, up, what + " up");
+    EXPECT_FLOAT_EQ(view.fov_degrees, fov_degrees) << what << " fov";
+}
+
+struct ExpectedParam {
+    std::string id, label, group, description;
+    ParamType type;
+    float min_value, max_value;
+    std::array<float, 3> default_value;
+    std::vector<std::string> choices;
+};
+
+// --- (a) Loading: every value the 1.0 plugin wrote arrives in the host's copy -------------------
+
+TEST(AbiFreeze, FrozenV1PluginLoadsWithEveryField) {
+    const Scene scene = load_frozen_scene();
+    ASSERT_FALSE(scene.id.empty());
+    EXPECT_EQ(scene.id, "frozen-v1");
+    EXPECT_EQ(scene.name, "Frozen ABI 1.0");
+    EXPECT_EQ(scene.description, "a scene plugin built against the frozen ABI 1.0 header");
+    EXPECT_EQ(scene.source_name, "frozen_v1.cl");
+    EXPECT_NE(scene.source.find("real scene_de(vec3 p, PARAMS)"), std::string::npos);
+    EXPECT_EQ(scene.plugin_file, kFrozenPlugin);
+
+    // Label, group and description NULL in `copies`: the documented fallbacks.
+    // clang-format off
+    const std::vector<ExpectedParam> expected_params = {
+        {"size", "Size", "Shape", "radius of each shape", ParamType::Float, 0.2f, 1.5f,
+         {0.8f, 0.0f, 0.0f}, {}},
+        {"shape", "Shape", "Shape", "which primitive", ParamType::Int, 0.0f, 2.0f,
+         {0.0f, 0.0f, 0.0f}, {"sphere", "box", "torus"}},
+        {"copies", "copies", "Scene", "", ParamType::Int, 1.0f, 3.0f, {2.0f, 0.0f, 0.0f}, {}},
+        {"ground", "Ground", "Scene", "a floor under the shapes", ParamType::Bool, 0.0f, 1.0f,
+         {1.0f, 0.0f, 0.0f}, {}},
+        {"centre", "Centre", "Shape", "middle of the row", ParamType::Vec3, -1.0f, 1.0f,
+         {0.0f, 0.25f, 0.1f}, {}},
+        {"albedo", "Albedo", "Look", "surface colour", ParamType::Colour, 0.0f, 1.0f,
+         {0.8f, 0.5f, 0.3f}, {}},
+    };
+    // clang-format on
+    ASSERT_EQ(scene.params.size(), expected_params.size() + builtin_param_count());
+    for (std::size_t i = 0; i < expected_params.size(); ++i) {
+        const ExpectedParam& expected = expected_params[i];
+        const ParamInfo& param = scene.params[i];
+        SCOPED_TRACE("parameter " + expected.id);
+        EXPECT_EQ(param.id, expected.id);
+        EXPECT_EQ(param.label, expected.label);
+        EXPECT_EQ(param.group, expected.group);
+        EXPECT_EQ(param.description, expected.description);
+        EXPECT_EQ(param.type, expected.type);
+        EXPECT_FLOAT_EQ(param.min_value, expected.min_value);
+        EXPECT_FLOAT_EQ(param.max_value, expected.max_value);
+        for (std::size_t c = 0; c < 3; ++c) {
+            EXPECT_FLOAT_EQ(param.default_value[c], expected.default_value[c]) << "component " << c;
+        }
+        EXPECT_EQ(param.choices, expected.choices);
+        EXPECT_FALSE(param.builtin);
+    }
+
+    ASSERT_EQ(scene.cameras.size(), 3u);
+    EXPECT_EQ(scene.cameras[0].name, "front");
+    expect_view(scene.cameras[0].view, {0, -5, 1.5f}, {0, 0, 0}, {0, 0, 1}, 50.0f, "front");
+    EXPECT_EQ(scene.cameras[1].name, "side");
+    expect_view(scene.cameras[1].view, {5, 0, 1}, {0, 0, 0}, {0, 0, 1}, 40.0f, "side");
+    EXPECT_EQ(scene.cameras[2].name, "top-down");
+    expect_view(scene.cameras[2].view, {0, 0, 6}, {0, 0, 0}, {0, 1, 0}, 60.0f, "top-down");
+
+    ASSERT_EQ(scene.camera_paths.size(), 2u);
+    const CameraPath& orbit = scene.camera_paths[0];
+    EXPECT_EQ(orbit.name, "orbit");
+    ASSERT_EQ(orbit.keyframes.size(), 3u);
+    EXPECT_FLOAT_EQ(orbit.keyframes[0].time, 0.0f);
+    expect_view(orbit.keyframes[0].view, {0, -5, 1.5f}, {0, 0, 0}, {0, 0, 1}, 50.0f, "orbit 0");
+    EXPECT_FLOAT_EQ(orbit.keyframes[1].time, 2.0f);
+    expect_view(orbit.keyframes[1].view, {5, 0, 1.5f}, {0, 0, 0}, {0, 0, 1}, 50.0f, "orbit 1");
+    EXPECT_FLOAT_EQ(orbit.keyframes[2].time, 4.5f);
+    expect_view(orbit.keyframes[2].view, {0, 5, 2}, {0, 0, 0}, {0, 0, 1}, 45.0f, "orbit 2");
+    const CameraPath& rise = scene.camera_paths[1];
+    EXPECT_EQ(rise.name, "rise");
+    ASSERT_EQ(rise.keyframes.size(), 2u);
+    EXPECT_FLOAT_EQ(rise.keyframes[0].time, 0.5f);
+    expect_view(rise.keyframes[0].view, {0, -4, 0.2f}, {0, 0, 0}, {0, 0, 1}, 55.0f, "rise 0");
+    EXPECT_FLOAT_EQ(rise.keyframes[1].time, 3.0f);
+    expect_view(rise.keyframes[1].view, {0, -4, 4}, {0, 0, -0.5f}, {0, 0, 1}, 35.0f, "rise 1");
+
+    ASSERT_EQ(scene.lights.size(), 2u);
+    EXPECT_EQ(scene.lights[0].type, LightType::Directional);
+    // The host normalises directions.
+    expect_vec3(scene.lights[0].vector, glm::normalize(glm::vec3(1, -1, 2)), "light 0 vector");
+    expect_vec3(scene.lights[0].colour, {1.0f, 0.95f, 0.9f}, "light 0 colour");
+    EXPECT_FLOAT_EQ(scene.lights[0].intensity, 1.25f);
+    EXPECT_EQ(scene.lights[1].type, LightType::Point);
+    expect_vec3(scene.lights[1].vector, {2, -2, 3}, "light 1 position");
+    expect_vec3(scene.lights[1].colour, {0.6f, 0.7f, 1.0f}, "light 1 colour");
+    EXPECT_FLOAT_EQ(scene.lights[1].intensity, 8.0f);
+
+    EXPECT_EQ(scene.effects,
+              uint64_t{FGR_EFFECT_SHADOWS | FGR_EFFECT_AMBIENT_OCCLUSION | FGR_EFFECT_FOG});
+
+    EXPECT_EQ(scene.march.max_steps, 160u);
+    EXPECT_FLOAT_EQ(scene.march.max_distance, 40.0f);
+    EXPECT_FLOAT_EQ(scene.march.hit_threshold, 1.5f);
+    EXPECT_EQ(scene.march.de_iterations, 5u);
+    EXPECT_FLOAT_EQ(scene.march.step_factor, 0.9f);
+    // ... and they became the built-in parameters' defaults.
+    const ParamInfo* iterations = scene.find_param("iterations");
+    const ParamInfo* step_factor = scene.find_param("step_factor");
+    ASSERT_TRUE(iterations != nullptr && step_factor != nullptr);
+    EXPECT_FLOAT_EQ(iterations->default_value[0], 5.0f);
+    EXPECT_FLOAT_EQ(step_factor->default_value[0], 0.9f);
+}
+
+// --- (b) Rendering: its kernel still builds against the current kernel library ------------------
+
+TEST(AbiFreeze, FrozenV1PluginRenders) {
+    const Scene scene = load_frozen_scene();
+    ASSERT_FALSE(scene.cameras.empty());
+    const ComputeDevice device = open_device(-1);
+    ProgramCache cache{fs::path()};
+    Renderer renderer(device, cache, scene, {preferred_packet_width(device.info), scene.effects});
+    constexpr int kWidth = 32, kHeight = 24;
+    for (const NamedCamera& camera : scene.cameras) {
+        FrameRequest request;
+        request.width = kWidth;
+        request.height = kHeight;
+        request.view = camera.view;
+        request.params = default_param_values(scene);
+        const Frame frame = renderer.render(request);
+        EXPECT_GT(frame.hits, 0) << "camera " << camera.name;
+        // The default view has sky above the horizon: not every ray may hit.
+        if (&camera == &scene.cameras.front()) {
+            EXPECT_LT(frame.hits, long{kWidth * kHeight});
+        }
+    }
+}
+
+// --- (c) Layout: the current header keeps every 1.0 field where 1.0 put it ----------------------
+
+// A dlopen handle, closed on destruction.
+struct LibraryCloser {
+    void operator()(void* handle) const { dlclose(handle); }
+};
+using Library = std::unique_ptr<void, LibraryCloser>;
+
+template <typename Fn>
+Fn find_symbol(const Library& library, const char* name) {
+    // POSIX guarantees a data pointer from dlsym converts to a function pointer.
+    return reinterpret_cast<Fn>(dlsym(library.get(), name));
+}
+
+#define CURRENT_STRUCT_ROW(type)                                      \
+    fgr_frozen_struct_row{#type, static_cast<uint32_t>(sizeof(type)), \
+                          static_cast<uint32_t>(alignof(type))},
+#define CURRENT_FIELD_ROW(type, field)                                                    \
+    fgr_frozen_field_row{#type "::" #field, static_cast<uint32_t>(offsetof(type, field)), \
+                         static_cast<uint32_t>(sizeof(type::field))},
+#define CURRENT_CONSTANT_ROW(name) fgr_frozen_constant_row{#name, static_cast<uint64_t>(name)},
+
+const std::vector<fgr_frozen_struct_row> kCurrentStructs = {
+    FGR_FROZEN_V1_STRUCTS(CURRENT_STRUCT_ROW)};
+const std::vector<fgr_frozen_field_row> kCurrentFields = {FGR_FROZEN_V1_FIELDS(CURRENT_FIELD_ROW)};
+const std::vector<fgr_frozen_constant_row> kCurrentConstants = {
+    FGR_FROZEN_V1_CONSTANTS(CURRENT_CONSTANT_ROW)};
+
+TEST(AbiFreeze, CurrentHeaderKeepsTheV1Layout) {
+    const Library library(dlopen(kFrozenPlugin.c_str(), RTLD_NOW | RTLD_LOCAL));
+    ASSERT_TRUE(library) << kFrozenPlugin << ": " << dlerror();
+    const auto layout_fn = find_symbol<fgr_frozen_layout_fn>(library, FGR_FROZEN_LAYOUT_SYMBOL);
+    ASSERT_NE(layout_fn, nullptr) << "no " << FGR_FROZEN_LAYOUT_SYMBOL << " in " << kFrozenPlugin;
+    const fgr_frozen_layout* frozen = layout_fn();
+    ASSERT_NE(frozen, nullptr);
+
+    ASSERT_EQ(frozen->struct_count, kV1StructCount) << "frozen_layout.h must list every 1.0 struct";
+    ASSERT_EQ(frozen->field_count, kV1FieldCount) << "frozen_layout.h must list every 1.0 field";
+    ASSERT_EQ(frozen->constant_count, kV1ConstantCount)
+        << "frozen_layout.h must list every 1.0 constant";
+    ASSERT_EQ(kCurrentStructs.size(), kV1StructCount);
+    ASSERT_EQ(kCurrentFields.size(), kV1FieldCount);
+    ASSERT_EQ(kCurrentConstants.size(), kV1ConstantCount);
+
+    for (std::size_t i = 0; i < kV1StructCount; ++i) {
+        const fgr_frozen_struct_row& v1 = frozen->structs[i];
+        const fgr_frozen_struct_row& now = kCurrentStructs[i];
+        ASSERT_STREQ(v1.name, now.name);
+        // Appending fields may grow a struct; it may never shrink it.
+        EXPECT_GE(now.size, v1.size) << v1.name << " is smaller than in ABI 1.0";
+        // A 1.0 plugin's arrays have the 1.0 stride; the host refuses a stride that is not a
+        // multiple of the current alignment, so an appended field must not raise it.
+        EXPECT_EQ(now.align, v1.align) << v1.name << " changed its alignment";
+    }
+    for (std::size_t i = 0; i < kV1FieldCount; ++i) {
+        const fgr_frozen_field_row& v1 = frozen->fields[i];
+        const fgr_frozen_field_row& now = kCurrentFields[i];
+        ASSERT_STREQ(v1.name, now.name);
+        EXPECT_EQ(now.offset, v1.offset) << v1.name << " moved since ABI 1.0";
+        EXPECT_EQ(now.size, v1.size) << v1.name << " changed size since ABI 1.0";
+    }
+    for (std::size_t i = 0; i < kV1ConstantCount; ++i) {
+        const fgr_frozen_constant_row& v1 = frozen->constants[i];
+        const fgr_frozen_constant_row& now = kCurrentConstants[i];
+        ASSERT_STREQ(v1.name, now.name);
+        EXPECT_EQ(now.value, v1.value) << v1.name << " changed value since ABI 1.0";
+    }
+
+    // The plugin filled its headers as a 1.0 plugin does (FGR_HEADER): the 1.0 size and version.
+    const auto entry = find_symbol<fgr_scene_entry_fn>(library, FGR_SCENE_ENTRY_SYMBOL);
+    ASSERT_NE(entry, nullptr);
+    const fgr_scene_desc* desc = entry();
+    ASSERT_NE(desc, nullptr);
+    EXPECT_EQ(desc->header.struct_size, frozen->structs[kV1StructCount - 1].size);
+    EXPECT_EQ(desc->header.abi_version, 0x00010000u);
+    EXPECT_EQ(std::string_view(frozen->structs[kV1StructCount - 1].name), "fgr_scene_desc");
+}
+
+// --- (d) A plugin for another major version is refused, by file name ----------------------------
+
+constexpr std::string_view kMajor2Reason = "ABI major version 2, host supports 1";
+
+TEST(AbiFreeze, Major2PluginIsRefused) {
+    const LoadResult loaded = load_scene_plugin(kMajor2Plugin);
+    EXPECT_FALSE(loaded.scene) << kMajor2Plugin << " was loaded";
+    EXPECT_EQ(loaded.error, kMajor2Reason);
+
+    const Discovery discovery = discover_scenes({kFrozenDir});
+    ASSERT_EQ(discovery.scenes.size(), 1u);
+    EXPECT_EQ(discovery.scenes[0].id, "frozen-v1");
+    ASSERT_EQ(discovery.skipped.size(), 1u);
+    EXPECT_EQ(discovery.skipped[0].file, kMajor2Plugin);
+    EXPECT_EQ(discovery.skipped[0].reason, kMajor2Reason);
+}
+
+TEST(AbiFreeze, Major2RefusalNamesTheFileInFgrOutput) {
+    ASSERT_TRUE(fs::exists(FGR_TEST_FGR_EXE)) << FGR_TEST_FGR_EXE << " does not exist";
+    test::ChildOptions options;
+    options.environment["FGR_PLUGIN_PATH"] = kFrozenDir.string();
+    options.timeout = std::chrono::seconds(120);
+    const test::RunResult result = test::run_child(FGR_TEST_FGR_EXE, {"list"}, options);
+    ASSERT_TRUE(result.exited && result.exit_code == 0) << result;
+    EXPECT_NE(result.out.find("frozen-v1"), std::string::npos) << result;
+    const std::string message =
+        "skipping plugin " + kMajor2Plugin.string() + ": " + std::string(kMajor2Reason);
+    EXPECT_NE(result.err.find(message), std::string::npos) << "expected: " << message << "\n"
+                                                           << result;
+}
+
+// --- (e) The frozen header never changes ---------------------------------------------------------
+
+uint64_t fnv1a64(std::string_view bytes) {
+    uint64_t hash = 0xcbf29ce484222325u;
+    for (const char byte : bytes) {
+        hash ^= static_cast<unsigned char>(byte);
+        hash *= 0x100000001b3u;
+    }
+    return hash;
+}
+
+std::string hex(uint64_t value) {
+    std::ostringstream out;
+    out << "0x" << std::hex << value;
+    return out.str();
+}
+
+TEST(AbiFreeze, FrozenHeaderNeverChanges) {
+    ASSERT_TRUE(fs::is_regular_file(kFrozenHeader)) << kFrozenHeader << " is missing";
+    const std::string content = test::read_file(kFrozenHeader);
+    ASSERT_FALSE(content.empty()) << kFrozenHeader << " could not be read";
+    const uint64_t hash = fnv1a64(content);
+    EXPECT_EQ(hash, kFrozenHeaderHash)
+        << kFrozenHeader << " has changed (FNV-1a " << hex(hash) << ", frozen "
+        << hex(kFrozenHeaderHash) << "). It is the ABI 1.0 header exactly as released and must "
+        << "never change: restore it from git. Change plugin_api/include/fgr/plugin.h instead, "
+        << "following plugin_api/ABI.md.";
+}
+
+}  // namespace
+}  // namespace fgr
