@@ -174,6 +174,7 @@ TEST_F(ViewerTest, FlyingAndLookingMoveTheCamera) {
 )");
     ASSERT_EQ(run.result.exit_code, 0) << run.result;
     ASSERT_EQ(run.screenshots.size(), 2u) << run.result;
+    EXPECT_GT(stat_values(run.result.out, "frames_shown").at(0), 3) << run.result;
     const Image8 before = read_png(run.screenshots[0]);
     const Image8 after = read_png(run.screenshots[1]);
     EXPECT_GT(mean_abs_difference(before, after), 10.0) << "the view did not change";
@@ -358,8 +359,10 @@ TEST_F(ViewerTest, RebuiltPluginsAreReloadedAndBrokenUpdatesKeepTheWorkingVersio
     const Image8 original = read_png(run.screenshots[0]);
     const Image8 rebuilt = read_png(run.screenshots[1]);
     const Image8 after_broken = read_png(run.screenshots[2]);
-    EXPECT_GT(mean_abs_difference(original, rebuilt), 5.0) << "the bigger sphere did not show";
-    EXPECT_EQ(after_broken.rgb, rebuilt.rgb) << "a broken update replaced the working version";
+    EXPECT_GT(mean_abs_difference(original, rebuilt), 5.0)
+        << "the bigger sphere did not show" << run.result;
+    EXPECT_EQ(after_broken.rgb, rebuilt.rgb)
+        << "a broken update replaced the working version" << run.result;
     const std::string& err = run.result.err;
     EXPECT_NE(err.find("reloaded 'fixture-good'"), std::string::npos) << run.result;
     EXPECT_NE(err.find("update of 'fixture-good' refused"), std::string::npos) << run.result;
@@ -404,8 +407,9 @@ TEST_F(ViewerTest, DevModeReloadsAnEditedSourceAndKeepsTheLastOneThatCompiles) {
     ASSERT_EQ(run.screenshots.size(), 3u) << run.result;
     const Image8 original = read_png(run.screenshots[0]);
     const Image8 edited = read_png(run.screenshots[1]);
-    EXPECT_GT(mean_abs_difference(original, edited), 5.0) << "the edit did not show";
-    EXPECT_EQ(read_png(run.screenshots[2]).rgb, edited.rgb) << "a broken edit replaced the scene";
+    EXPECT_GT(mean_abs_difference(original, edited), 5.0) << "the edit did not show" << run.result;
+    EXPECT_EQ(read_png(run.screenshots[2]).rgb, edited.rgb)
+        << "a broken edit replaced the scene" << run.result;
     // The compiler's message names the edited file and the line of the typo.
     EXPECT_NE(run.result.err.find("dev_scene.cl:2:"), std::string::npos) << run.result;
     EXPECT_NE(run.result.err.find("typo_radius"), std::string::npos) << run.result;
@@ -418,7 +422,9 @@ TEST_F(ViewerTest, ExitAfterEndsCleanlyWithFrameStatistics) {
     ASSERT_FALSE(ui.empty()) << run.result;
     EXPECT_GT(ui[0], 10) << "the window loop ran";
     EXPECT_FALSE(stat_values(run.result.out, "render_ms count").empty()) << run.result;
-    EXPECT_GT(stat_values(run.result.out, "frames_shown").at(0), 0) << run.result;
+    // Frames may or may not have arrived in 4 s (a cold kernel cache compiles for longer), but the
+    // counts are printed either way.
+    EXPECT_FALSE(stat_values(run.result.out, "frames_shown").empty()) << run.result;
     EXPECT_TRUE(run.screenshots.empty());
 }
 

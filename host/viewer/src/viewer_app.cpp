@@ -1,39 +1,18 @@
-// The viewer's window thread: SDL2 window and input, the Dear ImGui panel, the fly camera and the
-// hand-over of view states to the render thread (render_worker.cpp).
-#include "fgr/viewer/viewer.hpp"
-
-#include <SDL2/SDL.h>
-#include <SDL2/SDL_opengl.h>
-#include <backends/imgui_impl_opengl2.h>
-#include <backends/imgui_impl_sdl.h>
-#include <imgui.h>
+// The viewer's window thread: the SDL2 window and input, the fly camera, camera paths,
+// screenshots and the hand-over of view states to the render thread (render_worker.cpp).
+#include "viewer_app.hpp"
 
 #include <algorithm>
-#include <chrono>
 #include <cmath>
 #include <ctime>
-#include <deque>
-#include <fstream>
-#include <map>
-#include <memory>
-#include <set>
-#include <sstream>
 
 #include <fmt/format.h>
 #include <spdlog/spdlog.h>
 
 #include "fgr/camera.hpp"
-#include "fgr/camera_path_file.hpp"
 #include "fgr/discovery.hpp"
 #include "fgr/kernel_assembly.hpp"
 #include "fgr/parameters.hpp"
-#include "fgr/plugin.h"
-#include "fgr/plugin_loader.hpp"
-#include "fgr/viewer/file_watcher.hpp"
-#include "fgr/viewer/fly_camera.hpp"
-#include "fgr/viewer/frame_stats.hpp"
-#include "fgr/viewer/render_worker.hpp"
-#include "fgr/viewer/replay.hpp"
 
 namespace fgr::viewer {
 namespace {
@@ -46,135 +25,7 @@ constexpr double kUiFrameSeconds = 1.0 / 60.0;
 constexpr float kLookRadiansPerPixel = 0.0035f;
 constexpr float kShiftSpeedUp = 4.0f;
 constexpr float kWheelSpeedStep = 1.25f;
-constexpr float kPanelWidth = 340.0f;
 constexpr size_t kMessagesKept = 6;
-// How often plugin folders (and in --dev mode scene sources) are checked for changes.
-constexpr double kWatchSeconds = 0.5;
-
-const std::pair<const char*, std::pair<int, int>> kWindowPresets[] = {
-    {"1366x768", {1366, 768}},
-    {"1920x1080", {1920, 1080}},
-    {"2560x1440", {2560, 1440}},
-    {"3840x2160", {3840, 2160}}};
-
-const std::pair<const char*, const char*> kKeyBindings[] = {
-    {"W A S D", "move forward, left, back, right"},
-    {"Q / E", "move down / up"},
-    {"Shift", "move 4x faster"},
-    {"right mouse + drag", "look around"},
-    {"mouse wheel", "movement speed (it also scales with the distance to the surface)"},
-    {"R", "reset to the scene's default camera"},
-    {"C", "next named camera of the scene"},
-    {"PageUp / PageDown", "previous / next scene"},
-    {"P", "play / stop the selected camera path"},
-    {"K", "record the current view as a keyframe"},
-    {"Ctrl+S", "save the recorded path as JSON"},
-    {"F12", "screenshot at full resolution and quality"},
-    {"Tab", "show / hide the panel"},
-    {"F11", "fullscreen"},
-    {"H or F1", "this help"},
-    {"Escape", "quit"}};
-
-// --- RAII over SDL and ImGui handles --------------------------------------------------------
-
-struct SdlSession {
-    SdlSession() {
-        if (SDL_Init(SDL_INIT_VIDEO | SDL_INIT_EVENTS) != 0) {
-            throw std::runtime_error(fmt::format(
-                "cannot open a window: {} (no display? run under xvfb-run for headless use)",
-                SDL_GetError()));
-        }
-        // With no display SDL falls back to drivers that show nothing; a viewer nobody can see
-        // is an error unless that is what the user asked for.
-        const std::string driver = SDL_GetCurrentVideoDriver();
-        if ((driver == "offscreen" || driver == "dummy") && !SDL_getenv("SDL_VIDEODRIVER")) {
-            SDL_Quit();
-            throw std::runtime_error(
-                "cannot open a window: no display found (set DISPLAY, run under xvfb-run, or set "
-                "SDL_VIDEODRIVER=offscreen to run without showing anything)");
-        }
-    }
-    ~SdlSession() { SDL_Quit(); }
-    SdlSession(const SdlSession&) = delete;
-    SdlSession& operator=(const SdlSession&) = delete;
-};
-
-struct WindowDeleter {
-    void operator()(SDL_Window* window) const { SDL_DestroyWindow(window); }
-};
-using WindowHandle = std::unique_ptr<SDL_Window, WindowDeleter>;
-
-struct GlContextDeleter {
-    void operator()(void* context) const { SDL_GL_DeleteContext(context); }
-};
-using GlContextHandle = std::unique_ptr<void, GlContextDeleter>;
-
-class ImGuiSession {
-public:
-    ImGuiSession(SDL_Window* window, void* gl_context) {
-        IMGUI_CHECKVERSION();
-        ImGui::CreateContext();
-        ImGui::GetIO().IniFilename = nullptr;  // no imgui.ini in the user's directory
-        ImGui::StyleColorsDark();
-        ImGui_ImplSDL2_InitForOpenGL(window, gl_context);
-        ImGui_ImplOpenGL2_Init();
-    }
-    ~ImGuiSession() {
-        ImGui_ImplOpenGL2_Shutdown();
-        ImGui_ImplSDL2_Shutdown();
-        ImGui::DestroyContext();
-    }
-    ImGuiSession(const ImGuiSession&) = delete;
-    ImGuiSession& operator=(const ImGuiSession&) = delete;
-};
-
-// The texture the rendered image is drawn from.
-class ImageTexture {
-public:
-    ImageTexture() {
-        glGenTextures(1, &id_);
-        glBindTexture(GL_TEXTURE_2D, id_);
-        glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, GL_LINEAR);
-        glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAG_FILTER, GL_LINEAR);
-        glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_WRAP_S, GL_CLAMP);
-        glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_WRAP_T, GL_CLAMP);
-    }
-    ~ImageTexture() { glDeleteTextures(1, &id_); }
-    ImageTexture(const ImageTexture&) = delete;
-    ImageTexture& operator=(const ImageTexture&) = delete;
-
-    void upload(const Image8& image) {
-        glBindTexture(GL_TEXTURE_2D, id_);
-        glPixelStorei(GL_UNPACK_ALIGNMENT, 1);
-        if (image.width != width_ || image.height != height_) {
-            glTexImage2D(GL_TEXTURE_2D, 0, GL_RGB, image.width, image.height, 0, GL_RGB,
-                         GL_UNSIGNED_BYTE, image.rgb.data());
-            width_ = image.width;
-            height_ = image.height;
-        } else {
-            glTexSubImage2D(GL_TEXTURE_2D, 0, 0, 0, width_, height_, GL_RGB, GL_UNSIGNED_BYTE,
-                            image.rgb.data());
-        }
-    }
-    bool empty() const { return width_ == 0; }
-    ImTextureID id() const { return reinterpret_cast<ImTextureID>(static_cast<intptr_t>(id_)); }
-
-private:
-    GLuint id_ = 0;
-    int width_ = 0;
-    int height_ = 0;
-};
-
-// --- Per-scene state, remembered while the viewer runs ---------------------------------------
-
-struct SceneSession {
-    FlyCamera camera;
-    std::vector<float> params;
-    uint64_t effects = 0;
-    int camera_index = 0;
-    int path_index = 0;  // into ViewerApp::playable_paths()
-    CameraPath recorded{"recorded", {}};
-};
 
 SceneSession default_session(const Scene& scene) {
     SceneSession session;
@@ -200,9 +51,6 @@ std::string timestamp() {
     return text;
 }
 
-double seconds_since(std::chrono::steady_clock::time_point start) {
-    return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-}
 
 SDL_Scancode scancode_named(const std::string& name) { return SDL_GetScancodeFromName(name.c_str()); }
 
@@ -220,125 +68,7 @@ void check_replay_keys(const std::vector<ReplayEvent>& events, const std::string
     }
 }
 
-// --- The application ---------------------------------------------------------------------
-
-class ViewerApp {
-public:
-    ViewerApp(const ViewerOptions& options, std::vector<Scene> scenes);
-    int run();
-
-private:
-    // Setup.
-    void prepare_first_scene();
-    void open_window();
-
-    // Input.
-    void pump_events();
-    void handle_event(const SDL_Event& event);
-    void handle_key_down(SDL_Scancode key, bool repeat);
-    void handle_mouse_button(const SDL_MouseButtonEvent& button, bool down);
-    void feed_replay();
-    void push_replay_event(const ReplayEvent& event);
-    bool over_ui(int x, int y) const;
-
-    // Per-frame updates.
-    void update_camera(double dt);
-    void update_playback(double dt);
-    void submit_view();
-    void receive_frame();
-    bool view_idle() const;
-    void log_refined_view();  // once each time the view becomes fully refined (debug level)
-
-    // Hot reload.
-    void watch_sources();
-    void poll_sources();
-    void reload_plugin(const std::filesystem::path& file);
-    void reload_source(const std::filesystem::path& file);
-    void apply_reloads();
-    void adopt_scene(size_t index, const std::shared_ptr<const Scene>& scene);
-
-    // Actions.
-    void switch_scene(int index);
-    void reset_camera(int camera_index);
-    void toggle_playback();
-    void record_keyframe();
-    void save_recorded_path();
-    void take_screenshot();
-    void toggle_fullscreen();
-    void set_window_size(int width, int height);
-    void add_message(std::string message);
-
-    // The panel.
-    void draw_ui();
-    void draw_image();
-    void draw_status_overlay();
-    void draw_panel();
-    void draw_scene_section();
-    void draw_camera_section();
-    void draw_params_section();
-    void draw_effects_section();
-    void draw_quality_section();
-    void draw_messages();
-    void draw_help();
-    void draw_build_error();
-
-    std::vector<CameraPath> playable_paths() const;
-    const Scene& scene() const { return *scenes_[static_cast<size_t>(scene_index_)]; }
-    SceneSession& session() { return sessions_.at(scene_index_); }
-    const SceneSession& session() const { return sessions_.at(scene_index_); }
-    void print_stats() const;
-
-    ViewerOptions options_;
-    std::vector<std::shared_ptr<const Scene>> scenes_;
-    std::optional<CameraPathFile> loaded_path_;
-    std::vector<ReplayEvent> replay_events_;
-
-    int scene_index_ = 0;
-    std::map<int, SceneSession> sessions_;
-
-    // Created in run(), in this order, destroyed in reverse.
-    std::unique_ptr<SdlSession> sdl_;
-    WindowHandle window_;
-    GlContextHandle gl_context_;
-    std::unique_ptr<ImGuiSession> imgui_;
-    std::unique_ptr<ImageTexture> texture_;
-    std::unique_ptr<RenderWorker> worker_;
-    std::unique_ptr<ReplayClock> replay_;
-
-    std::chrono::steady_clock::time_point start_;
-    bool quit_ = false;
-    std::set<SDL_Scancode> held_keys_;
-    bool looking_ = false;
-    float speed_factor_ = 1.0f;
-    bool show_panel_ = true;
-    bool show_help_ = false;
-    bool fullscreen_ = false;
-    bool playing_ = false;
-    bool loop_playback_ = true;
-    double playback_time_ = 0.0;
-    float keyframe_interval_ = 2.0f;
-    QualitySettings quality_;
-
-    ViewState last_state_;
-    bool submitted_ = false;
-    double last_change_ = -1e9;
-    uint64_t generation_ = 0;
-    WorkerStatus status_;
-    bool was_idle_ = false;
-    std::optional<DisplayFrame> shown_;  // image data lives in the texture; this keeps its facts
-    ImVec2 panel_min_{0, 0}, panel_max_{0, 0};
-    std::deque<std::string> messages_;
-    std::set<std::filesystem::path> screenshot_files_;
-    FileWatcher watcher_;
-    double next_watch_ = 0.0;
-    std::pair<std::string, std::string> reload_error_;  // a refused update: summary, log
-
-    FrameStats render_stats_;
-    FrameStats ui_stats_;
-    int frames_shown_ = 0;
-    int preview_frames_ = 0;  // shown at reduced resolution
-    double preview_scale_sum_ = 0.0;
-};
+}  // namespace
 
 ViewerApp::ViewerApp(const ViewerOptions& options, std::vector<Scene> scenes)
     : options_(options) {
@@ -427,6 +157,7 @@ int ViewerApp::run() {
         ui_stats_.add(dt * 1000.0);
 
         status_ = worker_->status();
+        apply_reloads();  // before the idle check: a swapped-in scene is not refined yet
         log_refined_view();
         feed_replay();
         pump_events();
@@ -436,7 +167,6 @@ int ViewerApp::run() {
         receive_frame();
         for (std::string& message : worker_->take_messages()) add_message(std::move(message));
         poll_sources();
-        apply_reloads();
         draw_ui();
         if (options_.exit_after_seconds && seconds_since(start_) >= *options_.exit_after_seconds) {
             quit_ = true;
@@ -671,6 +401,7 @@ void ViewerApp::submit_view() {
     state.interactive = playing_ || now - last_change_ < kSettleSeconds;
     last_state_ = state;
     submitted_ = true;
+    scene_swapped_ = false;
     worker_->submit(std::move(state));
 }
 
@@ -700,125 +431,7 @@ void ViewerApp::log_refined_view() {
 bool ViewerApp::view_idle() const {
     return status_.idle && status_.idle_generation == generation_ && !status_.compiling &&
            status_.pending_screenshots == 0 && status_.pending_reloads == 0 &&
-           !last_state_.interactive;
-}
-
-// --- Hot reload --------------------------------------------------------------------------------
-
-void ViewerApp::watch_sources() {
-    for (const auto& directory : plugin_search_path(executable_dir())) {
-        watcher_.watch_directory(directory);
-    }
-    if (options_.dev) {
-        // A scene built with fgr_add_scene_plugin names its .cl file by absolute path.
-        for (const auto& scene : scenes_) {
-            const std::filesystem::path source = scene->source_name;
-            if (source.is_absolute() && std::filesystem::exists(source)) {
-                watcher_.watch_file(source);
-                spdlog::info("watching {} for '{}'", source.string(), scene->id);
-            }
-        }
-    }
-    watcher_.poll();  // what is there now is what was loaded
-}
-
-void ViewerApp::poll_sources() {
-    const double now = seconds_since(start_);
-    if (now < next_watch_) return;
-    next_watch_ = now + kWatchSeconds;
-    for (const std::filesystem::path& file : watcher_.poll()) {
-        if (file.extension() == ".so") {
-            reload_plugin(file);
-        } else {
-            reload_source(file);
-        }
-    }
-}
-
-void ViewerApp::reload_plugin(const std::filesystem::path& file) {
-    LoadResult loaded = load_scene_plugin(file);
-    if (!loaded.scene) {
-        const std::string message =
-            fmt::format("{}: {} (keeping the version loaded before)", file.string(), loaded.error);
-        spdlog::error("{}", message);
-        add_message(message);
-        reload_error_ = {message, ""};
-        return;
-    }
-    auto candidate = std::make_shared<const Scene>(std::move(*loaded.scene));
-    const auto same_id = std::find_if(scenes_.begin(), scenes_.end(),
-                                      [&](const auto& s) { return s->id == candidate->id; });
-    if (same_id == scenes_.end()) {
-        spdlog::info("new scene '{}' from {}", candidate->id, file.string());
-        add_message(fmt::format("new scene '{}'", candidate->id));
-        scenes_.push_back(candidate);
-        if (options_.dev) watcher_.watch_file(candidate->source_name);
-        return;
-    }
-    if ((*same_id)->plugin_file != candidate->plugin_file) {
-        spdlog::warn("{}: scene '{}' is already loaded from {}; ignored", file.string(),
-                     candidate->id, (*same_id)->plugin_file.string());
-        return;
-    }
-    const int index = static_cast<int>(same_id - scenes_.begin());
-    const uint64_t effects =
-        sessions_.count(index) ? sessions_.at(index).effects : candidate->effects;
-    spdlog::info("{} changed: building the new '{}'", file.string(), candidate->id);
-    worker_->request_reload({candidate, *same_id, effects});
-}
-
-void ViewerApp::reload_source(const std::filesystem::path& file) {
-    std::ifstream in(file, std::ios::binary);
-    std::ostringstream text;
-    text << in.rdbuf();
-    if (!in && !in.eof()) {
-        add_message(fmt::format("cannot read {}", file.string()));
-        return;
-    }
-    for (size_t i = 0; i < scenes_.size(); ++i) {
-        if (scenes_[i]->source_name != file.string()) continue;
-        Scene edited = *scenes_[i];
-        edited.source = text.str();
-        const uint64_t effects =
-            sessions_.count(int(i)) ? sessions_.at(int(i)).effects : edited.effects;
-        spdlog::info("{} changed: building the new '{}'", file.string(), edited.id);
-        worker_->request_reload({std::make_shared<const Scene>(std::move(edited)), scenes_[i],
-                                 effects});
-    }
-}
-
-void ViewerApp::apply_reloads() {
-    for (const ReloadResult& result : worker_->take_reloads()) {
-        const auto running = std::find(scenes_.begin(), scenes_.end(), result.request.replaces);
-        if (running == scenes_.end()) continue;  // replaced again meanwhile
-        const std::string& id = result.request.candidate->id;
-        if (!result.ok) {
-            const std::string message =
-                fmt::format("update of '{}' refused, keeping the previous version: {}", id,
-                            result.error);
-            spdlog::error("{}", message);
-            add_message(message);
-            reload_error_ = {message, result.error_log};
-            continue;
-        }
-        adopt_scene(static_cast<size_t>(running - scenes_.begin()), result.request.candidate);
-        reload_error_ = {};
-        spdlog::info("reloaded '{}'", id);
-        add_message(fmt::format("reloaded '{}'", id));
-    }
-}
-
-// The new version takes the old one's place; its session keeps the camera and every parameter
-// that still exists, and follows the scene's effects unless the user had changed them.
-void ViewerApp::adopt_scene(size_t index, const std::shared_ptr<const Scene>& scene) {
-    const std::shared_ptr<const Scene> old = scenes_[index];
-    scenes_[index] = scene;
-    const auto session = sessions_.find(static_cast<int>(index));
-    if (session == sessions_.end()) return;
-    session->second.params = carry_param_values(*old, session->second.params, *scene);
-    if (session->second.effects == old->effects) session->second.effects = scene->effects;
-    const int cameras = static_cast<int>(scene->cameras.size());
-    session->second.camera_index = std::min(session->second.camera_index, cameras - 1);
+           !last_state_.interactive && !scene_swapped_;
 }
 
 // --- Actions ---------------------------------------------------------------------------------
@@ -939,327 +552,6 @@ void ViewerApp::print_stats() const {
     if (shown_) fmt::print("last_frame scale {:.3f} samples {}\n", shown_->scale, shown_->samples);
 }
 
-// --- The panel -------------------------------------------------------------------------------
-
-void ViewerApp::draw_ui() {
-    ImGui_ImplOpenGL2_NewFrame();
-    ImGui_ImplSDL2_NewFrame();
-    ImGui::NewFrame();
-    draw_image();
-    draw_status_overlay();
-    if (show_panel_) {
-        draw_panel();
-    } else {
-        panel_min_ = panel_max_ = ImVec2(0, 0);
-    }
-    draw_build_error();
-    if (show_help_) draw_help();
-    ImGui::Render();
-    int width = 0, height = 0;
-    SDL_GL_GetDrawableSize(window_.get(), &width, &height);
-    glViewport(0, 0, width, height);
-    glClearColor(0.0f, 0.0f, 0.0f, 1.0f);
-    glClear(GL_COLOR_BUFFER_BIT);
-    ImGui_ImplOpenGL2_RenderDrawData(ImGui::GetDrawData());
-    SDL_GL_SwapWindow(window_.get());
-}
-
-void ViewerApp::draw_image() {
-    if (texture_->empty()) return;
-    const ImVec2 size = ImGui::GetIO().DisplaySize;
-    ImGui::GetBackgroundDrawList()->AddImage(texture_->id(), ImVec2(0, 0), size);
-}
-
-void ViewerApp::draw_status_overlay() {
-    ImGui::SetNextWindowPos(ImVec2(8, 8));
-    ImGui::SetNextWindowBgAlpha(0.55f);
-    const ImGuiWindowFlags flags = ImGuiWindowFlags_NoDecoration | ImGuiWindowFlags_NoInputs |
-                                   ImGuiWindowFlags_AlwaysAutoResize |
-                                   ImGuiWindowFlags_NoSavedSettings |
-                                   ImGuiWindowFlags_NoFocusOnAppearing | ImGuiWindowFlags_NoNav;
-    ImGui::Begin("##status", nullptr, flags);
-    ImGui::Text("%s  %dx%d", scene().id.c_str(), last_state_.width, last_state_.height);
-    if (shown_) {
-        ImGui::Text("resolution %.0f%%  samples %d/%d  frame %.0f ms", shown_->scale * 100.0f,
-                    shown_->samples, quality_.sample_cap, shown_->render_ms);
-    }
-    if (status_.compiling) {
-        ImGui::TextColored(ImVec4(1, 0.8f, 0.2f, 1), "compiling %s...",
-                           status_.compiling_scene.c_str());
-    }
-    if (status_.pending_screenshots > 0) {
-        ImGui::TextColored(ImVec4(0.6f, 0.9f, 1, 1), "screenshot in progress (%d)",
-                           status_.pending_screenshots);
-    }
-    if (playing_) ImGui::Text("playing path  t = %.1f s", playback_time_);
-    ImGui::TextDisabled("H: help");
-    ImGui::End();
-}
-
-void ViewerApp::draw_panel() {
-    const ImVec2 display = ImGui::GetIO().DisplaySize;
-    const float width = std::min(kPanelWidth, display.x * 0.4f);
-    ImGui::SetNextWindowPos(ImVec2(display.x - width - 8, 8), ImGuiCond_Always);
-    ImGui::SetNextWindowSize(ImVec2(width, display.y - 16), ImGuiCond_Always);
-    ImGui::SetNextWindowBgAlpha(0.8f);
-    ImGui::Begin("fgr", nullptr, ImGuiWindowFlags_NoMove | ImGuiWindowFlags_NoResize);
-    panel_min_ = ImGui::GetWindowPos();
-    panel_max_ = ImVec2(panel_min_.x + ImGui::GetWindowSize().x,
-                        panel_min_.y + ImGui::GetWindowSize().y);
-    ImGui::Text("frame %.0f ms  ui %.0f fps", shown_ ? shown_->render_ms : 0.0,
-                ImGui::GetIO().Framerate);
-    ImGui::PushItemWidth(-150);
-    draw_scene_section();
-    draw_camera_section();
-    draw_params_section();
-    draw_effects_section();
-    draw_quality_section();
-    ImGui::PopItemWidth();
-    draw_messages();
-    ImGui::End();
-}
-
-void ViewerApp::draw_scene_section() {
-    if (!ImGui::CollapsingHeader("Scene", ImGuiTreeNodeFlags_DefaultOpen)) return;
-    for (size_t i = 0; i < scenes_.size(); ++i) {
-        const bool selected = static_cast<int>(i) == scene_index_;
-        if (ImGui::Selectable(fmt::format("{}  ({})", scenes_[i]->name, scenes_[i]->id).c_str(),
-                              selected) &&
-            !selected) {
-            switch_scene(static_cast<int>(i));
-        }
-    }
-    ImGui::TextWrapped("%s", scene().description.c_str());
-}
-
-void ViewerApp::draw_camera_section() {
-    if (!ImGui::CollapsingHeader("Camera and paths", ImGuiTreeNodeFlags_DefaultOpen)) return;
-    SceneSession& current = session();
-    const auto& cameras = scene().cameras;
-    if (ImGui::BeginCombo("camera", cameras[size_t(current.camera_index)].name.c_str())) {
-        for (size_t i = 0; i < cameras.size(); ++i) {
-            if (ImGui::Selectable(cameras[i].name.c_str(), int(i) == current.camera_index)) {
-                reset_camera(static_cast<int>(i));
-            }
-        }
-        ImGui::EndCombo();
-    }
-    ImGui::SliderFloat("fov", &current.camera.fov_degrees, 5.0f, 150.0f, "%.0f deg");
-    ImGui::SliderFloat("speed", &speed_factor_, 1e-3f, 1e3f, "%.3g x DE/s",
-                       ImGuiSliderFlags_Logarithmic);
-    if (status_.de_at_camera >= 0.0f) {
-        ImGui::Text("distance to surface %.3g", double(status_.de_at_camera));
-    } else {
-        ImGui::TextDisabled("distance to surface unknown");
-    }
-
-    const std::vector<CameraPath> paths = playable_paths();
-    if (!paths.empty()) {
-        current.path_index = std::clamp(current.path_index, 0, int(paths.size()) - 1);
-        if (ImGui::BeginCombo("path", paths[size_t(current.path_index)].name.c_str())) {
-            for (size_t i = 0; i < paths.size(); ++i) {
-                if (ImGui::Selectable(paths[i].name.c_str(), int(i) == current.path_index)) {
-                    current.path_index = static_cast<int>(i);
-                    playing_ = false;
-                }
-            }
-            ImGui::EndCombo();
-        }
-        if (ImGui::Button(playing_ ? "Stop (P)" : "Play (P)")) toggle_playback();
-        ImGui::SameLine();
-        ImGui::Checkbox("loop", &loop_playback_);
-    }
-    ImGui::Text("recorded: %zu keyframes", current.recorded.keyframes.size());
-    if (ImGui::Button("Add keyframe (K)")) record_keyframe();
-    ImGui::SameLine();
-    if (ImGui::Button("Save (Ctrl+S)")) save_recorded_path();
-    ImGui::SameLine();
-    if (ImGui::Button("Clear")) current.recorded.keyframes.clear();
-    ImGui::SliderFloat("keyframe spacing", &keyframe_interval_, 0.25f, 10.0f, "%.2f s");
-    if (ImGui::Button("Screenshot (F12)")) take_screenshot();
-}
-
-// One widget of the parameter's type and range; returns whether it changed.
-bool edit_param(const ParamInfo& param, float* value) {
-    const char* label = param.label.empty() ? param.id.c_str() : param.label.c_str();
-    bool changed = false;
-    const ImGuiSliderFlags clamp = ImGuiSliderFlags_AlwaysClamp;
-    switch (param.type) {
-        case ParamType::Float: {
-            const bool wide = param.min_value > 0.0f && param.max_value >= 100.0f * param.min_value;
-            changed = ImGui::SliderFloat(label, value, param.min_value, param.max_value, "%.4g",
-                                         clamp | (wide ? ImGuiSliderFlags_Logarithmic : 0));
-            break;
-        }
-        case ParamType::Int: {
-            int current = static_cast<int>(std::lround(*value));
-            const int low = static_cast<int>(param.min_value);
-            if (!param.choices.empty()) {
-                int index = std::clamp(current - low, 0, int(param.choices.size()) - 1);
-                if (ImGui::BeginCombo(label, param.choices[size_t(index)].c_str())) {
-                    for (size_t i = 0; i < param.choices.size(); ++i) {
-                        if (ImGui::Selectable(param.choices[i].c_str(), int(i) == index)) {
-                            index = static_cast<int>(i);
-                            changed = true;
-                        }
-                    }
-                    ImGui::EndCombo();
-                }
-                current = low + index;
-            } else {
-                changed = ImGui::SliderInt(label, &current, low,
-                                           static_cast<int>(param.max_value), "%d", clamp);
-            }
-            *value = static_cast<float>(current);
-            break;
-        }
-        case ParamType::Bool: {
-            bool on = *value != 0.0f;
-            changed = ImGui::Checkbox(label, &on);
-            *value = on ? 1.0f : 0.0f;
-            break;
-        }
-        case ParamType::Vec3:
-            changed = ImGui::SliderFloat3(label, value, param.min_value, param.max_value, "%.3g",
-                                          clamp);
-            break;
-        case ParamType::Colour: changed = ImGui::ColorEdit3(label, value, ImGuiColorEditFlags_Float);
-            break;
-    }
-    if (ImGui::IsItemHovered() && !param.description.empty()) {
-        ImGui::SetTooltip("%s: %s", param.id.c_str(), param.description.c_str());
-    }
-    return changed;
-}
-
-void ViewerApp::draw_params_section() {
-    const Scene& current = scene();
-    const std::vector<int> offsets = param_offsets(current);
-    std::vector<std::string> groups;  // in order of first appearance
-    for (const ParamInfo& param : current.params) {
-        if (std::find(groups.begin(), groups.end(), param.group) == groups.end()) {
-            groups.push_back(param.group);
-        }
-    }
-    for (const std::string& group : groups) {
-        const bool open_by_default = group != "Effects";
-        const std::string header = group.empty() ? "Parameters" : group;
-        if (!ImGui::CollapsingHeader(header.c_str(),
-                                     open_by_default ? ImGuiTreeNodeFlags_DefaultOpen : 0)) {
-            continue;
-        }
-        for (size_t i = 0; i < current.params.size(); ++i) {
-            const ParamInfo& param = current.params[i];
-            if (param.group != group) continue;
-            ImGui::PushID(param.id.c_str());
-            edit_param(param, &session().params[static_cast<size_t>(offsets[i])]);
-            ImGui::PopID();
-        }
-        if (group == "Quality" && ImGui::Button("Reset parameters")) {
-            session().params = default_param_values(current);
-        }
-    }
-}
-
-void ViewerApp::draw_effects_section() {
-    if (!ImGui::CollapsingHeader("Effects (compiled in)", ImGuiTreeNodeFlags_DefaultOpen)) return;
-    uint64_t& effects = session().effects;
-    for (uint64_t bit = 1; bit != 0 && bit <= FGR_EFFECT_ALL_V1; bit <<= 1) {
-        if ((FGR_EFFECT_ALL_V1 & bit) == 0) continue;
-        bool on = (effects & bit) != 0;
-        if (ImGui::Checkbox(effect_names(bit).c_str(), &on)) effects ^= bit;
-    }
-    if (status_.compiling) ImGui::TextColored(ImVec4(1, 0.8f, 0.2f, 1), "compiling...");
-}
-
-void ViewerApp::draw_quality_section() {
-    if (!ImGui::CollapsingHeader("Adaptive quality", ImGuiTreeNodeFlags_DefaultOpen)) return;
-    float target = static_cast<float>(quality_.target_ms);
-    bool changed = ImGui::SliderFloat("target frame", &target, 5.0f, 200.0f, "%.0f ms");
-    changed |= ImGui::SliderInt("sample cap", &quality_.sample_cap, 1, 256, "%d",
-                                ImGuiSliderFlags_Logarithmic);
-    if (changed) {
-        quality_.target_ms = target;
-        worker_->set_quality(quality_);
-    }
-    int preset = -1;
-    const char* preview = "window size";
-    if (ImGui::BeginCombo("window", preview)) {
-        for (size_t i = 0; i < std::size(kWindowPresets); ++i) {
-            if (ImGui::Selectable(kWindowPresets[i].first)) preset = static_cast<int>(i);
-        }
-        ImGui::EndCombo();
-    }
-    if (preset >= 0) {
-        set_window_size(kWindowPresets[preset].second.first, kWindowPresets[preset].second.second);
-    }
-    if (ImGui::Checkbox("fullscreen (F11)", &fullscreen_)) {
-        fullscreen_ = !fullscreen_;
-        toggle_fullscreen();
-    }
-    ImGui::TextDisabled("device: %s", worker_->device_info().name.c_str());
-}
-
-void ViewerApp::draw_messages() {
-    if (messages_.empty()) return;
-    ImGui::Separator();
-    for (const std::string& message : messages_) ImGui::TextWrapped("%s", message.c_str());
-}
-
-void ViewerApp::draw_help() {
-    const ImVec2 display = ImGui::GetIO().DisplaySize;
-    ImGui::SetNextWindowPos(ImVec2(display.x * 0.5f, display.y * 0.5f), ImGuiCond_Always,
-                            ImVec2(0.5f, 0.5f));
-    ImGui::SetNextWindowBgAlpha(0.95f);
-    ImGui::SetNextWindowFocus();
-    ImGui::Begin("Key bindings", &show_help_,
-                 ImGuiWindowFlags_AlwaysAutoResize | ImGuiWindowFlags_NoCollapse);
-    if (ImGui::BeginTable("keys", 2, ImGuiTableFlags_RowBg)) {
-        for (const auto& [keys, action] : kKeyBindings) {
-            ImGui::TableNextRow();
-            ImGui::TableSetColumnIndex(0);
-            ImGui::TextUnformatted(keys);
-            ImGui::TableSetColumnIndex(1);
-            ImGui::TextUnformatted(action);
-        }
-        ImGui::EndTable();
-    }
-    ImGui::TextDisabled("While the view moves fgr renders at reduced resolution to hold the");
-    ImGui::TextDisabled("target frame time; when it is still, it refines up to the sample cap.");
-    ImGui::End();
-}
-
-void ViewerApp::draw_build_error() {
-    if (!reload_error_.first.empty()) {
-        const ImVec2 display = ImGui::GetIO().DisplaySize;
-        ImGui::SetNextWindowPos(ImVec2(16, display.y * 0.25f), ImGuiCond_Appearing);
-        ImGui::SetNextWindowSize(ImVec2(std::min(640.0f, display.x * 0.6f), display.y * 0.45f),
-                                 ImGuiCond_Appearing);
-        bool open = true;
-        ImGui::Begin("Update refused", &open);
-        ImGui::TextColored(ImVec4(1, 0.4f, 0.4f, 1), "%s", reload_error_.first.c_str());
-        ImGui::BeginChild("log", ImVec2(0, 0), true, ImGuiWindowFlags_HorizontalScrollbar);
-        ImGui::TextUnformatted(reload_error_.second.c_str());
-        ImGui::EndChild();
-        ImGui::End();
-        if (!open) reload_error_ = {};
-    }
-    if (status_.error.empty()) return;
-    const ImVec2 display = ImGui::GetIO().DisplaySize;
-    ImGui::SetNextWindowPos(ImVec2(16, display.y * 0.3f), ImGuiCond_Appearing);
-    ImGui::SetNextWindowSize(ImVec2(std::min(640.0f, display.x * 0.6f), display.y * 0.5f),
-                             ImGuiCond_Appearing);
-    ImGui::Begin("Kernel build failed");
-    ImGui::TextColored(ImVec4(1, 0.4f, 0.4f, 1), "%s", status_.error.c_str());
-    ImGui::TextWrapped("The previous image stays; fix the scene, or switch scenes or effects.");
-    ImGui::BeginChild("log", ImVec2(0, 0), true, ImGuiWindowFlags_HorizontalScrollbar);
-    ImGui::TextUnformatted(status_.error_log.c_str());
-    ImGui::EndChild();
-    ImGui::End();
-}
-
-}  // namespace
-
 int run_viewer(const ViewerOptions& options) {
     Discovery found = discover_scenes(plugin_search_path(executable_dir()));
     if (found.scenes.empty()) {
@@ -1268,5 +560,6 @@ int run_viewer(const ViewerOptions& options) {
     ViewerApp app(options, std::move(found.scenes));
     return app.run();
 }
+
 
 }  // namespace fgr::viewer

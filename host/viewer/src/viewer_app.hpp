@@ -1,0 +1,264 @@
+#pragma once
+// The viewer application shared by its source files: viewer_app.cpp (window, input, camera,
+// actions), viewer_panel.cpp (the Dear ImGui panel) and viewer_reload.cpp (hot reload). Private
+// to fgr_viewer.
+
+#include <SDL2/SDL.h>
+#include <SDL2/SDL_opengl.h>
+#include <backends/imgui_impl_opengl2.h>
+#include <backends/imgui_impl_sdl.h>
+#include <imgui.h>
+
+#include <chrono>
+#include <stdexcept>
+#include <deque>
+#include <filesystem>
+#include <map>
+#include <memory>
+#include <optional>
+#include <set>
+#include <string>
+#include <vector>
+
+#include "fgr/camera_path_file.hpp"
+#include "fgr/image_io.hpp"
+#include "fgr/scene.hpp"
+#include "fgr/viewer/adaptive_quality.hpp"
+#include "fgr/viewer/file_watcher.hpp"
+#include "fgr/viewer/fly_camera.hpp"
+#include "fgr/viewer/frame_stats.hpp"
+#include "fgr/viewer/render_worker.hpp"
+#include "fgr/viewer/replay.hpp"
+#include "fgr/viewer/viewer.hpp"
+
+#include <fmt/format.h>
+
+namespace fgr::viewer {
+
+inline double seconds_since(std::chrono::steady_clock::time_point start) {
+    return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+}
+
+// --- RAII over SDL and ImGui handles --------------------------------------------------------
+
+struct SdlSession {
+    SdlSession() {
+        if (SDL_Init(SDL_INIT_VIDEO | SDL_INIT_EVENTS) != 0) {
+            throw std::runtime_error(fmt::format(
+                "cannot open a window: {} (no display? run under xvfb-run for headless use)",
+                SDL_GetError()));
+        }
+        // With no display SDL falls back to drivers that show nothing; a viewer nobody can see
+        // is an error unless that is what the user asked for.
+        const std::string driver = SDL_GetCurrentVideoDriver();
+        if ((driver == "offscreen" || driver == "dummy") && !SDL_getenv("SDL_VIDEODRIVER")) {
+            SDL_Quit();
+            throw std::runtime_error(
+                "cannot open a window: no display found (set DISPLAY, run under xvfb-run, or set "
+                "SDL_VIDEODRIVER=offscreen to run without showing anything)");
+        }
+    }
+    ~SdlSession() { SDL_Quit(); }
+    SdlSession(const SdlSession&) = delete;
+    SdlSession& operator=(const SdlSession&) = delete;
+};
+
+struct WindowDeleter {
+    void operator()(SDL_Window* window) const { SDL_DestroyWindow(window); }
+};
+using WindowHandle = std::unique_ptr<SDL_Window, WindowDeleter>;
+
+struct GlContextDeleter {
+    void operator()(void* context) const { SDL_GL_DeleteContext(context); }
+};
+using GlContextHandle = std::unique_ptr<void, GlContextDeleter>;
+
+class ImGuiSession {
+public:
+    ImGuiSession(SDL_Window* window, void* gl_context) {
+        IMGUI_CHECKVERSION();
+        ImGui::CreateContext();
+        ImGui::GetIO().IniFilename = nullptr;  // no imgui.ini in the user's directory
+        ImGui::StyleColorsDark();
+        ImGui_ImplSDL2_InitForOpenGL(window, gl_context);
+        ImGui_ImplOpenGL2_Init();
+    }
+    ~ImGuiSession() {
+        ImGui_ImplOpenGL2_Shutdown();
+        ImGui_ImplSDL2_Shutdown();
+        ImGui::DestroyContext();
+    }
+    ImGuiSession(const ImGuiSession&) = delete;
+    ImGuiSession& operator=(const ImGuiSession&) = delete;
+};
+
+// The texture the rendered image is drawn from.
+class ImageTexture {
+public:
+    ImageTexture() {
+        glGenTextures(1, &id_);
+        glBindTexture(GL_TEXTURE_2D, id_);
+        glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, GL_LINEAR);
+        glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAG_FILTER, GL_LINEAR);
+        glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_WRAP_S, GL_CLAMP);
+        glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_WRAP_T, GL_CLAMP);
+    }
+    ~ImageTexture() { glDeleteTextures(1, &id_); }
+    ImageTexture(const ImageTexture&) = delete;
+    ImageTexture& operator=(const ImageTexture&) = delete;
+
+    void upload(const Image8& image) {
+        glBindTexture(GL_TEXTURE_2D, id_);
+        glPixelStorei(GL_UNPACK_ALIGNMENT, 1);
+        if (image.width != width_ || image.height != height_) {
+            glTexImage2D(GL_TEXTURE_2D, 0, GL_RGB, image.width, image.height, 0, GL_RGB,
+                         GL_UNSIGNED_BYTE, image.rgb.data());
+            width_ = image.width;
+            height_ = image.height;
+        } else {
+            glTexSubImage2D(GL_TEXTURE_2D, 0, 0, 0, width_, height_, GL_RGB, GL_UNSIGNED_BYTE,
+                            image.rgb.data());
+        }
+    }
+    bool empty() const { return width_ == 0; }
+    ImTextureID id() const { return reinterpret_cast<ImTextureID>(static_cast<intptr_t>(id_)); }
+
+private:
+    GLuint id_ = 0;
+    int width_ = 0;
+    int height_ = 0;
+};
+
+// --- Per-scene state, remembered while the viewer runs ---------------------------------------
+
+struct SceneSession {
+    FlyCamera camera;
+    std::vector<float> params;
+    uint64_t effects = 0;
+    int camera_index = 0;
+    int path_index = 0;  // into ViewerApp::playable_paths()
+    CameraPath recorded{"recorded", {}};
+};
+
+// --- The application ---------------------------------------------------------------------
+
+class ViewerApp {
+public:
+    ViewerApp(const ViewerOptions& options, std::vector<Scene> scenes);
+    int run();
+
+private:
+    // Setup.
+    void prepare_first_scene();
+    void open_window();
+
+    // Input.
+    void pump_events();
+    void handle_event(const SDL_Event& event);
+    void handle_key_down(SDL_Scancode key, bool repeat);
+    void handle_mouse_button(const SDL_MouseButtonEvent& button, bool down);
+    void feed_replay();
+    void push_replay_event(const ReplayEvent& event);
+    bool over_ui(int x, int y) const;
+
+    // Per-frame updates.
+    void update_camera(double dt);
+    void update_playback(double dt);
+    void submit_view();
+    void receive_frame();
+    bool view_idle() const;
+    void log_refined_view();  // once each time the view becomes fully refined (debug level)
+
+    // Hot reload.
+    void watch_sources();
+    void poll_sources();
+    void reload_plugin(const std::filesystem::path& file);
+    void reload_source(const std::filesystem::path& file);
+    void apply_reloads();
+    void adopt_scene(size_t index, const std::shared_ptr<const Scene>& scene);
+
+    // Actions.
+    void switch_scene(int index);
+    void reset_camera(int camera_index);
+    void toggle_playback();
+    void record_keyframe();
+    void save_recorded_path();
+    void take_screenshot();
+    void toggle_fullscreen();
+    void set_window_size(int width, int height);
+    void add_message(std::string message);
+
+    // The panel.
+    void draw_ui();
+    void draw_image();
+    void draw_status_overlay();
+    void draw_panel();
+    void draw_scene_section();
+    void draw_camera_section();
+    void draw_params_section();
+    void draw_effects_section();
+    void draw_quality_section();
+    void draw_messages();
+    void draw_help();
+    void draw_build_error();
+
+    std::vector<CameraPath> playable_paths() const;
+    const Scene& scene() const { return *scenes_[static_cast<size_t>(scene_index_)]; }
+    SceneSession& session() { return sessions_.at(scene_index_); }
+    const SceneSession& session() const { return sessions_.at(scene_index_); }
+    void print_stats() const;
+
+    ViewerOptions options_;
+    std::vector<std::shared_ptr<const Scene>> scenes_;
+    std::optional<CameraPathFile> loaded_path_;
+    std::vector<ReplayEvent> replay_events_;
+
+    int scene_index_ = 0;
+    std::map<int, SceneSession> sessions_;
+
+    // Created in run(), in this order, destroyed in reverse.
+    std::unique_ptr<SdlSession> sdl_;
+    WindowHandle window_;
+    GlContextHandle gl_context_;
+    std::unique_ptr<ImGuiSession> imgui_;
+    std::unique_ptr<ImageTexture> texture_;
+    std::unique_ptr<RenderWorker> worker_;
+    std::unique_ptr<ReplayClock> replay_;
+
+    std::chrono::steady_clock::time_point start_;
+    bool quit_ = false;
+    std::set<SDL_Scancode> held_keys_;
+    bool looking_ = false;
+    float speed_factor_ = 1.0f;
+    bool show_panel_ = true;
+    bool show_help_ = false;
+    bool fullscreen_ = false;
+    bool playing_ = false;
+    bool loop_playback_ = true;
+    double playback_time_ = 0.0;
+    float keyframe_interval_ = 2.0f;
+    QualitySettings quality_;
+
+    ViewState last_state_;
+    bool submitted_ = false;
+    double last_change_ = -1e9;
+    uint64_t generation_ = 0;
+    WorkerStatus status_;
+    bool was_idle_ = false;
+    std::optional<DisplayFrame> shown_;  // image data lives in the texture; this keeps its facts
+    ImVec2 panel_min_{0, 0}, panel_max_{0, 0};
+    std::deque<std::string> messages_;
+    std::set<std::filesystem::path> screenshot_files_;
+    FileWatcher watcher_;
+    double next_watch_ = 0.0;
+    std::pair<std::string, std::string> reload_error_;  // a refused update: summary, log
+    bool scene_swapped_ = false;  // a reload replaced a scene since the last submitted view
+
+    FrameStats render_stats_;
+    FrameStats ui_stats_;
+    int frames_shown_ = 0;
+    int preview_frames_ = 0;  // shown at reduced resolution
+    double preview_scale_sum_ = 0.0;
+};
+
+}  // namespace fgr::viewer

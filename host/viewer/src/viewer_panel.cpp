@@ -1,0 +1,369 @@
+// The viewer's Dear ImGui panel: status line, scenes, cameras and paths, a widget per
+// parameter, effects, adaptive quality, messages, key bindings and build errors.
+#include "viewer_app.hpp"
+
+#include <algorithm>
+#include <cmath>
+
+#include <fmt/format.h>
+#include <spdlog/spdlog.h>
+
+#include "fgr/kernel_assembly.hpp"
+#include "fgr/parameters.hpp"
+#include "fgr/plugin.h"
+
+namespace fgr::viewer {
+namespace {
+
+constexpr float kPanelWidth = 340.0f;
+
+const std::pair<const char*, std::pair<int, int>> kWindowPresets[] = {
+    {"1366x768", {1366, 768}},
+    {"1920x1080", {1920, 1080}},
+    {"2560x1440", {2560, 1440}},
+    {"3840x2160", {3840, 2160}}};
+
+const std::pair<const char*, const char*> kKeyBindings[] = {
+    {"W A S D", "move forward, left, back, right"},
+    {"Q / E", "move down / up"},
+    {"Shift", "move 4x faster"},
+    {"right mouse + drag", "look around"},
+    {"mouse wheel", "movement speed (it also scales with the distance to the surface)"},
+    {"R", "reset to the scene's default camera"},
+    {"C", "next named camera of the scene"},
+    {"PageUp / PageDown", "previous / next scene"},
+    {"P", "play / stop the selected camera path"},
+    {"K", "record the current view as a keyframe"},
+    {"Ctrl+S", "save the recorded path as JSON"},
+    {"F12", "screenshot at full resolution and quality"},
+    {"Tab", "show / hide the panel"},
+    {"F11", "fullscreen"},
+    {"H or F1", "this help"},
+    {"Escape", "quit"}};
+
+}  // namespace
+
+// --- The panel -------------------------------------------------------------------------------
+
+void ViewerApp::draw_ui() {
+    ImGui_ImplOpenGL2_NewFrame();
+    ImGui_ImplSDL2_NewFrame();
+    ImGui::NewFrame();
+    draw_image();
+    draw_status_overlay();
+    if (show_panel_) {
+        draw_panel();
+    } else {
+        panel_min_ = panel_max_ = ImVec2(0, 0);
+    }
+    draw_build_error();
+    if (show_help_) draw_help();
+    ImGui::Render();
+    int width = 0, height = 0;
+    SDL_GL_GetDrawableSize(window_.get(), &width, &height);
+    glViewport(0, 0, width, height);
+    glClearColor(0.0f, 0.0f, 0.0f, 1.0f);
+    glClear(GL_COLOR_BUFFER_BIT);
+    ImGui_ImplOpenGL2_RenderDrawData(ImGui::GetDrawData());
+    SDL_GL_SwapWindow(window_.get());
+}
+
+void ViewerApp::draw_image() {
+    if (texture_->empty()) return;
+    const ImVec2 size = ImGui::GetIO().DisplaySize;
+    ImGui::GetBackgroundDrawList()->AddImage(texture_->id(), ImVec2(0, 0), size);
+}
+
+void ViewerApp::draw_status_overlay() {
+    ImGui::SetNextWindowPos(ImVec2(8, 8));
+    ImGui::SetNextWindowBgAlpha(0.55f);
+    const ImGuiWindowFlags flags = ImGuiWindowFlags_NoDecoration | ImGuiWindowFlags_NoInputs |
+                                   ImGuiWindowFlags_AlwaysAutoResize |
+                                   ImGuiWindowFlags_NoSavedSettings |
+                                   ImGuiWindowFlags_NoFocusOnAppearing | ImGuiWindowFlags_NoNav;
+    ImGui::Begin("##status", nullptr, flags);
+    ImGui::Text("%s  %dx%d", scene().id.c_str(), last_state_.width, last_state_.height);
+    if (shown_) {
+        ImGui::Text("resolution %.0f%%  samples %d/%d  frame %.0f ms", shown_->scale * 100.0f,
+                    shown_->samples, quality_.sample_cap, shown_->render_ms);
+    }
+    if (status_.compiling) {
+        ImGui::TextColored(ImVec4(1, 0.8f, 0.2f, 1), "compiling %s...",
+                           status_.compiling_scene.c_str());
+    }
+    if (status_.pending_screenshots > 0) {
+        ImGui::TextColored(ImVec4(0.6f, 0.9f, 1, 1), "screenshot in progress (%d)",
+                           status_.pending_screenshots);
+    }
+    if (playing_) ImGui::Text("playing path  t = %.1f s", playback_time_);
+    ImGui::TextDisabled("H: help");
+    ImGui::End();
+}
+
+void ViewerApp::draw_panel() {
+    const ImVec2 display = ImGui::GetIO().DisplaySize;
+    const float width = std::min(kPanelWidth, display.x * 0.4f);
+    ImGui::SetNextWindowPos(ImVec2(display.x - width - 8, 8), ImGuiCond_Always);
+    ImGui::SetNextWindowSize(ImVec2(width, display.y - 16), ImGuiCond_Always);
+    ImGui::SetNextWindowBgAlpha(0.8f);
+    ImGui::Begin("fgr", nullptr, ImGuiWindowFlags_NoMove | ImGuiWindowFlags_NoResize);
+    panel_min_ = ImGui::GetWindowPos();
+    panel_max_ = ImVec2(panel_min_.x + ImGui::GetWindowSize().x,
+                        panel_min_.y + ImGui::GetWindowSize().y);
+    ImGui::Text("frame %.0f ms  ui %.0f fps", shown_ ? shown_->render_ms : 0.0,
+                ImGui::GetIO().Framerate);
+    ImGui::PushItemWidth(-150);
+    draw_scene_section();
+    draw_camera_section();
+    draw_params_section();
+    draw_effects_section();
+    draw_quality_section();
+    ImGui::PopItemWidth();
+    draw_messages();
+    ImGui::End();
+}
+
+void ViewerApp::draw_scene_section() {
+    if (!ImGui::CollapsingHeader("Scene", ImGuiTreeNodeFlags_DefaultOpen)) return;
+    for (size_t i = 0; i < scenes_.size(); ++i) {
+        const bool selected = static_cast<int>(i) == scene_index_;
+        if (ImGui::Selectable(fmt::format("{}  ({})", scenes_[i]->name, scenes_[i]->id).c_str(),
+                              selected) &&
+            !selected) {
+            switch_scene(static_cast<int>(i));
+        }
+    }
+    ImGui::TextWrapped("%s", scene().description.c_str());
+}
+
+void ViewerApp::draw_camera_section() {
+    if (!ImGui::CollapsingHeader("Camera and paths", ImGuiTreeNodeFlags_DefaultOpen)) return;
+    SceneSession& current = session();
+    const auto& cameras = scene().cameras;
+    if (ImGui::BeginCombo("camera", cameras[size_t(current.camera_index)].name.c_str())) {
+        for (size_t i = 0; i < cameras.size(); ++i) {
+            if (ImGui::Selectable(cameras[i].name.c_str(), int(i) == current.camera_index)) {
+                reset_camera(static_cast<int>(i));
+            }
+        }
+        ImGui::EndCombo();
+    }
+    ImGui::SliderFloat("fov", &current.camera.fov_degrees, 5.0f, 150.0f, "%.0f deg");
+    ImGui::SliderFloat("speed", &speed_factor_, 1e-3f, 1e3f, "%.3g x DE/s",
+                       ImGuiSliderFlags_Logarithmic);
+    if (status_.de_at_camera >= 0.0f) {
+        ImGui::Text("distance to surface %.3g", double(status_.de_at_camera));
+    } else {
+        ImGui::TextDisabled("distance to surface unknown");
+    }
+
+    const std::vector<CameraPath> paths = playable_paths();
+    if (!paths.empty()) {
+        current.path_index = std::clamp(current.path_index, 0, int(paths.size()) - 1);
+        if (ImGui::BeginCombo("path", paths[size_t(current.path_index)].name.c_str())) {
+            for (size_t i = 0; i < paths.size(); ++i) {
+                if (ImGui::Selectable(paths[i].name.c_str(), int(i) == current.path_index)) {
+                    current.path_index = static_cast<int>(i);
+                    playing_ = false;
+                }
+            }
+            ImGui::EndCombo();
+        }
+        if (ImGui::Button(playing_ ? "Stop (P)" : "Play (P)")) toggle_playback();
+        ImGui::SameLine();
+        ImGui::Checkbox("loop", &loop_playback_);
+    }
+    ImGui::Text("recorded: %zu keyframes", current.recorded.keyframes.size());
+    if (ImGui::Button("Add keyframe (K)")) record_keyframe();
+    ImGui::SameLine();
+    if (ImGui::Button("Save (Ctrl+S)")) save_recorded_path();
+    ImGui::SameLine();
+    if (ImGui::Button("Clear")) current.recorded.keyframes.clear();
+    ImGui::SliderFloat("keyframe spacing", &keyframe_interval_, 0.25f, 10.0f, "%.2f s");
+    if (ImGui::Button("Screenshot (F12)")) take_screenshot();
+}
+
+namespace {
+
+// One widget of the parameter's type and range; returns whether it changed.
+bool edit_param(const ParamInfo& param, float* value) {
+    const char* label = param.label.empty() ? param.id.c_str() : param.label.c_str();
+    bool changed = false;
+    const ImGuiSliderFlags clamp = ImGuiSliderFlags_AlwaysClamp;
+    switch (param.type) {
+        case ParamType::Float: {
+            const bool wide = param.min_value > 0.0f && param.max_value >= 100.0f * param.min_value;
+            changed = ImGui::SliderFloat(label, value, param.min_value, param.max_value, "%.4g",
+                                         clamp | (wide ? ImGuiSliderFlags_Logarithmic : 0));
+            break;
+        }
+        case ParamType::Int: {
+            int current = static_cast<int>(std::lround(*value));
+            const int low = static_cast<int>(param.min_value);
+            if (!param.choices.empty()) {
+                int index = std::clamp(current - low, 0, int(param.choices.size()) - 1);
+                if (ImGui::BeginCombo(label, param.choices[size_t(index)].c_str())) {
+                    for (size_t i = 0; i < param.choices.size(); ++i) {
+                        if (ImGui::Selectable(param.choices[i].c_str(), int(i) == index)) {
+                            index = static_cast<int>(i);
+                            changed = true;
+                        }
+                    }
+                    ImGui::EndCombo();
+                }
+                current = low + index;
+            } else {
+                changed = ImGui::SliderInt(label, &current, low,
+                                           static_cast<int>(param.max_value), "%d", clamp);
+            }
+            *value = static_cast<float>(current);
+            break;
+        }
+        case ParamType::Bool: {
+            bool on = *value != 0.0f;
+            changed = ImGui::Checkbox(label, &on);
+            *value = on ? 1.0f : 0.0f;
+            break;
+        }
+        case ParamType::Vec3:
+            changed = ImGui::SliderFloat3(label, value, param.min_value, param.max_value, "%.3g",
+                                          clamp);
+            break;
+        case ParamType::Colour: changed = ImGui::ColorEdit3(label, value, ImGuiColorEditFlags_Float);
+            break;
+    }
+    if (ImGui::IsItemHovered() && !param.description.empty()) {
+        ImGui::SetTooltip("%s: %s", param.id.c_str(), param.description.c_str());
+    }
+    return changed;
+}
+
+}  // namespace
+
+void ViewerApp::draw_params_section() {
+    const Scene& current = scene();
+    const std::vector<int> offsets = param_offsets(current);
+    std::vector<std::string> groups;  // in order of first appearance
+    for (const ParamInfo& param : current.params) {
+        if (std::find(groups.begin(), groups.end(), param.group) == groups.end()) {
+            groups.push_back(param.group);
+        }
+    }
+    for (const std::string& group : groups) {
+        const bool open_by_default = group != "Effects";
+        const std::string header = group.empty() ? "Parameters" : group;
+        if (!ImGui::CollapsingHeader(header.c_str(),
+                                     open_by_default ? ImGuiTreeNodeFlags_DefaultOpen : 0)) {
+            continue;
+        }
+        for (size_t i = 0; i < current.params.size(); ++i) {
+            const ParamInfo& param = current.params[i];
+            if (param.group != group) continue;
+            ImGui::PushID(param.id.c_str());
+            edit_param(param, &session().params[static_cast<size_t>(offsets[i])]);
+            ImGui::PopID();
+        }
+        if (group == "Quality" && ImGui::Button("Reset parameters")) {
+            session().params = default_param_values(current);
+        }
+    }
+}
+
+void ViewerApp::draw_effects_section() {
+    if (!ImGui::CollapsingHeader("Effects (compiled in)", ImGuiTreeNodeFlags_DefaultOpen)) return;
+    uint64_t& effects = session().effects;
+    for (uint64_t bit = 1; bit != 0 && bit <= FGR_EFFECT_ALL_V1; bit <<= 1) {
+        if ((FGR_EFFECT_ALL_V1 & bit) == 0) continue;
+        bool on = (effects & bit) != 0;
+        if (ImGui::Checkbox(effect_names(bit).c_str(), &on)) effects ^= bit;
+    }
+    if (status_.compiling) ImGui::TextColored(ImVec4(1, 0.8f, 0.2f, 1), "compiling...");
+}
+
+void ViewerApp::draw_quality_section() {
+    if (!ImGui::CollapsingHeader("Adaptive quality", ImGuiTreeNodeFlags_DefaultOpen)) return;
+    float target = static_cast<float>(quality_.target_ms);
+    bool changed = ImGui::SliderFloat("target frame", &target, 5.0f, 200.0f, "%.0f ms");
+    changed |= ImGui::SliderInt("sample cap", &quality_.sample_cap, 1, 256, "%d",
+                                ImGuiSliderFlags_Logarithmic);
+    if (changed) {
+        quality_.target_ms = target;
+        worker_->set_quality(quality_);
+    }
+    int preset = -1;
+    const char* preview = "window size";
+    if (ImGui::BeginCombo("window", preview)) {
+        for (size_t i = 0; i < std::size(kWindowPresets); ++i) {
+            if (ImGui::Selectable(kWindowPresets[i].first)) preset = static_cast<int>(i);
+        }
+        ImGui::EndCombo();
+    }
+    if (preset >= 0) {
+        set_window_size(kWindowPresets[preset].second.first, kWindowPresets[preset].second.second);
+    }
+    if (ImGui::Checkbox("fullscreen (F11)", &fullscreen_)) {
+        fullscreen_ = !fullscreen_;
+        toggle_fullscreen();
+    }
+    ImGui::TextDisabled("device: %s", worker_->device_info().name.c_str());
+}
+
+void ViewerApp::draw_messages() {
+    if (messages_.empty()) return;
+    ImGui::Separator();
+    for (const std::string& message : messages_) ImGui::TextWrapped("%s", message.c_str());
+}
+
+void ViewerApp::draw_help() {
+    const ImVec2 display = ImGui::GetIO().DisplaySize;
+    ImGui::SetNextWindowPos(ImVec2(display.x * 0.5f, display.y * 0.5f), ImGuiCond_Always,
+                            ImVec2(0.5f, 0.5f));
+    ImGui::SetNextWindowBgAlpha(0.95f);
+    ImGui::SetNextWindowFocus();
+    ImGui::Begin("Key bindings", &show_help_,
+                 ImGuiWindowFlags_AlwaysAutoResize | ImGuiWindowFlags_NoCollapse);
+    if (ImGui::BeginTable("keys", 2, ImGuiTableFlags_RowBg)) {
+        for (const auto& [keys, action] : kKeyBindings) {
+            ImGui::TableNextRow();
+            ImGui::TableSetColumnIndex(0);
+            ImGui::TextUnformatted(keys);
+            ImGui::TableSetColumnIndex(1);
+            ImGui::TextUnformatted(action);
+        }
+        ImGui::EndTable();
+    }
+    ImGui::TextDisabled("While the view moves fgr renders at reduced resolution to hold the");
+    ImGui::TextDisabled("target frame time; when it is still, it refines up to the sample cap.");
+    ImGui::End();
+}
+
+void ViewerApp::draw_build_error() {
+    if (!reload_error_.first.empty()) {
+        const ImVec2 display = ImGui::GetIO().DisplaySize;
+        ImGui::SetNextWindowPos(ImVec2(16, display.y * 0.25f), ImGuiCond_Appearing);
+        ImGui::SetNextWindowSize(ImVec2(std::min(640.0f, display.x * 0.6f), display.y * 0.45f),
+                                 ImGuiCond_Appearing);
+        bool open = true;
+        ImGui::Begin("Update refused", &open);
+        ImGui::TextColored(ImVec4(1, 0.4f, 0.4f, 1), "%s", reload_error_.first.c_str());
+        ImGui::BeginChild("log", ImVec2(0, 0), true, ImGuiWindowFlags_HorizontalScrollbar);
+        ImGui::TextUnformatted(reload_error_.second.c_str());
+        ImGui::EndChild();
+        ImGui::End();
+        if (!open) reload_error_ = {};
+    }
+    if (status_.error.empty()) return;
+    const ImVec2 display = ImGui::GetIO().DisplaySize;
+    ImGui::SetNextWindowPos(ImVec2(16, display.y * 0.3f), ImGuiCond_Appearing);
+    ImGui::SetNextWindowSize(ImVec2(std::min(640.0f, display.x * 0.6f), display.y * 0.5f),
+                             ImGuiCond_Appearing);
+    ImGui::Begin("Kernel build failed");
+    ImGui::TextColored(ImVec4(1, 0.4f, 0.4f, 1), "%s", status_.error.c_str());
+    ImGui::TextWrapped("The previous image stays; fix the scene, or switch scenes or effects.");
+    ImGui::BeginChild("log", ImVec2(0, 0), true, ImGuiWindowFlags_HorizontalScrollbar);
+    ImGui::TextUnformatted(status_.error_log.c_str());
+    ImGui::EndChild();
+    ImGui::End();
+}
+
+}  // namespace fgr::viewer

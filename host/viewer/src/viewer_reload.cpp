@@ -1,0 +1,143 @@
+// The viewer's hot reload: watching plugin folders and scene sources, and swapping in a new
+// version of a scene once the render thread has built it.
+#include "viewer_app.hpp"
+
+#include <algorithm>
+#include <fstream>
+#include <sstream>
+
+#include <fmt/format.h>
+#include <spdlog/spdlog.h>
+
+#include "fgr/discovery.hpp"
+#include "fgr/parameters.hpp"
+#include "fgr/plugin_loader.hpp"
+
+namespace fgr::viewer {
+namespace {
+
+// How often plugin folders (and in --dev mode scene sources) are checked for changes.
+constexpr double kWatchSeconds = 0.5;
+
+}  // namespace
+
+// --- Hot reload --------------------------------------------------------------------------------
+
+void ViewerApp::watch_sources() {
+    for (const auto& directory : plugin_search_path(executable_dir())) {
+        watcher_.watch_directory(directory);
+    }
+    if (options_.dev) {
+        // A scene built with fgr_add_scene_plugin names its .cl file by absolute path.
+        for (const auto& scene : scenes_) {
+            const std::filesystem::path source = scene->source_name;
+            if (source.is_absolute() && std::filesystem::exists(source)) {
+                watcher_.watch_file(source);
+                spdlog::info("watching {} for '{}'", source.string(), scene->id);
+            }
+        }
+    }
+    watcher_.poll();  // what is there now is what was loaded
+}
+
+void ViewerApp::poll_sources() {
+    const double now = seconds_since(start_);
+    if (now < next_watch_) return;
+    next_watch_ = now + kWatchSeconds;
+    for (const std::filesystem::path& file : watcher_.poll()) {
+        if (file.extension() == ".so") {
+            reload_plugin(file);
+        } else {
+            reload_source(file);
+        }
+    }
+}
+
+void ViewerApp::reload_plugin(const std::filesystem::path& file) {
+    LoadResult loaded = load_scene_plugin(file);
+    if (!loaded.scene) {
+        const std::string message =
+            fmt::format("{}: {} (keeping the version loaded before)", file.string(), loaded.error);
+        spdlog::error("{}", message);
+        add_message(message);
+        reload_error_ = {message, ""};
+        return;
+    }
+    auto candidate = std::make_shared<const Scene>(std::move(*loaded.scene));
+    const auto same_id = std::find_if(scenes_.begin(), scenes_.end(),
+                                      [&](const auto& s) { return s->id == candidate->id; });
+    if (same_id == scenes_.end()) {
+        spdlog::info("new scene '{}' from {}", candidate->id, file.string());
+        add_message(fmt::format("new scene '{}'", candidate->id));
+        scenes_.push_back(candidate);
+        if (options_.dev) watcher_.watch_file(candidate->source_name);
+        return;
+    }
+    if ((*same_id)->plugin_file != candidate->plugin_file) {
+        spdlog::warn("{}: scene '{}' is already loaded from {}; ignored", file.string(),
+                     candidate->id, (*same_id)->plugin_file.string());
+        return;
+    }
+    const int index = static_cast<int>(same_id - scenes_.begin());
+    const uint64_t effects =
+        sessions_.count(index) ? sessions_.at(index).effects : candidate->effects;
+    spdlog::info("{} changed: building the new '{}'", file.string(), candidate->id);
+    worker_->request_reload({candidate, *same_id, effects});
+}
+
+void ViewerApp::reload_source(const std::filesystem::path& file) {
+    std::ifstream in(file, std::ios::binary);
+    std::ostringstream text;
+    text << in.rdbuf();
+    if (!in && !in.eof()) {
+        add_message(fmt::format("cannot read {}", file.string()));
+        return;
+    }
+    for (size_t i = 0; i < scenes_.size(); ++i) {
+        if (scenes_[i]->source_name != file.string()) continue;
+        Scene edited = *scenes_[i];
+        edited.source = text.str();
+        const uint64_t effects =
+            sessions_.count(int(i)) ? sessions_.at(int(i)).effects : edited.effects;
+        spdlog::info("{} changed: building the new '{}'", file.string(), edited.id);
+        worker_->request_reload({std::make_shared<const Scene>(std::move(edited)), scenes_[i],
+                                 effects});
+    }
+}
+
+void ViewerApp::apply_reloads() {
+    for (const ReloadResult& result : worker_->take_reloads()) {
+        const auto running = std::find(scenes_.begin(), scenes_.end(), result.request.replaces);
+        if (running == scenes_.end()) continue;  // replaced again meanwhile
+        const std::string& id = result.request.candidate->id;
+        if (!result.ok) {
+            const std::string message =
+                fmt::format("update of '{}' refused, keeping the previous version: {}", id,
+                            result.error);
+            spdlog::error("{}", message);
+            add_message(message);
+            reload_error_ = {message, result.error_log};
+            continue;
+        }
+        adopt_scene(static_cast<size_t>(running - scenes_.begin()), result.request.candidate);
+        reload_error_ = {};
+        spdlog::info("reloaded '{}'", id);
+        add_message(fmt::format("reloaded '{}'", id));
+    }
+}
+
+// The new version takes the old one's place; its session keeps the camera and every parameter
+// that still exists, and follows the scene's effects unless the user had changed them.
+void ViewerApp::adopt_scene(size_t index, const std::shared_ptr<const Scene>& scene) {
+    const std::shared_ptr<const Scene> old = scenes_[index];
+    scenes_[index] = scene;
+    scene_swapped_ = true;
+    const auto session = sessions_.find(static_cast<int>(index));
+    if (session == sessions_.end()) return;
+    session->second.params = carry_param_values(*old, session->second.params, *scene);
+    if (session->second.effects == old->effects) session->second.effects = scene->effects;
+    const int cameras = static_cast<int>(scene->cameras.size());
+    session->second.camera_index = std::min(session->second.camera_index, cameras - 1);
+}
+
+}  // namespace fgr::viewer
