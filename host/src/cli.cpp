@@ -9,11 +9,15 @@
 #include <string>
 #include <vector>
 
+#include <unistd.h>
+
 #include <CLI/CLI.hpp>
 #include <fmt/format.h>
 #include <spdlog/sinks/stdout_color_sinks.h>
 #include <spdlog/spdlog.h>
 
+#include "fgr/atomic_file.hpp"
+#include "fgr/bench.hpp"
 #include "fgr/camera.hpp"
 #include "fgr/camera_path_file.hpp"
 #include "fgr/discovery.hpp"
@@ -429,6 +433,100 @@ int command_view(ViewCommandOptions& options) {
     return viewer::run_viewer(viewer);
 }
 
+struct BenchOptions {
+    std::string scene;
+    BenchSettings settings;
+    int frames = 0;
+    std::string output;  // prefix of the .json and .csv files
+    int device = -1;
+};
+
+void add_bench_command(CLI::App& app, BenchOptions& options) {
+    CLI::App* bench = app.add_subcommand(
+        "bench", "benchmark protocol: play the scene's benchmark camera path, record frame times");
+    bench->add_option("scene", options.scene, "scene id (see `fgr list`)")->required();
+    bench->add_option("--width", options.settings.width, "image width (default 1280)")
+        ->check(CLI::Range(1, kMaxImageSide));
+    bench->add_option("--height", options.settings.height, "image height (default 720)")
+        ->check(CLI::Range(1, kMaxImageSide));
+    auto* duration = bench->add_option("--duration", options.settings.duration_seconds,
+                                       "seconds per run, the path played in real time (default 10)")
+                         ->check(CLI::Range(0.1, 3600.0));
+    bench->add_option("--frames", options.frames,
+                      "a fixed number of frames per run, spread evenly over the path")
+        ->check(CLI::Range(1, 100000))
+        ->excludes(duration);
+    bench->add_option("--runs", options.settings.runs, "repeat and average (default 1)")
+        ->check(CLI::Range(1, 100));
+    bench->add_option("--path", options.settings.path,
+                      "camera path (default: 'benchmark' if the scene has it, else its first)");
+    bench->add_option("--spp", options.settings.samples, "samples per pixel (default 1)")
+        ->check(CLI::Range(1, kMaxSamples));
+    bench->add_option("-o,--output", options.output,
+                      "write PREFIX.json and PREFIX.csv (default: bench-SCENE)");
+    bench->add_option("--device", options.device, "OpenCL device index (see `fgr info`)")
+        ->check(CLI::NonNegativeNumber);
+    bench->add_option("--packet-width", options.settings.packet_width,
+                      "rays per work-item (default: 16 on CPUs, 1 on GPUs)")
+        ->check(CLI::IsMember({1, 4, 8, 16}));
+}
+
+// A bar on a terminal, a line every quarter otherwise (logs, CI).
+BenchProgress bench_progress(int runs) {
+    const bool terminal = isatty(fileno(stderr)) != 0;
+    return [terminal, runs, last_quarter = -1, last_run = -1](int run, double done) mutable {
+        if (terminal) {
+            const int filled = static_cast<int>(done * 30.0);
+            std::fprintf(stderr, "\rrun %d/%d [%s%s] %3.0f%%", run + 1, runs,
+                         std::string(static_cast<size_t>(filled), '#').c_str(),
+                         std::string(static_cast<size_t>(30 - filled), '.').c_str(), done * 100.0);
+            if (done >= 1.0) std::fputc('\n', stderr);
+            return;
+        }
+        const int quarter = static_cast<int>(done * 4.0);
+        if (run != last_run || quarter != last_quarter) {
+            spdlog::info("run {}/{}: {:.0f}%", run + 1, runs, quarter * 25.0);
+            last_run = run;
+            last_quarter = quarter;
+        }
+    };
+}
+
+int command_bench(BenchOptions& options) {
+    const Discovery found = discover();
+    const Scene& scene = find_scene(found, options.scene);
+    if (options.frames > 0) options.settings.frames = options.frames;
+    try {
+        bench_path(scene, options.settings.path);
+    } catch (const std::invalid_argument& error) {
+        throw UsageError(error.what());
+    }
+    const std::string prefix = options.output.empty() ? "bench-" + scene.id : options.output;
+    const std::filesystem::path json_file = prefix + ".json", csv_file = prefix + ".csv";
+    const auto directory = json_file.has_parent_path() ? json_file.parent_path() : ".";
+    if (std::error_code error; !std::filesystem::is_directory(directory, error)) {
+        throw UsageError(fmt::format("cannot write '{}': directory '{}' does not exist",
+                                     json_file.string(), directory.string()));
+    }
+    RenderOptions device_choice;
+    device_choice.device = options.device;
+    const ComputeDevice device = open_requested_device(device_choice);
+    ProgramCache cache(ProgramCache::default_directory());
+    spdlog::info("benchmarking '{}' at {}x{} on {}", scene.id, options.settings.width,
+                 options.settings.height, device.info.name);
+    const BenchReport report = run_benchmark(scene, device, cache, options.settings,
+                                             bench_progress(options.settings.runs));
+    fmt::print("{}", bench_table(report));
+    try {
+        write_text_file_atomically(json_file, bench_json(report));
+        write_text_file_atomically(csv_file, bench_csv(report));
+    } catch (const std::runtime_error& error) {
+        throw RuntimeFailure(error.what());
+    }
+    fmt::print("wrote {} and {}\n", json_file.string(), csv_file.string());
+    return 0;
+}
+
 struct NewSceneOptions {
     std::string name;
     std::string directory;  // default: ./NAME
@@ -486,16 +584,19 @@ int run_cli(int argc, char** argv) {
     add_view_command(app, view_options);
     NewSceneOptions new_scene_options;
     add_new_scene_command(app, new_scene_options);
+    BenchOptions bench_options;
+    add_bench_command(app, bench_options);
     if (argc < 2) {
         std::fputs(app.help().c_str(), stdout);
-        return report_error("no command given (commands: list, info, render, view, new-scene)", kExitUsage);
+        return report_error("no command given (commands: list, info, render, view, new-scene, bench)", kExitUsage);
     }
     if (const std::string first = argv[1]; !first.empty() && first.front() != '-' &&
         first != "list" && first != "info" && first != "render" && first != "view" &&
-        first != "new-scene") {
+        first != "new-scene" && first != "bench") {
         return report_error(
-            fmt::format("unknown command '{}' (commands: list, info, render, view, new-scene)",
-                        first),
+            fmt::format(
+                "unknown command '{}' (commands: list, info, render, view, new-scene, bench)",
+                first),
                             kExitUsage);
     }
     try {
@@ -512,6 +613,7 @@ int run_cli(int argc, char** argv) {
         if (command == "info") return command_info();
         if (command == "view") return command_view(view_options);
         if (command == "new-scene") return command_new_scene(new_scene_options);
+        if (command == "bench") return command_bench(bench_options);
         return command_render(render_options);
     } catch (const UsageError& error) {
         return report_error(error.what(), kExitUsage);
