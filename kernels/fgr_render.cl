@@ -60,7 +60,8 @@ inline vec3 primary_direction(camera_frame camera, real px, real py, camera_samp
 }
 
 /* Renders sample `sample` of every pixel of the tile. Sample 0 writes the planes; later samples
- * add to them (the host divides by the sample count), and only sample 0 writes depth. */
+ * add to them (the host divides by the sample count), and only sample 0 writes depth (and, with
+ * FGR_STATS, the step count and out-of-steps planes 4 and 5). */
 __kernel void fgr_render(__global float* planes, int plane_size, int tile_count,
                          camera_frame camera, int sample, PARAMS, __constant const float* lights,
                          int light_count) {
@@ -122,6 +123,17 @@ __kernel void fgr_render(__global float* planes, int plane_size, int tile_count,
     fgr_store(colour.y, tile, planes + plane_size);
     fgr_store(colour.z, tile, planes + 2 * plane_size);
     if (sample == 0) fgr_store(depth, tile, planes + 3 * plane_size);
+#ifdef FGR_STATS
+    /* The work behind each pixel, for `fgr render --stats`: the primary march's DE evaluations
+     * (steps), and whether the ray ran out of steps before it hit or left the scene. */
+    if (sample == 0) {
+        mask exhausted = inside & !hit.hit & (hit.steps >= limits.max_steps) &
+                         (hit.t <= limits.max_distance);
+        fgr_store(convert_real(hit.steps), tile, planes + 4 * plane_size);
+        fgr_store(select(fgr_real(0.0f), fgr_real(1.0f), exhausted), tile,
+                  planes + 5 * plane_size);
+    }
+#endif
 }
 
 /* Evaluates the scene's DE at `count` points given as planes x, y, z (padded to whole packets):

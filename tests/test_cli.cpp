@@ -319,6 +319,22 @@ TEST_F(CliTest, RendersSmallImage) {
     EXPECT_EQ(directory_listing(dir()), std::vector<std::string>{"out.png"});
 }
 
+TEST_F(CliTest, StatsReportStepsEvaluationsAndRaysOutOfSteps) {
+    const RunResult result =
+        run({"render", "mandelbulb", "-o", out_png().string(), "--width", std::to_string(kWidth),
+             "--height", std::to_string(kHeight), "--stats", "--set", "max_steps=10"});
+    ASSERT_EQ(result.exit_code, 0) << result;
+    const auto steps = line_value(result.out, "steps_per_pixel");
+    const auto evaluations = line_value(result.out, "de_evaluations");
+    const auto exhausted = line_value(result.out, "out_of_steps");
+    ASSERT_TRUE(steps && evaluations && exhausted) << result;
+    EXPECT_GT(std::stod(*steps), 1.0);
+    EXPECT_NE(steps->find("(max 10)"), std::string::npos) << *steps;
+    EXPECT_GT(std::stol(*evaluations), kWidth * kHeight);
+    EXPECT_GT(std::stod(*exhausted), 0.0) << "10 steps leave rays unresolved";
+    expect_rgb_png(out_png(), kWidth, kHeight);
+}
+
 TEST_F(CliTest, RelativeOutputPathIsInWorkingDirectory) {
     const RunResult result =
         run({"render", "mandelbulb", "-o", "rel.png", "--width", "24", "--height", "16"});

@@ -198,5 +198,35 @@ TEST_F(RenderTest, CancelStopsAFrameAndANeverCancellingHookChangesNothing) {
     EXPECT_EQ(banded.hits, plain.hits);
 }
 
+// `fgr render --stats`: counting the work changes no pixel, and the counts add up.
+TEST_F(RenderTest, MarchStatsCountStepsAndRaysThatRanOutOfSteps) {
+    FrameRequest request{96, 72, mandelbulb_->cameras.front().view,
+                         default_param_values(*mandelbulb_)};
+    const int width = preferred_packet_width(device_->info);
+    const Frame plain = render(*mandelbulb_, request);
+    Renderer counting(*device_, cache_, *mandelbulb_, {width, mandelbulb_->effects, true});
+    const Frame counted = counting.render(request);
+    ASSERT_TRUE(counted.stats.has_value());
+    EXPECT_FALSE(plain.stats.has_value());
+    EXPECT_EQ(counted.image.rgb, plain.image.rgb);
+    const MarchStats& stats = *counted.stats;
+    EXPECT_EQ(stats.pixels, 96 * 72);
+    EXPECT_GT(stats.mean_steps, 2.0);
+    EXPECT_LE(stats.max_steps, int(param_value(*mandelbulb_, request.params, "max_steps")));
+    EXPECT_NEAR(double(stats.de_evaluations),
+                stats.mean_steps * double(stats.pixels) + 4.0 * double(counted.hits), 0.5);
+    EXPECT_EQ(stats.out_of_steps, 0) << "the default view resolves every ray";
+
+    set_param_from_text(*mandelbulb_, request.params, "max_steps=12");
+    const Frame starved = counting.render(request);
+    ASSERT_TRUE(starved.stats.has_value());
+    EXPECT_LE(starved.stats->max_steps, 12);
+    EXPECT_GT(starved.stats->out_of_steps, stats.pixels / 10) << "12 steps cannot reach the bulb";
+    EXPECT_LT(starved.stats->out_of_steps + starved.hits, long(stats.pixels))
+        << "rays that miss the bulb still leave the scene";
+    EXPECT_NEAR(starved.stats->out_of_steps_percent(),
+                100.0 * double(starved.stats->out_of_steps) / double(stats.pixels), 1e-9);
+}
+
 }  // namespace
 }  // namespace fgr

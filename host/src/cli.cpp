@@ -54,6 +54,7 @@ struct RenderOptions {
     int bit_depth = 8;     // 8: tone-mapped sRGB; 16: linear
     int packet_width = 0;  // 0: the device's preference
     bool all = false;      // every scene's default view into the directory `output`
+    bool stats = false;    // print the primary rays' work: steps, DE evaluations, out of steps
     std::string effect_changes;  // "+shadows,-ambient_occlusion": over the scene's own effects
 };
 
@@ -239,7 +240,7 @@ void render_to_file(const Scene& scene, const FrameRequest& request, const Compu
                     const std::filesystem::path& output) {
     const KernelSwitches switches{
         options.packet_width ? options.packet_width : preferred_packet_width(device.info),
-        apply_effect_changes(scene.effects, options.effect_changes)};
+        apply_effect_changes(scene.effects, options.effect_changes), options.stats};
     spdlog::info("building '{}' for {} ({} rays per work-item, effects: {})", scene.id,
                  device.info.name, switches.packet_width, effect_names(switches.effects));
     Renderer renderer(device, cache, scene, switches);
@@ -255,6 +256,14 @@ void render_to_file(const Scene& scene, const FrameRequest& request, const Compu
     const Frame frame = renderer.render(reported);
     fmt::print("render_ms {:.1f}\n", frame.render_ms);
     fmt::print("hits {}\n", frame.hits);
+    if (frame.stats) {
+        const MarchStats& stats = *frame.stats;
+        fmt::print("steps_per_pixel {:.2f} (max {})\n", stats.mean_steps, stats.max_steps);
+        fmt::print("de_evaluations {} ({:.2f} per pixel: primary march and normals)\n",
+                   stats.de_evaluations, double(stats.de_evaluations) / double(stats.pixels));
+        fmt::print("out_of_steps {:.3f}% ({} of {} pixels)\n", stats.out_of_steps_percent(),
+                   stats.out_of_steps, stats.pixels);
+    }
     try {
         if (options.bit_depth == 16) {
             write_png16_linear(output, linear_image16(frame, param_value(scene, request.params,
@@ -340,6 +349,8 @@ void add_render_command(CLI::App& app, RenderOptions& options) {
         ->check(CLI::IsMember({8, 16}));
     render->add_option("--effects", options.effect_changes,
                        "change the scene's effects, e.g. +shadows,-ambient_occlusion");
+    render->add_flag("--stats", options.stats,
+                     "print steps per pixel, DE evaluations and rays that ran out of steps");
     render->add_option("--device", options.device, "OpenCL device index (see `fgr info`)")
         ->check(CLI::NonNegativeNumber);
     render->add_option("--packet-width", options.packet_width,

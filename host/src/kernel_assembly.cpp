@@ -73,6 +73,7 @@ std::string switch_options(const KernelSwitches& switches) {
     for (const auto& effect : kEffectSwitches) {
         if (switches.effects & effect.bit) options += fmt::format(" -D{}", effect.macro);
     }
+    if (switches.stats) options += " -DFGR_STATS";
     return options;
 }
 

@@ -98,6 +98,28 @@ double elapsed_ms(std::chrono::steady_clock::time_point since) {
         .count();
 }
 
+// Sums the stats planes (4: steps, 5: ran out of steps) over the image's pixels; depth (plane 3)
+// says which pixels hit and so had their normal estimated.
+MarchStats march_stats(const std::vector<float>& planes, const TileLayout& layout, int width,
+                       int height) {
+    const size_t plane = static_cast<size_t>(layout.plane_size());
+    MarchStats stats;
+    long steps = 0;
+    for (int y = 0; y < height; ++y) {
+        for (int x = 0; x < width; ++x) {
+            const size_t i = static_cast<size_t>(layout.index(x, y));
+            const int pixel_steps = static_cast<int>(planes[4 * plane + i]);
+            steps += pixel_steps;
+            stats.max_steps = std::max(stats.max_steps, pixel_steps);
+            stats.de_evaluations += pixel_steps + (planes[3 * plane + i] >= 0.0f ? 4 : 0);
+            stats.out_of_steps += planes[5 * plane + i] > 0.5f;
+            ++stats.pixels;
+        }
+    }
+    stats.mean_steps = stats.pixels ? double(steps) / double(stats.pixels) : 0.0;
+    return stats;
+}
+
 }  // namespace
 
 Image16 linear_image16(const Frame& frame, float exposure) {
@@ -194,7 +216,8 @@ Frame Renderer::render(const FrameRequest& request) {
     const auto start = std::chrono::steady_clock::now();
 
     cl::Buffer params = upload(request.params);
-    cl::Buffer planes(device_.context, CL_MEM_READ_WRITE, sizeof(float) * 4 * plane);
+    const int plane_count = switches_.stats ? 6 : 4;  // r, g, b, depth[, steps, out of steps]
+    cl::Buffer planes(device_.context, CL_MEM_READ_WRITE, sizeof(float) * plane_count * plane);
     const int tiles = layout.tiles_x * layout.tiles_y;
     render_kernel_.setArg(0, planes);
     render_kernel_.setArg(1, plane);
@@ -223,7 +246,7 @@ Frame Renderer::render(const FrameRequest& request) {
             request.on_sample(done + 1, request.samples);
         }
     }
-    std::vector<float> host(static_cast<size_t>(plane) * 4);
+    std::vector<float> host(static_cast<size_t>(plane) * plane_count);
     device_.queue.enqueueReadBuffer(planes, CL_TRUE, 0, host.size() * sizeof(float), host.data());
 
     Frame frame;
@@ -248,6 +271,7 @@ Frame Renderer::render(const FrameRequest& request) {
             frame.hits += frame.depth[pixel] >= 0.0f;
         }
     }
+    if (switches_.stats && request.first_sample == 0) frame.stats = march_stats(host, layout, request.width, request.height);
     frame.render_ms = elapsed_ms(start);
     return frame;
 }

@@ -3,6 +3,7 @@
 // program once, then renders frames whose camera and parameters change freely without a rebuild.
 
 #include <functional>
+#include <optional>
 #include <span>
 #include <vector>
 
@@ -33,6 +34,16 @@ struct FrameRequest {
     std::function<bool()> cancel;
 };
 
+// The primary rays' work, from sample 0 of a render built with KernelSwitches::stats.
+struct MarchStats {
+    long pixels = 0;
+    double mean_steps = 0.0;  // DE evaluations of the primary march per pixel
+    int max_steps = 0;        // the most any pixel took
+    long de_evaluations = 0;  // march steps plus the normal's four DE taps at every hit
+    long out_of_steps = 0;    // rays that used max_steps without hitting or leaving the scene
+    double out_of_steps_percent() const { return pixels ? 100.0 * out_of_steps / pixels : 0.0; }
+};
+
 struct Frame {
     Image8 image;               // sRGB, gamma-encoded
     std::vector<float> linear;  // row-major linear RGB, averaged over samples, before exposure
@@ -41,6 +52,7 @@ struct Frame {
     long hits = 0;              // pixels whose ray met the surface
     double render_ms = 0.0;     // kernel, read-back and encoding; no build, no file output
     bool cancelled = false;     // FrameRequest::cancel stopped it: no pixels
+    std::optional<MarchStats> stats;  // when the renderer was built with stats
 };
 
 // Image sizes fgr accepts; larger would not fit device buffers on small machines.
