@@ -19,7 +19,7 @@ packages=(
     ocl-icd-opencl-dev opencl-headers opencl-clhpp-headers pocl-opencl-icd clinfo
     libspdlog-dev libfmt-dev libglm-dev libpng-dev libcli11-dev libgtest-dev nlohmann-json3-dev
     libsdl2-dev libimgui-dev libgl-dev libgl1-mesa-dri
-    xvfb xauth
+    xvfb xauth gnuplot-nox
 )
 
 install_missing_packages() {

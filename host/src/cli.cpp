@@ -1,6 +1,7 @@
 #include "fgr/cli.hpp"
 
 #include <algorithm>
+#include <cstdlib>
 #include <cstdio>
 #include <filesystem>
 #include <map>
@@ -16,6 +17,7 @@
 #include <spdlog/sinks/stdout_color_sinks.h>
 #include <spdlog/spdlog.h>
 
+#include "fgr/accuracy.hpp"
 #include "fgr/atomic_file.hpp"
 #include "fgr/bench.hpp"
 #include "fgr/camera.hpp"
@@ -444,18 +446,26 @@ int command_view(ViewCommandOptions& options) {
     return viewer::run_viewer(viewer);
 }
 
+struct AccuracyOptions {
+    std::string scene;
+    AccuracySettings settings;
+    std::string output;  // prefix of the .csv, .gp and .png files
+};
+
 struct BenchOptions {
     std::string scene;
     BenchSettings settings;
     int frames = 0;
     std::string output;  // prefix of the .json and .csv files
     int device = -1;
+    AccuracyOptions accuracy;
+    CLI::App* accuracy_command = nullptr;
 };
 
 void add_bench_command(CLI::App& app, BenchOptions& options) {
     CLI::App* bench = app.add_subcommand(
         "bench", "benchmark protocol: play the scene's benchmark camera path, record frame times");
-    bench->add_option("scene", options.scene, "scene id (see `fgr list`)")->required();
+    bench->add_option("scene", options.scene, "scene id (see `fgr list`)");
     bench->add_option("--width", options.settings.width, "image width (default 1280)")
         ->check(CLI::Range(1, kMaxImageSide));
     bench->add_option("--height", options.settings.height, "image height (default 720)")
@@ -480,6 +490,84 @@ void add_bench_command(CLI::App& app, BenchOptions& options) {
     bench->add_option("--packet-width", options.settings.packet_width,
                       "rays per work-item (default: 16 on CPUs, 1 on GPUs)")
         ->check(CLI::IsMember({1, 4, 8, 16}));
+
+    CLI::App* accuracy = bench->add_subcommand(
+        "accuracy", "sweep the knobs that trade accuracy for time against a reference render");
+    options.accuracy_command = accuracy;
+    AccuracyOptions& sweep = options.accuracy;
+    accuracy->add_option("scene", sweep.scene, "scene id (see `fgr list`)")->required();
+    accuracy->add_option("--width", sweep.settings.width, "image width (default 320)")
+        ->check(CLI::Range(8, 4096));
+    accuracy->add_option("--height", sweep.settings.height, "image height (default 240)")
+        ->check(CLI::Range(8, 4096));
+    accuracy->add_option("--reference-spp", sweep.settings.reference_samples,
+                         "samples per pixel of the reference (default 16)")
+        ->check(CLI::Range(1, kMaxSamples));
+    accuracy->add_option("--repeats", sweep.settings.repeats,
+                         "renders per setting, the fastest counts (default 3)")
+        ->check(CLI::Range(1, 20));
+    accuracy->add_option("-o,--output", sweep.output,
+                         "write PREFIX.csv, PREFIX.gp and PREFIX.png (default: accuracy-SCENE)");
+}
+
+// Writes `text` to `file` atomically; a failure is a runtime failure.
+void write_output(const std::filesystem::path& file, const std::string& text) {
+    try {
+        write_text_file_atomically(file, text);
+    } catch (const std::runtime_error& error) {
+        throw RuntimeFailure(error.what());
+    }
+}
+
+void check_output_directory(const std::filesystem::path& file) {
+    const auto directory = file.has_parent_path() ? file.parent_path() : ".";
+    if (std::error_code error; !std::filesystem::is_directory(directory, error)) {
+        throw UsageError(fmt::format("cannot write '{}': directory '{}' does not exist",
+                                     file.string(), directory.string()));
+    }
+}
+
+int command_bench_accuracy(const AccuracyOptions& options, int device_index) {
+    const Discovery found = discover();
+    const Scene& scene = find_scene(found, options.scene);
+    const std::string prefix = options.output.empty() ? "accuracy-" + scene.id : options.output;
+    const std::filesystem::path csv = prefix + ".csv", script = prefix + ".gp", png = prefix + ".png";
+    check_output_directory(csv);
+    RenderOptions device_choice;
+    device_choice.device = device_index;
+    const ComputeDevice device = open_requested_device(device_choice);
+    ProgramCache cache(ProgramCache::default_directory());
+    const AccuracyReport report = run_accuracy_sweep(
+        scene, device, cache, options.settings, [](int done, int total, const std::string& what) {
+            if (done < total) spdlog::info("[{}/{}] {}", done + 1, total, what);
+        });
+    fmt::print("reference ({}): {:.0f} ms\n", report.reference_settings, report.reference_ms);
+    fmt::print("{:<15} {:>8} {:>10} {:>8} {:>8} {:>10} {:>12} {}\n", "knob", "value", "render ms",
+               "rmse", "psnr dB", "hit diff %", "depth error", "pareto");
+    for (const AccuracyPoint& point : report.points) {
+        fmt::print("{:<15} {:>8} {:>10.1f} {:>8.3f} {:>8.2f} {:>10.3f} {:>12.3g} {}\n", point.knob,
+                   point.value, point.render_ms, point.error.rmse, point.error.psnr,
+                   point.error.hit_mismatch_percent, point.error.mean_depth_error,
+                   point.pareto ? "*" : "");
+    }
+    write_output(csv, accuracy_csv(report));
+    write_output(script, accuracy_gnuplot(report, scene.id, csv.filename().string(),
+                                          png.filename().string()));
+    fmt::print("wrote {} and {}\n", csv.string(), script.string());
+    // gnuplot runs beside the files, so the script's relative names resolve.
+    const std::string directory = csv.has_parent_path() ? csv.parent_path().string() : ".";
+    const std::string command = fmt::format("cd '{}' && gnuplot '{}' 2>&1", directory,
+                                            script.filename().string());
+    if (std::system("command -v gnuplot > /dev/null 2>&1") != 0) {
+        spdlog::warn("gnuplot not found: no plot (apt-get install gnuplot-nox, then gnuplot {})",
+                     script.string());
+        return 0;
+    }
+    if (std::system(command.c_str()) != 0 || !std::filesystem::exists(png)) {
+        throw RuntimeFailure(fmt::format("gnuplot failed on {}", script.string()));
+    }
+    fmt::print("wrote {}\n", png.string());
+    return 0;
 }
 
 // A bar on a terminal, a line every quarter otherwise (logs, CI).
@@ -504,6 +592,10 @@ BenchProgress bench_progress(int runs) {
 }
 
 int command_bench(BenchOptions& options) {
+    if (options.accuracy_command->parsed()) {
+        return command_bench_accuracy(options.accuracy, options.device);
+    }
+    if (options.scene.empty()) throw UsageError("bench needs a SCENE (see `fgr list`)");
     const Discovery found = discover();
     const Scene& scene = find_scene(found, options.scene);
     if (options.frames > 0) options.settings.frames = options.frames;
@@ -514,11 +606,7 @@ int command_bench(BenchOptions& options) {
     }
     const std::string prefix = options.output.empty() ? "bench-" + scene.id : options.output;
     const std::filesystem::path json_file = prefix + ".json", csv_file = prefix + ".csv";
-    const auto directory = json_file.has_parent_path() ? json_file.parent_path() : ".";
-    if (std::error_code error; !std::filesystem::is_directory(directory, error)) {
-        throw UsageError(fmt::format("cannot write '{}': directory '{}' does not exist",
-                                     json_file.string(), directory.string()));
-    }
+    check_output_directory(json_file);
     RenderOptions device_choice;
     device_choice.device = options.device;
     const ComputeDevice device = open_requested_device(device_choice);
@@ -528,12 +616,8 @@ int command_bench(BenchOptions& options) {
     const BenchReport report = run_benchmark(scene, device, cache, options.settings,
                                              bench_progress(options.settings.runs));
     fmt::print("{}", bench_table(report));
-    try {
-        write_text_file_atomically(json_file, bench_json(report));
-        write_text_file_atomically(csv_file, bench_csv(report));
-    } catch (const std::runtime_error& error) {
-        throw RuntimeFailure(error.what());
-    }
+    write_output(json_file, bench_json(report));
+    write_output(csv_file, bench_csv(report));
     fmt::print("wrote {} and {}\n", json_file.string(), csv_file.string());
     return 0;
 }

@@ -165,6 +165,9 @@ void add_builtin_params(Scene& scene) {
     scene.params.push_back(builtin_param("step_factor", "Step factor", ParamType::Float, 0.05f,
                                          1.0f, march.step_factor,
                                          "rays advance step_factor * DE (< 1 for estimated DEs)"));
+    scene.params.push_back(builtin_param("normal_epsilon", "Normal epsilon", ParamType::Float,
+                                         0.01f, 16.0f, 0.5f,
+                                         "normal stencil size, in pixel footprints at the hit"));
     add_effect_params(scene);
 }
 

@@ -1,0 +1,135 @@
+// `fgr bench accuracy`: image error metrics, the Pareto front, and a sweep that measures every knob
+// against a reference render, with its CSV, gnuplot script and plot.
+#include <cmath>
+#include <filesystem>
+#include <set>
+#include <sstream>
+
+#include <gtest/gtest.h>
+
+#include "child_process.hpp"
+#include "fgr/accuracy.hpp"
+#include "test_scenes.hpp"
+
+namespace fgr {
+namespace {
+
+Frame flat_frame(uint8_t value, std::vector<float> depth) {
+    Frame frame;
+    frame.image = {2, 2, std::vector<uint8_t>(12, value)};
+    frame.depth = std::move(depth);
+    return frame;
+}
+
+TEST(ImageErrorMetrics, RmsePsnrHitsAndDepth) {
+    const Frame reference = flat_frame(100, {1.0f, 2.0f, -1.0f, 4.0f});
+    const ImageError same = compare_frames(reference, reference);
+    EXPECT_EQ(same.rmse, 0.0);
+    EXPECT_EQ(same.psnr, 99.0);
+    EXPECT_EQ(same.hit_mismatch_percent, 0.0);
+
+    const Frame other = flat_frame(110, {1.5f, 2.0f, 3.0f, -1.0f});
+    const ImageError error = compare_frames(other, reference);
+    EXPECT_DOUBLE_EQ(error.rmse, 10.0);
+    EXPECT_NEAR(error.psnr, 20.0 * std::log10(25.5), 1e-9);
+    EXPECT_DOUBLE_EQ(error.hit_mismatch_percent, 50.0);  // pixels 2 and 3 disagree
+    EXPECT_DOUBLE_EQ(error.mean_depth_error, 0.25);       // |1.5 - 1| and 0 where both hit
+    EXPECT_DOUBLE_EQ(error.mean_depth_error_relative, 0.25);
+}
+
+AccuracyPoint point(double ms, double rmse) {
+    AccuracyPoint p;
+    p.render_ms = ms;
+    p.error.rmse = rmse;
+    return p;
+}
+
+TEST(ParetoFront, KeepsOnlyPointsNothingBeatsInTimeAndError) {
+    std::vector<AccuracyPoint> points = {point(10, 5), point(20, 3), point(15, 6), point(30, 3),
+                                         point(5, 9),  point(20, 3)};
+    mark_pareto_front(points);
+    const std::vector<bool> expected = {true, true, false, false, true, true};
+    for (size_t i = 0; i < points.size(); ++i) EXPECT_EQ(points[i].pareto, expected[i]) << i;
+}
+
+TEST(AccuracySweep, MeasuresEveryKnobAgainstTheReference) {
+    const ComputeDevice device = open_device(-1);
+    ProgramCache cache{std::filesystem::path()};
+    const Scene scene = test::sphere_scene();
+    AccuracySettings settings;
+    settings.width = 40;
+    settings.height = 30;
+    settings.reference_samples = 4;
+    settings.repeats = 1;
+    int calls = 0;
+    const AccuracyReport report =
+        run_accuracy_sweep(scene, device, cache, settings,
+                           [&](int done, int total, const std::string&) {
+                               EXPECT_LE(done, total);
+                               ++calls;
+                           });
+    ASSERT_GT(report.points.size(), 15u);
+    EXPECT_EQ(report.points.front().knob, "default");
+    EXPECT_EQ(calls, int(report.points.size()) + 2);  // the reference, each point, done
+    EXPECT_NE(report.reference_settings.find("hit_threshold=0.1"), std::string::npos);
+    std::set<std::string> knobs;
+    bool any_pareto = false;
+    for (const AccuracyPoint& p : report.points) {
+        knobs.insert(p.knob);
+        any_pareto |= p.pareto;
+        EXPECT_TRUE(std::isfinite(p.error.rmse) && p.render_ms > 0.0) << p.knob << p.value;
+    }
+    EXPECT_EQ(knobs, (std::set<std::string>{"default", "hit_threshold", "max_steps", "iterations",
+                                            "step_factor", "normal_epsilon", "spp"}));
+    EXPECT_TRUE(any_pareto);
+    // A loose hit threshold fattens silhouettes: more pixels disagree with the reference's
+    // (threshold 0.1) hit/miss than with a tight one.
+    double tight = -1.0, loose = -1.0;
+    for (const AccuracyPoint& p : report.points) {
+        if (p.knob == "hit_threshold" && p.value == "0.25") tight = p.error.hit_mismatch_percent;
+        if (p.knob == "hit_threshold" && p.value == "8") loose = p.error.hit_mismatch_percent;
+    }
+    ASSERT_GE(tight, 0.0);
+    EXPECT_GT(loose, tight);
+
+    std::istringstream csv(accuracy_csv(report));
+    std::string line;
+    std::getline(csv, line);
+    EXPECT_EQ(line, "knob,value,render_ms,rmse,psnr_db,hit_mismatch_percent,mean_depth_error,"
+                    "mean_depth_error_relative,pareto");
+    int rows = 0;
+    while (std::getline(csv, line)) {
+        EXPECT_EQ(std::count(line.begin(), line.end(), ','), 8) << line;
+        ++rows;
+    }
+    EXPECT_EQ(rows, int(report.points.size()));
+    const std::string script = accuracy_gnuplot(report, "inline", "a.csv", "a.png");
+    for (const std::string& knob : knobs) {
+        if (knob != "default") EXPECT_NE(script.find("title '" + knob + "'"), std::string::npos);
+    }
+    EXPECT_NE(script.find("set output 'a.png'"), std::string::npos);
+}
+
+TEST(AccuracyCommand, WritesTheCsvScriptAndPlot) {
+    test::TempDir dir("fgr_accuracy_test");
+    test::ChildOptions options;
+    options.working_dir = dir.path();
+    options.environment["FGR_PLUGIN_PATH"] = std::nullopt;
+    const test::RunResult run = test::run_child(
+        FGR_TEST_FGR_EXE,
+        {"bench", "accuracy", "mandelbulb", "--width", "32", "--height", "24", "--reference-spp",
+         "2", "--repeats", "1", "-o", "acc"},
+        options);
+    ASSERT_EQ(run.exit_code, 0) << run;
+    EXPECT_NE(run.out.find("hit_threshold"), std::string::npos) << run;
+    EXPECT_TRUE(std::filesystem::exists(dir.path() / "acc.csv"));
+    EXPECT_TRUE(std::filesystem::exists(dir.path() / "acc.gp"));
+    // CI installs gnuplot (build.sh); without it fgr says so and writes no plot.
+    EXPECT_TRUE(std::filesystem::exists(dir.path() / "acc.png")) << run;
+    const test::RunResult bad =
+        test::run_child(FGR_TEST_FGR_EXE, {"bench", "accuracy", "no-such-scene"}, options);
+    EXPECT_EQ(bad.exit_code, 2) << bad;
+}
+
+}  // namespace
+}  // namespace fgr
