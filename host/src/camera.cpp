@@ -21,18 +21,6 @@ constexpr float kDegenerateLength = 1e-6f;
 // unit candidate) is too close to parallel to define a stable roll.
 constexpr float kMinOrthogonalUp = 1e-3f;
 
-// The world axis least aligned with `direction`: always far from parallel to it.
-glm::vec3 least_aligned_axis(glm::vec3 direction) {
-    const glm::vec3 magnitude = glm::abs(direction);
-    if (magnitude.x <= magnitude.y && magnitude.x <= magnitude.z) {
-        return {1.0f, 0.0f, 0.0f};
-    }
-    if (magnitude.y <= magnitude.z) {
-        return {0.0f, 1.0f, 0.0f};
-    }
-    return {0.0f, 0.0f, 1.0f};
-}
-
 // The first candidate that is usable once its component along `forward` (unit) is removed,
 // normalised; a world axis when none is.
 glm::vec3 orthogonal_up(const std::vector<glm::vec3>& candidates, glm::vec3 forward) {
@@ -92,6 +80,18 @@ CameraView interpolate_segment(const std::vector<Keyframe>& keys, std::size_t i,
 }
 
 }  // namespace
+
+glm::vec3 least_aligned_axis(glm::vec3 direction) {
+    const glm::vec3 magnitude = glm::abs(direction);
+    if (magnitude.x <= magnitude.y && magnitude.x <= magnitude.z) {
+        return {1.0f, 0.0f, 0.0f};
+    }
+    if (magnitude.y <= magnitude.z) {
+        return {0.0f, 1.0f, 0.0f};
+    }
+    return {0.0f, 0.0f, 1.0f};
+}
+
 
 CameraBasis camera_basis(const CameraView& view) {
     CameraBasis basis;

@@ -325,6 +325,15 @@ int command_render(const RenderOptions& options) {
     return 0;
 }
 
+// --device and --packet-width, shared by the commands that render.
+void add_device_options(CLI::App* command, int& device, int& packet_width) {
+    command->add_option("--device", device, "OpenCL device index (see `fgr info`)")
+        ->check(CLI::NonNegativeNumber);
+    command->add_option("--packet-width", packet_width,
+                        "rays per work-item (default: 16 on CPUs, 1 on GPUs)")
+        ->check(CLI::IsMember({1, 4, 8, 16}));
+}
+
 void add_render_command(CLI::App& app, RenderOptions& options) {
     CLI::App* render = app.add_subcommand(
         "render", "render one image of a scene to a PNG file, or every scene's default view");
@@ -353,11 +362,7 @@ void add_render_command(CLI::App& app, RenderOptions& options) {
                        "change the scene's effects, e.g. +shadows,-ambient_occlusion");
     render->add_flag("--stats", options.stats,
                      "print steps per pixel, DE evaluations and rays that ran out of steps");
-    render->add_option("--device", options.device, "OpenCL device index (see `fgr info`)")
-        ->check(CLI::NonNegativeNumber);
-    render->add_option("--packet-width", options.packet_width,
-                       "rays per work-item (default: 16 on CPUs, 1 on GPUs)")
-        ->check(CLI::IsMember({1, 4, 8, 16}));
+    add_device_options(render, options.device, options.packet_width);
 }
 
 // Window sizes offered by --preset and in the viewer's panel.
@@ -413,11 +418,7 @@ void add_view_command(CLI::App& app, ViewCommandOptions& options) {
                    "scene development: reload a scene when its .cl source file is saved");
     view->add_flag("--stats", viewer.print_stats,
                    "print frame-time statistics and the final camera on exit");
-    view->add_option("--device", viewer.device, "OpenCL device index (see `fgr info`)")
-        ->check(CLI::NonNegativeNumber);
-    view->add_option("--packet-width", viewer.packet_width,
-                     "rays per work-item (default: 16 on CPUs, 1 on GPUs)")
-        ->check(CLI::IsMember({1, 4, 8, 16}));
+    add_device_options(view, viewer.device, viewer.packet_width);
 }
 
 int command_view(ViewCommandOptions& options) {
@@ -485,11 +486,7 @@ void add_bench_command(CLI::App& app, BenchOptions& options) {
         ->check(CLI::Range(1, kMaxSamples));
     bench->add_option("-o,--output", options.output,
                       "write PREFIX.json and PREFIX.csv (default: bench-SCENE)");
-    bench->add_option("--device", options.device, "OpenCL device index (see `fgr info`)")
-        ->check(CLI::NonNegativeNumber);
-    bench->add_option("--packet-width", options.settings.packet_width,
-                      "rays per work-item (default: 16 on CPUs, 1 on GPUs)")
-        ->check(CLI::IsMember({1, 4, 8, 16}));
+    add_device_options(bench, options.device, options.settings.packet_width);
 
     CLI::App* accuracy = bench->add_subcommand(
         "accuracy", "sweep the knobs that trade accuracy for time against a reference render");

@@ -16,6 +16,10 @@ struct CameraBasis {
     float tan_half_fov = 1.0f;  // of the horizontal field of view
 };
 
+// The world axis least aligned with `direction`: always far from parallel to it, so a usable
+// fallback up vector.
+glm::vec3 least_aligned_axis(glm::vec3 direction);
+
 // forward = normalize(target - position), right = normalize(cross(forward, view.up)),
 // up = cross(right, forward). An up hint parallel to the view direction is replaced by a world
 // axis so the basis stays finite.

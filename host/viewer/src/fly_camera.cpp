@@ -1,5 +1,7 @@
 #include "fgr/viewer/fly_camera.hpp"
 
+#include "fgr/camera.hpp"
+
 #include <algorithm>
 #include <cmath>
 #include <numbers>
@@ -21,18 +23,6 @@ const glm::vec3 kDefaultUp{0.0f, 0.0f, 1.0f};
 bool usable(glm::vec3 vector) {
     const float length = glm::length(vector);
     return std::isfinite(length) && length > kDegenerateLength;
-}
-
-// The world axis least aligned with `direction`: always far from parallel to it.
-glm::vec3 least_aligned_axis(glm::vec3 direction) {
-    const glm::vec3 magnitude = glm::abs(direction);
-    if (magnitude.x <= magnitude.y && magnitude.x <= magnitude.z) {
-        return {1.0f, 0.0f, 0.0f};
-    }
-    if (magnitude.y <= magnitude.z) {
-        return {0.0f, 1.0f, 0.0f};
-    }
-    return {0.0f, 0.0f, 1.0f};
 }
 
 // A view direction split into a compass heading and an angle above the horizon. Turning works on
