@@ -146,6 +146,17 @@ float tone_map(float linear, ToneMap op) {
     return 0.0f;
 }
 
+Image8 display_image(const Scene& scene, const std::vector<float>& params,
+                     const std::vector<float>& linear, int width, int height, float scale) {
+    const float exposure = param_value(scene, params, "exposure") * scale;
+    const auto op = static_cast<ToneMap>(param_value(scene, params, "tone_map"));
+    Image8 image{width, height, std::vector<uint8_t>(linear.size())};
+    for (size_t i = 0; i < linear.size(); ++i) {
+        image.rgb[i] = encode_srgb(tone_map(linear[i] * exposure, op));
+    }
+    return image;
+}
+
 uint8_t encode_srgb(float linear) {
     if (!(linear > 0.0f)) return 0;  // also NaN
     if (linear >= 1.0f) return 255;
@@ -250,14 +261,9 @@ Frame Renderer::render(const FrameRequest& request) {
     device_.queue.enqueueReadBuffer(planes, CL_TRUE, 0, host.size() * sizeof(float), host.data());
 
     Frame frame;
-    frame.image.width = request.width;
-    frame.image.height = request.height;
-    frame.image.rgb.resize(static_cast<size_t>(request.width) * request.height * 3);
     frame.depth.resize(static_cast<size_t>(request.width) * request.height);
-    frame.linear.resize(frame.image.rgb.size());
+    frame.linear.resize(frame.depth.size() * 3);
     const float average = 1.0f / static_cast<float>(request.samples);
-    const float exposure = param_value(scene_, request.params, "exposure");
-    const auto op = static_cast<ToneMap>(param_value(scene_, request.params, "tone_map"));
     for (int y = 0; y < request.height; ++y) {
         for (int x = 0; x < request.width; ++x) {
             const size_t source = layout.index(x, y);
@@ -265,13 +271,15 @@ Frame Renderer::render(const FrameRequest& request) {
             for (int c = 0; c < 3; ++c) {
                 const float value = host[c * plane + source] * average;
                 frame.linear[pixel * 3 + c] = value;
-                frame.image.rgb[pixel * 3 + c] = encode_srgb(tone_map(value * exposure, op));
             }
             frame.depth[pixel] = host[3 * static_cast<size_t>(plane) + source];
             frame.hits += frame.depth[pixel] >= 0.0f;
         }
     }
-    if (switches_.stats && request.first_sample == 0) frame.stats = march_stats(host, layout, request.width, request.height);
+    frame.image = display_image(scene_, request.params, frame.linear, request.width, request.height);
+    if (switches_.stats && request.first_sample == 0) {
+        frame.stats = march_stats(host, layout, request.width, request.height);
+    }
     frame.render_ms = elapsed_ms(start);
     return frame;
 }

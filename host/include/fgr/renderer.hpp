@@ -133,6 +133,11 @@ enum class ToneMap { Clamp = 0, Reinhard = 1, Aces = 2 };
 // x / (1 + x), or Narkowicz's fit of the ACES filmic curve.
 float tone_map(float linear, ToneMap op);
 
+// Linear RGB rows (times `scale`, e.g. 1 / samples for a sum) to what a screen shows: the scene's
+// `exposure`, its `tone_map`, then the sRGB curve.
+Image8 display_image(const Scene& scene, const std::vector<float>& params,
+                     const std::vector<float>& linear, int width, int height, float scale = 1.0f);
+
 // Samples per pixel fgr accepts.
 constexpr int kMaxSamples = 4096;
 

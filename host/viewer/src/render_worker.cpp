@@ -11,18 +11,6 @@
 namespace fgr::viewer {
 namespace {
 
-// Linear RGB (already averaged) to what the window shows: exposure, tone map, sRGB.
-Image8 display_image(const Scene& scene, const std::vector<float>& params,
-                     const std::vector<float>& linear, float scale_by, int width, int height) {
-    const float exposure = param_value(scene, params, "exposure") * scale_by;
-    const auto op = static_cast<ToneMap>(param_value(scene, params, "tone_map"));
-    Image8 image{width, height, std::vector<uint8_t>(linear.size())};
-    for (size_t i = 0; i < linear.size(); ++i) {
-        image.rgb[i] = encode_srgb(tone_map(linear[i] * exposure, op));
-    }
-    return image;
-}
-
 FrameRequest frame_request(const ViewState& state, int width, int height) {
     FrameRequest request;
     request.width = width;
@@ -302,8 +290,8 @@ void RenderWorker::refine(Renderer& renderer, const ViewState& state, int sample
     }
     for (size_t i = 0; i < accumulation_.size(); ++i) accumulation_[i] += frame.linear[i];
     ++accumulated_samples_;
-    publish({display_image(*state.scene, state.params, accumulation_, 1.0f / static_cast<float>(accumulated_samples_),
-                           state.width, state.height),
+    publish({display_image(*state.scene, state.params, accumulation_, state.width, state.height,
+                           1.0f / static_cast<float>(accumulated_samples_)),
              1.0f, accumulated_samples_, frame.render_ms, state.generation});
 }
 
