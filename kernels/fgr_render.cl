@@ -10,26 +10,26 @@
 #define FGR_TILE_W 1
 #define FGR_LANE_X ((real)(0.0f))
 #define FGR_LANE_Y ((real)(0.0f))
-#define fgr_store(value, tile, plane) ((plane)[tile] = (value))
-#define fgr_load(tile, plane) ((plane)[tile])
+#define fgr_store(value, tile, plane) ((plane)[tile] = convert_float_lanes(value))
+#define fgr_load(tile, plane) convert_real((plane)[tile])
 #elif FGR_WIDTH == 4
 #define FGR_TILE_W 2
 #define FGR_LANE_X ((real)(0, 1, 0, 1))
 #define FGR_LANE_Y ((real)(0, 0, 1, 1))
-#define fgr_store(value, tile, plane) vstore4((value), (tile), (plane))
-#define fgr_load(tile, plane) vload4((tile), (plane))
+#define fgr_store(value, tile, plane) vstore4(convert_float_lanes(value), (tile), (plane))
+#define fgr_load(tile, plane) convert_real(vload4((tile), (plane)))
 #elif FGR_WIDTH == 8
 #define FGR_TILE_W 4
 #define FGR_LANE_X ((real)(0, 1, 2, 3, 0, 1, 2, 3))
 #define FGR_LANE_Y ((real)(0, 0, 0, 0, 1, 1, 1, 1))
-#define fgr_store(value, tile, plane) vstore8((value), (tile), (plane))
-#define fgr_load(tile, plane) vload8((tile), (plane))
+#define fgr_store(value, tile, plane) vstore8(convert_float_lanes(value), (tile), (plane))
+#define fgr_load(tile, plane) convert_real(vload8((tile), (plane)))
 #elif FGR_WIDTH == 16
 #define FGR_TILE_W 4
 #define FGR_LANE_X ((real)(0, 1, 2, 3, 0, 1, 2, 3, 0, 1, 2, 3, 0, 1, 2, 3))
 #define FGR_LANE_Y ((real)(0, 0, 0, 0, 1, 1, 1, 1, 2, 2, 2, 2, 3, 3, 3, 3))
-#define fgr_store(value, tile, plane) vstore16((value), (tile), (plane))
-#define fgr_load(tile, plane) vload16((tile), (plane))
+#define fgr_store(value, tile, plane) vstore16(convert_float_lanes(value), (tile), (plane))
+#define fgr_load(tile, plane) convert_real(vload16((tile), (plane)))
 #endif
 #define FGR_TILE_H (FGR_WIDTH / FGR_TILE_W)
 

@@ -6,8 +6,9 @@
  * tracer always has. On a GPU the host builds with FGR_WIDTH 1 and the same source runs one ray per
  * work-item.
  *
- *   real   a float per lane            (float, float4, float8 or float16)
- *   mask   a truth value per lane      (int of the same width; true lanes are non-zero)
+ *   real   a float per lane            (float, float4, float8 or float16; double with FGR_DOUBLE)
+ *   mask   a truth value per lane      (int of the same width, long with FGR_DOUBLE; true lanes
+ *                                       are non-zero)
  *   vec3   three reals, x/y/z          (struct of arrays: one real per component)
  *
  * Built-in maths (sin, pow, atan2, sqrt, fmin, ...) works on `real` unchanged. Lane-wise control
@@ -24,36 +25,49 @@
 #pragma clang diagnostic ignored "-Wpsabi"
 #endif
 
+#ifdef FGR_DOUBLE
+/* Double precision (`--precision double`, or auto for deep zooms): the same code on double lanes.
+ * select() needs masks as wide as the lanes, so masks are longs; planes stay float in memory. */
+#pragma OPENCL EXTENSION cl_khr_fp64 : enable
+#define FGR_LANES(f, d) d
+#else
+#define FGR_LANES(f, d) f
+#endif
+
 #if FGR_WIDTH == 1
-typedef float real;
-typedef int mask;
-typedef uint ulanes;
-#define convert_ulanes convert_uint
-#define convert_real convert_float
+typedef FGR_LANES(float, double) real;
+typedef FGR_LANES(int, long) mask;
+typedef FGR_LANES(uint, ulong) ulanes;
+#define convert_ulanes FGR_LANES(convert_uint, convert_ulong)
+#define convert_real FGR_LANES(convert_float, convert_double)
+#define convert_float_lanes convert_float
 #define fgr_any(m) ((m) != 0)
 #define fgr_all(m) ((m) != 0)
 #elif FGR_WIDTH == 4
-typedef float4 real;
-typedef int4 mask;
-typedef uint4 ulanes;
-#define convert_ulanes convert_uint4
-#define convert_real convert_float4
+typedef FGR_LANES(float4, double4) real;
+typedef FGR_LANES(int4, long4) mask;
+typedef FGR_LANES(uint4, ulong4) ulanes;
+#define convert_ulanes FGR_LANES(convert_uint4, convert_ulong4)
+#define convert_real FGR_LANES(convert_float4, convert_double4)
+#define convert_float_lanes convert_float4
 #define fgr_any(m) any(m)
 #define fgr_all(m) all(m)
 #elif FGR_WIDTH == 8
-typedef float8 real;
-typedef int8 mask;
-typedef uint8 ulanes;
-#define convert_ulanes convert_uint8
-#define convert_real convert_float8
+typedef FGR_LANES(float8, double8) real;
+typedef FGR_LANES(int8, long8) mask;
+typedef FGR_LANES(uint8, ulong8) ulanes;
+#define convert_ulanes FGR_LANES(convert_uint8, convert_ulong8)
+#define convert_real FGR_LANES(convert_float8, convert_double8)
+#define convert_float_lanes convert_float8
 #define fgr_any(m) any(m)
 #define fgr_all(m) all(m)
 #elif FGR_WIDTH == 16
-typedef float16 real;
-typedef int16 mask;
-typedef uint16 ulanes;
-#define convert_ulanes convert_uint16
-#define convert_real convert_float16
+typedef FGR_LANES(float16, double16) real;
+typedef FGR_LANES(int16, long16) mask;
+typedef FGR_LANES(uint16, ulong16) ulanes;
+#define convert_ulanes FGR_LANES(convert_uint16, convert_ulong16)
+#define convert_real FGR_LANES(convert_float16, convert_double16)
+#define convert_float_lanes convert_float16
 #define fgr_any(m) any(m)
 #define fgr_all(m) all(m)
 #else

@@ -335,6 +335,18 @@ TEST_F(CliTest, StatsReportStepsEvaluationsAndRaysOutOfSteps) {
     expect_rgb_png(out_png(), kWidth, kHeight);
 }
 
+TEST_F(CliTest, PrecisionDoubleRendersAndUnknownPrecisionIsRefused) {
+    const RunResult result =
+        run({"render", "mandelbulb", "-o", out_png().string(), "--width", std::to_string(kWidth),
+             "--height", std::to_string(kHeight), "--precision", "double"});
+    ASSERT_EQ(result.exit_code, 0) << result;
+    EXPECT_NE(result.err.find(", double, effects"), std::string::npos) << result;
+    EXPECT_GT(expect_render_report(result, kWidth, kHeight), 0);
+    const RunResult bad = run({"render", "mandelbulb", "-o", out_png().string(), "--precision",
+                               "half"});
+    EXPECT_EQ(bad.exit_code, 2) << bad;
+}
+
 TEST_F(CliTest, RelativeOutputPathIsInWorkingDirectory) {
     const RunResult result =
         run({"render", "mandelbulb", "-o", "rel.png", "--width", "24", "--height", "16"});

@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstddef>
+#include <limits>
 #include <stdexcept>
 #include <vector>
 
@@ -139,6 +140,15 @@ CameraView evaluate_camera_path(const CameraPath& path, float time) {
     const auto i = static_cast<std::size_t>(after - keys.begin()) - 1;
     const float s = (time - keys[i].time) / (keys[i + 1].time - keys[i].time);
     return interpolate_segment(keys, i, s);
+}
+
+bool needs_double_precision(const CameraView& view, int width) {
+    const CameraBasis basis = camera_basis(view);
+    const float footprint = glm::length(view.target - view.position) * pixel_angle(basis, width);
+    const float magnitude = std::max({glm::length(view.position), glm::length(view.target),
+                                      std::numeric_limits<float>::min()});
+    const float float_step = magnitude * std::numeric_limits<float>::epsilon();
+    return footprint < 16.0f * float_step;
 }
 
 }  // namespace fgr

@@ -57,6 +57,7 @@ struct RenderOptions {
     int packet_width = 0;  // 0: the device's preference
     bool all = false;      // every scene's default view into the directory `output`
     bool stats = false;    // print the primary rays' work: steps, DE evaluations, out of steps
+    std::string precision = "auto";  // float, double, or auto (double for deep zooms)
     std::string effect_changes;  // "+shadows,-ambient_occlusion": over the scene's own effects
 };
 
@@ -236,15 +237,39 @@ ComputeDevice open_requested_device(const RenderOptions& options) {
     return open_device(options.device);
 }
 
+constexpr int kMinDoublePacketWidth = 4;
+
+// --precision: float, double, or auto (double when the view is too fine for float).
+bool use_double_precision(const std::string& precision, const FrameRequest& request,
+                          const DeviceInfo& device) {
+    const bool wanted = precision == "double" ||
+                        (precision == "auto" && needs_double_precision(request.view, request.width));
+    if (!wanted) return false;
+    if (device.has_fp64) return true;
+    if (precision == "double") {
+        throw RuntimeFailure(fmt::format("{} has no double precision (cl_khr_fp64)", device.name));
+    }
+    spdlog::warn("this view needs double precision, which {} lacks: rendering in float",
+                 device.name);
+    return false;
+}
+
 // Builds the scene's kernel, renders `request` and writes the PNG; prints the figures.
 void render_to_file(const Scene& scene, const FrameRequest& request, const ComputeDevice& device,
                     ProgramCache& cache, const RenderOptions& options,
                     const std::filesystem::path& output) {
-    const KernelSwitches switches{
+    KernelSwitches switches{
         options.packet_width ? options.packet_width : preferred_packet_width(device.info),
-        apply_effect_changes(scene.effects, options.effect_changes), options.stats};
-    spdlog::info("building '{}' for {} ({} rays per work-item, effects: {})", scene.id,
-                 device.info.name, switches.packet_width, effect_names(switches.effects));
+        apply_effect_changes(scene.effects, options.effect_changes), options.stats,
+        use_double_precision(options.precision, request, device.info)};
+    if (switches.double_precision && switches.packet_width < kMinDoublePacketWidth) {
+        // OpenCL C's scalar double overloads are ambiguous with the library's float literals;
+        // vector lanes are not, so double runs at least 4 rays per work-item.
+        switches.packet_width = kMinDoublePacketWidth;
+    }
+    spdlog::info("building '{}' for {} ({} rays per work-item, {}, effects: {})", scene.id,
+                 device.info.name, switches.packet_width,
+                 switches.double_precision ? "double" : "float", effect_names(switches.effects));
     Renderer renderer(device, cache, scene, switches);
     spdlog::info("kernel ready in {:.0f} ms", renderer.build_report().build_ms);
 
@@ -360,6 +385,10 @@ void add_render_command(CLI::App& app, RenderOptions& options) {
         ->check(CLI::IsMember({8, 16}));
     render->add_option("--effects", options.effect_changes,
                        "change the scene's effects, e.g. +shadows,-ambient_occlusion");
+    render->add_option("--precision", options.precision,
+                       "float, double, or auto: double when a pixel is finer than float resolves "
+                       "(deep zooms); default auto")
+        ->check(CLI::IsMember({"float", "double", "auto"}));
     render->add_flag("--stats", options.stats,
                      "print steps per pixel, DE evaluations and rays that ran out of steps");
     add_device_options(render, options.device, options.packet_width);

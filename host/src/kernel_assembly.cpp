@@ -74,6 +74,7 @@ std::string switch_options(const KernelSwitches& switches) {
         if (switches.effects & effect.bit) options += fmt::format(" -D{}", effect.macro);
     }
     if (switches.stats) options += " -DFGR_STATS";
+    if (switches.double_precision) options += " -DFGR_DOUBLE";
     return options;
 }
 

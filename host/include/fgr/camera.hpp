@@ -33,6 +33,12 @@ float pixel_angle(const CameraBasis& basis, int width);
 glm::vec3 primary_ray_direction(const CameraBasis& basis, int width, int height, float px,
                                 float py);
 
+// Whether float is too coarse for this view: true when one pixel's footprint at the target is
+// less than 16 float steps (ulps) of the coordinates there, as in a deep zoom, where float
+// positions would round neighbouring pixels' rays onto the same points. `--precision auto`
+// renders such views in double.
+bool needs_double_precision(const CameraView& view, int width);
+
 // The view at `time` along a path (clamped to the first and last keyframe times). Position, target
 // and fov follow a uniform Catmull-Rom spline through the keyframes in each segment's local
 // parameter, the end keyframes doubling as their own outer neighbours; fov is kept in [1, 179].

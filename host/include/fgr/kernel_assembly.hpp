@@ -16,6 +16,7 @@ struct KernelSwitches {
     int packet_width = 1;  // rays per work-item: 1, 4, 8 or 16
     uint64_t effects = 0;  // fgr_effect_flag bits compiled in
     bool stats = false;    // also record each pixel's march steps and whether it ran out of them
+    bool double_precision = false;  // march and shade in double (needs cl_khr_fp64)
 };
 
 struct AssembledProgram {
