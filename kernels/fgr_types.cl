@@ -34,45 +34,29 @@
 #define FGR_LANES(f, d) f
 #endif
 
+/* Lane types are the scalar name with the width pasted on (float16, long16, convert_uint16, ...);
+ * one ray per work-item pastes nothing and gets the scalars. */
 #if FGR_WIDTH == 1
-typedef FGR_LANES(float, double) real;
-typedef FGR_LANES(int, long) mask;
-typedef FGR_LANES(uint, ulong) ulanes;
-#define convert_ulanes FGR_LANES(convert_uint, convert_ulong)
-#define convert_real FGR_LANES(convert_float, convert_double)
-#define convert_float_lanes convert_float
+#define FGR_LANE_SUFFIX
 #define fgr_any(m) ((m) != 0)
 #define fgr_all(m) ((m) != 0)
-#elif FGR_WIDTH == 4
-typedef FGR_LANES(float4, double4) real;
-typedef FGR_LANES(int4, long4) mask;
-typedef FGR_LANES(uint4, ulong4) ulanes;
-#define convert_ulanes FGR_LANES(convert_uint4, convert_ulong4)
-#define convert_real FGR_LANES(convert_float4, convert_double4)
-#define convert_float_lanes convert_float4
-#define fgr_any(m) any(m)
-#define fgr_all(m) all(m)
-#elif FGR_WIDTH == 8
-typedef FGR_LANES(float8, double8) real;
-typedef FGR_LANES(int8, long8) mask;
-typedef FGR_LANES(uint8, ulong8) ulanes;
-#define convert_ulanes FGR_LANES(convert_uint8, convert_ulong8)
-#define convert_real FGR_LANES(convert_float8, convert_double8)
-#define convert_float_lanes convert_float8
-#define fgr_any(m) any(m)
-#define fgr_all(m) all(m)
-#elif FGR_WIDTH == 16
-typedef FGR_LANES(float16, double16) real;
-typedef FGR_LANES(int16, long16) mask;
-typedef FGR_LANES(uint16, ulong16) ulanes;
-#define convert_ulanes FGR_LANES(convert_uint16, convert_ulong16)
-#define convert_real FGR_LANES(convert_float16, convert_double16)
-#define convert_float_lanes convert_float16
+#elif FGR_WIDTH == 4 || FGR_WIDTH == 8 || FGR_WIDTH == 16
+#define FGR_LANE_SUFFIX FGR_WIDTH
 #define fgr_any(m) any(m)
 #define fgr_all(m) all(m)
 #else
 #error "FGR_WIDTH must be 1, 4, 8 or 16"
 #endif
+#define FGR_PASTE_(a, b) a##b
+#define FGR_PASTE(a, b) FGR_PASTE_(a, b)
+#define FGR_LANE_TYPE(scalar) FGR_PASTE(scalar, FGR_LANE_SUFFIX)
+
+typedef FGR_LANE_TYPE(FGR_LANES(float, double)) real;
+typedef FGR_LANE_TYPE(FGR_LANES(int, long)) mask;
+typedef FGR_LANE_TYPE(FGR_LANES(uint, ulong)) ulanes;
+#define convert_ulanes FGR_LANE_TYPE(FGR_LANES(convert_uint, convert_ulong))
+#define convert_real FGR_LANE_TYPE(FGR_LANES(convert_float, convert_double))
+#define convert_float_lanes FGR_LANE_TYPE(convert_float)
 
 /* A scalar broadcast to every lane. */
 #define fgr_real(x) ((real)(x))
