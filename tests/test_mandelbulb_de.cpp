@@ -9,19 +9,15 @@
 #include <gtest/gtest.h>
 
 #include "fgr/parameters.hpp"
-#include "fgr/plugin_loader.hpp"
 #include "fgr/program_cache.hpp"
 #include "fgr/renderer.hpp"
 #include "mandelbulb_reference.hpp"
+#include "test_scenes.hpp"
 
 namespace fgr {
 namespace {
 
-Scene load_mandelbulb() {
-    LoadResult loaded = load_scene_plugin(std::filesystem::path(FGR_TEST_PLUGIN_DIR) / "mandelbulb.so");
-    if (!loaded.scene) throw std::runtime_error("mandelbulb plugin: " + loaded.error);
-    return std::move(*loaded.scene);
-}
+Scene load_mandelbulb() { return test::built_scene("mandelbulb.so"); }
 
 struct DeCase {
     int packet_width;

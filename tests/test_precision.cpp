@@ -12,9 +12,9 @@
 
 #include "fgr/camera.hpp"
 #include "fgr/parameters.hpp"
-#include "fgr/plugin_loader.hpp"
 #include "fgr/renderer.hpp"
 #include "mandelbulb_reference.hpp"
+#include "test_scenes.hpp"
 
 namespace fgr {
 namespace {
@@ -23,10 +23,7 @@ class Precision : public ::testing::Test {
 protected:
     static void SetUpTestSuite() {
         device_ = new ComputeDevice(open_device(-1));
-        LoadResult loaded =
-            load_scene_plugin(std::filesystem::path(FGR_TEST_PLUGIN_DIR) / "mandelbulb.so");
-        ASSERT_TRUE(loaded.scene) << loaded.error;
-        bulb_ = new Scene(std::move(*loaded.scene));
+        bulb_ = new Scene(test::built_scene("mandelbulb.so"));
     }
     static void TearDownTestSuite() {
         delete bulb_;

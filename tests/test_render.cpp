@@ -7,7 +7,6 @@
 
 #include "fgr/camera.hpp"
 #include "fgr/parameters.hpp"
-#include "fgr/plugin_loader.hpp"
 #include "fgr/program_cache.hpp"
 #include "fgr/renderer.hpp"
 #include "mandelbulb_reference.hpp"
@@ -20,10 +19,7 @@ class RenderTest : public ::testing::Test {
 protected:
     static void SetUpTestSuite() {
         device_ = new ComputeDevice(open_device(-1));
-        LoadResult loaded =
-            load_scene_plugin(std::filesystem::path(FGR_TEST_PLUGIN_DIR) / "mandelbulb.so");
-        ASSERT_TRUE(loaded.scene) << loaded.error;
-        mandelbulb_ = new Scene(std::move(*loaded.scene));
+        mandelbulb_ = new Scene(test::built_scene("mandelbulb.so"));
     }
     static void TearDownTestSuite() {
         delete mandelbulb_;

@@ -1,11 +1,23 @@
 #pragma once
-// Scenes built directly in C++ (no plugin) for tests that need a known, tiny DE.
+// Scenes for tests: built directly in C++ (no plugin) where a known, tiny DE is needed, or loaded
+// from the plugins this build made.
 
+#include <filesystem>
+#include <stdexcept>
 #include <string>
 
+#include "fgr/plugin_loader.hpp"
 #include "fgr/scene.hpp"
 
 namespace fgr::test {
+
+// A plugin of this build (FGR_TEST_PLUGIN_DIR), e.g. "mandelbulb.so"; throws with the reason when
+// it does not load.
+inline Scene built_scene(const std::string& file) {
+    LoadResult loaded = load_scene_plugin(std::filesystem::path(FGR_TEST_PLUGIN_DIR) / file);
+    if (!loaded.scene) throw std::runtime_error(file + ": " + loaded.error);
+    return std::move(*loaded.scene);
+}
 
 inline Scene inline_scene(std::string source) {
     Scene scene;
