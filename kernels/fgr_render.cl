@@ -94,7 +94,7 @@ __kernel void fgr_render(__global float* planes, int plane_size, int tile_count,
     real depth = fgr_real(-1.0f);
     if (fgr_any(hit.hit)) {
         vec3 p = v3_mad(eye, dir, hit.t);
-        real eps = fmax(hit.t * camera.pixel_angle * param_normal_epsilon, 1e-7f);
+        real eps = fmax(hit.t * camera.pixel_angle * param_normal_epsilon, FGR_MIN_LENGTH);
         vec3 n = estimate_normal(p, eps, PARAMS_PASS);
         vec3 lit = shade_surface(p, n, dir, eps, hit.steps, hit.t, 1, limits, lights,
                                  light_count, PARAMS_PASS);

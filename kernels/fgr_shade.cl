@@ -61,7 +61,7 @@ inline real sampled_occlusion(vec3 p, vec3 n, PARAMS) {
  * `travelled`: two hit thresholds out along the normal, so the ray does not count the surface it
  * leaves as a hit (at exactly one threshold, rounding decides per pixel: visible contour lines). */
 inline vec3 leave_surface(vec3 p, vec3 n, real travelled, march_limits limits) {
-    return v3_mad(p, n, 2.0f * travelled * limits.footprint + 1e-6f);
+    return v3_mad(p, n, 2.0f * travelled * limits.footprint + FGR_SURFACE_OFFSET);
 }
 
 #if defined(FGR_EFFECT_SOFT_SHADOWS)
@@ -84,7 +84,7 @@ inline real light_visibility(vec3 p, vec3 to_light, mask lit, real travelled, re
         /* Penumbra: visibility is min over the ray of k * DE / t, so a ray that passes an
          * occluder at distance d after travelling t is dimmed by how narrowly it missed; the
          * sharpness k is the built-in parameter shadow_sharpness. */
-        real penumbra = param_shadow_sharpness * closest / fmax(t - along, 1e-6f);
+        real penumbra = param_shadow_sharpness * closest / fmax(t - along, FGR_SURFACE_OFFSET);
         /* On the first steps off a flat lit surface the two DE spheres nest (along = dist, so
          * t - along <= 0): no closest approach to measure there, and using it speckled lit
          * floors with black pixels. */
@@ -184,7 +184,7 @@ inline vec3 add_reflection(vec3 colour, vec3 p, vec3 n, vec3 dir, real eps, real
                                              PARAMS_PASS);
         vec3 seen = background(reflected);
         vec3 q = v3_mad(start, reflected, next.t);
-        real q_eps = fmax((travelled + next.t) * limits.footprint * 0.5f, 1e-7f);
+        real q_eps = fmax((travelled + next.t) * limits.footprint * 0.5f, FGR_MIN_LENGTH);
         vec3 q_normal = n;
         if (fgr_any(next.hit)) {
             q_normal = estimate_normal(q, q_eps, PARAMS_PASS);
@@ -243,7 +243,7 @@ inline vec3 add_refraction(vec3 colour, vec3 p, vec3 n, vec3 dir, real eps, real
     vec3 albedo = scene_colour(p, PARAMS_PASS);
     vec3 inside_dir = refract_or_reflect(dir, n, fgr_real(1.0f / param_ior));
     /* Cross the solid: step by |DE| until the far surface (DE back to >= 0 within a footprint). */
-    vec3 start = v3_mad(p, n, -2.0f * travelled * limits.footprint - 1e-6f);
+    vec3 start = v3_mad(p, n, -2.0f * travelled * limits.footprint - FGR_SURFACE_OFFSET);
     real t = fgr_real(0.0f);
     mask crossing = active;
     for (int step = 0; step < limits.max_steps; ++step) {
@@ -254,16 +254,16 @@ inline vec3 add_refraction(vec3 colour, vec3 p, vec3 n, vec3 dir, real eps, real
         crossing &= t <= limits.max_distance;
     }
     vec3 exit_point = v3_mad(start, inside_dir, t);
-    real exit_eps = fmax((travelled + t) * limits.footprint * 0.5f, 1e-7f);
+    real exit_eps = fmax((travelled + t) * limits.footprint * 0.5f, FGR_MIN_LENGTH);
     vec3 exit_normal = estimate_normal(exit_point, exit_eps, PARAMS_PASS);
     vec3 out_dir = refract_or_reflect(inside_dir, v3_neg(exit_normal), fgr_real(param_ior));
-    vec3 behind_start = v3_mad(exit_point, exit_normal, 2.0f * (travelled + t) * limits.footprint + 1e-6f);
+    vec3 behind_start = v3_mad(exit_point, exit_normal, 2.0f * (travelled + t) * limits.footprint + FGR_SURFACE_OFFSET);
     march_result behind = march_rays_after(behind_start, out_dir, active, travelled + t, limits,
                                            PARAMS_PASS);
     vec3 seen = background(out_dir);
     if (fgr_any(behind.hit)) {
         vec3 q = v3_mad(behind_start, out_dir, behind.t);
-        real q_eps = fmax((travelled + t + behind.t) * limits.footprint * 0.5f, 1e-7f);
+        real q_eps = fmax((travelled + t + behind.t) * limits.footprint * 0.5f, FGR_MIN_LENGTH);
         vec3 q_normal = estimate_normal(q, q_eps, PARAMS_PASS);
         vec3 q_colour = shade_surface(q, q_normal, out_dir, q_eps, behind.steps,
                                       travelled + t + behind.t, 0, limits, lights, light_count,

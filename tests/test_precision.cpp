@@ -32,22 +32,59 @@ protected:
     Renderer renderer(bool double_precision) {
         return Renderer(*device_, cache_, *bulb_, {16, bulb_->effects, false, double_precision});
     }
-    // A view 1e-6 units across, 2e-5 in front of the surface point the canonical view's centre
-    // pixel sees: a pixel spans ~1e-8, a tenth of float's step at coordinates near 1.
-    CameraView deep_zoom() {
+    // A view `across` units wide, 2e-6 in front of the Mandelbulb's surface where the canonical
+    // view's central ray meets it (found by a long-double march down to 1e-12).
+    CameraView deep_zoom(double across = 1e-7) {
         const CameraView canonical = bulb_->cameras.front().view;
-        FrameRequest request{65, 49, canonical, default_param_values(*bulb_)};
-        const Frame frame = renderer(true).render(request);
-        const float t = frame.depth[static_cast<size_t>(24 * 65 + 32)];
-        EXPECT_GT(t, 0.0f);
-        const CameraBasis basis = camera_basis(canonical);
-        const glm::vec3 direction = primary_ray_direction(basis, 65, 49, 32.5f, 24.5f);
-        const glm::vec3 surface = basis.eye + direction * t;
+        const glm::dvec3 eye(canonical.position);
+        const glm::dvec3 direction = glm::normalize(glm::dvec3(canonical.target) - eye);
+        long double t = 0.0L;
+        for (int step = 0; step < 10000; ++step) {
+            const glm::dvec3 p = eye + direction * double(t);
+            const long double de = test::mandelbulb_de<long double>(p.x, p.y, p.z, test::BulbParams{});
+            if (de < 1e-12L) break;
+            t += de;
+        }
+        const glm::dvec3 surface = eye + direction * double(t);
         CameraView view = canonical;
-        view.position = surface - direction * 2e-6f;
-        view.target = surface;
-        view.fov_degrees = glm::degrees(2.0f * std::atan(0.5e-7f / 2e-6f));
+        view.position = glm::vec3(surface - direction * 2e-6);
+        view.target = glm::vec3(surface);
+        view.fov_degrees = float(glm::degrees(2.0 * std::atan(0.5 * across / 2e-6)));
         return view;
+    }
+    // Double's depths agree with a long-double sphere trace of the same rays and hit rule to two
+    // pixel footprints on 95% of sampled pixels; float's on fewer than half.
+    void expect_depths_match_long_double(const CameraView& view) {
+        constexpr int width = 96, height = 72;
+        const auto params = default_param_values(*bulb_);
+        const Frame in_double = renderer(true).render({width, height, view, params});
+        const Frame in_float = renderer(false).render({width, height, view, params});
+        const CameraBasis basis = camera_basis(view);
+        const long double footprint = param_value(*bulb_, params, "hit_threshold") * 2.0L *
+                                      basis.tan_half_fov / width;
+        int double_close = 0, float_close = 0, checked = 0;
+        for (int py = 4; py < height; py += 9) {
+            for (int px = 5; px < width; px += 11) {
+                const glm::vec3 dir = primary_ray_direction(basis, width, height, float(px), float(py));
+                long double t = 0.0L;
+                for (int step = 0; step < 1000; ++step) {
+                    const long double de = test::mandelbulb_de<long double>(
+                        basis.eye.x + dir.x * t, basis.eye.y + dir.y * t, basis.eye.z + dir.z * t,
+                        test::BulbParams{});
+                    if (de < t * footprint) break;
+                    t += de;
+                }
+                const size_t i = size_t(py) * width + size_t(px);
+                const long double tolerance = 2.0L * t * footprint;
+                ++checked;
+                double_close += std::abs(in_double.depth[i] - t) < tolerance;
+                float_close += std::abs(in_float.depth[i] - t) < tolerance;
+            }
+        }
+        std::printf("within two footprints of a long-double march: double %d, float %d of %d\n",
+                    double_close, float_close, checked);
+        EXPECT_GE(double_close, checked * 95 / 100);
+        EXPECT_LT(float_close, checked / 2);
     }
     static ComputeDevice* device_;
     static Scene* bulb_;
@@ -120,6 +157,69 @@ TEST_F(Precision, DoubleDeAgreesWithALongDoubleReference) {
     EXPECT_LT(worst_double, 1e-6);
     EXPECT_LT(worst_float, 5e-2);
     EXPECT_LT(worst_double, worst_float);
+}
+
+}  // namespace
+}  // namespace fgr
+
+namespace fgr {
+namespace {
+
+// How a deep zoom's depth map looks: the share of horizontally adjacent hit pixels with exactly
+// the same depth (float rounds neighbouring rays onto the same points: flat blocks), and the
+// median |second difference| of depth relative to depth (a smooth surface gives a small one,
+// float's rounding noise a large one).
+struct DepthTexture {
+    double equal_neighbours = 0.0;
+    double median_roughness = 0.0;
+};
+
+DepthTexture depth_texture(const Frame& frame, int width, int height) {
+    long pairs = 0, equal = 0;
+    std::vector<double> roughness;
+    for (int y = 0; y < height; ++y) {
+        for (int x = 1; x + 1 < width; ++x) {
+            const float* row = frame.depth.data() + size_t(y) * size_t(width);
+            const float a = row[x - 1], b = row[x], c = row[x + 1];
+            if (a < 0.0f || b < 0.0f || c < 0.0f) continue;
+            ++pairs;
+            equal += a == b;
+            roughness.push_back(std::abs(double(a) - 2.0 * double(b) + double(c)) / double(b));
+        }
+    }
+    if (roughness.empty()) return {};
+    std::nth_element(roughness.begin(), roughness.begin() + long(roughness.size() / 2),
+                     roughness.end());
+    return {double(equal) / double(pairs), roughness[roughness.size() / 2]};
+}
+
+// A deep zoom 1e-6 and 1e-7 units across at the surface (pixels of 1e-8 and 1e-9, while float's
+// step near the bulb is 6e-8): double renders a smooth surface; float rounds rays onto a coarse
+// grid, which at 1e-6 shows as rough, noisy depth and at 1e-7 as flat blocks (where the equal
+// neighbours also hide the noise from the roughness median).
+TEST_F(Precision, DeepZoomBreaksFloatWhileDoubleStaysSmooth) {
+    constexpr int width = 96, height = 72;
+    for (double across : {1e-6, 1e-7}) {
+        const FrameRequest request{width, height, deep_zoom(across), default_param_values(*bulb_)};
+        const Frame in_float = renderer(false).render(request);
+        const Frame in_double = renderer(true).render(request);
+        ASSERT_EQ(in_double.hits, width * height) << "the view is filled by the surface";
+        const DepthTexture coarse = depth_texture(in_float, width, height);
+        const DepthTexture fine = depth_texture(in_double, width, height);
+        std::printf("%g across: equal neighbours float %.3f double %.4f, roughness float %.3g "
+                    "double %.3g\n",
+                    across, coarse.equal_neighbours, fine.equal_neighbours, coarse.median_roughness,
+                    fine.median_roughness);
+        EXPECT_LT(fine.equal_neighbours, 0.01) << across;
+        if (across > 5e-7) EXPECT_GT(coarse.median_roughness, 10.0 * fine.median_roughness);
+        if (across < 5e-7) EXPECT_GT(coarse.equal_neighbours, 0.25);
+    }
+}
+
+// In the deep zooms double's depths are the surface's: a long-double sphere trace of the same
+// rays with the same hit rule lands within two pixel footprints of them. Float's do not.
+TEST_F(Precision, DeepZoomDoubleDepthsMatchALongDoubleMarch) {
+    for (double across : {1e-6, 1e-7}) expect_depths_match_long_double(deep_zoom(across));
 }
 
 }  // namespace
