@@ -12,6 +12,7 @@
 
 #include "fgr/camera.hpp"
 #include "fgr/parameters.hpp"
+#include "fgr/precision.hpp"
 #include "fgr/renderer.hpp"
 #include "mandelbulb_reference.hpp"
 #include "test_scenes.hpp"
@@ -19,7 +20,7 @@
 namespace fgr {
 namespace {
 
-class Precision : public ::testing::Test {
+class FloatAndDouble : public ::testing::Test {
 protected:
     static void SetUpTestSuite() {
         device_ = new ComputeDevice(open_device(-1));
@@ -90,13 +91,43 @@ protected:
     static Scene* bulb_;
     ProgramCache cache_{std::filesystem::path()};
 };
-ComputeDevice* Precision::device_ = nullptr;
-Scene* Precision::bulb_ = nullptr;
+ComputeDevice* FloatAndDouble::device_ = nullptr;
+Scene* FloatAndDouble::bulb_ = nullptr;
 
-TEST_F(Precision, AutoChoosesDoubleOnlyWhenAPixelIsFinerThanFloat) {
-    EXPECT_FALSE(needs_double_precision(bulb_->cameras.front().view, 640));
-    EXPECT_FALSE(needs_double_precision(bulb_->cameras.front().view, 16384));
-    EXPECT_TRUE(needs_double_precision(deep_zoom(), 96));
+TEST_F(FloatAndDouble, AutoChoosesDoubleOnlyWhenAPixelIsFinerThanFloat) {
+    const CameraView canonical = bulb_->cameras.front().view;
+    EXPECT_FALSE(needs_double_precision(canonical, 640));
+    EXPECT_FALSE(needs_double_precision(canonical, 16384));
+    EXPECT_FALSE(needs_double_precision(deep_zoom(1e-2), 96));
+    EXPECT_TRUE(needs_double_precision(deep_zoom(1e-6), 96));
+    EXPECT_TRUE(needs_double_precision(deep_zoom(1e-7), 96));
+
+    DeviceInfo with_fp64, without_fp64;
+    with_fp64.has_fp64 = true;
+    without_fp64.name = "a float-only device";
+    EXPECT_TRUE(use_double_precision(Precision::Auto, deep_zoom(), 96, with_fp64));
+    EXPECT_FALSE(use_double_precision(Precision::Auto, canonical, 96, with_fp64));
+    EXPECT_FALSE(use_double_precision(Precision::Float, deep_zoom(), 96, with_fp64));
+    EXPECT_TRUE(use_double_precision(Precision::Double, canonical, 96, with_fp64));
+    // Auto falls back to float (and says it did); an explicit double is an error.
+    EXPECT_FALSE(use_double_precision(Precision::Auto, deep_zoom(), 96, without_fp64));
+    EXPECT_TRUE(precision_fallback(Precision::Auto, deep_zoom(), 96, without_fp64));
+    EXPECT_FALSE(precision_fallback(Precision::Auto, canonical, 96, without_fp64));
+    EXPECT_FALSE(precision_fallback(Precision::Auto, deep_zoom(), 96, with_fp64));
+    EXPECT_THROW(use_double_precision(Precision::Double, canonical, 96, without_fp64),
+                 std::runtime_error);
+}
+
+TEST(PrecisionChoice, ParsesNamesAndRaisesThePacketWidthForDouble) {
+    for (Precision p : {Precision::Float, Precision::Double, Precision::Auto}) {
+        EXPECT_EQ(parse_precision(precision_name(p)), p);
+    }
+    EXPECT_THROW(parse_precision("half"), std::invalid_argument);
+    EXPECT_EQ(with_precision({1, 0}, true).packet_width, kMinDoublePacketWidth);
+    EXPECT_TRUE(with_precision({1, 0}, true).double_precision);
+    EXPECT_EQ(with_precision({16, 0}, true).packet_width, 16);
+    EXPECT_EQ(with_precision({1, 0, false, true}, false).packet_width, 1);
+    EXPECT_FALSE(with_precision({1, 0, false, true}, false).double_precision);
 }
 
 // Mean |t_float - t_double| / t_double over pixels both hit: how far float's depths stray from
@@ -115,7 +146,7 @@ double float_depth_error(const Frame& in_float, const Frame& in_double, long* bo
 
 // The double pipeline renders what the float one does where float suffices: the same hits and
 // depths within float's rounding, at every packet width double supports.
-TEST_F(Precision, DoubleRendersAnOrdinaryViewLikeFloat) {
+TEST_F(FloatAndDouble, DoubleRendersAnOrdinaryViewLikeFloat) {
     const FrameRequest canonical{96, 72, bulb_->cameras.front().view, default_param_values(*bulb_)};
     const Frame in_float = renderer(false).render(canonical);
     for (int width : {4, 8, 16}) {
@@ -132,7 +163,7 @@ TEST_F(Precision, DoubleRendersAnOrdinaryViewLikeFloat) {
 // The kernel's double DE (colatitude form, complex powers) against the trigonometric formula in
 // long double, at points near the surface: within 1e-6 of the DE plus 1e-9 (the result comes back
 // as float, so ~6e-8 relative is the floor). The float kernel is only held to 5e-2.
-TEST_F(Precision, DoubleDeAgreesWithALongDoubleReference) {
+TEST_F(FloatAndDouble, DoubleDeAgreesWithALongDoubleReference) {
     std::mt19937 rng(7);
     std::uniform_real_distribution<float> unit(-1.2f, 1.2f);
     std::vector<glm::vec3> points;
@@ -197,7 +228,7 @@ DepthTexture depth_texture(const Frame& frame, int width, int height) {
 // step near the bulb is 6e-8): double renders a smooth surface; float rounds rays onto a coarse
 // grid, which at 1e-6 shows as rough, noisy depth and at 1e-7 as flat blocks (where the equal
 // neighbours also hide the noise from the roughness median).
-TEST_F(Precision, DeepZoomBreaksFloatWhileDoubleStaysSmooth) {
+TEST_F(FloatAndDouble, DeepZoomBreaksFloatWhileDoubleStaysSmooth) {
     constexpr int width = 96, height = 72;
     for (double across : {1e-6, 1e-7}) {
         const FrameRequest request{width, height, deep_zoom(across), default_param_values(*bulb_)};
@@ -211,14 +242,17 @@ TEST_F(Precision, DeepZoomBreaksFloatWhileDoubleStaysSmooth) {
                     across, coarse.equal_neighbours, fine.equal_neighbours, coarse.median_roughness,
                     fine.median_roughness);
         EXPECT_LT(fine.equal_neighbours, 0.01) << across;
-        if (across > 5e-7) EXPECT_GT(coarse.median_roughness, 10.0 * fine.median_roughness);
-        if (across < 5e-7) EXPECT_GT(coarse.equal_neighbours, 0.25);
+        if (across > 5e-7) {
+            EXPECT_GT(coarse.median_roughness, 10.0 * fine.median_roughness);
+        } else {
+            EXPECT_GT(coarse.equal_neighbours, 0.25);
+        }
     }
 }
 
 // In the deep zooms double's depths are the surface's: a long-double sphere trace of the same
 // rays with the same hit rule lands within two pixel footprints of them. Float's do not.
-TEST_F(Precision, DeepZoomDoubleDepthsMatchALongDoubleMarch) {
+TEST_F(FloatAndDouble, DeepZoomDoubleDepthsMatchALongDoubleMarch) {
     for (double across : {1e-6, 1e-7}) expect_depths_match_long_double(deep_zoom(across));
 }
 

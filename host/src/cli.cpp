@@ -27,6 +27,7 @@
 #include "fgr/opencl_device.hpp"
 #include "fgr/parameters.hpp"
 #include "fgr/program_cache.hpp"
+#include "fgr/precision.hpp"
 #include "fgr/renderer.hpp"
 #include "fgr/scaffold.hpp"
 #include "fgr/viewer/viewer.hpp"
@@ -237,36 +238,30 @@ ComputeDevice open_requested_device(const RenderOptions& options) {
     return open_device(options.device);
 }
 
-constexpr int kMinDoublePacketWidth = 4;
-
-// --precision: float, double, or auto (double when the view is too fine for float).
-bool use_double_precision(const std::string& precision, const FrameRequest& request,
-                          const DeviceInfo& device) {
-    const bool wanted = precision == "double" ||
-                        (precision == "auto" && needs_double_precision(request.view, request.width));
-    if (!wanted) return false;
-    if (device.has_fp64) return true;
-    if (precision == "double") {
-        throw RuntimeFailure(fmt::format("{} has no double precision (cl_khr_fp64)", device.name));
+// --precision for one render: double on request or for a deep zoom; a device without double
+// says so (an error when double was asked for, a warning when auto wanted it).
+bool render_in_double(const std::string& precision, const FrameRequest& request,
+                      const DeviceInfo& device) {
+    const Precision choice = parse_precision(precision);
+    if (precision_fallback(choice, request.view, request.width, device)) {
+        spdlog::warn("this view needs double precision, which {} lacks: rendering in float",
+                     device.name);
     }
-    spdlog::warn("this view needs double precision, which {} lacks: rendering in float",
-                 device.name);
-    return false;
+    try {
+        return use_double_precision(choice, request.view, request.width, device);
+    } catch (const std::runtime_error& error) {
+        throw RuntimeFailure(error.what());
+    }
 }
 
 // Builds the scene's kernel, renders `request` and writes the PNG; prints the figures.
 void render_to_file(const Scene& scene, const FrameRequest& request, const ComputeDevice& device,
                     ProgramCache& cache, const RenderOptions& options,
                     const std::filesystem::path& output) {
-    KernelSwitches switches{
-        options.packet_width ? options.packet_width : preferred_packet_width(device.info),
-        apply_effect_changes(scene.effects, options.effect_changes), options.stats,
-        use_double_precision(options.precision, request, device.info)};
-    if (switches.double_precision && switches.packet_width < kMinDoublePacketWidth) {
-        // OpenCL C's scalar double overloads are ambiguous with the library's float literals;
-        // vector lanes are not, so double runs at least 4 rays per work-item.
-        switches.packet_width = kMinDoublePacketWidth;
-    }
+    const KernelSwitches switches = with_precision(
+        {options.packet_width ? options.packet_width : preferred_packet_width(device.info),
+         apply_effect_changes(scene.effects, options.effect_changes), options.stats},
+        render_in_double(options.precision, request, device.info));
     spdlog::info("building '{}' for {} ({} rays per work-item, {}, effects: {})", scene.id,
                  device.info.name, switches.packet_width,
                  switches.double_precision ? "double" : "float", effect_names(switches.effects));

@@ -41,7 +41,7 @@ struct MarchStats {
     int max_steps = 0;        // the most any pixel took
     long de_evaluations = 0;  // march steps plus the normal's four DE taps at every hit
     long out_of_steps = 0;    // rays that used max_steps without hitting or leaving the scene
-    double out_of_steps_percent() const { return pixels ? 100.0 * out_of_steps / pixels : 0.0; }
+    double out_of_steps_percent() const { return pixels ? 100.0 * double(out_of_steps) / double(pixels) : 0.0; }
 };
 
 struct Frame {
