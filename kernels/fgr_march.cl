@@ -2,7 +2,16 @@
  *
  * A ray hits when the distance estimate falls below the pixel's footprint at that distance:
  * DE(p) < hit_threshold * t * pixel_angle. Surfaces are resolved exactly as finely as the image
- * can show them, no finer, which is what makes far detail cheap. */
+ * can show them, no finer, which is what makes far detail cheap.
+ *
+ * Over-relaxation: with over_relaxation w > 1 a ray may step up to w times its safe distance,
+ * stretched by how the DE fell over the last step: if DE shrank by c per unit travelled, the
+ * surface is locally like a plane met at cos = c, about DE / c ahead, so the step is DE / c,
+ * kept within [1, w] times the safe step (long strides along grazing rays, plain steps straight
+ * at a surface). As in Keinert et al.'s "Enhanced Sphere Tracing" (2014), each stretched step's
+ * safe ball must overlap the previous one; where the balls leave a gap the step may have jumped
+ * over the surface, so the ray goes back and takes the plain step instead, judging nothing at
+ * the rejected point. At w = 1 this is plain sphere tracing, operation for operation. */
 
 typedef struct march_result {
     real t;     /* distance along the ray of the last evaluated point */
@@ -19,6 +28,7 @@ typedef struct march_limits {
     int max_steps;
     float max_distance;
     float step_factor;  /* rays advance step_factor * DE */
+    float relaxation;   /* over-relaxation: step_factor * DE * relaxation while it is safe */
 } march_limits;
 
 inline march_limits scene_march_limits(float pixel_angle, PARAMS) {
@@ -27,6 +37,7 @@ inline march_limits scene_march_limits(float pixel_angle, PARAMS) {
     limits.max_steps = param_max_steps;
     limits.max_distance = param_max_distance;
     limits.step_factor = param_step_factor;
+    limits.relaxation = param_over_relaxation;
     return limits;
 }
 
@@ -44,16 +55,48 @@ inline march_result march_rays_within(vec3 origin, vec3 dir, mask active, real t
 #ifdef FGR_EFFECT_GLOW
     result.closest = fgr_real(1e20f);
 #endif
+    /* Per lane: the safe radius at the last point, the step that left it (<= 0 after a
+     * rejected step: the next one is plain), and whether that step went beyond the safe radius
+     * (only such steps need checking). */
+    real last_radius = fgr_real(0.0f);
+    real last_step = fgr_real(0.0f);
+    mask stretched = (mask)(0);
+    const bool relaxing = limits.relaxation > 1.0f;
     for (int step = 0; step < limits.max_steps; ++step) {
         if (!fgr_any(active)) break;
         real dist = scene_de(v3_mad(origin, dir, result.t), PARAMS_PASS);
+        real radius = fabs(dist) * limits.step_factor;
+        /* Balls shrunk by the hit footprint must overlap: a gap could hide a sub-pixel feature
+         * the plain march would have hit, not only the surface itself. */
+        real shrink = 2.0f * limits.step_factor * limits.footprint * (result.t + travelled);
+        mask overshot = stretched & active & (radius + last_radius - shrink < last_step);
 #ifdef FGR_EFFECT_GLOW
-        result.closest = select(result.closest, fmin(result.closest, dist), active);
+        result.closest = select(result.closest, fmin(result.closest, dist), active & !overshot);
 #endif
-        mask now_hit = active & (dist < (result.t + travelled) * limits.footprint);
+        mask now_hit = active & !overshot & (dist < (result.t + travelled) * limits.footprint);
         result.hit |= now_hit;
         active &= !now_hit;
-        result.t = select(result.t, mad(dist, limits.step_factor, result.t), active);
+        if (relaxing) {
+            /* cosine: how fast DE fell over the last step, per unit travelled (1 head-on at a
+             * plane, 0 grazing it; the radii carry step_factor, hence the division). On a plane
+             * the balls keep overlapping for steps up to 2 / (1 + cosine) times the safe one;
+             * 1.9 leaves room for curvature. */
+            real cosine = (last_radius - radius) /
+                          (fmax(last_step, fgr_real(FGR_MIN_LENGTH)) * limits.step_factor);
+            real reach_factor = 1.9f - shrink / fmax(radius, fgr_real(FGR_MIN_LENGTH));
+            real stretch =
+                clamp(reach_factor / (1.0f + fmax(cosine, 0.0f)), 1.0f, limits.relaxation);
+            stretch = select(fgr_real(1.0f), stretch, last_step > 0.0f);
+            /* Rejected: back over the failed step, then the last point's safe radius forward. */
+            real next_step = select(dist * (limits.step_factor * stretch),
+                                    last_radius - last_step, overshot);
+            last_radius = select(last_radius, radius, active & !overshot);
+            last_step = select(last_step, next_step, active);
+            stretched = active & !overshot & (stretch > 1.0f);
+            result.t = select(result.t, result.t + next_step, active);
+        } else {
+            result.t = select(result.t, mad(dist, limits.step_factor, result.t), active);
+        }
         fgr_count_if(result.steps, active | now_hit);
         active &= result.t <= reach;
     }

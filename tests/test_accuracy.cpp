@@ -79,8 +79,16 @@ TEST(AccuracySweep, MeasuresEveryKnobAgainstTheReference) {
         any_pareto |= p.pareto;
         EXPECT_TRUE(std::isfinite(p.error.rmse) && p.render_ms > 0.0) << p.knob << p.value;
     }
-    EXPECT_EQ(knobs, (std::set<std::string>{"default", "hit_threshold", "max_steps", "iterations",
-                                            "step_factor", "normal_epsilon", "spp"}));
+    std::set<std::string> expected_knobs = {"default",         "hit_threshold", "max_steps",
+                                            "iterations",      "step_factor",   "over_relaxation",
+                                            "normal_epsilon",  "spp"};
+    // The float/double point and a double reference need cl_khr_fp64 (PoCL has it).
+    if (device.info.has_fp64) expected_knobs.insert("precision");
+    EXPECT_EQ(knobs, expected_knobs);
+    EXPECT_NE(report.reference_settings.find("over_relaxation=1 "), std::string::npos);
+    EXPECT_NE(report.reference_settings.find(device.info.has_fp64 ? "precision=double"
+                                                                  : "precision=float"),
+              std::string::npos);
     EXPECT_TRUE(any_pareto);
     // A loose hit threshold fattens silhouettes: more pixels disagree with the reference's
     // (threshold 0.1) hit/miss than with a tight one.

@@ -224,5 +224,25 @@ TEST_F(RenderTest, MarchStatsCountStepsAndRaysThatRanOutOfSteps) {
                 100.0 * double(starved.stats->out_of_steps) / double(stats.pixels), 1e-9);
 }
 
+// Over-relaxation stretches steps where that is safe: the same view takes at least 10% fewer
+// march steps at 1.6 than plain sphere tracing (15.6 against 18.3 here, 19.2 against 23.7 at
+// 640x480), hits the same pixels within 0.1%, and at 1 is plain sphere tracing (the default: the
+// image is unchanged).
+TEST_F(RenderTest, OverRelaxationTakesFewerStepsForTheSameHits) {
+    FrameRequest request{192, 144, mandelbulb_->cameras.front().view,
+                         default_param_values(*mandelbulb_)};
+    Renderer counting(*device_, cache_, *mandelbulb_,
+                      {preferred_packet_width(device_->info), mandelbulb_->effects, true});
+    const Frame plain = counting.render(request);
+    set_param_from_text(*mandelbulb_, request.params, "over_relaxation=1");
+    EXPECT_EQ(counting.render(request).image.rgb, plain.image.rgb);
+    set_param_from_text(*mandelbulb_, request.params, "over_relaxation=1.6");
+    const Frame relaxed = counting.render(request);
+    std::printf("mean steps: plain %.2f, over-relaxed %.2f\n", plain.stats->mean_steps,
+                relaxed.stats->mean_steps);
+    EXPECT_LT(relaxed.stats->mean_steps, 0.9 * plain.stats->mean_steps);
+    EXPECT_NEAR(double(relaxed.hits), double(plain.hits), 0.001 * double(plain.hits));
+}
+
 }  // namespace
 }  // namespace fgr

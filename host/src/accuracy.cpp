@@ -2,10 +2,12 @@
 
 #include <algorithm>
 #include <cmath>
+#include <optional>
 
 #include <fmt/format.h>
 
 #include "fgr/parameters.hpp"
+#include "fgr/precision.hpp"
 
 namespace fgr {
 namespace {
@@ -15,6 +17,7 @@ struct Setting {
     std::string value;
     std::vector<std::string> assignments;
     int samples = 1;
+    bool double_precision = false;
 };
 
 std::string number(double value) { return fmt::format("{:.4g}", value); }
@@ -44,13 +47,16 @@ std::vector<Setting> sweep_settings(const Scene& scene) {
     sweep("max_steps", {steps / 8, steps / 4, steps / 2, steps * 2}, true);
     sweep("iterations", {iterations / 2, iterations * 0.75, iterations * 1.5}, true);
     sweep("step_factor", {step_factor * 0.6, step_factor * 0.8, 1.0}, false);
+    sweep("over_relaxation", {1.2, 1.4, 1.6, 1.8}, false);
     sweep("normal_epsilon", {0.1, 0.25, 1.0, 2.0}, false);
     for (int samples : {2, 4, 8}) settings.push_back({"spp", number(samples), {}, samples});
+    settings.push_back({"precision", "double", {}, 1, true});
     return settings;
 }
 
-// The reference: a tenth of the default hit threshold, cautious steps, four times the steps,
-// twice the iterations, a fine normal stencil, many samples.
+// The reference: a tenth of the default hit threshold, cautious plain steps, four times the
+// steps, twice the iterations, a fine normal stencil, many samples (and double precision, where
+// the device has it).
 std::vector<std::string> reference_assignments(const Scene& scene) {
     const std::vector<float> defaults = default_param_values(scene);
     const auto value_of = [&](const char* id) { return double(param_value(scene, defaults, id)); };
@@ -60,6 +66,7 @@ std::vector<std::string> reference_assignments(const Scene& scene) {
     };
     return {"hit_threshold=" + number(clamp_to("hit_threshold", value_of("hit_threshold") / 10)),
             "step_factor=" + number(clamp_to("step_factor", value_of("step_factor") * 0.5)),
+            "over_relaxation=1",
             "max_steps=" + number(clamp_to("max_steps", std::round(value_of("max_steps") * 4))),
             "iterations=" + number(clamp_to("iterations", std::round(value_of("iterations") * 2))),
             "normal_epsilon=0.1"};
@@ -120,22 +127,66 @@ void mark_pareto_front(std::vector<AccuracyPoint>& points) {
     }
 }
 
+namespace {
+
+// The sweep's two programs: float, and double built on first use (devices without cl_khr_fp64
+// skip the double point and render the reference in float).
+class SweepRenderers {
+public:
+    SweepRenderers(const ComputeDevice& device, ProgramCache& cache, const Scene& scene)
+        : device_(device), cache_(cache), scene_(scene),
+          in_float_(device, cache, scene, {preferred_packet_width(device.info), scene.effects}) {}
+
+    bool has_double() const { return device_.info.has_fp64; }
+
+    Renderer& get(bool double_precision) {
+        if (!double_precision || !has_double()) return in_float_;
+        if (!in_double_) {
+            in_double_.emplace(device_, cache_, scene_,
+                               with_precision(in_float_.switches(), true));
+        }
+        return *in_double_;
+    }
+
+private:
+    const ComputeDevice& device_;
+    ProgramCache& cache_;
+    const Scene& scene_;
+    Renderer in_float_;
+    std::optional<Renderer> in_double_;
+};
+
+// The fastest of `repeats` renders of `request`.
+Frame fastest_render(Renderer& renderer, const FrameRequest& request, int repeats) {
+    Frame fastest = renderer.render(request);
+    for (int repeat = 1; repeat < repeats; ++repeat) {
+        Frame again = renderer.render(request);
+        if (again.render_ms < fastest.render_ms) fastest = std::move(again);
+    }
+    return fastest;
+}
+
+}  // namespace
+
 AccuracyReport run_accuracy_sweep(const Scene& scene, const ComputeDevice& device,
                                   ProgramCache& cache, const AccuracySettings& settings,
                                   const AccuracyProgress& progress) {
-    Renderer renderer(device, cache, scene,
-                      {preferred_packet_width(device.info), scene.effects});
-    const std::vector<Setting> sweep = sweep_settings(scene);
+    SweepRenderers renderers(device, cache, scene);
+    std::vector<Setting> sweep = sweep_settings(scene);
+    if (!renderers.has_double()) {
+        std::erase_if(sweep, [](const Setting& setting) { return setting.double_precision; });
+    }
     const int total = static_cast<int>(sweep.size()) + 1;
     AccuracyReport report;
     const std::vector<std::string> reference = reference_assignments(scene);
     for (const std::string& assignment : reference) {
         report.reference_settings += (report.reference_settings.empty() ? "" : " ") + assignment;
     }
-    report.reference_settings += fmt::format(" spp={}", settings.reference_samples);
+    report.reference_settings += fmt::format(" spp={} precision={}", settings.reference_samples,
+                                             renderers.has_double() ? "double" : "float");
     if (progress) progress(0, total, "reference");
-    const Frame truth =
-        renderer.render(request_for(scene, settings, reference, settings.reference_samples));
+    const Frame truth = renderers.get(true).render(
+        request_for(scene, settings, reference, settings.reference_samples));
     report.reference_ms = truth.render_ms;
     for (size_t i = 0; i < sweep.size(); ++i) {
         const Setting& setting = sweep[i];
@@ -143,13 +194,10 @@ AccuracyReport run_accuracy_sweep(const Scene& scene, const ComputeDevice& devic
             progress(int(i) + 1, total,
                      setting.value.empty() ? setting.knob : setting.knob + "=" + setting.value);
         }
-        const FrameRequest request =
-            request_for(scene, settings, setting.assignments, setting.samples);
-        Frame fastest = renderer.render(request);
-        for (int repeat = 1; repeat < settings.repeats; ++repeat) {
-            Frame again = renderer.render(request);
-            if (again.render_ms < fastest.render_ms) fastest = std::move(again);
-        }
+        const Frame fastest =
+            fastest_render(renderers.get(setting.double_precision),
+                           request_for(scene, settings, setting.assignments, setting.samples),
+                           settings.repeats);
         report.points.push_back(
             {setting.knob, setting.value, fastest.render_ms, compare_frames(fastest, truth)});
     }

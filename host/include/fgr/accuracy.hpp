@@ -1,10 +1,11 @@
 #pragma once
 // `fgr bench accuracy SCENE`: what accuracy costs in time. Each knob that trades one for the other
-// (hit threshold, max steps, DE iterations, step factor, normal epsilon, samples per pixel) is
-// swept on its own from the scene's defaults; every setting's render time is measured and its
-// image compared with a high-quality reference render of the same view (tiny hit threshold, many
-// more steps and iterations, cautious steps, many samples). The points no other point beats in
-// both time and error form the Pareto front.
+// (hit threshold, max steps, DE iterations, step factor, over-relaxation, normal epsilon, samples
+// per pixel, float or double) is swept on its own from the scene's defaults; every setting's
+// render time is measured and its image compared with a high-quality reference render of the
+// same view (tiny hit threshold, many more steps and iterations, cautious plain steps, many
+// samples, double precision). The points no other point beats in both time and error form the
+// Pareto front.
 
 #include <functional>
 #include <string>
@@ -29,7 +30,7 @@ struct ImageError {
 ImageError compare_frames(const Frame& frame, const Frame& reference);
 
 struct AccuracyPoint {
-    std::string knob;   // "default", "hit_threshold", "max_steps", ..., "spp"
+    std::string knob;   // "default", "hit_threshold", "max_steps", ..., "spp", "precision"
     std::string value;  // the knob's value ("" for the default point)
     double render_ms = 0.0;
     ImageError error;
