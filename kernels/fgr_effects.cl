@@ -2,12 +2,15 @@
  * (anti-aliasing jitter, thin-lens depth of field). Each effect exists only when its switch is
  * compiled in; sampling is always available because the sample count is a runtime choice. */
 
-/* A well-mixed 32-bit hash (Chris Wellons' lowbias32) per lane. */
+/* A well-mixed 32-bit hash (Chris Wellons' lowbias32) per lane. With double lanes `ulanes` is
+ * 64 bits wide, so products are cut back to 32 bits: the same numbers as in float, and
+ * unit_random's 24 bits stay in [0, 1). (For uint lanes the masks are no-ops.) */
 inline ulanes hash_lanes(ulanes x) {
+    x &= 0xffffffffu;
     x ^= x >> 16;
-    x *= 0x7feb352du;
+    x = (x * 0x7feb352du) & 0xffffffffu;
     x ^= x >> 15;
-    x *= 0x846ca68bu;
+    x = (x * 0x846ca68bu) & 0xffffffffu;
     x ^= x >> 16;
     return x;
 }

@@ -6,14 +6,13 @@
 #include <random>
 #include <set>
 
-#include <glm/geometric.hpp>
-#include <glm/trigonometric.hpp>
 #include <gtest/gtest.h>
 
 #include "fgr/camera.hpp"
 #include "fgr/parameters.hpp"
 #include "fgr/precision.hpp"
 #include "fgr/renderer.hpp"
+#include "deep_zoom.hpp"
 #include "mandelbulb_reference.hpp"
 #include "test_scenes.hpp"
 
@@ -33,25 +32,8 @@ protected:
     Renderer renderer(bool double_precision) {
         return Renderer(*device_, cache_, *bulb_, {16, bulb_->effects, false, double_precision});
     }
-    // A view `across` units wide, 2e-6 in front of the Mandelbulb's surface where the canonical
-    // view's central ray meets it (found by a long-double march down to 1e-12).
     CameraView deep_zoom(double across = 1e-7) {
-        const CameraView canonical = bulb_->cameras.front().view;
-        const glm::dvec3 eye(canonical.position);
-        const glm::dvec3 direction = glm::normalize(glm::dvec3(canonical.target) - eye);
-        long double t = 0.0L;
-        for (int step = 0; step < 10000; ++step) {
-            const glm::dvec3 p = eye + direction * double(t);
-            const long double de = test::mandelbulb_de<long double>(p.x, p.y, p.z, test::BulbParams{});
-            if (de < 1e-12L) break;
-            t += de;
-        }
-        const glm::dvec3 surface = eye + direction * double(t);
-        CameraView view = canonical;
-        view.position = glm::vec3(surface - direction * 2e-6);
-        view.target = glm::vec3(surface);
-        view.fov_degrees = float(glm::degrees(2.0 * std::atan(0.5 * across / 2e-6)));
-        return view;
+        return test::mandelbulb_deep_zoom(*bulb_, across);
     }
     // Double's depths agree with a long-double sphere trace of the same rays and hit rule to two
     // pixel footprints on 95% of sampled pixels; float's on fewer than half.
@@ -158,6 +140,25 @@ TEST_F(FloatAndDouble, DoubleRendersAnOrdinaryViewLikeFloat) {
             << "width " << width;
         EXPECT_GT(both, 96 * 72 / 4);
     }
+}
+
+// Jittered samples land in the same places in double as in float (the sample hash is 32-bit in
+// both): a 3-sample image agrees with float's to within rounding. With a 64-bit hash in double,
+// later samples landed far outside their pixels and the mean brightness fell by a quarter.
+TEST_F(FloatAndDouble, DoubleJittersSamplesLikeFloat) {
+    FrameRequest request{64, 48, bulb_->cameras.front().view, default_param_values(*bulb_)};
+    request.samples = 3;
+    const Frame in_float = renderer(false).render(request);
+    const Frame in_double = renderer(true).render(request);
+    ASSERT_EQ(in_float.linear.size(), in_double.linear.size());
+    double float_sum = 0.0, double_sum = 0.0, worst = 0.0;
+    for (size_t i = 0; i < in_float.linear.size(); ++i) {
+        float_sum += in_float.linear[i];
+        double_sum += in_double.linear[i];
+        worst = std::max(worst, double(std::abs(in_float.linear[i] - in_double.linear[i])));
+    }
+    EXPECT_NEAR(double_sum, float_sum, 0.002 * float_sum);
+    EXPECT_LT(worst, 0.2) << "a pixel's samples went elsewhere";
 }
 
 // The kernel's double DE (colatitude form, complex powers) against the trigonometric formula in
