@@ -1,5 +1,5 @@
 // The benchmark protocol: figures from frame times, the choice of camera path, fixed-frame and
-// fixed-duration runs, and the JSON / CSV / command-line outputs.
+// fixed-duration runs, the precision of each frame, and the JSON / CSV / command-line outputs.
 #include <filesystem>
 #include <sstream>
 
@@ -8,6 +8,7 @@
 
 #include "child_process.hpp"
 #include "fgr/bench.hpp"
+#include "deep_zoom.hpp"
 #include "test_scenes.hpp"
 
 namespace fgr {
@@ -100,8 +101,44 @@ TEST_F(BenchRun, FixedFramesPerRunWithConsistentFigures) {
     std::vector<std::string> lines;
     for (std::string line; std::getline(csv, line);) lines.push_back(line);
     ASSERT_EQ(lines.size(), 4u);  // header, two runs, average
-    for (const std::string& line : lines) EXPECT_EQ(std::count(line.begin(), line.end(), ','), 12);
+    for (const std::string& line : lines) EXPECT_EQ(std::count(line.begin(), line.end(), ','), 15);
     EXPECT_EQ(lines[3].rfind("inline,average,48,32,5,", 0), 0u) << lines[3];
+}
+
+// A path from the Mandelbulb's canonical view into a deep zoom, two frames: one at each end.
+// Auto renders the deep one in double, building that kernel only then; float renders neither.
+TEST_F(BenchRun, EachFrameRendersInThePrecisionItsViewNeeds) {
+    Scene bulb = test::built_scene("mandelbulb.so");
+    bulb.camera_paths = {{"dive",
+                          {{0.0f, bulb.cameras.front().view},
+                           {1.0f, test::mandelbulb_deep_zoom(bulb)}}}};
+    BenchSettings settings;
+    settings.width = 16;
+    settings.height = 12;
+    settings.frames = 2;
+    const auto run = [&](Precision precision) {
+        settings.precision = precision;
+        return run_benchmark(bulb, *device_, cache_, settings);
+    };
+    const BenchReport in_float = run(Precision::Float);
+    const BenchReport automatic = run(Precision::Auto);
+    const BenchReport in_double = run(Precision::Double);
+    EXPECT_EQ(in_float.average.double_frames, 0);
+    EXPECT_EQ(automatic.average.double_frames, 1);
+    EXPECT_EQ(in_double.average.double_frames, 2);
+    EXPECT_TRUE(in_float.double_build_origin.empty()) << "no double kernel built";
+    EXPECT_FALSE(automatic.build_origin.empty());
+    EXPECT_FALSE(automatic.double_build_origin.empty());
+    EXPECT_TRUE(in_double.build_origin.empty()) << "no float kernel built";
+    EXPECT_FALSE(in_double.double_build_origin.empty());
+
+    const nlohmann::json json = nlohmann::json::parse(bench_json(automatic));
+    EXPECT_EQ(json["settings"]["precision"], "auto");
+    EXPECT_EQ(json["runs"][0]["double_frames"], 1);
+    EXPECT_EQ(json["average"]["double_frames"], 1);
+    EXPECT_GT(json["double_kernel_build_ms"].get<double>(), 0.0);
+    EXPECT_NE(bench_csv(automatic).find(",auto,1,"), std::string::npos) << bench_csv(automatic);
+    EXPECT_NE(bench_table(automatic).find("double kernel build"), std::string::npos);
 }
 
 TEST_F(BenchRun, FixedDurationPlaysThePathInRealTime) {

@@ -2,8 +2,11 @@
 // cap and then left alone, a moving view gets reduced-resolution previews, a newer view abandons
 // refinement of an older one, a kernel that fails to build is reported while the worker keeps
 // serving other scenes, screenshots are written at full size even when stop() follows at once,
-// and the distance estimate at the camera is reported for the fly speed.
+// the distance estimate at the camera is reported for the fly speed, and deep views (a deep zoom,
+// or the camera flown up to the surface) render in double under auto.
 #include <gtest/gtest.h>
+
+#include <glm/geometric.hpp>
 
 #include <chrono>
 #include <filesystem>
@@ -18,6 +21,8 @@
 #include "fgr/program_cache.hpp"
 #include "fgr/renderer.hpp"
 #include "fgr/viewer/render_worker.hpp"
+#include "deep_zoom.hpp"
+#include "mandelbulb_reference.hpp"
 #include "test_scenes.hpp"
 
 namespace fgr::viewer {
@@ -235,6 +240,59 @@ TEST_F(RenderWorkerTest, ReportsTheDistanceEstimateAtTheCamera) {
     ASSERT_TRUE(wait_idle(1));
     // The camera is 3 from the centre of a sphere of radius 0.4.
     EXPECT_NEAR(worker_->status().de_at_camera, 2.6f, 1e-4f);
+}
+
+class RenderWorkerPrecision : public RenderWorkerTest {
+protected:
+    // The Mandelbulb seen through `view` at 32x24 under `precision`, refined to the sample cap:
+    // whether its last frame was rendered in double.
+    bool renders_in_double(const CameraView& view, Precision precision) {
+        ViewState bulb;
+        bulb.scene = bulb_;
+        bulb.effects = bulb_->effects;
+        bulb.view = view;
+        bulb.params = default_param_values(*bulb_);
+        bulb.width = 32;
+        bulb.height = 24;
+        bulb.precision = precision;
+        bulb.generation = ++generation_;
+        worker_->submit(bulb);
+        EXPECT_TRUE(wait_idle(generation_));
+        EXPECT_TRUE(worker_->status().error.empty()) << worker_->status().error;
+        EXPECT_FALSE(frames_.empty());
+        return !frames_.empty() && frames_.back().double_precision;
+    }
+
+    std::shared_ptr<const Scene> bulb_ =
+        std::make_shared<const Scene>(test::built_scene("mandelbulb.so"));
+    uint64_t generation_ = 0;
+};
+
+TEST_F(RenderWorkerPrecision, ADeepZoomRendersInDoubleUnderAutoAndInFloatWhenAskedTo) {
+    const CameraView deep = test::mandelbulb_deep_zoom(*bulb_, 1e-7);
+    const CameraView canonical = bulb_->cameras.front().view;
+    EXPECT_TRUE(renders_in_double(deep, Precision::Auto));
+    EXPECT_FALSE(renders_in_double(deep, Precision::Float));
+    EXPECT_FALSE(renders_in_double(canonical, Precision::Auto));
+    EXPECT_TRUE(renders_in_double(canonical, Precision::Double));
+}
+
+// Flying in keeps the fly camera's target far ahead; the camera's nearness to the surface (its
+// DE) still switches to double, and the DE that sets the fly speed is then probed in double:
+// exact to the surface's own rounding, where float's is off by about a percent.
+TEST_F(RenderWorkerPrecision, FlyingUpToTheSurfaceSwitchesToDoubleAndProbesInDouble) {
+    const CameraView deep = test::mandelbulb_deep_zoom(*bulb_);
+    const CameraView canonical = bulb_->cameras.front().view;
+    CameraView flown = canonical;
+    flown.position = deep.position;
+    flown.target = deep.position + glm::normalize(deep.target - deep.position) *
+                                       glm::length(canonical.target - canonical.position);
+    EXPECT_TRUE(renders_in_double(flown, Precision::Auto));
+    const long double reference = test::mandelbulb_de<long double>(
+        flown.position.x, flown.position.y, flown.position.z, test::BulbParams{});
+    ASSERT_GT(reference, 0.0L);
+    ASSERT_LT(reference, test::kDeepZoomStandoff * 1.01);
+    EXPECT_NEAR(worker_->status().de_at_camera, double(reference), 1e-3 * double(reference));
 }
 
 }  // namespace

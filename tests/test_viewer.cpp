@@ -428,6 +428,13 @@ TEST_F(ViewerTest, ExitAfterEndsCleanlyWithFrameStatistics) {
     EXPECT_TRUE(run.screenshots.empty());
 }
 
+TEST_F(ViewerTest, PrecisionDoubleRendersTheViewInDouble) {
+    const ViewerRun run = view("0 wait_idle\n0 quit\n", {"--precision", "double"});
+    ASSERT_EQ(run.result.exit_code, 0) << run.result;
+    EXPECT_NE(stat_text(run.result.out, "last_frame").find("precision double"), std::string::npos)
+        << run.result;
+}
+
 TEST_F(ViewerTest, BadReplayScriptsAreRefusedBeforeAWindowOpens) {
     const ViewerRun typo = view("0 key NoSuchKey\n");
     EXPECT_EQ(typo.result.exit_code, 2) << typo.result;

@@ -12,6 +12,7 @@
 
 #include <fmt/format.h>
 #include <nlohmann/json.hpp>
+#include <spdlog/spdlog.h>
 
 #include "fgr/camera.hpp"
 #include "fgr/parameters.hpp"
@@ -52,14 +53,122 @@ std::string operating_system() {
 json figures_json(const RunFigures& run) {
     return {{"frames", run.frames},     {"seconds", run.seconds},   {"min_ms", run.min_ms},
             {"max_ms", run.max_ms},     {"mean_ms", run.mean_ms},   {"mean_fps", run.mean_fps},
-            {"min_fps", run.min_fps},   {"max_fps", run.max_fps}};
+            {"min_fps", run.min_fps},   {"max_fps", run.max_fps},
+            {"double_frames", run.double_frames}};
 }
 
 std::string csv_row(const std::string& label, const BenchReport& report, const RunFigures& run) {
-    return fmt::format("{},{},{},{},{},{:.3f},{:.3f},{:.3f},{:.3f},{:.3f},{:.3f},{:.3f},{:.1f}\n",
-                       report.scene, label, report.settings.width, report.settings.height,
-                       run.frames, run.seconds, run.min_ms, run.max_ms, run.mean_ms, run.mean_fps,
-                       run.min_fps, run.max_fps, report.build_ms);
+    return fmt::format(
+        "{},{},{},{},{},{:.3f},{:.3f},{:.3f},{:.3f},{:.3f},{:.3f},{:.3f},{:.1f},{},{},{:.1f}\n",
+        report.scene, label, report.settings.width, report.settings.height, run.frames,
+        run.seconds, run.min_ms, run.max_ms, run.mean_ms, run.mean_fps, run.min_fps, run.max_fps,
+        report.build_ms, precision_name(report.settings.precision), run.double_frames,
+        report.double_build_ms);
+}
+
+std::string origin_name(BuildReport::Origin origin) {
+    switch (origin) {
+        case BuildReport::Origin::Compiled: return "compiled";
+        case BuildReport::Origin::Disk: return "disk cache";
+        case BuildReport::Origin::Memory: break;
+    }
+    return "memory cache";
+}
+
+// A benchmark's renderers, one per precision, each built the first time a frame needs it.
+class BenchRenderers {
+public:
+    BenchRenderers(const Scene& scene, const ComputeDevice& device, ProgramCache& cache,
+                   const BenchSettings& settings)
+        : scene_(scene), device_(device), cache_(cache), settings_(settings) {}
+
+    // Whether the frame showing `view` renders in double; warns once when auto falls back.
+    bool in_double(const CameraView& view) {
+        if (!fallback_reported_ &&
+            precision_fallback(settings_.precision, view, settings_.width, device_.info)) {
+            fallback_reported_ = true;
+            spdlog::warn("{}", precision_fallback_message(device_.info));
+        }
+        return use_double_precision(settings_.precision, view, settings_.width, device_.info);
+    }
+
+    // The renderer in that precision; null until built.
+    Renderer* find(bool double_precision) { return renderers_[double_precision].get(); }
+
+    // Builds the renderer in that precision; its build figures go into `report`.
+    Renderer& build(bool double_precision, BenchReport& report) {
+        std::unique_ptr<Renderer>& renderer = renderers_[double_precision];
+        const KernelSwitches switches{
+            settings_.packet_width ? settings_.packet_width : preferred_packet_width(device_.info),
+            scene_.effects};
+        renderer = std::make_unique<Renderer>(device_, cache_, scene_,
+                                              with_precision(switches, double_precision));
+        const BuildReport& build = renderer->build_report();
+        (double_precision ? report.double_build_ms : report.build_ms) = build.build_ms;
+        (double_precision ? report.double_build_origin : report.build_origin) =
+            origin_name(build.origin);
+        return *renderer;
+    }
+
+private:
+    const Scene& scene_;
+    const ComputeDevice& device_;
+    ProgramCache& cache_;
+    const BenchSettings& settings_;
+    std::unique_ptr<Renderer> renderers_[2];  // float, double
+    bool fallback_reported_ = false;
+};
+
+using Clock = std::chrono::steady_clock;
+
+// One run along `path`: its frames, timed, and how many of them rendered in double.
+RunFigures bench_run(const CameraPath& path, const Scene& scene, const BenchSettings& settings,
+                     BenchRenderers& renderers, BenchReport& report,
+                     const std::function<void(double)>& progress) {
+    FrameRequest request;
+    request.width = settings.width;
+    request.height = settings.height;
+    request.params = default_param_values(scene);
+    request.samples = settings.samples;
+    const float start_time = path.keyframes.front().time;
+    std::vector<double> frame_ms;
+    int double_frames = 0;
+    auto start = Clock::now();
+    for (;;) {
+        const double elapsed = std::chrono::duration<double>(Clock::now() - start).count();
+        double fraction = 0.0;
+        float time = start_time;
+        if (settings.frames) {
+            fraction = double(frame_ms.size()) / *settings.frames;
+            if (frame_ms.size() >= size_t(*settings.frames)) break;
+            // Frames spread evenly over the path, the last one on its end.
+            const int last = std::max(1, *settings.frames - 1);
+            time += path.duration() * float(frame_ms.size()) / float(last);
+        } else {
+            fraction = std::min(1.0, elapsed / settings.duration_seconds);
+            if (elapsed >= settings.duration_seconds) break;
+            // Real time: where the path is now (looping), as an interactive session sees it.
+            time += path.duration() > 0.0f
+                        ? std::fmod(static_cast<float>(elapsed), path.duration())
+                        : 0.0f;
+        }
+        progress(fraction);
+        request.view = evaluate_camera_path(path, time);
+        const bool in_double = renderers.in_double(request.view);
+        Renderer* renderer = renderers.find(in_double);
+        if (renderer == nullptr) {
+            // The run's clock stops while a kernel builds: builds are reported on their own.
+            const auto build_start = Clock::now();
+            renderer = &renderers.build(in_double, report);
+            start += Clock::now() - build_start;
+        }
+        frame_ms.push_back(renderer->render(request).render_ms);
+        double_frames += in_double;
+    }
+    RunFigures run =
+        summarise_run(frame_ms, std::chrono::duration<double>(Clock::now() - start).count());
+    run.double_frames = double_frames;
+    return run;
 }
 
 }  // namespace
@@ -83,9 +192,10 @@ RunFigures average_runs(const std::vector<RunFigures>& runs) {
     RunFigures mean;
     if (runs.empty()) return mean;
     const double n = static_cast<double>(runs.size());
-    double frames = 0.0;
+    double frames = 0.0, double_frames = 0.0;
     for (const RunFigures& run : runs) {
         frames += run.frames;
+        double_frames += run.double_frames;
         mean.seconds += run.seconds / n;
         mean.min_ms += run.min_ms / n;
         mean.max_ms += run.max_ms / n;
@@ -95,6 +205,7 @@ RunFigures average_runs(const std::vector<RunFigures>& runs) {
         mean.max_fps += run.max_fps / n;
     }
     mean.frames = static_cast<int>(std::lround(frames / n));
+    mean.double_frames = static_cast<int>(std::lround(double_frames / n));
     return mean;
 }
 
@@ -141,52 +252,13 @@ BenchReport run_benchmark(const Scene& scene, const ComputeDevice& device, Progr
     report.settings = settings;
     report.system = system_info(device.info);
 
-    const KernelSwitches switches{
-        settings.packet_width ? settings.packet_width : preferred_packet_width(device.info),
-        scene.effects};
-    Renderer renderer(device, cache, scene, switches);
-    report.build_ms = renderer.build_report().build_ms;
-    switch (renderer.build_report().origin) {
-        case BuildReport::Origin::Compiled: report.build_origin = "compiled"; break;
-        case BuildReport::Origin::Disk: report.build_origin = "disk cache"; break;
-        case BuildReport::Origin::Memory: report.build_origin = "memory cache"; break;
-    }
-
-    FrameRequest request;
-    request.width = settings.width;
-    request.height = settings.height;
-    request.params = default_param_values(scene);
-    request.samples = settings.samples;
-    const float start_time = path.keyframes.front().time;
-    using Clock = std::chrono::steady_clock;
+    BenchRenderers renderers(scene, device, cache, settings);
     for (int run = 0; run < settings.runs; ++run) {
-        std::vector<double> frame_ms;
-        const auto start = Clock::now();
-        for (;;) {
-            const double elapsed = std::chrono::duration<double>(Clock::now() - start).count();
-            double fraction = 0.0;
-            float time = start_time;
-            if (settings.frames) {
-                fraction = double(frame_ms.size()) / *settings.frames;
-                if (frame_ms.size() >= size_t(*settings.frames)) break;
-                // Frames spread evenly over the path, the last one on its end.
-                const int last = std::max(1, *settings.frames - 1);
-                time += path.duration() * float(frame_ms.size()) / float(last);
-            } else {
-                fraction = std::min(1.0, elapsed / settings.duration_seconds);
-                if (elapsed >= settings.duration_seconds) break;
-                // Real time: where the path is now (looping), as an interactive session sees it.
-                time += path.duration() > 0.0f
-                            ? std::fmod(static_cast<float>(elapsed), path.duration())
-                            : 0.0f;
-            }
-            if (progress) progress(run, fraction);
-            request.view = evaluate_camera_path(path, time);
-            frame_ms.push_back(renderer.render(request).render_ms);
-        }
+        report.runs.push_back(bench_run(path, scene, settings, renderers, report,
+                                        [&](double done) {
+                                            if (progress) progress(run, done);
+                                        }));
         if (progress) progress(run, 1.0);
-        report.runs.push_back(
-            summarise_run(frame_ms, std::chrono::duration<double>(Clock::now() - start).count()));
     }
     report.average = average_runs(report.runs);
     return report;
@@ -207,9 +279,12 @@ std::string bench_json(const BenchReport& report) {
           {"frames", report.settings.frames ? *report.settings.frames : 0},
           {"duration_seconds", report.settings.frames ? 0.0 : report.settings.duration_seconds},
           {"runs", report.settings.runs},
-          {"samples_per_pixel", report.settings.samples}}},
+          {"samples_per_pixel", report.settings.samples},
+          {"precision", precision_name(report.settings.precision)}}},
         {"kernel_build_ms", report.build_ms},
         {"kernel_build_origin", report.build_origin},
+        {"double_kernel_build_ms", report.double_build_ms},
+        {"double_kernel_build_origin", report.double_build_origin},
         {"runs", runs},
         {"average", figures_json(report.average)},
         {"system",
@@ -230,7 +305,7 @@ std::string bench_json(const BenchReport& report) {
 std::string bench_csv(const BenchReport& report) {
     std::string csv =
         "scene,run,width,height,frames,seconds,min_ms,max_ms,mean_ms,mean_fps,min_fps,max_fps,"
-        "kernel_build_ms\n";
+        "kernel_build_ms,precision,double_frames,double_kernel_build_ms\n";
     for (size_t i = 0; i < report.runs.size(); ++i) {
         csv += csv_row(std::to_string(i + 1), report, report.runs[i]);
     }
@@ -238,26 +313,44 @@ std::string bench_csv(const BenchReport& report) {
     return csv;
 }
 
+namespace {
+
+// "kernel build 120 ms (compiled), double kernel build 310 ms (disk cache)": the kernels the
+// frames needed.
+std::string kernel_builds(const BenchReport& report) {
+    std::string text;
+    if (!report.build_origin.empty()) {
+        text = fmt::format("kernel build {:.0f} ms ({})", report.build_ms, report.build_origin);
+    }
+    if (!report.double_build_origin.empty()) {
+        text += fmt::format("{}double kernel build {:.0f} ms ({})", text.empty() ? "" : ", ",
+                            report.double_build_ms, report.double_build_origin);
+    }
+    return text;
+}
+
+}  // namespace
+
 std::string bench_table(const BenchReport& report) {
     const SystemInfo& system = report.system;
     std::string table = fmt::format(
-        "scene {} along '{}' ({:.1f} s), {}x{}, {} spp, kernel build {:.0f} ms ({})\n"
+        "scene {} along '{}' ({:.1f} s), {}x{}, {} spp, precision {}, {}\n"
         "system: {}; {} ({} threads), {:.1f} GiB\n"
         "OpenCL: {} / {} ({}, {} compute units, {} MiB)\n\n",
         report.scene, report.path, report.path_seconds, report.settings.width,
-        report.settings.height, report.settings.samples, report.build_ms, report.build_origin,
-        system.os, system.cpu,
+        report.settings.height, report.settings.samples,
+        precision_name(report.settings.precision), kernel_builds(report), system.os, system.cpu,
         system.cpu_threads, double(system.memory_bytes) / double(1ull << 30),
         system.device.platform, system.device.name, system.device.version,
         system.device.compute_units, system.device.global_memory_bytes >> 20);
-    table += fmt::format("{:>8} {:>7} {:>8} {:>9} {:>9} {:>9} {:>8} {:>8} {:>8}\n", "run",
+    table += fmt::format("{:>8} {:>7} {:>8} {:>9} {:>9} {:>9} {:>8} {:>8} {:>8} {:>7}\n", "run",
                          "frames", "seconds", "min ms", "mean ms", "max ms", "avg fps",
-                         "min fps", "max fps");
+                         "min fps", "max fps", "double");
     const auto row = [&](const std::string& label, const RunFigures& run) {
         table += fmt::format("{:>8} {:>7} {:>8.2f} {:>9.1f} {:>9.1f} {:>9.1f} {:>8.2f} {:>8.2f} "
-                             "{:>8.2f}\n",
+                             "{:>8.2f} {:>7}\n",
                              label, run.frames, run.seconds, run.min_ms, run.mean_ms, run.max_ms,
-                             run.mean_fps, run.min_fps, run.max_fps);
+                             run.mean_fps, run.min_fps, run.max_fps, run.double_frames);
     };
     for (size_t i = 0; i < report.runs.size(); ++i) row(std::to_string(i + 1), report.runs[i]);
     if (report.runs.size() > 1) row("average", report.average);

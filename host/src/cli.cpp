@@ -58,7 +58,7 @@ struct RenderOptions {
     int packet_width = 0;  // 0: the device's preference
     bool all = false;      // every scene's default view into the directory `output`
     bool stats = false;    // print the primary rays' work: steps, DE evaluations, out of steps
-    std::string precision = "auto";  // float, double, or auto (double for deep zooms)
+    Precision precision = Precision::Auto;
     std::string effect_changes;  // "+shadows,-ambient_occlusion": over the scene's own effects
 };
 
@@ -240,15 +240,13 @@ ComputeDevice open_requested_device(const RenderOptions& options) {
 
 // --precision for one render: double on request or for a deep zoom; a device without double
 // says so (an error when double was asked for, a warning when auto wanted it).
-bool render_in_double(const std::string& precision, const FrameRequest& request,
+bool render_in_double(Precision precision, const FrameRequest& request,
                       const DeviceInfo& device) {
-    const Precision choice = parse_precision(precision);
-    if (precision_fallback(choice, request.view, request.width, device)) {
-        spdlog::warn("this view needs double precision, which {} lacks: rendering in float",
-                     device.name);
+    if (precision_fallback(precision, request.view, request.width, device)) {
+        spdlog::warn("{}", precision_fallback_message(device));
     }
     try {
-        return use_double_precision(choice, request.view, request.width, device);
+        return use_double_precision(precision, request.view, request.width, device);
     } catch (const std::runtime_error& error) {
         throw RuntimeFailure(error.what());
     }
@@ -354,6 +352,21 @@ void add_device_options(CLI::App* command, int& device, int& packet_width) {
         ->check(CLI::IsMember({1, 4, 8, 16}));
 }
 
+// --precision, shared by the commands that render.
+void add_precision_option(CLI::App* command, Precision& precision, const std::string& auto_means) {
+    std::vector<std::string> names;
+    for (Precision choice : {Precision::Float, Precision::Double, Precision::Auto}) {
+        names.emplace_back(precision_name(choice));
+    }
+    const auto choose = [&precision](const std::string& name) {
+        precision = parse_precision(name);
+    };
+    command
+        ->add_option_function<std::string>("--precision", choose,
+                                           "float, double, or auto (default): double " + auto_means)
+        ->check(CLI::IsMember(names));
+}
+
 void add_render_command(CLI::App& app, RenderOptions& options) {
     CLI::App* render = app.add_subcommand(
         "render", "render one image of a scene to a PNG file, or every scene's default view");
@@ -380,10 +393,8 @@ void add_render_command(CLI::App& app, RenderOptions& options) {
         ->check(CLI::IsMember({8, 16}));
     render->add_option("--effects", options.effect_changes,
                        "change the scene's effects, e.g. +shadows,-ambient_occlusion");
-    render->add_option("--precision", options.precision,
-                       "float, double, or auto: double when a pixel is finer than float resolves "
-                       "(deep zooms); default auto")
-        ->check(CLI::IsMember({"float", "double", "auto"}));
+    add_precision_option(render, options.precision,
+                         "when a pixel is finer than float resolves (deep zooms)");
     render->add_flag("--stats", options.stats,
                      "print steps per pixel, DE evaluations and rays that ran out of steps");
     add_device_options(render, options.device, options.packet_width);
@@ -442,6 +453,8 @@ void add_view_command(CLI::App& app, ViewCommandOptions& options) {
                    "scene development: reload a scene when its .cl source file is saved");
     view->add_flag("--stats", viewer.print_stats,
                    "print frame-time statistics and the final camera on exit");
+    add_precision_option(view, viewer.precision,
+                         "while the view is finer than float resolves (flying in deep), per frame");
     add_device_options(view, viewer.device, viewer.packet_width);
 }
 
@@ -510,6 +523,8 @@ void add_bench_command(CLI::App& app, BenchOptions& options) {
         ->check(CLI::Range(1, kMaxSamples));
     bench->add_option("-o,--output", options.output,
                       "write PREFIX.json and PREFIX.csv (default: bench-SCENE)");
+    add_precision_option(bench, options.settings.precision,
+                         "for the frames of the path finer than float resolves");
     add_device_options(bench, options.device, options.settings.packet_width);
 
     CLI::App* accuracy = bench->add_subcommand(

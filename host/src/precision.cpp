@@ -49,6 +49,11 @@ bool precision_fallback(Precision precision, const CameraView& view, int width,
     return precision == Precision::Auto && !device.has_fp64 && wants_double(precision, view, width);
 }
 
+std::string precision_fallback_message(const DeviceInfo& device) {
+    return fmt::format("this view needs double precision, which {} lacks: rendering in float",
+                       device.name);
+}
+
 KernelSwitches with_precision(KernelSwitches switches, bool double_precision) {
     switches.double_precision = double_precision;
     if (double_precision) {

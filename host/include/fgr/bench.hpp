@@ -3,7 +3,9 @@
 // resolution, either in real time for a fixed duration (the camera at each frame is where the
 // path is at that moment, as in an interactive session) or as a fixed number of frames spread
 // evenly over the path. Frame times, frame rates, the kernel build time and the system are
-// recorded; several runs are averaged. Results are written as JSON and CSV.
+// recorded; several runs are averaged. Results are written as JSON and CSV. Each frame is rendered
+// in float or double as `precision` decides for its view (see precision.hpp); the double kernel is
+// built the first time a frame needs it, the run's clock stopped meanwhile.
 
 #include <cstdint>
 #include <filesystem>
@@ -13,6 +15,7 @@
 #include <vector>
 
 #include "fgr/opencl_device.hpp"
+#include "fgr/precision.hpp"
 #include "fgr/program_cache.hpp"
 #include "fgr/scene.hpp"
 
@@ -26,6 +29,7 @@ struct BenchSettings {
     int runs = 1;
     int samples = 1;                 // per pixel
     int packet_width = 0;            // 0: the device's preference
+    Precision precision = Precision::Auto;
     std::string path;                // camera path; empty: "benchmark" if the scene has it, else the first
 };
 
@@ -36,6 +40,7 @@ struct RunFigures {
     double mean_fps = 0.0;  // frames / seconds
     double min_fps = 0.0;   // 1000 / max_ms
     double max_fps = 0.0;   // 1000 / min_ms
+    int double_frames = 0;  // frames rendered in double
 };
 
 struct SystemInfo {
@@ -51,8 +56,10 @@ struct BenchReport {
     std::string path;
     double path_seconds = 0.0;
     BenchSettings settings;
-    double build_ms = 0.0;  // kernel build (or cache load) and warm-up
-    std::string build_origin;  // "compiled", "disk cache" or "memory cache"
+    double build_ms = 0.0;  // float kernel build (or cache load) and warm-up; 0 if never needed
+    std::string build_origin;  // "compiled", "disk cache" or "memory cache"; empty if never built
+    double double_build_ms = 0.0;  // the same for the double kernel
+    std::string double_build_origin;
     std::vector<RunFigures> runs;
     RunFigures average;     // each figure averaged over the runs
     SystemInfo system;
@@ -61,7 +68,7 @@ struct BenchReport {
 // Summarises one run's frame times (ms) over `seconds` of wall time.
 RunFigures summarise_run(const std::vector<double>& frame_ms, double seconds);
 
-// The mean of each figure over `runs` (frames rounded to the nearest integer).
+// The mean of each figure over `runs` (frame counts rounded to the nearest integer).
 RunFigures average_runs(const std::vector<RunFigures>& runs);
 
 // The camera path the protocol plays; throws std::invalid_argument naming the scene's paths
@@ -73,7 +80,8 @@ SystemInfo system_info(const DeviceInfo& device);
 // Called after every frame with (run index from 0, fraction of the run done in [0, 1]).
 using BenchProgress = std::function<void(int, double)>;
 
-// Runs the protocol. Throws KernelBuildError, std::invalid_argument (bad path or settings).
+// Runs the protocol. Throws KernelBuildError, std::invalid_argument (bad path or settings),
+// std::runtime_error (precision Double on a device without it).
 BenchReport run_benchmark(const Scene& scene, const ComputeDevice& device, ProgramCache& cache,
                           const BenchSettings& settings, const BenchProgress& progress = {});
 

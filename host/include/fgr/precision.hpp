@@ -28,6 +28,8 @@ bool use_double_precision(Precision precision, const CameraView& view, int width
 // True when Auto wanted double for this view but the device cannot do it.
 bool precision_fallback(Precision precision, const CameraView& view, int width,
                         const DeviceInfo& device);
+// The warning for a fallback, one line naming the device.
+std::string precision_fallback_message(const DeviceInfo& device);
 
 // OpenCL C's scalar double overloads are ambiguous with the kernel library's float literals;
 // vector lanes are not, so double runs at least this many rays per work-item.

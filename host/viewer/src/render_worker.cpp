@@ -4,6 +4,7 @@
 #include <cmath>
 
 #include <fmt/format.h>
+#include <glm/geometric.hpp>
 #include <spdlog/spdlog.h>
 
 #include "fgr/parameters.hpp"
@@ -18,6 +19,19 @@ FrameRequest frame_request(const ViewState& state, int width, int height) {
     request.view = state.view;
     request.params = state.params;
     return request;
+}
+
+// The view whose finest detail decides the precision. The fly camera's target stays as far ahead
+// as the scene's camera put it, so flying in towards the surface would never look like a deep
+// zoom: the target is brought in to the nearest surface (the DE at the camera) when that is
+// nearer. The DE bounds the distance to anything in view from below, so this errs towards double.
+CameraView detail_view(const CameraView& view, float surface_distance) {
+    const glm::vec3 ahead = view.target - view.position;
+    const float target_distance = glm::length(ahead);
+    if (!(surface_distance >= 0.0f) || !(surface_distance < target_distance)) return view;
+    CameraView nearer = view;
+    nearer.target = view.position + ahead * (surface_distance / target_distance);
+    return nearer;
 }
 
 }  // namespace
@@ -158,7 +172,7 @@ void RenderWorker::run() {
                 continue;
             }
             const ViewState& state = *job->view;
-            Renderer* renderer = renderer_for(state);
+            Renderer* renderer = choose_renderer(state);
             if (renderer == nullptr) {
                 mark_idle(state.generation);  // the build failed: nothing to refine
                 continue;
@@ -175,9 +189,9 @@ void RenderWorker::run() {
 }
 
 Renderer* RenderWorker::build_renderer(const std::shared_ptr<const Scene>& scene,
-                                       uint64_t effects,
+                                       uint64_t effects, bool double_precision,
                                        std::pair<std::string, std::string>* failure) {
-    const RendererKey key{scene.get(), effects};
+    const RendererKey key{scene.get(), effects, double_precision};
     if (auto found = renderers_.find(key); found != renderers_.end()) {
         return found->second.renderer.get();
     }
@@ -189,13 +203,16 @@ Renderer* RenderWorker::build_renderer(const std::shared_ptr<const Scene>& scene
         std::lock_guard lock(mutex_);
         status_.compiling = true;
         status_.compiling_scene = scene->id;
+        status_.compiling_double = double_precision;
     }
     std::unique_ptr<Renderer> renderer;
     try {
-        renderer = std::make_unique<Renderer>(device_, cache_, *scene,
-                                              KernelSwitches{packet_width_, effects});
-        spdlog::info("kernel for '{}' (effects: {}) ready in {:.0f} ms", scene->id,
-                     effect_names(effects), renderer->build_report().build_ms);
+        renderer = std::make_unique<Renderer>(
+            device_, cache_, *scene,
+            with_precision(KernelSwitches{packet_width_, effects}, double_precision));
+        spdlog::info("kernel for '{}' (effects: {}, {}) ready in {:.0f} ms", scene->id,
+                     effect_names(effects), double_precision ? "double" : "float",
+                     renderer->build_report().build_ms);
     } catch (const KernelBuildError& error) {
         *failure = {fmt::format("scene '{}': {}", scene->id, error.what()), error.build_log()};
     } catch (const cl::Error& error) {
@@ -207,6 +224,7 @@ Renderer* RenderWorker::build_renderer(const std::shared_ptr<const Scene>& scene
         std::lock_guard lock(mutex_);
         status_.compiling = false;
         status_.compiling_scene.clear();
+        status_.compiling_double = false;
     }
     if (!renderer) {
         spdlog::error("{}", failure->first);
@@ -217,11 +235,39 @@ Renderer* RenderWorker::build_renderer(const std::shared_ptr<const Scene>& scene
     return (renderers_[key] = {scene, std::move(renderer)}).renderer.get();
 }
 
-Renderer* RenderWorker::renderer_for(const ViewState& state) {
-    const bool known = renderers_.count({state.scene.get(), state.effects}) ||
-                       failures_.count({state.scene.get(), state.effects});
+Renderer* RenderWorker::choose_renderer(const ViewState& state) {
+    if (state.generation == chosen_generation_) return renderer_for(state, chosen_double_);
+    Renderer* renderer = renderer_for(state, in_double(state));
+    if (renderer == nullptr) return nullptr;
+    probe_camera(*renderer, state);
+    // The DE just probed at this position may tip the choice (flying in towards the surface):
+    // change precision, and probe again with the renderer that renders, before any pixel.
+    if (in_double(state) != renderer->switches().double_precision) {
+        renderer = renderer_for(state, !renderer->switches().double_precision);
+        if (renderer == nullptr) return nullptr;
+        probe_camera(*renderer, state);
+    }
+    chosen_generation_ = state.generation;
+    chosen_double_ = renderer->switches().double_precision;
+    return renderer;
+}
+
+bool RenderWorker::in_double(const ViewState& state) {
+    const CameraView view =
+        detail_view(state.view, state.scene == probed_scene_ ? probed_de_ : -1.0f);
+    if (!fallback_reported_ &&
+        precision_fallback(state.precision, view, state.width, device_.info)) {
+        fallback_reported_ = true;
+        post_message(precision_fallback_message(device_.info));
+    }
+    return use_double_precision(state.precision, view, state.width, device_.info);
+}
+
+Renderer* RenderWorker::renderer_for(const ViewState& state, bool double_precision) {
+    const RendererKey key{state.scene.get(), state.effects, double_precision};
+    const bool known = renderers_.count(key) || failures_.count(key);
     std::pair<std::string, std::string> failure;
-    Renderer* renderer = build_renderer(state.scene, state.effects, &failure);
+    Renderer* renderer = build_renderer(state.scene, state.effects, double_precision, &failure);
     std::lock_guard lock(mutex_);
     if (renderer == nullptr && !known) messages_.push_back(failure.first);
     std::tie(status_.error, status_.error_log) = failure;
@@ -230,14 +276,15 @@ Renderer* RenderWorker::renderer_for(const ViewState& state) {
 
 void RenderWorker::reload(const ReloadRequest& request) {
     std::pair<std::string, std::string> failure;
-    const bool ok = build_renderer(request.candidate, request.effects, &failure) != nullptr;
+    // The float kernel decides: a deep view builds the double one when it first needs it.
+    const bool ok =
+        build_renderer(request.candidate, request.effects, false, &failure) != nullptr;
     std::lock_guard lock(mutex_);
     reload_results_.push_back({request, ok, failure.first, failure.second});
     status_.pending_reloads = static_cast<int>(reloads_.size());
 }
 
 void RenderWorker::render_pass(Renderer& renderer, const ViewState& state) {
-    probe_camera(renderer, state);
     if (accumulated_generation_ != state.generation) {
         accumulated_generation_ = state.generation;
         accumulated_samples_ = 0;
@@ -266,7 +313,8 @@ void RenderWorker::render_preview(Renderer& renderer, const ViewState& state, fl
         quality_.record_frame(int64_t{width} * height, frame.render_ms);
         previewed_generation_ = state.generation;
     }
-    publish({std::move(frame.image), scale, 1, frame.render_ms, state.generation});
+    publish({std::move(frame.image), scale, 1, frame.render_ms,
+             renderer.switches().double_precision, state.generation});
 }
 
 void RenderWorker::refine(Renderer& renderer, const ViewState& state, int sample) {
@@ -285,19 +333,21 @@ void RenderWorker::refine(Renderer& renderer, const ViewState& state, int sample
     if (sample == 0) {
         accumulation_ = std::move(frame.linear);
         accumulated_samples_ = 1;
-        publish({std::move(frame.image), 1.0f, 1, frame.render_ms, state.generation});
+        publish({std::move(frame.image), 1.0f, 1, frame.render_ms,
+                 renderer.switches().double_precision, state.generation});
         return;
     }
     for (size_t i = 0; i < accumulation_.size(); ++i) accumulation_[i] += frame.linear[i];
     ++accumulated_samples_;
     publish({display_image(*state.scene, state.params, accumulation_, state.width, state.height,
                            1.0f / static_cast<float>(accumulated_samples_)),
-             1.0f, accumulated_samples_, frame.render_ms, state.generation});
+             1.0f, accumulated_samples_, frame.render_ms, renderer.switches().double_precision,
+             state.generation});
 }
 
 void RenderWorker::take_screenshot(const ScreenshotRequest& request) {
     const ViewState& state = request.state;
-    Renderer* renderer = renderer_for(state);
+    Renderer* renderer = choose_renderer(state);
     if (renderer == nullptr) {
         const std::string message =
             fmt::format("screenshot not taken: the kernel for this view did not build");
@@ -323,17 +373,19 @@ void RenderWorker::take_screenshot(const ScreenshotRequest& request) {
 }
 
 void RenderWorker::probe_camera(Renderer& renderer, const ViewState& state) {
-    if (state.scene == probed_scene_ && state.view.position == probed_position_ &&
+    if (&renderer == probed_renderer_ && state.view.position == probed_position_ &&
         state.params == probed_params_) {
         return;
     }
     const std::vector<float> de = renderer.probe_de(std::span(&state.view.position, 1),
                                                     state.params);
     probed_scene_ = state.scene;
+    probed_renderer_ = &renderer;
     probed_position_ = state.view.position;
     probed_params_ = state.params;
+    probed_de_ = std::isfinite(de.at(0)) ? std::abs(de[0]) : -1.0f;
     std::lock_guard lock(mutex_);
-    status_.de_at_camera = std::isfinite(de.at(0)) ? std::abs(de[0]) : -1.0f;
+    status_.de_at_camera = probed_de_;
 }
 
 }  // namespace fgr::viewer

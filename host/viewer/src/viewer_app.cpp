@@ -13,6 +13,7 @@
 #include "fgr/discovery.hpp"
 #include "fgr/kernel_assembly.hpp"
 #include "fgr/parameters.hpp"
+#include "fgr/precision.hpp"
 
 namespace fgr::viewer {
 namespace {
@@ -39,7 +40,8 @@ bool same_image_inputs(const ViewState& a, const ViewState& b) {
     return a.scene == b.scene && a.effects == b.effects && a.width == b.width &&
            a.height == b.height && a.view.position == b.view.position &&
            a.view.target == b.view.target && a.view.up == b.view.up &&
-           a.view.fov_degrees == b.view.fov_degrees && a.params == b.params;
+           a.view.fov_degrees == b.view.fov_degrees && a.params == b.params &&
+           a.precision == b.precision;
 }
 
 std::string timestamp() {
@@ -75,6 +77,7 @@ ViewerApp::ViewerApp(const ViewerOptions& options, std::vector<Scene> scenes)
     for (Scene& scene : scenes) scenes_.push_back(std::make_shared<const Scene>(std::move(scene)));
     quality_.target_ms = options.target_ms;
     quality_.sample_cap = options.sample_cap;
+    precision_ = options.precision;
     fullscreen_ = options.fullscreen;
     if (options.camera_path_file) {
         try {
@@ -145,6 +148,9 @@ void ViewerApp::open_window() {
 int ViewerApp::run() {
     open_window();
     worker_ = std::make_unique<RenderWorker>(options_.device, options_.packet_width, quality_);
+    // --precision double on a device without it fails here, as `fgr render` does.
+    use_double_precision(precision_, session().camera.to_view(), options_.width,
+                         worker_->device_info());
     watch_sources();
     spdlog::info("viewer on {}; press H for the key bindings", worker_->device_info().name);
     if (!replay_events_.empty()) replay_ = std::make_unique<ReplayClock>(replay_events_);
@@ -390,6 +396,7 @@ void ViewerApp::submit_view() {
     state.effects = session().effects;
     state.view = session().camera.to_view();
     state.params = session().params;
+    state.precision = precision_;
     state.width = std::clamp(width, 1, kMaxImageSide);
     state.height = std::clamp(height, 1, kMaxImageSide);
     const double now = seconds_since(start_);
@@ -549,7 +556,10 @@ void ViewerApp::print_stats() const {
                camera.position.z);
     fmt::print("camera_forward {:.6g} {:.6g} {:.6g}\n", camera.forward.x, camera.forward.y,
                camera.forward.z);
-    if (shown_) fmt::print("last_frame scale {:.3f} samples {}\n", shown_->scale, shown_->samples);
+    if (shown_) {
+        fmt::print("last_frame scale {:.3f} samples {} precision {}\n", shown_->scale,
+                   shown_->samples, precision_label(precision_, shown_->double_precision));
+    }
 }
 
 int run_viewer(const ViewerOptions& options) {

@@ -22,6 +22,7 @@
 
 #include "fgr/camera_path_file.hpp"
 #include "fgr/image_io.hpp"
+#include "fgr/precision.hpp"
 #include "fgr/scene.hpp"
 #include "fgr/viewer/adaptive_quality.hpp"
 #include "fgr/viewer/file_watcher.hpp"
@@ -37,6 +38,12 @@ namespace fgr::viewer {
 
 inline double seconds_since(std::chrono::steady_clock::time_point start) {
     return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+}
+
+// The precision an image was rendered in, and why when auto chose double.
+inline const char* precision_label(Precision choice, bool in_double) {
+    if (!in_double) return "float";
+    return choice == Precision::Auto ? "double (deep zoom)" : "double";
 }
 
 // --- RAII over SDL and ImGui handles --------------------------------------------------------
@@ -198,6 +205,7 @@ private:
     void draw_params_section();
     void draw_effects_section();
     void draw_quality_section();
+    void draw_precision_combo();
     void draw_messages();
     void draw_help();
     void draw_build_error();
@@ -238,6 +246,7 @@ private:
     double playback_time_ = 0.0;
     float keyframe_interval_ = 2.0f;
     QualitySettings quality_;
+    Precision precision_ = Precision::Auto;
 
     ViewState last_state_;
     bool submitted_ = false;

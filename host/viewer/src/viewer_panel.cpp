@@ -11,6 +11,7 @@
 #include "fgr/kernel_assembly.hpp"
 #include "fgr/parameters.hpp"
 #include "fgr/plugin.h"
+#include "fgr/precision.hpp"
 
 namespace fgr::viewer {
 namespace {
@@ -84,12 +85,14 @@ void ViewerApp::draw_status_overlay() {
     ImGui::Begin("##status", nullptr, flags);
     ImGui::Text("%s  %dx%d", scene().id.c_str(), last_state_.width, last_state_.height);
     if (shown_) {
-        ImGui::Text("resolution %.0f%%  samples %d/%d  frame %.0f ms", shown_->scale * 100.0f,
-                    shown_->samples, quality_.sample_cap, shown_->render_ms);
+        ImGui::Text("resolution %.0f%%  samples %d/%d  frame %.0f ms  %s",
+                    shown_->scale * 100.0f, shown_->samples, quality_.sample_cap,
+                    shown_->render_ms, precision_label(precision_, shown_->double_precision));
     }
     if (status_.compiling) {
-        ImGui::TextColored(ImVec4(1, 0.8f, 0.2f, 1), "compiling %s...",
-                           status_.compiling_scene.c_str());
+        ImGui::TextColored(ImVec4(1, 0.8f, 0.2f, 1), "compiling %s%s...",
+                           status_.compiling_scene.c_str(),
+                           status_.compiling_double ? " in double" : "");
     }
     if (status_.pending_screenshots > 0) {
         ImGui::TextColored(ImVec4(0.6f, 0.9f, 1, 1), "screenshot in progress (%d)",
@@ -290,6 +293,7 @@ void ViewerApp::draw_quality_section() {
         quality_.target_ms = target;
         worker_->set_quality(quality_);
     }
+    draw_precision_combo();
     int preset = -1;
     const char* preview = "window size";
     if (ImGui::BeginCombo("window", preview)) {
@@ -306,6 +310,30 @@ void ViewerApp::draw_quality_section() {
         toggle_fullscreen();
     }
     ImGui::TextDisabled("device: %s", worker_->device_info().name.c_str());
+}
+
+void ViewerApp::draw_precision_combo() {
+    const bool has_fp64 = worker_->device_info().has_fp64;
+    if (ImGui::BeginCombo("precision", std::string(precision_name(precision_)).c_str())) {
+        for (Precision choice : {Precision::Auto, Precision::Float, Precision::Double}) {
+            // Without cl_khr_fp64 double cannot be chosen; auto then stays in float.
+            const ImGuiSelectableFlags flags =
+                choice == Precision::Double && !has_fp64 ? ImGuiSelectableFlags_Disabled : 0;
+            if (ImGui::Selectable(std::string(precision_name(choice)).c_str(),
+                                  choice == precision_, flags)) {
+                precision_ = choice;
+            }
+        }
+        ImGui::EndCombo();
+    }
+    if (ImGui::IsItemHovered()) {
+        ImGui::SetTooltip("auto: double where a pixel is finer than float resolves (deep "
+                          "zooms); double costs ~2.3x on a CPU");
+    }
+    if (shown_) {
+        ImGui::TextDisabled("rendered in %s",
+                            precision_label(precision_, shown_->double_precision));
+    }
 }
 
 void ViewerApp::draw_messages() {

@@ -3,7 +3,8 @@
 // finished frames; it never waits on OpenCL. The worker builds kernels (keeping the last image on
 // screen meanwhile), renders previews at a reduced resolution while the view changes, refines the
 // still view sample by sample, renders screenshots at full quality, and reports the distance
-// estimate at the camera for the fly speed.
+// estimate at the camera for the fly speed. It picks float or double lanes per view (see
+// precision.hpp), building the double kernel the first time a deep view needs it.
 
 #include <cmath>
 #include <condition_variable>
@@ -21,6 +22,7 @@
 
 #include "fgr/image_io.hpp"
 #include "fgr/opencl_device.hpp"
+#include "fgr/precision.hpp"
 #include "fgr/program_cache.hpp"
 #include "fgr/renderer.hpp"
 #include "fgr/scene.hpp"
@@ -37,6 +39,7 @@ struct ViewState {
     std::vector<float> params;
     int width = 1;   // full resolution
     int height = 1;
+    Precision precision = Precision::Auto;
     bool interactive = false;  // the view is changing: preview frames, no refinement
     uint64_t generation = 0;
 };
@@ -46,12 +49,14 @@ struct DisplayFrame {
     float scale = 1.0f;    // rendered size / full size
     int samples = 1;       // samples per pixel averaged into it
     double render_ms = 0;  // the pass that produced it
+    bool double_precision = false;  // rendered with double lanes
     uint64_t generation = 0;
 };
 
 struct WorkerStatus {
     bool compiling = false;
     std::string compiling_scene;  // id of the scene being built
+    bool compiling_double = false;  // ... its double-precision kernel
     std::string error;            // build failure of the shown (scene, effects), one line
     std::string error_log;        // the compiler's output for it
     float de_at_camera = -1.0f;   // < 0 until known
@@ -112,6 +117,7 @@ private:
     struct RendererKey {
         const Scene* scene;
         uint64_t effects;
+        bool double_precision;
         auto operator<=>(const RendererKey&) const = default;
     };
     struct CachedRenderer {
@@ -127,12 +133,18 @@ private:
     void run();
     // The next thing to do, or nothing when the thread should stop; waits while idle.
     std::optional<Job> next_job();
-    // The renderer for the state's scene and effects, building it when needed; null when the
-    // build failed (the status then carries the error).
-    Renderer* renderer_for(const ViewState& state);
+    // The renderer for the state's scene, effects and precision (decided once per generation,
+    // so refinement never mixes float and double samples), the DE at the camera probed with it;
+    // null when the build failed (the status then carries the error).
+    Renderer* choose_renderer(const ViewState& state);
+    // Whether to render `state` in double, judged with the DE last probed in its scene.
+    bool in_double(const ViewState& state);
+    // The renderer for the state's scene and effects in the given precision, building it when
+    // needed; null when the build failed (the status then carries the error).
+    Renderer* renderer_for(const ViewState& state, bool double_precision);
     // Builds (or finds) the renderer; on failure returns null and fills `failure`.
     Renderer* build_renderer(const std::shared_ptr<const Scene>& scene, uint64_t effects,
-                             std::pair<std::string, std::string>* failure);
+                             bool double_precision, std::pair<std::string, std::string>* failure);
     void reload(const ReloadRequest& request);
     void render_pass(Renderer& renderer, const ViewState& state);
     void render_preview(Renderer& renderer, const ViewState& state, float scale);
@@ -160,8 +172,13 @@ private:
     int accumulated_samples_ = 0;
     std::vector<float> accumulation_;  // sum of linear RGB over the samples
     std::shared_ptr<const Scene> probed_scene_;
+    const Renderer* probed_renderer_ = nullptr;  // renderers live as long as the worker
     glm::vec3 probed_position_{NAN};
     std::vector<float> probed_params_;
+    float probed_de_ = -1.0f;
+    uint64_t chosen_generation_ = UINT64_MAX;  // the generation whose precision is decided
+    bool chosen_double_ = false;
+    bool fallback_reported_ = false;  // auto wanted double on a device without it
 
     mutable std::mutex mutex_;
     std::condition_variable wake_;

@@ -7,6 +7,8 @@
 #include <string>
 #include <vector>
 
+#include "fgr/precision.hpp"
+
 namespace fgr::viewer {
 
 struct ViewerOptions {
@@ -18,6 +20,7 @@ struct ViewerOptions {
     int sample_cap = 16;            // samples per pixel accumulated while still, and for F12
     int device = -1;                // OpenCL device index, -1: first GPU, else first device
     int packet_width = 0;           // 0: the device's preference
+    Precision precision = Precision::Auto;  // float, double or per view; the panel changes it
     std::vector<std::string> assignments;   // --set id=value for the first scene
     std::string effect_changes;             // --effects for the first scene
     std::optional<std::filesystem::path> camera_path_file;  // load (and list) a recorded path
