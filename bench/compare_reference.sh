@@ -61,8 +61,8 @@ field() {
 }
 
 run_fgr() {
-    # step_factor=1: the reference's march rule exactly (t += DE); fgr's default steps 0.8 DE.
-    "$fgr" render mandelbulb --camera canonical --set step_factor=1 \
+    # The reference's march rule exactly (t += DE): fgr's defaults step 0.8 DE, over-relaxed.
+    "$fgr" render mandelbulb --camera canonical --set step_factor=1 --set over_relaxation=1 \
         --width "$width" --height "$height" -o "$tmp/fgr.png"
 }
 

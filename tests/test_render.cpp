@@ -224,20 +224,18 @@ TEST_F(RenderTest, MarchStatsCountStepsAndRaysThatRanOutOfSteps) {
                 100.0 * double(starved.stats->out_of_steps) / double(stats.pixels), 1e-9);
 }
 
-// Over-relaxation stretches steps where that is safe: the same view takes at least 10% fewer
-// march steps at 1.6 than plain sphere tracing (15.6 against 18.3 here, 19.2 against 23.7 at
-// 640x480), hits the same pixels within 0.1%, and at 1 is plain sphere tracing (the default: the
-// image is unchanged).
+// Over-relaxation stretches steps where that is safe: the default (1.6) takes at least 10% fewer
+// march steps than plain sphere tracing (over_relaxation 1) in the same view (15.6 against 18.3
+// here, 19.2 against 23.7 at 640x480) and hits the same pixels within 0.1%.
 TEST_F(RenderTest, OverRelaxationTakesFewerStepsForTheSameHits) {
     FrameRequest request{192, 144, mandelbulb_->cameras.front().view,
                          default_param_values(*mandelbulb_)};
+    EXPECT_FLOAT_EQ(param_value(*mandelbulb_, request.params, "over_relaxation"), 1.6f);
     Renderer counting(*device_, cache_, *mandelbulb_,
                       {preferred_packet_width(device_->info), mandelbulb_->effects, true});
-    const Frame plain = counting.render(request);
-    set_param_from_text(*mandelbulb_, request.params, "over_relaxation=1");
-    EXPECT_EQ(counting.render(request).image.rgb, plain.image.rgb);
-    set_param_from_text(*mandelbulb_, request.params, "over_relaxation=1.6");
     const Frame relaxed = counting.render(request);
+    set_param_from_text(*mandelbulb_, request.params, "over_relaxation=1");
+    const Frame plain = counting.render(request);
     std::printf("mean steps: plain %.2f, over-relaxed %.2f\n", plain.stats->mean_steps,
                 relaxed.stats->mean_steps);
     EXPECT_LT(relaxed.stats->mean_steps, 0.9 * plain.stats->mean_steps);

@@ -3,7 +3,7 @@ set terminal pngcairo size 960,640 font 'sans,11'
 set output 'accuracy-mandelbulb.png'
 set datafile separator ','
 set title 'what accuracy costs in time: mandelbulb' noenhanced
-set label 'reference: hit_threshold=0.1 step_factor=0.4 max_steps=1024 iterations=24 normal_epsilon=0.1 spp=16' at screen 0.01,0.02 font 'sans,9' noenhanced
+set label 'reference: hit_threshold=0.1 step_factor=0.4 over_relaxation=1 max_steps=1024 iterations=24 normal_epsilon=0.1 spp=16 precision=double' at screen 0.01,0.02 font 'sans,9' noenhanced
 set xlabel 'render time (ms)'
 set ylabel 'RMSE against the reference (8-bit levels)'
 set logscale xy
@@ -19,8 +19,12 @@ plot 'accuracy-mandelbulb.csv' skip 1 using (strcol(9) eq '1' ? $3 : NaN):4 smoo
      'accuracy-mandelbulb.csv' skip 1 using (strcol(1) eq 'iterations' ? $3 : NaN):4:2 with labels offset 0.8,0.6 font 'sans,8' notitle, \
      'accuracy-mandelbulb.csv' skip 1 using (strcol(1) eq 'step_factor' ? $3 : NaN):4 with linespoints pt 8 ps 1.3 title 'step_factor', \
      'accuracy-mandelbulb.csv' skip 1 using (strcol(1) eq 'step_factor' ? $3 : NaN):4:2 with labels offset 0.8,0.6 font 'sans,8' notitle, \
-     'accuracy-mandelbulb.csv' skip 1 using (strcol(1) eq 'normal_epsilon' ? $3 : NaN):4 with linespoints pt 9 ps 1.3 title 'normal_epsilon', \
+     'accuracy-mandelbulb.csv' skip 1 using (strcol(1) eq 'over_relaxation' ? $3 : NaN):4 with linespoints pt 9 ps 1.3 title 'over_relaxation', \
+     'accuracy-mandelbulb.csv' skip 1 using (strcol(1) eq 'over_relaxation' ? $3 : NaN):4:2 with labels offset 0.8,0.6 font 'sans,8' notitle, \
+     'accuracy-mandelbulb.csv' skip 1 using (strcol(1) eq 'normal_epsilon' ? $3 : NaN):4 with linespoints pt 10 ps 1.3 title 'normal_epsilon', \
      'accuracy-mandelbulb.csv' skip 1 using (strcol(1) eq 'normal_epsilon' ? $3 : NaN):4:2 with labels offset 0.8,0.6 font 'sans,8' notitle, \
-     'accuracy-mandelbulb.csv' skip 1 using (strcol(1) eq 'spp' ? $3 : NaN):4 with linespoints pt 10 ps 1.3 title 'spp', \
+     'accuracy-mandelbulb.csv' skip 1 using (strcol(1) eq 'spp' ? $3 : NaN):4 with linespoints pt 11 ps 1.3 title 'spp', \
      'accuracy-mandelbulb.csv' skip 1 using (strcol(1) eq 'spp' ? $3 : NaN):4:2 with labels offset 0.8,0.6 font 'sans,8' notitle, \
+     'accuracy-mandelbulb.csv' skip 1 using (strcol(1) eq 'precision' ? $3 : NaN):4 with linespoints pt 12 ps 1.3 title 'precision', \
+     'accuracy-mandelbulb.csv' skip 1 using (strcol(1) eq 'precision' ? $3 : NaN):4:2 with labels offset 0.8,0.6 font 'sans,8' notitle, \
      'accuracy-mandelbulb.csv' skip 1 using (strcol(1) eq 'default' ? $3 : NaN):4 with points pt 7 ps 2.2 lc rgb 'black' title 'defaults'

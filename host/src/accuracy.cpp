@@ -47,7 +47,7 @@ std::vector<Setting> sweep_settings(const Scene& scene) {
     sweep("max_steps", {steps / 8, steps / 4, steps / 2, steps * 2}, true);
     sweep("iterations", {iterations / 2, iterations * 0.75, iterations * 1.5}, true);
     sweep("step_factor", {step_factor * 0.6, step_factor * 0.8, 1.0}, false);
-    sweep("over_relaxation", {1.2, 1.4, 1.6, 1.8}, false);
+    sweep("over_relaxation", {1.0, 1.2, 1.4, 1.6, 1.8}, false);
     sweep("normal_epsilon", {0.1, 0.25, 1.0, 2.0}, false);
     for (int samples : {2, 4, 8}) settings.push_back({"spp", number(samples), {}, samples});
     settings.push_back({"precision", "double", {}, 1, true});

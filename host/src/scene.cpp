@@ -166,7 +166,7 @@ void add_builtin_params(Scene& scene) {
                                          1.0f, march.step_factor,
                                          "rays advance step_factor * DE (< 1 for estimated DEs)"));
     scene.params.push_back(builtin_param(
-        "over_relaxation", "Over-relaxation", ParamType::Float, 1.0f, 1.95f, 1.0f,
+        "over_relaxation", "Over-relaxation", ParamType::Float, 1.0f, 1.95f, 1.6f,
         "steps of over_relaxation * step_factor * DE while consecutive safe balls overlap, "
         "falling back to plain steps when they do not (1: plain sphere tracing)"));
     scene.params.push_back(builtin_param("normal_epsilon", "Normal epsilon", ParamType::Float,
