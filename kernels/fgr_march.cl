@@ -77,22 +77,22 @@ inline march_result march_rays_within(vec3 origin, vec3 dir, mask active, real t
         result.hit |= now_hit;
         active &= !now_hit;
         if (relaxing) {
-            /* cosine: how fast DE fell over the last step, per unit travelled (1 head-on at a
-             * plane, 0 grazing it; the radii carry step_factor, hence the division). On a plane
-             * the balls keep overlapping for steps up to 2 / (1 + cosine) times the safe one;
-             * 1.9 leaves room for curvature. */
-            real cosine = (last_radius - radius) /
-                          (fmax(last_step, fgr_real(FGR_MIN_LENGTH)) * limits.step_factor);
-            real reach_factor = 1.9f - shrink / fmax(radius, fgr_real(FGR_MIN_LENGTH));
-            real stretch =
-                clamp(reach_factor / (1.0f + fmax(cosine, 0.0f)), 1.0f, limits.relaxation);
-            stretch = select(fgr_real(1.0f), stretch, last_step > 0.0f);
+            /* On a plane met at cosine c (DE falls by c per unit travelled) balls stay
+             * overlapping for steps up to 2 / (1 + c) times the safe one. Shrunk by the
+             * footprint and with 0.1 left for curvature, the step is
+             * (1.9 radius - shrink) / (1 + c), with c = fall / (step_factor * last_step) as the
+             * radii carry step_factor: one division. Plain after a rejected step. */
+            real travel = limits.step_factor * last_step;
+            real fall = fmax(last_radius - radius, 0.0f);
+            real stride = (1.9f * radius - shrink) * travel /
+                          fmax(travel + fall, fgr_real(FGR_MIN_LENGTH));
+            stride = select(radius, clamp(stride, radius, radius * limits.relaxation),
+                            last_step > 0.0f);
             /* Rejected: back over the failed step, then the last point's safe radius forward. */
-            real next_step = select(dist * (limits.step_factor * stretch),
-                                    last_radius - last_step, overshot);
+            real next_step = select(stride, last_radius - last_step, overshot);
             last_radius = select(last_radius, radius, active & !overshot);
             last_step = select(last_step, next_step, active);
-            stretched = active & !overshot & (stretch > 1.0f);
+            stretched = active & !overshot & (stride > radius);
             result.t = select(result.t, result.t + next_step, active);
         } else {
             result.t = select(result.t, mad(dist, limits.step_factor, result.t), active);

@@ -99,15 +99,27 @@ TEST(AccuracySweep, MeasuresEveryKnobAgainstTheReference) {
     }
     ASSERT_GE(tight, 0.0);
     EXPECT_GT(loose, tight);
+    // The work per pixel is counted: a tighter threshold and plain steps (over-relaxation 1,
+    // against the default 1.6) both take more steps than the defaults.
+    const auto steps_of = [&](const std::string& knob, const std::string& value) {
+        for (const AccuracyPoint& p : report.points) {
+            if (p.knob == knob && p.value == value) return p.steps_per_pixel;
+        }
+        return -1.0;
+    };
+    const double default_steps = steps_of("default", "");
+    EXPECT_GT(default_steps, 1.0);
+    EXPECT_GT(steps_of("hit_threshold", "0.25"), default_steps);
+    EXPECT_GT(steps_of("over_relaxation", "1"), default_steps);
 
     std::istringstream csv(accuracy_csv(report));
     std::string line;
     std::getline(csv, line);
     EXPECT_EQ(line, "knob,value,render_ms,rmse,psnr_db,hit_mismatch_percent,mean_depth_error,"
-                    "mean_depth_error_relative,pareto");
+                    "mean_depth_error_relative,pareto,steps_per_pixel");
     int rows = 0;
     while (std::getline(csv, line)) {
-        EXPECT_EQ(std::count(line.begin(), line.end(), ','), 8) << line;
+        EXPECT_EQ(std::count(line.begin(), line.end(), ','), 9) << line;
         ++rows;
     }
     EXPECT_EQ(rows, int(report.points.size()));

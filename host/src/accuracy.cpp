@@ -36,7 +36,8 @@ std::vector<Setting> sweep_settings(const Scene& scene) {
         for (double value : values) {
             value = clamp_to(id, integral ? std::round(value) : value);
             if (std::find(seen.begin(), seen.end(), value) != seen.end()) continue;
-            if (value == value_of(id)) continue;  // that is the default point
+            // The default point (compared as the float the parameter holds).
+            if (float(value) == float(value_of(id))) continue;
             seen.push_back(value);
             settings.push_back({id, number(value), {fmt::format("{}={}", id, number(value))}, 1});
         }
@@ -130,12 +131,14 @@ void mark_pareto_front(std::vector<AccuracyPoint>& points) {
 namespace {
 
 // The sweep's two programs: float, and double built on first use (devices without cl_khr_fp64
-// skip the double point and render the reference in float).
+// skip the double point and render the reference in float). Both count march steps, the
+// sweep's measure of work that timing noise cannot blur.
 class SweepRenderers {
 public:
     SweepRenderers(const ComputeDevice& device, ProgramCache& cache, const Scene& scene)
         : device_(device), cache_(cache), scene_(scene),
-          in_float_(device, cache, scene, {preferred_packet_width(device.info), scene.effects}) {}
+          in_float_(device, cache, scene,
+                    {preferred_packet_width(device.info), scene.effects, true}) {}
 
     bool has_double() const { return device_.info.has_fp64; }
 
@@ -155,16 +158,6 @@ private:
     Renderer in_float_;
     std::optional<Renderer> in_double_;
 };
-
-// The fastest of `repeats` renders of `request`.
-Frame fastest_render(Renderer& renderer, const FrameRequest& request, int repeats) {
-    Frame fastest = renderer.render(request);
-    for (int repeat = 1; repeat < repeats; ++repeat) {
-        Frame again = renderer.render(request);
-        if (again.render_ms < fastest.render_ms) fastest = std::move(again);
-    }
-    return fastest;
-}
 
 }  // namespace
 
@@ -188,18 +181,30 @@ AccuracyReport run_accuracy_sweep(const Scene& scene, const ComputeDevice& devic
     const Frame truth = renderers.get(true).render(
         request_for(scene, settings, reference, settings.reference_samples));
     report.reference_ms = truth.render_ms;
-    for (size_t i = 0; i < sweep.size(); ++i) {
-        const Setting& setting = sweep[i];
-        if (progress) {
-            progress(int(i) + 1, total,
-                     setting.value.empty() ? setting.knob : setting.knob + "=" + setting.value);
+    // Timing rounds go over every setting in turn, so a slow spell on a shared machine slows
+    // all settings alike instead of one; each setting keeps its fastest render. The error comes
+    // from the first round (the images do not change between rounds).
+    for (int round = 0; round < settings.repeats; ++round) {
+        if (round > 0 && progress) {
+            progress(total - 1, total, fmt::format("timing round {}/{}", round + 1, settings.repeats));
         }
-        const Frame fastest =
-            fastest_render(renderers.get(setting.double_precision),
-                           request_for(scene, settings, setting.assignments, setting.samples),
-                           settings.repeats);
-        report.points.push_back(
-            {setting.knob, setting.value, fastest.render_ms, compare_frames(fastest, truth)});
+        for (size_t i = 0; i < sweep.size(); ++i) {
+            const Setting& setting = sweep[i];
+            if (round == 0 && progress) {
+                progress(int(i) + 1, total,
+                         setting.value.empty() ? setting.knob : setting.knob + "=" + setting.value);
+            }
+            const Frame frame = renderers.get(setting.double_precision)
+                                    .render(request_for(scene, settings, setting.assignments,
+                                                        setting.samples));
+            if (round == 0) {
+                report.points.push_back({setting.knob, setting.value, frame.render_ms,
+                                         frame.stats ? frame.stats->mean_steps : 0.0,
+                                         compare_frames(frame, truth)});
+            } else {
+                report.points[i].render_ms = std::min(report.points[i].render_ms, frame.render_ms);
+            }
+        }
     }
     if (progress) progress(total, total, "done");
     mark_pareto_front(report.points);
@@ -209,12 +214,13 @@ AccuracyReport run_accuracy_sweep(const Scene& scene, const ComputeDevice& devic
 std::string accuracy_csv(const AccuracyReport& report) {
     std::string csv =
         "knob,value,render_ms,rmse,psnr_db,hit_mismatch_percent,mean_depth_error,"
-        "mean_depth_error_relative,pareto\n";
+        "mean_depth_error_relative,pareto,steps_per_pixel\n";
     for (const AccuracyPoint& point : report.points) {
-        csv += fmt::format("{},{},{:.3f},{:.4f},{:.2f},{:.4f},{:.6g},{:.6g},{}\n", point.knob,
-                           point.value, point.render_ms, point.error.rmse, point.error.psnr,
-                           point.error.hit_mismatch_percent, point.error.mean_depth_error,
-                           point.error.mean_depth_error_relative, point.pareto ? 1 : 0);
+        csv += fmt::format("{},{},{:.3f},{:.4f},{:.2f},{:.4f},{:.6g},{:.6g},{},{:.3f}\n",
+                           point.knob, point.value, point.render_ms, point.error.rmse,
+                           point.error.psnr, point.error.hit_mismatch_percent,
+                           point.error.mean_depth_error, point.error.mean_depth_error_relative,
+                           point.pareto ? 1 : 0, point.steps_per_pixel);
     }
     return csv;
 }

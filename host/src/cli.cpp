@@ -540,7 +540,8 @@ void add_bench_command(CLI::App& app, BenchOptions& options) {
                          "samples per pixel of the reference (default 16)")
         ->check(CLI::Range(1, kMaxSamples));
     accuracy->add_option("--repeats", sweep.settings.repeats,
-                         "renders per setting, the fastest counts (default 3)")
+                         "timing rounds over all settings (alternating); each setting's fastest "
+                         "render counts (default 5)")
         ->check(CLI::Range(1, 20));
     accuracy->add_option("-o,--output", sweep.output,
                          "write PREFIX.csv, PREFIX.gp and PREFIX.png (default: accuracy-SCENE)");
@@ -578,13 +579,13 @@ int command_bench_accuracy(const AccuracyOptions& options, int device_index) {
             if (done < total) spdlog::info("[{}/{}] {}", done + 1, total, what);
         });
     fmt::print("reference ({}): {:.0f} ms\n", report.reference_settings, report.reference_ms);
-    fmt::print("{:<15} {:>8} {:>10} {:>8} {:>8} {:>10} {:>12} {}\n", "knob", "value", "render ms",
-               "rmse", "psnr dB", "hit diff %", "depth error", "pareto");
+    fmt::print("{:<15} {:>8} {:>10} {:>9} {:>8} {:>8} {:>10} {:>12} {}\n", "knob", "value",
+               "render ms", "steps/px", "rmse", "psnr dB", "hit diff %", "depth error", "pareto");
     for (const AccuracyPoint& point : report.points) {
-        fmt::print("{:<15} {:>8} {:>10.1f} {:>8.3f} {:>8.2f} {:>10.3f} {:>12.3g} {}\n", point.knob,
-                   point.value, point.render_ms, point.error.rmse, point.error.psnr,
-                   point.error.hit_mismatch_percent, point.error.mean_depth_error,
-                   point.pareto ? "*" : "");
+        fmt::print("{:<15} {:>8} {:>10.1f} {:>9.2f} {:>8.3f} {:>8.2f} {:>10.3f} {:>12.3g} {}\n",
+                   point.knob, point.value, point.render_ms, point.steps_per_pixel,
+                   point.error.rmse, point.error.psnr, point.error.hit_mismatch_percent,
+                   point.error.mean_depth_error, point.pareto ? "*" : "");
     }
     write_output(csv, accuracy_csv(report));
     write_output(script, accuracy_gnuplot(report, scene.id, csv.filename().string(),

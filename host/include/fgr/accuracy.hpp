@@ -33,6 +33,8 @@ struct AccuracyPoint {
     std::string knob;   // "default", "hit_threshold", "max_steps", ..., "spp", "precision"
     std::string value;  // the knob's value ("" for the default point)
     double render_ms = 0.0;
+    // Mean DE evaluations of the primary march per pixel: the work, free of timing noise.
+    double steps_per_pixel = 0.0;
     ImageError error;
     bool pareto = false;  // on the time / RMSE Pareto front
 };
@@ -44,7 +46,7 @@ struct AccuracySettings {
     int width = 320;
     int height = 240;
     int reference_samples = 16;
-    int repeats = 3;  // renders per setting; the fastest counts
+    int repeats = 5;  // timing rounds over all settings; each setting's fastest render counts
 };
 
 // Called with (settings done, settings in all, what is being rendered).
