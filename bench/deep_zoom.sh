@@ -20,7 +20,12 @@ height=${2:-240}
 script_dir=$(cd "$(dirname "${BASH_SOURCE[0]}")" && pwd)
 repo=$(cd "$script_dir/.." && pwd)
 fgr=$repo/build/bin/fgr
-[[ -x $fgr ]] || { echo "deep_zoom: build fgr first (./build.sh render)" >&2; exit 1; }
+if [[ ! -x $fgr ]]; then
+    echo "building fgr in $repo/build" >&2
+    cmake -S "$repo" -B "$repo/build" -G Ninja -DCMAKE_BUILD_TYPE=Release >&2
+    cmake --build "$repo/build" -j "$(nproc)" >&2
+    [[ -x $fgr ]] || { echo "deep_zoom: the build did not produce $fgr" >&2; exit 1; }
+fi
 
 if ! command -v montage > /dev/null; then
     echo "installing imagemagick (Debian package)" >&2
