@@ -91,13 +91,24 @@ TEST_F(FloatAndDouble, AutoChoosesDoubleOnlyWhenAPixelIsFinerThanFloat) {
     EXPECT_FALSE(use_double_precision(Precision::Auto, canonical, 96, with_fp64));
     EXPECT_FALSE(use_double_precision(Precision::Float, deep_zoom(), 96, with_fp64));
     EXPECT_TRUE(use_double_precision(Precision::Double, canonical, 96, with_fp64));
-    // Auto falls back to float (and says it did); an explicit double is an error.
+    // Auto falls back to float, and the chooser says so once, naming the device; an explicit
+    // double is an error.
     EXPECT_FALSE(use_double_precision(Precision::Auto, deep_zoom(), 96, without_fp64));
-    EXPECT_TRUE(precision_fallback(Precision::Auto, deep_zoom(), 96, without_fp64));
-    EXPECT_FALSE(precision_fallback(Precision::Auto, canonical, 96, without_fp64));
-    EXPECT_FALSE(precision_fallback(Precision::Auto, deep_zoom(), 96, with_fp64));
     EXPECT_THROW(use_double_precision(Precision::Double, canonical, 96, without_fp64),
                  std::runtime_error);
+    std::vector<std::string> warnings;
+    PrecisionChooser without(without_fp64, [&](const std::string& w) { warnings.push_back(w); });
+    EXPECT_FALSE(without.in_double(Precision::Auto, canonical, 96));
+    EXPECT_TRUE(warnings.empty()) << "float suffices there";
+    EXPECT_FALSE(without.in_double(Precision::Auto, deep_zoom(), 96));
+    EXPECT_FALSE(without.in_double(Precision::Auto, deep_zoom(1e-6), 96));
+    ASSERT_EQ(warnings.size(), 1u);
+    EXPECT_NE(warnings[0].find("a float-only device"), std::string::npos) << warnings[0];
+    EXPECT_THROW(without.in_double(Precision::Double, canonical, 96), std::runtime_error);
+    PrecisionChooser with(with_fp64, [&](const std::string& w) { warnings.push_back(w); });
+    EXPECT_TRUE(with.in_double(Precision::Auto, deep_zoom(), 96));
+    EXPECT_FALSE(with.in_double(Precision::Float, deep_zoom(), 96));
+    EXPECT_EQ(warnings.size(), 1u);
 }
 
 TEST(PrecisionChoice, ParsesNamesAndRaisesThePacketWidthForDouble) {

@@ -128,45 +128,16 @@ void mark_pareto_front(std::vector<AccuracyPoint>& points) {
     }
 }
 
-namespace {
-
-// The sweep's two programs: float, and double built on first use (devices without cl_khr_fp64
-// skip the double point and render the reference in float). Both count march steps, the
-// sweep's measure of work that timing noise cannot blur.
-class SweepRenderers {
-public:
-    SweepRenderers(const ComputeDevice& device, ProgramCache& cache, const Scene& scene)
-        : device_(device), cache_(cache), scene_(scene),
-          in_float_(device, cache, scene,
-                    {preferred_packet_width(device.info), scene.effects, true}) {}
-
-    bool has_double() const { return device_.info.has_fp64; }
-
-    Renderer& get(bool double_precision) {
-        if (!double_precision || !has_double()) return in_float_;
-        if (!in_double_) {
-            in_double_.emplace(device_, cache_, scene_,
-                               with_precision(in_float_.switches(), true));
-        }
-        return *in_double_;
-    }
-
-private:
-    const ComputeDevice& device_;
-    ProgramCache& cache_;
-    const Scene& scene_;
-    Renderer in_float_;
-    std::optional<Renderer> in_double_;
-};
-
-}  // namespace
-
 AccuracyReport run_accuracy_sweep(const Scene& scene, const ComputeDevice& device,
                                   ProgramCache& cache, const AccuracySettings& settings,
                                   const AccuracyProgress& progress) {
-    SweepRenderers renderers(device, cache, scene);
+    // Both renderers count march steps, the sweep's measure of work that timing noise cannot
+    // blur. Devices without cl_khr_fp64 skip the double point and render the reference in float.
+    PrecisionRenderers renderers(device, cache, scene,
+                                 {preferred_packet_width(device.info), scene.effects, true});
+    const bool has_double = device.info.has_fp64;
     std::vector<Setting> sweep = sweep_settings(scene);
-    if (!renderers.has_double()) {
+    if (!has_double) {
         std::erase_if(sweep, [](const Setting& setting) { return setting.double_precision; });
     }
     const int total = static_cast<int>(sweep.size()) + 1;
@@ -176,9 +147,9 @@ AccuracyReport run_accuracy_sweep(const Scene& scene, const ComputeDevice& devic
         report.reference_settings += (report.reference_settings.empty() ? "" : " ") + assignment;
     }
     report.reference_settings += fmt::format(" spp={} precision={}", settings.reference_samples,
-                                             renderers.has_double() ? "double" : "float");
+                                             has_double ? "double" : "float");
     if (progress) progress(0, total, "reference");
-    const Frame truth = renderers.get(true).render(
+    const Frame truth = renderers.get(has_double).render(
         request_for(scene, settings, reference, settings.reference_samples));
     report.reference_ms = truth.render_ms;
     // Timing rounds go over every setting in turn, so a slow spell on a shared machine slows

@@ -75,49 +75,31 @@ std::string origin_name(BuildReport::Origin origin) {
     return "memory cache";
 }
 
-// A benchmark's renderers, one per precision, each built the first time a frame needs it.
-class BenchRenderers {
-public:
+// A benchmark's float and double renderers, each built when a frame first needs it, and the
+// choice between them frame by frame.
+struct BenchRenderers {
     BenchRenderers(const Scene& scene, const ComputeDevice& device, ProgramCache& cache,
                    const BenchSettings& settings)
-        : scene_(scene), device_(device), cache_(cache), settings_(settings) {}
+        : renderers(device, cache, scene,
+                    {settings.packet_width ? settings.packet_width
+                                           : preferred_packet_width(device.info),
+                     scene.effects}),
+          chooser(device.info, [](const std::string& warning) { spdlog::warn("{}", warning); }) {}
 
-    // Whether the frame showing `view` renders in double; warns once when auto falls back.
-    bool in_double(const CameraView& view) {
-        if (!fallback_reported_ &&
-            precision_fallback(settings_.precision, view, settings_.width, device_.info)) {
-            fallback_reported_ = true;
-            spdlog::warn("{}", precision_fallback_message(device_.info));
-        }
-        return use_double_precision(settings_.precision, view, settings_.width, device_.info);
-    }
-
-    // The renderer in that precision; null until built.
-    Renderer* find(bool double_precision) { return renderers_[double_precision].get(); }
-
-    // Builds the renderer in that precision; its build figures go into `report`.
-    Renderer& build(bool double_precision, BenchReport& report) {
-        std::unique_ptr<Renderer>& renderer = renderers_[double_precision];
-        const KernelSwitches switches{
-            settings_.packet_width ? settings_.packet_width : preferred_packet_width(device_.info),
-            scene_.effects};
-        renderer = std::make_unique<Renderer>(device_, cache_, scene_,
-                                              with_precision(switches, double_precision));
-        const BuildReport& build = renderer->build_report();
-        (double_precision ? report.double_build_ms : report.build_ms) = build.build_ms;
-        (double_precision ? report.double_build_origin : report.build_origin) =
-            origin_name(build.origin);
-        return *renderer;
-    }
-
-private:
-    const Scene& scene_;
-    const ComputeDevice& device_;
-    ProgramCache& cache_;
-    const BenchSettings& settings_;
-    std::unique_ptr<Renderer> renderers_[2];  // float, double
-    bool fallback_reported_ = false;
+    PrecisionRenderers renderers;
+    PrecisionChooser chooser;
 };
+
+// Builds the renderer in that precision and records its build in `report`.
+Renderer& build_renderer(PrecisionRenderers& renderers, bool double_precision,
+                         BenchReport& report) {
+    Renderer& renderer = renderers.get(double_precision);
+    const BuildReport& build = renderer.build_report();
+    (double_precision ? report.double_build_ms : report.build_ms) = build.build_ms;
+    (double_precision ? report.double_build_origin : report.build_origin) =
+        origin_name(build.origin);
+    return renderer;
+}
 
 using Clock = std::chrono::steady_clock;
 
@@ -154,12 +136,13 @@ RunFigures bench_run(const CameraPath& path, const Scene& scene, const BenchSett
         }
         progress(fraction);
         request.view = evaluate_camera_path(path, time);
-        const bool in_double = renderers.in_double(request.view);
-        Renderer* renderer = renderers.find(in_double);
+        const bool in_double =
+            renderers.chooser.in_double(settings.precision, request.view, settings.width);
+        Renderer* renderer = renderers.renderers.built(in_double);
         if (renderer == nullptr) {
             // The run's clock stops while a kernel builds: builds are reported on their own.
             const auto build_start = Clock::now();
-            renderer = &renderers.build(in_double, report);
+            renderer = &build_renderer(renderers.renderers, in_double, report);
             start += Clock::now() - build_start;
         }
         frame_ms.push_back(renderer->render(request).render_ms);

@@ -242,11 +242,9 @@ ComputeDevice open_requested_device(const RenderOptions& options) {
 // says so (an error when double was asked for, a warning when auto wanted it).
 bool render_in_double(Precision precision, const FrameRequest& request,
                       const DeviceInfo& device) {
-    if (precision_fallback(precision, request.view, request.width, device)) {
-        spdlog::warn("{}", precision_fallback_message(device));
-    }
+    PrecisionChooser chooser(device, [](const std::string& warning) { spdlog::warn("{}", warning); });
     try {
-        return use_double_precision(precision, request.view, request.width, device);
+        return chooser.in_double(precision, request.view, request.width);
     } catch (const std::runtime_error& error) {
         throw RuntimeFailure(error.what());
     }

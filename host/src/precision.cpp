@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <stdexcept>
+#include <utility>
 
 #include <fmt/format.h>
 
@@ -44,14 +45,19 @@ bool use_double_precision(Precision precision, const CameraView& view, int width
     return false;
 }
 
-bool precision_fallback(Precision precision, const CameraView& view, int width,
-                        const DeviceInfo& device) {
-    return precision == Precision::Auto && !device.has_fp64 && wants_double(precision, view, width);
-}
+PrecisionChooser::PrecisionChooser(const DeviceInfo& device, Warn warn)
+    : device_(device), warn_(std::move(warn)) {}
 
-std::string precision_fallback_message(const DeviceInfo& device) {
-    return fmt::format("this view needs double precision, which {} lacks: rendering in float",
-                       device.name);
+bool PrecisionChooser::in_double(Precision precision, const CameraView& view, int width) {
+    const bool double_wanted = wants_double(precision, view, width);
+    if (!warned_ && double_wanted && precision == Precision::Auto && !device_.has_fp64) {
+        warned_ = true;
+        if (warn_) {
+            warn_(fmt::format("this view needs double precision, which {} lacks: rendering in float",
+                              device_.name));
+        }
+    }
+    return double_wanted && use_double_precision(precision, view, width, device_);
 }
 
 KernelSwitches with_precision(KernelSwitches switches, bool double_precision) {
@@ -60,6 +66,23 @@ KernelSwitches with_precision(KernelSwitches switches, bool double_precision) {
         switches.packet_width = std::max(switches.packet_width, kMinDoublePacketWidth);
     }
     return switches;
+}
+
+PrecisionRenderers::PrecisionRenderers(const ComputeDevice& device, ProgramCache& cache,
+                                       const Scene& scene, const KernelSwitches& switches)
+    : device_(device), cache_(cache), scene_(scene), switches_(switches) {}
+
+Renderer* PrecisionRenderers::built(bool double_precision) {
+    return renderers_[double_precision].get();
+}
+
+Renderer& PrecisionRenderers::get(bool double_precision) {
+    std::unique_ptr<Renderer>& renderer = renderers_[double_precision];
+    if (!renderer) {
+        renderer = std::make_unique<Renderer>(device_, cache_, scene_,
+                                              with_precision(switches_, double_precision));
+    }
+    return *renderer;
 }
 
 }  // namespace fgr

@@ -40,7 +40,8 @@ RenderWorker::RenderWorker(int device_index, int packet_width, QualitySettings q
     : device_(open_device(device_index)),
       packet_width_(packet_width ? packet_width : preferred_packet_width(device_.info)),
       cache_(ProgramCache::default_directory()),
-      quality_(quality) {
+      quality_(quality),
+      precision_chooser_(device_.info, [this](const std::string& warning) { post_message(warning); }) {
     thread_ = std::thread([this] { run(); });
 }
 
@@ -255,12 +256,7 @@ Renderer* RenderWorker::choose_renderer(const ViewState& state) {
 bool RenderWorker::in_double(const ViewState& state) {
     const CameraView view =
         detail_view(state.view, state.scene == probed_scene_ ? probed_de_ : -1.0f);
-    if (!fallback_reported_ &&
-        precision_fallback(state.precision, view, state.width, device_.info)) {
-        fallback_reported_ = true;
-        post_message(precision_fallback_message(device_.info));
-    }
-    return use_double_precision(state.precision, view, state.width, device_.info);
+    return precision_chooser_.in_double(state.precision, view, state.width);
 }
 
 Renderer* RenderWorker::renderer_for(const ViewState& state, bool double_precision) {

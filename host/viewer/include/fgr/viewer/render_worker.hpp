@@ -178,7 +178,7 @@ private:
     float probed_de_ = -1.0f;
     uint64_t chosen_generation_ = UINT64_MAX;  // the generation whose precision is decided
     bool chosen_double_ = false;
-    bool fallback_reported_ = false;  // auto wanted double on a device without it
+    PrecisionChooser precision_chooser_;  // posts once when auto wants double the device lacks
 
     mutable std::mutex mutex_;
     std::condition_variable wake_;
