@@ -4,14 +4,16 @@
  * DE(p) < hit_threshold * t * pixel_angle. Surfaces are resolved exactly as finely as the image
  * can show them, no finer, which is what makes far detail cheap.
  *
- * Over-relaxation: with over_relaxation w > 1 a ray may step up to w times its safe distance,
- * stretched by how the DE fell over the last step: if DE shrank by c per unit travelled, the
- * surface is locally like a plane met at cos = c, about DE / c ahead, so the step is DE / c,
- * kept within [1, w] times the safe step (long strides along grazing rays, plain steps straight
- * at a surface). As in Keinert et al.'s "Enhanced Sphere Tracing" (2014), each stretched step's
- * safe ball must overlap the previous one; where the balls leave a gap the step may have jumped
- * over the surface, so the ray goes back and takes the plain step instead, judging nothing at
- * the rejected point. At w = 1 this is plain sphere tracing, operation for operation. */
+ * Over-relaxation: with over_relaxation w > 1 a ray may stretch a step beyond its safe distance
+ * (step_factor * DE), by up to w times. How far depends on how the DE fell over the last step: on
+ * a plane met at cosine c the DE falls by c per unit travelled, and the safe balls of successive
+ * points keep overlapping for steps up to 2 / (1 + c) times the safe one, so grazing rays take
+ * long strides and rays heading straight at a surface take plain steps. As in Keinert et al.'s
+ * "Enhanced Sphere Tracing" (2014), each stretched step is checked: its ball and the previous
+ * one, both shrunk by the hit footprint, must overlap; where they leave a gap the step may have
+ * jumped over the surface or a sub-pixel feature, so the ray goes back and takes the plain step
+ * instead, judging nothing at the rejected point. At w = 1 this is plain sphere tracing,
+ * operation for operation. */
 
 typedef struct march_result {
     real t;     /* distance along the ray of the last evaluated point */
@@ -65,11 +67,14 @@ inline march_result march_rays_within(vec3 origin, vec3 dir, mask active, real t
     for (int step = 0; step < limits.max_steps; ++step) {
         if (!fgr_any(active)) break;
         real dist = scene_de(v3_mad(origin, dir, result.t), PARAMS_PASS);
-        real radius = fabs(dist) * limits.step_factor;
-        /* Balls shrunk by the hit footprint must overlap: a gap could hide a sub-pixel feature
-         * the plain march would have hit, not only the surface itself. */
-        real shrink = 2.0f * limits.step_factor * limits.footprint * (result.t + travelled);
-        mask overshot = stretched & active & (radius + last_radius - shrink < last_step);
+        /* A relaxed march first checks the stretched step that led here. */
+        real radius = fgr_real(0.0f), shrink = fgr_real(0.0f);
+        mask overshot = (mask)(0);
+        if (relaxing) {
+            radius = fabs(dist) * limits.step_factor;
+            shrink = 2.0f * limits.step_factor * limits.footprint * (result.t + travelled);
+            overshot = stretched & active & (radius + last_radius - shrink < last_step);
+        }
 #ifdef FGR_EFFECT_GLOW
         result.closest = select(result.closest, fmin(result.closest, dist), active & !overshot);
 #endif
@@ -77,11 +82,10 @@ inline march_result march_rays_within(vec3 origin, vec3 dir, mask active, real t
         result.hit |= now_hit;
         active &= !now_hit;
         if (relaxing) {
-            /* On a plane met at cosine c (DE falls by c per unit travelled) balls stay
-             * overlapping for steps up to 2 / (1 + c) times the safe one. Shrunk by the
-             * footprint and with 0.1 left for curvature, the step is
-             * (1.9 radius - shrink) / (1 + c), with c = fall / (step_factor * last_step) as the
-             * radii carry step_factor: one division. Plain after a rejected step. */
+            /* The stride for a plane met at cosine c, shrunk by the footprint and with 0.1 left
+             * for curvature: (1.9 radius - shrink) / (1 + c), where c = fall / (step_factor *
+             * last_step) as the radii carry step_factor; one division. Plain after a rejected
+             * step. */
             real travel = limits.step_factor * last_step;
             real fall = fmax(last_radius - radius, 0.0f);
             real stride = (1.9f * radius - shrink) * travel /
