@@ -8,7 +8,9 @@
 
 #include <gtest/gtest.h>
 
+#include "child_process.hpp"
 #include "fgr/camera.hpp"
+#include "fgr/camera_path_file.hpp"
 #include "fgr/parameters.hpp"
 #include "fgr/precision.hpp"
 #include "fgr/renderer.hpp"
@@ -109,6 +111,52 @@ TEST_F(FloatAndDouble, AutoChoosesDoubleOnlyWhenAPixelIsFinerThanFloat) {
     EXPECT_TRUE(with.in_double(Precision::Auto, deep_zoom(), 96));
     EXPECT_FALSE(with.in_double(Precision::Float, deep_zoom(), 96));
     EXPECT_EQ(warnings.size(), 1u);
+}
+
+// A deep zoom's camera with its target pushed 1 unit away: the same picture, but judged at the
+// target the view looks coarse.
+CameraView with_far_target(CameraView view) {
+    view.target = view.position + glm::normalize(view.target - view.position);
+    return view;
+}
+
+// Auto also judges at the hits: a float probe of a view whose camera is close to a surface finer
+// than float resolves finds it, wherever the target is; an ordinary view's hits are coarse.
+TEST_F(FloatAndDouble, FloatProbeFindsSurfaceFinerThanFloatAtTheHits) {
+    const auto params = default_param_values(*bulb_);
+    const CameraView far_target = with_far_target(deep_zoom(1e-7));
+    ASSERT_FALSE(needs_double_precision(far_target, 640)) << "judged at the target: coarse";
+    EXPECT_TRUE(hits_finer_than_float(renderer(false).render({80, 60, far_target, params}),
+                                      far_target, 640));
+    const CameraView canonical = bulb_->cameras.front().view;
+    EXPECT_FALSE(hits_finer_than_float(renderer(false).render({80, 60, canonical, params}),
+                                       canonical, 640));
+}
+
+// `fgr render` under auto renders such a view in double, and says why; float stays float.
+TEST_F(FloatAndDouble, RenderSwitchesToDoubleWhenTheHitsAreFinerThanFloat) {
+    test::TempDir dir("fgr_precision_test");
+    CameraPathFile path;
+    path.scene = "mandelbulb";
+    path.path.name = "far-target";
+    const CameraView view = with_far_target(deep_zoom(1e-7));
+    path.path.keyframes = {{0.0f, view}, {1.0f, view}};
+    write_camera_path_file(dir.path() / "far.json", path);
+    test::ChildOptions options;
+    options.working_dir = dir.path();
+    options.environment["FGR_PLUGIN_PATH"] = std::nullopt;
+    for (const char* precision : {"auto", "float"}) {
+        const test::RunResult run = test::run_child(
+            FGR_TEST_FGR_EXE,
+            {"render", "mandelbulb", "--camera-path", "far.json", "--time", "0", "--width", "64",
+             "--height", "48", "--precision", precision, "-o", "far.png"},
+            options);
+        ASSERT_EQ(run.exit_code, 0) << run;
+        const bool switched = run.err.find("finer than float resolves: rendering in double") !=
+                              std::string::npos;
+        EXPECT_EQ(switched, std::string(precision) == "auto") << run;
+        EXPECT_EQ(run.err.find("work-item, double") != std::string::npos, switched) << run;
+    }
 }
 
 TEST(PrecisionChoice, ParsesNamesAndRaisesThePacketWidthForDouble) {

@@ -142,13 +142,17 @@ CameraView evaluate_camera_path(const CameraPath& path, float time) {
     return interpolate_segment(keys, i, s);
 }
 
+bool finer_than_float(float footprint, float magnitude) {
+    const float float_step =
+        std::max(magnitude, std::numeric_limits<float>::min()) * std::numeric_limits<float>::epsilon();
+    return footprint < 16.0f * float_step;
+}
+
 bool needs_double_precision(const CameraView& view, int width) {
     const CameraBasis basis = camera_basis(view);
     const float footprint = glm::length(view.target - view.position) * pixel_angle(basis, width);
-    const float magnitude = std::max({glm::length(view.position), glm::length(view.target),
-                                      std::numeric_limits<float>::min()});
-    const float float_step = magnitude * std::numeric_limits<float>::epsilon();
-    return footprint < 16.0f * float_step;
+    return finer_than_float(footprint,
+                            std::max(glm::length(view.position), glm::length(view.target)));
 }
 
 }  // namespace fgr

@@ -5,6 +5,7 @@
 #include <utility>
 
 #include <fmt/format.h>
+#include <glm/geometric.hpp>
 
 namespace fgr {
 
@@ -58,6 +59,26 @@ bool PrecisionChooser::in_double(Precision precision, const CameraView& view, in
         }
     }
     return double_wanted && use_double_precision(precision, view, width, device_);
+}
+
+bool hits_finer_than_float(const Frame& frame, const CameraView& view, int width) {
+    const CameraBasis basis = camera_basis(view);
+    const float angle = pixel_angle(basis, width);
+    const int probe_width = frame.image.width, probe_height = frame.image.height;
+    long hits = 0, fine = 0;
+    for (int y = 0; y < probe_height; ++y) {
+        for (int x = 0; x < probe_width; ++x) {
+            const float t = frame.depth[size_t(y) * size_t(probe_width) + size_t(x)];
+            if (t < 0.0f) continue;
+            const glm::vec3 hit =
+                basis.eye + primary_ray_direction(basis, probe_width, probe_height, float(x),
+                                                  float(y)) * t;
+            ++hits;
+            fine += finer_than_float(t * angle,
+                                     std::max(glm::length(hit), glm::length(basis.eye)));
+        }
+    }
+    return fine * 100 > hits;
 }
 
 KernelSwitches with_precision(KernelSwitches switches, bool double_precision) {

@@ -39,6 +39,10 @@ glm::vec3 primary_ray_direction(const CameraBasis& basis, int width, int height,
 // renders such views in double.
 bool needs_double_precision(const CameraView& view, int width);
 
+// The rule behind it: whether a pixel footprint is under 16 float steps of coordinates of size
+// `magnitude` (the largest coordinate length involved).
+bool finer_than_float(float footprint, float magnitude);
+
 // The view at `time` along a path (clamped to the first and last keyframe times). Position, target
 // and fov follow a uniform Catmull-Rom spline through the keyframes in each segment's local
 // parameter, the end keyframes doubling as their own outer neighbours; fov is kept in [1, 179].

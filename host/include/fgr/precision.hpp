@@ -44,6 +44,12 @@ private:
     bool warned_ = false;
 };
 
+// Whether the surface a float render found is finer than float resolves, judged at the hits
+// rather than at the camera target: more than 1% of the frame's hit pixels have a footprint
+// (depth times the pixel angle of a `width`-pixel image of the view) under 16 float steps of the
+// coordinates there. `frame` may be a smaller probe render of the same view.
+bool hits_finer_than_float(const Frame& frame, const CameraView& view, int width);
+
 // OpenCL C's scalar double overloads are ambiguous with the kernel library's float literals;
 // vector lanes are not, so double runs at least this many rays per work-item.
 constexpr int kMinDoublePacketWidth = 4;
