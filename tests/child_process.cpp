@@ -178,4 +178,11 @@ std::string read_file(const fs::path& file) {
     return std::string(std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>());
 }
 
+RunResult run_fgr(const std::vector<std::string>& args, const std::filesystem::path& working_dir) {
+    ChildOptions options;
+    options.working_dir = working_dir;
+    options.environment["FGR_PLUGIN_PATH"] = std::nullopt;
+    return run_child(FGR_TEST_FGR_EXE, args, options);
+}
+
 }  // namespace fgr::test

@@ -39,6 +39,10 @@ struct ChildOptions {
 RunResult run_child(const std::filesystem::path& program, const std::vector<std::string>& args,
                     const ChildOptions& options);
 
+// Runs the built fgr with `args` in `working_dir`. The child gets this environment minus
+// FGR_PLUGIN_PATH, so it finds its plugins next to itself, as an installed fgr does.
+RunResult run_fgr(const std::vector<std::string>& args, const std::filesystem::path& working_dir);
+
 class TempDir {
 public:
     // A fresh directory under the system temp directory, named after `prefix`.

@@ -132,22 +132,17 @@ TEST(AccuracySweep, MeasuresEveryKnobAgainstTheReference) {
 
 TEST(AccuracyCommand, WritesTheCsvScriptAndPlot) {
     test::TempDir dir("fgr_accuracy_test");
-    test::ChildOptions options;
-    options.working_dir = dir.path();
-    options.environment["FGR_PLUGIN_PATH"] = std::nullopt;
-    const test::RunResult run = test::run_child(
-        FGR_TEST_FGR_EXE,
+    const test::RunResult run = test::run_fgr(
         {"bench", "accuracy", "mandelbulb", "--width", "32", "--height", "24", "--reference-spp",
          "2", "--repeats", "1", "-o", "acc"},
-        options);
+        dir.path());
     ASSERT_EQ(run.exit_code, 0) << run;
     EXPECT_NE(run.out.find("hit_threshold"), std::string::npos) << run;
     EXPECT_TRUE(std::filesystem::exists(dir.path() / "acc.csv"));
     EXPECT_TRUE(std::filesystem::exists(dir.path() / "acc.gp"));
     // CI installs gnuplot (build.sh); without it fgr says so and writes no plot.
     EXPECT_TRUE(std::filesystem::exists(dir.path() / "acc.png")) << run;
-    const test::RunResult bad =
-        test::run_child(FGR_TEST_FGR_EXE, {"bench", "accuracy", "no-such-scene"}, options);
+    const test::RunResult bad = test::run_fgr({"bench", "accuracy", "no-such-scene"}, dir.path());
     EXPECT_EQ(bad.exit_code, 2) << bad;
 }
 

@@ -156,13 +156,9 @@ TEST_F(BenchRun, FixedDurationPlaysThePathInRealTime) {
 
 TEST(BenchCommand, WritesJsonAndCsvAndRefusesBadInput) {
     test::TempDir dir("fgr_bench_test");
-    test::ChildOptions options;
-    options.working_dir = dir.path();
-    options.environment["FGR_PLUGIN_PATH"] = std::nullopt;
-    const test::RunResult ok = test::run_child(
-        FGR_TEST_FGR_EXE,
+    const test::RunResult ok = test::run_fgr(
         {"bench", "mandelbulb", "--width", "32", "--height", "24", "--frames", "2", "-o", "out"},
-        options);
+        dir.path());
     ASSERT_EQ(ok.exit_code, 0) << ok;
     EXPECT_NE(ok.out.find("avg fps"), std::string::npos) << ok;
     EXPECT_EQ(nlohmann::json::parse(test::read_file(dir.path() / "out.json"))["average"]["frames"],
@@ -176,7 +172,7 @@ TEST(BenchCommand, WritesJsonAndCsvAndRefusesBadInput) {
         {"bench", "mandelbulb", "-o", "missing/dir/out"},
         {"bench", "no-such-scene"}};
     for (const auto& args : bad) {
-        const test::RunResult result = test::run_child(FGR_TEST_FGR_EXE, args, options);
+        const test::RunResult result = test::run_fgr(args, dir.path());
         EXPECT_EQ(result.exit_code, 2) << test::describe("fgr", args) << result;
         EXPECT_NE(result.err.find("fgr: error: "), std::string::npos) << result;
     }

@@ -29,24 +29,14 @@ namespace {
 namespace fs = std::filesystem;
 
 const fs::path kFgrExe = FGR_TEST_FGR_EXE;
-constexpr std::chrono::seconds kTimeout{120};
 
 // --- Running fgr ---------------------------------------------------------------------------------
 
 using test::read_file;
 using test::RunResult;
+using test::run_fgr;
 
 std::string describe(const std::vector<std::string>& args) { return test::describe("fgr", args); }
-
-// Runs fgr with `args` in `working_dir`. The child gets the caller's environment minus
-// FGR_PLUGIN_PATH, so it must find its plugins next to itself.
-RunResult run_fgr(const std::vector<std::string>& args, const fs::path& working_dir) {
-    test::ChildOptions options;
-    options.working_dir = working_dir;
-    options.environment["FGR_PLUGIN_PATH"] = std::nullopt;
-    options.timeout = kTimeout;
-    return test::run_child(kFgrExe, args, options);
-}
 
 // --- Fixture: a fresh, empty working directory per test -----------------------------------------
 

@@ -142,15 +142,11 @@ TEST_F(FloatAndDouble, RenderSwitchesToDoubleWhenTheHitsAreFinerThanFloat) {
     const CameraView view = with_far_target(deep_zoom(1e-7));
     path.path.keyframes = {{0.0f, view}, {1.0f, view}};
     write_camera_path_file(dir.path() / "far.json", path);
-    test::ChildOptions options;
-    options.working_dir = dir.path();
-    options.environment["FGR_PLUGIN_PATH"] = std::nullopt;
     for (const char* precision : {"auto", "float"}) {
-        const test::RunResult run = test::run_child(
-            FGR_TEST_FGR_EXE,
+        const test::RunResult run = test::run_fgr(
             {"render", "mandelbulb", "--camera-path", "far.json", "--time", "0", "--width", "64",
              "--height", "48", "--precision", precision, "-o", "far.png"},
-            options);
+            dir.path());
         ASSERT_EQ(run.exit_code, 0) << run;
         const bool switched = run.err.find("finer than float resolves: rendering in double") !=
                               std::string::npos;

@@ -209,14 +209,10 @@ TEST_F(ViewerTest, ScreenshotIsTheFullResolutionImageFgrRenderGives) {
     EXPECT_EQ(shot.width, kWidth);
     EXPECT_EQ(shot.height, kHeight);
 
-    test::ChildOptions options;
-    options.working_dir = dir();
-    options.environment["FGR_PLUGIN_PATH"] = std::nullopt;
-    const test::RunResult rendered = test::run_child(
-        kFgrExe,
+    const test::RunResult rendered = test::run_fgr(
         {"render", "mandelbulb", "-o", "reference.png", "--width", std::to_string(kWidth),
          "--height", std::to_string(kHeight)},
-        options);
+        dir());
     ASSERT_EQ(rendered.exit_code, 0) << rendered;
     const Image8 reference = read_png(dir() / "reference.png");
     // The same view and one sample each: equal but for rounding in the camera's target.
@@ -271,14 +267,10 @@ TEST_F(ViewerTest, RecordedPathIsSavedAndRendersFromTheCommandLine) {
     EXPECT_EQ(saved.path.keyframes[1].time, 2.0f);  // the default keyframe spacing
     EXPECT_NE(saved.path.keyframes[0].view.position, saved.path.keyframes[1].view.position);
 
-    test::ChildOptions options;
-    options.working_dir = dir();
-    options.environment["FGR_PLUGIN_PATH"] = std::nullopt;
-    const test::RunResult rendered = test::run_child(
-        kFgrExe,
+    const test::RunResult rendered = test::run_fgr(
         {"render", "mandelbulb", "--camera-path", paths[0].string(), "--time", "1", "-o",
          "path.png", "--width", "64", "--height", "48"},
-        options);
+        dir());
     EXPECT_EQ(rendered.exit_code, 0) << rendered;
     EXPECT_TRUE(fs::exists(dir() / "path.png"));
 }
