@@ -22,14 +22,24 @@ struct Setting {
 
 std::string number(double value) { return fmt::format("{:.4g}", value); }
 
-// One knob at a time around the scene's defaults, clamped into each parameter's range.
-std::vector<Setting> sweep_settings(const Scene& scene) {
-    const std::vector<float> defaults = default_param_values(scene);
-    const auto value_of = [&](const char* id) { return double(param_value(scene, defaults, id)); };
-    const auto clamp_to = [&](const char* id, double value) {
+// A scene's parameter defaults, and values clamped into each parameter's range: what the sweep
+// and the reference are built from.
+struct DefaultParams {
+    explicit DefaultParams(const Scene& s) : scene(s), values(default_param_values(s)) {}
+    double value_of(const char* id) const { return double(param_value(scene, values, id)); }
+    double clamp_to(const char* id, double value) const {
         const ParamInfo* param = scene.find_param(id);
         return std::clamp(value, double(param->min_value), double(param->max_value));
-    };
+    }
+    const Scene& scene;
+    std::vector<float> values;
+};
+
+// One knob at a time around the scene's defaults, clamped into each parameter's range.
+std::vector<Setting> sweep_settings(const Scene& scene) {
+    const DefaultParams defaults(scene);
+    const auto value_of = [&](const char* id) { return defaults.value_of(id); };
+    const auto clamp_to = [&](const char* id, double value) { return defaults.clamp_to(id, value); };
     std::vector<Setting> settings = {{"default", "", {}, 1}};
     const auto sweep = [&](const char* id, const std::vector<double>& values, bool integral) {
         std::vector<double> seen;
@@ -59,12 +69,9 @@ std::vector<Setting> sweep_settings(const Scene& scene) {
 // steps, twice the iterations, a fine normal stencil, many samples (and double precision, where
 // the device has it).
 std::vector<std::string> reference_assignments(const Scene& scene) {
-    const std::vector<float> defaults = default_param_values(scene);
-    const auto value_of = [&](const char* id) { return double(param_value(scene, defaults, id)); };
-    const auto clamp_to = [&](const char* id, double value) {
-        const ParamInfo* param = scene.find_param(id);
-        return std::clamp(value, double(param->min_value), double(param->max_value));
-    };
+    const DefaultParams defaults(scene);
+    const auto value_of = [&](const char* id) { return defaults.value_of(id); };
+    const auto clamp_to = [&](const char* id, double value) { return defaults.clamp_to(id, value); };
     return {"hit_threshold=" + number(clamp_to("hit_threshold", value_of("hit_threshold") / 10)),
             "step_factor=" + number(clamp_to("step_factor", value_of("step_factor") * 0.5)),
             "over_relaxation=1",
