@@ -83,8 +83,9 @@ inline vec3 palette(real t, int index) {
             break;
     }
     const float two_pi = 6.28318531f;
-    return v3(a.x + b.x * cos(two_pi * (c.x * t + d.x)), a.y + b.y * cos(two_pi * (c.y * t + d.y)),
-              a.z + b.z * cos(two_pi * (c.z * t + d.z)));
+    return v3(a.x + b.x * fgr_cos(two_pi * (c.x * t + d.x)),
+              a.y + b.y * fgr_cos(two_pi * (c.y * t + d.y)),
+              a.z + b.z * fgr_cos(two_pi * (c.z * t + d.z)));
 }
 
 /* The trap chosen by `mode`, squashed to a palette coordinate, times the base colour. */

@@ -42,7 +42,8 @@ inline camera_sample sample_camera(real px, real py, int sample) {
     s.pixel_y = unit_random(h2);
     /* Uniform on the disc: radius sqrt(u), angle 2 pi v. */
     real radius = sqrt(unit_random(h3));
-    real cos_angle, sin_angle = sincos(6.28318531f * unit_random(h4), &cos_angle);
+    real angle = 6.28318531f * unit_random(h4);
+    real cos_angle = fgr_cos(angle), sin_angle = fgr_sin(angle);
     s.lens_x = radius * cos_angle;
     s.lens_y = radius * sin_angle;
     return s;

@@ -72,8 +72,8 @@ inline vec3 bulb_power_real(vec3 z, real r, real r_n, float n, int latitude_form
     real phi = atan2(z.y, z.x) * n;
     real theta = latitude_form ? asin(clamp(z.z * safe_inverse(r), -1.0f, 1.0f)) * n
                                : atan2(sqrt(z.x * z.x + z.y * z.y), z.z) * n;
-    real cos_phi, sin_phi = sincos(phi, &cos_phi);
-    real cos_t, sin_t = sincos(theta, &cos_t);
+    real cos_phi = fgr_cos(phi), sin_phi = fgr_sin(phi);
+    real cos_t = fgr_cos(theta), sin_t = fgr_sin(theta);
     real horizontal = latitude_form ? cos_t : sin_t;
     real vertical = latitude_form ? sin_t : cos_t;
     return v3_scale(v3(horizontal * cos_phi, horizontal * sin_phi, vertical), r_n);
@@ -94,10 +94,10 @@ inline real mandelbulb_de(vec3 p, float power, float bailout, int iterations, in
         real r_pow;
         vec3 z_n;
         if (integer_power) {
-            r_pow = pown(r, (int)power - 1);
+            r_pow = fgr_pown(r, (int)power - 1);
             z_n = bulb_power_integer(z, r, r_pow * r, (int)power, latitude_form);
         } else {
-            r_pow = pow(r, power - 1.0f);
+            r_pow = fgr_pow(r, fgr_real(power - 1.0f));
             z_n = bulb_power_real(z, r, r_pow * r, power, latitude_form);
         }
         dr = select(dr, power * r_pow * dr + 1.0f, active);

@@ -263,7 +263,8 @@ inline vec3 op_repeat_limited(vec3 p, vec3 period, vec3 limit) {
  * a = |rate| * rho (the largest singular value of its Jacobian), so the division is valid for
  * points within `reach` of the axis: clamp the rest in with op_clamp_to_cylinder. */
 inline vec3 op_twist(vec3 p, float rate) {
-    real c, s = sincos(rate * p.z, &c);
+    real angle = rate * p.z;
+    real c = fgr_cos(angle), s = fgr_sin(angle);
     return v3(c * p.x + s * p.y, c * p.y - s * p.x, p.z);
 }
 inline float op_twist_lipschitz(float rate, float reach) {
@@ -327,6 +328,6 @@ inline real op_extend_from_clamp(real d, real excess) {
  * Lipschitz factor 1 + |amplitude * frequency| * sqrt(3): a bound again (if d was one), with the
  * displaced surface unchanged. */
 inline real op_displace_sine(real d, vec3 p, float amplitude, float frequency) {
-    real wave = sin(frequency * p.x) * sin(frequency * p.y) * sin(frequency * p.z);
+    real wave = fgr_sin(frequency * p.x) * fgr_sin(frequency * p.y) * fgr_sin(frequency * p.z);
     return (d + amplitude * wave) / (1.0f + fabs(amplitude * frequency) * FGR_SQRT3);
 }

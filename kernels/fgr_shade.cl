@@ -134,7 +134,8 @@ inline vec3 shade_surface(vec3 p, vec3 n, vec3 view_dir, real eps, mask steps, r
         vec3 l = light_direction(light, p, limits.max_distance, &falloff, &reach);
         real diffuse = fmax(v3_dot(n, l), 0.0f);
         vec3 half_vector = v3_normalize(v3_add(l, to_eye));
-        real specular = FGR_SPECULAR * pow(fmax(v3_dot(n, half_vector), 0.0f), FGR_SHININESS);
+        real specular = FGR_SPECULAR * fgr_pow(fmax(v3_dot(n, half_vector), 0.0f),
+                                                 fgr_real(FGR_SHININESS));
         real strength = light[7] * falloff * select(fgr_real(0.0f), fgr_real(1.0f), diffuse > 0.0f);
 #if defined(FGR_EFFECT_SHADOWS) || defined(FGR_EFFECT_SOFT_SHADOWS)
         if (with_shadows) {

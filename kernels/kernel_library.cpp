@@ -7,6 +7,8 @@
 #include "fgr_folds_cl.h"
 #include "fgr_fractals_cl.h"
 #include "fgr_march_cl.h"
+#include "fgr_math_cl.h"
+#include "fgr_math_check_cl.h"
 #include "fgr_render_cl.h"
 #include "fgr_sdf_cl.h"
 #include "fgr_shade_cl.h"
@@ -18,6 +20,7 @@ namespace fgr {
 std::span<const KernelFile> kernel_prelude() {
     static constexpr std::array files{
         KernelFile{"fgr_types.cl", fgr_types_cl},
+        KernelFile{"fgr_math.cl", fgr_math_cl},
         KernelFile{"fgr_vec3.cl", fgr_vec3_cl},
         KernelFile{"fgr_sdf.cl", fgr_sdf_cl},
         KernelFile{"fgr_folds.cl", fgr_folds_cl},
@@ -36,5 +39,7 @@ std::span<const KernelFile> kernel_postlude() {
     };
     return files;
 }
+
+const char* math_check_source() { return fgr_math_check_cl; }
 
 }  // namespace fgr

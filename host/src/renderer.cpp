@@ -4,11 +4,15 @@
 #include <array>
 #include <chrono>
 #include <cmath>
+#include <mutex>
+#include <set>
 #include <stdexcept>
 
 #include <glm/geometric.hpp>
+#include <spdlog/spdlog.h>
 
 #include "fgr/camera.hpp"
+#include "fgr/math_check.hpp"
 #include "fgr/parameters.hpp"
 
 namespace fgr {
@@ -93,6 +97,15 @@ cl::NDRange global_range(int items, int group) {
     return cl::NDRange(static_cast<size_t>((items + group - 1) / group) * group);
 }
 
+// Logs each distinct warning once per process: every renderer on a device meets the same
+// self-test verdict.
+void warn_once(const std::string& message) {
+    static std::mutex mutex;
+    static std::set<std::string> said;
+    std::lock_guard lock(mutex);
+    if (said.insert(message).second) spdlog::warn("{}", message);
+}
+
 double elapsed_ms(std::chrono::steady_clock::time_point since) {
     return std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - since)
         .count();
@@ -173,7 +186,9 @@ TileLayout tile_layout(int packet_width, int width, int height) {
 Renderer::Renderer(const ComputeDevice& device, ProgramCache& cache, const Scene& scene,
                    const KernelSwitches& switches)
     : device_(device), scene_(scene), switches_(switches) {
-    program_ = cache.build(device, assemble_program(scene, switches), &build_report_);
+    switches_.packet_width = trusted_packet_width(device, cache, switches.double_precision,
+                                                  switches.packet_width, warn_once);
+    program_ = cache.build(device, assemble_program(scene, switches_), &build_report_);
     render_kernel_ = cl::Kernel(program_, "fgr_render");
     probe_kernel_ = cl::Kernel(program_, "fgr_probe_de");
     normal_kernel_ = cl::Kernel(program_, "fgr_probe_normal");

@@ -17,4 +17,7 @@ std::span<const KernelFile> kernel_prelude();
 // Marching, shading and the kernel entry points, which call the scene's functions.
 std::span<const KernelFile> kernel_postlude();
 
+// The device math self-test kernel (fgr_math_check.cl), built on its own.
+const char* math_check_source();
+
 }  // namespace fgr

@@ -1,0 +1,129 @@
+// Every scene renders finite colour, depth and normals at every precision and packet width the
+// device supports, with a view that puts misses, hits and the origin's neighbourhood in the same
+// packets: where a vector built-in lets one lane corrupt another (Debian's PoCL AVX-512 library
+// does, in double8/16 pow and float16 sin), this is where non-finite pixels show up.
+#include <algorithm>
+#include <cmath>
+#include <ostream>
+#include <string>
+#include <vector>
+
+#include <glm/geometric.hpp>
+#include <gtest/gtest.h>
+#include <spdlog/spdlog.h>
+
+#include "fgr/camera.hpp"
+#include "fgr/discovery.hpp"
+#include "fgr/parameters.hpp"
+#include "fgr/program_cache.hpp"
+#include "fgr/renderer.hpp"
+
+namespace fgr {
+namespace {
+
+const std::vector<Scene>& all_scenes() {
+    static const std::vector<Scene> scenes = [] {
+        spdlog::set_level(spdlog::level::err);
+        auto found = discover_scenes({FGR_TEST_PLUGIN_DIR}).scenes;
+        spdlog::set_level(spdlog::level::info);
+        return found;
+    }();
+    return scenes;
+}
+
+struct LaneCase {
+    std::string scene_id;
+    std::string assignment;  // a parameter change, or ""
+    bool double_precision;
+};
+
+void PrintTo(const LaneCase& lane_case, std::ostream* out) {
+    *out << lane_case.scene_id << (lane_case.assignment.empty() ? "" : " " + lane_case.assignment)
+         << (lane_case.double_precision ? " double" : " float");
+}
+
+std::vector<LaneCase> lane_cases() {
+    std::vector<LaneCase> cases;
+    for (bool double_precision : {false, true}) {
+        for (const Scene& scene : all_scenes()) cases.push_back({scene.id, "", double_precision});
+        // A non-integer power takes the Mandelbulb through pow, atan2, asin, sin and cos.
+        cases.push_back({"mandelbulb", "power=7.5", double_precision});
+    }
+    return cases;
+}
+
+class LaneSafety : public ::testing::TestWithParam<LaneCase> {
+protected:
+    static ComputeDevice& device() {
+        static ComputeDevice opened = open_device(-1);
+        return opened;
+    }
+    const Scene& scene() const {
+        for (const Scene& scene : all_scenes()) {
+            if (scene.id == GetParam().scene_id) return scene;
+        }
+        throw std::runtime_error("no scene " + GetParam().scene_id);
+    }
+    ProgramCache cache_{std::filesystem::path()};
+};
+
+TEST_P(LaneSafety, ColourDepthAndNormalsAreFiniteAtEveryWidth) {
+    const LaneCase& lane_case = GetParam();
+    if (lane_case.double_precision && !device().info.has_fp64) GTEST_SKIP() << "no fp64";
+    const Scene& scene = this->scene();
+    FrameRequest request{64, 48, scene.cameras.front().view, default_param_values(scene)};
+    if (!lane_case.assignment.empty()) set_param_from_text(scene, request.params, lane_case.assignment);
+    const CameraBasis basis = camera_basis(request.view);
+    const float footprint = pixel_angle(basis, request.width);
+
+    // Double lanes need at least 4 rays per work-item (see precision.hpp).
+    for (int width : {1, 4, 8, 16}) {
+        if (lane_case.double_precision && width == 1) continue;
+        SCOPED_TRACE("requested packet width " + std::to_string(width));
+        Renderer renderer(device(), cache_, scene,
+                          {width, scene.effects, false, lane_case.double_precision});
+        const Frame frame = renderer.render(request);
+        long bad_colour = 0, bad_depth = 0;
+        std::vector<glm::vec3> hits;
+        std::vector<float> hit_depths;
+        for (float value : frame.linear) bad_colour += !std::isfinite(value);
+        for (int y = 0; y < request.height; ++y) {
+            for (int x = 0; x < request.width; ++x) {
+                const float t = frame.depth[size_t(y * request.width + x)];
+                if (!std::isfinite(t) || (t < 0.0f && t != -1.0f)) {
+                    ++bad_depth;
+                } else if (t >= 0.0f) {
+                    // Sample 0 is the pixel centre.
+                    hits.push_back(basis.eye + primary_ray_direction(basis, request.width,
+                                                                     request.height, float(x),
+                                                                     float(y)) *
+                                                   t);
+                    hit_depths.push_back(t);
+                }
+            }
+        }
+        EXPECT_EQ(bad_colour, 0) << "non-finite colour values of " << frame.linear.size();
+        EXPECT_EQ(bad_depth, 0) << "non-finite or negative depths";
+        ASSERT_FALSE(hits.empty()) << "the default view shows no surface";
+        const float eps = footprint * *std::min_element(hit_depths.begin(), hit_depths.end());
+        const auto normals = renderer.probe_normals(hits, request.params, std::max(eps, 1e-6f));
+        long bad_normals = 0;
+        for (const glm::vec3& n : normals) {
+            bad_normals += !(std::isfinite(n.x) && std::isfinite(n.y) && std::isfinite(n.z)) ||
+                           std::abs(glm::length(n) - 1.0f) > 1e-3f;
+        }
+        EXPECT_EQ(bad_normals, 0) << "of " << normals.size() << " normals are not finite unit vectors";
+    }
+}
+
+INSTANTIATE_TEST_SUITE_P(Scenes, LaneSafety, ::testing::ValuesIn(lane_cases()),
+                         [](const auto& info) {
+                             std::string name = info.param.scene_id +
+                                                (info.param.assignment.empty() ? "" : "_fractional") +
+                                                (info.param.double_precision ? "_double" : "_float");
+                             std::replace(name.begin(), name.end(), '-', '_');
+                             return name;
+                         });
+
+}  // namespace
+}  // namespace fgr
