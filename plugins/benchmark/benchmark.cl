@@ -96,7 +96,7 @@ inline real nearest_object(vec3 p, PARAMS) {
 #define FGR_SCENE_HAS_COLOUR
 vec3 scene_colour(vec3 p, PARAMS) {
     real id = nearest_object(p, PARAMS_PASS);
-    real checker = fmod(floor(p.x) + floor(p.y) + 1000.0f, 2.0f);
+    real checker = fgr_parity(floor(p.x) + floor(p.y) + 1000.0f);
     vec3 colour = v3(mix(fgr_real(0.22f), fgr_real(0.45f), checker),
                      mix(fgr_real(0.22f), fgr_real(0.45f), checker),
                      mix(fgr_real(0.24f), fgr_real(0.48f), checker));

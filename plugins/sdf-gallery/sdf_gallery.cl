@@ -219,9 +219,8 @@ vec3 scene_colour(vec3 p, PARAMS) {
     real nearest;
     gallery_de(p, PARAMS_PASS, &nearest);
     vec3 object = palette(nearest * 0.618034f + 0.1f, 3);
-    real checker = fmod(floor(p.x / GALLERY_SPACING + 0.5f * GALLERY_COLUMNS) +
-                            floor(p.y / GALLERY_SPACING + 0.5f * GALLERY_ROWS),
-                        2.0f);
+    real checker = fgr_parity(floor(p.x / GALLERY_SPACING + 0.5f * GALLERY_COLUMNS) +
+                              floor(p.y / GALLERY_SPACING + 0.5f * GALLERY_ROWS));
     real grey = select(fgr_real(0.55f), fgr_real(0.38f), fabs(checker) > 0.5f);
     return v3_select(object, v3(grey, grey, grey * 1.04f), nearest < 0.0f);
 }
