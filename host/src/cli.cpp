@@ -30,6 +30,7 @@
 #include "fgr/precision.hpp"
 #include "fgr/renderer.hpp"
 #include "fgr/scaffold.hpp"
+#include "fgr/still_image.hpp"
 #include "fgr/viewer/viewer.hpp"
 
 namespace fgr {
@@ -238,56 +239,16 @@ ComputeDevice open_requested_device(const RenderOptions& options) {
     return open_device(options.device);
 }
 
-// --precision for one render: double on request or for a deep zoom; a device without double
-// says so (an error when double was asked for, a warning when auto wanted it).
-bool render_in_double(Precision precision, const FrameRequest& request,
-                      const DeviceInfo& device) {
-    PrecisionChooser chooser(device, [](const std::string& warning) { spdlog::warn("{}", warning); });
-    try {
-        return chooser.in_double(precision, request.view, request.width);
-    } catch (const std::runtime_error& error) {
-        throw RuntimeFailure(error.what());
-    }
-}
-
-// Auto judges a view at its camera target; the camera may still stand close to a surface finer
-// than float resolves while the target is far. A float probe at an eighth of the size (under 2%
-// of the render's work) measures the footprint at the hits instead.
-bool float_probe_finds_fine_surface(Renderer& in_float, const FrameRequest& request) {
-    FrameRequest probe;
-    probe.view = request.view;
-    probe.params = request.params;
-    probe.width = std::max(8, request.width / 8);
-    probe.height = std::max(8, request.height * probe.width / request.width);
-    return hits_finer_than_float(in_float.render(probe), request.view, request.width);
-}
-
-// Builds the scene's kernel, renders `request` and writes the PNG; prints the figures.
+// Renders `request` (render_still: the kernel, float or double), writes the PNG, prints the
+// figures.
 void render_to_file(const Scene& scene, const FrameRequest& request, const ComputeDevice& device,
                     ProgramCache& cache, const RenderOptions& options,
                     const std::filesystem::path& output) {
-    const KernelSwitches in_float{
-        options.packet_width ? options.packet_width : preferred_packet_width(device.info),
-        apply_effect_changes(scene.effects, options.effect_changes), options.stats};
-    PrecisionRenderers renderers(device, cache, scene, in_float);
-    const auto build = [&](bool double_precision) -> Renderer& {
-        const KernelSwitches switches = with_precision(in_float, double_precision);
-        spdlog::info("building '{}' for {} ({} rays per work-item, {}, effects: {})", scene.id,
-                     device.info.name, switches.packet_width,
-                     double_precision ? "double" : "float", effect_names(switches.effects));
-        Renderer& built = renderers.get(double_precision);
-        spdlog::info("kernel ready in {:.0f} ms", built.build_report().build_ms);
-        return built;
-    };
-    const bool in_double = render_in_double(options.precision, request, device.info);
-    Renderer* chosen = &build(in_double);
-    if (options.precision == Precision::Auto && !in_double && device.info.has_fp64 &&
-        float_probe_finds_fine_surface(*chosen, request)) {
-        spdlog::info("the surface in view is finer than float resolves: rendering in double");
-        chosen = &build(true);
-    }
-    Renderer& renderer = *chosen;
-
+    StillSettings settings;
+    settings.packet_width = options.packet_width;
+    settings.effects = apply_effect_changes(scene.effects, options.effect_changes);
+    settings.stats = options.stats;
+    settings.precision = options.precision;
     FrameRequest reported = request;
     if (request.samples >= 8) {
         // Long multi-sample renders say how far they are, about every tenth of the way.
@@ -295,7 +256,7 @@ void render_to_file(const Scene& scene, const FrameRequest& request, const Compu
             if (done % step == 0 || done == total) spdlog::info("sample {}/{}", done, total);
         };
     }
-    const Frame frame = renderer.render(reported);
+    const Frame frame = render_still(scene, reported, device, cache, settings);
     fmt::print("render_ms {:.1f}\n", frame.render_ms);
     fmt::print("hits {}\n", frame.hits);
     if (frame.stats) {
@@ -307,12 +268,8 @@ void render_to_file(const Scene& scene, const FrameRequest& request, const Compu
                    stats.out_of_steps, stats.pixels);
     }
     try {
-        if (options.bit_depth == 16) {
-            write_png16_linear(output, linear_image16(frame, param_value(scene, request.params,
-                                                                         "exposure")));
-        } else {
-            write_png(output, frame.image);
-        }
+        write_still(output, frame, options.bit_depth,
+                    param_value(scene, request.params, "exposure"));
     } catch (const std::runtime_error& error) {
         throw RuntimeFailure(error.what());
     }
