@@ -182,8 +182,8 @@ TEST_P(SceneStability, DefaultViewIsANonTrivialImage) {
         mean += value;
         mean_square += double(value) * value;
     }
-    mean /= frame.image.rgb.size();
-    mean_square /= frame.image.rgb.size();
+    mean /= double(frame.image.rgb.size());
+    mean_square /= double(frame.image.rgb.size());
     EXPECT_GT(std::sqrt(mean_square - mean * mean), 10.0) << "the image is nearly uniform";
     EXPECT_GT(mean, 15.0) << "the image is nearly black";
 }
@@ -253,12 +253,12 @@ TEST_P(SceneStability, OneRayPerWorkItemRendersTheSameImage) {
     const FrameRequest request{40, 30, scene().cameras.front().view, default_param_values(scene())};
     const Frame one = scalar.render(request);
     const Frame packets = renderer().render(request);
-    EXPECT_NEAR(one.hits, packets.hits, 0.01 * packets.hits + 2);
+    EXPECT_NEAR(double(one.hits), double(packets.hits), 0.01 * double(packets.hits) + 2.0);
     double difference = 0.0;
     for (size_t i = 0; i < one.image.rgb.size(); ++i) {
         difference += std::abs(int(one.image.rgb[i]) - int(packets.image.rgb[i]));
     }
-    EXPECT_LT(difference / one.image.rgb.size(), 2.0);
+    EXPECT_LT(difference / double(one.image.rgb.size()), 2.0);
 }
 
 // Wherever a primary ray hits, the shading normal (the kernel's own stencil and eps) is finite and
@@ -350,8 +350,8 @@ TEST_P(SceneStability, RelaxedStepsAgreeWithACautiousMarch) {
 }
 
 INSTANTIATE_TEST_SUITE_P(Scenes, SceneStability, ::testing::ValuesIn(scene_ids()),
-                         [](const auto& info) {
-                             std::string name = info.param;
+                         [](const auto& test_info) {
+                             std::string name = test_info.param;
                              std::replace(name.begin(), name.end(), '-', '_');
                              return name;
                          });
