@@ -2,7 +2,8 @@
 # Sets up, builds and runs fgr on Debian 12. The two Quick start commands of the README:
 #
 #   ./build.sh render   install what is missing, build, render the default scene to mandelbulb.png
-#   ./build.sh test     install what is missing, build, run every test (what CI runs)
+#   ./build.sh test     install what is missing, build with warnings as errors, run every test
+#                       (what CI runs)
 #
 # Needs root or sudo only when packages are missing. BUILD_DIR (default: build) picks the build tree.
 set -euo pipefail
@@ -36,8 +37,9 @@ install_missing_packages() {
     DEBIAN_FRONTEND=noninteractive "${sudo[@]}" apt-get install -y -q --no-install-recommends "${missing[@]}"
 }
 
+# build [CMAKE_OPTION...]: configure (Release) and build in $build_dir.
 build() {
-    cmake -S "$repo" -B "$build_dir" -G Ninja -DCMAKE_BUILD_TYPE=Release
+    cmake -S "$repo" -B "$build_dir" -G Ninja -DCMAKE_BUILD_TYPE=Release "$@"
     cmake --build "$build_dir" -j "$jobs"
 }
 
@@ -45,12 +47,13 @@ command=${1:-render}
 case "$command" in
     render)
         install_missing_packages
-        build
+        build -DFGR_WERROR=OFF
         "$build_dir/bin/fgr" render mandelbulb -o "${2:-mandelbulb.png}"
         ;;
     test)
         install_missing_packages
-        build
+        # CI's build: any compiler warning fails it.
+        build -DFGR_WERROR=ON
         # Each test case runs as its own process; two at a time keeps a 2-core machine busy.
         ctest --test-dir "$build_dir" --output-on-failure -j "$jobs"
         ;;

@@ -1,7 +1,8 @@
 #!/usr/bin/env bash
 # The new-user path, as a user would walk it (ctest runs it; so does CI):
 #   1. install fgr into a temporary prefix,
-#   2. `fgr new-scene` a scene outside any source tree and build it against that prefix only,
+#   2. `fgr new-scene` a scene outside any source tree and build it against that prefix only
+#      (with the template's warnings on, and none allowed),
 #   3. drop the .so into a plugin folder (FGR_PLUGIN_PATH, then ~/.local/share/fgr/plugins),
 #   4. see it in `fgr list` and render it,
 #   5. do the same for every example in sdk/examples.
@@ -48,6 +49,7 @@ done
 step "build it against the prefix, with the exact commands the README gives"
 cmake -S my-kifs -B my-kifs/build > "$work/configure.log" || { cat "$work/configure.log"; fail "configure"; }
 cmake --build my-kifs/build > "$work/build.log" 2>&1 || { cat "$work/build.log"; fail "build"; }
+! grep -q "warning:" "$work/build.log" || { cat "$work/build.log"; fail "the template builds with warnings"; }
 [[ -f my-kifs/build/my-kifs.so ]] || fail "no my-kifs.so"
 if grep -q "$source_dir" my-kifs/build/CMakeCache.txt; then
     fail "the scene's build refers to the engine's source tree"
@@ -73,6 +75,7 @@ for example in "$source_dir"/sdk/examples/*/; do
     cmake -S "$work/$name" -B "$work/$name/build" -DCMAKE_PREFIX_PATH="$prefix" > "$work/$name.log" ||
         { cat "$work/$name.log"; fail "configure $name"; }
     cmake --build "$work/$name/build" >> "$work/$name.log" 2>&1 || { cat "$work/$name.log"; fail "build $name"; }
+    ! grep -q "warning:" "$work/$name.log" || { cat "$work/$name.log"; fail "$name builds with warnings"; }
     mkdir -p "$work/examples" && cp "$work/$name"/build/*.so "$work/examples/"
     FGR_PLUGIN_PATH=$work/examples "$fgr" render "$name" -o "$name.png" --width 96 --height 72 > "$work/$name.txt"
     hits=$(awk '/^hits /{print $2}' "$work/$name.txt")

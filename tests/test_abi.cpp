@@ -9,8 +9,8 @@
 #include <string>
 #include <vector>
 
+#include "fgr/description_validation.hpp"
 #include "fgr/plugin.h"
-#include "fgr/plugin_loader.hpp"
 
 namespace fgr {
 namespace {

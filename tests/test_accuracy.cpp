@@ -125,7 +125,9 @@ TEST(AccuracySweep, MeasuresEveryKnobAgainstTheReference) {
     EXPECT_EQ(rows, int(report.points.size()));
     const std::string script = accuracy_gnuplot(report, "inline", "a.csv", "a.png");
     for (const std::string& knob : knobs) {
-        if (knob != "default") EXPECT_NE(script.find("title '" + knob + "'"), std::string::npos);
+        if (knob != "default") {
+            EXPECT_NE(script.find("title '" + knob + "'"), std::string::npos);
+        }
     }
     EXPECT_NE(script.find("set output 'a.png'"), std::string::npos);
 }

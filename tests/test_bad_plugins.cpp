@@ -31,6 +31,7 @@
 #include <spdlog/sinks/ostream_sink.h>
 #include <spdlog/spdlog.h>
 
+#include "fgr/description_validation.hpp"
 #include "fgr/discovery.hpp"
 #include "fgr/opencl_device.hpp"
 #include "fgr/parameters.hpp"

@@ -117,10 +117,10 @@ TEST_P(LaneSafety, ColourDepthAndNormalsAreFiniteAtEveryWidth) {
 }
 
 INSTANTIATE_TEST_SUITE_P(Scenes, LaneSafety, ::testing::ValuesIn(lane_cases()),
-                         [](const auto& info) {
-                             std::string name = info.param.scene_id +
-                                                (info.param.assignment.empty() ? "" : "_fractional") +
-                                                (info.param.double_precision ? "_double" : "_float");
+                         [](const auto& test_info) {
+                             std::string name = test_info.param.scene_id +
+                                                (test_info.param.assignment.empty() ? "" : "_fractional") +
+                                                (test_info.param.double_precision ? "_double" : "_float");
                              std::replace(name.begin(), name.end(), '-', '_');
                              return name;
                          });

@@ -122,10 +122,11 @@ INSTANTIATE_TEST_SUITE_P(
                       DeCase{16, test::BulbForm::Latitude, 8.0}, DeCase{8, test::BulbForm::Latitude, 8.0},
                       DeCase{16, test::BulbForm::Colatitude, 7.5},
                       DeCase{4, test::BulbForm::Latitude, 3.0}),
-    [](const auto& info) {
-        return std::string(info.param.form == test::BulbForm::Colatitude ? "Colatitude" : "Latitude") +
-               "Power" + std::to_string(static_cast<int>(info.param.power * 10)) + "Width" +
-               std::to_string(info.param.packet_width);
+    [](const auto& test_info) {
+        const DeCase& c = test_info.param;
+        return std::string(c.form == test::BulbForm::Colatitude ? "Colatitude" : "Latitude") +
+               "Power" + std::to_string(static_cast<int>(c.power * 10)) + "Width" +
+               std::to_string(c.packet_width);
     });
 
 }  // namespace

@@ -56,14 +56,16 @@ TEST_F(RenderTest, CanonicalViewHitsMatchAScalarReferenceMarch) {
     const long expected = test::canonical_view_hits(160, 120, test::BulbParams{});
     const Frame frame = render(*mandelbulb_, 160, 120);
     ASSERT_GT(expected, 160 * 120 / 10);
-    EXPECT_NEAR(static_cast<double>(frame.hits), static_cast<double>(expected), expected * 0.005);
+    EXPECT_NEAR(static_cast<double>(frame.hits), static_cast<double>(expected),
+                static_cast<double>(expected) * 0.005);
 }
 
 TEST_F(RenderTest, EveryPacketWidthRendersTheSameImage) {
     const Frame scalar = render(*mandelbulb_, 64, 48, 1);
     for (int width : {4, 8, 16}) {
         const Frame packets = render(*mandelbulb_, 64, 48, width);
-        EXPECT_NEAR(packets.hits, scalar.hits, scalar.hits * 0.002) << "width " << width;
+        EXPECT_NEAR(double(packets.hits), double(scalar.hits), double(scalar.hits) * 0.002)
+            << "width " << width;
         EXPECT_LT(mean_abs_difference(packets.image, scalar.image), 0.5) << "width " << width;
     }
 }
@@ -72,7 +74,7 @@ TEST_F(RenderTest, PartialTilesAtOddSizesMatchOneRayPerWorkItem) {
     const Frame scalar = render(*mandelbulb_, 37, 23, 1);
     const Frame packets = render(*mandelbulb_, 37, 23, 16);
     ASSERT_EQ(packets.image.rgb.size(), size_t(37 * 23 * 3));
-    EXPECT_NEAR(packets.hits, scalar.hits, 2);
+    EXPECT_NEAR(double(packets.hits), double(scalar.hits), 2.0);
     EXPECT_LT(mean_abs_difference(packets.image, scalar.image), 1.0);
 }
 
@@ -161,7 +163,9 @@ TEST_F(RenderTest, SamplesRenderedOneAtATimeAverageToTheMultiSampleImage) {
         request.first_sample = sample;
         const Frame single = render(*mandelbulb_, request);
         for (size_t i = 0; i < sum.size(); ++i) sum[i] += single.linear[i];
-        if (sample > 0) EXPECT_EQ(single.hits, 0) << "depth comes from sample 0 only";
+        if (sample > 0) {
+            EXPECT_EQ(single.hits, 0) << "depth comes from sample 0 only";
+        }
     }
     double largest = 0.0;
     for (size_t i = 0; i < sum.size(); ++i) {

@@ -87,7 +87,9 @@ TEST_F(RenderWorkerTest, StillViewIsRefinedToTheSampleCapThenLeftAlone) {
     ASSERT_FALSE(frames_.empty());
     EXPECT_EQ(frames_.back().samples, 3);
     for (size_t i = 0; i < frames_.size(); ++i) {
-        if (i > 0) EXPECT_GT(frames_[i].samples, frames_[i - 1].samples);
+        if (i > 0) {
+            EXPECT_GT(frames_[i].samples, frames_[i - 1].samples);
+        }
         EXPECT_EQ(frames_[i].scale, 1.0f);
         EXPECT_EQ(frames_[i].image.width, 64);
         EXPECT_EQ(frames_[i].generation, 1u);
@@ -151,7 +153,9 @@ TEST_F(RenderWorkerTest, ANewerViewAbandonsRefiningTheOlderOne) {
     bool seen_new = false;
     for (const DisplayFrame& frame : frames_) {
         seen_new |= frame.generation == 2;
-        if (seen_new) EXPECT_EQ(frame.generation, 2u);
+        if (seen_new) {
+            EXPECT_EQ(frame.generation, 2u);
+        }
     }
 }
 

@@ -81,6 +81,15 @@ bool hits_finer_than_float(const Frame& frame, const CameraView& view, int width
     return fine * 100 > hits;
 }
 
+bool float_probe_finds_fine_surface(Renderer& in_float, const FrameRequest& request) {
+    FrameRequest probe;
+    probe.view = request.view;
+    probe.params = request.params;
+    probe.width = std::max(8, request.width / 8);
+    probe.height = std::max(8, request.height * probe.width / request.width);
+    return hits_finer_than_float(in_float.render(probe), request.view, request.width);
+}
+
 KernelSwitches with_precision(KernelSwitches switches, bool double_precision) {
     switches.double_precision = double_precision;
     if (double_precision) {

@@ -50,6 +50,12 @@ private:
 // coordinates there. `frame` may be a smaller probe render of the same view.
 bool hits_finer_than_float(const Frame& frame, const CameraView& view, int width);
 
+// Auto judges a view at its camera target; the camera may still stand close to a surface finer
+// than float resolves while the target is far. This renders a float probe of `request`'s view at
+// an eighth of its size (under 2% of the render's work) with `in_float` and judges it at the hits
+// (hits_finer_than_float).
+bool float_probe_finds_fine_surface(Renderer& in_float, const FrameRequest& request);
+
 // OpenCL C's scalar double overloads are ambiguous with the kernel library's float literals;
 // vector lanes are not, so double runs at least this many rays per work-item.
 constexpr int kMinDoublePacketWidth = 4;

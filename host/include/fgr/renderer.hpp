@@ -28,10 +28,10 @@ struct FrameRequest {
     // (sample 0 is the pixel centre, later ones are jittered).
     int first_sample = 0;
     // Called after each finished sample with (samples done, samples in all), when set.
-    std::function<void(int, int)> on_sample;
+    std::function<void(int, int)> on_sample{};
     // Polled between bands of tiles, when set: returning true abandons the frame (Frame::cancelled),
     // so an interactive caller never waits for a slow frame it no longer wants.
-    std::function<bool()> cancel;
+    std::function<bool()> cancel{};
 };
 
 // The primary rays' work, from sample 0 of a render built with KernelSwitches::stats.

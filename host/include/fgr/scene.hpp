@@ -17,14 +17,14 @@ enum class ParamType { Float, Int, Bool, Vec3, Colour };
 
 struct ParamInfo {
     std::string id;
-    std::string label;
-    std::string group;
-    std::string description;
+    std::string label{};        // optional: the loader falls back to the id
+    std::string group{};        // optional: the loader falls back to "Scene"
+    std::string description{};
     ParamType type = ParamType::Float;
     float min_value = 0.0f;
     float max_value = 1.0f;
     std::array<float, 3> default_value{};
-    std::vector<std::string> choices;  // Int only: names of min..max, empty when not an enum
+    std::vector<std::string> choices{};  // Int only: names of min..max, empty when not an enum
     bool builtin = false;              // a quality knob the host adds to every scene
 };
 

@@ -40,8 +40,8 @@ RenderWorker::RenderWorker(int device_index, int packet_width, QualitySettings q
     : device_(open_device(device_index)),
       packet_width_(packet_width ? packet_width : preferred_packet_width(device_.info)),
       cache_(ProgramCache::default_directory()),
-      quality_(quality),
-      precision_chooser_(device_.info, [this](const std::string& warning) { post_message(warning); }) {
+      precision_chooser_(device_.info, [this](const std::string& warning) { post_message(warning); }),
+      quality_(quality) {
     thread_ = std::thread([this] { run(); });
 }
 

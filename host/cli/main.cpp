@@ -1,3 +1,3 @@
-#include "fgr/cli.hpp"
+#include "cli.hpp"
 
 int main(int argc, char** argv) { return fgr::run_cli(argc, argv); }

@@ -1,0 +1,100 @@
+// fgr bench: the benchmark protocol along a camera path (the accuracy sweep, `fgr bench accuracy`,
+// is in bench_accuracy.cpp).
+#include <cstdio>
+#include <filesystem>
+#include <string>
+
+#include <unistd.h>
+
+#include <fmt/format.h>
+#include <spdlog/spdlog.h>
+
+#include "commands.hpp"
+#include "fgr/program_cache.hpp"
+#include "fgr/renderer.hpp"
+
+namespace fgr {
+namespace {
+
+// A bar on a terminal, a line every quarter otherwise (logs, CI).
+BenchProgress bench_progress(int runs) {
+    const bool terminal = isatty(fileno(stderr)) != 0;
+    return [terminal, runs, last_quarter = -1, last_run = -1](int run, double done) mutable {
+        if (terminal) {
+            const int filled = static_cast<int>(done * 30.0);
+            std::fprintf(stderr, "\rrun %d/%d [%s%s] %3.0f%%", run + 1, runs,
+                         std::string(static_cast<size_t>(filled), '#').c_str(),
+                         std::string(static_cast<size_t>(30 - filled), '.').c_str(), done * 100.0);
+            if (done >= 1.0) std::fputc('\n', stderr);
+            return;
+        }
+        const int quarter = static_cast<int>(done * 4.0);
+        if (run != last_run || quarter != last_quarter) {
+            spdlog::info("run {}/{}: {:.0f}%", run + 1, runs, quarter * 25.0);
+            last_run = run;
+            last_quarter = quarter;
+        }
+    };
+}
+
+}  // namespace
+
+void add_bench_command(CLI::App& app, BenchOptions& options) {
+    CLI::App* bench = app.add_subcommand(
+        "bench", "benchmark protocol: play the scene's benchmark camera path, record frame times");
+    bench->add_option("scene", options.scene, "scene id (see `fgr list`)");
+    bench->add_option("--width", options.settings.width, "image width (default 1280)")
+        ->check(CLI::Range(1, kMaxImageSide));
+    bench->add_option("--height", options.settings.height, "image height (default 720)")
+        ->check(CLI::Range(1, kMaxImageSide));
+    auto* duration = bench->add_option("--duration", options.settings.duration_seconds,
+                                       "seconds per run, the path played in real time (default 10)")
+                         ->check(CLI::Range(0.1, 3600.0));
+    bench->add_option("--frames", options.frames,
+                      "a fixed number of frames per run, spread evenly over the path")
+        ->check(CLI::Range(1, 100000))
+        ->excludes(duration);
+    bench->add_option("--runs", options.settings.runs, "repeat and average (default 1)")
+        ->check(CLI::Range(1, 100));
+    bench->add_option("--path", options.settings.path,
+                      "camera path (default: 'benchmark' if the scene has it, else its first)");
+    bench->add_option("--spp", options.settings.samples, "samples per pixel (default 1)")
+        ->check(CLI::Range(1, kMaxSamples));
+    bench->add_option("-o,--output", options.output,
+                      "write PREFIX.json and PREFIX.csv (default: bench-SCENE)");
+    add_precision_option(bench, options.settings.precision,
+                         "for the frames of the path finer than float resolves");
+    add_device_options(bench, options.device, options.settings.packet_width);
+    add_bench_accuracy_command(*bench, options);
+}
+
+int command_bench(BenchOptions& options) {
+    if (options.accuracy_command->parsed()) {
+        return command_bench_accuracy(options.accuracy, options.device);
+    }
+    if (options.scene.empty()) throw UsageError("bench needs a SCENE (see `fgr list`)");
+    const Discovery found = discover();
+    const Scene& scene = find_scene(found, options.scene);
+    if (options.frames > 0) options.settings.frames = options.frames;
+    try {
+        bench_path(scene, options.settings.path);
+    } catch (const std::invalid_argument& error) {
+        throw UsageError(error.what());
+    }
+    const std::string prefix = options.output.empty() ? "bench-" + scene.id : options.output;
+    const std::filesystem::path json_file = prefix + ".json", csv_file = prefix + ".csv";
+    check_output_directory(json_file);
+    const ComputeDevice device = open_requested_device(options.device);
+    ProgramCache cache(ProgramCache::default_directory());
+    spdlog::info("benchmarking '{}' at {}x{} on {}", scene.id, options.settings.width,
+                 options.settings.height, device.info.name);
+    const BenchReport report = run_benchmark(scene, device, cache, options.settings,
+                                             bench_progress(options.settings.runs));
+    fmt::print("{}", bench_table(report));
+    write_output(json_file, bench_json(report));
+    write_output(csv_file, bench_csv(report));
+    fmt::print("wrote {} and {}\n", json_file.string(), csv_file.string());
+    return 0;
+}
+
+}  // namespace fgr

@@ -1,0 +1,89 @@
+// run_cli: registers every command's options, parses, runs the command given and turns what it
+// throws into a one-line error and an exit code.
+#include "cli.hpp"
+
+#include <cstdio>
+#include <exception>
+#include <string>
+
+#include <CLI/CLI.hpp>
+#include <fmt/format.h>
+#include <spdlog/sinks/stdout_color_sinks.h>
+#include <spdlog/spdlog.h>
+
+#include "commands.hpp"
+#include "fgr/program_cache.hpp"
+
+namespace fgr {
+namespace {
+
+void configure_logging(bool verbose) {
+    auto logger = spdlog::stderr_color_mt("fgr");
+    logger->set_pattern("fgr: %^%l%$: %v");
+    spdlog::set_default_logger(logger);
+    spdlog::set_level(verbose ? spdlog::level::debug : spdlog::level::info);
+}
+
+int report_error(const std::string& message, int code) {
+    // Errors are one line: keep only the first line of messages that carry more.
+    std::fprintf(stderr, "fgr: error: %s\n", message.substr(0, message.find('\n')).c_str());
+    return code;
+}
+
+}  // namespace
+
+int run_cli(int argc, char** argv) {
+    CLI::App app{"fgr: real-time ray marching of 3D fractals"};
+    app.require_subcommand(1);
+    bool verbose = false;
+    app.add_flag("-v,--verbose", verbose, "debug logging");
+    app.add_subcommand("list", "list the scenes found, with parameters, cameras and camera paths");
+    app.add_subcommand("info", "list OpenCL platforms and devices");
+    RenderOptions render_options;
+    add_render_command(app, render_options);
+    ViewCommandOptions view_options;
+    add_view_command(app, view_options);
+    NewSceneOptions new_scene_options;
+    add_new_scene_command(app, new_scene_options);
+    BenchOptions bench_options;
+    add_bench_command(app, bench_options);
+    if (argc < 2) {
+        std::fputs(app.help().c_str(), stdout);
+        return report_error("no command given (commands: list, info, render, view, new-scene, bench)", kExitUsage);
+    }
+    if (const std::string first = argv[1]; !first.empty() && first.front() != '-' &&
+        first != "list" && first != "info" && first != "render" && first != "view" &&
+        first != "new-scene" && first != "bench") {
+        return report_error(
+            fmt::format(
+                "unknown command '{}' (commands: list, info, render, view, new-scene, bench)",
+                first),
+                            kExitUsage);
+    }
+    try {
+        app.parse(argc, argv);
+    } catch (const CLI::CallForHelp& help) {
+        return app.exit(help);
+    } catch (const CLI::ParseError& error) {
+        return report_error(error.what(), kExitUsage);
+    }
+    configure_logging(verbose);
+    try {
+        const std::string command = app.get_subcommands().front()->get_name();
+        if (command == "list") return command_list();
+        if (command == "info") return command_info();
+        if (command == "view") return command_view(view_options);
+        if (command == "new-scene") return command_new_scene(new_scene_options);
+        if (command == "bench") return command_bench(bench_options);
+        return command_render(render_options);
+    } catch (const UsageError& error) {
+        return report_error(error.what(), kExitUsage);
+    } catch (const KernelBuildError& error) {
+        std::fprintf(stderr, "%s\n", error.build_log().c_str());
+        return report_error(error.what(), kExitFailure);
+    } catch (const std::exception& error) {
+        return report_error(error.what(), kExitFailure);
+    }
+}
+
+}  // namespace fgr

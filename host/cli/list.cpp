@@ -1,0 +1,70 @@
+// fgr list: every scene found, with its parameters, cameras, camera paths and effects.
+#include <string>
+
+#include <fmt/format.h>
+
+#include "commands.hpp"
+#include "fgr/kernel_assembly.hpp"
+
+namespace fgr {
+namespace {
+
+std::string range_text(const ParamInfo& param) {
+    if (param.type == ParamType::Bool) return "true|false";
+    if (!param.choices.empty()) {
+        std::string names;
+        for (const auto& choice : param.choices) names += (names.empty() ? "" : "|") + choice;
+        return names;
+    }
+    return fmt::format("[{}, {}]", param.min_value, param.max_value);
+}
+
+std::string default_text(const ParamInfo& param) {
+    const auto& value = param.default_value;
+    if (param_components(param.type) == 3) return fmt::format("{},{},{}", value[0], value[1], value[2]);
+    if (!param.choices.empty()) {
+        return param.choices.at(static_cast<size_t>(value[0] - param.min_value));
+    }
+    if (param.type == ParamType::Bool) return value[0] != 0.0f ? "true" : "false";
+    return fmt::format("{}", value[0]);
+}
+
+void print_scene(const Scene& scene) {
+    fmt::print("{}  {} - {}\n", scene.id, scene.name, scene.description);
+    fmt::print("  plugin: {}\n", scene.plugin_file.string());
+    fmt::print("  parameters:\n");
+    for (const auto& param : scene.params) {
+        fmt::print("    {:<20} {:<7} {:<30} default {:<16} {} ({})\n", param.id,
+                   param_type_name(param.type), range_text(param), default_text(param),
+                   param.label, param.group);
+    }
+    std::string cameras;
+    for (const auto& camera : scene.cameras) cameras += (cameras.empty() ? "" : ", ") + camera.name;
+    fmt::print("  cameras: {} (default: {})\n", cameras, scene.cameras.front().name);
+    std::string paths;
+    for (const auto& path : scene.camera_paths) {
+        paths += fmt::format("{}{} ({}-{} s, {} keyframes)", paths.empty() ? "" : ", ", path.name,
+                             path.keyframes.front().time, path.keyframes.back().time,
+                             path.keyframes.size());
+    }
+    fmt::print("  camera paths: {}\n", paths.empty() ? "none" : paths);
+    fmt::print("  effects: {}\n", effect_names(scene.effects));
+}
+
+}  // namespace
+
+int command_list() {
+    const Discovery found = discover();
+    if (found.scenes.empty()) {
+        fmt::print("no scenes found; searched:\n");
+        for (const auto& dir : plugin_search_path(executable_dir())) fmt::print("  {}\n", dir.string());
+        return 0;
+    }
+    for (size_t i = 0; i < found.scenes.size(); ++i) {
+        if (i > 0) fmt::print("\n");
+        print_scene(found.scenes[i]);
+    }
+    return 0;
+}
+
+}  // namespace fgr

@@ -1,0 +1,37 @@
+// fgr new-scene: a scene plugin project from the SDK template, ready to build.
+#include <filesystem>
+#include <string>
+#include <vector>
+
+#include <fmt/format.h>
+
+#include "commands.hpp"
+#include "fgr/scaffold.hpp"
+
+namespace fgr {
+
+void add_new_scene_command(CLI::App& app, NewSceneOptions& options) {
+    CLI::App* command = app.add_subcommand(
+        "new-scene", "create a scene plugin project from the SDK template, ready to build");
+    command->add_option("name", options.name, "scene id, e.g. my-kifs")->required();
+    command->add_option("--dir", options.directory, "project directory (default: ./NAME)");
+}
+
+int command_new_scene(const NewSceneOptions& options) {
+    const std::filesystem::path directory =
+        std::filesystem::path(options.directory.empty() ? options.name : options.directory);
+    const std::filesystem::path prefix = executable_dir().parent_path();
+    const std::vector<std::filesystem::path> files = scaffold_scene(options.name, directory, prefix);
+    fmt::print("created scene '{}' in {}:\n", options.name, directory.string());
+    for (const auto& file : files) fmt::print("  {}\n", file.string());
+    const std::string dir = directory.string();
+    fmt::print("next:\n"
+               "  cmake -S {0} -B {0}/build && cmake --build {0}/build\n"
+               "  mkdir -p ~/.local/share/fgr/plugins && cp {0}/build/{1}.so "
+               "~/.local/share/fgr/plugins/\n"
+               "  fgr render {1} -o {1}.png\n",
+               dir, options.name);
+    return 0;
+}
+
+}  // namespace fgr

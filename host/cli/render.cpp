@@ -1,0 +1,218 @@
+// fgr render: one image of a scene to a PNG file, or every scene's default view (--all).
+#include <algorithm>
+#include <cctype>
+#include <filesystem>
+#include <string>
+
+#include <fmt/format.h>
+#include <spdlog/spdlog.h>
+
+#include "commands.hpp"
+#include "fgr/camera.hpp"
+#include "fgr/camera_path_file.hpp"
+#include "fgr/kernel_assembly.hpp"
+#include "fgr/program_cache.hpp"
+#include "fgr/renderer.hpp"
+#include "fgr/still_image.hpp"
+
+namespace fgr {
+namespace {
+
+// A camera path given by name (one of the scene's) or as a JSON file the viewer saved.
+CameraPath find_camera_path(const Scene& scene, const std::string& argument) {
+    if (looks_like_camera_path_file(argument)) {
+        CameraPathFile file;
+        try {
+            file = read_camera_path_file(argument);
+        } catch (const std::runtime_error& error) {
+            throw UsageError(error.what());
+        }
+        if (!file.scene.empty() && file.scene != scene.id) {
+            spdlog::warn("camera path '{}' was recorded in scene '{}', rendering it in '{}'",
+                         argument, file.scene, scene.id);
+        }
+        return file.path;
+    }
+    const CameraPath* path = scene.find_camera_path(argument);
+    if (!path) {
+        throw UsageError(fmt::format("scene '{}' has no camera path '{}' (see `fgr list`)",
+                                     scene.id, argument));
+    }
+    return *path;
+}
+
+CameraView choose_view(const Scene& scene, const RenderOptions& options) {
+    if (options.camera_path) {
+        const CameraPath path = find_camera_path(scene, *options.camera_path);
+        const float first = path.keyframes.front().time, last = path.keyframes.back().time;
+        if (!(*options.time >= first && *options.time <= last)) {
+            throw UsageError(fmt::format("--time {} is outside camera path '{}' [{}, {}]",
+                                         *options.time, path.name, first, last));
+        }
+        return evaluate_camera_path(path, *options.time);
+    }
+    if (options.camera) {
+        const NamedCamera* camera = scene.find_camera(*options.camera);
+        if (!camera) {
+            throw UsageError(fmt::format("scene '{}' has no camera '{}' (see `fgr list`)", scene.id,
+                                         *options.camera));
+        }
+        return camera->view;
+    }
+    return scene.cameras.front().view;
+}
+
+void check_output_path(const std::filesystem::path& output) {
+    std::string extension = output.extension().string();
+    std::transform(extension.begin(), extension.end(), extension.begin(),
+                   [](unsigned char c) { return static_cast<char>(std::tolower(c)); });
+    if (extension != ".png") {
+        throw UsageError(fmt::format("output '{}' must be a .png file", output.string()));
+    }
+    const auto directory = output.has_parent_path() ? output.parent_path() : ".";
+    std::error_code error;
+    if (!std::filesystem::is_directory(directory, error)) {
+        throw RuntimeFailure(fmt::format("cannot write '{}': directory '{}' does not exist",
+                                         output.string(), directory.string()));
+    }
+}
+
+// Checks that do not need a scene: option combinations and the output location.
+void check_render_options(const RenderOptions& options) {
+    try {
+        apply_effect_changes(0, options.effect_changes);
+    } catch (const std::invalid_argument& error) {
+        throw UsageError(error.what());
+    }
+    if (options.all) {
+        if (!options.scene.empty()) throw UsageError("give a SCENE or --all, not both");
+        if (!options.assignments.empty() || options.camera || options.camera_path || options.time) {
+            throw UsageError("--all renders each scene's default view: no --set, --camera or --time");
+        }
+        return;
+    }
+    if (options.scene.empty()) throw UsageError("render needs a SCENE (see `fgr list`) or --all");
+    if (options.time && !options.camera_path) throw UsageError("--time needs --camera-path");
+    if (options.camera_path && !options.time) throw UsageError("--camera-path needs --time");
+    check_output_path(options.output);
+}
+
+// Renders `request` (render_still: the kernel, float or double), writes the PNG, prints the
+// figures.
+void render_to_file(const Scene& scene, const FrameRequest& request, const ComputeDevice& device,
+                    ProgramCache& cache, const RenderOptions& options,
+                    const std::filesystem::path& output) {
+    StillSettings settings;
+    settings.packet_width = options.packet_width;
+    settings.effects = apply_effect_changes(scene.effects, options.effect_changes);
+    settings.stats = options.stats;
+    settings.precision = options.precision;
+    FrameRequest reported = request;
+    if (request.samples >= 8) {
+        // Long multi-sample renders say how far they are, about every tenth of the way.
+        reported.on_sample = [step = std::max(1, request.samples / 10)](int done, int total) {
+            if (done % step == 0 || done == total) spdlog::info("sample {}/{}", done, total);
+        };
+    }
+    const Frame frame = render_still(scene, reported, device, cache, settings);
+    fmt::print("render_ms {:.1f}\n", frame.render_ms);
+    fmt::print("hits {}\n", frame.hits);
+    if (frame.stats) {
+        const MarchStats& stats = *frame.stats;
+        fmt::print("steps_per_pixel {:.2f} (max {})\n", stats.mean_steps, stats.max_steps);
+        fmt::print("de_evaluations {} ({:.2f} per pixel: primary march and normals)\n",
+                   stats.de_evaluations, double(stats.de_evaluations) / double(stats.pixels));
+        fmt::print("out_of_steps {:.3f}% ({} of {} pixels)\n", stats.out_of_steps_percent(),
+                   stats.out_of_steps, stats.pixels);
+    }
+    try {
+        write_still(output, frame, options.bit_depth,
+                    param_value(scene, request.params, "exposure"));
+    } catch (const std::runtime_error& error) {
+        throw RuntimeFailure(error.what());
+    }
+    fmt::print("wrote {} ({}x{})\n", output.string(), frame.image.width, frame.image.height);
+}
+
+FrameRequest default_request(const Scene& scene, const RenderOptions& options) {
+    FrameRequest request;
+    request.width = options.width;
+    request.height = options.height;
+    request.view = scene.cameras.front().view;
+    request.params = default_param_values(scene);
+    request.samples = options.samples;
+    return request;
+}
+
+int render_all(const RenderOptions& options) {
+    const std::filesystem::path directory = options.output;
+    std::error_code error;
+    std::filesystem::create_directories(directory, error);
+    if (error || !std::filesystem::is_directory(directory)) {
+        throw RuntimeFailure(fmt::format("cannot create directory '{}'", directory.string()));
+    }
+    const Discovery found = discover();
+    if (found.scenes.empty()) throw RuntimeFailure("no scenes found (see `fgr list`)");
+    const ComputeDevice device = open_requested_device(options.device);
+    ProgramCache cache(ProgramCache::default_directory());
+    for (size_t i = 0; i < found.scenes.size(); ++i) {
+        const Scene& scene = found.scenes[i];
+        fmt::print("scene {} ({}/{})\n", scene.id, i + 1, found.scenes.size());
+        render_to_file(scene, default_request(scene, options), device, cache, options,
+                       directory / (scene.id + ".png"));
+    }
+    return 0;
+}
+
+}  // namespace
+
+void add_render_command(CLI::App& app, RenderOptions& options) {
+    CLI::App* render = app.add_subcommand(
+        "render", "render one image of a scene to a PNG file, or every scene's default view");
+    render->add_option("scene", options.scene, "scene id (see `fgr list`)");
+    render->add_flag("--all", options.all, "render every scene's default view into the directory -o");
+    render->add_option("-o,--output", options.output, "output PNG file (a directory with --all)")
+        ->required();
+    render->add_option("--width", options.width, "image width in pixels")
+        ->check(CLI::Range(1, kMaxImageSide));
+    render->add_option("--height", options.height, "image height in pixels")
+        ->check(CLI::Range(1, kMaxImageSide));
+    render->add_option("--set", options.assignments, "set a parameter: id=value (repeatable)")
+        ->allow_extra_args(false);
+    auto* camera = render->add_option("--camera", options.camera, "named camera of the scene");
+    auto* path = render->add_option("--camera-path", options.camera_path,
+                                    "camera path of the scene, or a .json file saved by `fgr view`");
+    path->excludes(camera);
+    render->add_option("--time", options.time, "time along the camera path, in seconds");
+    render->add_option("--spp", options.samples,
+                       "samples per pixel, jittered and averaged: anti-aliasing, depth of field")
+        ->check(CLI::Range(1, kMaxSamples));
+    render->add_option("--bit-depth", options.bit_depth,
+                       "8: tone-mapped sRGB PNG (default); 16: linear 16-bit PNG (exposure only)")
+        ->check(CLI::IsMember({8, 16}));
+    render->add_option("--effects", options.effect_changes,
+                       "change the scene's effects, e.g. +shadows,-ambient_occlusion");
+    add_precision_option(render, options.precision,
+                         "when a pixel is finer than float resolves (deep zooms)");
+    render->add_flag("--stats", options.stats,
+                     "print steps per pixel, DE evaluations and rays that ran out of steps");
+    add_device_options(render, options.device, options.packet_width);
+}
+
+int command_render(const RenderOptions& options) {
+    check_render_options(options);
+    if (options.all) return render_all(options);
+    const Discovery found = discover();
+    const Scene& scene = find_scene(found, options.scene);
+    FrameRequest request = default_request(scene, options);
+    for (const auto& assignment : options.assignments) {
+        set_param_from_text(scene, request.params, assignment);
+    }
+    request.view = choose_view(scene, options);
+    const ComputeDevice device = open_requested_device(options.device);
+    ProgramCache cache(ProgramCache::default_directory());
+    render_to_file(scene, request, device, cache, options, options.output);
+    return 0;
+}
+
+}  // namespace fgr

@@ -1,0 +1,26 @@
+#pragma once
+// Validating a plugin's scene description (fgr_scene_desc) and copying it into a host-owned Scene:
+// the ABI version and struct sizes, ids and names, string lengths, parameter ranges and types,
+// cameras and camera paths, lights, effects and march settings. The first problem found is the
+// reason given.
+
+#include <optional>
+#include <string>
+
+#include "fgr/plugin.h"
+#include "fgr/scene.hpp"
+
+namespace fgr {
+
+// Either a scene or the reason there is none (one line, no file name: callers add that).
+struct LoadResult {
+    std::optional<Scene> scene;
+    std::string error;
+};
+
+// Validates `desc` field by field (reading only fields its struct_size covers) and copies it into
+// a host-owned Scene, built-in quality parameters included. Never dereferences a pointer it has
+// not checked for NULL.
+LoadResult copy_scene_description(const fgr_scene_desc* desc);
+
+}  // namespace fgr

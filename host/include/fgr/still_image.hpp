@@ -1,0 +1,36 @@
+#pragma once
+// One still image of a scene, as `fgr render` makes it: the scene's kernel built with the
+// requested switches, float or double chosen for the view, the frame rendered and written as PNG.
+
+#include <cstdint>
+#include <filesystem>
+
+#include "fgr/opencl_device.hpp"
+#include "fgr/precision.hpp"
+#include "fgr/program_cache.hpp"
+#include "fgr/renderer.hpp"
+#include "fgr/scene.hpp"
+
+namespace fgr {
+
+struct StillSettings {
+    int packet_width = 0;   // rays per work-item; 0: the device's preference
+    uint64_t effects = 0;   // fgr_effect_flag bits compiled in
+    bool stats = false;     // count the primary rays' work (Frame::stats)
+    Precision precision = Precision::Auto;
+};
+
+// Builds the scene's kernel (logging what it builds and how long it took) and renders `request`.
+// Float or double as PrecisionChooser decides for the view; Auto on a device with double also
+// renders a float probe (float_probe_finds_fine_surface) and switches to double when the surface
+// in view is finer than float resolves. Throws KernelBuildError when the scene does not compile,
+// std::runtime_error when double was asked of a device without it.
+Frame render_still(const Scene& scene, const FrameRequest& request, const ComputeDevice& device,
+                   ProgramCache& cache, const StillSettings& settings);
+
+// Writes `frame` as a PNG: bit_depth 8, the tone-mapped sRGB image; 16, its linear colour times
+// `exposure` in a linear 16-bit PNG. Atomic and throwing like write_png.
+void write_still(const std::filesystem::path& path, const Frame& frame, int bit_depth,
+                 float exposure);
+
+}  // namespace fgr

@@ -1,0 +1,46 @@
+#include "fgr/still_image.hpp"
+
+#include <spdlog/spdlog.h>
+
+#include "fgr/image_io.hpp"
+#include "fgr/kernel_assembly.hpp"
+
+namespace fgr {
+
+Frame render_still(const Scene& scene, const FrameRequest& request, const ComputeDevice& device,
+                   ProgramCache& cache, const StillSettings& settings) {
+    const KernelSwitches in_float{
+        settings.packet_width ? settings.packet_width : preferred_packet_width(device.info),
+        settings.effects, settings.stats};
+    PrecisionRenderers renderers(device, cache, scene, in_float);
+    const auto build = [&](bool double_precision) -> Renderer& {
+        const KernelSwitches switches = with_precision(in_float, double_precision);
+        spdlog::info("building '{}' for {} ({} rays per work-item, {}, effects: {})", scene.id,
+                     device.info.name, switches.packet_width,
+                     double_precision ? "double" : "float", effect_names(switches.effects));
+        Renderer& built = renderers.get(double_precision);
+        spdlog::info("kernel ready in {:.0f} ms", built.build_report().build_ms);
+        return built;
+    };
+    PrecisionChooser chooser(device.info,
+                             [](const std::string& warning) { spdlog::warn("{}", warning); });
+    const bool in_double = chooser.in_double(settings.precision, request.view, request.width);
+    Renderer* chosen = &build(in_double);
+    if (settings.precision == Precision::Auto && !in_double && device.info.has_fp64 &&
+        float_probe_finds_fine_surface(*chosen, request)) {
+        spdlog::info("the surface in view is finer than float resolves: rendering in double");
+        chosen = &build(true);
+    }
+    return chosen->render(request);
+}
+
+void write_still(const std::filesystem::path& path, const Frame& frame, int bit_depth,
+                 float exposure) {
+    if (bit_depth == 16) {
+        write_png16_linear(path, linear_image16(frame, exposure));
+    } else {
+        write_png(path, frame.image);
+    }
+}
+
+}  // namespace fgr
