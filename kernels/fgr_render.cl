@@ -96,7 +96,7 @@ __kernel void fgr_render(__global float* planes, int plane_size, int tile_count,
         vec3 p = v3_mad(eye, dir, hit.t);
         real eps = fmax(hit.t * camera.pixel_angle * param_normal_epsilon, FGR_MIN_LENGTH);
         vec3 n = estimate_normal(p, eps, PARAMS_PASS);
-        vec3 lit = shade_surface(p, n, dir, eps, hit.steps, hit.t, 1, limits, lights,
+        vec3 lit = shade_surface(p, n, dir, eps, hit.steps, hit.t, hit.hit, 1, limits, lights,
                                  light_count, PARAMS_PASS);
 #ifdef FGR_EFFECT_REFRACTION
         lit = add_refraction(lit, p, n, dir, eps, hit.t, hit.hit, limits, lights, light_count,

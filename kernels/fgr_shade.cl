@@ -110,11 +110,12 @@ inline real light_visibility(vec3 p, vec3 to_light, mask lit, real travelled, re
 #endif
 
 /* Linear colour of surface point p with normal n seen along view_dir, reached after `travelled`
- * along the (possibly reflected) ray. `steps` feeds the cheap step-count ambient occlusion when
- * the scene asks for it; `with_shadows` lets reflections skip shadow rays. */
+ * along the (possibly reflected) ray, for the lanes in `surface` (the others get a colour nobody
+ * uses, and no shadow rays). `steps` feeds the cheap step-count ambient occlusion when the scene
+ * asks for it; `with_shadows` lets reflections skip shadow rays. */
 inline vec3 shade_surface(vec3 p, vec3 n, vec3 view_dir, real eps, mask steps, real travelled,
-                          int with_shadows, march_limits limits, __constant const float* lights,
-                          int light_count, PARAMS) {
+                          mask surface, int with_shadows, march_limits limits,
+                          __constant const float* lights, int light_count, PARAMS) {
     vec3 albedo = scene_colour(p, PARAMS_PASS);
     real ambient = fgr_real(FGR_AMBIENT);
 #ifdef FGR_EFFECT_AMBIENT_OCCLUSION
@@ -140,8 +141,8 @@ inline vec3 shade_surface(vec3 p, vec3 n, vec3 view_dir, real eps, mask steps, r
 #if defined(FGR_EFFECT_SHADOWS) || defined(FGR_EFFECT_SOFT_SHADOWS)
         if (with_shadows) {
             vec3 start = leave_surface(p, n, travelled, limits);
-            strength *= light_visibility(start, l, diffuse > 0.0f, travelled, reach, limits,
-                                         PARAMS_PASS);
+            strength *= light_visibility(start, l, surface & (diffuse > 0.0f), travelled, reach,
+                                         limits, PARAMS_PASS);
         }
 #endif
         vec3 light_colour = v3_splat(light[4], light[5], light[6]);
@@ -190,8 +191,8 @@ inline vec3 add_reflection(vec3 colour, vec3 p, vec3 n, vec3 dir, real eps, real
         if (fgr_any(next.hit)) {
             q_normal = estimate_normal(q, q_eps, PARAMS_PASS);
             vec3 q_colour = shade_surface(q, q_normal, reflected, q_eps, next.steps,
-                                          travelled + next.t, 0, limits, lights, light_count,
-                                          PARAMS_PASS);
+                                          travelled + next.t, next.hit, 0, limits, lights,
+                                          light_count, PARAMS_PASS);
             seen = v3_select(seen, q_colour, next.hit);
         }
         /* This surface shows (1 - F) of its own colour and F of what it reflects. */
@@ -267,8 +268,8 @@ inline vec3 add_refraction(vec3 colour, vec3 p, vec3 n, vec3 dir, real eps, real
         real q_eps = fmax((travelled + t + behind.t) * limits.footprint * 0.5f, FGR_MIN_LENGTH);
         vec3 q_normal = estimate_normal(q, q_eps, PARAMS_PASS);
         vec3 q_colour = shade_surface(q, q_normal, out_dir, q_eps, behind.steps,
-                                      travelled + t + behind.t, 0, limits, lights, light_count,
-                                      PARAMS_PASS);
+                                      travelled + t + behind.t, behind.hit, 0, limits, lights,
+                                      light_count, PARAMS_PASS);
         seen = v3_select(seen, q_colour, behind.hit);
     }
     /* Beer-Lambert: each colour channel decays at a rate that grows as the albedo darkens. */
