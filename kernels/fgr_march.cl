@@ -92,6 +92,10 @@ inline march_result march_rays_within(vec3 origin, vec3 dir, mask active, real t
                           fmax(travel + fall, fgr_real(FGR_MIN_LENGTH));
             stride = select(radius, clamp(stride, radius, radius * limits.relaxation),
                             last_step > 0.0f);
+            /* A stretched step is checked at the point it reaches, but a ray stops once past
+             * `reach` (a shadow ray at its light): a stretch that would end there is never
+             * checked and could jump an occluder just before the light, so it is taken plain. */
+            stride = select(stride, radius, result.t + stride > reach);
             /* Rejected: back over the failed step, then the last point's safe radius forward. */
             real next_step = select(stride, last_radius - last_step, overshot);
             last_radius = select(last_radius, radius, active & !overshot);

@@ -240,6 +240,39 @@ TEST_F(EffectTest, OccludersBeyondAPointLightCastNoShadow) {
     }
 }
 
+// A thin plate right in front of a point light: over-relaxed shadow rays stretch their steps
+// where the DE does not fall, and a stretch is checked at the point it reaches, so one that ends
+// beyond the light (where the ray stops) must not be taken, or it strides over the plate.
+TEST_F(EffectTest, AThinOccluderJustBeforeAPointLightShadowsAtAnyOverRelaxation) {
+    Scene scene = test::inline_scene(R"(
+real scene_de(vec3 p, PARAMS) {
+    (void)fgr_params;
+    real ground = sd_plane(p, v3_splat(0.0f, 0.0f, 1.0f), -0.5f);
+    real plate = sd_box(op_translate(p, v3_splat(0.0f, 0.0f, 1.5f)), v3_splat(0.35f, 0.35f, 0.002f));
+    return op_union(ground, plate);
+}
+)");
+    scene.cameras.front().view = view_from({0.0f, -2.0f, 1.0f}, {0.0f, 0.0f, -0.5f});
+    scene.lights = {Light{LightType::Point, {0.0f, 0.0f, 1.53f}, {1.0f, 1.0f, 1.0f}, 4.0f}};
+    const FrameRequest plain_request = request(scene);
+    const Frame plain = renderer(scene, 0)->render(plain_request);
+    const auto points = hit_points(plain, plain_request.view);
+    // The plate hides the light from every floor point in view: a floor point's line to the light
+    // crosses z = 1.5 within 0.03 / 2.03 of its horizontal offset, far inside the plate's 0.35.
+    const auto under = pixels_where(points, on_floor);
+    ASSERT_GT(under.size(), 200u);
+    for (const char* relaxation : {"over_relaxation=1", "over_relaxation=1.6",
+                                   "over_relaxation=1.95"}) {
+        for (uint64_t effect : {uint64_t{FGR_EFFECT_SHADOWS}, uint64_t{FGR_EFFECT_SOFT_SHADOWS}}) {
+            SCOPED_TRACE(effect_names(effect) + " " + relaxation);
+            const Frame shadowed = renderer(scene, effect)->render(request(scene, {relaxation}));
+            int lit = 0;
+            for (int pixel : under) lit += light_fraction(shadowed, plain, pixel) > 0.05f;
+            EXPECT_EQ(lit, 0) << "of " << under.size() << " floor pixels behind the plate are lit";
+        }
+    }
+}
+
 TEST_F(EffectTest, SoftShadowsHaveAPenumbraThatSharpnessNarrows) {
     const Scene scene = shadow_scene();
     const FrameRequest req = request(scene);
