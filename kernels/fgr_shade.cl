@@ -221,67 +221,113 @@ inline real scene_transmission(vec3 p, PARAMS) {
 }
 #endif
 
-/* Snell's law for unit vectors: the direction after crossing into a medium with index ratio eta =
- * n_from / n_to, or the mirror direction where total internal reflection happens. */
-inline vec3 refract_or_reflect(vec3 dir, vec3 n, real eta) {
-    real cos_in = -v3_dot(dir, n);
-    real k = 1.0f - eta * eta * (1.0f - cos_in * cos_in);
-    vec3 reflected = v3_mad(dir, n, 2.0f * cos_in);
-    vec3 refracted = v3_add(v3_scale(dir, eta), v3_scale(n, eta * cos_in - sqrt(fmax(k, 0.0f))));
-    return v3_normalize(v3_select(refracted, reflected, k < 0.0f));
+/* Inner reflections a ray refracted into a solid follows before it is given up as trapped. */
+#define FGR_INNER_BOUNCES 4
+
+/* Crossing a solid along dir from `start` (just inside its surface): marches -DE until the far
+ * surface is within the hit footprint of the whole path (`travelled` before start). Lanes that
+ * reach it are set in *reached; the others ran out of steps or distance inside. Returns the
+ * length crossed. */
+inline real cross_solid(vec3 start, vec3 dir, mask active, real travelled, march_limits limits,
+                        mask* reached, PARAMS) {
+    real t = fgr_real(0.0f);
+    mask crossing = active;
+    *reached = (mask)(0);
+    for (int step = 0; step < limits.max_steps; ++step) {
+        if (!fgr_any(crossing)) break;
+        real dist = -scene_de(v3_mad(start, dir, t), PARAMS_PASS);
+        const real footprint = (t + travelled) * limits.footprint;
+        mask arrived = crossing & (dist < footprint);
+        *reached |= arrived;
+        crossing &= !arrived;
+        /* At least a footprint per step (a length, like the hit test), so grazing crossings end. */
+        t = select(t, t + fmax(dist * limits.step_factor, footprint), crossing);
+        crossing &= t <= limits.max_distance;
+    }
+    return t;
 }
 
-/* Transparency: light enters the surface (index of refraction `ior`), crosses the solid, which
- * absorbs exp(-absorption * length) tinted by its colour (Beer-Lambert), leaves it bending back,
- * and shows what lies behind (shaded without shadow rays). Blended over the surface colour by the
- * material's transmission times (1 - Fresnel reflectance). Inside a solid the DE is negative, so
- * the crossing marches -DE until the surface is reached again. */
+/* Transparency: light enters the surface (index of refraction `ior`; below 1 the solid is the
+ * thinner medium, like a bubble), crosses the solid, which absorbs exp(-absorption * length)
+ * tinted by its colour (Beer-Lambert), and leaves it bending back, showing what lies behind (shaded
+ * without shadow rays). Where it meets the far surface beyond the critical angle it is totally
+ * reflected and goes on inside, up to FGR_INNER_BOUNCES times. The result is blended over the
+ * surface colour by the material's transmission times (1 - Fresnel reflectance). Lanes where no
+ * light can pass keep the surface colour: total internal reflection at the entry (ior < 1),
+ * rays that run out of steps inside, and rays still trapped after the last inner bounce. */
 inline vec3 add_refraction(vec3 colour, vec3 p, vec3 n, vec3 dir, real eps, real travelled,
                            mask surface, march_limits limits, __constant const float* lights,
                            int light_count, PARAMS) {
     real transmission = select(fgr_real(0.0f), scene_transmission(p, PARAMS_PASS), surface);
-    mask active = transmission > 0.0f;
-    if (!fgr_any(active)) return colour;
+    /* Entry: Snell's law with eta = 1 / ior; k < 0 is total reflection, nothing enters. */
+    const real cos_in = fmax(-v3_dot(dir, n), 0.0f);
+    const real eta_in = fgr_real(1.0f / param_ior);
+    const real k_in = 1.0f - eta_in * eta_in * (1.0f - cos_in * cos_in);
+    mask inside = (transmission > 0.0f) & (k_in >= 0.0f);
+    if (!fgr_any(inside)) return colour;
     vec3 albedo = scene_colour(p, PARAMS_PASS);
-    vec3 inside_dir = refract_or_reflect(dir, n, fgr_real(1.0f / param_ior));
-    /* Cross the solid: step by |DE| until the far surface (DE back to >= 0 within a footprint). */
+    vec3 d = v3_normalize(v3_add(v3_scale(dir, eta_in),
+                                 v3_scale(n, eta_in * cos_in - sqrt(fmax(k_in, 0.0f)))));
     vec3 start = v3_mad(p, n, -2.0f * travelled * limits.footprint - FGR_SURFACE_OFFSET);
-    real t = fgr_real(0.0f);
-    mask crossing = active;
-    for (int step = 0; step < limits.max_steps; ++step) {
-        if (!fgr_any(crossing)) break;
-        real dist = -scene_de(v3_mad(start, inside_dir, t), PARAMS_PASS);
-        crossing &= dist >= (t + travelled) * limits.footprint;
-        t = select(t, t + fmax(dist * limits.step_factor, limits.footprint), crossing);
-        crossing &= t <= limits.max_distance;
+    real path = fgr_real(0.0f); /* length travelled inside, for absorption */
+    mask leaves = (mask)(0);
+    vec3 exit_point = p, exit_normal = n, out_dir = dir;
+    for (int bounce = 0; bounce <= FGR_INNER_BOUNCES; ++bounce) {
+        if (!fgr_any(inside)) break;
+        mask reached;
+        const real t = cross_solid(start, d, inside, travelled + path, limits, &reached,
+                                   PARAMS_PASS);
+        path = select(path, path + t, inside);
+        inside &= reached; /* lanes lost inside stop here and keep the surface colour */
+        const vec3 q = v3_mad(start, d, t);
+        const real q_eps = fmax((travelled + path) * limits.footprint * 0.5f, FGR_MIN_LENGTH);
+        const vec3 q_normal = estimate_normal(q, q_eps, PARAMS_PASS);
+        /* Exit: from the solid (ior) into the outside (1). */
+        const real cos_out = fmax(v3_dot(d, q_normal), 0.0f);
+        const real k_out = 1.0f - param_ior * param_ior * (1.0f - cos_out * cos_out);
+        const mask exits = inside & (k_out >= 0.0f);
+        const vec3 refracted = v3_normalize(v3_add(
+            v3_scale(d, fgr_real(param_ior)),
+            v3_scale(q_normal, sqrt(fmax(k_out, 0.0f)) - param_ior * cos_out)));
+        exit_point = v3_select(exit_point, q, exits);
+        exit_normal = v3_select(exit_normal, q_normal, exits);
+        out_dir = v3_select(out_dir, refracted, exits);
+        leaves |= exits;
+        /* Total internal reflection: mirror off the inner surface and cross again. */
+        inside &= !exits;
+        const vec3 reflected = v3_normalize(v3_mad(d, q_normal, -2.0f * cos_out));
+        d = v3_select(d, reflected, inside);
+        start = v3_select(start, v3_mad(q, q_normal, -2.0f * (travelled + path) * limits.footprint -
+                                                         FGR_SURFACE_OFFSET),
+                          inside);
     }
-    vec3 exit_point = v3_mad(start, inside_dir, t);
-    real exit_eps = fmax((travelled + t) * limits.footprint * 0.5f, FGR_MIN_LENGTH);
-    vec3 exit_normal = estimate_normal(exit_point, exit_eps, PARAMS_PASS);
-    vec3 out_dir = refract_or_reflect(inside_dir, v3_neg(exit_normal), fgr_real(param_ior));
-    vec3 behind_start = v3_mad(exit_point, exit_normal, 2.0f * (travelled + t) * limits.footprint + FGR_SURFACE_OFFSET);
-    march_result behind = march_rays_after(behind_start, out_dir, active, travelled + t, limits,
+    if (!fgr_any(leaves)) return colour;
+    vec3 behind_start = v3_mad(exit_point, exit_normal,
+                               2.0f * (travelled + path) * limits.footprint + FGR_SURFACE_OFFSET);
+    march_result behind = march_rays_after(behind_start, out_dir, leaves, travelled + path, limits,
                                            PARAMS_PASS);
     vec3 seen = background(out_dir);
     if (fgr_any(behind.hit)) {
         vec3 q = v3_mad(behind_start, out_dir, behind.t);
-        real q_eps = fmax((travelled + t + behind.t) * limits.footprint * 0.5f, FGR_MIN_LENGTH);
+        real q_eps = fmax((travelled + path + behind.t) * limits.footprint * 0.5f, FGR_MIN_LENGTH);
         vec3 q_normal = estimate_normal(q, q_eps, PARAMS_PASS);
         vec3 q_colour = shade_surface(q, q_normal, out_dir, q_eps, behind.steps,
-                                      travelled + t + behind.t, behind.hit, 0, limits, lights,
+                                      travelled + path + behind.t, behind.hit, 0, limits, lights,
                                       light_count, PARAMS_PASS);
         seen = v3_select(seen, q_colour, behind.hit);
     }
     /* Beer-Lambert: each colour channel decays at a rate that grows as the albedo darkens. */
-    real path = t * param_absorption;
-    vec3 absorbed = v3(seen.x * exp(-path * (1.0f - albedo.x)), seen.y * exp(-path * (1.0f - albedo.y)),
-                       seen.z * exp(-path * (1.0f - albedo.z)));
-    real cos_in = fmax(-v3_dot(dir, n), 0.0f);
+    real absorbed_path = path * param_absorption;
+    vec3 absorbed = v3(seen.x * exp(-absorbed_path * (1.0f - albedo.x)),
+                       seen.y * exp(-absorbed_path * (1.0f - albedo.y)),
+                       seen.z * exp(-absorbed_path * (1.0f - albedo.z)));
+    /* Schlick's Fresnel approximation, with the cosine on the thinner side of the interface. */
     real r0 = (param_ior - 1.0f) / (param_ior + 1.0f);
     r0 *= r0;
-    real grazing = 1.0f - cos_in;
+    const real cos_thin = param_ior >= 1.0f ? cos_in : sqrt(fmax(k_in, 0.0f));
+    real grazing = 1.0f - cos_thin;
     real fresnel = r0 + (1.0f - r0) * grazing * grazing * grazing * grazing * grazing;
-    real weight = select(fgr_real(0.0f), transmission * (1.0f - fresnel), active);
+    real weight = select(fgr_real(0.0f), transmission * (1.0f - fresnel), leaves);
     return v3(mix(colour.x, absorbed.x, weight), mix(colour.y, absorbed.y, weight),
               mix(colour.z, absorbed.z, weight));
 }

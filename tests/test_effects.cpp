@@ -786,5 +786,94 @@ TEST_F(EffectTest, RefractionShowsWhatIsBehindTheGlassFlipped) {
               glm::length(pixel_rgb(lens, left_of_centre)) * 0.8f);
 }
 
+
+// A bubble (index 0.6 against its surroundings) seen from outside: a ray meeting it at impact
+// parameter b (distance from the centre to the ray's line) enters at sin(incidence) = b / R, so
+// beyond b = 0.6 R light cannot enter at all (total internal reflection on the dense side) and the
+// rim shows a ring with the surface's own colour, while the middle shows the wall behind.
+TEST_F(EffectTest, ABubbleShowsATotalReflectionRingAtTheCriticalAngle) {
+    const Scene scene = glass_scene();
+    constexpr int width = 256, height = 192;
+    constexpr float radius = 0.6f, ior = 0.6f;
+    FrameRequest req = request(scene, {"absorption=0", "ior=0.6"});
+    req.width = width;
+    req.height = height;
+    const Frame opaque = renderer(scene, 0)->render(req);
+    const Frame bubble = renderer(scene, FGR_EFFECT_REFRACTION)->render(req);
+    const CameraBasis basis = camera_basis(req.view);
+    // Impact parameter per pixel in units of R, and how much it changes from pixel to pixel.
+    const float b_step = glm::length(basis.eye) * pixel_angle(basis, width) / radius;
+    float ring_start = 2.0f;  // smallest b / R on the sphere where nothing passes
+    int ring = 0, middle = 0;
+    for (int y = 0; y < height; ++y) {
+        for (int x = 0; x < width; ++x) {
+            const int pixel = y * width + x;
+            if (opaque.depth[pixel] < 0.0f || opaque.depth[pixel] > 3.0f) continue;  // sphere only
+            const glm::vec3 dir = primary_ray_direction(basis, width, height, float(x), float(y));
+            const float b = glm::length(glm::cross(-basis.eye, dir)) / radius;
+            const bool same = glm::length(pixel_rgb(bubble, pixel) - pixel_rgb(opaque, pixel)) < 1e-5f;
+            if (same) ring_start = std::min(ring_start, b);
+            if (b > ior + 2.0f * b_step && b < 1.0f - 2.0f * b_step) {
+                ++ring;
+                EXPECT_TRUE(same) << "light passes at b/R " << b << " beyond the critical " << ior;
+            } else if (b < ior - 2.0f * b_step) {
+                ++middle;
+                EXPECT_GT(glm::length(pixel_rgb(bubble, pixel) - pixel_rgb(opaque, pixel)), 0.01f)
+                    << "no light passes at b/R " << b << " inside the critical " << ior;
+            }
+        }
+    }
+    ASSERT_GT(ring, 500);
+    ASSERT_GT(middle, 500);
+    // The measured inner edge of the ring lies at the critical angle, within two pixels.
+    EXPECT_NEAR(ring_start, ior, 2.0f * b_step);
+}
+
+// The same glass scene at 1/1000 of the size, camera and lengths (max distance, absorption per
+// unit length) scaled with it, renders the same image: nothing in refraction is a length in
+// scene units.
+TEST_F(EffectTest, RefractionLooksTheSameAtAThousandthOfTheScale) {
+    Scene scene = test::inline_scene(R"(
+real glass_de(vec3 p) {
+    return fmin(sd_sphere(p, 0.6f), sd_plane(p, v3_splat(0.0f, -1.0f, 0.0f), -1.5f));
+}
+real scene_de(vec3 p, PARAMS) { return param_scale * glass_de(v3_scale(p, 1.0f / param_scale)); }
+#define FGR_SCENE_HAS_COLOUR
+vec3 scene_colour(vec3 p, PARAMS) {
+    vec3 q = v3_scale(p, 1.0f / param_scale);
+    vec3 wall = v3_select(v3_splat(0.1f, 0.1f, 0.9f), v3_splat(0.9f, 0.1f, 0.1f), q.x < 0.0f);
+    return v3_select(v3_splat(0.8f, 0.8f, 0.8f), wall, q.y > 1.0f);
+}
+#define FGR_SCENE_HAS_TRANSMISSION
+real scene_transmission(vec3 p, PARAMS) {
+    return select(fgr_real(0.0f), fgr_real(1.0f), p.y < param_scale);
+}
+)");
+    ParamInfo scale = float_param("scale", 1.0f);
+    scene.params.insert(scene.params.begin(), scale);
+    scene.lights = {directional({0.0f, -1.0f, 0.3f})};
+    const auto render_at = [&](float s) {
+        FrameRequest req = request(scene, {"absorption=" + std::to_string(2.0f / s),
+                                           "scale=" + std::to_string(s),
+                                           "max_distance=" + std::to_string(100.0f * s)});
+        req.view.position *= s;
+        req.view.target *= s;
+        return renderer(scene, FGR_EFFECT_REFRACTION)->render(req);
+    };
+    const Frame full = render_at(1.0f);
+    const Frame small = render_at(1e-3f);
+    int differ = 0;
+    for (size_t i = 0; i < full.image.rgb.size(); i += 3) {
+        for (size_t c = 0; c < 3; ++c) {
+            if (std::abs(int(full.image.rgb[i + c]) - int(small.image.rgb[i + c])) > 1) {
+                ++differ;
+                break;
+            }
+        }
+    }
+    EXPECT_LE(differ, int(full.image.rgb.size() / 3 / 100))
+        << differ << " of " << full.image.rgb.size() / 3 << " pixels differ by more than 1 LSB";
+}
+
 }  // namespace
 }  // namespace fgr

@@ -111,9 +111,11 @@ void add_effect_params(Scene& scene) {
     params.push_back(effect_param("transmission", "Transmission", ParamType::Float, 0.0f, 1.0f,
                                   0.6f, "refraction: light passing into surfaces (scenes may set "
                                         "it per material)"));
-    params.push_back(effect_param("ior", "Index of refraction", ParamType::Float, 1.0f, 3.0f,
-                                  1.5f, "refraction: 1.33 water, 1.5 glass, 2.4 diamond"));
-    params.push_back(effect_param("absorption", "Absorption", ParamType::Float, 0.0f, 100.0f, 1.0f,
+    params.push_back(effect_param("ior", "Index of refraction", ParamType::Float, 0.25f, 3.0f,
+                                  1.5f, "refraction: 1.33 water, 1.5 glass, 2.4 diamond; below 1 "
+                                        "the solid is the thinner medium (0.75: air in water)"));
+    // Per unit length, so a scene a thousandth the size needs a thousand times the absorption.
+    params.push_back(effect_param("absorption", "Absorption", ParamType::Float, 0.0f, 1e6f, 1.0f,
                                   "refraction: light absorbed per unit length inside, tinted"));
     params.push_back(effect_param("aperture", "Aperture", ParamType::Float, 0.0f, 10.0f, 0.05f,
                                   "depth of field: lens radius"));
