@@ -268,7 +268,9 @@ inline vec3 add_refraction(vec3 colour, vec3 p, vec3 n, vec3 dir, real eps, real
     vec3 albedo = scene_colour(p, PARAMS_PASS);
     vec3 d = v3_normalize(v3_add(v3_scale(dir, eta_in),
                                  v3_scale(n, eta_in * cos_in - sqrt(fmax(k_in, 0.0f)))));
-    vec3 start = v3_mad(p, n, -2.0f * travelled * limits.footprint - FGR_SURFACE_OFFSET);
+    /* The hit lies up to a footprint outside the surface; start two more inside, so the crossing
+     * does not take the surface it enters for the one it leaves. */
+    vec3 start = v3_mad(p, n, -3.0f * travelled * limits.footprint - FGR_SURFACE_OFFSET);
     real path = fgr_real(0.0f); /* length travelled inside, for absorption */
     mask leaves = (mask)(0);
     vec3 exit_point = p, exit_normal = n, out_dir = dir;
@@ -297,7 +299,7 @@ inline vec3 add_refraction(vec3 colour, vec3 p, vec3 n, vec3 dir, real eps, real
         inside &= !exits;
         const vec3 reflected = v3_normalize(v3_mad(d, q_normal, -2.0f * cos_out));
         d = v3_select(d, reflected, inside);
-        start = v3_select(start, v3_mad(q, q_normal, -2.0f * (travelled + path) * limits.footprint -
+        start = v3_select(start, v3_mad(q, q_normal, -3.0f * (travelled + path) * limits.footprint -
                                                          FGR_SURFACE_OFFSET),
                           inside);
     }

@@ -875,5 +875,48 @@ real scene_transmission(vec3 p, PARAMS) {
         << differ << " of " << full.image.rgb.size() / 3 << " pixels differ by more than 1 LSB";
 }
 
+// Seen through the top face of a glass cube (index 1.5) nothing can leave through a side: a ray
+// refracted in at the top meets a side at over 48 degrees, beyond the critical 41.8, so it is
+// totally reflected and goes on inside until it leaves through the bottom. Every pixel of the top
+// face therefore shows the red floor under the cube, never the blue floor around it or the
+// inside of the glass.
+TEST_F(EffectTest, TheTopOfAGlassCubeShowsOnlyWhatLiesUnderIt) {
+    Scene scene = test::inline_scene(R"(
+real scene_de(vec3 p, PARAMS) {
+    (void)fgr_params;
+    real cube = sd_box(op_translate(p, v3_splat(0.0f, 0.0f, 0.55f)), v3_splat(0.5f, 0.5f, 0.5f));
+    return fmin(cube, sd_plane(p, v3_splat(0.0f, 0.0f, 1.0f), 0.0f));
+}
+#define FGR_SCENE_HAS_COLOUR
+vec3 scene_colour(vec3 p, PARAMS) {
+    (void)fgr_params;
+    mask under = (fabs(p.x) < 0.6f) & (fabs(p.y) < 0.6f);
+    vec3 floor_colour = v3_select(v3_splat(0.1f, 0.1f, 0.9f), v3_splat(0.9f, 0.1f, 0.1f), under);
+    return v3_select(floor_colour, v3_splat(0.8f, 0.8f, 0.8f), p.z > 0.03f);
+}
+#define FGR_SCENE_HAS_TRANSMISSION
+real scene_transmission(vec3 p, PARAMS) {
+    (void)fgr_params;
+    return select(fgr_real(0.0f), fgr_real(1.0f), p.z > 0.03f);
+}
+)");
+    scene.cameras.front().view = view_from({0.0f, -2.2f, 2.6f}, {0.0f, 0.0f, 0.6f});
+    scene.lights = {directional({0.2f, -0.3f, 1.0f})};
+    FrameRequest req = request(scene, {"absorption=0", "ior=1.5"});
+    const Frame glass = renderer(scene, FGR_EFFECT_REFRACTION)->render(req);
+    const auto points = hit_points(glass, req.view);
+    // The middle strip of the top face, |x| < 0.2, across its whole depth in y: rays refracted in
+    // there run towards the far (+y) side and the bottom, and stay more than a hit footprint
+    // (about 0.05 at that path length) from the x sides, whose edges a footprint-wide march and
+    // normal stencil cannot resolve.
+    const auto top = pixels_where(points, [](glm::vec3 p) {
+        return std::abs(p.z - 1.05f) < 0.02f && std::abs(p.x) < 0.2f && std::abs(p.y) < 0.45f;
+    });
+    ASSERT_GT(top.size(), 80u);
+    int not_red = 0;
+    for (int pixel : top) not_red += redness_minus_blueness(glass, pixel) < 0.2f;
+    EXPECT_EQ(not_red, 0) << "of " << top.size() << " top-face pixels do not show the red floor";
+}
+
 }  // namespace
 }  // namespace fgr
