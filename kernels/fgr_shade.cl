@@ -30,7 +30,9 @@ inline vec3 light_direction(__constant const float* light, vec3 p, float max_dis
     vec3 v = v3_splat(light[1], light[2], light[3]);
     if ((int)light[0] == FGR_LIGHT_POINT) {
         vec3 to_light = v3_sub(v, p);
-        real dist2 = fmax(v3_length2(to_light), 1e-8f);
+        /* The floor only keeps a point on the light from dividing by zero: far below any
+         * footprint at every scale the precision resolves. */
+        real dist2 = fmax(v3_length2(to_light), FGR_MIN_LENGTH * FGR_MIN_LENGTH);
         *falloff = 1.0f / dist2;
         *reach = fmin(sqrt(dist2), max_distance);
         return v3_scale(to_light, rsqrt(dist2));
@@ -57,11 +59,25 @@ inline real sampled_occlusion(vec3 p, vec3 n, PARAMS) {
 }
 #endif
 
+/* The smallest length rounding leaves meaningful at p: FGR_SURFACE_OFFSET (about 16 ulps) of
+ * its largest coordinate. It scales with p, not with the scene, so a scene a thousandth the size
+ * keeps the same offsets in pixels. */
+inline real rounding_floor(vec3 p) {
+    return FGR_SURFACE_OFFSET * fmax(fmax(fabs(p.x), fabs(p.y)), fabs(p.z));
+}
+
+/* How far off a surface point p reached after `travelled` a ray crossing the surface starts:
+ * `footprints` hit footprints (a length proportional to the path, as the hit test is), plus the
+ * rounding floor. */
+inline real surface_offset(vec3 p, real travelled, float footprints, march_limits limits) {
+    return footprints * travelled * limits.footprint + rounding_floor(p);
+}
+
 /* Where a secondary ray (shadow, reflection) starts from a surface point p reached after
  * `travelled`: two hit thresholds out along the normal, so the ray does not count the surface it
  * leaves as a hit (at exactly one threshold, rounding decides per pixel: visible contour lines). */
 inline vec3 leave_surface(vec3 p, vec3 n, real travelled, march_limits limits) {
-    return v3_mad(p, n, 2.0f * travelled * limits.footprint + FGR_SURFACE_OFFSET);
+    return v3_mad(p, n, surface_offset(p, travelled, 2.0f, limits));
 }
 
 #if defined(FGR_EFFECT_SOFT_SHADOWS)
@@ -73,6 +89,7 @@ inline real light_visibility(vec3 p, vec3 to_light, mask lit, real travelled, re
     real t = fgr_real(0.0f);
     real previous = fgr_real(1e10f);
     mask active = lit;
+    const real floor_length = rounding_floor(p);
     for (int step = 0; step < limits.max_steps; ++step) {
         if (!fgr_any(active)) break;
         real dist = scene_de(v3_mad(p, to_light, t), PARAMS_PASS);
@@ -84,7 +101,7 @@ inline real light_visibility(vec3 p, vec3 to_light, mask lit, real travelled, re
         /* Penumbra: visibility is min over the ray of k * DE / t, so a ray that passes an
          * occluder at distance d after travelling t is dimmed by how narrowly it missed; the
          * sharpness k is the built-in parameter shadow_sharpness. */
-        real penumbra = param_shadow_sharpness * closest / fmax(t - along, FGR_SURFACE_OFFSET);
+        real penumbra = param_shadow_sharpness * closest / fmax(t - along, floor_length);
         /* On the first steps off a flat lit surface the two DE spheres nest (along = dist, so
          * t - along <= 0): no closest approach to measure there, and using it speckled lit
          * floors with black pixels. */
@@ -92,8 +109,10 @@ inline real light_visibility(vec3 p, vec3 to_light, mask lit, real travelled, re
         visibility = select(visibility, fgr_real(0.0f), blocked);
         previous = select(previous, dist, active);
         active &= !blocked & (visibility > 0.002f);
-        /* Capped steps sample the penumbra of thin occluders the shadow ray passes. */
-        t = select(t, t + fmin(dist * limits.step_factor, 0.05f + 0.25f * t), active);
+        /* Capped steps sample the penumbra of thin occluders the shadow ray passes. The cap is a
+         * quarter of the distance covered plus 2% of the primary ray's length: lengths of the
+         * view, so the penumbra looks the same at any scale. */
+        t = select(t, t + fmin(dist * limits.step_factor, 0.25f * t + 0.02f * travelled), active);
         active &= t <= reach;
     }
     visibility = clamp(visibility, 0.0f, 1.0f);
@@ -270,7 +289,7 @@ inline vec3 add_refraction(vec3 colour, vec3 p, vec3 n, vec3 dir, real eps, real
                                  v3_scale(n, eta_in * cos_in - sqrt(fmax(k_in, 0.0f)))));
     /* The hit lies up to a footprint outside the surface; start two more inside, so the crossing
      * does not take the surface it enters for the one it leaves. */
-    vec3 start = v3_mad(p, n, -3.0f * travelled * limits.footprint - FGR_SURFACE_OFFSET);
+    vec3 start = v3_mad(p, n, -surface_offset(p, travelled, 3.0f, limits));
     real path = fgr_real(0.0f); /* length travelled inside, for absorption */
     mask leaves = (mask)(0);
     vec3 exit_point = p, exit_normal = n, out_dir = dir;
@@ -299,13 +318,12 @@ inline vec3 add_refraction(vec3 colour, vec3 p, vec3 n, vec3 dir, real eps, real
         inside &= !exits;
         const vec3 reflected = v3_normalize(v3_mad(d, q_normal, -2.0f * cos_out));
         d = v3_select(d, reflected, inside);
-        start = v3_select(start, v3_mad(q, q_normal, -3.0f * (travelled + path) * limits.footprint -
-                                                         FGR_SURFACE_OFFSET),
+        start = v3_select(start,
+                          v3_mad(q, q_normal, -surface_offset(q, travelled + path, 3.0f, limits)),
                           inside);
     }
     if (!fgr_any(leaves)) return colour;
-    vec3 behind_start = v3_mad(exit_point, exit_normal,
-                               2.0f * (travelled + path) * limits.footprint + FGR_SURFACE_OFFSET);
+    vec3 behind_start = leave_surface(exit_point, exit_normal, travelled + path, limits);
     march_result behind = march_rays_after(behind_start, out_dir, leaves, travelled + path, limits,
                                            PARAMS_PASS);
     vec3 seen = background(out_dir);

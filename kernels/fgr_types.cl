@@ -58,10 +58,11 @@ typedef FGR_LANE_TYPE(FGR_LANES(uint, ulong)) ulanes;
 #define convert_real FGR_LANE_TYPE(FGR_LANES(convert_float, convert_double))
 #define convert_float_lanes FGR_LANE_TYPE(convert_float)
 
-/* Lengths below which the precision in use cannot resolve detail near coordinates of order 1
- * (a few ulps there): the smallest normal stencil, and how far secondary rays start off a
- * surface at the least. In float these are ~2 and ~16 ulps; double resolves a deep zoom's
- * 1e-9-unit pixels, so its floors sit ~1e7 times lower. */
+/* What the precision in use can resolve near coordinates of order 1 (a few ulps there): the
+ * smallest normal stencil (a length), and how far secondary rays start off a surface at the
+ * least, relative to the point's coordinates (fgr_shade.cl's rounding_floor). In float these are
+ * ~2 and ~16 ulps; double resolves a deep zoom's 1e-9-unit pixels, so its floors sit ~1e7 times
+ * lower. */
 #define FGR_MIN_LENGTH FGR_LANES(1e-7f, 1e-14)
 #define FGR_SURFACE_OFFSET FGR_LANES(1e-6f, 1e-13)
 

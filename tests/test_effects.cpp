@@ -6,6 +6,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdio>
 #include <filesystem>
 #include <functional>
 #include <glm/geometric.hpp>
@@ -829,6 +830,26 @@ TEST_F(EffectTest, ABubbleShowsATotalReflectionRingAtTheCriticalAngle) {
     EXPECT_NEAR(ring_start, ior, 2.0f * b_step);
 }
 
+// A float as text that parses back to the same float (std::to_string keeps 6 decimals only).
+std::string exact_text(float value) {
+    char text[32];
+    std::snprintf(text, sizeof text, "%.9g", double(value));
+    return text;
+}
+
+int pixels_off_by_more_than_1_lsb(const Image8& a, const Image8& b) {
+    int differ = 0;
+    for (size_t i = 0; i < a.rgb.size(); i += 3) {
+        for (size_t c = 0; c < 3; ++c) {
+            if (std::abs(int(a.rgb[i + c]) - int(b.rgb[i + c])) > 1) {
+                ++differ;
+                break;
+            }
+        }
+    }
+    return differ;
+}
+
 // The same glass scene at 1/1000 of the size, camera and lengths (max distance, absorption per
 // unit length) scaled with it, renders the same image: nothing in refraction is a length in
 // scene units.
@@ -853,26 +874,77 @@ real scene_transmission(vec3 p, PARAMS) {
     scene.params.insert(scene.params.begin(), scale);
     scene.lights = {directional({0.0f, -1.0f, 0.3f})};
     const auto render_at = [&](float s) {
-        FrameRequest req = request(scene, {"absorption=" + std::to_string(2.0f / s),
-                                           "scale=" + std::to_string(s),
-                                           "max_distance=" + std::to_string(100.0f * s)});
+        FrameRequest req = request(scene, {"absorption=" + exact_text(2.0f / s),
+                                           "scale=" + exact_text(s),
+                                           "max_distance=" + exact_text(100.0f * s)});
         req.view.position *= s;
         req.view.target *= s;
         return renderer(scene, FGR_EFFECT_REFRACTION)->render(req);
     };
     const Frame full = render_at(1.0f);
     const Frame small = render_at(1e-3f);
-    int differ = 0;
-    for (size_t i = 0; i < full.image.rgb.size(); i += 3) {
-        for (size_t c = 0; c < 3; ++c) {
-            if (std::abs(int(full.image.rgb[i + c]) - int(small.image.rgb[i + c])) > 1) {
-                ++differ;
-                break;
-            }
-        }
-    }
+    const int differ = pixels_off_by_more_than_1_lsb(full.image, small.image);
     EXPECT_LE(differ, int(full.image.rgb.size() / 3 / 100))
         << differ << " of " << full.image.rgb.size() / 3 << " pixels differ by more than 1 LSB";
+}
+
+// Every effect at 1/100000 of the scene's size (where a constant of 1e-6 units is as large as the
+// offsets and steps it sits beside), with the camera, point lights and every length
+// parameter (and per-length rate) scaled alike, renders the same image: no effect hides a
+// length in scene units.
+TEST_F(EffectTest, EveryEffectLooksTheSameAtAHundredThousandthOfTheScale) {
+    Scene scene = test::inline_scene(R"(
+real unit_de(vec3 p) {
+    real ground = sd_plane(p, v3_splat(0.0f, 0.0f, 1.0f), -0.5f);
+    real ball = sd_sphere(op_translate(p, v3_splat(0.3f, 0.2f, -0.1f)), 0.4f);
+    real slab = sd_box(op_translate(p, v3_splat(-0.4f, -0.2f, 0.6f)), v3_splat(0.3f, 0.3f, 0.04f));
+    return op_union(op_union(ground, ball), slab);
+}
+real scene_de(vec3 p, PARAMS) { return param_scale * unit_de(v3_scale(p, 1.0f / param_scale)); }
+)");
+    scene.params.insert(scene.params.begin(), float_param("scale", 1.0f));
+    scene.cameras.front().view = view_from({0.4f, -2.2f, 1.1f}, {0.0f, 0.0f, -0.2f});
+    struct Case {
+        uint64_t effect;
+        std::vector<std::pair<std::string, float>> lengths;  // parameter, value at scale 1
+        int samples = 1;
+    };
+    const std::vector<Case> cases = {
+        {FGR_EFFECT_SHADOWS, {}},
+        {FGR_EFFECT_SOFT_SHADOWS, {}},
+        {FGR_EFFECT_AMBIENT_OCCLUSION, {}},
+        {FGR_EFFECT_SAMPLED_OCCLUSION, {{"ao_radius", 0.2f}}},
+        {FGR_EFFECT_GLOW, {{"glow_radius", 0.1f}}},
+        {FGR_EFFECT_FOG, {{"fog_density", 0.3f}}},
+        {FGR_EFFECT_REFLECTIONS, {}},
+        {FGR_EFFECT_DEPTH_OF_FIELD, {{"aperture", 0.05f}, {"focus_distance", 2.0f}}, 4},
+    };
+    const glm::vec3 point_light{-0.6f, -0.8f, 1.4f};
+    for (const Case& c : cases) {
+        SCOPED_TRACE(effect_names(c.effect));
+        const auto render_at = [&](float s) {
+            Scene scaled = scene;
+            scaled.lights = {directional({0.3f, -0.4f, 1.0f}, 0.7f),
+                             Light{LightType::Point, point_light * s, {1.0f, 0.9f, 0.8f},
+                                   0.8f * s * s}};
+            std::vector<std::string> assignments = {"scale=" + exact_text(s),
+                                                    "max_distance=" + exact_text(50.0f * s)};
+            for (const auto& [id, value] : c.lengths) {
+                const float scaled_value = id == "fog_density" ? value / s : value * s;
+                assignments.push_back(id + "=" + exact_text(scaled_value));
+            }
+            FrameRequest req = request(scaled, assignments, c.samples);
+            req.view.position *= s;
+            req.view.target *= s;
+            return renderer(scaled, c.effect)->render(req);
+        };
+        const Frame full = render_at(1.0f);
+        const Frame small = render_at(1e-5f);
+        ASSERT_GT(full.hits, kWidth * kHeight / 2);
+        const int differ = pixels_off_by_more_than_1_lsb(full.image, small.image);
+        EXPECT_LE(differ, kWidth * kHeight / 100)
+            << differ << " of " << kWidth * kHeight << " pixels differ by more than 1 LSB";
+    }
 }
 
 // Seen through the top face of a glass cube (index 1.5) nothing can leave through a side: a ray

@@ -94,17 +94,17 @@ void add_effect_params(Scene& scene) {
     params.push_back(std::move(tone_map));
     params.push_back(effect_param("shadow_sharpness", "Shadow sharpness", ParamType::Float, 1.0f,
                                   128.0f, 12.0f, "soft shadows: higher is a narrower penumbra"));
-    params.push_back(effect_param("ao_radius", "Occlusion radius", ParamType::Float, 0.001f,
+    params.push_back(effect_param("ao_radius", "Occlusion radius", ParamType::Float, 1e-9f,
                                   100.0f, 0.1f, "sampled occlusion: how far along the normal it probes"));
     params.push_back(colour_param("glow_colour", "Glow colour", {0.45f, 0.65f, 1.0f},
                                   "colour rays that miss pick up near the surface"));
     params.push_back(effect_param("glow_strength", "Glow strength", ParamType::Float, 0.0f, 20.0f,
                                   1.0f, "glow at zero distance from the surface"));
-    params.push_back(effect_param("glow_radius", "Glow radius", ParamType::Float, 0.0001f, 10.0f,
+    params.push_back(effect_param("glow_radius", "Glow radius", ParamType::Float, 1e-9f, 10.0f,
                                   0.05f, "distance over which glow falls to 1/e"));
     params.push_back(colour_param("fog_colour", "Fog colour", {0.10f, 0.12f, 0.17f},
                                   "colour distant surfaces fade to"));
-    params.push_back(effect_param("fog_density", "Fog density", ParamType::Float, 0.0f, 100.0f,
+    params.push_back(effect_param("fog_density", "Fog density", ParamType::Float, 0.0f, 1e9f,
                                   0.15f, "fog: fraction of light lost per unit distance"));
     params.push_back(effect_param("reflection_bounces", "Reflection bounces", ParamType::Int, 1.0f,
                                   8.0f, 1.0f, "mirror bounces followed per ray"));
@@ -114,12 +114,13 @@ void add_effect_params(Scene& scene) {
     params.push_back(effect_param("ior", "Index of refraction", ParamType::Float, 0.25f, 3.0f,
                                   1.5f, "refraction: 1.33 water, 1.5 glass, 2.4 diamond; below 1 "
                                         "the solid is the thinner medium (0.75: air in water)"));
-    // Per unit length, so a scene a thousandth the size needs a thousand times the absorption.
-    params.push_back(effect_param("absorption", "Absorption", ParamType::Float, 0.0f, 1e6f, 1.0f,
+    // Lengths (and per-length rates) reach down (and up) to deep-zoom scales: a scene a
+    // thousandth the size needs a thousandth the radius and a thousand times the density.
+    params.push_back(effect_param("absorption", "Absorption", ParamType::Float, 0.0f, 1e9f, 1.0f,
                                   "refraction: light absorbed per unit length inside, tinted"));
     params.push_back(effect_param("aperture", "Aperture", ParamType::Float, 0.0f, 10.0f, 0.05f,
                                   "depth of field: lens radius"));
-    params.push_back(effect_param("focus_distance", "Focus distance", ParamType::Float, 0.001f,
+    params.push_back(effect_param("focus_distance", "Focus distance", ParamType::Float, 1e-9f,
                                   1e5f, default_focus_distance(scene),
                                   "depth of field: distance of the sharp plane"));
 }
@@ -155,7 +156,7 @@ void add_builtin_params(Scene& scene) {
     scene.params.push_back(builtin_param("max_steps", "Max steps", ParamType::Int, 1.0f, 100000.0f,
                                          static_cast<float>(march.max_steps),
                                          "distance estimator evaluations per ray at most"));
-    scene.params.push_back(builtin_param("max_distance", "Max distance", ParamType::Float, 0.001f,
+    scene.params.push_back(builtin_param("max_distance", "Max distance", ParamType::Float, 1e-9f,
                                          1e6f, march.max_distance,
                                          "rays stop beyond this distance from the camera"));
     scene.params.push_back(builtin_param("hit_threshold", "Hit threshold", ParamType::Float, 0.001f,
