@@ -424,6 +424,30 @@ INSTANTIATE_TEST_SUITE_P(Cli, CliValidRender, ::testing::ValuesIn(kValidRenders)
 
 // --- list and info ------------------------------------------------------------------------------
 
+// `fgr info --math-check` reports each precision and width's self-test verdict, read from the
+// cache directory: a planted failing verdict is shown as a failure.
+TEST_F(CliTest, InfoReportsTheMathSelfTestVerdicts) {
+    const fs::path cache = dir() / "cache";
+    ::setenv("FGR_CACHE_DIR", cache.c_str(), 1);
+    const RunResult first = run({"info", "--math-check"});
+    ASSERT_EQ(first.exit_code, 0) << first;
+    EXPECT_NE(first.out.find("math float16:  pass"), std::string::npos) << first.out;
+    EXPECT_NE(first.out.find("math float1:   pass"), std::string::npos) << first.out;
+    int verdicts = 0;
+    for (const auto& entry : fs::directory_iterator(cache)) {
+        if (entry.path().extension() != ".txt") continue;
+        ++verdicts;
+        std::ofstream(entry.path()) << "fail: exp: planted\n";
+    }
+    EXPECT_GE(verdicts, 4);  // float at 1, 4, 8 and 16 lanes
+    const RunResult second = run({"info", "--math-check"});
+    ::unsetenv("FGR_CACHE_DIR");
+    ASSERT_EQ(second.exit_code, 0) << second;
+    EXPECT_NE(second.out.find("math float16:  FAIL: exp: planted"), std::string::npos)
+        << second.out;
+    EXPECT_EQ(run({"info"}).out.find("math "), std::string::npos);
+}
+
 TEST_F(CliTest, RenderAllWritesEverySceneListed) {
     const RunResult list = run({"list"});
     ASSERT_EQ(list.exit_code, 0) << list;

@@ -38,7 +38,11 @@ int run_cli(int argc, char** argv) {
     bool verbose = false;
     app.add_flag("-v,--verbose", verbose, "debug logging");
     app.add_subcommand("list", "list the scenes found, with parameters, cameras and camera paths");
-    app.add_subcommand("info", "list OpenCL platforms and devices");
+    bool math_check = false;
+    app.add_subcommand("info", "list OpenCL platforms and devices")
+        ->add_flag("--math-check", math_check,
+                   "also run (or read the cached verdicts of) the device math self-test at every "
+                   "precision and packet width");
     RenderOptions render_options;
     add_render_command(app, render_options);
     ViewCommandOptions view_options;
@@ -71,7 +75,7 @@ int run_cli(int argc, char** argv) {
     try {
         const std::string command = app.get_subcommands().front()->get_name();
         if (command == "list") return command_list();
-        if (command == "info") return command_info();
+        if (command == "info") return command_info(math_check);
         if (command == "view") return command_view(view_options);
         if (command == "new-scene") return command_new_scene(new_scene_options);
         if (command == "bench") return command_bench(bench_options);

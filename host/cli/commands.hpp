@@ -52,7 +52,8 @@ void write_output(const std::filesystem::path& file, const std::string& text);
 // --- fgr list, fgr info --------------------------------------------------------------------------
 
 int command_list();
-int command_info();
+// With `math_check`, each device's math self-test verdict per precision and packet width.
+int command_info(bool math_check);
 
 // --- fgr render ----------------------------------------------------------------------------------
 
