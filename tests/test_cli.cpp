@@ -512,5 +512,114 @@ TEST_F(CliTest, InfoListsADevice) {
     EXPECT_TRUE(contains(result.out, "device")) << result;
 }
 
+// --- Views and images fgr cannot compute ----------------------------------------------------------
+//
+// A render whose camera basis would be NaN or infinite, or whose pixels come out NaN, is an error
+// (one line, non-zero exit, no file), never exit 0 with an image of nothing. These children get
+// their own kernel cache directory.
+
+class CliUncomputable : public CliTest {
+protected:
+    // fgr with `args` in the test's directory; plugins from beside fgr and from `plugin_dir`.
+    RunResult run_with(const std::vector<std::string>& args, const fs::path& plugin_dir = {}) {
+        test::ChildOptions options;
+        options.working_dir = dir();
+        options.environment["FGR_CACHE_DIR"] = cache_.path().string();
+        options.environment["FGR_PLUGIN_PATH"] =
+            plugin_dir.empty() ? std::nullopt : std::optional<std::string>(plugin_dir.string());
+        RunResult result = test::run_child(kFgrExe, args, options);
+        EXPECT_FALSE(result.timed_out) << describe(args) << ": " << result;
+        EXPECT_EQ(result.term_signal, 0) << describe(args) << ": " << result;
+        return result;
+    }
+
+    // A camera path file in the test's directory with these keyframes (JSON objects).
+    std::string path_file(const std::string& name, const std::string& keyframes) {
+        std::ofstream(dir() / name) << R"({"format": "fgr-camera-path", "version": 1, "keyframes": [)"
+                                    << keyframes << "]}";
+        return name;
+    }
+
+    // Exit `code`, one error line mentioning each of `mention` (after the build's log lines, if
+    // it got that far), and nothing but `inputs` left in the directory.
+    void expect_refused(const RunResult& result, int code, const std::vector<std::string>& mention,
+                        const std::vector<std::string>& inputs) {
+        ASSERT_TRUE(result.exited) << result;
+        EXPECT_EQ(result.exit_code, code) << result;
+        RunResult error = result;
+        std::istringstream lines(result.err);
+        error.err.clear();
+        for (std::string line; std::getline(lines, line);) {
+            if (!line.starts_with("fgr: info: ")) error.err += line + "\n";
+        }
+        expect_one_error_line(error);
+        for (const std::string& part : mention) {
+            EXPECT_TRUE(contains(result.err, part)) << "should mention '" << part << "': " << result;
+        }
+        EXPECT_EQ(directory_listing(dir()), inputs) << "left behind: " << joined(directory_listing(dir()));
+    }
+
+private:
+    test::TempDir cache_{"fgr_cli_cache"};
+};
+
+// Each keyframe is fine, but the camera passes through its target half-way: that moment has no
+// view direction.
+TEST_F(CliUncomputable, CameraPathMomentWithoutAViewDirectionIsRefused) {
+    const std::string file = path_file(
+        "cross.json", R"({"time": 0, "position": [2, -2, 1], "target": [0, 0, 0]},
+                         {"time": 1, "position": [0, 0, 0], "target": [2, -2, 1]})");
+    const RunResult result = run_with({"render", "mandelbulb", "-o", out_png().string(), "--width",
+                                       "16", "--height", "12", "--camera-path", file, "--time",
+                                       "0.5"});
+    expect_refused(result, 2, {"camera path 'cross.json' at time 0.5: position equals target"},
+                   {"cross.json"});
+    // Beside that moment the path renders.
+    const RunResult fine = run_with({"render", "mandelbulb", "-o", out_png().string(), "--width",
+                                     "16", "--height", "12", "--camera-path", file, "--time",
+                                     "0.25"});
+    EXPECT_EQ(fine.exit_code, 0) << fine;
+}
+
+TEST_F(CliUncomputable, KeyframesWhoseBasisWouldNotBeFiniteAreRefused) {
+    const std::string huge = path_file(
+        "huge.json", R"({"time": 0, "position": [1e30, 1e30, 1e30], "target": [-1e30, -1e30, -1e30]},
+                        {"time": 1, "position": [2, -2, 1], "target": [0, 0, 0]})");
+    const RunResult result = run_with({"render", "mandelbulb", "-o", out_png().string(), "--width",
+                                       "16", "--height", "12", "--camera-path", huge, "--time",
+                                       "1"});
+    expect_refused(result, 2, {"huge.json", "keyframe 0", "too far apart"}, {"huge.json"});
+
+    const std::string parallel = path_file(
+        "parallel.json", R"({"time": 0, "position": [0, 0, 3], "target": [0, 0, 0]},
+                            {"time": 1, "position": [2, -2, 1], "target": [0, 0, 0]})");
+    const RunResult up = run_with({"render", "mandelbulb", "-o", out_png().string(), "--width",
+                                   "16", "--height", "12", "--camera-path", parallel, "--time",
+                                   "1"});
+    expect_refused(up, 2, {"parallel.json", "keyframe 0", "up is zero or parallel"},
+                   {"huge.json", "parallel.json"});
+}
+
+TEST_F(CliUncomputable, VersionThatOnlyWrapsToOneIsRefused) {
+    std::ofstream(dir() / "v.json")
+        << R"({"format": "fgr-camera-path", "version": 4294967297, "keyframes": [
+              {"time": 0, "position": [2, -2, 1], "target": [0, 0, 0]},
+              {"time": 1, "position": [2, -2, 1.5], "target": [0, 0, 0]}]})";
+    const RunResult result = run_with({"render", "mandelbulb", "-o", out_png().string(), "--width",
+                                       "16", "--height", "12", "--camera-path", "v.json", "--time",
+                                       "0.5"});
+    expect_refused(result, 2, {"v.json", "unsupported \"version\" 4294967297"}, {"v.json"});
+}
+
+// A scene whose colour is NaN: the kernel runs, but the pixels it hits are not an image.
+TEST_F(CliUncomputable, NonFinitePixelsAreAnErrorAndNoFile) {
+    const fs::path plugins = fs::path(FGR_TEST_FIXTURE_DIR) / "bad" / "nan";
+    ASSERT_TRUE(fs::exists(plugins / "nan_colour.so")) << plugins;
+    const RunResult result = run_with({"render", "bad-nan-colour", "-o", out_png().string(),
+                                       "--width", "16", "--height", "12"},
+                                      plugins);
+    expect_refused(result, 1, {"bad-nan-colour", "non-finite colour or depth"}, {});
+}
+
 }  // namespace
 }  // namespace fgr
