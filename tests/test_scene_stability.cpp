@@ -51,7 +51,7 @@ protected:
     }
 
     SceneRig& rig() {
-        static ProgramCache cache{ProgramCache::default_directory()};
+        static ProgramCache cache{std::filesystem::path()};  // in memory: nothing on disk
         static std::map<std::string, SceneRig> rigs;
         SceneRig& found = rigs[GetParam()];
         if (!found.renderer) {
@@ -248,7 +248,7 @@ TEST_P(SceneStability, EveryCameraAndPathRenders) {
 // The GPU layout (one ray per work-item) compiles the same scene source without packets: it must
 // render the same picture as the CPU's packets.
 TEST_P(SceneStability, OneRayPerWorkItemRendersTheSameImage) {
-    ProgramCache cache{ProgramCache::default_directory()};
+    ProgramCache cache{std::filesystem::path()};
     Renderer scalar(device(), cache, scene(), KernelSwitches{1, scene().effects});
     const FrameRequest request{40, 30, scene().cameras.front().view, default_param_values(scene())};
     const Frame one = scalar.render(request);
