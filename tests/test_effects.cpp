@@ -671,6 +671,47 @@ TEST_F(EffectTest, ReflectionsWithNoMirrorsRenderTheSameImageAsWithout) {
     EXPECT_EQ(reflecting.hits, plain.hits);
 }
 
+// IEC 61966-2-1: V = 12.92 L for L <= 0.0031308, else 1.055 L^(1/2.4) - 0.055; code round(255 V).
+// Worked by hand (double precision): 0.001 -> 3.2946 -> 3; 0.0031308 -> 10.3147 -> 10 (the end
+// of the linear segment); 0.18 (mid grey) -> 1.055 * 0.48945 - 0.055 = 0.46136 -> 117.646 -> 118;
+// 0.5 -> 1.055 * 0.74915 - 0.055 = 0.73536 -> 187.516 -> 188; 0.9 -> 243.445 -> 243. A plain
+// 2.2 gamma would give 19, 117 and 186 at 0.0031308, 0.18 and 0.5.
+double srgb_code(double linear) {
+    const double v = linear <= 0.0031308 ? 12.92 * linear : 1.055 * std::pow(linear, 1.0 / 2.4) - 0.055;
+    return 255.0 * v;
+}
+
+TEST(SrgbEncoding, MatchesTheStandardsValues) {
+    const auto code_of = [](float linear) { return int(encode_srgb(linear)); };
+    EXPECT_EQ(code_of(0.0f), 0);
+    EXPECT_EQ(code_of(0.001f), 3);
+    EXPECT_EQ(code_of(0.0031308f), 10);
+    EXPECT_EQ(code_of(0.18f), 118);
+    EXPECT_EQ(code_of(0.5f), 188);
+    EXPECT_EQ(code_of(0.9f), 243);
+    EXPECT_EQ(code_of(1.0f), 255);
+    EXPECT_EQ(code_of(7.0f), 255);
+    EXPECT_EQ(code_of(-0.25f), 0);
+    EXPECT_EQ(code_of(std::nanf("")), 0);
+    // Each code's own linear value (the standard's inverse) encodes to that code exactly.
+    for (int code = 0; code <= 255; ++code) {
+        const double v = code / 255.0;
+        const double linear = v <= 0.04045 ? v / 12.92 : std::pow((v + 0.055) / 1.055, 2.4);
+        EXPECT_EQ(code_of(static_cast<float>(linear)), code) << "linear " << linear;
+    }
+    // Everywhere else within one code of the formula, and never decreasing. (encode_srgb looks
+    // values up in a table of 4097 steps: half a step moves the curve by at most 0.41 codes, where
+    // it is steepest, so values within 0.41 of a rounding boundary may land on the neighbour.)
+    int previous = 0;
+    for (int i = 0; i <= 100000; ++i) {
+        const float linear = static_cast<float>(i) / 100000.0f;
+        const int code = code_of(linear);
+        ASSERT_LE(std::abs(code - srgb_code(linear)), 0.5 + 0.41) << "linear " << linear;
+        ASSERT_GE(code, previous) << "linear " << linear;
+        previous = code;
+    }
+}
+
 TEST_F(EffectTest, ExposureAndToneMappingActAfterTheLinearImage) {
     EXPECT_FLOAT_EQ(tone_map(1.0f, ToneMap::Reinhard), 0.5f);
     EXPECT_FLOAT_EQ(tone_map(3.0f, ToneMap::Reinhard), 0.75f);
