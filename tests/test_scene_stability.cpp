@@ -431,16 +431,6 @@ TEST_P(SceneStability, OneRayPerWorkItemRendersTheSameImage) {
     std::printf("width 1 vs %d: largest %d, %ld pixels over 1 level (first %ld), %ld hit/miss\n",
                 renderer().switches().packet_width, d.largest, d.over_one, d.first_over_one,
                 d.hit_mismatch);
-    if (scene().id == "benchmark" && d.over_one > 0) {
-        // Known kernel bug, for the kernel owner (issue 12 item 9; patch proposed in the branch's
-        // notes): bench_bulb and bench_sponge skip their object for a whole packet when every
-        // lane is more than 0.1 from its bounding sphere, so a far lane's DE is its bound in one
-        // packet and max(bound, DE) in another. Both are bounds, but steps, hits on the bulb's
-        // detail, step-count AO and shadows then depend on the packet. Remove this skip with the
-        // fix (select(..., bound, bound > 0.1f) per lane makes widths 1 and 16 bit-identical).
-        GTEST_SKIP() << "benchmark: width 1 and 16 differ by up to " << d.largest
-                     << " levels in " << d.over_one << " pixels (packet-dependent DE)";
-    }
     EXPECT_EQ(d.hit_mismatch, 0);
     EXPECT_EQ(d.over_one, 0) << "largest difference " << d.largest << " levels, first at pixel ("
                              << d.first_over_one % 41 << ", " << d.first_over_one / 41 << ")";
@@ -475,9 +465,9 @@ TEST_P(SceneStability, NormalAtEveryHitIsFiniteAndUnitLength) {
         }
     }
     ASSERT_GT(hits.size(), 20u);
-    // A scene may skip an object for a whole packet whose lanes are all far from it (the
-    // benchmark's bounding spheres), so a DE depends on the packet it is evaluated in. Each hit
-    // is probed in a packet of copies of itself, which takes every such shortcut the march could.
+    // Each hit is probed in a packet of copies of itself, so a scene that skips an object for a
+    // whole packet of far lanes (the benchmark's bounding spheres) takes the same shortcuts here
+    // as the march could.
     const size_t lanes = static_cast<size_t>(renderer().switches().packet_width);
     std::vector<glm::vec3> copies;
     for (const glm::vec3& hit : hits) copies.insert(copies.end(), lanes, hit);
