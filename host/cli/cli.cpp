@@ -51,16 +51,20 @@ int run_cli(int argc, char** argv) {
     add_new_scene_command(app, new_scene_options);
     BenchOptions bench_options;
     add_bench_command(app, bench_options);
+    CacheOptions cache_options;
+    add_cache_command(app, cache_options);
     if (argc < 2) {
         std::fputs(app.help().c_str(), stdout);
-        return report_error("no command given (commands: list, info, render, view, new-scene, bench)", kExitUsage);
+        return report_error(
+            "no command given (commands: list, info, render, view, new-scene, bench, cache)",
+            kExitUsage);
     }
     if (const std::string first = argv[1]; !first.empty() && first.front() != '-' &&
         first != "list" && first != "info" && first != "render" && first != "view" &&
-        first != "new-scene" && first != "bench") {
+        first != "new-scene" && first != "bench" && first != "cache") {
         return report_error(
             fmt::format(
-                "unknown command '{}' (commands: list, info, render, view, new-scene, bench)",
+                "unknown command '{}' (commands: list, info, render, view, new-scene, bench, cache)",
                 first),
                             kExitUsage);
     }
@@ -79,6 +83,7 @@ int run_cli(int argc, char** argv) {
         if (command == "view") return command_view(view_options);
         if (command == "new-scene") return command_new_scene(new_scene_options);
         if (command == "bench") return command_bench(bench_options);
+        if (command == "cache") return command_cache(cache_options);
         return command_render(render_options);
     } catch (const UsageError& error) {
         return report_error(error.what(), kExitUsage);
