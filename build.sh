@@ -5,11 +5,18 @@
 #   ./build.sh test     install what is missing, build with warnings as errors, run every test
 #                       (what CI runs)
 #
-# Needs root or sudo only when packages are missing. BUILD_DIR (default: build) picks the build tree.
+# and for CI's second job:
+#
+#   ./build.sh test-sanitize   build with AddressSanitizer + UndefinedBehaviorSanitizer in its own
+#                              tree and run the tests there (any report fails them)
+#
+# Needs root or sudo only when packages are missing. BUILD_DIR (default: build) picks the build
+# tree, SANITIZE_BUILD_DIR (default: build-sanitize) the sanitizer build's.
 set -euo pipefail
 
 repo=$(cd "$(dirname "$0")" && pwd)
 build_dir=${BUILD_DIR:-$repo/build}
+sanitize_build_dir=${SANITIZE_BUILD_DIR:-$repo/build-sanitize}
 jobs=$(nproc)
 
 # Debian packages fgr needs to build and test: compiler and build tools, OpenCL (PoCL runs it on
@@ -37,28 +44,37 @@ install_missing_packages() {
     DEBIAN_FRONTEND=noninteractive "${sudo[@]}" apt-get install -y -q --no-install-recommends "${missing[@]}"
 }
 
-# build [CMAKE_OPTION...]: configure (Release) and build in $build_dir.
+# build DIR [CMAKE_OPTION...]: configure (Release unless an option says otherwise) and build in DIR.
 build() {
-    cmake -S "$repo" -B "$build_dir" -G Ninja -DCMAKE_BUILD_TYPE=Release "$@"
-    cmake --build "$build_dir" -j "$jobs"
+    local dir=$1
+    shift
+    cmake -S "$repo" -B "$dir" -G Ninja -DCMAKE_BUILD_TYPE=Release "$@"
+    cmake --build "$dir" -j "$jobs"
 }
 
 command=${1:-render}
 case "$command" in
     render)
         install_missing_packages
-        build -DFGR_WERROR=OFF
+        build "$build_dir" -DFGR_WERROR=OFF
         "$build_dir/bin/fgr" render mandelbulb -o "${2:-mandelbulb.png}"
         ;;
     test)
         install_missing_packages
         # CI's build: any compiler warning fails it.
-        build -DFGR_WERROR=ON
+        build "$build_dir" -DFGR_WERROR=ON
         # Each test case runs as its own process; two at a time keeps a 2-core machine busy.
         ctest --test-dir "$build_dir" --output-on-failure -j "$jobs"
         ;;
+    test-sanitize)
+        install_missing_packages
+        # Instrumented throughout (FGR_SANITIZE); the runtimes' options and the third-party
+        # suppressions are in sanitizers/. A report ends the test's process with exit code 86.
+        build "$sanitize_build_dir" -DFGR_SANITIZE=ON -DFGR_WERROR=ON
+        ctest --test-dir "$sanitize_build_dir" --output-on-failure -j "$jobs"
+        ;;
     *)
-        echo "usage: ./build.sh [render [OUT.png] | test]" >&2
+        echo "usage: ./build.sh [render [OUT.png] | test | test-sanitize]" >&2
         exit 2
         ;;
 esac
