@@ -92,7 +92,7 @@ TEST(AbiLayout, MarchSettings) {
 }
 
 TEST(AbiLayout, SceneDesc) {
-    PIN_SIZE(fgr_scene_desc, 152);
+    PIN_SIZE(fgr_scene_desc, 160);
     PIN_OFFSET(fgr_scene_desc, id, 8);
     PIN_OFFSET(fgr_scene_desc, name, 16);
     PIN_OFFSET(fgr_scene_desc, description, 24);
@@ -108,6 +108,8 @@ TEST(AbiLayout, SceneDesc) {
     PIN_OFFSET(fgr_scene_desc, light_count, 104);
     PIN_OFFSET(fgr_scene_desc, effects, 112);
     PIN_OFFSET(fgr_scene_desc, march, 120);
+    // ABI 1.1: after the 1.0 struct's 152 bytes (its end padded to the pointer alignment).
+    PIN_OFFSET(fgr_scene_desc, source_length, 152);
 }
 
 TEST(AbiVersion, PackingMacros) {
@@ -169,7 +171,8 @@ struct SceneBuilder {
                 lights.data(),
                 static_cast<uint32_t>(lights.size()),
                 FGR_EFFECT_ALL_V1,
-                {FGR_HEADER(fgr_march_settings), 256, 10.0f, 1.5f, 12, 0.9f}};
+                {FGR_HEADER(fgr_march_settings), 256, 10.0f, 1.5f, 12, 0.9f},
+                0};
         // clang-format on
     }
     SceneBuilder(const SceneBuilder&) = delete;
@@ -323,6 +326,48 @@ TEST_F(CopyScene, RefusesNullDescription) { expect_refused(nullptr, "NULL"); }
 TEST_F(CopyScene, RefusesTooSmallStruct) {
     built.desc.header.struct_size = offsetof(fgr_scene_desc, march);
     expect_refused("description struct too small (120 bytes)");
+}
+
+// --- The source's length (ABI 1.1) ----------------------------------------------------------------
+
+TEST_F(CopyScene, SourceIsReadToItsLengthWithoutANul) {
+    const std::string text = "real scene_de(vec3 p, PARAMS) { return v3_length(p) - 1.0f; }";
+    // Exactly the source's bytes, no NUL after them (the vector's own end is all there is).
+    const std::vector<char> unterminated(text.begin(), text.end());
+    built.desc.source = unterminated.data();
+    built.desc.source_length = unterminated.size();
+    EXPECT_EQ(expect_accepted().source, text);
+    // A NUL within the length ends the source there, so sizeof an array is a fine length.
+    built.desc.source = "real scene_de(vec3 p, PARAMS) { return p.x; }\0junk";
+    built.desc.source_length = sizeof("real scene_de(vec3 p, PARAMS) { return p.x; }\0junk");
+    EXPECT_EQ(expect_accepted().source, "real scene_de(vec3 p, PARAMS) { return p.x; }");
+    // A shorter length cuts the source.
+    built.desc.source_length = 4;
+    EXPECT_EQ(expect_accepted().source, "real");
+}
+
+TEST_F(CopyScene, SourceLengthIsReadOnlyWhenTheStructCoversIt) {
+    const std::string text = "real scene_de(vec3 p, PARAMS) { return p.x; }";
+    built.desc.source = text.c_str();
+    built.desc.source_length = 4;
+    built.desc.header.struct_size = offsetof(fgr_scene_desc, source_length);  // a 1.0 plugin
+    EXPECT_EQ(expect_accepted().source, text) << "source_length read beyond struct_size";
+    built.desc.header.struct_size = sizeof(fgr_scene_desc);
+    built.desc.source_length = 0;  // 0: NUL-terminated, as in 1.0
+    EXPECT_EQ(expect_accepted().source, text);
+}
+
+TEST_F(CopyScene, RefusesSourceLengthOverTheLimitUnread) {
+    const char unterminated[4] = {'r', 'e', 'a', 'l'};
+    built.desc.source = unterminated;
+    built.desc.source_length = (4u << 20) + 2;
+    expect_refused("source longer than 4194304 bytes (source_length 4194306)");
+    built.desc.source = nullptr;
+    built.desc.source_length = 10;
+    expect_refused("source is NULL");
+    built.desc.source = "";
+    built.desc.source_length = 1;
+    expect_refused("source is empty");
 }
 
 TEST_F(CopyScene, RefusesOtherMajorVersion) {

@@ -1,7 +1,9 @@
-// The ABI 1.0 freeze. tests/fixtures/frozen_v1 builds a plugin against the frozen copy of the 1.0
-// header (tests/abi_v1/fgr/plugin.h); here the current host loads it with every field intact and
-// renders it, its table of 1.0 offsets and sizes matches the current header's, the same plugin
-// claiming major version 2 is refused by name, and the frozen copy itself has not changed.
+// The ABI 1.0 and 1.1 freezes. tests/fixtures/frozen_v1 builds a plugin against the frozen copy of
+// the 1.0 header (tests/abi_v1/fgr/plugin.h); here the current host loads it with every field
+// intact and renders it, its table of 1.0 offsets and sizes matches the current header's, the same
+// plugin claiming major version 2 is refused by name, and the frozen copy itself has not changed.
+// tests/fixtures/frozen_v1_1 does the same for 1.1 (tests/abi_v1_1), whose one addition is the
+// source's length.
 
 #include <dlfcn.h>
 #include <gtest/gtest.h>
@@ -28,6 +30,7 @@
 #include "fgr/program_cache.hpp"
 #include "fgr/renderer.hpp"
 #include "fixtures/frozen_v1/frozen_layout.h"
+#include "fixtures/frozen_v1_1/frozen_layout_v1_1.h"
 
 namespace fgr {
 namespace {
@@ -37,16 +40,25 @@ const fs::path kFrozenDir = fs::path(FGR_TEST_FIXTURE_DIR) / "frozen_v1";
 const fs::path kFrozenPlugin = kFrozenDir / "frozen_v1.so";
 const fs::path kMajor2Plugin = kFrozenDir / "frozen_v1_major2.so";
 const fs::path kFrozenHeader = fs::path(__FILE__).parent_path() / "abi_v1" / "fgr" / "plugin.h";
+const fs::path kFrozenV1_1Plugin = fs::path(FGR_TEST_FIXTURE_DIR) / "frozen_v1_1" / "frozen_v1_1.so";
+const fs::path kFrozenV1_1Header =
+    fs::path(__FILE__).parent_path() / "abi_v1_1" / "fgr" / "plugin.h";
 
 // FNV-1a (64 bit) of tests/abi_v1/fgr/plugin.h as committed. Never update it: see
 // FrozenHeaderNeverChanges.
 constexpr uint64_t kFrozenHeaderHash = 0x725cb0f5e489cfb4u;
+// The same of tests/abi_v1_1/fgr/plugin.h.
+constexpr uint64_t kFrozenV1_1HeaderHash = 0x5f1aab15c211936u;
 
 // How many rows ABI 1.0 has in each list of frozen_layout.h: a row dropped from a list would
 // otherwise quietly stop being checked.
 constexpr std::size_t kV1StructCount = 8;
 constexpr std::size_t kV1FieldCount = 55;
 constexpr std::size_t kV1ConstantCount = 18;
+// ABI 1.1 added one field: fgr_scene_desc::source_length.
+constexpr std::size_t kV1_1StructCount = kV1StructCount;
+constexpr std::size_t kV1_1FieldCount = kV1FieldCount + 1;
+constexpr std::size_t kV1_1ConstantCount = kV1ConstantCount;
 
 Scene load_frozen_scene() {
     LoadResult loaded = load_scene_plugin(kFrozenPlugin);
@@ -231,54 +243,103 @@ const std::vector<fgr_frozen_field_row> kCurrentFields = {FGR_FROZEN_V1_FIELDS(C
 const std::vector<fgr_frozen_constant_row> kCurrentConstants = {
     FGR_FROZEN_V1_CONSTANTS(CURRENT_CONSTANT_ROW)};
 
-TEST(AbiFreeze, CurrentHeaderKeepsTheV1Layout) {
-    const Library library(dlopen(kFrozenPlugin.c_str(), RTLD_NOW | RTLD_LOCAL));
-    ASSERT_TRUE(library) << kFrozenPlugin << ": " << dlerror();
-    const auto layout_fn = find_symbol<fgr_frozen_layout_fn>(library, FGR_FROZEN_LAYOUT_SYMBOL);
-    ASSERT_NE(layout_fn, nullptr) << "no " << FGR_FROZEN_LAYOUT_SYMBOL << " in " << kFrozenPlugin;
+const std::vector<fgr_frozen_struct_row> kCurrentV1_1Structs = {
+    FGR_FROZEN_V1_1_STRUCTS(CURRENT_STRUCT_ROW)};
+const std::vector<fgr_frozen_field_row> kCurrentV1_1Fields = {
+    FGR_FROZEN_V1_1_FIELDS(CURRENT_FIELD_ROW)};
+const std::vector<fgr_frozen_constant_row> kCurrentV1_1Constants = {
+    FGR_FROZEN_V1_1_CONSTANTS(CURRENT_CONSTANT_ROW)};
+
+// The frozen plugin's table against the current header's rows for the same lists: nothing moved,
+// shrank, changed alignment or value. Then its description's header is what FGR_HEADER gave it:
+// the frozen struct size and `version`.
+void expect_layout_kept(const fs::path& plugin, const char* layout_symbol, uint32_t version,
+                        const std::vector<fgr_frozen_struct_row>& structs,
+                        const std::vector<fgr_frozen_field_row>& fields,
+                        const std::vector<fgr_frozen_constant_row>& constants,
+                        std::size_t struct_count, std::size_t field_count,
+                        std::size_t constant_count) {
+    const Library library(dlopen(plugin.c_str(), RTLD_NOW | RTLD_LOCAL));
+    ASSERT_TRUE(library) << plugin << ": " << dlerror();
+    const auto layout_fn = find_symbol<fgr_frozen_layout_fn>(library, layout_symbol);
+    ASSERT_NE(layout_fn, nullptr) << "no " << layout_symbol << " in " << plugin;
     const fgr_frozen_layout* frozen = layout_fn();
     ASSERT_NE(frozen, nullptr);
 
-    ASSERT_EQ(frozen->struct_count, kV1StructCount) << "frozen_layout.h must list every 1.0 struct";
-    ASSERT_EQ(frozen->field_count, kV1FieldCount) << "frozen_layout.h must list every 1.0 field";
-    ASSERT_EQ(frozen->constant_count, kV1ConstantCount)
-        << "frozen_layout.h must list every 1.0 constant";
-    ASSERT_EQ(kCurrentStructs.size(), kV1StructCount);
-    ASSERT_EQ(kCurrentFields.size(), kV1FieldCount);
-    ASSERT_EQ(kCurrentConstants.size(), kV1ConstantCount);
+    ASSERT_EQ(frozen->struct_count, struct_count) << "the layout table must list every struct";
+    ASSERT_EQ(frozen->field_count, field_count) << "the layout table must list every field";
+    ASSERT_EQ(frozen->constant_count, constant_count)
+        << "the layout table must list every constant";
+    ASSERT_EQ(structs.size(), struct_count);
+    ASSERT_EQ(fields.size(), field_count);
+    ASSERT_EQ(constants.size(), constant_count);
 
-    for (std::size_t i = 0; i < kV1StructCount; ++i) {
-        const fgr_frozen_struct_row& v1 = frozen->structs[i];
-        const fgr_frozen_struct_row& now = kCurrentStructs[i];
-        ASSERT_STREQ(v1.name, now.name);
+    for (std::size_t i = 0; i < struct_count; ++i) {
+        const fgr_frozen_struct_row& then = frozen->structs[i];
+        const fgr_frozen_struct_row& now = structs[i];
+        ASSERT_STREQ(then.name, now.name);
         // Appending fields may grow a struct; it may never shrink it.
-        EXPECT_GE(now.size, v1.size) << v1.name << " is smaller than in ABI 1.0";
-        // A 1.0 plugin's arrays have the 1.0 stride; the host refuses a stride that is not a
-        // multiple of the current alignment, so an appended field must not raise it.
-        EXPECT_EQ(now.align, v1.align) << v1.name << " changed its alignment";
+        EXPECT_GE(now.size, then.size) << then.name << " is smaller than in " << plugin;
+        // A plugin's arrays have its stride; the host refuses a stride that is not a multiple of
+        // the current alignment, so an appended field must not raise it.
+        EXPECT_EQ(now.align, then.align) << then.name << " changed its alignment";
     }
-    for (std::size_t i = 0; i < kV1FieldCount; ++i) {
-        const fgr_frozen_field_row& v1 = frozen->fields[i];
-        const fgr_frozen_field_row& now = kCurrentFields[i];
-        ASSERT_STREQ(v1.name, now.name);
-        EXPECT_EQ(now.offset, v1.offset) << v1.name << " moved since ABI 1.0";
-        EXPECT_EQ(now.size, v1.size) << v1.name << " changed size since ABI 1.0";
+    for (std::size_t i = 0; i < field_count; ++i) {
+        const fgr_frozen_field_row& then = frozen->fields[i];
+        const fgr_frozen_field_row& now = fields[i];
+        ASSERT_STREQ(then.name, now.name);
+        EXPECT_EQ(now.offset, then.offset) << then.name << " moved since " << plugin;
+        EXPECT_EQ(now.size, then.size) << then.name << " changed size since " << plugin;
     }
-    for (std::size_t i = 0; i < kV1ConstantCount; ++i) {
-        const fgr_frozen_constant_row& v1 = frozen->constants[i];
-        const fgr_frozen_constant_row& now = kCurrentConstants[i];
-        ASSERT_STREQ(v1.name, now.name);
-        EXPECT_EQ(now.value, v1.value) << v1.name << " changed value since ABI 1.0";
+    for (std::size_t i = 0; i < constant_count; ++i) {
+        const fgr_frozen_constant_row& then = frozen->constants[i];
+        const fgr_frozen_constant_row& now = constants[i];
+        ASSERT_STREQ(then.name, now.name);
+        EXPECT_EQ(now.value, then.value) << then.name << " changed value since " << plugin;
     }
 
-    // The plugin filled its headers as a 1.0 plugin does (FGR_HEADER): the 1.0 size and version.
+    // The plugin filled its headers as plugins do (FGR_HEADER): the frozen size and version.
     const auto entry = find_symbol<fgr_scene_entry_fn>(library, FGR_SCENE_ENTRY_SYMBOL);
     ASSERT_NE(entry, nullptr);
     const fgr_scene_desc* desc = entry();
     ASSERT_NE(desc, nullptr);
-    EXPECT_EQ(desc->header.struct_size, frozen->structs[kV1StructCount - 1].size);
-    EXPECT_EQ(desc->header.abi_version, 0x00010000u);
-    EXPECT_EQ(std::string_view(frozen->structs[kV1StructCount - 1].name), "fgr_scene_desc");
+    EXPECT_EQ(desc->header.struct_size, frozen->structs[struct_count - 1].size);
+    EXPECT_EQ(desc->header.abi_version, version);
+    EXPECT_EQ(std::string_view(frozen->structs[struct_count - 1].name), "fgr_scene_desc");
+}
+
+TEST(AbiFreeze, CurrentHeaderKeepsTheV1Layout) {
+    expect_layout_kept(kFrozenPlugin, FGR_FROZEN_LAYOUT_SYMBOL, 0x00010000u, kCurrentStructs,
+                       kCurrentFields, kCurrentConstants, kV1StructCount, kV1FieldCount,
+                       kV1ConstantCount);
+}
+
+TEST(AbiFreeze, CurrentHeaderKeepsTheV1_1Layout) {
+    expect_layout_kept(kFrozenV1_1Plugin, FGR_FROZEN_V1_1_LAYOUT_SYMBOL, 0x00010001u,
+                       kCurrentV1_1Structs, kCurrentV1_1Fields, kCurrentV1_1Constants,
+                       kV1_1StructCount, kV1_1FieldCount, kV1_1ConstantCount);
+}
+
+// The 1.1 plugin's source has no NUL: its source_length says where it ends, and the bytes after
+// it ("NOT-SRC!") are not part of it.
+TEST(AbiFreeze, FrozenV1_1PluginLoadsItsSourceByLengthAndRenders) {
+    LoadResult loaded = load_scene_plugin(kFrozenV1_1Plugin);
+    ASSERT_TRUE(loaded.scene) << kFrozenV1_1Plugin << ": " << loaded.error;
+    const Scene& scene = *loaded.scene;
+    EXPECT_EQ(scene.id, "frozen-v1-1");
+    EXPECT_EQ(scene.source,
+              "real scene_de(vec3 p, PARAMS) { return v3_length(p) - param_radius; }\n");
+    EXPECT_EQ(scene.plugin_file, kFrozenV1_1Plugin);
+
+    const ComputeDevice device = open_device(-1);
+    ProgramCache cache{fs::path()};
+    Renderer renderer(device, cache, scene, {preferred_packet_width(device.info), scene.effects});
+    FrameRequest request;
+    request.width = 32;
+    request.height = 24;
+    request.view = scene.cameras.front().view;
+    request.params = default_param_values(scene);
+    EXPECT_GT(renderer.render(request).hits, 0);
 }
 
 // --- (d) A plugin for another major version is refused, by file name ----------------------------
@@ -327,6 +388,15 @@ std::string hex(uint64_t value) {
     std::ostringstream out;
     out << "0x" << std::hex << value;
     return out.str();
+}
+
+TEST(AbiFreeze, FrozenV1_1HeaderNeverChanges) {
+    ASSERT_TRUE(fs::is_regular_file(kFrozenV1_1Header)) << kFrozenV1_1Header << " is missing";
+    const uint64_t hash = fnv1a64(test::read_file(kFrozenV1_1Header));
+    EXPECT_EQ(hash, kFrozenV1_1HeaderHash)
+        << kFrozenV1_1Header << " has changed (FNV-1a " << hex(hash) << ", frozen "
+        << hex(kFrozenV1_1HeaderHash) << "). It is the ABI 1.1 header exactly as released and "
+        << "must never change: restore it from git.";
 }
 
 TEST(AbiFreeze, FrozenHeaderNeverChanges) {

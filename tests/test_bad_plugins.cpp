@@ -113,6 +113,8 @@ const BrokenFixture kBrokenFixtures[] = {
     {"million_params.so", "parameter count 1000000 outside [0, 1024]"},
     {"huge_source.so", "source longer than 4194304 bytes"},
     {"entry_null.so", "entry returned NULL"},
+    // Read, the NUL-less source would fault at its end: refused for source_length alone.
+    {"long_source_length.so", "source longer than 4194304 bytes (source_length 5242880)"},
 };
 
 void PrintTo(const BrokenFixture& fixture, std::ostream* out) { *out << fixture.file; }
@@ -232,6 +234,20 @@ TEST(BadPlugin, HugeSourceIsRefusedWithoutBeingCopied) {
     // host would add another 100 MiB.
     EXPECT_GE(grown, 90L * 1024) << "the fixture did not allocate its source";
     EXPECT_LT(grown, 150L * 1024) << "the host copied (part of) the 100 MiB source";
+}
+
+// --- A source given by its length (ABI 1.1) -----------------------------------------------------
+
+// The fixture's source has no NUL and ends where readable memory ends: reading one byte past its
+// source_length faults, so this test crashes unless the host stops there.
+TEST(BadPlugin, SourceWithoutItsNulIsReadToItsLengthOnly) {
+    const fs::path file = kBadDir / "length" / "no_nul_source.so";
+    for (int attempt = 0; attempt < 2; ++attempt) {
+        const LoadResult loaded = load_scene_plugin(file);
+        ASSERT_TRUE(loaded.scene.has_value()) << loaded.error;
+        EXPECT_EQ(loaded.scene->source,
+                  "real scene_de(vec3 p, PARAMS) { return v3_length(p) - param_scale; }\n");
+    }
 }
 
 // --- A kernel that does not compile --------------------------------------------------------------
@@ -795,6 +811,13 @@ void mutate(Rng& rng, Arena& arena, DescSpec& spec) {
             } else {
                 desc.source = any_string(rng, arena);
             }
+            if (desc.source != nullptr && rng.chance(0.3)) {
+                // ABI 1.1: a length within the string and its NUL (all that is behind it), or
+                // one over the limit (refused before anything is read).
+                const uint64_t bytes = std::strlen(desc.source) + 1;
+                desc.source_length = rng.chance(0.2) ? uint64_t{1} << rng.range(22, 40)
+                                                     : 1 + rng.below(bytes);
+            }
             break;
         case 4:
             desc.source_name = any_string(rng, arena);
@@ -1024,7 +1047,13 @@ void check_accepted(const Scene& scene, const fgr_scene_desc& desc) {
     EXPECT_EQ(scene.name, desc.name);
     EXPECT_FALSE(scene.source.empty());
     EXPECT_LE(scene.source.size(), std::size_t{4} << 20);
-    EXPECT_EQ(scene.source, desc.source);
+    // ABI 1.1: at most source_length bytes when the struct has it, up to a NUL.
+    const bool has_length = desc.header.struct_size >= offsetof(fgr_scene_desc, source_length) +
+                                                          sizeof(desc.source_length) &&
+                            desc.source_length > 0;
+    EXPECT_EQ(scene.source, has_length ? std::string(desc.source, strnlen(desc.source,
+                                                                            desc.source_length))
+                                       : std::string(desc.source));
     EXPECT_TRUE(scene.plugin_file.empty());
 
     // Parameters: the scene's own (valid, unique, not built-in names), then the built-ins.

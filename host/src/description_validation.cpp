@@ -36,6 +36,9 @@ constexpr std::size_t kV1CameraPathSize =
 constexpr std::size_t kV1LightSize = offsetof(fgr_light, intensity) + sizeof(fgr_light::intensity);
 constexpr std::size_t kV1MarchSize =
     offsetof(fgr_march_settings, step_factor) + sizeof(fgr_march_settings::step_factor);
+// ABI 1.1 appended source_length to the scene description.
+constexpr std::size_t kV1_1SceneDescSize =
+    offsetof(fgr_scene_desc, source_length) + sizeof(fgr_scene_desc::source_length);
 
 constexpr std::size_t kMaxIdLength = 63;
 constexpr std::size_t kMaxSourceBytes = 4u << 20;
@@ -462,6 +465,21 @@ void check_scene_header(const fgr_scene_desc& desc) {
     }
 }
 
+// The source: NUL-terminated (ABI 1.0, or source_length 0), or at most source_length bytes, ending
+// early at a NUL, so a source without one is never read past its end.
+std::string copy_source(const fgr_scene_desc& desc) {
+    const uint64_t length = desc.header.struct_size >= kV1_1SceneDescSize ? desc.source_length : 0;
+    if (length == 0) return bounded_string(desc.source, kMaxSourceBytes, "source");
+    if (desc.source == nullptr) fail("source is NULL");
+    // A NUL-terminated source of the largest size has one byte more than it.
+    if (length > kMaxSourceBytes + 1) {
+        fail("source longer than {} bytes (source_length {})", kMaxSourceBytes, length);
+    }
+    const std::size_t bytes = strnlen(desc.source, static_cast<std::size_t>(length));
+    if (bytes > kMaxSourceBytes) fail("source longer than {} bytes", kMaxSourceBytes);
+    return std::string(desc.source, bytes);
+}
+
 Scene copy_checked(const fgr_scene_desc& desc) {
     check_scene_header(desc);
     Scene scene;
@@ -472,7 +490,7 @@ Scene copy_checked(const fgr_scene_desc& desc) {
     scene.name = bounded_string(desc.name, kMaxTextLength, "scene name");
     if (scene.name.empty()) fail("scene name is empty");
     scene.description = bounded_string(desc.description, kMaxTextLength, "scene description");
-    scene.source = bounded_string(desc.source, kMaxSourceBytes, "source");
+    scene.source = copy_source(desc);
     if (scene.source.empty()) fail("source is empty");
     scene.source_name =
         optional_string(desc.source_name, kMaxTextLength, "source name", scene.id + ".cl");

@@ -20,7 +20,8 @@
  * Ownership: every pointer in these structs is owned by the plugin and must stay valid and unchanged
  * from the moment fgr_scene_entry returns until the host unloads the library. The host copies
  * everything it keeps while validating the description, so it never writes through these pointers
- * and never frees them. All strings are NUL-terminated UTF-8.
+ * and never frees them. All strings are NUL-terminated UTF-8, except that the scene's `source` may
+ * instead be given a length (fgr_scene_desc::source_length, ABI 1.1).
  *
  * This header is C11 and compiles unchanged as C++.
  */
@@ -34,7 +35,7 @@ extern "C" {
 #endif
 
 #define FGR_ABI_VERSION_MAJOR 1u
-#define FGR_ABI_VERSION_MINOR 0u
+#define FGR_ABI_VERSION_MINOR 1u
 /* Packed as (major << 16) | minor. */
 #define FGR_ABI_VERSION ((FGR_ABI_VERSION_MAJOR << 16) | FGR_ABI_VERSION_MINOR)
 #define FGR_ABI_MAJOR(version) ((uint32_t)(version) >> 16)
@@ -165,7 +166,8 @@ typedef struct fgr_march_settings {
 } fgr_march_settings;
 
 /* ---------------------------------------------------------------------------------------------
- * The scene.
+ * The scene. Fields after `march` were appended in later minor versions (see each one's comment);
+ * fgr_march_settings can therefore no longer grow: new march settings go into the scene itself.
  *
  * OpenCL source contract (see sdk/README.md): the source defines
  *     real scene_de(vec3 p, PARAMS)
@@ -179,7 +181,8 @@ typedef struct fgr_scene_desc {
     const char* id;          /* [a-z][a-z0-9_-]*, at most 63 chars; what users type */
     const char* name;        /* display name */
     const char* description; /* one line */
-    const char* source;      /* OpenCL C source of the scene, at most 4 MiB */
+    const char* source;      /* OpenCL C source of the scene, at most 4 MiB; NUL-terminated
+                                unless source_length gives its length */
     const char* source_name; /* file name used in compiler messages, e.g. "mandelbulb.cl" */
 
     const fgr_param_desc* params; /* params[0 .. param_count), may be NULL when the count is 0 */
@@ -196,6 +199,12 @@ typedef struct fgr_scene_desc {
 
     uint64_t effects; /* OR of fgr_effect_flag */
     fgr_march_settings march;
+
+    /* ABI 1.1. How many bytes `source` points to: the host reads no further, and the source ends
+     * at the first NUL among them or after them, so it need not be NUL-terminated. At most
+     * 4 MiB + 1 (a NUL-terminated 4 MiB source). 0, or a plugin built against 1.0, means that
+     * `source` is NUL-terminated. FGR_SCENE (fgr/scene_helpers.h) fills it for a source array. */
+    uint64_t source_length;
 } fgr_scene_desc;
 
 /* The entry point. Must return the same pointer every call, or NULL on failure. */

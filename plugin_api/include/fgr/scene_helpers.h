@@ -83,13 +83,27 @@
 #define FGR_MARCH(steps, distance, threshold, iterations, step_factor) \
     { FGR_HEADER(fgr_march_settings), steps, distance, threshold, iterations, step_factor }
 
+/* fgr_scene_desc::source_length for `source`: the size of a char array (its NUL included: the
+ * source ends there), 0 ("NUL-terminated") for a pointer, whose size says nothing. */
+#ifdef __cplusplus
+template <typename T>
+constexpr uint64_t fgr_source_length(const T&) { return 0; }
+template <size_t N>
+constexpr uint64_t fgr_source_length(const char (&)[N]) { return N; }
+#define FGR_SOURCE_LENGTH(source) fgr_source_length(source)
+#else
+#define FGR_SOURCE_LENGTH(source)                                  \
+    _Generic(&(source), const char(*)[sizeof(source)]: (uint64_t)sizeof(source), \
+             char(*)[sizeof(source)]: (uint64_t)sizeof(source), default: (uint64_t)0)
+#endif
+
 /* A whole scene description from static arrays of params, cameras, camera paths and lights. */
 #define FGR_SCENE(id, name, description, source, source_name, params, cameras, paths, lights,   \
                   effects, march)                                                                 \
     {                                                                                             \
         FGR_HEADER(fgr_scene_desc), id, name, description, source, source_name, params,           \
             FGR_COUNT(params), cameras, FGR_COUNT(cameras), paths, FGR_COUNT(paths), lights,      \
-            FGR_COUNT(lights), effects, march                                                     \
+            FGR_COUNT(lights), effects, march, FGR_SOURCE_LENGTH(source)                          \
     }
 
 #endif /* FGR_SCENE_HELPERS_H */
