@@ -5,10 +5,12 @@
 #include <set>
 #include <sstream>
 
+#include <fmt/format.h>
 #include <gtest/gtest.h>
 
 #include "child_process.hpp"
 #include "fgr/accuracy.hpp"
+#include "fgr/parameters.hpp"
 #include "test_scenes.hpp"
 
 namespace fgr {
@@ -52,10 +54,19 @@ TEST(ParetoFront, KeepsOnlyPointsNothingBeatsInTimeAndError) {
     for (size_t i = 0; i < points.size(); ++i) EXPECT_EQ(points[i].pareto, expected[i]) << i;
 }
 
+// Every knob of the sweep must reach the image: each swept setting's point differs from the
+// default point in its error against the reference or in its work (renders are deterministic,
+// so a knob that does nothing reproduces the default's figures exactly). The Menger sponge, where
+// every knob has something to act on at 40x30: a sphere has no DE iterations, and the
+// Mandelbulb's rays all escape in under 6 iterations at this size (6, 9 and 18 give the default's
+// image exactly, as the README's sweep table shows at 320x240). Where the effect's direction is
+// certain it is checked too: a looser hit threshold stops rays sooner (fewer steps, more
+// silhouette pixels disagree), fewer allowed steps cap the work, a smaller step factor or plain
+// steps take more of them.
 TEST(AccuracySweep, MeasuresEveryKnobAgainstTheReference) {
     const ComputeDevice device = open_device(-1);
     ProgramCache cache{std::filesystem::path()};
-    const Scene scene = test::sphere_scene();
+    const Scene scene = test::built_scene("menger.so");
     AccuracySettings settings;
     settings.width = 40;
     settings.height = 30;
@@ -90,6 +101,16 @@ TEST(AccuracySweep, MeasuresEveryKnobAgainstTheReference) {
                                                                   : "precision=float"),
               std::string::npos);
     EXPECT_TRUE(any_pareto);
+    const AccuracyPoint& defaults = report.points.front();
+    for (const AccuracyPoint& p : report.points) {
+        if (p.knob == "default") continue;
+        const bool same = p.error.rmse == defaults.error.rmse &&
+                          p.error.hit_mismatch_percent == defaults.error.hit_mismatch_percent &&
+                          p.error.mean_depth_error == defaults.error.mean_depth_error &&
+                          p.steps_per_pixel == defaults.steps_per_pixel;
+        EXPECT_FALSE(same) << p.knob << "=" << p.value
+                           << " gives the default's image and work: the knob does nothing";
+    }
     // A loose hit threshold fattens silhouettes: more pixels disagree with the reference's
     // (threshold 0.1) hit/miss than with a tight one.
     double tight = -1.0, loose = -1.0;
@@ -110,7 +131,16 @@ TEST(AccuracySweep, MeasuresEveryKnobAgainstTheReference) {
     const double default_steps = steps_of("default", "");
     EXPECT_GT(default_steps, 1.0);
     EXPECT_GT(steps_of("hit_threshold", "0.25"), default_steps);
+    EXPECT_LT(steps_of("hit_threshold", "8"), default_steps);
     EXPECT_GT(steps_of("over_relaxation", "1"), default_steps);
+    const double max_steps = param_value(scene, default_param_values(scene), "max_steps");
+    const std::string eighth = fmt::format("{:.4g}", std::round(max_steps / 8));
+    EXPECT_GE(steps_of("max_steps", eighth), 0.0) << "no max_steps=" << eighth << " point";
+    EXPECT_LE(steps_of("max_steps", eighth), max_steps / 8);
+    EXPECT_LE(steps_of("max_steps", eighth), default_steps);
+    const double step_factor = param_value(scene, default_param_values(scene), "step_factor");
+    const std::string smaller = fmt::format("{:.4g}", step_factor * 0.6);
+    EXPECT_GT(steps_of("step_factor", smaller), default_steps) << "step_factor=" << smaller;
 
     std::istringstream csv(accuracy_csv(report));
     std::string line;

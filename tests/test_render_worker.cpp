@@ -18,6 +18,7 @@
 #include "fgr/opencl_device.hpp"
 #include "fgr/parameters.hpp"
 #include "fgr/plugin.h"
+#include "fgr/precision.hpp"
 #include "fgr/program_cache.hpp"
 #include "fgr/renderer.hpp"
 #include "fgr/viewer/render_worker.hpp"
@@ -38,6 +39,19 @@ std::vector<std::shared_ptr<const Scene>> worker_scenes() {
     broken.id = "broken";
     return {std::make_shared<const Scene>(test::sphere_scene()),
             std::make_shared<const Scene>(broken)};
+}
+
+// Pixels of two same-sized images with a channel more than one 8-bit level apart.
+long pixels_over_one_level(const Image8& a, const Image8& b) {
+    long over = 0;
+    for (size_t pixel = 0; pixel * 3 < a.rgb.size(); ++pixel) {
+        bool differs = false;
+        for (size_t c = 0; c < 3; ++c) {
+            differs |= std::abs(int(a.rgb[3 * pixel + c]) - int(b.rgb[3 * pixel + c])) > 1;
+        }
+        over += differs;
+    }
+    return over;
 }
 
 class RenderWorkerTest : public ::testing::Test {
@@ -72,6 +86,28 @@ protected:
             const WorkerStatus status = worker_->status();
             return status.idle && status.idle_generation == generation;
         });
+    }
+
+    // The last frame taken of `generation`, or null when none arrived.
+    const DisplayFrame* last_frame_of(uint64_t generation) const {
+        for (auto frame = frames_.rbegin(); frame != frames_.rend(); ++frame) {
+            if (frame->generation == generation) return &*frame;
+        }
+        return nullptr;
+    }
+
+    // `scene` rendered here, not by the worker: its default view at the sample cap (3).
+    Frame render_directly(const Scene& scene, int width, int height) {
+        FrameRequest request{width, height, scene.cameras.front().view, default_param_values(scene)};
+        request.samples = 3;
+        ProgramCache cache{std::filesystem::path()};
+        return Renderer(device(), cache, scene, {preferred_packet_width(device().info), scene.effects})
+            .render(request);
+    }
+
+    static ComputeDevice& device() {
+        static ComputeDevice opened = open_device(-1);
+        return opened;
     }
 
     std::vector<std::shared_ptr<const Scene>> scenes_ = worker_scenes();
@@ -183,14 +219,16 @@ TEST_F(RenderWorkerTest, ABrokenKernelIsReportedAndOtherScenesStillRender) {
 TEST_F(RenderWorkerTest, ChangingTheEffectsBuildsTheirKernelAndChangesTheImage) {
     worker_->submit(state(kSphere, 48, 36, 1));
     ASSERT_TRUE(wait_idle(1));
-    const Image8 plain = frames_.back().image;
+    ASSERT_NE(last_frame_of(1), nullptr) << "no frame of the plain view";
+    const Image8 plain = last_frame_of(1)->image;
     ViewState glowing = state(kSphere, 48, 36, 2);
     glowing.effects = FGR_EFFECT_GLOW;  // near misses around the sphere light up
     worker_->submit(glowing);
     ASSERT_TRUE(wait_idle(2));
     EXPECT_TRUE(worker_->status().error.empty()) << worker_->status().error;
+    ASSERT_NE(last_frame_of(2), nullptr) << "no frame with glow";
     EXPECT_EQ(frames_.back().generation, 2u);
-    EXPECT_NE(frames_.back().image.rgb, plain.rgb);
+    EXPECT_GT(pixels_over_one_level(last_frame_of(2)->image, plain), 20);
 }
 
 TEST_F(RenderWorkerTest, AReloadIsBuiltBeforeItIsAcceptedAndABrokenOneIsRefused) {
@@ -213,13 +251,18 @@ TEST_F(RenderWorkerTest, AReloadIsBuiltBeforeItIsAcceptedAndABrokenOneIsRefused)
     ViewState before = state(kSphere, 48, 36, 1);
     worker_->submit(before);
     ASSERT_TRUE(wait_idle(1));
-    const Image8 small = frames_.back().image;
+    ASSERT_NE(last_frame_of(1), nullptr);
+    const Frame small = render_directly(*scenes_[kSphere], 48, 36);
+    EXPECT_EQ(pixels_over_one_level(last_frame_of(1)->image, small.image), 0);
     ViewState after = before;
     after.scene = results[0].request.candidate;
     after.generation = 2;
     worker_->submit(after);
     ASSERT_TRUE(wait_idle(2));
-    EXPECT_NE(frames_.back().image.rgb, small.rgb);
+    ASSERT_NE(last_frame_of(2), nullptr) << "the accepted version rendered nothing";
+    const Frame big = render_directly(*results[0].request.candidate, 48, 36);
+    EXPECT_GT(big.hits, small.hits);
+    EXPECT_EQ(pixels_over_one_level(last_frame_of(2)->image, big.image), 0);
 }
 
 TEST_F(RenderWorkerTest, ScreenshotsAreFinishedBeforeStopReturns) {
@@ -248,23 +291,55 @@ TEST_F(RenderWorkerTest, ReportsTheDistanceEstimateAtTheCamera) {
 
 class RenderWorkerPrecision : public RenderWorkerTest {
 protected:
-    // The Mandelbulb seen through `view` at 32x24 under `precision`, refined to the sample cap:
-    // whether its last frame was rendered in double.
+    // The Mandelbulb seen through `view` at 96x72 under `precision`, refined to the sample cap
+    // (3), with a fine hit threshold (0.001) so that float and double images differ even in the
+    // default view: whether the worker's image is the double renderer's. Its frame's flag is a
+    // label; the pixels say which precision was used. The worker's image must match exactly one
+    // of the two renderers' (within one level at every pixel), and the label must agree.
     bool renders_in_double(const CameraView& view, Precision precision) {
+        constexpr int width = 96, height = 72;
         ViewState bulb;
         bulb.scene = bulb_;
         bulb.effects = bulb_->effects;
         bulb.view = view;
         bulb.params = default_param_values(*bulb_);
-        bulb.width = 32;
-        bulb.height = 24;
+        set_param_from_text(*bulb_, bulb.params, "hit_threshold=0.001");
+        bulb.width = width;
+        bulb.height = height;
         bulb.precision = precision;
         bulb.generation = ++generation_;
         worker_->submit(bulb);
         EXPECT_TRUE(wait_idle(generation_));
         EXPECT_TRUE(worker_->status().error.empty()) << worker_->status().error;
-        EXPECT_FALSE(frames_.empty());
-        return !frames_.empty() && frames_.back().double_precision;
+        const DisplayFrame* frame = last_frame_of(generation_);
+        if (frame == nullptr) {
+            ADD_FAILURE() << "no frame of this view arrived";
+            return false;
+        }
+        EXPECT_EQ(frame->samples, 3);
+        FrameRequest request{width, height, view, bulb.params};
+        request.samples = 3;
+        Image8 images[2];
+        for (bool in_double : {false, true}) {
+            ProgramCache cache{std::filesystem::path()};
+            images[in_double] =
+                Renderer(device(), cache, *bulb_,
+                         with_precision({preferred_packet_width(device().info), bulb_->effects},
+                                        in_double))
+                    .render(request)
+                    .image;
+        }
+        const long apart = pixels_over_one_level(images[0], images[1]);
+        EXPECT_GT(apart, 10) << "this view cannot tell float from double";
+        const bool like_float = pixels_over_one_level(frame->image, images[0]) == 0;
+        const bool like_double = pixels_over_one_level(frame->image, images[1]) == 0;
+        EXPECT_NE(like_float, like_double) << "the image is neither float's nor double's ("
+                                           << apart << " pixels tell them apart)";
+        EXPECT_EQ(frame->double_precision, like_double) << "the frame's label is not what rendered";
+        std::printf("float and double differ in %ld pixels; the worker's image is %s's (label %s)\n",
+                    apart, like_double ? "double" : like_float ? "float" : "neither",
+                    frame->double_precision ? "double" : "float");
+        return like_double;
     }
 
     std::shared_ptr<const Scene> bulb_ =

@@ -121,6 +121,15 @@ TEST(ReplayParse, MotionWheelResizeWaitAndQuit) {
     EXPECT_DOUBLE_EQ(events[4].delay_seconds, 0.5);
 }
 
+TEST(ReplayParse, WaitReload) {
+    const auto events = parse("0.5 wait_reload\n");
+    ASSERT_EQ(events.size(), 1u);
+    EXPECT_EQ(events[0].action, ReplayAction::WaitReload);
+    EXPECT_DOUBLE_EQ(events[0].delay_seconds, 0.5);
+    EXPECT_EQ(parse_error("0 wait_reload now\n"),
+              "demo.replay:1: wait_reload takes wait_reload, got 1 argument");
+}
+
 TEST(ReplayParse, CommentsBlankLinesAndSpacingAreIgnored) {
     const auto events = parse(
         "# a demo\n"
@@ -332,6 +341,19 @@ TEST(ReplayClock, WaitIdleHoldsTheRestUntilResume) {
     EXPECT_EQ(lines_of(clock.due(100.0)), std::vector<int>{3});
     EXPECT_TRUE(clock.due(101.9).empty());
     EXPECT_EQ(lines_of(clock.due(102.0)), std::vector<int>{4});
+    EXPECT_TRUE(clock.finished());
+}
+
+TEST(ReplayClock, WaitReloadHoldsTheRestUntilResumeLikeWaitIdle) {
+    ReplayClock clock(script({{0.0, ReplayAction::WaitReload}, {1.0, ReplayAction::KeyPress}}));
+    const auto paused = clock.due(0.0);
+    ASSERT_EQ(lines_of(paused), std::vector<int>{1});
+    EXPECT_EQ(paused[0].action, ReplayAction::WaitReload);
+    EXPECT_TRUE(clock.waiting());
+    EXPECT_TRUE(clock.due(60.0).empty());
+    clock.resume(60.0);
+    EXPECT_TRUE(clock.due(60.9).empty());
+    EXPECT_EQ(lines_of(clock.due(61.0)), std::vector<int>{2});
     EXPECT_TRUE(clock.finished());
 }
 

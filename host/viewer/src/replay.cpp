@@ -46,6 +46,7 @@ constexpr std::array kEventSyntax{
     EventSyntax{"wheel", ReplayAction::Wheel, 1, 1, "wheel STEPS"},
     EventSyntax{"resize", ReplayAction::Resize, 2, 2, "resize WIDTH HEIGHT"},
     EventSyntax{"wait_idle", ReplayAction::WaitIdle, 0, 0, "wait_idle"},
+    EventSyntax{"wait_reload", ReplayAction::WaitReload, 0, 0, "wait_reload"},
     EventSyntax{"quit", ReplayAction::Quit, 0, 0, "quit"},
 };
 
@@ -159,6 +160,7 @@ void read_arguments(const LineParser& parser, const std::vector<std::string>& ar
             event.y = parser.integer(args[1], "HEIGHT", 1, kMaxWindowSide);
             break;
         case ReplayAction::WaitIdle:
+        case ReplayAction::WaitReload:
         case ReplayAction::Quit:
             break;
     }
@@ -236,7 +238,8 @@ std::vector<ReplayEvent> ReplayClock::due(double now_seconds) {
         // Count the next delay from when this event was due, not from when due() noticed it, so
         // a slow frame does not stretch the rest of the script.
         last_event_time_ = due_time;
-        waiting_ = event.action == ReplayAction::WaitIdle;
+        waiting_ = event.action == ReplayAction::WaitIdle ||
+                   event.action == ReplayAction::WaitReload;
         ready.push_back(event);
         ++next_;
     }

@@ -284,7 +284,11 @@ void ViewerApp::feed_replay() {
     if (!replay_) return;
     const double now = seconds_since(start_);
     if (replay_->waiting()) {
-        if (!view_idle()) return;
+        if (awaited_changes_ ? watched_changes_handled_ <= *awaited_changes_ : !view_idle()) {
+            return;
+        }
+        awaited_changes_.reset();
+        replay_window_size_.reset();
         replay_->resume(now);
     }
     for (const ReplayEvent& event : replay_->due(now)) push_replay_event(event);
@@ -343,8 +347,12 @@ void ViewerApp::push_replay_event(const ReplayEvent& event) {
             sdl.wheel.direction = SDL_MOUSEWHEEL_NORMAL;
             SDL_PushEvent(&sdl);
             break;
-        case ReplayAction::Resize: set_window_size(event.x, event.y); break;
+        case ReplayAction::Resize:
+            set_window_size(event.x, event.y);
+            replay_window_size_ = {event.x, event.y};
+            break;
         case ReplayAction::WaitIdle: break;  // the clock holds the script until view_idle()
+        case ReplayAction::WaitReload: awaited_changes_ = watched_changes_handled_; break;
         case ReplayAction::Quit: quit_ = true; break;
     }
 }
@@ -436,6 +444,11 @@ void ViewerApp::log_refined_view() {
 }
 
 bool ViewerApp::view_idle() const {
+    if (replay_window_size_) {
+        int width = 0, height = 0;
+        SDL_GetWindowSize(window_.get(), &width, &height);
+        if (std::make_pair(width, height) != *replay_window_size_) return false;
+    }
     return status_.idle && status_.idle_generation == generation_ && !status_.compiling &&
            status_.pending_screenshots == 0 && status_.pending_reloads == 0 &&
            !last_state_.interactive && !scene_swapped_;

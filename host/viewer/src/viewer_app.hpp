@@ -262,6 +262,12 @@ private:
     double next_watch_ = 0.0;
     std::pair<std::string, std::string> reload_error_;  // a refused update: summary, log
     bool scene_swapped_ = false;  // a reload replaced a scene since the last submitted view
+    // Changes to watched files dealt with so far (reloaded, refused, added, failed to load), and
+    // the count when a replayed wait_reload began: the script goes on once it has grown.
+    uint64_t watched_changes_handled_ = 0;
+    std::optional<uint64_t> awaited_changes_;
+    // The window size a replayed resize asked for: the view is not idle until it has it.
+    std::optional<std::pair<int, int>> replay_window_size_;
 
     FrameStats render_stats_;
     FrameStats ui_stats_;

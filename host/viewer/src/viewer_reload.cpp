@@ -62,6 +62,7 @@ void ViewerApp::reload_plugin(const std::filesystem::path& file) {
         spdlog::error("{}", message);
         add_message(message);
         reload_error_ = {message, ""};
+        ++watched_changes_handled_;
         return;
     }
     auto candidate = std::make_shared<const Scene>(std::move(*loaded.scene));
@@ -72,11 +73,13 @@ void ViewerApp::reload_plugin(const std::filesystem::path& file) {
         add_message(fmt::format("new scene '{}'", candidate->id));
         scenes_.push_back(candidate);
         if (options_.dev) watcher_.watch_file(candidate->source_name);
+        ++watched_changes_handled_;
         return;
     }
     if ((*same_id)->plugin_file != candidate->plugin_file) {
         spdlog::warn("{}: scene '{}' is already loaded from {}; ignored", file.string(),
                      candidate->id, (*same_id)->plugin_file.string());
+        ++watched_changes_handled_;
         return;
     }
     const int index = static_cast<int>(same_id - scenes_.begin());
@@ -92,6 +95,7 @@ void ViewerApp::reload_source(const std::filesystem::path& file) {
     text << in.rdbuf();
     if (!in && !in.eof()) {
         add_message(fmt::format("cannot read {}", file.string()));
+        ++watched_changes_handled_;
         return;
     }
     for (size_t i = 0; i < scenes_.size(); ++i) {
@@ -108,6 +112,7 @@ void ViewerApp::reload_source(const std::filesystem::path& file) {
 
 void ViewerApp::apply_reloads() {
     for (const ReloadResult& result : worker_->take_reloads()) {
+        ++watched_changes_handled_;
         const auto running = std::find(scenes_.begin(), scenes_.end(), result.request.replaces);
         if (running == scenes_.end()) continue;  // replaced again meanwhile
         const std::string& id = result.request.candidate->id;

@@ -12,6 +12,10 @@
 //   wheel STEPS           scroll (positive: away from the user)
 //   resize WIDTH HEIGHT   resize the window
 //   wait_idle             pause the script until the view is fully refined (no compile pending)
+//                         and, after a replayed resize, rendered at the size it asked for
+//   wait_reload           pause the script until the viewer has dealt with the next change to a
+//                         watched file: a scene reloaded or its update refused, a new scene
+//                         added, a plugin that failed to load
 //   quit                  close the viewer
 //
 // KEY is an SDL key name: W, A, F12, PageDown, Escape, "Left Shift" is written Left_Shift
@@ -34,6 +38,7 @@ enum class ReplayAction {
     Wheel,
     Resize,
     WaitIdle,
+    WaitReload,
     Quit
 };
 
@@ -57,17 +62,18 @@ std::vector<ReplayEvent> parse_replay(std::istream& input, const std::string& so
 // Reads and parses FILE; a missing or unreadable file is a std::runtime_error naming it.
 std::vector<ReplayEvent> load_replay(const std::filesystem::path& file);
 
-// Plays a script against a clock: due events come out in order, and a WaitIdle holds everything
-// after it until resume() is called (the viewer calls it once the view is idle).
+// Plays a script against a clock: due events come out in order, and a wait (WaitIdle, WaitReload)
+// holds everything after it until resume() is called (the viewer calls it once what the wait
+// names has happened).
 class ReplayClock {
 public:
     explicit ReplayClock(std::vector<ReplayEvent> events);
 
-    // Events due at `now_seconds` (a monotonic clock; the first call starts the script). A
-    // WaitIdle event is returned too, and stops the stream until resume(now).
+    // Events due at `now_seconds` (a monotonic clock; the first call starts the script). A wait
+    // event is returned too, and stops the stream until resume(now).
     std::vector<ReplayEvent> due(double now_seconds);
 
-    // Continues after a WaitIdle: the following delays count from `now_seconds`.
+    // Continues after a wait: the following delays count from `now_seconds`.
     void resume(double now_seconds);
 
     bool waiting() const { return waiting_; }
