@@ -231,38 +231,38 @@ TEST(FlyCamera, ZeroLocalDoesNotMove) {
     FlyCamera camera = level_camera();
     camera.position = {1.0f, 2.0f, 3.0f};
     camera.move({0.0f, 0.0f, 0.0f}, 5.0f);
-    EXPECT_EQ(camera.position, glm::vec3(1.0f, 2.0f, 3.0f));
+    EXPECT_EQ(camera.position, glm::dvec3(1.0f, 2.0f, 3.0f));
 }
 
 TEST(FlyCameraSpeed, TravelSpeedIsProportionalToDe) {
-    EXPECT_FLOAT_EQ(travel_speed(0.5f, 1.0f), 0.5f);
-    EXPECT_FLOAT_EQ(travel_speed(0.5f, 2.0f), 1.0f);
-    EXPECT_FLOAT_EQ(travel_speed(2.0f, 0.25f), 0.5f);
-    EXPECT_FLOAT_EQ(travel_speed(4.0f, 1.0f) / travel_speed(1.0f, 1.0f), 4.0f);
+    EXPECT_DOUBLE_EQ(travel_speed(0.5f, 1.0f), 0.5f);
+    EXPECT_DOUBLE_EQ(travel_speed(0.5f, 2.0f), 1.0f);
+    EXPECT_DOUBLE_EQ(travel_speed(2.0f, 0.25f), 0.5f);
+    EXPECT_DOUBLE_EQ(travel_speed(4.0f, 1.0f) / travel_speed(1.0f, 1.0f), 4.0f);
 }
 
 TEST(FlyCameraSpeed, TravelSpeedHasAFloor) {
-    EXPECT_FLOAT_EQ(travel_speed(0.0f, 1.0f), kMinSpeed);
-    EXPECT_FLOAT_EQ(travel_speed(1e-9f, 1.0f), kMinSpeed);
-    EXPECT_FLOAT_EQ(travel_speed(-1.0f, 1.0f), kMinSpeed);
-    EXPECT_FLOAT_EQ(travel_speed(1.0f, 0.0f), kMinSpeed);
-    EXPECT_FLOAT_EQ(travel_speed(std::numeric_limits<float>::quiet_NaN(), 1.0f), kMinSpeed);
-    EXPECT_FLOAT_EQ(travel_speed(1.0f, std::numeric_limits<float>::quiet_NaN()), kMinSpeed);
-    EXPECT_FLOAT_EQ(travel_speed(std::numeric_limits<float>::infinity(), 1.0f), kMinSpeed);
+    EXPECT_DOUBLE_EQ(travel_speed(0.0f, 1.0f), kMinSpeed);
+    EXPECT_DOUBLE_EQ(travel_speed(1e-13, 1.0), kMinSpeed);
+    EXPECT_DOUBLE_EQ(travel_speed(-1.0f, 1.0f), kMinSpeed);
+    EXPECT_DOUBLE_EQ(travel_speed(1.0f, 0.0f), kMinSpeed);
+    EXPECT_DOUBLE_EQ(travel_speed(std::numeric_limits<float>::quiet_NaN(), 1.0f), kMinSpeed);
+    EXPECT_DOUBLE_EQ(travel_speed(1.0f, std::numeric_limits<float>::quiet_NaN()), kMinSpeed);
+    EXPECT_DOUBLE_EQ(travel_speed(std::numeric_limits<float>::infinity(), 1.0f), kMinSpeed);
 }
 
 TEST(FlyCameraSpeed, LimitStepCapsAtHalfTheDe) {
-    EXPECT_FLOAT_EQ(limit_step(1.0f, 0.5f), 0.25f);
-    EXPECT_FLOAT_EQ(limit_step(0.1f, 0.5f), 0.1f);  // already short enough
-    EXPECT_FLOAT_EQ(limit_step(0.25f, 0.5f), 0.25f);
-    EXPECT_FLOAT_EQ(limit_step(-1.0f, 0.5f), -0.25f);  // backwards too
+    EXPECT_DOUBLE_EQ(limit_step(1.0f, 0.5f), 0.25f);
+    EXPECT_DOUBLE_EQ(limit_step(0.1f, 0.5f), 0.1f);  // already short enough
+    EXPECT_DOUBLE_EQ(limit_step(0.25f, 0.5f), 0.25f);
+    EXPECT_DOUBLE_EQ(limit_step(-1.0f, 0.5f), -0.25f);  // backwards too
 }
 
 TEST(FlyCameraSpeed, LimitStepIgnoresUnusableDe) {
-    EXPECT_FLOAT_EQ(limit_step(1.0f, 0.0f), 1.0f);
-    EXPECT_FLOAT_EQ(limit_step(1.0f, -2.0f), 1.0f);
-    EXPECT_FLOAT_EQ(limit_step(1.0f, std::numeric_limits<float>::quiet_NaN()), 1.0f);
-    EXPECT_FLOAT_EQ(limit_step(1.0f, std::numeric_limits<float>::infinity()), 1.0f);
+    EXPECT_DOUBLE_EQ(limit_step(1.0f, 0.0f), 1.0f);
+    EXPECT_DOUBLE_EQ(limit_step(1.0f, -2.0f), 1.0f);
+    EXPECT_DOUBLE_EQ(limit_step(1.0f, std::numeric_limits<float>::quiet_NaN()), 1.0f);
+    EXPECT_DOUBLE_EQ(limit_step(1.0f, std::numeric_limits<float>::infinity()), 1.0f);
 }
 
 }  // namespace

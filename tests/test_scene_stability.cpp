@@ -72,12 +72,12 @@ protected:
     // the default view looks at, and everything between it and the camera.
     std::vector<glm::vec3> region_points(int count, unsigned seed) {
         const CameraView& view = scene().cameras.front().view;
-        const float radius = glm::length(view.position - view.target);
+        const float radius = float(glm::length(view.position - view.target));
         std::mt19937 rng(seed);
         std::uniform_real_distribution<float> unit(-1.0f, 1.0f);
         std::vector<glm::vec3> points;
         for (int i = 0; i < count; ++i) {
-            points.push_back(view.target + radius * glm::vec3(unit(rng), unit(rng), unit(rng)));
+            points.push_back(glm::vec3(view.target) + radius * glm::vec3(unit(rng), unit(rng), unit(rng)));
         }
         return points;
     }
@@ -103,7 +103,7 @@ TEST_P(SceneStability, DistanceIsOneLipschitz) {
     std::uniform_real_distribution<float> unit(-1.0f, 1.0f);
     const auto first = region_points(3000, 5);
     const CameraView& view = scene().cameras.front().view;
-    const float radius = glm::length(view.position - view.target);
+    const float radius = float(glm::length(view.position - view.target));
     std::vector<glm::vec3> second;
     for (const auto& p : first) {
         const glm::vec3 direction = glm::normalize(glm::vec3(unit(rng), unit(rng), unit(rng)) + 1e-6f);
@@ -199,12 +199,13 @@ TEST_P(SceneStability, HardCameraPlacementsStayFinite) {
     through_origin.target = {0.0f, 0.0f, 0.0f};
     expect_all_finite(render(through_origin, defaults, 33, 33), "ray through the origin");
     CameraView grazing = home;  // a narrow view along the silhouette
-    const glm::vec3 side = glm::normalize(glm::cross(home.target - home.position, home.up));
-    grazing.target = home.target + side * glm::length(home.target - home.position) * 0.5f;
+    const glm::vec3 side =
+        glm::normalize(glm::cross(glm::vec3(home.target - home.position), home.up));
+    grazing.target = home.target + glm::dvec3(side) * glm::length(home.target - home.position) * 0.5;
     grazing.fov_degrees = 5.0f;
     expect_all_finite(render(grazing, defaults), "grazing view");
     CameraView far_away = home;
-    far_away.position = home.target + (home.position - home.target) * 1000.0f;
+    far_away.position = home.target + (home.position - home.target) * 1000.0;
     expect_all_finite(render(far_away, defaults), "distant camera");
 }
 
@@ -284,7 +285,7 @@ TEST_P(SceneStability, NormalAtEveryHitIsFiniteAndUnitLength) {
             // Pixel (x, y): primary_ray_direction adds the half pixel to reach its centre.
             const glm::vec3 direction =
                 primary_ray_direction(basis, width, height, float(x), float(y));
-            hits.push_back(basis.eye + direction * t);
+            hits.push_back(glm::vec3(basis.eye) + direction * t);
             depths.push_back(t);
             eps = std::min(eps, std::max(t * pixel * 0.5f, 1e-7f));
         }

@@ -302,7 +302,9 @@ CameraView copy_view(const float (&position)[3], const float (&target)[3], const
         !std::isfinite(fov_degrees)) {
         fail("{}: numbers not finite", where);
     }
-    CameraView view{to_vec3(position), to_vec3(target), to_vec3(up), fov_degrees};
+    // The ABI's float coordinates widen exactly into the host's double position and target.
+    CameraView view{glm::dvec3(to_vec3(position)), glm::dvec3(to_vec3(target)), to_vec3(up),
+                    fov_degrees};
     if (view.position == view.target) fail("{}: position equals target", where);
     if (!(fov_degrees > 0.0f && fov_degrees < 180.0f)) {
         fail("{}: fov {} outside (0, 180)", where, fov_degrees);
