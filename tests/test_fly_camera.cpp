@@ -9,7 +9,10 @@
 
 #include <glm/geometric.hpp>
 
+#include "deep_zoom.hpp"
 #include "fgr/viewer/fly_camera.hpp"
+#include "mandelbulb_reference.hpp"
+#include "test_scenes.hpp"
 
 namespace fgr::viewer {
 namespace {
@@ -263,6 +266,42 @@ TEST(FlyCameraSpeed, LimitStepIgnoresUnusableDe) {
     EXPECT_DOUBLE_EQ(limit_step(1.0f, -2.0f), 1.0f);
     EXPECT_DOUBLE_EQ(limit_step(1.0f, std::numeric_limits<float>::quiet_NaN()), 1.0f);
     EXPECT_DOUBLE_EQ(limit_step(1.0f, std::numeric_limits<float>::infinity()), 1.0f);
+}
+
+// Flying in at a deep zoom: the camera 1e-8 from the Mandelbulb's surface (near the bulb float's
+// step is 6e-8) moves every frame, at the DE times the speed factor (no floor overrides it there),
+// each step shorter than the distance estimate, so it closes in on the surface without crossing
+// it. The DE is the long-double reference at the camera's double position (it underestimates the
+// distance ahead here: the view meets the surface at a slant).
+TEST(FlyCameraSpeed, FliesAtADeepZoom) {
+    const Scene bulb = test::built_scene("mandelbulb.so");
+    FlyCamera camera = FlyCamera::from_view(test::mandelbulb_deep_zoom(bulb, 1e-8, 1e-8));
+    const auto de_at = [](glm::dvec3 p) {
+        return double(test::mandelbulb_de<long double>(p.x, p.y, p.z, test::BulbParams{}));
+    };
+    const double first_de = de_at(camera.position);
+    ASSERT_GT(first_de, 0.0);
+    ASSERT_LT(first_de, 1.01e-8);
+    constexpr double dt = 1.0 / 60.0;
+    double travelled = 0.0;
+    for (int frame = 0; frame < 120; ++frame) {
+        const double de = de_at(camera.position);
+        ASSERT_GT(de, 0.0) << "frame " << frame << " crossed the surface";
+        EXPECT_DOUBLE_EQ(travel_speed(de, 1.0), de) << "the floor must lie below a deep zoom's DE";
+        const double step = limit_step(travel_speed(de, 1.0) * dt, de);
+        const glm::dvec3 before = camera.position;
+        camera.move({0.0f, 1.0f, 0.0f}, step);
+        const double moved = glm::length(camera.position - before);
+        ASSERT_GT(moved, 0.0) << "frame " << frame << ": the position did not change";
+        // Double's rounding of coordinates near 1 (1e-16) is 1e-5 of such a step.
+        EXPECT_NEAR(moved, step, 1e-4 * step) << "frame " << frame;
+        EXPECT_LT(moved, de) << "frame " << frame;
+        EXPECT_EQ(camera.to_view().position, camera.position);
+        travelled += moved;
+    }
+    // Two seconds at factor 1 cover more than the first DE, and the camera is nearer the surface.
+    EXPECT_GT(travelled, first_de);
+    EXPECT_LT(de_at(camera.position), first_de);
 }
 
 }  // namespace
