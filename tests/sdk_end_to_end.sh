@@ -17,8 +17,11 @@ fail() { echo "sdk_end_to_end: FAILED: $*" >&2; exit 1; }
 step() { echo "== $*"; }
 
 prefix=$work/prefix
-# A fresh home (no user plugins, a home to install into), but the usual kernel cache.
-export XDG_CACHE_HOME=${XDG_CACHE_HOME:-$HOME/.cache}
+# A fresh home (no user plugins, a home to install into) and a kernel cache of its own; the
+# drivers' caches where the caller put them (ctest: the build tree's test-cache), else in $work.
+export XDG_CACHE_HOME=${XDG_CACHE_HOME:-$work/cache}
+export POCL_CACHE_DIR=${POCL_CACHE_DIR:-$XDG_CACHE_HOME/pocl}
+export FGR_CACHE_DIR=$work/kernels
 export HOME=$work/home
 mkdir -p "$HOME"
 unset FGR_PLUGIN_PATH

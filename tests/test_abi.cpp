@@ -3,12 +3,14 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <cstddef>
 #include <limits>
 #include <string>
 #include <vector>
 
+#include "fgr/camera.hpp"
 #include "fgr/description_validation.hpp"
 #include "fgr/plugin.h"
 
@@ -530,6 +532,60 @@ TEST_F(CopyScene, RefusesUpParallelToView) {
     built.cameras[0].up[1] = 2.0f;
     built.cameras[0].up[2] = 0.0f;
     expect_refused("camera 'front': up is zero or parallel");
+}
+
+// Views whose camera basis would be NaN or infinite in float, as the kernel gets it, are refused
+// by name: the distance from position to target under- or overflows when squared.
+TEST_F(CopyScene, RefusesCamerasWhoseBasisWouldNotBeFinite) {
+    built.cameras[0].target[0] = 1e-30f;
+    built.cameras[0].target[1] = -3.0f;
+    built.cameras[0].position[0] = 0.0f;
+    expect_refused(
+        "camera 'front': position and target 1e-30 apart: too close together for a camera "
+        "basis in float");
+    const float far_away[3] = {1e30f, -1e30f, 1e30f};
+    std::copy(far_away, far_away + 3, built.cameras[0].position);
+    std::copy(far_away, far_away + 3, built.cameras[0].target);
+    built.cameras[0].target[0] = -1e30f;
+    expect_refused("camera 'front': position and target 2e+30 apart: too far apart");
+}
+
+TEST_F(CopyScene, RefusesKeyframesWhoseBasisWouldNotBeFinite) {
+    built.keyframes[1].position[0] = 1e30f;
+    built.keyframes[1].target[0] = -1e30f;
+    expect_refused("camera path 'orbit' keyframe 1: position and target 2e+30 apart: too far apart");
+    built.keyframes[1].position[0] = 3.0f;
+    built.keyframes[1].target[0] = 3.0f + 3e-7f;  // a float step away, but 3e-7 is no problem
+    expect_accepted();
+    built.keyframes[1].position[0] = 0.0f;
+    built.keyframes[1].target[0] = 1e-30f;
+    expect_refused("camera path 'orbit' keyframe 1: position and target 1e-30 apart: too close");
+    built.keyframes[1].target[0] = 0.0f;
+    built.keyframes[1].fov_degrees = kNaN;
+    expect_refused("camera path 'orbit' keyframe 1: numbers not finite");
+}
+
+// An up hint along the view is refused where it is given, for cameras and keyframes alike; an up
+// that is accepted is the one the camera basis uses (camera_basis replaces only what would be
+// refused here), however short or long it is.
+TEST_F(CopyScene, UpParallelToTheViewIsRefusedAndAnAcceptedUpIsTheOneUsed) {
+    built.keyframes[2].up[0] = 0.0f;
+    built.keyframes[2].up[1] = -1.0f;
+    built.keyframes[2].up[2] = 0.0f;
+    expect_refused("camera path 'orbit' keyframe 2: up is zero or parallel to the view direction");
+    built.keyframes[2].up[2] = 1e-7f;  // 1e-7 off parallel: the roll is not defined by it
+    expect_refused("camera path 'orbit' keyframe 2: up is zero or parallel");
+    built.keyframes[2].up[1] = 0.0f;
+    built.keyframes[2].up[2] = 1.0f;
+    built.cameras[1].up[1] = 1e-30f;  // perpendicular to the view, and tiny
+    expect_refused("camera 'top-down': up is zero or parallel");  // its float length is 0
+    built.cameras[1].up[1] = 1e-12f;
+    const Scene scene = expect_accepted();
+    ASSERT_EQ(scene.cameras.size(), 2u);
+    const CameraBasis basis = camera_basis(scene.cameras[1].view);
+    EXPECT_NEAR(basis.up.y, 1.0f, 1e-6f) << "the camera's own up, not a replacement axis";
+    built.cameras[1].up[1] = 1e30f;
+    expect_refused("camera 'top-down': up too long for float");
 }
 
 TEST_F(CopyScene, RefusesBadCameraNames) {

@@ -31,6 +31,7 @@
 #include <spdlog/sinks/ostream_sink.h>
 #include <spdlog/spdlog.h>
 
+#include "fgr/camera.hpp"
 #include "fgr/description_validation.hpp"
 #include "fgr/discovery.hpp"
 #include "fgr/opencl_device.hpp"
@@ -971,6 +972,13 @@ void check_view(const CameraView& view, const std::string& where) {
     const glm::dvec3 direction = glm::dvec3(view.target) - glm::dvec3(view.position);
     EXPECT_GT(glm::length(glm::cross(direction, glm::dvec3(view.up))), 0.0)
         << where << ": up parallel to the view";
+    // What the kernel gets: a finite orthonormal basis, built from the view's own up.
+    const CameraBasis basis = camera_basis(view);
+    EXPECT_TRUE(finite3(basis.forward) && finite3(basis.right) && finite3(basis.up) &&
+                std::abs(glm::length(basis.forward) - 1.0f) < 1e-3f &&
+                std::abs(glm::length(basis.right) - 1.0f) < 1e-3f)
+        << where << ": camera basis not finite";
+    EXPECT_TRUE(up_defines_roll(basis.forward, view.up)) << where << ": up replaced";
 }
 
 void check_param(const ParamInfo& param) {

@@ -1,5 +1,8 @@
 // The benchmark protocol: figures from frame times, the choice of camera path, fixed-frame and
 // fixed-duration runs, the precision of each frame, and the JSON / CSV / command-line outputs.
+#include <algorithm>
+#include <chrono>
+#include <numeric>
 #include <filesystem>
 #include <sstream>
 
@@ -8,6 +11,7 @@
 
 #include "child_process.hpp"
 #include "fgr/bench.hpp"
+#include "fgr/camera.hpp"
 #include "deep_zoom.hpp"
 #include "test_scenes.hpp"
 
@@ -25,11 +29,16 @@ TEST(BenchFigures, SummariseAndAverage) {
     EXPECT_DOUBLE_EQ(run.max_fps, 100.0);
     EXPECT_EQ(summarise_run({}, 1.0).frames, 0);
 
-    const RunFigures other = summarise_run({20.0, 20.0}, 0.25);
+    // Each figure is the mean over the runs: (8 + 12) / 2 = 10 fps, where pooling the runs'
+    // frames and seconds would give 7 / 0.75 = 9.33.
+    const RunFigures other = summarise_run({20.0, 20.0, 20.0}, 0.25);
+    EXPECT_DOUBLE_EQ(other.mean_fps, 12.0);
     const RunFigures mean = average_runs({run, other});
-    EXPECT_EQ(mean.frames, 3);
+    EXPECT_EQ(mean.frames, 4);  // 3.5, rounded
     EXPECT_DOUBLE_EQ(mean.mean_ms, 22.5);
-    EXPECT_DOUBLE_EQ(mean.mean_fps, 8.0);
+    EXPECT_DOUBLE_EQ(mean.mean_fps, 10.0);
+    EXPECT_DOUBLE_EQ(mean.min_fps, 37.5);   // (25 + 50) / 2
+    EXPECT_DOUBLE_EQ(mean.max_fps, 75.0);   // (100 + 50) / 2
     EXPECT_DOUBLE_EQ(mean.seconds, 0.375);
 }
 
@@ -61,6 +70,56 @@ protected:
 };
 ComputeDevice* BenchRun::device_ = nullptr;
 
+// What the test saw of a run: each frame's view, path time and render time (BenchSettings::
+// on_frame), and its own stopwatch around the whole call.
+struct Observed {
+    std::vector<CameraView> views;
+    std::vector<float> times;
+    std::vector<std::vector<double>> frame_ms;  // per run
+    double wall_seconds = 0.0;
+};
+
+BenchReport observed_run(const Scene& scene, const ComputeDevice& device, ProgramCache& cache,
+                         BenchSettings settings, Observed* seen, const BenchProgress& progress = {}) {
+    settings.on_frame = [&](const CameraView& view, float time, double ms) {
+        seen->views.push_back(view);
+        seen->times.push_back(time);
+        seen->frame_ms.back().push_back(ms);
+    };
+    // Progress comes before every frame, naming its run: a new run starts a new list.
+    const BenchProgress next_run = [&](int run, double done) {
+        while (seen->frame_ms.size() <= size_t(run)) seen->frame_ms.emplace_back();
+        if (progress) progress(run, done);
+    };
+    const auto start = std::chrono::steady_clock::now();
+    BenchReport report = run_benchmark(scene, device, cache, settings, next_run);
+    seen->wall_seconds =
+        std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+    return report;
+}
+
+// A run's figures against what the test observed of it, not against the formulas that made them:
+// the frame count and times are the frames it saw; the run's wall time covers every frame's
+// render but not the kernel build (its clock stops while a kernel builds), so it lies between the
+// sum of the frame times and the test's stopwatch less the build.
+void expect_figures_match(const RunFigures& run, const std::vector<double>& frame_ms,
+                          double wall_seconds, double build_ms) {
+    ASSERT_FALSE(frame_ms.empty());
+    EXPECT_EQ(run.frames, int(frame_ms.size()));
+    EXPECT_EQ(run.min_ms, *std::min_element(frame_ms.begin(), frame_ms.end()));
+    EXPECT_EQ(run.max_ms, *std::max_element(frame_ms.begin(), frame_ms.end()));
+    const double total_ms = std::accumulate(frame_ms.begin(), frame_ms.end(), 0.0);
+    EXPECT_NEAR(run.mean_ms, total_ms / double(frame_ms.size()), 1e-9 * total_ms);
+    EXPECT_GE(run.seconds * 1000.0, total_ms);
+    EXPECT_LE(run.seconds * 1000.0, wall_seconds * 1000.0 - build_ms);
+    // Frames per second of wall time: no faster than the frames' own times allow, no slower than
+    // the test's stopwatch says.
+    EXPECT_LE(run.mean_fps, 1000.0 * double(frame_ms.size()) / total_ms * (1.0 + 1e-12));
+    EXPECT_GE(run.mean_fps, double(frame_ms.size()) / wall_seconds);
+    EXPECT_LE(run.min_fps, run.max_fps);
+    EXPECT_LE(run.mean_fps, run.max_fps);
+}
+
 TEST_F(BenchRun, FixedFramesPerRunWithConsistentFigures) {
     BenchSettings settings;
     settings.width = 48;
@@ -68,16 +127,25 @@ TEST_F(BenchRun, FixedFramesPerRunWithConsistentFigures) {
     settings.frames = 5;
     settings.runs = 2;
     std::vector<std::pair<int, double>> progress;
-    const BenchReport report = run_benchmark(
-        scene_, *device_, cache_, settings, [&](int run, double done) { progress.emplace_back(run, done); });
+    Observed seen;
+    const BenchReport report =
+        observed_run(scene_, *device_, cache_, settings, &seen,
+                     [&](int run, double done) { progress.emplace_back(run, done); });
     ASSERT_EQ(report.runs.size(), 2u);
-    for (const RunFigures& run : report.runs) {
-        EXPECT_EQ(run.frames, 5);
-        EXPECT_LE(run.min_ms, run.mean_ms);
-        EXPECT_LE(run.mean_ms, run.max_ms);
-        EXPECT_GT(run.min_ms, 0.0);
-        EXPECT_NEAR(run.min_fps, 1000.0 / run.max_ms, 1e-9);
-        EXPECT_GE(run.seconds * 1000.0, 5 * run.min_ms);
+    ASSERT_EQ(seen.frame_ms.size(), 2u);
+    for (size_t run = 0; run < 2; ++run) {
+        SCOPED_TRACE("run " + std::to_string(run));
+        expect_figures_match(report.runs[run], seen.frame_ms[run], seen.wall_seconds,
+                             report.build_ms);
+    }
+    // The build happened once, outside both runs' clocks.
+    EXPECT_LE((report.runs[0].seconds + report.runs[1].seconds) * 1000.0,
+              seen.wall_seconds * 1000.0 - report.build_ms);
+    // Five frames spread evenly over the two-second path, the last on its end, in every run.
+    ASSERT_EQ(seen.times.size(), 10u);
+    for (size_t i = 0; i < seen.times.size(); ++i) {
+        EXPECT_FLOAT_EQ(seen.times[i], 0.5f * float(i % 5)) << i;
+        EXPECT_EQ(seen.views[i].position, evaluate_camera_path(scene_.camera_paths[0], seen.times[i]).position);
     }
     EXPECT_EQ(report.average.frames, 5);
     EXPECT_EQ(report.path, "benchmark");
@@ -141,16 +209,33 @@ TEST_F(BenchRun, EachFrameRendersInThePrecisionItsViewNeeds) {
     EXPECT_NE(bench_table(automatic).find("double kernel build"), std::string::npos);
 }
 
+// Real time: each frame shows the path where it is at that moment, so between two frames the
+// path moves on by at least the earlier frame's own render time (the clock ran while it
+// rendered), and each frame's view is the path's at its time. A camera stuck at the start, or a
+// path played slower than the clock, fails. (The two-second path outlasts the 0.3 s run: no wrap.)
 TEST_F(BenchRun, FixedDurationPlaysThePathInRealTime) {
     BenchSettings settings;
     settings.width = 16;
     settings.height = 16;
     settings.duration_seconds = 0.3;
-    const BenchReport report = run_benchmark(scene_, *device_, cache_, settings);
+    Observed seen;
+    const BenchReport report = observed_run(scene_, *device_, cache_, settings, &seen);
     ASSERT_EQ(report.runs.size(), 1u);
-    EXPECT_GE(report.runs[0].frames, 1);
+    ASSERT_GE(seen.times.size(), 2u) << "a 0.3 s run of 16x16 frames shows more than one";
+    expect_figures_match(report.runs[0], seen.frame_ms[0], seen.wall_seconds, report.build_ms);
     EXPECT_GE(report.runs[0].seconds, 0.3);
-    EXPECT_NEAR(report.runs[0].mean_fps, report.runs[0].frames / report.runs[0].seconds, 1e-9);
+    const CameraPath& path = scene_.camera_paths[0];
+    EXPECT_LT(seen.times.front(), seen.times.back());
+    for (size_t i = 0; i < seen.times.size(); ++i) {
+        EXPECT_EQ(seen.views[i].position, evaluate_camera_path(path, seen.times[i]).position) << i;
+        EXPECT_LE(seen.times[i], float(report.runs[0].seconds)) << i;
+        if (i == 0) continue;
+        // (1e-4 ms: the float rounding of path times below 0.3 s.)
+        EXPECT_GE(double(seen.times[i] - seen.times[i - 1]) * 1000.0,
+                  seen.frame_ms[0][i - 1] - 1e-4)
+            << "frame " << i << ": the path did not move on while frame " << i - 1 << " rendered";
+    }
+    EXPECT_NE(seen.views.front().position, seen.views.back().position) << "the camera never moved";
     EXPECT_NE(bench_table(report).find("avg fps"), std::string::npos);
 }
 

@@ -189,6 +189,26 @@ TEST(CameraPathEvaluation, TwoKeyPathStaysOnTheStraightSegment) {
     }
 }
 
+// Interior values of the winding path, worked by hand. A uniform Catmull-Rom segment from p1 to p2
+// at s = 1/2 is (-p0 + 9 p1 + 9 p2 - p3) / 16, at s = 1/4 (-9 p0 + 111 p1 + 29 p2 - 3 p3) / 128,
+// the end keyframes standing in for their missing neighbours. A straight lerp would give the plain
+// midpoints instead, e.g. (2, 2, 0.5) and (-1.5, 2, 1.5) for the positions below.
+TEST(CameraPathEvaluation, InteriorValuesAreCatmullRomNotALerp) {
+    const CameraPath path = winding_path();
+    // First segment (t 0 -> 1.5) at t = 0.75: p0 = p1 = (4, 0, 0), p2 = (0, 4, 1), p3 = (-3, 0, 2).
+    const CameraView first = evaluate_camera_path(path, 0.75f);
+    expect_near(first.position, {35.0f / 16.0f, 36.0f / 16.0f, 7.0f / 16.0f});
+    // Middle segment (t 1.5 -> 2) at t = 1.75: p0 = (4, 0, 0), p1 = (0, 4, 1), p2 = (-3, 0, 2),
+    // p3 = (0, -5, 0); targets (0, 0, 0), (0, 0, 1), (0, 0, 0), (1, 0, 0); fovs 60, 45, 30, 90.
+    const CameraView middle = evaluate_camera_path(path, 1.75f);
+    expect_near(middle.position, {-31.0f / 16.0f, 41.0f / 16.0f, 27.0f / 16.0f});
+    expect_near(middle.target, {-1.0f / 16.0f, 0.0f, 9.0f / 16.0f});
+    EXPECT_NEAR(middle.fov_degrees, 525.0f / 16.0f, 1e-4f);  // 32.8125; a lerp gives 37.5
+    // The same segment a quarter of the way in (t = 1.625).
+    expect_near(evaluate_camera_path(path, 1.625f).position,
+                {-123.0f / 128.0f, 459.0f / 128.0f, 169.0f / 128.0f});
+}
+
 TEST(CameraPathEvaluation, UpStaysUnitAndOrthogonalToTheViewDirection) {
     CameraPath path = winding_path();
     // Opposite ups on neighbouring keys blend through zero: the fallback must take over.

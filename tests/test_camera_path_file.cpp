@@ -2,6 +2,9 @@
 // and every malformed file is refused with a one-line reason.
 #include <filesystem>
 #include <fstream>
+#include <string>
+#include <utility>
+#include <vector>
 
 #include <gtest/gtest.h>
 
@@ -117,11 +120,11 @@ TEST(CameraPathFile, MalformedFilesAreRefusedWithTheReason) {
         {two_keyframes(R"({"time": 1, "position": [0, 1e39, 0], "target": [0, 0, 0]})"),
          "must be finite"},
         {two_keyframes(R"({"time": 1, "position": [0, 0, 0], "target": [0, 0, 0]})"),
-         "target equal to position"},
+         "keyframe 1: position equals target"},
         {two_keyframes(R"({"time": 1, "position": [0, 1, 0], "target": [0, 0, 0], "fov": 180})"),
-         "\"fov\" must be in (0, 180)"},
+         "keyframe 1: fov 180 outside (0, 180)"},
         {two_keyframes(R"({"time": 1, "position": [0, 1, 0], "target": [0, 0, 0], "up": [0,0,0]})"),
-         "\"up\" must not be zero"},
+         "keyframe 1: up is zero or parallel to the view direction"},
         {two_keyframes(R"({"position": [0, 1, 0], "target": [0, 0, 0]})"), "\"time\" is missing"},
     };
     for (const auto& [text, reason] : cases) {
@@ -133,6 +136,66 @@ TEST(CameraPathFile, MalformedFilesAreRefusedWithTheReason) {
                 << "for " << text << " got: " << error.what();
             EXPECT_EQ(std::string(error.what()).find('\n'), std::string::npos);
         }
+    }
+}
+
+// The check plugins' keyframes get (view_validation.hpp): a keyframe whose camera basis would be
+// NaN or infinite in float is refused, naming it.
+TEST(CameraPathFile, KeyframesWhoseBasisWouldNotBeFiniteAreRefused) {
+    const std::vector<std::pair<std::string, std::string>> cases = {
+        {R"({"time": 1, "position": [1e30, 1e30, 1e30], "target": [-1e30, -1e30, -1e30]})",
+         "keyframe 1: position and target 3.46e+30 apart: too far apart for a camera basis"},
+        {R"({"time": 1, "position": [0, -1e30, 0], "target": [0, 1e30, 0], "up": [1, 0, 0]})",
+         "keyframe 1: position and target 2e+30 apart: too far apart"},
+        {R"({"time": 1, "position": [0, 0, 0], "target": [1e-30, 0, 0]})",
+         "keyframe 1: position and target 1e-30 apart: too close together for a camera basis"},
+        {R"({"time": 1, "position": [0, 1, 0], "target": [0, 0, 0], "up": [0, 2, 0]})",
+         "keyframe 1: up is zero or parallel to the view direction"},
+        {R"({"time": 1, "position": [0, 0, 3], "target": [0, 0, 0]})",
+         "keyframe 1: up is zero or parallel to the view direction"},
+        {R"({"time": 1, "position": [0, 1, 0], "target": [0, 0, 0], "up": [1e30, 0, 1e30]})",
+         "keyframe 1: up too long for float"},
+    };
+    for (const auto& [keyframe, reason] : cases) {
+        try {
+            parse_camera_path_json(two_keyframes(keyframe));
+            ADD_FAILURE() << "accepted: " << keyframe;
+        } catch (const std::runtime_error& error) {
+            EXPECT_NE(std::string(error.what()).find(reason), std::string::npos)
+                << "for " << keyframe << " got: " << error.what();
+            EXPECT_EQ(std::string(error.what()).find('\n'), std::string::npos);
+        }
+    }
+    // Close to those limits but fine: the basis is finite and uses the given up.
+    const CameraPathFile file = parse_camera_path_json(two_keyframes(
+        R"({"time": 1, "position": [0, 1e-15, 0], "target": [0, 0, 0], "up": [0, 1, 1e-3]})"));
+    const CameraBasis basis = camera_basis(file.path.keyframes[1].view);
+    EXPECT_NEAR(basis.up.z, 1.0f, 1e-6f);
+    EXPECT_NEAR(basis.forward.y, -1.0f, 1e-6f);
+}
+
+// "version" is compared as the integer it is: no wrap-around to 1, no rounding.
+TEST(CameraPathFile, VersionMustBeTheInteger1) {
+    const auto with_version = [](const std::string& version) {
+        return R"({"format": "fgr-camera-path", "version": )" + version +
+               R"(, "keyframes": [{"time": 0, "position": [1, 0, 0], "target": [0, 0, 0]},
+                                  {"time": 1, "position": [0, 1, 0], "target": [0, 0, 0]}]})";
+    };
+    EXPECT_EQ(parse_camera_path_json(with_version("1")).path.keyframes.size(), 2u);
+    for (const std::string version : {"4294967297", "18446744073709551617", "1.5", "1.0",
+                                      "\"1\"", "-1", "0", "2", "true", "null", "[1]"}) {
+        try {
+            parse_camera_path_json(with_version(version));
+            ADD_FAILURE() << "version " << version << " accepted";
+        } catch (const std::runtime_error& error) {
+            EXPECT_NE(std::string(error.what()).find("unsupported \"version\""), std::string::npos)
+                << "version " << version << ": " << error.what();
+        }
+    }
+    try {
+        parse_camera_path_json(with_version("4294967297"));
+    } catch (const std::runtime_error& error) {
+        EXPECT_STREQ(error.what(), "unsupported \"version\" 4294967297 (this fgr reads version 1)");
     }
 }
 

@@ -19,6 +19,7 @@
 #include <filesystem>
 #include <fstream>
 #include <iterator>
+#include <map>
 #include <optional>
 #include <sstream>
 #include <string>
@@ -424,6 +425,30 @@ INSTANTIATE_TEST_SUITE_P(Cli, CliValidRender, ::testing::ValuesIn(kValidRenders)
 
 // --- list and info ------------------------------------------------------------------------------
 
+// `fgr info --math-check` reports each precision and width's self-test verdict, read from the
+// cache directory: a planted failing verdict is shown as a failure.
+TEST_F(CliTest, InfoReportsTheMathSelfTestVerdicts) {
+    const fs::path cache = dir() / "cache";
+    ::setenv("FGR_CACHE_DIR", cache.c_str(), 1);
+    const RunResult first = run({"info", "--math-check"});
+    ASSERT_EQ(first.exit_code, 0) << first;
+    EXPECT_NE(first.out.find("math float16:  pass"), std::string::npos) << first.out;
+    EXPECT_NE(first.out.find("math float1:   pass"), std::string::npos) << first.out;
+    int verdicts = 0;
+    for (const auto& entry : fs::directory_iterator(cache)) {
+        if (entry.path().extension() != ".txt") continue;
+        ++verdicts;
+        std::ofstream(entry.path()) << "fail: exp: planted\n";
+    }
+    EXPECT_GE(verdicts, 4);  // float at 1, 4, 8 and 16 lanes
+    const RunResult second = run({"info", "--math-check"});
+    ::unsetenv("FGR_CACHE_DIR");
+    ASSERT_EQ(second.exit_code, 0) << second;
+    EXPECT_NE(second.out.find("math float16:  FAIL: exp: planted"), std::string::npos)
+        << second.out;
+    EXPECT_EQ(run({"info"}).out.find("math "), std::string::npos);
+}
+
 TEST_F(CliTest, RenderAllWritesEverySceneListed) {
     const RunResult list = run({"list"});
     ASSERT_EQ(list.exit_code, 0) << list;
@@ -486,6 +511,224 @@ TEST_F(CliTest, InfoListsADevice) {
     ASSERT_TRUE(result.exited) << result;
     ASSERT_EQ(result.exit_code, 0) << result;
     EXPECT_TRUE(contains(result.out, "device")) << result;
+}
+
+// --- Views and images fgr cannot compute ----------------------------------------------------------
+//
+// A render whose camera basis would be NaN or infinite, or whose pixels come out NaN, is an error
+// (one line, non-zero exit, no file), never exit 0 with an image of nothing. These children get
+// their own kernel cache directory.
+
+// fgr run as a child with a kernel cache directory of its own.
+class CliWithOwnCache : public CliTest {
+protected:
+    using Environment = std::map<std::string, std::optional<std::string>>;
+
+    // fgr with `args` in the test's directory; plugins from beside fgr and from `plugin_dir`;
+    // `environment` changed on top.
+    RunResult run_with(const std::vector<std::string>& args, const fs::path& plugin_dir = {},
+                       const Environment& environment = {}) {
+        test::ChildOptions options;
+        options.working_dir = dir();
+        options.environment = environment;
+        options.environment.emplace("FGR_CACHE_DIR", cache_dir().string());
+        options.environment["FGR_PLUGIN_PATH"] =
+            plugin_dir.empty() ? std::nullopt : std::optional<std::string>(plugin_dir.string());
+        RunResult result = test::run_child(kFgrExe, args, options);
+        EXPECT_FALSE(result.timed_out) << describe(args) << ": " << result;
+        EXPECT_EQ(result.term_signal, 0) << describe(args) << ": " << result;
+        return result;
+    }
+
+    const fs::path& cache_dir() const { return cache_.path(); }
+
+private:
+    test::TempDir cache_{"fgr_cli_cache"};
+};
+
+class CliUncomputable : public CliWithOwnCache {
+protected:
+    // A camera path file in the test's directory with these keyframes (JSON objects).
+    std::string path_file(const std::string& name, const std::string& keyframes) {
+        std::ofstream(dir() / name) << R"({"format": "fgr-camera-path", "version": 1, "keyframes": [)"
+                                    << keyframes << "]}";
+        return name;
+    }
+
+    // Exit `code`, one error line mentioning each of `mention` (after the build's log lines, if
+    // it got that far), and nothing but `inputs` left in the directory.
+    void expect_refused(const RunResult& result, int code, const std::vector<std::string>& mention,
+                        const std::vector<std::string>& inputs) {
+        ASSERT_TRUE(result.exited) << result;
+        EXPECT_EQ(result.exit_code, code) << result;
+        RunResult error = result;
+        std::istringstream lines(result.err);
+        error.err.clear();
+        for (std::string line; std::getline(lines, line);) {
+            if (!line.starts_with("fgr: info: ")) error.err += line + "\n";
+        }
+        expect_one_error_line(error);
+        for (const std::string& part : mention) {
+            EXPECT_TRUE(contains(result.err, part)) << "should mention '" << part << "': " << result;
+        }
+        EXPECT_EQ(directory_listing(dir()), inputs) << "left behind: " << joined(directory_listing(dir()));
+    }
+};
+
+// Each keyframe is fine, but the camera passes through its target half-way: that moment has no
+// view direction.
+TEST_F(CliUncomputable, CameraPathMomentWithoutAViewDirectionIsRefused) {
+    const std::string file = path_file(
+        "cross.json", R"({"time": 0, "position": [2, -2, 1], "target": [0, 0, 0]},
+                         {"time": 1, "position": [0, 0, 0], "target": [2, -2, 1]})");
+    const RunResult result = run_with({"render", "mandelbulb", "-o", out_png().string(), "--width",
+                                       "16", "--height", "12", "--camera-path", file, "--time",
+                                       "0.5"});
+    expect_refused(result, 2, {"camera path 'cross.json' at time 0.5: position equals target"},
+                   {"cross.json"});
+    // Beside that moment the path renders.
+    const RunResult fine = run_with({"render", "mandelbulb", "-o", out_png().string(), "--width",
+                                     "16", "--height", "12", "--camera-path", file, "--time",
+                                     "0.25"});
+    EXPECT_EQ(fine.exit_code, 0) << fine;
+}
+
+TEST_F(CliUncomputable, KeyframesWhoseBasisWouldNotBeFiniteAreRefused) {
+    const std::string huge = path_file(
+        "huge.json", R"({"time": 0, "position": [1e30, 1e30, 1e30], "target": [-1e30, -1e30, -1e30]},
+                        {"time": 1, "position": [2, -2, 1], "target": [0, 0, 0]})");
+    const RunResult result = run_with({"render", "mandelbulb", "-o", out_png().string(), "--width",
+                                       "16", "--height", "12", "--camera-path", huge, "--time",
+                                       "1"});
+    expect_refused(result, 2, {"huge.json", "keyframe 0", "too far apart"}, {"huge.json"});
+
+    const std::string parallel = path_file(
+        "parallel.json", R"({"time": 0, "position": [0, 0, 3], "target": [0, 0, 0]},
+                            {"time": 1, "position": [2, -2, 1], "target": [0, 0, 0]})");
+    const RunResult up = run_with({"render", "mandelbulb", "-o", out_png().string(), "--width",
+                                   "16", "--height", "12", "--camera-path", parallel, "--time",
+                                   "1"});
+    expect_refused(up, 2, {"parallel.json", "keyframe 0", "up is zero or parallel"},
+                   {"huge.json", "parallel.json"});
+}
+
+TEST_F(CliUncomputable, VersionThatOnlyWrapsToOneIsRefused) {
+    std::ofstream(dir() / "v.json")
+        << R"({"format": "fgr-camera-path", "version": 4294967297, "keyframes": [
+              {"time": 0, "position": [2, -2, 1], "target": [0, 0, 0]},
+              {"time": 1, "position": [2, -2, 1.5], "target": [0, 0, 0]}]})";
+    const RunResult result = run_with({"render", "mandelbulb", "-o", out_png().string(), "--width",
+                                       "16", "--height", "12", "--camera-path", "v.json", "--time",
+                                       "0.5"});
+    expect_refused(result, 2, {"v.json", "unsupported \"version\" 4294967297"}, {"v.json"});
+}
+
+// A scene whose colour is NaN: the kernel runs, but the pixels it hits are not an image.
+TEST_F(CliUncomputable, NonFinitePixelsAreAnErrorAndNoFile) {
+    const fs::path plugins = fs::path(FGR_TEST_FIXTURE_DIR) / "bad" / "nan";
+    ASSERT_TRUE(fs::exists(plugins / "nan_colour.so")) << plugins;
+    const RunResult result = run_with({"render", "bad-nan-colour", "-o", out_png().string(),
+                                       "--width", "16", "--height", "12"},
+                                      plugins);
+    expect_refused(result, 1, {"bad-nan-colour", "non-finite colour or depth"}, {});
+}
+
+// --- fgr cache and the disk cache's limits --------------------------------------------------------
+
+class CliCache : public CliWithOwnCache {
+protected:
+    RunResult render(const std::vector<std::string>& extra = {},
+                     const Environment& environment = {}) {
+        std::vector<std::string> args{"render", "mandelbulb", "-o", out_png().string(), "--width",
+                                      "16", "--height", "12"};
+        args.insert(args.end(), extra.begin(), extra.end());
+        return run_with(args, {}, environment);
+    }
+
+    // Entries (programs and math verdicts) and their bytes, as the directory holds them.
+    std::pair<long long, long long> entries_and_bytes() const {
+        long long entries = 0, bytes = 0;
+        for (const fs::directory_entry& entry : fs::directory_iterator(cache_dir())) {
+            const std::string name = entry.path().filename().string();
+            if (name.ends_with(".bin") || (name.starts_with("math-") && name.ends_with(".txt"))) {
+                ++entries;
+                bytes += static_cast<long long>(entry.file_size());
+            }
+        }
+        return {entries, bytes};
+    }
+};
+
+TEST_F(CliCache, SizeReportsTheEntriesAndClearRemovesThemAll) {
+    ASSERT_EQ(render().exit_code, 0);
+    const auto [entries, bytes] = entries_and_bytes();
+    ASSERT_GT(entries, 1) << "a program and the math self-test's verdicts";
+    const bool has_verdict = std::any_of(
+        fs::directory_iterator(cache_dir()), fs::directory_iterator(), [](const auto& entry) {
+            return entry.path().filename().string().starts_with("math-");
+        });
+    EXPECT_TRUE(has_verdict) << joined(directory_listing(cache_dir()));
+    std::ofstream(cache_dir() / "notes.txt") << "not fgr's";
+
+    const RunResult size = run_with({"cache", "size"});
+    ASSERT_EQ(size.exit_code, 0) << size;
+    EXPECT_EQ(line_value(size.out, "directory"), cache_dir().string()) << size;
+    EXPECT_EQ(line_value(size.out, "entries"), std::to_string(entries)) << size;
+    const std::optional<std::string> reported = line_value(size.out, "bytes");
+    ASSERT_TRUE(reported.has_value()) << size;
+    EXPECT_EQ(parse_integer(reported->substr(0, reported->find(' '))), bytes) << size;
+    const std::optional<std::string> limit = line_value(size.out, "limit");
+    ASSERT_TRUE(limit.has_value()) << size;
+    EXPECT_EQ(parse_integer(limit->substr(0, limit->find(' '))), 256LL << 20) << size;
+    const RunResult custom = run_with({"cache", "size"}, {}, {{"FGR_CACHE_MAX_MB", "3"}});
+    EXPECT_TRUE(contains(line_value(custom.out, "limit").value_or(""), "3145728 (3.0 MiB, from"))
+        << custom;
+
+    const RunResult clear = run_with({"cache", "clear"});
+    ASSERT_EQ(clear.exit_code, 0) << clear;
+    EXPECT_TRUE(contains(clear.out, "removed " + std::to_string(entries) + " entries")) << clear;
+    EXPECT_EQ(directory_listing(cache_dir()), std::vector<std::string>{"notes.txt"});
+    const RunResult empty = run_with({"cache", "size"});
+    EXPECT_EQ(line_value(empty.out, "entries"), "0") << empty;
+}
+
+TEST_F(CliCache, WithoutASubcommandItSaysWhichThereAre) {
+    const RunResult result = run_with({"cache"});
+    EXPECT_EQ(result.exit_code, 2) << result;
+    expect_one_error_line(result);
+    EXPECT_TRUE(contains(result.err, "size or clear")) << result;
+}
+
+// Three programs of ~0.5 MB each (and the math self-test's) against a 1 MiB limit.
+TEST_F(CliCache, DiskCacheStaysUnderItsLimit) {
+    const Environment one_mib{{"FGR_CACHE_MAX_MB", "1"}};
+    for (const char* effects : {"none", "+shadows", "+fog"}) {
+        const RunResult result = render({"--effects", effects}, one_mib);
+        ASSERT_EQ(result.exit_code, 0) << result;
+        EXPECT_LE(entries_and_bytes().second, 1LL << 20)
+            << "after --effects " << effects << ": " << joined(directory_listing(cache_dir()));
+    }
+    EXPECT_GE(entries_and_bytes().first, 1);
+}
+
+// Entries are written through the atomic, fsync'd helper: with fsync failing in the cache
+// directory (an LD_PRELOAD shim), the render still succeeds, and no entry and no temporary is left
+// there; without the shim the same render stores its entries.
+TEST_F(CliCache, EntriesAreFsyncedAndAFailedWriteLeavesNothing) {
+    const fs::path shim = fs::path(FGR_TEST_FIXTURE_DIR) / "preload" / "fail_fsync.so";
+    ASSERT_TRUE(fs::exists(shim)) << shim;
+    const Environment failing{{"LD_PRELOAD", shim.string()},
+                              {"FGR_TEST_FAIL_FSYNC_UNDER", cache_dir().string()},
+                              {"ASAN_OPTIONS", "verify_asan_link_order=0"}};
+    const RunResult result = render({}, failing);
+    ASSERT_EQ(result.exit_code, 0) << result;
+    expect_rgb_png(out_png(), 16, 12);
+    EXPECT_EQ(directory_listing(cache_dir()), std::vector<std::string>{})
+        << "an entry whose fsync failed was kept, or its temporary left behind";
+
+    const RunResult stored = render();
+    ASSERT_EQ(stored.exit_code, 0) << stored;
+    EXPECT_GT(entries_and_bytes().first, 0);
 }
 
 }  // namespace

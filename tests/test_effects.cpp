@@ -667,30 +667,70 @@ TEST_F(EffectTest, DepthOfFieldBlursOnlyWhatIsOutOfFocus) {
 }
 
 // ---------------------------------------------------------------------------------------------
-// Anti-aliasing: more samples per pixel converge on the reference.
+// Anti-aliasing: more samples per pixel converge, as 1 / N.
 
-TEST_F(EffectTest, MoreSamplesComeCloserToTheConvergedImage) {
+// Jittered samples are independent and uniform in the pixel, so an image of N of them differs
+// from an independent image of M by, in expectation, v (1/N + 1/M) per value squared, v the
+// pixel's variance of one sample. Two independent M-sample references differ by 2 v / M, so for
+// every pixel E[(image - a)^2 - (M/N + 1)/2 (a - b)^2] = 0. Each image is rendered from its own
+// samples (first_sample): none is shared by construction. The mean of that per-pixel difference
+// must be within 4 standard errors of 0 (pixels are independent), at N = 4 and N = 64: the error
+// falls as 1 / N, which images sharing samples (an N-sample image inside the reference) do not
+// show.
+TEST_F(EffectTest, MoreSamplesConvergeAsOneOverTheSampleCount) {
     const Scene scene = test::inline_scene(R"(
 real scene_de(vec3 p, PARAMS) {
     (void)fgr_params;
-    vec3 q = op_repeat_limited(p, v3_splat(0.3f, 0.0f, 0.3f), v3_splat(4.0f, 0.0f, 2.0f));
-    return sd_sphere(q, 0.1f);
+    vec3 q = op_repeat_limited(p, v3_splat(0.15f, 0.0f, 0.15f), v3_splat(8.0f, 0.0f, 4.0f));
+    return sd_sphere(q, 0.05f);
 }
 )");
     auto plain = renderer(scene, 0);
-    const Frame reference = plain->render(request(scene, {}, 256));
-    const Frame few = plain->render(request(scene, {}, 4));
-    const Frame many = plain->render(request(scene, {}, 64));
-    ASSERT_GT(reference.hits, 500);
-    const double few_error = mean_squared_difference(few, reference);
-    const double many_error = mean_squared_difference(many, reference);
-    RecordProperty("mse", std::to_string(few_error) + " at 4 spp, " + std::to_string(many_error) +
-                              " at 64 spp");
-    EXPECT_GT(many_error, 0.0);
-    EXPECT_GT(few_error, 4.0 * many_error);
-    // One sample is the pixel centre: the same image as the first sample of any count.
-    const Frame one = plain->render(request(scene, {}, 1));
-    EXPECT_GT(mean_squared_difference(one, reference), few_error);
+    // 17 x 9 small balls at 384 x 256: many edge pixels, where most of the variance is.
+    const auto samples = [&](int first, int count) {
+        FrameRequest req = request(scene, {}, count);
+        req.width = 384;
+        req.height = 256;
+        req.first_sample = first;
+        return plain->render(req);
+    };
+    constexpr int kReference = 128;
+    const Frame a = samples(1, kReference);  // sample 0, the unjittered centre, is left out
+    const Frame b = samples(1 + kReference, kReference);
+    ASSERT_GT(samples(0, 1).hits, 5000) << "hits are counted by sample 0 only";
+    int next = 1 + 2 * kReference;
+    double previous_error = 0.0;
+    for (int count : {4, 64}) {
+        const Frame image = samples(next, count);
+        next += count;
+        const double c = (double(kReference) / count + 1.0) / 2.0;
+        double sum = 0.0, sum_squares = 0.0;
+        long varying = 0;
+        for (size_t pixel = 0; pixel * 3 < a.linear.size(); ++pixel) {
+            double x = 0.0, reference_spread = 0.0;
+            for (size_t i = 3 * pixel; i < 3 * pixel + 3; ++i) {
+                const double d = double(image.linear[i]) - double(a.linear[i]);
+                const double r = double(a.linear[i]) - double(b.linear[i]);
+                x += d * d - c * r * r;
+                reference_spread += r * r;
+            }
+            varying += reference_spread > 0.0;
+            sum += x;
+            sum_squares += x * x;
+        }
+        const double n = double(a.linear.size() / 3);
+        const double mean = sum / n;
+        const double standard_error = std::sqrt((sum_squares / n - mean * mean) / n);
+        const double error = mean_squared_difference(image, a);
+        std::printf("%d spp: mse %.4g, excess over the 1/N prediction %.3g +- %.2g (%ld varying "
+                    "pixels)\n", count, error, mean, standard_error, varying);
+        EXPECT_LT(std::abs(mean), 4.0 * standard_error) << count << " spp";
+        ASSERT_GT(varying, 5000) << "too few pixels vary between samples to judge";
+        if (previous_error > 0.0) {
+            EXPECT_LT(error, previous_error / 4.0) << "16 times the samples";
+        }
+        previous_error = error;
+    }
 }
 
 // ---------------------------------------------------------------------------------------------
@@ -703,6 +743,47 @@ TEST_F(EffectTest, ReflectionsWithNoMirrorsRenderTheSameImageAsWithout) {
     const Frame reflecting = renderer(scene, FGR_EFFECT_REFLECTIONS)->render(req);
     EXPECT_EQ(reflecting.image.rgb, plain.image.rgb);
     EXPECT_EQ(reflecting.hits, plain.hits);
+}
+
+// IEC 61966-2-1: V = 12.92 L for L <= 0.0031308, else 1.055 L^(1/2.4) - 0.055; code round(255 V).
+// Worked by hand (double precision): 0.001 -> 3.2946 -> 3; 0.0031308 -> 10.3147 -> 10 (the end
+// of the linear segment); 0.18 (mid grey) -> 1.055 * 0.48945 - 0.055 = 0.46136 -> 117.646 -> 118;
+// 0.5 -> 1.055 * 0.74915 - 0.055 = 0.73536 -> 187.516 -> 188; 0.9 -> 243.445 -> 243. A plain
+// 2.2 gamma would give 19, 117 and 186 at 0.0031308, 0.18 and 0.5.
+double srgb_code(double linear) {
+    const double v = linear <= 0.0031308 ? 12.92 * linear : 1.055 * std::pow(linear, 1.0 / 2.4) - 0.055;
+    return 255.0 * v;
+}
+
+TEST(SrgbEncoding, MatchesTheStandardsValues) {
+    const auto code_of = [](float linear) { return int(encode_srgb(linear)); };
+    EXPECT_EQ(code_of(0.0f), 0);
+    EXPECT_EQ(code_of(0.001f), 3);
+    EXPECT_EQ(code_of(0.0031308f), 10);
+    EXPECT_EQ(code_of(0.18f), 118);
+    EXPECT_EQ(code_of(0.5f), 188);
+    EXPECT_EQ(code_of(0.9f), 243);
+    EXPECT_EQ(code_of(1.0f), 255);
+    EXPECT_EQ(code_of(7.0f), 255);
+    EXPECT_EQ(code_of(-0.25f), 0);
+    EXPECT_EQ(code_of(std::nanf("")), 0);
+    // Each code's own linear value (the standard's inverse) encodes to that code exactly.
+    for (int code = 0; code <= 255; ++code) {
+        const double v = code / 255.0;
+        const double linear = v <= 0.04045 ? v / 12.92 : std::pow((v + 0.055) / 1.055, 2.4);
+        EXPECT_EQ(code_of(static_cast<float>(linear)), code) << "linear " << linear;
+    }
+    // Everywhere else within one code of the formula, and never decreasing. (encode_srgb looks
+    // values up in a table of 4097 steps: half a step moves the curve by at most 0.41 codes, where
+    // it is steepest, so values within 0.41 of a rounding boundary may land on the neighbour.)
+    int previous = 0;
+    for (int i = 0; i <= 100000; ++i) {
+        const float linear = static_cast<float>(i) / 100000.0f;
+        const int code = code_of(linear);
+        ASSERT_LE(std::abs(code - srgb_code(linear)), 0.5 + 0.41) << "linear " << linear;
+        ASSERT_GE(code, previous) << "linear " << linear;
+        previous = code;
+    }
 }
 
 TEST_F(EffectTest, ExposureAndToneMappingActAfterTheLinearImage) {

@@ -3,13 +3,17 @@
 // scene keeps the user's values of the parameters it still has. (The viewer reloading a rebuilt
 // plugin or an edited .cl file is tested end to end in test_viewer.cpp.)
 #include <chrono>
+#include <cstdlib>
 #include <filesystem>
 #include <fstream>
+#include <optional>
+#include <string>
 
 #include <gtest/gtest.h>
 
 #include "child_process.hpp"
 #include "fgr/parameters.hpp"
+#include "fgr/plugin_loader.hpp"
 #include "fgr/viewer/file_watcher.hpp"
 #include "test_scenes.hpp"
 
@@ -109,6 +113,85 @@ TEST(CarryParamValues, KeepsValuesOfParametersThatStillExist) {
     after.params.front().default_value = {0.2f, 0.3f, 0.4f};
     const std::vector<float> reset = carry_param_values(before, values, after);
     EXPECT_EQ(param_value(after, reset, "radius"), 0.2f) << "a changed type starts from default";
+}
+
+// --- Reloading a plugin that stays loaded ---------------------------------------------------------
+
+// The temporary directory set to one of the test's own while alive, so the copies
+// reload_scene_plugin makes (and must remove) can be counted.
+class OwnTemporaryDirectory {
+public:
+    OwnTemporaryDirectory() {
+        if (const char* tmpdir = std::getenv("TMPDIR")) saved_ = tmpdir;
+        ::setenv("TMPDIR", dir_.path().c_str(), 1);
+    }
+    OwnTemporaryDirectory(const OwnTemporaryDirectory&) = delete;
+    OwnTemporaryDirectory& operator=(const OwnTemporaryDirectory&) = delete;
+    ~OwnTemporaryDirectory() {
+        if (saved_) {
+            ::setenv("TMPDIR", saved_->c_str(), 1);
+        } else {
+            ::unsetenv("TMPDIR");
+        }
+    }
+    const fs::path& path() const { return dir_.path(); }
+
+private:
+    test::TempDir dir_{"fgr_reload_tmp"};
+    std::optional<std::string> saved_;
+};
+
+float scale_default(const LoadResult& loaded) {
+    const ParamInfo* scale = loaded.scene ? loaded.scene->find_param("scale") : nullptr;
+    return scale ? scale->default_value[0] : -1.0f;
+}
+
+// nodelete_v1 and nodelete_v2 are linked with -z nodelete: once dlopen'ed they stay loaded after
+// dlclose, as a C++ plugin pinned by a unique symbol does. v2 has scale 1.5 where v1 has 1.
+TEST(ReloadScenePlugin, ARebuiltPluginThatStaysLoadedIsReadAfresh) {
+    const fs::path fixtures = fs::path(FGR_TEST_FIXTURE_DIR) / "nodelete";
+    const test::TempDir plugins("fgr_reload_plugins");
+    const fs::path file = plugins.path() / "plugin.so";
+    fs::copy_file(fixtures / "nodelete_v1.so", file);
+    const LoadResult first = load_scene_plugin(file);  // as discovery at start-up
+    ASSERT_TRUE(first.scene) << first.error;
+    EXPECT_EQ(scale_default(first), 1.0f);
+
+    // Rebuilt: the new file renamed over the old, as linkers and package managers do (the old
+    // image stays intact in its unlinked file).
+    fs::copy_file(fixtures / "nodelete_v2.so", plugins.path() / "plugin.so.new");
+    fs::rename(plugins.path() / "plugin.so.new", file);
+    // Why reloading needs a copy: dlopen of the same path returns the image still loaded.
+    ASSERT_EQ(scale_default(load_scene_plugin(file)), 1.0f)
+        << "dlopen no longer returns a library still loaded for its path: this test cannot fail";
+
+    const OwnTemporaryDirectory tmp;
+    const LoadResult reloaded = reload_scene_plugin(file);
+    ASSERT_TRUE(reloaded.scene) << reloaded.error;
+    EXPECT_EQ(scale_default(reloaded), 1.5f) << "the old image came back";
+    EXPECT_EQ(reloaded.scene->plugin_file, file);
+    EXPECT_TRUE(fs::is_empty(tmp.path())) << "the temporary copy was left behind";
+
+    // Overwritten in place this time (`cp`): each reload reads the file as it is now. (No image
+    // was loaded from this file itself, only from copies, so nothing mapped changes under it.)
+    fs::copy_file(fixtures / "nodelete_v1.so", file, fs::copy_options::overwrite_existing);
+    EXPECT_EQ(scale_default(reload_scene_plugin(file)), 1.0f);
+    EXPECT_TRUE(fs::is_empty(tmp.path()));
+}
+
+TEST(ReloadScenePlugin, FailuresNameTheReasonAndLeaveNoCopy) {
+    const test::TempDir plugins("fgr_reload_plugins");
+    const OwnTemporaryDirectory tmp;
+    const LoadResult missing = reload_scene_plugin(plugins.path() / "missing.so");
+    EXPECT_FALSE(missing.scene);
+    EXPECT_NE(missing.error.find("cannot read the plugin file"), std::string::npos) << missing.error;
+    std::ofstream(plugins.path() / "text.so") << "not a library";
+    const LoadResult text = reload_scene_plugin(plugins.path() / "text.so");
+    EXPECT_FALSE(text.scene);
+    EXPECT_NE(text.error.find("not a loadable shared library"), std::string::npos) << text.error;
+    EXPECT_EQ(text.error.find("fgr-plugin-"), std::string::npos)
+        << "the reason names the copy: " << text.error;
+    EXPECT_TRUE(fs::is_empty(tmp.path()));
 }
 
 }  // namespace

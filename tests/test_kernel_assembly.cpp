@@ -2,6 +2,7 @@
 // errors mapped to the scene's own lines, the on-disk program cache, and parameters that change
 // without a rebuild.
 #include <cstdio>
+#include <cstdlib>
 #include <filesystem>
 #include <fstream>
 
@@ -12,6 +13,7 @@
 #include "fgr/plugin.h"
 #include "fgr/program_cache.hpp"
 #include "fgr/renderer.hpp"
+#include "hermetic_caches.hpp"
 #include "test_scenes.hpp"
 
 namespace fgr {
@@ -165,6 +167,23 @@ TEST_F(ProgramCacheTest, SecondBuildComesFromDiskAndADamagedEntryIsRebuilt) {
     std::ofstream(entry, std::ios::binary | std::ios::trunc) << "not a program binary";
     ProgramCache(directory_).build(device, program, &report);
     EXPECT_EQ(report.origin, BuildReport::Origin::Compiled);
+}
+
+// The tests are hermetic (hermetic_caches.cpp): fgr's default cache is this process's own fresh
+// directory and no cache of fgr's or the drivers' lies under the user's ~/.cache.
+TEST(ProgramCacheDirectory, TestsUseTheirOwnCachesNotTheUsers) {
+    EXPECT_EQ(ProgramCache::default_directory(), test::test_kernel_cache());
+    const char* home = std::getenv("HOME");
+    const std::filesystem::path user_cache =
+        std::filesystem::path(home ? home : "/nonexistent") / ".cache";
+    for (const char* variable : {"FGR_CACHE_DIR", "XDG_CACHE_HOME", "POCL_CACHE_DIR"}) {
+        const char* value = std::getenv(variable);
+        ASSERT_TRUE(value != nullptr && *value != '\0') << variable << " is not set";
+        const std::filesystem::path relative =
+            std::filesystem::path(value).lexically_relative(user_cache);
+        EXPECT_TRUE(relative.empty() || *relative.begin() == "..")
+            << variable << "=" << value << " lies under " << user_cache;
+    }
 }
 
 TEST(ProgramCacheKey, DependsOnSourceSwitchesAndDevice) {

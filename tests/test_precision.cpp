@@ -1,6 +1,8 @@
 // Numerical precision: `--precision auto` picks double only for views finer than float resolves,
-// the double pipeline renders an ordinary view like float at every packet width it supports, and
-// the kernel's double DE agrees with a long-double C++ DE far more closely than the float one.
+// the double pipeline renders an ordinary view like float at every packet width it supports, the
+// kernel's double DE agrees with a long-double C++ DE to the float rounding of its result, and in
+// deep zooms double's depths are a long-double march's. The assertions are about double: float's
+// figures are printed beside them, never required to be bad.
 #include <cmath>
 #include <filesystem>
 #include <limits>
@@ -39,8 +41,11 @@ protected:
     CameraView deep_zoom(double across = 1e-7) {
         return test::mandelbulb_deep_zoom(*bulb_, across);
     }
-    // Double's depths agree with a long-double sphere trace of the same rays and hit rule to two
-    // pixel footprints on 95% of sampled pixels; float's on fewer than half.
+    // Double's depths are the surface's: a long-double sphere trace of the same rays with the same
+    // hit rule (stop where DE < t * footprint) lands within two footprints of every sampled pixel
+    // (both marches stop somewhere in the shell the hit rule allows, which is about a footprint
+    // deep where the DE is accurate), and typically within half of one. Float's figures are
+    // printed for comparison, not asserted: this is about double, whatever float does.
     void expect_depths_match_long_double(const CameraView& view) {
         constexpr int width = 96, height = 72;
         const auto params = default_param_values(*bulb_);
@@ -49,9 +54,9 @@ protected:
         const CameraBasis basis = camera_basis(view);
         const long double footprint = param_value(*bulb_, params, "hit_threshold") * 2.0L *
                                       basis.tan_half_fov / width;
-        int double_close = 0, float_close = 0, checked = 0;
-        for (int py = 4; py < height; py += 9) {
-            for (int px = 5; px < width; px += 11) {
+        std::vector<double> double_errors, float_errors;  // in footprints
+        for (int py = 0; py < height; py += 2) {
+            for (int px = 0; px < width; px += 2) {
                 const glm::vec3 dir = primary_ray_direction(basis, width, height, float(px), float(py));
                 long double t = 0.0L;
                 for (int step = 0; step < 1000; ++step) {
@@ -62,16 +67,22 @@ protected:
                     t += de;
                 }
                 const size_t i = size_t(py) * width + size_t(px);
-                const long double tolerance = 2.0L * t * footprint;
-                ++checked;
-                double_close += std::abs(in_double.depth[i] - t) < tolerance;
-                float_close += std::abs(in_float.depth[i] - t) < tolerance;
+                ASSERT_GT(in_double.depth[i], 0.0f) << "pixel (" << px << ", " << py << ") missed";
+                double_errors.push_back(double(std::abs(in_double.depth[i] - t) / (t * footprint)));
+                float_errors.push_back(double(std::abs(in_float.depth[i] - t) / (t * footprint)));
             }
         }
-        std::printf("within two footprints of a long-double march: double %d, float %d of %d\n",
-                    double_close, float_close, checked);
-        EXPECT_GE(double_close, checked * 95 / 100);
-        EXPECT_LT(float_close, checked / 2);
+        const auto median = [](std::vector<double> values) {
+            std::nth_element(values.begin(), values.begin() + long(values.size() / 2), values.end());
+            return values[values.size() / 2];
+        };
+        const double worst = *std::max_element(double_errors.begin(), double_errors.end());
+        std::printf("depth against a long-double march, in footprints, over %zu pixels: double "
+                    "median %.3f largest %.3f; float median %.3f largest %.3g\n",
+                    double_errors.size(), median(double_errors), worst, median(float_errors),
+                    *std::max_element(float_errors.begin(), float_errors.end()));
+        EXPECT_LT(worst, 2.0);
+        EXPECT_LT(median(double_errors), 0.5);
     }
     static ComputeDevice* device_;
     static Scene* bulb_;
@@ -219,8 +230,10 @@ TEST_F(FloatAndDouble, DoubleJittersSamplesLikeFloat) {
 }
 
 // The kernel's double DE (colatitude form, complex powers) against the trigonometric formula in
-// long double, at points near the surface: within 1e-6 of the DE plus 1e-9 (the result comes back
-// as float, so ~6e-8 relative is the floor). The float kernel is only held to 5e-2.
+// long double, at points near the surface. The kernel returns its DE as a float, which rounds it
+// to 2^-24 = 6e-8 of itself; the error relative to DE + 1e-3 must stay under 1e-7, leaving the
+// double computation itself 4e-8 (a float-precision DE is 1e5 times further off). Float's figure
+// is printed for comparison only.
 TEST_F(FloatAndDouble, DoubleDeAgreesWithALongDoubleReference) {
     std::mt19937 rng(7);
     std::uniform_real_distribution<float> unit(-1.2f, 1.2f);
@@ -237,15 +250,13 @@ TEST_F(FloatAndDouble, DoubleDeAgreesWithALongDoubleReference) {
     for (size_t i = 0; i < points.size(); ++i) {
         const long double reference =
             test::mandelbulb_de<long double>(points[i].x, points[i].y, points[i].z, test::BulbParams{});
-        const double scale = double(reference) + 1e-3;  // error / scale < 1e-6: within 1e-6 DE + 1e-9
+        const double scale = double(reference) + 1e-3;
         worst_double = std::max(worst_double, double(std::abs(in_double[i] - reference)) / scale);
         worst_float = std::max(worst_float, double(std::abs(in_float[i] - reference)) / scale);
     }
-    std::printf("DE vs long double, worst relative error: double %.3g, float %.3g\n", worst_double,
-                worst_float);
-    EXPECT_LT(worst_double, 1e-6);
-    EXPECT_LT(worst_float, 5e-2);
-    EXPECT_LT(worst_double, worst_float);
+    std::printf("DE vs long double, worst error / (DE + 1e-3): double %.3g, float %.3g\n",
+                worst_double, worst_float);
+    EXPECT_LT(worst_double, 1e-7);
 }
 
 }  // namespace
@@ -282,29 +293,26 @@ DepthTexture depth_texture(const Frame& frame, int width, int height) {
     return {double(equal) / double(pairs), roughness[roughness.size() / 2]};
 }
 
-// A deep zoom 1e-6 and 1e-7 units across at the surface (pixels of 1e-8 and 1e-9, while float's
-// step near the bulb is 6e-8): double renders a smooth surface; float rounds rays onto a coarse
-// grid, which at 1e-6 shows as rough, noisy depth and at 1e-7 as flat blocks (where the equal
-// neighbours also hide the noise from the roughness median).
-TEST_F(FloatAndDouble, DeepZoomBreaksFloatWhileDoubleStaysSmooth) {
+// A deep zoom 1e-6 and 1e-7 units across at the surface: pixels of 1e-8 and 1e-9, where float's
+// step near the bulb is 6e-8 (the views are past what float resolves: auto picks double). Double
+// fills the view with surface and gives neighbouring rays their own depths: two rays 1e-9 apart
+// meet the surface at depths that differ by about 1e-9 times its slope, which double (2e-22 at
+// these depths) resolves, so equal neighbours can only be coincidences (under 1%). Float's
+// figures are printed for comparison only (rounding rays onto its grid gives it flat blocks).
+TEST_F(FloatAndDouble, DeepZoomInDoubleGivesNeighbouringRaysTheirOwnDepths) {
     constexpr int width = 96, height = 72;
     for (double across : {1e-6, 1e-7}) {
         const FrameRequest request{width, height, deep_zoom(across), default_param_values(*bulb_)};
-        const Frame in_float = renderer(false).render(request);
+        ASSERT_TRUE(needs_double_precision(request.view, width)) << across;
         const Frame in_double = renderer(true).render(request);
         ASSERT_EQ(in_double.hits, width * height) << "the view is filled by the surface";
-        const DepthTexture coarse = depth_texture(in_float, width, height);
         const DepthTexture fine = depth_texture(in_double, width, height);
-        std::printf("%g across: equal neighbours float %.3f double %.4f, roughness float %.3g "
-                    "double %.3g\n",
-                    across, coarse.equal_neighbours, fine.equal_neighbours, coarse.median_roughness,
-                    fine.median_roughness);
+        const DepthTexture coarse = depth_texture(renderer(false).render(request), width, height);
+        std::printf("%g across: equal neighbours double %.4f (float %.3f), roughness double %.3g "
+                    "(float %.3g)\n",
+                    across, fine.equal_neighbours, coarse.equal_neighbours, fine.median_roughness,
+                    coarse.median_roughness);
         EXPECT_LT(fine.equal_neighbours, 0.01) << across;
-        if (across > 5e-7) {
-            EXPECT_GT(coarse.median_roughness, 10.0 * fine.median_roughness);
-        } else {
-            EXPECT_GT(coarse.equal_neighbours, 0.25);
-        }
     }
 }
 

@@ -8,6 +8,7 @@
 #include <functional>
 #include <random>
 #include <string>
+#include <tuple>
 #include <vector>
 
 #include <glm/geometric.hpp>
@@ -161,14 +162,6 @@ dvec3 rotate(dvec3 v, int axis, double angle) {
     }
 }
 
-double smooth_union(double d1, double d2, double k) {
-    const double h = std::clamp(0.5 + 0.5 * (d2 - d1) / k, 0.0, 1.0);
-    return d2 + (d1 - d2) * h - k * h * (1.0 - h);
-}
-// Smooth subtraction and intersection follow from the smooth union by De Morgan: max(a, b) =
-// -min(-a, -b), and d1 minus d2 is the intersection of d1 with -d2.
-double smooth_intersection(double d1, double d2, double k) { return -smooth_union(-d1, -d2, k); }
-double smooth_subtraction(double d1, double d2, double k) { return smooth_intersection(d1, -d2, k); }
 
 // --- Checks
 
@@ -388,19 +381,132 @@ TEST(SdfCombinators, UnionOfDisjointShapesIsExactOutside) {
                 }});
 }
 
-// "Exact" here means "matches the formula": the smooth operations are bounds of their own
-// surfaces, which the Lipschitz check covers.
-TEST(SdfCombinators, SmoothOperationsMatchTheirFormulasAndAreOneLipschitz) {
-    // A wide blend (k = 0.5) so many of the Lipschitz pairs straddle the fillets.
-    check_case({"op_smooth_union", kPair + "return op_smooth_union(d1, d2, 0.5f);",
-                [](dvec3 p) { return smooth_union(pair_d1(p), pair_d2(p), 0.5); }, Quality::Exact,
-                true});
-    check_case({"op_smooth_subtraction", kPair + "return op_smooth_subtraction(d1, d2, 0.5f);",
-                [](dvec3 p) { return smooth_subtraction(pair_d1(p), pair_d2(p), 0.5); },
-                Quality::Exact, true});
-    check_case({"op_smooth_intersection", kPair + "return op_smooth_intersection(d1, d2, 0.5f);",
-                [](dvec3 p) { return smooth_intersection(pair_d1(p), pair_d2(p), 0.5); },
-                Quality::Exact, true});
+// --- Smooth combinators, by their properties rather than by their formula typed again. With
+// d1 = p.x and d2 = p.y the kernel's operation is evaluated at chosen input values directly.
+
+// (d1, d2) on a grid over [-1, 1]^2 in steps of 1/20, as points (d1, d2, 0).
+std::vector<glm::vec3> distance_pairs() {
+    std::vector<glm::vec3> points;
+    for (int i = -20; i <= 20; ++i) {
+        for (int j = -20; j <= 20; ++j) points.emplace_back(float(i) / 20.0f, float(j) / 20.0f, 0.0f);
+    }
+    return points;
+}
+
+// The operation `call` (an expression of d1 and d2) at every distance pair, per packet width.
+std::vector<std::vector<float>> smooth_op_values(const std::string& call) {
+    std::vector<std::vector<float>> values;
+    for (int width : kWidths) {
+        values.push_back(kernel_de("real d1 = p.x, d2 = p.y;\nreturn " + call + ";",
+                                   {distance_pairs()}, width)[0]);
+    }
+    return values;
+}
+
+// Float evaluation of values of order 1.
+constexpr double kOpSlack = 2e-6;
+
+// A smooth union's surface contains both shapes and rounds the crease between them: it is never
+// above the sharp union min(d1, d2), at most k/4 below it (where d1 = d2), equal to it once the
+// two distances are k or more apart, symmetric, and does not decrease when either input grows.
+// Exact values, worked by hand with the polynomial smooth minimum's other form
+// min(a, b) - max(k - |a - b|, 0)^2 / (4k), at k = 0.5:
+//   (0.1, 0.3): 0.1 - 0.3^2 / 2 = 0.055;  (0, 0): -0.125;  (0.2, -0.05): -0.05 - 0.25^2 / 2 =
+//   -0.08125;  (-0.3, -0.3): -0.425;  (0.6, 0.05): 0.05 (0.55 apart: the sharp minimum).
+TEST(SdfCombinators, SmoothUnionIsBelowTheUnionByAtMostAQuarterOfK) {
+    constexpr double k = 0.5;
+    const auto pairs = distance_pairs();
+    const auto wide = smooth_op_values("op_smooth_union(d1, d2, 0.5f)");
+    const auto narrow = smooth_op_values("op_smooth_union(d1, d2, 0.25f)");
+    const auto at = [&](const std::vector<float>& values, double d1, double d2) {
+        const size_t i = size_t(std::lround(d1 * 20.0) + 20) * 41 + size_t(std::lround(d2 * 20.0) + 20);
+        return double(values[i]);
+    };
+    for (size_t w = 0; w < wide.size(); ++w) {
+        SCOPED_TRACE("width " + std::to_string(kWidths[w]));
+        const auto& values = wide[w];
+        EXPECT_NEAR(at(values, 0.1, 0.3), 0.055, kOpSlack);
+        EXPECT_NEAR(at(values, 0.0, 0.0), -0.125, kOpSlack);
+        EXPECT_NEAR(at(values, 0.2, -0.05), -0.08125, kOpSlack);
+        EXPECT_NEAR(at(values, -0.3, -0.3), -0.425, kOpSlack);
+        EXPECT_NEAR(at(values, 0.6, 0.05), 0.05, kOpSlack);
+        for (size_t i = 0; i < pairs.size(); ++i) {
+            const double d1 = pairs[i].x, d2 = pairs[i].y, value = values[i];
+            const double sharp = std::min(d1, d2);
+            SCOPED_TRACE(::testing::Message() << "(d1, d2) = (" << d1 << ", " << d2 << ")");
+            ASSERT_LE(value, sharp + kOpSlack);
+            ASSERT_GE(value, sharp - k / 4.0 - kOpSlack);
+            if (std::abs(d1 - d2) >= k) {
+                ASSERT_NEAR(value, sharp, kOpSlack);
+            }
+            ASSERT_NEAR(value, at(values, d2, d1), kOpSlack) << "swapped";
+            if (d1 < 1.0) {
+                ASSERT_LE(value, at(values, d1 + 0.05, d2) + kOpSlack);
+            }
+            if (d2 < 1.0) {
+                ASSERT_LE(value, at(values, d1, d2 + 0.05) + kOpSlack);
+            }
+            // A wider blend rounds more: never above the narrower one.
+            ASSERT_LE(value, double(narrow[w][i]) + kOpSlack);
+        }
+    }
+}
+
+// Smooth intersection rounds the crease of max(d1, d2) from inside: never below it, at most k/4
+// above it (where d1 = d2), equal to it once the distances are k apart. By hand at k = 0.5:
+//   (0.1, 0.3): 0.3 + 0.3^2 / 2 = 0.345;  (0.2, 0.2): 0.325;  (-0.4, 0.3): 0.3 (0.7 apart).
+// Smooth subtraction (shape 1 minus shape 2) is the same about max(d1, -d2):
+//   (0.2, 0.1): max 0.2, d1 and -d2 0.3 apart: 0.2 + 0.2^2 / 2 = 0.22;  (0.1, -0.1): 0.225;
+//   (0.5, 0.3): 0.5 (0.8 apart).
+TEST(SdfCombinators, SmoothIntersectionAndSubtractionAreAboveTheSharpOnesByAtMostAQuarterOfK) {
+    constexpr double k = 0.5;
+    const auto pairs = distance_pairs();
+    const auto intersection = smooth_op_values("op_smooth_intersection(d1, d2, 0.5f)");
+    const auto subtraction = smooth_op_values("op_smooth_subtraction(d1, d2, 0.5f)");
+    const auto at = [&](const std::vector<float>& values, double d1, double d2) {
+        const size_t i = size_t(std::lround(d1 * 20.0) + 20) * 41 + size_t(std::lround(d2 * 20.0) + 20);
+        return double(values[i]);
+    };
+    for (size_t w = 0; w < intersection.size(); ++w) {
+        SCOPED_TRACE("width " + std::to_string(kWidths[w]));
+        EXPECT_NEAR(at(intersection[w], 0.1, 0.3), 0.345, kOpSlack);
+        EXPECT_NEAR(at(intersection[w], 0.2, 0.2), 0.325, kOpSlack);
+        EXPECT_NEAR(at(intersection[w], -0.4, 0.3), 0.3, kOpSlack);
+        EXPECT_NEAR(at(subtraction[w], 0.2, 0.1), 0.22, kOpSlack);
+        EXPECT_NEAR(at(subtraction[w], 0.1, -0.1), 0.225, kOpSlack);
+        EXPECT_NEAR(at(subtraction[w], 0.5, 0.3), 0.5, kOpSlack);
+        for (size_t i = 0; i < pairs.size(); ++i) {
+            const double d1 = pairs[i].x, d2 = pairs[i].y;
+            SCOPED_TRACE(::testing::Message() << "(d1, d2) = (" << d1 << ", " << d2 << ")");
+            for (const auto& [values, a, b, name] :
+                 {std::tuple{&intersection[w], d1, d2, "intersection"},
+                  std::tuple{&subtraction[w], d1, -d2, "subtraction"}}) {
+                const double value = (*values)[i], sharp = std::max(a, b);
+                ASSERT_GE(value, sharp - kOpSlack) << name;
+                ASSERT_LE(value, sharp + k / 4.0 + kOpSlack) << name;
+                if (std::abs(a - b) >= k) {
+                    ASSERT_NEAR(value, sharp, kOpSlack) << name;
+                }
+            }
+        }
+    }
+}
+
+// On real shapes (a sphere and a box that overlap, a wide blend so many pairs straddle the
+// fillets) each smooth operation stays 1-Lipschitz, so the march may step by it.
+TEST(SdfCombinators, SmoothOperationsAreOneLipschitz) {
+    const auto [first, second] = random_pairs();
+    for (const char* op : {"op_smooth_union", "op_smooth_subtraction", "op_smooth_intersection"}) {
+        for (int width : kWidths) {
+            const auto values =
+                kernel_de(kPair + "return " + op + "(d1, d2, 0.5f);", {first, second}, width);
+            for (size_t i = 0; i < first.size(); ++i) {
+                const double separation = glm::length(first[i] - second[i]);
+                ASSERT_LE(std::abs(values[0][i] - values[1][i]), (1.0 + 1e-3) * separation + 1e-6)
+                    << op << " width " << width << " pair " << i;
+            }
+        }
+    }
 }
 
 TEST(SdfCombinators, SmoothOperationsWithZeroRadiusAreSharp) {

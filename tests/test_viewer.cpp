@@ -367,6 +367,36 @@ TEST_F(ViewerTest, RebuiltPluginsAreReloadedAndBrokenUpdatesKeepTheWorkingVersio
     EXPECT_EQ(stat_text(run.result.out, "scene"), "fixture-other") << run.result;
 }
 
+// A plugin that stays loaded once opened (linked -z nodelete, as a C++ plugin pinned by a unique
+// symbol is), rebuilt as a new file renamed over the old: dlopen of its path would hand back the
+// image it still holds, so the viewer must load the new version from a copy.
+TEST_F(ViewerTest, RebuiltPluginThatStaysLoadedIsReloadedAsRebuilt) {
+    const fs::path fixtures = fs::path(FGR_TEST_FIXTURE_DIR) / "nodelete";
+    const fs::path plugins = dir() / "plugins";
+    fs::create_directory(plugins);
+    fs::copy_file(fixtures / "nodelete_v1.so", plugins / "fixture.so");
+    const std::string script = R"(0 wait_idle
+0 key F12
+3 wait_idle
+0 key F12
+0.2 quit
+)";
+    ViewerRun run;
+    {
+        AfterEachScreenshot changes(dir(), {[&] {
+                                        fs::copy_file(fixtures / "nodelete_v2.so",
+                                                      plugins / "fixture.so.new");
+                                        fs::rename(plugins / "fixture.so.new", plugins / "fixture.so");
+                                    }});
+        run = view(script, {"fixture-nodelete"}, plugins);
+    }
+    ASSERT_EQ(run.result.exit_code, 0) << run.result;
+    ASSERT_EQ(run.screenshots.size(), 2u) << run.result;
+    EXPECT_NE(run.result.err.find("reloaded 'fixture-nodelete'"), std::string::npos) << run.result;
+    EXPECT_GT(mean_abs_difference(read_png(run.screenshots[0]), read_png(run.screenshots[1])), 5.0)
+        << "the old image of the plugin came back: the bigger sphere did not show" << run.result;
+}
+
 TEST_F(ViewerTest, DevModeReloadsAnEditedSourceAndKeepsTheLastOneThatCompiles) {
     const fs::path fixtures = FGR_TEST_FIXTURE_DIR;
     const fs::path source = fixtures / "dev" / "dev_scene.cl";  // the path the plugin names

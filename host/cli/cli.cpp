@@ -38,7 +38,11 @@ int run_cli(int argc, char** argv) {
     bool verbose = false;
     app.add_flag("-v,--verbose", verbose, "debug logging");
     app.add_subcommand("list", "list the scenes found, with parameters, cameras and camera paths");
-    app.add_subcommand("info", "list OpenCL platforms and devices");
+    bool math_check = false;
+    app.add_subcommand("info", "list OpenCL platforms and devices")
+        ->add_flag("--math-check", math_check,
+                   "also run (or read the cached verdicts of) the device math self-test at every "
+                   "precision and packet width");
     RenderOptions render_options;
     add_render_command(app, render_options);
     ViewCommandOptions view_options;
@@ -47,16 +51,20 @@ int run_cli(int argc, char** argv) {
     add_new_scene_command(app, new_scene_options);
     BenchOptions bench_options;
     add_bench_command(app, bench_options);
+    CacheOptions cache_options;
+    add_cache_command(app, cache_options);
     if (argc < 2) {
         std::fputs(app.help().c_str(), stdout);
-        return report_error("no command given (commands: list, info, render, view, new-scene, bench)", kExitUsage);
+        return report_error(
+            "no command given (commands: list, info, render, view, new-scene, bench, cache)",
+            kExitUsage);
     }
     if (const std::string first = argv[1]; !first.empty() && first.front() != '-' &&
         first != "list" && first != "info" && first != "render" && first != "view" &&
-        first != "new-scene" && first != "bench") {
+        first != "new-scene" && first != "bench" && first != "cache") {
         return report_error(
             fmt::format(
-                "unknown command '{}' (commands: list, info, render, view, new-scene, bench)",
+                "unknown command '{}' (commands: list, info, render, view, new-scene, bench, cache)",
                 first),
                             kExitUsage);
     }
@@ -71,10 +79,11 @@ int run_cli(int argc, char** argv) {
     try {
         const std::string command = app.get_subcommands().front()->get_name();
         if (command == "list") return command_list();
-        if (command == "info") return command_info();
+        if (command == "info") return command_info(math_check);
         if (command == "view") return command_view(view_options);
         if (command == "new-scene") return command_new_scene(new_scene_options);
         if (command == "bench") return command_bench(bench_options);
+        if (command == "cache") return command_cache(cache_options);
         return command_render(render_options);
     } catch (const UsageError& error) {
         return report_error(error.what(), kExitUsage);

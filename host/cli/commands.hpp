@@ -1,6 +1,6 @@
 #pragma once
 // The `fgr` executable's commands, one file each (list.cpp, info.cpp, render.cpp, view.cpp,
-// bench.cpp, bench_accuracy.cpp, new_scene.cpp), and what they share (common.cpp). run_cli
+// bench.cpp, bench_accuracy.cpp, new_scene.cpp, cache.cpp), and what they share (common.cpp). run_cli
 // (cli.cpp) registers each command's options with CLI11 and runs the one given. A command returns
 // the exit code, throws UsageError for bad input (exit 2) and anything else for failures while
 // running (exit 1).
@@ -52,7 +52,8 @@ void write_output(const std::filesystem::path& file, const std::string& text);
 // --- fgr list, fgr info --------------------------------------------------------------------------
 
 int command_list();
-int command_info();
+// With `math_check`, each device's math self-test verdict per precision and packet width.
+int command_info(bool math_check);
 
 // --- fgr render ----------------------------------------------------------------------------------
 
@@ -124,5 +125,15 @@ struct NewSceneOptions {
 
 void add_new_scene_command(CLI::App& app, NewSceneOptions& options);
 int command_new_scene(const NewSceneOptions& options);
+
+// --- fgr cache size, fgr cache clear -------------------------------------------------------------
+
+struct CacheOptions {
+    CLI::App* size = nullptr;
+    CLI::App* clear = nullptr;
+};
+
+void add_cache_command(CLI::App& app, CacheOptions& options);
+int command_cache(const CacheOptions& options);
 
 }  // namespace fgr

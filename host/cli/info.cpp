@@ -1,12 +1,33 @@
-// fgr info: the OpenCL devices, numbered for --device.
+// fgr info: the OpenCL devices, numbered for --device, and on request their math self-test.
 #include <fmt/format.h>
 
 #include "commands.hpp"
+#include "fgr/math_check.hpp"
 #include "fgr/opencl_device.hpp"
+#include "fgr/program_cache.hpp"
 
 namespace fgr {
+namespace {
 
-int command_info() {
+// "float1 pass, float4 pass, ..., double16 FAIL (...)" for one device.
+void print_math_check(const DeviceInfo& info) {
+    const ComputeDevice device = open_device(info.index);
+    ProgramCache cache(ProgramCache::default_directory());
+    for (bool double_precision : {false, true}) {
+        if (double_precision && !info.has_fp64) continue;
+        for (int width : {1, 4, 8, 16}) {
+            if (double_precision && width == 1) continue;  // double runs 4+ lanes
+            const std::string verdict = math_check_verdict(device, cache, double_precision, width);
+            fmt::print("  math {:<9} {}\n",
+                       fmt::format("{}{}:", double_precision ? "double" : "float", width),
+                       verdict.empty() ? "pass" : "FAIL: " + verdict);
+        }
+    }
+}
+
+}  // namespace
+
+int command_info(bool math_check) {
     const auto devices = list_devices();
     if (devices.empty()) {
         throw RuntimeFailure("no OpenCL device found (install an OpenCL driver, e.g. pocl-opencl-icd)");
@@ -21,6 +42,7 @@ int command_info() {
         fmt::print("  global memory:  {} MiB\n", device.global_memory_bytes >> 20);
         fmt::print("  double:         {}\n", device.has_fp64 ? "yes (cl_khr_fp64)" : "no");
         fmt::print("  packet width:   {} rays per work-item\n", preferred_packet_width(device));
+        if (math_check) print_math_check(device);
     }
     return 0;
 }

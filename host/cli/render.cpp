@@ -14,6 +14,7 @@
 #include "fgr/program_cache.hpp"
 #include "fgr/renderer.hpp"
 #include "fgr/still_image.hpp"
+#include "fgr/view_validation.hpp"
 
 namespace fgr {
 namespace {
@@ -49,7 +50,14 @@ CameraView choose_view(const Scene& scene, const RenderOptions& options) {
             throw UsageError(fmt::format("--time {} is outside camera path '{}' [{}, {}]",
                                          *options.time, path.name, first, last));
         }
-        return evaluate_camera_path(path, *options.time);
+        const CameraView view = evaluate_camera_path(path, *options.time);
+        // Every keyframe was checked, but an interpolated moment can still be degenerate (a path
+        // whose camera passes through its target).
+        if (const std::string problem = computed_view_problem(view); !problem.empty()) {
+            throw UsageError(fmt::format("camera path '{}' at time {}: {}", *options.camera_path,
+                                         *options.time, problem));
+        }
+        return view;
     }
     if (options.camera) {
         const NamedCamera* camera = scene.find_camera(*options.camera);

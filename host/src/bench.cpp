@@ -147,6 +147,7 @@ RunFigures bench_run(const CameraPath& path, const Scene& scene, const BenchSett
         }
         frame_ms.push_back(renderer->render(request).render_ms);
         double_frames += in_double;
+        if (settings.on_frame) settings.on_frame(request.view, time, frame_ms.back());
     }
     RunFigures run =
         summarise_run(frame_ms, std::chrono::duration<double>(Clock::now() - start).count());

@@ -105,6 +105,12 @@ glm::vec3 least_aligned_axis(glm::vec3 direction) {
 }
 
 
+bool up_defines_roll(glm::vec3 forward, glm::vec3 up) {
+    const float up_length = glm::length(up);
+    if (!(up_length > 0.0f) || !std::isfinite(up_length)) return false;
+    return glm::length(glm::cross(forward, up)) > kMinUpSine * up_length;
+}
+
 CameraBasis camera_basis(const CameraView& view) {
     CameraBasis basis;
     basis.eye = view.position;
@@ -114,7 +120,7 @@ CameraBasis camera_basis(const CameraView& view) {
     // bit.
     basis.forward = glm::normalize(glm::vec3(view.target - view.position));
     glm::vec3 side = glm::cross(basis.forward, view.up);
-    if (!(glm::length(side) > kDegenerateLength)) {
+    if (!up_defines_roll(basis.forward, view.up)) {
         // Looking along the up hint: any roll is as good as another, but it must be finite.
         side = glm::cross(basis.forward, least_aligned_axis(basis.forward));
     }

@@ -1,6 +1,7 @@
 #include "fgr/camera_path_file.hpp"
 
 #include <cmath>
+#include <cstdint>
 #include <fstream>
 #include <sstream>
 #include <stdexcept>
@@ -9,6 +10,7 @@
 #include <nlohmann/json.hpp>
 
 #include "fgr/atomic_file.hpp"
+#include "fgr/view_validation.hpp"
 
 namespace fgr {
 namespace {
@@ -27,7 +29,9 @@ json vec3_json(glm::dvec3 v) { return json::array({v.x, v.y, v.z}); }
 double finite_double(const json& value, const std::string& what) {
     if (!value.is_number()) fail(what + " must be a number");
     const double number = value.get<double>();
-    if (!std::isfinite(number) || std::abs(number) > 1e30) fail(what + " must be finite");
+    if (!std::isfinite(number) || std::abs(number) > 1e30) {
+        fail(what + " must be finite and at most 1e30 in magnitude");
+    }
     return number;
 }
 
@@ -49,6 +53,21 @@ glm::vec3 vec3_from(const json& keyframe, const char* key, const std::string& wh
     return glm::vec3(dvec3_from(keyframe, key, where));
 }
 
+// "version" must be the integer 1: compared as the integer JSON holds, never converted first
+// (4294967297 is not 1), and 1.5 or "1" are not integers.
+void check_version(const json& document) {
+    if (!document.contains("version")) fail("\"version\" is missing (this fgr reads version 1)");
+    const json& version = document.at("version");
+    const bool is_one = version.is_number_unsigned() ? version.get<std::uint64_t>() == 1
+                        : version.is_number_integer() ? version.get<std::int64_t>() == 1
+                                                      : false;
+    if (!is_one) {
+        std::string shown = version.dump();
+        if (shown.size() > 40) shown = shown.substr(0, 40) + "...";
+        fail("unsupported \"version\" " + shown + " (this fgr reads version 1)");
+    }
+}
+
 Keyframe keyframe_from(const json& entry, std::size_t index) {
     const std::string where = "keyframe " + std::to_string(index);
     if (!entry.is_object()) fail(where + " must be an object");
@@ -59,13 +78,10 @@ Keyframe keyframe_from(const json& entry, std::size_t index) {
     keyframe.view.target = dvec3_from(entry, "target", where);
     keyframe.view.up = entry.contains("up") ? vec3_from(entry, "up", where) : glm::vec3(0, 0, 1);
     if (entry.contains("fov")) keyframe.view.fov_degrees = finite_number(entry.at("fov"), where + " \"fov\"");
-    if (!(keyframe.view.fov_degrees > 0.0f && keyframe.view.fov_degrees < 180.0f)) {
-        fail(where + " \"fov\" must be in (0, 180) degrees");
+    // The check plugins' cameras and keyframes get (view_validation.hpp).
+    if (const std::string problem = view_problem(keyframe.view); !problem.empty()) {
+        fail(where + ": " + problem);
     }
-    if (glm::length(keyframe.view.target - keyframe.view.position) <= 0.0f) {
-        fail(where + " has target equal to position");
-    }
-    if (glm::length(keyframe.view.up) <= 0.0f) fail(where + " \"up\" must not be zero");
     return keyframe;
 }
 
@@ -91,10 +107,7 @@ CameraPathFile parse_camera_path_json(const std::string& text) {
     if (document.is_discarded()) fail("not valid JSON");
     if (!document.is_object()) fail("must be a JSON object");
     if (document.value("format", "") != kFormat) fail("\"format\" must be \"fgr-camera-path\"");
-    if (!document.contains("version") || !document.at("version").is_number_integer() ||
-        document.at("version").get<int>() != kVersion) {
-        fail("unsupported \"version\" (this fgr reads version 1)");
-    }
+    check_version(document);
     CameraPathFile file;
     if (document.contains("scene") && document.at("scene").is_string()) {
         file.scene = document.at("scene").get<std::string>();

@@ -14,6 +14,8 @@
 #include <glm/vec3.hpp>
 #include <spdlog/fmt/fmt.h>
 
+#include "fgr/view_validation.hpp"
+
 namespace fgr {
 namespace {
 
@@ -295,26 +297,15 @@ std::vector<ParamInfo> copy_params(const fgr_scene_desc& desc) {
 
 // --- Cameras -------------------------------------------------------------------------------------
 
-// The fields fgr_camera and fgr_keyframe share.
+// The fields fgr_camera and fgr_keyframe share, checked as every given view is
+// (view_validation.hpp).
 CameraView copy_view(const float (&position)[3], const float (&target)[3], const float (&up)[3],
                      float fov_degrees, const std::string& where) {
-    if (!all_finite(position, 3) || !all_finite(target, 3) || !all_finite(up, 3) ||
-        !std::isfinite(fov_degrees)) {
-        fail("{}: numbers not finite", where);
-    }
     // The ABI's float coordinates widen exactly into the host's double position and target.
-    CameraView view{glm::dvec3(to_vec3(position)), glm::dvec3(to_vec3(target)), to_vec3(up),
-                    fov_degrees};
-    if (view.position == view.target) fail("{}: position equals target", where);
-    if (!(fov_degrees > 0.0f && fov_degrees < 180.0f)) {
-        fail("{}: fov {} outside (0, 180)", where, fov_degrees);
-    }
-    // In double, relative to both lengths, so tiny or huge scenes are judged alike.
-    const glm::dvec3 direction = glm::dvec3(view.target) - glm::dvec3(view.position);
-    const glm::dvec3 up_vector(view.up);
-    const double cross_length = glm::length(glm::cross(direction, up_vector));
-    if (!(cross_length > 1e-6 * glm::length(direction) * glm::length(up_vector))) {
-        fail("{}: up is zero or parallel to the view direction", where);
+    const CameraView view{glm::dvec3(to_vec3(position)), glm::dvec3(to_vec3(target)), to_vec3(up),
+                          fov_degrees};
+    if (const std::string problem = view_problem(view); !problem.empty()) {
+        fail("{}: {}", where, problem);
     }
     return view;
 }

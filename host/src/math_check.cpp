@@ -12,7 +12,7 @@
 #include <fmt/format.h>
 #include <spdlog/spdlog.h>
 
-#include "fgr/atomic_file.hpp"
+#include "fgr/cache_directory.hpp"
 #include "fgr/kernel_assembly.hpp"
 #include "fgr/kernel_library.hpp"
 
@@ -303,6 +303,7 @@ std::string math_check_verdict(const ComputeDevice& device, ProgramCache& cache,
         std::ifstream in(file);
         std::string line;
         if (in && std::getline(in, line) && (line == "pass" || line.rfind("fail: ", 0) == 0)) {
+            touch_cache_entry(file);  // recently used, like a program the cache hands out
             std::string verdict = line == "pass" ? std::string() : line.substr(6);
             return verdicts[memory_key] = verdict;
         }
@@ -317,13 +318,11 @@ std::string math_check_verdict(const ComputeDevice& device, ProgramCache& cache,
                   packet_width), device.info.name, report.lanes_checked,
                   verdict.empty() ? "pass" : verdict);
     if (!file.empty()) {
-        try {
-            std::filesystem::create_directories(file.parent_path());
-            write_text_file_atomically(file, (verdict.empty() ? "pass" : "fail: " + verdict) + "\n");
-        } catch (const std::exception& error) {
-            // Like the program cache, the verdict file only saves time.
-            spdlog::debug("could not store the math self-test verdict: {}", error.what());
-        }
+        // An entry of the kernel cache like the programs: atomic, and under its size limit.
+        const std::string failure = store_cache_entry(
+            file, (verdict.empty() ? "pass" : "fail: " + verdict) + "\n", cache.size_limit());
+        // Like the program cache, the verdict file only saves time.
+        if (!failure.empty()) spdlog::debug("could not store the math self-test verdict: {}", failure);
     }
     return verdicts[memory_key] = verdict;
 }

@@ -1,11 +1,12 @@
 #include "fgr/program_cache.hpp"
 
-#include <unistd.h>
-
 #include <chrono>
 #include <cstdlib>
+#include <exception>
 #include <fstream>
 #include <iterator>
+#include <string_view>
+#include <vector>
 
 #include <fmt/format.h>
 #include <spdlog/spdlog.h>
@@ -46,7 +47,8 @@ std::string build_log(const cl::Program& program, const cl::Device& device) {
 
 }  // namespace
 
-ProgramCache::ProgramCache(std::filesystem::path directory) : directory_(std::move(directory)) {}
+ProgramCache::ProgramCache(std::filesystem::path directory, std::uintmax_t size_limit)
+    : directory_(std::move(directory)), size_limit_(size_limit) {}
 
 std::filesystem::path ProgramCache::default_directory() {
     if (const char* dir = std::getenv("FGR_CACHE_DIR"); dir && *dir) return dir;
@@ -85,6 +87,7 @@ cl::Program ProgramCache::build(const ComputeDevice& device, const AssembledProg
     if (!file.empty()) built = load_binary(device, program, file);
     if (built()) {
         result.origin = BuildReport::Origin::Disk;
+        touch_cache_entry(file);  // recently used: the last to be evicted
     } else {
         built = cl::Program(device.context, program.source);
         try {
@@ -127,28 +130,22 @@ cl::Program ProgramCache::load_binary(const ComputeDevice& device, const Assembl
 }
 
 void ProgramCache::store_binary(const cl::Program& program, const std::filesystem::path& file) {
+    std::string failure;
     try {
         const auto binaries = program.getInfo<CL_PROGRAM_BINARIES>();
         if (binaries.empty() || binaries.front().empty()) {
             spdlog::debug("driver returned no program binary to cache");
             return;
         }
-        std::error_code error;
-        std::filesystem::create_directories(file.parent_path(), error);
-        // Write then rename, so a concurrent reader never sees half a binary.
-        const auto temp = file.string() + fmt::format(".tmp-{}", ::getpid());
-        {
-            std::ofstream out(temp, std::ios::binary);
-            out.write(reinterpret_cast<const char*>(binaries.front().data()),
-                      static_cast<std::streamsize>(binaries.front().size()));
-            if (!out) throw std::runtime_error("write failed");
-        }
-        std::filesystem::rename(temp, file, error);
-        if (error) std::filesystem::remove(temp, error);
+        const std::vector<unsigned char>& binary = binaries.front();
+        failure = store_cache_entry(
+            file, std::string_view(reinterpret_cast<const char*>(binary.data()), binary.size()),
+            size_limit_);
     } catch (const std::exception& error) {
-        // The cache only saves time; failing to fill it must never fail a render.
-        spdlog::debug("could not cache program binary {}: {}", file.string(), error.what());
+        failure = error.what();
     }
+    // The cache only saves time; failing to fill it must never fail a render.
+    if (!failure.empty()) spdlog::debug("could not cache program binary {}: {}", file.string(), failure);
 }
 
 }  // namespace fgr

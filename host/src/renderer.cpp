@@ -7,6 +7,7 @@
 #include <mutex>
 #include <set>
 #include <stdexcept>
+#include <string>
 
 #include <glm/geometric.hpp>
 #include <spdlog/spdlog.h>
@@ -14,6 +15,7 @@
 #include "fgr/camera.hpp"
 #include "fgr/math_check.hpp"
 #include "fgr/parameters.hpp"
+#include "fgr/view_validation.hpp"
 
 namespace fgr {
 namespace {
@@ -76,6 +78,10 @@ void check_request(const Scene& scene, const FrameRequest& request) {
     }
     if (request.params.size() != default_param_values(scene).size()) {
         throw std::invalid_argument("parameter buffer does not match the scene's parameters");
+    }
+    // A basis with NaN or Inf in it would give every ray NaN: an image of nothing, not of the view.
+    if (const std::string problem = computed_view_problem(request.view); !problem.empty()) {
+        throw std::invalid_argument("cannot render this view: " + problem);
     }
 }
 

@@ -1,14 +1,25 @@
 #include "fgr/still_image.hpp"
 
+#include <cmath>
+#include <cstddef>
+#include <stdexcept>
+#include <string>
+
+#include <fmt/format.h>
 #include <spdlog/spdlog.h>
 
 #include "fgr/image_io.hpp"
 #include "fgr/kernel_assembly.hpp"
+#include "fgr/view_validation.hpp"
 
 namespace fgr {
 
 Frame render_still(const Scene& scene, const FrameRequest& request, const ComputeDevice& device,
                    ProgramCache& cache, const StillSettings& settings) {
+    // Before any kernel is built for it (Renderer::render would refuse it too).
+    if (const std::string problem = computed_view_problem(request.view); !problem.empty()) {
+        throw std::invalid_argument("cannot render this view: " + problem);
+    }
     const KernelSwitches in_float{
         settings.packet_width ? settings.packet_width : preferred_packet_width(device.info),
         settings.effects, settings.stats};
@@ -31,7 +42,24 @@ Frame render_still(const Scene& scene, const FrameRequest& request, const Comput
         spdlog::info("the surface in view is finer than float resolves: rendering in double");
         chosen = &build(true);
     }
-    return chosen->render(request);
+    Frame frame = chosen->render(request);
+    // A pixel the kernel could not compute must not reach a file as if it were an image.
+    if (const long broken = non_finite_pixels(frame); broken > 0) {
+        throw std::runtime_error(fmt::format(
+            "rendering '{}' gave non-finite colour or depth at {} of {} pixels", scene.id, broken,
+            frame.depth.size()));
+    }
+    return frame;
+}
+
+long non_finite_pixels(const Frame& frame) {
+    long broken = 0;
+    for (size_t pixel = 0; pixel < frame.depth.size(); ++pixel) {
+        const float* colour = &frame.linear[pixel * 3];
+        broken += !std::isfinite(frame.depth[pixel]) || !std::isfinite(colour[0]) ||
+                  !std::isfinite(colour[1]) || !std::isfinite(colour[2]);
+    }
+    return broken;
 }
 
 void write_still(const std::filesystem::path& path, const Frame& frame, int bit_depth,

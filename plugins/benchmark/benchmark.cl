@@ -17,12 +17,22 @@
 /* Distance to the sphere bounding an object, or the object's own DE once inside it. */
 inline real bounded(real bound, real object) { return fmax(bound, object); }
 
+/* A lane farther than 0.1 from an object's bound gets the bound alone, whether its packet took
+ * the early exit (every lane that far) or computed the object for its other lanes: a lane's
+ * distance never depends on which packet it marches in, so every packet width renders the same
+ * image. */
+inline real far_lanes_get_bound(real bound, real near_value) {
+    return select(near_value, bound, bound > 0.1f);
+}
+
 inline real bench_bulb(vec3 p, PARAMS, int record, orbit_trap* trap) {
     vec3 in_object = op_scale_point(op_translate(p, BENCH_BULB_CENTRE), BENCH_BULB_SCALE);
     real bound = sd_sphere(in_object, 1.25f);
     if (!record && fgr_all(bound > 0.1f)) return op_scale_distance(bound, BENCH_BULB_SCALE);
     real de = mandelbulb_de(in_object, 8.0f, 2.0f, param_iterations, 0, record, trap);
-    return op_scale_distance(bounded(bound, de), BENCH_BULB_SCALE);
+    real distance = bounded(bound, de);
+    if (!record) distance = far_lanes_get_bound(bound, distance);
+    return op_scale_distance(distance, BENCH_BULB_SCALE);
 }
 
 /* Menger sponge filling the cube [-1, 1]^3: the cube minus, at every level, the cross of square
@@ -50,7 +60,8 @@ inline real bench_sponge(vec3 p) {
                                 BENCH_SPONGE_HALF);
     real bound = sd_box(in_object, v3_splat(1.0f, 1.0f, 1.0f));
     if (fgr_all(bound > 0.1f)) return op_scale_distance(bound, BENCH_SPONGE_HALF);
-    return op_scale_distance(menger_sponge(in_object, 4), BENCH_SPONGE_HALF);
+    return op_scale_distance(far_lanes_get_bound(bound, menger_sponge(in_object, 4)),
+                             BENCH_SPONGE_HALF);
 }
 
 inline real bench_blob(vec3 p) {

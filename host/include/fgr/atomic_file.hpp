@@ -21,7 +21,8 @@ std::string replace_file_atomically(
 // the reason.
 std::string close_durably(std::FILE*& file);
 
-// Writes `contents` to `target` atomically. Throws std::runtime_error
+// Writes `contents` (bytes as they are: text or binary) to `target` atomically and durably
+// (fsync'd before the rename). Throws std::runtime_error
 // ("cannot write '<target>': <reason>").
 void write_text_file_atomically(const std::filesystem::path& target, std::string_view contents);
 

@@ -31,6 +31,9 @@ struct BenchSettings {
     int packet_width = 0;            // 0: the device's preference
     Precision precision = Precision::Auto;
     std::string path;                // camera path; empty: "benchmark" if the scene has it, else the first
+    // Called after every frame with the view rendered, its time on the camera path (in the
+    // keyframes' seconds) and its render time in ms, when set: what was played, for tests.
+    std::function<void(const CameraView&, float, double)> on_frame{};
 };
 
 struct RunFigures {

@@ -20,9 +20,17 @@ struct CameraBasis {
 // fallback up vector.
 glm::vec3 least_aligned_axis(glm::vec3 direction);
 
+// Whether `up` defines the roll of a camera looking along the unit vector `forward`: its length
+// is a finite, non-zero float and its component across `forward` is more than kMinUpSine of it.
+// camera_basis keeps an up that does; view_problem (view_validation.hpp) refuses a camera or
+// keyframe whose up does not.
+constexpr float kMinUpSine = 1e-6f;
+bool up_defines_roll(glm::vec3 forward, glm::vec3 up);
+
 // forward = normalize(target - position), right = normalize(cross(forward, view.up)),
-// up = cross(right, forward). An up hint parallel to the view direction is replaced by a world
-// axis so the basis stays finite.
+// up = cross(right, forward). An up hint that does not define the roll (up_defines_roll) is
+// replaced by a world axis, so a computed view looking along its up still gets a finite basis;
+// given views with such an up are refused before they get here (view_validation.hpp).
 CameraBasis camera_basis(const CameraView& view);
 
 // Angle (radians, small-angle approximation) one pixel subtends at the image centre.

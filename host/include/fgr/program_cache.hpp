@@ -1,12 +1,15 @@
 #pragma once
 // Building OpenCL programs once per (source, switches, device): in memory for the process, and as
-// device binaries on disk across runs, so a second `fgr render` skips the compiler.
+// device binaries on disk across runs, so a second `fgr render` skips the compiler. The disk
+// entries live in a cache directory shared with the math self-test's verdicts (cache_directory.hpp).
 
+#include <cstdint>
 #include <filesystem>
 #include <map>
 #include <stdexcept>
 #include <string>
 
+#include "fgr/cache_directory.hpp"
 #include "fgr/kernel_assembly.hpp"
 #include "fgr/opencl_device.hpp"
 
@@ -31,8 +34,10 @@ struct BuildReport {
 
 class ProgramCache {
 public:
-    // An empty directory keeps the cache in memory only.
-    explicit ProgramCache(std::filesystem::path directory);
+    // An empty directory keeps the cache in memory only. On disk, entries are kept under
+    // `size_limit` bytes by evicting the least recently used (cache_directory.hpp).
+    explicit ProgramCache(std::filesystem::path directory,
+                          std::uintmax_t size_limit = cache_size_limit());
 
     // $FGR_CACHE_DIR, else $XDG_CACHE_HOME/fgr/kernels, else ~/.cache/fgr/kernels, else none.
     static std::filesystem::path default_directory();
@@ -44,6 +49,7 @@ public:
     static std::string cache_key(const ComputeDevice& device, const AssembledProgram& program);
 
     const std::filesystem::path& directory() const { return directory_; }
+    std::uintmax_t size_limit() const { return size_limit_; }
 
 private:
     cl::Program load_binary(const ComputeDevice& device, const AssembledProgram& program,
@@ -51,6 +57,7 @@ private:
     void store_binary(const cl::Program& program, const std::filesystem::path& file);
 
     std::filesystem::path directory_;
+    std::uintmax_t size_limit_;
     std::map<std::string, cl::Program> programs_;
 };
 

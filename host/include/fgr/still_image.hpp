@@ -24,9 +24,14 @@ struct StillSettings {
 // Float or double as PrecisionChooser decides for the view; Auto on a device with double also
 // renders a float probe (float_probe_finds_fine_surface) and switches to double when the surface
 // in view is finer than float resolves. Throws KernelBuildError when the scene does not compile,
-// std::runtime_error when double was asked of a device without it.
+// std::runtime_error when double was asked of a device without it, and std::runtime_error when
+// a pixel's colour or depth came out NaN or infinite (non_finite_pixels): an image that could not
+// be computed is an error, never a file.
 Frame render_still(const Scene& scene, const FrameRequest& request, const ComputeDevice& device,
                    ProgramCache& cache, const StillSettings& settings);
+
+// Pixels of `frame` whose linear colour or depth is NaN or infinite.
+long non_finite_pixels(const Frame& frame);
 
 // Writes `frame` as a PNG: bit_depth 8, the tone-mapped sRGB image; 16, its linear colour times
 // `exposure` in a linear 16-bit PNG. Atomic and throwing like write_png.

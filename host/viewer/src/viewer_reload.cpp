@@ -54,7 +54,8 @@ void ViewerApp::poll_sources() {
 }
 
 void ViewerApp::reload_plugin(const std::filesystem::path& file) {
-    LoadResult loaded = load_scene_plugin(file);
+    // From a fresh copy: a library still loaded under this path would come back as it was.
+    LoadResult loaded = reload_scene_plugin(file);
     if (!loaded.scene) {
         const std::string message =
             fmt::format("{}: {} (keeping the version loaded before)", file.string(), loaded.error);
