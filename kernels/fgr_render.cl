@@ -33,7 +33,11 @@
 #endif
 #define FGR_TILE_H (FGR_WIDTH / FGR_TILE_W)
 
-/* The camera as the host sends it: eye, then the orthonormal basis, each padded to a float4. */
+/* The camera as the host sends it: eye, then the orthonormal basis, each padded to a float4. The
+ * host keeps the eye in double and sends it split, eye = hi + lo: hi (eye.xyz) is the nearest
+ * float, lo the float nearest the rest, carried in the otherwise unused w components
+ * (eye.w, forward.w, right.w). Double lanes see the eye to about 2^-48 of its size, so a deep
+ * zoom's eye can move by less than float's step. */
 typedef struct camera_frame {
     float4 eye;
     float4 forward;
@@ -46,6 +50,17 @@ typedef struct camera_frame {
 } camera_frame;
 
 inline vec3 splat_float4(float4 v) { return v3_splat(v.x, v.y, v.z); }
+
+/* The eye in the lanes' precision: hi + lo summed in double; float can only use hi, which keeps
+ * float images exactly as they were before the split. */
+inline vec3 camera_eye(camera_frame camera) {
+#ifdef FGR_DOUBLE
+    return v3_add(splat_float4(camera.eye),
+                  v3_splat(camera.eye.w, camera.forward.w, camera.right.w));
+#else
+    return splat_float4(camera.eye);
+#endif
+}
 
 /* Primary ray of sample `sample` through pixel (px, py): jittered in the pixel for anti-aliasing
  * and, with depth of field, from a point on the lens (radius `aperture`) towards the point of
@@ -76,7 +91,7 @@ __kernel void fgr_render(__global float* planes, int plane_size, int tile_count,
 
     const camera_sample jitter = sample_camera(px, py, sample);
     vec3 through_pixel = primary_direction(camera, px, py, jitter);
-    vec3 eye = splat_float4(camera.eye);
+    vec3 eye = camera_eye(camera);
     vec3 dir = v3_normalize(through_pixel);
 #ifdef FGR_EFFECT_DEPTH_OF_FIELD
     /* through_pixel has unit length along `forward`, so the focus plane is at
@@ -136,15 +151,27 @@ __kernel void fgr_render(__global float* planes, int plane_size, int tile_count,
 #endif
 }
 
-/* Evaluates the scene's DE at `count` points given as planes x, y, z (padded to whole packets):
+/* A probe's points: planes x, y, z of floats, then x, y, z of what those miss of the host's double
+ * points, which double lanes add back (float lanes cannot use them). */
+inline vec3 load_probe_point(__global const float* points, int plane_size, int packet) {
+    vec3 p = v3(fgr_load(packet, points), fgr_load(packet, points + plane_size),
+                fgr_load(packet, points + 2 * plane_size));
+#ifdef FGR_DOUBLE
+    p = v3_add(p, v3(fgr_load(packet, points + 3 * plane_size),
+                     fgr_load(packet, points + 4 * plane_size),
+                     fgr_load(packet, points + 5 * plane_size)));
+#endif
+    return p;
+}
+
+/* Evaluates the scene's DE at `count` points (see load_probe_point; padded to whole packets):
  * used by tests to compare the kernel's DE with a host implementation, and by tools that need the
  * distance at a point (e.g. camera speed). */
 __kernel void fgr_probe_de(__global const float* points, int plane_size, int packet_count,
                            __global float* out, PARAMS) {
     const int packet = get_global_id(0);
     if (packet >= packet_count) return;
-    vec3 p = v3(fgr_load(packet, points), fgr_load(packet, points + plane_size),
-                fgr_load(packet, points + 2 * plane_size));
+    vec3 p = load_probe_point(points, plane_size, packet);
     fgr_store(scene_de(p, PARAMS_PASS), packet, out);
 }
 
@@ -154,8 +181,7 @@ __kernel void fgr_probe_normal(__global const float* points, int plane_size, int
                                __global float* out, PARAMS, float eps) {
     const int packet = get_global_id(0);
     if (packet >= packet_count) return;
-    vec3 p = v3(fgr_load(packet, points), fgr_load(packet, points + plane_size),
-                fgr_load(packet, points + 2 * plane_size));
+    vec3 p = load_probe_point(points, plane_size, packet);
     vec3 n = estimate_normal(p, fgr_real(eps), PARAMS_PASS);
     fgr_store(n.x, packet, out);
     fgr_store(n.y, packet, out + plane_size);

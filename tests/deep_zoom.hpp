@@ -15,10 +15,11 @@ namespace fgr::test {
 // How far in front of the surface a deep zoom's camera stands.
 constexpr double kDeepZoomStandoff = 2e-6;
 
-// A view `across` units wide, kDeepZoomStandoff in front of the Mandelbulb's surface where the
-// canonical view's central ray meets it (found by a long-double march down to 1e-12). `bulb` is
-// the mandelbulb plugin's scene with its default parameters.
-inline CameraView mandelbulb_deep_zoom(const Scene& bulb, double across = 1e-7) {
+// A view `across` units wide, `standoff` in front of the Mandelbulb's surface where the canonical
+// view's central ray meets it (found by a long-double march down to 1e-12); position and target
+// are exact doubles. `bulb` is the mandelbulb plugin's scene with its default parameters.
+inline CameraView mandelbulb_deep_zoom(const Scene& bulb, double across = 1e-7,
+                                       double standoff = kDeepZoomStandoff) {
     const CameraView canonical = bulb.cameras.front().view;
     const glm::dvec3 eye(canonical.position);
     const glm::dvec3 direction = glm::normalize(glm::dvec3(canonical.target) - eye);
@@ -31,9 +32,9 @@ inline CameraView mandelbulb_deep_zoom(const Scene& bulb, double across = 1e-7) 
     }
     const glm::dvec3 surface = eye + direction * double(t);
     CameraView view = canonical;
-    view.position = glm::vec3(surface - direction * kDeepZoomStandoff);
-    view.target = glm::vec3(surface);
-    view.fov_degrees = float(glm::degrees(2.0 * std::atan(0.5 * across / kDeepZoomStandoff)));
+    view.position = surface - direction * standoff;
+    view.target = surface;
+    view.fov_degrees = float(glm::degrees(2.0 * std::atan(0.5 * across / standoff)));
     return view;
 }
 

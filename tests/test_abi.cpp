@@ -277,18 +277,18 @@ TEST_F(CopyScene, CopiesCamerasAndPaths) {
     const Scene scene = expect_accepted();
     ASSERT_EQ(scene.cameras.size(), 2u);
     EXPECT_EQ(scene.cameras[0].name, "front");
-    EXPECT_EQ(scene.cameras[0].view.position, glm::vec3(0, -3, 0));
+    EXPECT_EQ(scene.cameras[0].view.position, glm::dvec3(0, -3, 0));
     EXPECT_EQ(scene.cameras[0].view.up, glm::vec3(0, 0, 1));
     EXPECT_FLOAT_EQ(scene.cameras[1].view.fov_degrees, 45.0f);
     ASSERT_NE(scene.find_camera("top-down"), nullptr);
-    EXPECT_EQ(scene.find_camera("top-down")->view.position, glm::vec3(0, 0, 3));
+    EXPECT_EQ(scene.find_camera("top-down")->view.position, glm::dvec3(0, 0, 3));
     EXPECT_EQ(scene.find_camera("side"), nullptr);
 
     const CameraPath* orbit = scene.find_camera_path("orbit");
     ASSERT_NE(orbit, nullptr);
     ASSERT_EQ(orbit->keyframes.size(), 3u);
     EXPECT_FLOAT_EQ(orbit->keyframes[2].time, 5.0f);
-    EXPECT_EQ(orbit->keyframes[1].view.position, glm::vec3(3, 0, 0));
+    EXPECT_EQ(orbit->keyframes[1].view.position, glm::dvec3(3, 0, 0));
     EXPECT_FLOAT_EQ(orbit->duration(), 5.0f);
     EXPECT_EQ(scene.find_camera_path("spiral"), nullptr);
 }

@@ -181,7 +181,7 @@ TEST(CameraPathEvaluation, TwoKeyPathStaysOnTheStraightSegment) {
     EXPECT_NEAR(evaluate_camera_path(path, 2.0f).fov_degrees, 50.0f, 1e-4f);
     const glm::vec3 along = glm::normalize(end - start);
     for (float t = 1.0f; t <= 3.0f; t += 0.125f) {
-        const glm::vec3 offset = evaluate_camera_path(path, t).position - start;
+        const glm::vec3 offset = glm::vec3(evaluate_camera_path(path, t).position) - start;
         const float distance_along = glm::dot(offset, along);
         EXPECT_NEAR(glm::length(offset - along * distance_along), 0.0f, kTolerance);
         EXPECT_GE(distance_along, -kTolerance);

@@ -56,6 +56,45 @@ TEST(CameraPathFile, JsonRoundTripKeepsEveryKeyframeExactly) {
     EXPECT_EQ(mid.position, expected.position);
 }
 
+// A deep zoom's keyframes differ by less than float's step: written and read back, positions and
+// targets keep every bit of their double values, and the path evaluates to the same views.
+TEST(CameraPathFile, JsonRoundTripKeepsDoublePrecision) {
+    CameraPathFile original;
+    original.scene = "mandelbulb";
+    original.path.name = "deep";
+    const glm::dvec3 near_surface(0.1234567890123456, -0.6543210987654321, 0.3141592653589793);
+    const glm::dvec3 step(1e-12, -3e-13, 7.77e-12);
+    for (int key = 0; key < 3; ++key) {
+        const CameraView view{near_surface + step * double(key),
+                              near_surface + glm::dvec3(0.0, 0.0, 2e-6) + step * double(key),
+                              {0, 1, 0},
+                              0.125f};
+        original.path.keyframes.push_back({float(key), view});
+    }
+    // Float cannot tell these keyframes apart.
+    ASSERT_EQ(glm::vec3(original.path.keyframes[0].view.position),
+              glm::vec3(original.path.keyframes[1].view.position));
+    const CameraPathFile parsed = parse_camera_path_json(camera_path_json(original));
+    ASSERT_EQ(parsed.path.keyframes.size(), 3u);
+    for (size_t i = 0; i < 3; ++i) {
+        EXPECT_EQ(parsed.path.keyframes[i].view.position, original.path.keyframes[i].view.position);
+        EXPECT_EQ(parsed.path.keyframes[i].view.target, original.path.keyframes[i].view.target);
+    }
+    for (double t : {0.25, 1.0, 1.6}) {
+        EXPECT_EQ(evaluate_camera_path(parsed.path, t).position,
+                  evaluate_camera_path(original.path, t).position);
+    }
+    // Through a file too.
+    const auto dir = std::filesystem::temp_directory_path() / "fgr_camera_path_file_deep_test";
+    std::filesystem::remove_all(dir);
+    std::filesystem::create_directories(dir);
+    write_camera_path_file(dir / "deep.json", original);
+    const CameraPathFile from_file = read_camera_path_file(dir / "deep.json");
+    std::filesystem::remove_all(dir);
+    EXPECT_EQ(from_file.path.keyframes[2].view.position, original.path.keyframes[2].view.position);
+    EXPECT_EQ(from_file.path.keyframes[2].view.target, original.path.keyframes[2].view.target);
+}
+
 TEST(CameraPathFile, MissingUpAndFovTakeDefaults) {
     const CameraPathFile file = parse_camera_path_json(
         two_keyframes(R"({"time": 1, "position": [0, 1, 0], "target": [0, 0, 0]})"));

@@ -85,7 +85,7 @@ std::vector<std::optional<glm::vec3>> hit_points(const Frame& frame, const Camer
             const int pixel = y * kWidth + x;
             if (frame.depth[pixel] < 0.0f) continue;
             const glm::vec3 dir = primary_ray_direction(basis, kWidth, kHeight, float(x), float(y));
-            points[pixel] = view.position + dir * frame.depth[pixel];
+            points[pixel] = glm::vec3(view.position) + dir * frame.depth[pixel];
         }
     }
     return points;
@@ -552,7 +552,7 @@ TEST_F(EffectTest, AMirrorFloorShowsTheSphereAboveIt) {
     auto mirrors = renderer(scene, FGR_EFFECT_REFLECTIONS);
     const Frame reflected = mirrors->render(req);
     const auto points = hit_points(plain, req.view);
-    const glm::vec3 eye = req.view.position;
+    const glm::vec3 eye(req.view.position);
     const auto shows_sphere = pixels_where(
         points, [&](glm::vec3 p) { return on_floor(p) && reflected_miss_distance(eye, p) < 0.3f; });
     const auto shows_sky = pixels_where(
@@ -884,7 +884,7 @@ TEST_F(EffectTest, ABubbleShowsATotalReflectionRingAtTheCriticalAngle) {
     const Frame bubble = renderer(scene, FGR_EFFECT_REFRACTION)->render(req);
     const CameraBasis basis = camera_basis(req.view);
     // Impact parameter per pixel in units of R, and how much it changes from pixel to pixel.
-    const float b_step = glm::length(basis.eye) * pixel_angle(basis, width) / radius;
+    const float b_step = float(glm::length(basis.eye)) * pixel_angle(basis, width) / radius;
     float ring_start = 2.0f;  // smallest b / R on the sphere where nothing passes
     int ring = 0, middle = 0;
     for (int y = 0; y < height; ++y) {
@@ -892,7 +892,7 @@ TEST_F(EffectTest, ABubbleShowsATotalReflectionRingAtTheCriticalAngle) {
             const int pixel = y * width + x;
             if (opaque.depth[pixel] < 0.0f || opaque.depth[pixel] > 3.0f) continue;  // sphere only
             const glm::vec3 dir = primary_ray_direction(basis, width, height, float(x), float(y));
-            const float b = glm::length(glm::cross(-basis.eye, dir)) / radius;
+            const float b = glm::length(glm::cross(-glm::vec3(basis.eye), dir)) / radius;
             const bool same = glm::length(pixel_rgb(bubble, pixel) - pixel_rgb(opaque, pixel)) < 1e-5f;
             if (same) ring_start = std::min(ring_start, b);
             if (b > ior + 2.0f * b_step && b < 1.0f - 2.0f * b_step) {

@@ -9,7 +9,10 @@
 
 #include <glm/geometric.hpp>
 
+#include "deep_zoom.hpp"
 #include "fgr/viewer/fly_camera.hpp"
+#include "mandelbulb_reference.hpp"
+#include "test_scenes.hpp"
 
 namespace fgr::viewer {
 namespace {
@@ -231,38 +234,74 @@ TEST(FlyCamera, ZeroLocalDoesNotMove) {
     FlyCamera camera = level_camera();
     camera.position = {1.0f, 2.0f, 3.0f};
     camera.move({0.0f, 0.0f, 0.0f}, 5.0f);
-    EXPECT_EQ(camera.position, glm::vec3(1.0f, 2.0f, 3.0f));
+    EXPECT_EQ(camera.position, glm::dvec3(1.0f, 2.0f, 3.0f));
 }
 
 TEST(FlyCameraSpeed, TravelSpeedIsProportionalToDe) {
-    EXPECT_FLOAT_EQ(travel_speed(0.5f, 1.0f), 0.5f);
-    EXPECT_FLOAT_EQ(travel_speed(0.5f, 2.0f), 1.0f);
-    EXPECT_FLOAT_EQ(travel_speed(2.0f, 0.25f), 0.5f);
-    EXPECT_FLOAT_EQ(travel_speed(4.0f, 1.0f) / travel_speed(1.0f, 1.0f), 4.0f);
+    EXPECT_DOUBLE_EQ(travel_speed(0.5f, 1.0f), 0.5f);
+    EXPECT_DOUBLE_EQ(travel_speed(0.5f, 2.0f), 1.0f);
+    EXPECT_DOUBLE_EQ(travel_speed(2.0f, 0.25f), 0.5f);
+    EXPECT_DOUBLE_EQ(travel_speed(4.0f, 1.0f) / travel_speed(1.0f, 1.0f), 4.0f);
 }
 
 TEST(FlyCameraSpeed, TravelSpeedHasAFloor) {
-    EXPECT_FLOAT_EQ(travel_speed(0.0f, 1.0f), kMinSpeed);
-    EXPECT_FLOAT_EQ(travel_speed(1e-9f, 1.0f), kMinSpeed);
-    EXPECT_FLOAT_EQ(travel_speed(-1.0f, 1.0f), kMinSpeed);
-    EXPECT_FLOAT_EQ(travel_speed(1.0f, 0.0f), kMinSpeed);
-    EXPECT_FLOAT_EQ(travel_speed(std::numeric_limits<float>::quiet_NaN(), 1.0f), kMinSpeed);
-    EXPECT_FLOAT_EQ(travel_speed(1.0f, std::numeric_limits<float>::quiet_NaN()), kMinSpeed);
-    EXPECT_FLOAT_EQ(travel_speed(std::numeric_limits<float>::infinity(), 1.0f), kMinSpeed);
+    EXPECT_DOUBLE_EQ(travel_speed(0.0f, 1.0f), kMinSpeed);
+    EXPECT_DOUBLE_EQ(travel_speed(1e-13, 1.0), kMinSpeed);
+    EXPECT_DOUBLE_EQ(travel_speed(-1.0f, 1.0f), kMinSpeed);
+    EXPECT_DOUBLE_EQ(travel_speed(1.0f, 0.0f), kMinSpeed);
+    EXPECT_DOUBLE_EQ(travel_speed(std::numeric_limits<float>::quiet_NaN(), 1.0f), kMinSpeed);
+    EXPECT_DOUBLE_EQ(travel_speed(1.0f, std::numeric_limits<float>::quiet_NaN()), kMinSpeed);
+    EXPECT_DOUBLE_EQ(travel_speed(std::numeric_limits<float>::infinity(), 1.0f), kMinSpeed);
 }
 
 TEST(FlyCameraSpeed, LimitStepCapsAtHalfTheDe) {
-    EXPECT_FLOAT_EQ(limit_step(1.0f, 0.5f), 0.25f);
-    EXPECT_FLOAT_EQ(limit_step(0.1f, 0.5f), 0.1f);  // already short enough
-    EXPECT_FLOAT_EQ(limit_step(0.25f, 0.5f), 0.25f);
-    EXPECT_FLOAT_EQ(limit_step(-1.0f, 0.5f), -0.25f);  // backwards too
+    EXPECT_DOUBLE_EQ(limit_step(1.0f, 0.5f), 0.25f);
+    EXPECT_DOUBLE_EQ(limit_step(0.1f, 0.5f), 0.1f);  // already short enough
+    EXPECT_DOUBLE_EQ(limit_step(0.25f, 0.5f), 0.25f);
+    EXPECT_DOUBLE_EQ(limit_step(-1.0f, 0.5f), -0.25f);  // backwards too
 }
 
 TEST(FlyCameraSpeed, LimitStepIgnoresUnusableDe) {
-    EXPECT_FLOAT_EQ(limit_step(1.0f, 0.0f), 1.0f);
-    EXPECT_FLOAT_EQ(limit_step(1.0f, -2.0f), 1.0f);
-    EXPECT_FLOAT_EQ(limit_step(1.0f, std::numeric_limits<float>::quiet_NaN()), 1.0f);
-    EXPECT_FLOAT_EQ(limit_step(1.0f, std::numeric_limits<float>::infinity()), 1.0f);
+    EXPECT_DOUBLE_EQ(limit_step(1.0f, 0.0f), 1.0f);
+    EXPECT_DOUBLE_EQ(limit_step(1.0f, -2.0f), 1.0f);
+    EXPECT_DOUBLE_EQ(limit_step(1.0f, std::numeric_limits<float>::quiet_NaN()), 1.0f);
+    EXPECT_DOUBLE_EQ(limit_step(1.0f, std::numeric_limits<float>::infinity()), 1.0f);
+}
+
+// Flying in at a deep zoom: the camera 1e-8 from the Mandelbulb's surface (near the bulb float's
+// step is 6e-8) moves every frame, at the DE times the speed factor (no floor overrides it there),
+// each step shorter than the distance estimate, so it closes in on the surface without crossing
+// it. The DE is the long-double reference at the camera's double position (it underestimates the
+// distance ahead here: the view meets the surface at a slant).
+TEST(FlyCameraSpeed, FliesAtADeepZoom) {
+    const Scene bulb = test::built_scene("mandelbulb.so");
+    FlyCamera camera = FlyCamera::from_view(test::mandelbulb_deep_zoom(bulb, 1e-8, 1e-8));
+    const auto de_at = [](glm::dvec3 p) {
+        return double(test::mandelbulb_de<long double>(p.x, p.y, p.z, test::BulbParams{}));
+    };
+    const double first_de = de_at(camera.position);
+    ASSERT_GT(first_de, 0.0);
+    ASSERT_LT(first_de, 1.01e-8);
+    constexpr double dt = 1.0 / 60.0;
+    double travelled = 0.0;
+    for (int frame = 0; frame < 120; ++frame) {
+        const double de = de_at(camera.position);
+        ASSERT_GT(de, 0.0) << "frame " << frame << " crossed the surface";
+        EXPECT_DOUBLE_EQ(travel_speed(de, 1.0), de) << "the floor must lie below a deep zoom's DE";
+        const double step = limit_step(travel_speed(de, 1.0) * dt, de);
+        const glm::dvec3 before = camera.position;
+        camera.move({0.0f, 1.0f, 0.0f}, step);
+        const double moved = glm::length(camera.position - before);
+        ASSERT_GT(moved, 0.0) << "frame " << frame << ": the position did not change";
+        // Double's rounding of coordinates near 1 (1e-16) is 1e-5 of such a step.
+        EXPECT_NEAR(moved, step, 1e-4 * step) << "frame " << frame;
+        EXPECT_LT(moved, de) << "frame " << frame;
+        EXPECT_EQ(camera.to_view().position, camera.position);
+        travelled += moved;
+    }
+    // Two seconds at factor 1 cover more than the first DE, and the camera is nearer the surface.
+    EXPECT_GT(travelled, first_de);
+    EXPECT_LT(de_at(camera.position), first_de);
 }
 
 }  // namespace

@@ -94,7 +94,7 @@ TEST_P(LaneSafety, ColourDepthAndNormalsAreFiniteAtEveryWidth) {
                     ++bad_depth;
                 } else if (t >= 0.0f) {
                     // Sample 0 is the pixel centre.
-                    hits.push_back(basis.eye + primary_ray_direction(basis, request.width,
+                    hits.push_back(glm::vec3(basis.eye) + primary_ray_direction(basis, request.width,
                                                                      request.height, float(x),
                                                                      float(y)) *
                                                    t);

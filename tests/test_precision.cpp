@@ -5,9 +5,11 @@
 // figures are printed beside them, never required to be bad.
 #include <cmath>
 #include <filesystem>
+#include <limits>
 #include <random>
 #include <set>
 
+#include <glm/vec2.hpp>
 #include <gtest/gtest.h>
 
 #include "child_process.hpp"
@@ -318,6 +320,82 @@ TEST_F(FloatAndDouble, DeepZoomInDoubleGivesNeighbouringRaysTheirOwnDepths) {
 // rays with the same hit rule lands within two pixel footprints of them. Float's do not.
 TEST_F(FloatAndDouble, DeepZoomDoubleDepthsMatchALongDoubleMarch) {
     for (double across : {1e-6, 1e-7}) expect_depths_match_long_double(deep_zoom(across));
+}
+
+// The integer shift (dx, dy), within max_shift, that best maps image `a` onto `b`
+// (b(x + dx, y + dy) ~ a(x, y)) by the mean absolute difference of luminance over the overlap.
+// max_shift_y 0 measures motion along rows only, which an edge across the image pins down (a 2D
+// search would slide along the edge instead).
+glm::ivec2 best_matching_offset(const Frame& a, const Frame& b, int width, int height,
+                                int max_shift, int max_shift_y) {
+    const auto luminance = [&](const Frame& frame, int x, int y) {
+        const size_t i = (size_t(y) * size_t(width) + size_t(x)) * 3;
+        return 0.2126 * frame.linear[i] + 0.7152 * frame.linear[i + 1] +
+               0.0722 * frame.linear[i + 2];
+    };
+    glm::ivec2 best(0);
+    double best_error = std::numeric_limits<double>::infinity();
+    for (int dy = -max_shift_y; dy <= max_shift_y; ++dy) {
+        for (int dx = -max_shift; dx <= max_shift; ++dx) {
+            double error = 0.0;
+            int count = 0;
+            for (int y = std::max(0, -dy); y < std::min(height, height - dy); ++y) {
+                for (int x = std::max(0, -dx); x < std::min(width, width - dx); ++x) {
+                    error += std::abs(luminance(a, x, y) - luminance(b, x + dx, y + dy));
+                    ++count;
+                }
+            }
+            if (error / count < best_error) {
+                best_error = error / count;
+                best = {dx, dy};
+            }
+        }
+    }
+    return best;
+}
+
+// A camera path 1e-8 units across, 2e-6 in front of the Mandelbulb's surface, sliding sideways by
+// 2 pixels a frame: rendered in double at consecutive times, every frame differs from the one
+// before and the image moves by at most a few pixels each time, adding up to the path's travel.
+// A float eye (or a float spline) would hold the image still for frames and then jump by float's
+// step near the bulb, 6e-8: hundreds of pixels.
+TEST_F(FloatAndDouble, DeepZoomCameraPathMovesTheImageContinuously) {
+    constexpr int width = 48, height = 36, frames = 12;
+    constexpr double across = 1e-8, pixels_per_frame = 2.0;
+    const CameraView start = deep_zoom(across);
+    const glm::dvec3 right(camera_basis(start).right);
+    const glm::dvec3 per_second = right * (across / width) * pixels_per_frame * double(frames);
+    CameraPath path;
+    path.name = "deep slide";
+    for (int key = 0; key < 4; ++key) {  // evenly spaced in a line: Catmull-Rom moves uniformly
+        CameraView view = start;
+        view.position += per_second * double(key - 1);
+        view.target += per_second * double(key - 1);
+        path.keyframes.push_back({float(key), view});
+    }
+    const auto params = default_param_values(*bulb_);
+    Renderer in_double = renderer(true);
+    std::vector<Frame> rendered;
+    glm::dvec3 previous_eye(0.0);
+    for (int i = 0; i <= frames; ++i) {
+        const CameraView view = evaluate_camera_path(path, 1.0 + double(i) / frames);
+        EXPECT_NE(view.position, previous_eye) << "frame " << i << ": the eye did not move";
+        previous_eye = view.position;
+        rendered.push_back(in_double.render({width, height, view, params}));
+        ASSERT_EQ(rendered.back().hits, width * height) << "the view is filled by the surface";
+    }
+    int travelled = 0;
+    for (int i = 1; i <= frames; ++i) {
+        EXPECT_NE(rendered[i - 1].linear, rendered[i].linear) << "frame " << i << " did not move";
+        const glm::ivec2 shift =
+            best_matching_offset(rendered[i - 1], rendered[i], width, height, 8, 0);
+        std::printf("frame %d: image shift %d %d\n", i, shift.x, shift.y);
+        EXPECT_LE(std::abs(shift.x), 3) << "frame " << i;
+        EXPECT_LE(std::abs(shift.y), 1) << "frame " << i;
+        travelled += shift.x;
+    }
+    // The camera slides right, so the image slides left, 24 pixels in all.
+    EXPECT_NEAR(-travelled, pixels_per_frame * frames, 4.0);
 }
 
 }  // namespace

@@ -73,12 +73,12 @@ protected:
     // the default view looks at, and everything between it and the camera.
     std::vector<glm::vec3> region_points(int count, unsigned seed) {
         const CameraView& view = scene().cameras.front().view;
-        const float radius = glm::length(view.position - view.target);
+        const float radius = float(glm::length(view.position - view.target));
         std::mt19937 rng(seed);
         std::uniform_real_distribution<float> unit(-1.0f, 1.0f);
         std::vector<glm::vec3> points;
         for (int i = 0; i < count; ++i) {
-            points.push_back(view.target + radius * glm::vec3(unit(rng), unit(rng), unit(rng)));
+            points.push_back(glm::vec3(view.target) + radius * glm::vec3(unit(rng), unit(rng), unit(rng)));
         }
         return points;
     }
@@ -104,7 +104,7 @@ TEST_P(SceneStability, DistanceIsOneLipschitz) {
     std::uniform_real_distribution<float> unit(-1.0f, 1.0f);
     const auto first = region_points(3000, 5);
     const CameraView& view = scene().cameras.front().view;
-    const float radius = glm::length(view.position - view.target);
+    const float radius = float(glm::length(view.position - view.target));
     std::vector<glm::vec3> second;
     for (const auto& p : first) {
         const glm::vec3 direction = glm::normalize(glm::vec3(unit(rng), unit(rng), unit(rng)) + 1e-6f);
@@ -239,7 +239,7 @@ TEST_P(SceneStability, MarchStepsNeverReachTheSurface) {
     const auto defaults = default_param_values(scene());
     const float step_factor = param_value(scene(), defaults, "step_factor");
     const CameraView& view = scene().cameras.front().view;
-    const float radius = glm::length(view.position - view.target);
+    const float radius = float(glm::length(view.position - view.target));
     std::vector<glm::vec3> candidates = region_points(120, 21);
     {
         constexpr int width = 48, height = 32;
@@ -251,7 +251,7 @@ TEST_P(SceneStability, MarchStepsNeverReachTheSurface) {
             const glm::vec3 dir = primary_ray_direction(basis, width, height, float(pixel % width),
                                                         float(pixel / width));
             for (float back : {1.0f / 300.0f, 1.0f / 30.0f, 1.0f / 3.0f}) {
-                candidates.push_back(basis.eye + dir * (t * (1.0f - back)));
+                candidates.push_back(glm::vec3(basis.eye) + dir * (t * (1.0f - back)));
             }
         }
     }
@@ -345,12 +345,13 @@ TEST_P(SceneStability, HardCameraPlacementsStayFinite) {
     through_origin.target = {0.0f, 0.0f, 0.0f};
     expect_all_finite(render(through_origin, defaults, 33, 33), "ray through the origin");
     CameraView grazing = home;  // a narrow view along the silhouette
-    const glm::vec3 side = glm::normalize(glm::cross(home.target - home.position, home.up));
-    grazing.target = home.target + side * glm::length(home.target - home.position) * 0.5f;
+    const glm::vec3 side =
+        glm::normalize(glm::cross(glm::vec3(home.target - home.position), home.up));
+    grazing.target = home.target + glm::dvec3(side) * glm::length(home.target - home.position) * 0.5;
     grazing.fov_degrees = 5.0f;
     expect_all_finite(render(grazing, defaults), "grazing view");
     CameraView far_away = home;
-    far_away.position = home.target + (home.position - home.target) * 1000.0f;
+    far_away.position = home.target + (home.position - home.target) * 1000.0;
     expect_all_finite(render(far_away, defaults), "distant camera");
 }
 
@@ -459,7 +460,7 @@ TEST_P(SceneStability, NormalAtEveryHitIsFiniteAndUnitLength) {
             // Pixel (x, y): primary_ray_direction adds the half pixel to reach its centre.
             const glm::vec3 direction =
                 primary_ray_direction(basis, width, height, float(x), float(y));
-            hits.push_back(basis.eye + direction * t);
+            hits.push_back(glm::vec3(basis.eye) + direction * t);
             depths.push_back(t);
             eps = std::min(eps, std::max(t * pixel * 0.5f, 1e-7f));
         }

@@ -21,25 +21,36 @@ constexpr const char* kFormat = "fgr-camera-path";
 constexpr int kVersion = 1;
 
 json vec3_json(glm::vec3 v) { return json::array({v.x, v.y, v.z}); }
+// Positions and targets: JSON numbers are written to round-trip a double exactly.
+json vec3_json(glm::dvec3 v) { return json::array({v.x, v.y, v.z}); }
 
 [[noreturn]] void fail(const std::string& reason) { throw std::runtime_error(reason); }
 
-float finite_number(const json& value, const std::string& what) {
+double finite_double(const json& value, const std::string& what) {
     if (!value.is_number()) fail(what + " must be a number");
     const double number = value.get<double>();
     if (!std::isfinite(number) || std::abs(number) > 1e30) {
         fail(what + " must be finite and at most 1e30 in magnitude");
     }
-    return static_cast<float>(number);
+    return number;
 }
 
-glm::vec3 vec3_from(const json& keyframe, const char* key, const std::string& where) {
+float finite_number(const json& value, const std::string& what) {
+    return static_cast<float>(finite_double(value, what));
+}
+
+// Read in full double precision: a deep zoom's keyframes may differ below float's step.
+glm::dvec3 dvec3_from(const json& keyframe, const char* key, const std::string& where) {
     const std::string what = where + " \"" + key + "\"";
     if (!keyframe.contains(key)) fail(what + " is missing");
     const json& value = keyframe.at(key);
     if (!value.is_array() || value.size() != 3) fail(what + " must be an array of 3 numbers");
-    return {finite_number(value[0], what), finite_number(value[1], what),
-            finite_number(value[2], what)};
+    return {finite_double(value[0], what), finite_double(value[1], what),
+            finite_double(value[2], what)};
+}
+
+glm::vec3 vec3_from(const json& keyframe, const char* key, const std::string& where) {
+    return glm::vec3(dvec3_from(keyframe, key, where));
 }
 
 // "version" must be the integer 1: compared as the integer JSON holds, never converted first
@@ -63,8 +74,8 @@ Keyframe keyframe_from(const json& entry, std::size_t index) {
     Keyframe keyframe;
     if (!entry.contains("time")) fail(where + " \"time\" is missing");
     keyframe.time = finite_number(entry.at("time"), where + " \"time\"");
-    keyframe.view.position = vec3_from(entry, "position", where);
-    keyframe.view.target = vec3_from(entry, "target", where);
+    keyframe.view.position = dvec3_from(entry, "position", where);
+    keyframe.view.target = dvec3_from(entry, "target", where);
     keyframe.view.up = entry.contains("up") ? vec3_from(entry, "up", where) : glm::vec3(0, 0, 1);
     if (entry.contains("fov")) keyframe.view.fov_degrees = finite_number(entry.at("fov"), where + " \"fov\"");
     // The check plugins' cameras and keyframes get (view_validation.hpp).

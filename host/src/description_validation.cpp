@@ -304,7 +304,9 @@ std::vector<ParamInfo> copy_params(const fgr_scene_desc& desc) {
 // (view_validation.hpp).
 CameraView copy_view(const float (&position)[3], const float (&target)[3], const float (&up)[3],
                      float fov_degrees, const std::string& where) {
-    const CameraView view{to_vec3(position), to_vec3(target), to_vec3(up), fov_degrees};
+    // The ABI's float coordinates widen exactly into the host's double position and target.
+    const CameraView view{glm::dvec3(to_vec3(position)), glm::dvec3(to_vec3(target)), to_vec3(up),
+                          fov_degrees};
     if (const std::string problem = view_problem(view); !problem.empty()) {
         fail("{}: {}", where, problem);
     }

@@ -70,12 +70,12 @@ bool hits_finer_than_float(const Frame& frame, const CameraView& view, int width
         for (int x = 0; x < probe_width; ++x) {
             const float t = frame.depth[size_t(y) * size_t(probe_width) + size_t(x)];
             if (t < 0.0f) continue;
-            const glm::vec3 hit =
-                basis.eye + primary_ray_direction(basis, probe_width, probe_height, float(x),
-                                                  float(y)) * t;
+            const glm::dvec3 hit =
+                basis.eye + glm::dvec3(primary_ray_direction(basis, probe_width, probe_height,
+                                                             float(x), float(y))) * double(t);
             ++hits;
-            fine += finer_than_float(t * angle,
-                                     std::max(glm::length(hit), glm::length(basis.eye)));
+            fine += finer_than_float(
+                t * angle, static_cast<float>(std::max(glm::length(hit), glm::length(basis.eye))));
         }
     }
     return fine * 100 > hits;

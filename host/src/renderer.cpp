@@ -22,9 +22,9 @@ namespace {
 
 // Mirrors `camera_frame` in kernels/fgr_render.cl (float4 members keep both layouts equal).
 struct CameraFrame {
-    cl_float4 eye;
-    cl_float4 forward;
-    cl_float4 right;
+    cl_float4 eye;      // xyz: float(eye), w: x of float(eye - xyz)
+    cl_float4 forward;  // w: y of float(eye - eye.xyz)
+    cl_float4 right;    // w: z of float(eye - eye.xyz)
     cl_float4 up;
     cl_float tan_half_fov;
     cl_float pixel_angle;
@@ -35,13 +35,22 @@ static_assert(sizeof(CameraFrame) == 80, "must match camera_frame in fgr_render.
 
 constexpr int kLightFloats = 8;  // FGR_LIGHT_FLOATS in fgr_shade.cl
 
-cl_float4 to_float4(glm::vec3 v) { return {{v.x, v.y, v.z, 0.0f}}; }
+cl_float4 to_float4(glm::vec3 v, float w = 0.0f) { return {{v.x, v.y, v.z, w}}; }
 
+// The eye goes as a hi/lo split of its double value: hi the nearest float, lo the rest rounded to
+// float (in the w components); double lanes add them, float lanes use hi alone.
 CameraFrame camera_frame(const CameraView& view, int width, int height) {
     const CameraBasis basis = camera_basis(view);
-    return {to_float4(basis.eye), to_float4(basis.forward), to_float4(basis.right),
-            to_float4(basis.up),  basis.tan_half_fov,       pixel_angle(basis, width),
-            width,                height};
+    const glm::vec3 eye_hi(basis.eye);
+    const glm::vec3 eye_lo(basis.eye - glm::dvec3(eye_hi));
+    return {to_float4(eye_hi, eye_lo.x),
+            to_float4(basis.forward, eye_lo.y),
+            to_float4(basis.right, eye_lo.z),
+            to_float4(basis.up),
+            basis.tan_half_fov,
+            pixel_angle(basis, width),
+            width,
+            height};
 }
 
 std::vector<float> light_values(const Scene& scene) {
@@ -305,18 +314,22 @@ Frame Renderer::render(const FrameRequest& request) {
     return frame;
 }
 
-cl::Buffer Renderer::upload_points(std::span<const glm::vec3> points, int* packets, int* plane) {
+cl::Buffer Renderer::upload_points(std::span<const glm::dvec3> points, int* packets, int* plane) {
     const int width = switches_.packet_width;
     *packets = static_cast<int>((points.size() + width - 1) / width);
     *plane = *packets * width;
-    std::vector<float> coordinates(static_cast<size_t>(*plane) * 3, 0.0f);
+    std::vector<float> coordinates(static_cast<size_t>(*plane) * 6, 0.0f);
     for (size_t i = 0; i < points.size(); ++i) {
-        for (int c = 0; c < 3; ++c) coordinates[c * *plane + i] = points[i][c];
+        for (int c = 0; c < 3; ++c) {
+            const auto hi = static_cast<float>(points[i][c]);
+            coordinates[c * *plane + i] = hi;
+            coordinates[(c + 3) * *plane + i] = static_cast<float>(points[i][c] - double(hi));
+        }
     }
     return upload(coordinates);
 }
 
-std::vector<float> Renderer::run_probe(cl::Kernel& kernel, std::span<const glm::vec3> points,
+std::vector<float> Renderer::run_probe(cl::Kernel& kernel, std::span<const glm::dvec3> points,
                                        const std::vector<float>& params, int outputs,
                                        const std::function<void(cl::Kernel&)>& set_extra_args,
                                        int* plane) {
@@ -342,6 +355,12 @@ std::vector<float> Renderer::run_probe(cl::Kernel& kernel, std::span<const glm::
 
 std::vector<float> Renderer::probe_de(std::span<const glm::vec3> points,
                                       const std::vector<float>& params) {
+    const std::vector<glm::dvec3> wide(points.begin(), points.end());
+    return probe_de(std::span<const glm::dvec3>(wide), params);
+}
+
+std::vector<float> Renderer::probe_de(std::span<const glm::dvec3> points,
+                                      const std::vector<float>& params) {
     if (points.empty()) return {};
     int plane = 0;
     std::vector<float> distances =
@@ -354,8 +373,9 @@ std::vector<glm::vec3> Renderer::probe_normals(std::span<const glm::vec3> points
                                                const std::vector<float>& params, float eps) {
     if (points.empty()) return {};
     int plane = 0;
+    const std::vector<glm::dvec3> wide(points.begin(), points.end());
     const std::vector<float> planes = run_probe(
-        normal_kernel_, points, params, 3, [eps](cl::Kernel& kernel) { kernel.setArg(5, eps); },
+        normal_kernel_, wide, params, 3, [eps](cl::Kernel& kernel) { kernel.setArg(5, eps); },
         &plane);
     std::vector<glm::vec3> normals(points.size());
     for (size_t i = 0; i < points.size(); ++i) {

@@ -79,7 +79,8 @@ ParamInfo colour_param(std::string id, std::string label, glm::vec3 value, std::
 float default_focus_distance(const Scene& scene) {
     if (scene.cameras.empty()) return 1.0f;
     const CameraView& view = scene.cameras.front().view;
-    return std::clamp(glm::length(view.target - view.position), 0.001f, 1e5f);
+    // In float, as the plugin gave it: the default (and the images using it) stay as they were.
+    return std::clamp(glm::length(glm::vec3(view.target) - glm::vec3(view.position)), 0.001f, 1e5f);
 }
 
 // The knobs of the effects and of the colour pipeline. They exist in every scene; an effect that

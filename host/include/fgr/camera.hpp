@@ -9,7 +9,7 @@
 namespace fgr {
 
 struct CameraBasis {
-    glm::vec3 eye{0.0f};
+    glm::dvec3 eye{0.0};  // double: a deep zoom's eye moves by less than float's step
     glm::vec3 forward{0.0f, 1.0f, 0.0f};
     glm::vec3 right{1.0f, 0.0f, 0.0f};
     glm::vec3 up{0.0f, 0.0f, 1.0f};
@@ -53,10 +53,11 @@ bool finer_than_float(float footprint, float magnitude);
 
 // The view at `time` along a path (clamped to the first and last keyframe times). Position, target
 // and fov follow a uniform Catmull-Rom spline through the keyframes in each segment's local
-// parameter, the end keyframes doubling as their own outer neighbours; fov is kept in [1, 179].
-// Up is a normalised lerp of the segment's ups, made orthogonal to the resulting view direction.
+// parameter (position and target in double, so a path can fly a deep zoom), the end keyframes
+// doubling as their own outer neighbours; fov is kept in [1, 179], the lower bound lowered to half
+// the segment's narrower keyframe fov for deep zooms' narrow views. Up is a normalised lerp of the segment's ups, made orthogonal to the resulting view direction.
 // At a keyframe's time position, target and fov are that keyframe's, and the basis is the one the
 // keyframe itself gives. Throws std::invalid_argument for a path without keyframes.
-CameraView evaluate_camera_path(const CameraPath& path, float time);
+CameraView evaluate_camera_path(const CameraPath& path, double time);
 
 }  // namespace fgr

@@ -69,6 +69,10 @@ public:
     // The scene's DE at each point, evaluated by the kernel (same packets, same maths).
     std::vector<float> probe_de(std::span<const glm::vec3> points,
                                 const std::vector<float>& params);
+    // The same at double points (a deep zoom's camera): a double kernel sees them to about 2^-48
+    // of their size (sent as a float and the float of the rest), a float kernel as floats.
+    std::vector<float> probe_de(std::span<const glm::dvec3> points,
+                                const std::vector<float>& params);
 
     // The shading normal at each point, with finite-difference stencil size eps.
     std::vector<glm::vec3> probe_normals(std::span<const glm::vec3> points,
@@ -84,11 +88,12 @@ private:
     cl::Buffer upload(const std::vector<float>& values);
     // Launches the render kernel over `tiles`; false when `cancel` (if set) asked to stop.
     bool launch_tiles(int tiles, int group, const std::function<bool()>& cancel);
-    // Points as planes x, y, z padded to whole packets, and the packet count.
-    cl::Buffer upload_points(std::span<const glm::vec3> points, int* packets, int* plane);
+    // Points as planes x, y, z (the nearest floats) then x, y, z of the rest (what the floats
+    // miss of the double points), padded to whole packets, and the packet count.
+    cl::Buffer upload_points(std::span<const glm::dvec3> points, int* packets, int* plane);
     // Runs a probe kernel (points, plane, packets, output, params, [own args]) over `points`;
     // returns its `outputs` planes of *plane floats each.
-    std::vector<float> run_probe(cl::Kernel& kernel, std::span<const glm::vec3> points,
+    std::vector<float> run_probe(cl::Kernel& kernel, std::span<const glm::dvec3> points,
                                  const std::vector<float>& params, int outputs,
                                  const std::function<void(cl::Kernel&)>& set_extra_args,
                                  int* plane);

@@ -32,9 +32,11 @@ struct ParamInfo {
 int param_components(ParamType type);
 const char* param_type_name(ParamType type);
 
+// Position and target are double so a view can zoom far below float's resolution (the plugin ABI
+// stays float; the host converts when it copies a description).
 struct CameraView {
-    glm::vec3 position{0.0f};
-    glm::vec3 target{0.0f};
+    glm::dvec3 position{0.0};
+    glm::dvec3 target{0.0};
     glm::vec3 up{0.0f, 0.0f, 1.0f};
     float fov_degrees = 60.0f;  // horizontal
 };

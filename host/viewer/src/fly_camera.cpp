@@ -60,12 +60,16 @@ FlyCamera FlyCamera::from_view(const CameraView& view) {
     camera.fov_degrees = view.fov_degrees;
     camera.world_up = usable(view.up) ? glm::normalize(view.up) : kDefaultUp;
 
-    const glm::vec3 to_target = view.target - view.position;
-    if (usable(to_target)) {
-        camera.target_distance = glm::length(to_target);
+    // In double: a deep zoom's target may lie closer than float resolves at the coordinates.
+    const glm::dvec3 to_target = view.target - view.position;
+    const double distance = glm::length(to_target);
+    const bool has_direction = std::isfinite(distance) && distance > 0.0;
+    if (has_direction) {
+        camera.target_distance = distance;
     }
     // Without a target direction, look along the horizon.
-    const glm::vec3 direction = usable(to_target) ? glm::normalize(to_target) : glm::vec3(0.0f);
+    const glm::vec3 direction =
+        has_direction ? glm::vec3(to_target / distance) : glm::vec3(0.0f);
     camera.forward = join_direction(split_direction(direction, camera.world_up), camera.world_up);
     return camera;
 }
@@ -73,7 +77,7 @@ FlyCamera FlyCamera::from_view(const CameraView& view) {
 CameraView FlyCamera::to_view() const {
     CameraView view;
     view.position = position;
-    view.target = position + forward * target_distance;
+    view.target = position + glm::dvec3(forward) * target_distance;
     view.up = world_up;
     view.fov_degrees = fov_degrees;
     return view;
@@ -104,16 +108,16 @@ void FlyCamera::turn(float yaw_radians, float pitch_radians) {
     forward = join_direction(heading, world_up);
 }
 
-void FlyCamera::move(glm::vec3 local, float distance) {
+void FlyCamera::move(glm::vec3 local, double distance) {
     if (!usable(local) || !std::isfinite(distance)) {
         return;
     }
     const glm::vec3 unit = glm::normalize(local);
-    position += (right() * unit.x + forward * unit.y + world_up * unit.z) * distance;
+    position += glm::dvec3(right() * unit.x + forward * unit.y + world_up * unit.z) * distance;
 }
 
-float travel_speed(float de_at_camera, float speed_factor) {
-    const float speed = de_at_camera * speed_factor;
+double travel_speed(double de_at_camera, double speed_factor) {
+    const double speed = de_at_camera * speed_factor;
     // Written so that NaN (a DE probe that failed) and infinities fall back to the floor too.
     if (!std::isfinite(speed) || !(speed > kMinSpeed)) {
         return kMinSpeed;
@@ -121,12 +125,12 @@ float travel_speed(float de_at_camera, float speed_factor) {
     return speed;
 }
 
-float limit_step(float step, float de_at_camera) {
-    if (!std::isfinite(de_at_camera) || !(de_at_camera > 0.0f)) {
+double limit_step(double step, double de_at_camera) {
+    if (!std::isfinite(de_at_camera) || !(de_at_camera > 0.0)) {
         return step;
     }
     // The magnitude is what matters: a step backwards can reach a surface behind the camera.
-    const float half_de = 0.5f * de_at_camera;
+    const double half_de = 0.5 * de_at_camera;
     return std::clamp(step, -half_de, half_de);
 }
 

@@ -26,8 +26,8 @@ FrameRequest frame_request(const ViewState& state, int width, int height) {
 // zoom: the target is brought in to the nearest surface (the DE at the camera) when that is
 // nearer. The DE bounds the distance to anything in view from below, so this errs towards double.
 CameraView detail_view(const CameraView& view, float surface_distance) {
-    const glm::vec3 ahead = view.target - view.position;
-    const float target_distance = glm::length(ahead);
+    const glm::dvec3 ahead = view.target - view.position;
+    const double target_distance = glm::length(ahead);
     if (!(surface_distance >= 0.0f) || !(surface_distance < target_distance)) return view;
     CameraView nearer = view;
     nearer.target = view.position + ahead * (surface_distance / target_distance);

@@ -369,11 +369,11 @@ void ViewerApp::update_camera(double dt) {
     FlyCamera& camera = session().camera;
     // Until the render thread has measured the distance to the surface, move relative to the
     // distance to the target.
-    const float de = status_.de_at_camera >= 0.0f ? status_.de_at_camera
-                                                  : 0.25f * camera.target_distance;
+    const double de = status_.de_at_camera >= 0.0f ? double(status_.de_at_camera)
+                                                   : 0.25 * camera.target_distance;
     const bool shift = held(SDL_SCANCODE_LSHIFT) + held(SDL_SCANCODE_RSHIFT) > 0.0f;
-    const float speed = travel_speed(de, speed_factor_ * (shift ? kShiftSpeedUp : 1.0f));
-    camera.move(local, limit_step(speed * static_cast<float>(dt), de));
+    const double speed = travel_speed(de, speed_factor_ * (shift ? kShiftSpeedUp : 1.0f));
+    camera.move(local, limit_step(speed * dt, de));
 }
 
 void ViewerApp::update_playback(double dt) {

@@ -173,7 +173,7 @@ private:
     std::vector<float> accumulation_;  // sum of linear RGB over the samples
     std::shared_ptr<const Scene> probed_scene_;
     const Renderer* probed_renderer_ = nullptr;  // renderers live as long as the worker
-    glm::vec3 probed_position_{NAN};
+    glm::dvec3 probed_position_{NAN};
     std::vector<float> probed_params_;
     float probed_de_ = -1.0f;
     uint64_t chosen_generation_ = UINT64_MAX;  // the generation whose precision is decided
