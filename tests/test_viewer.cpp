@@ -251,8 +251,8 @@ TEST_F(ViewerTest, ScreenshotIsTheFullResolutionImageFgrRenderGives) {
     const fs::path path = saved_path(dir());
     ASSERT_FALSE(path.empty()) << run.result;
     const CameraView saved = read_camera_path_file(path).path.keyframes.at(0).view;
-    EXPECT_EQ(saved.position, glm::vec3(2.0f, -2.0f, 1.0f)) << "the default camera";
-    EXPECT_LT(glm::length(saved.target), 1e-6f);
+    EXPECT_EQ(saved.position, glm::dvec3(2.0, -2.0, 1.0)) << "the default camera";
+    EXPECT_LT(glm::length(saved.target), 1e-6);
 
     const test::RunResult rendered = test::run_fgr(
         {"render", "mandelbulb", "--camera-path", path.string(), "--time", "0", "-o",
