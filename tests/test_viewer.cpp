@@ -427,7 +427,8 @@ TEST_F(ViewerTest, RebuiltPluginThatStaysLoadedIsReloadedAsRebuilt) {
     fs::copy_file(fixtures / "nodelete_v1.so", plugins / "fixture.so");
     const std::string script = R"(0 wait_idle
 0 key F12
-3 wait_idle
+0 wait_reload
+0 wait_idle
 0 key F12
 0.2 quit
 )";
