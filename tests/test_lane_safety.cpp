@@ -17,19 +17,12 @@
 #include "fgr/parameters.hpp"
 #include "fgr/program_cache.hpp"
 #include "fgr/renderer.hpp"
+#include "test_scenes.hpp"
 
 namespace fgr {
 namespace {
 
-const std::vector<Scene>& all_scenes() {
-    static const std::vector<Scene> scenes = [] {
-        spdlog::set_level(spdlog::level::err);
-        auto found = discover_scenes({FGR_TEST_PLUGIN_DIR}).scenes;
-        spdlog::set_level(spdlog::level::info);
-        return found;
-    }();
-    return scenes;
-}
+using test::all_scenes;
 
 struct LaneCase {
     std::string scene_id;

@@ -5,11 +5,27 @@
 #include <filesystem>
 #include <stdexcept>
 #include <string>
+#include <vector>
 
+#include <spdlog/spdlog.h>
+
+#include "fgr/discovery.hpp"
 #include "fgr/plugin_loader.hpp"
 #include "fgr/scene.hpp"
 
 namespace fgr::test {
+
+// Every scene this build's plugin folder holds, discovered once per test process (quietly: the
+// discovery's own log lines would bury the test output).
+inline const std::vector<Scene>& all_scenes() {
+    static const std::vector<Scene> scenes = [] {
+        spdlog::set_level(spdlog::level::err);
+        auto found = discover_scenes({FGR_TEST_PLUGIN_DIR}).scenes;
+        spdlog::set_level(spdlog::level::info);
+        return found;
+    }();
+    return scenes;
+}
 
 // A plugin of this build (FGR_TEST_PLUGIN_DIR), e.g. "mandelbulb.so"; throws with the reason when
 // it does not load.
