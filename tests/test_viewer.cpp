@@ -425,9 +425,12 @@ TEST_F(ViewerTest, RebuiltPluginThatStaysLoadedIsReloadedAsRebuilt) {
     const fs::path plugins = dir() / "plugins";
     fs::create_directory(plugins);
     fs::copy_file(fixtures / "nodelete_v1.so", plugins / "fixture.so");
+    // After the first screenshot the new version is renamed over the old: wait until the viewer
+    // has dealt with it, then until the view is refined.
     const std::string script = R"(0 wait_idle
 0 key F12
-3 wait_idle
+0 wait_reload
+0 wait_idle
 0 key F12
 0.2 quit
 )";
