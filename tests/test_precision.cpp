@@ -336,7 +336,7 @@ TEST_F(FloatAndDouble, DeepZoomDoubleDepthsMatchALongDoubleMarch) {
     for (double across : {1e-6, 1e-7}) expect_depths_match_long_double(deep_zoom(across));
 }
 
-// --- One rule in the three front ends -------------------------------------------------------------
+// --- One rule in the three front ends ------------------------------------------------------------
 //
 // fgr render (render_still), fgr view (the viewer's RenderWorker) and fgr bench (run_benchmark)
 // decide float or double for a view by the same rule, so they agree on every view. Each is asked

@@ -436,11 +436,11 @@ TEST_F(ViewerTest, RebuiltPluginThatStaysLoadedIsReloadedAsRebuilt) {
 )";
     ViewerRun run;
     {
-        AfterEachScreenshot changes(dir(), {[&] {
-                                        fs::copy_file(fixtures / "nodelete_v2.so",
-                                                      plugins / "fixture.so.new");
-                                        fs::rename(plugins / "fixture.so.new", plugins / "fixture.so");
-                                    }});
+        const auto rebuild = [&] {
+            fs::copy_file(fixtures / "nodelete_v2.so", plugins / "fixture.so.new");
+            fs::rename(plugins / "fixture.so.new", plugins / "fixture.so");
+        };
+        AfterEachScreenshot changes(dir(), {rebuild});
         run = view(script, {"fixture-nodelete"}, plugins);
     }
     ASSERT_EQ(run.result.exit_code, 0) << run.result;
