@@ -328,7 +328,7 @@ TEST_F(CopyScene, RefusesTooSmallStruct) {
     expect_refused("description struct too small (120 bytes)");
 }
 
-// --- The source's length (ABI 1.1) ----------------------------------------------------------------
+// --- The source's length (ABI 1.1) ---------------------------------------------------------------
 
 TEST_F(CopyScene, SourceIsReadToItsLengthWithoutANul) {
     const std::string text = "real scene_de(vec3 p, PARAMS) { return v3_length(p) - 1.0f; }";
@@ -598,7 +598,8 @@ TEST_F(CopyScene, RefusesCamerasWhoseBasisWouldNotBeFinite) {
 TEST_F(CopyScene, RefusesKeyframesWhoseBasisWouldNotBeFinite) {
     built.keyframes[1].position[0] = 1e30f;
     built.keyframes[1].target[0] = -1e30f;
-    expect_refused("camera path 'orbit' keyframe 1: position and target 2e+30 apart: too far apart");
+    expect_refused(
+        "camera path 'orbit' keyframe 1: position and target 2e+30 apart: too far apart");
     built.keyframes[1].position[0] = 3.0f;
     built.keyframes[1].target[0] = 3.0f + 3e-7f;  // a float step away, but 3e-7 is no problem
     expect_accepted();

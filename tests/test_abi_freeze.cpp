@@ -40,7 +40,8 @@ const fs::path kFrozenDir = fs::path(FGR_TEST_FIXTURE_DIR) / "frozen_v1";
 const fs::path kFrozenPlugin = kFrozenDir / "frozen_v1.so";
 const fs::path kMajor2Plugin = kFrozenDir / "frozen_v1_major2.so";
 const fs::path kFrozenHeader = fs::path(__FILE__).parent_path() / "abi_v1" / "fgr" / "plugin.h";
-const fs::path kFrozenV1_1Plugin = fs::path(FGR_TEST_FIXTURE_DIR) / "frozen_v1_1" / "frozen_v1_1.so";
+const fs::path kFrozenV1_1Plugin =
+    fs::path(FGR_TEST_FIXTURE_DIR) / "frozen_v1_1" / "frozen_v1_1.so";
 const fs::path kFrozenV1_1Header =
     fs::path(__FILE__).parent_path() / "abi_v1_1" / "fgr" / "plugin.h";
 

@@ -96,8 +96,8 @@ TEST(CacheDirectory, TrimEvictsTheLeastRecentlyUsedEntriesAndNothingElse) {
     const CacheUsage evicted = trim_cache(dir.path(), 2000);
     EXPECT_EQ(evicted.entries, 2u);
     EXPECT_EQ(evicted.bytes, 1010u);
-    EXPECT_EQ(names(dir.path()),
-              (std::vector<std::string>{"bbbbbbbbbbbbbbbb.bin", "cccccccccccccccc.bin", "notes.txt"}));
+    EXPECT_EQ(names(dir.path()), (std::vector<std::string>{"bbbbbbbbbbbbbbbb.bin",
+                                                           "cccccccccccccccc.bin", "notes.txt"}));
 
     // The entry just written stays even when it alone is over the limit.
     trim_cache(dir.path(), 10, b);
@@ -133,7 +133,7 @@ TEST(CacheDirectory, StoreWritesTheWholeEntryAndTrimsAroundIt) {
     EXPECT_NE(store_cache_entry(dir.path() / "sub" / kProgram / "x.bin", "y", 1000), "");
 }
 
-// --- ProgramCache on disk -------------------------------------------------------------------------
+// --- ProgramCache on disk ------------------------------------------------------------------------
 
 class ProgramCacheDisk : public ::testing::Test {
 protected:

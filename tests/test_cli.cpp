@@ -513,7 +513,7 @@ TEST_F(CliTest, InfoListsADevice) {
     EXPECT_TRUE(contains(result.out, "device")) << result;
 }
 
-// --- Views and images fgr cannot compute ----------------------------------------------------------
+// --- Views and images fgr cannot compute ---------------------------------------------------------
 //
 // A render whose camera basis would be NaN or infinite, or whose pixels come out NaN, is an error
 // (one line, non-zero exit, no file), never exit 0 with an image of nothing. These children get
@@ -550,8 +550,8 @@ class CliUncomputable : public CliWithOwnCache {
 protected:
     // A camera path file in the test's directory with these keyframes (JSON objects).
     std::string path_file(const std::string& name, const std::string& keyframes) {
-        std::ofstream(dir() / name) << R"({"format": "fgr-camera-path", "version": 1, "keyframes": [)"
-                                    << keyframes << "]}";
+        std::ofstream(dir() / name)
+            << R"({"format": "fgr-camera-path", "version": 1, "keyframes": [)" << keyframes << "]}";
         return name;
     }
 
@@ -569,9 +569,11 @@ protected:
         }
         expect_one_error_line(error);
         for (const std::string& part : mention) {
-            EXPECT_TRUE(contains(result.err, part)) << "should mention '" << part << "': " << result;
+            EXPECT_TRUE(contains(result.err, part))
+                << "should mention '" << part << "': " << result;
         }
-        EXPECT_EQ(directory_listing(dir()), inputs) << "left behind: " << joined(directory_listing(dir()));
+        EXPECT_EQ(directory_listing(dir()), inputs)
+            << "left behind: " << joined(directory_listing(dir()));
     }
 };
 
@@ -595,8 +597,9 @@ TEST_F(CliUncomputable, CameraPathMomentWithoutAViewDirectionIsRefused) {
 
 TEST_F(CliUncomputable, KeyframesWhoseBasisWouldNotBeFiniteAreRefused) {
     const std::string huge = path_file(
-        "huge.json", R"({"time": 0, "position": [1e30, 1e30, 1e30], "target": [-1e30, -1e30, -1e30]},
-                        {"time": 1, "position": [2, -2, 1], "target": [0, 0, 0]})");
+        "huge.json",
+        R"({"time": 0, "position": [1e30, 1e30, 1e30], "target": [-1e30, -1e30, -1e30]},
+           {"time": 1, "position": [2, -2, 1], "target": [0, 0, 0]})");
     const RunResult result = run_with({"render", "mandelbulb", "-o", out_png().string(), "--width",
                                        "16", "--height", "12", "--camera-path", huge, "--time",
                                        "1"});
@@ -633,7 +636,7 @@ TEST_F(CliUncomputable, NonFinitePixelsAreAnErrorAndNoFile) {
     expect_refused(result, 1, {"bad-nan-colour", "non-finite colour or depth"}, {});
 }
 
-// --- fgr cache and the disk cache's limits --------------------------------------------------------
+// --- fgr cache and the disk cache's limits -------------------------------------------------------
 
 class CliCache : public CliWithOwnCache {
 protected:

@@ -115,7 +115,7 @@ TEST(CarryParamValues, KeepsValuesOfParametersThatStillExist) {
     EXPECT_EQ(param_value(after, reset, "radius"), 0.2f) << "a changed type starts from default";
 }
 
-// --- Reloading a plugin that stays loaded ---------------------------------------------------------
+// --- Reloading a plugin that stays loaded --------------------------------------------------------
 
 // The temporary directory set to one of the test's own while alive, so the copies
 // reload_scene_plugin makes (and must remove) can be counted.
@@ -184,7 +184,8 @@ TEST(ReloadScenePlugin, FailuresNameTheReasonAndLeaveNoCopy) {
     const OwnTemporaryDirectory tmp;
     const LoadResult missing = reload_scene_plugin(plugins.path() / "missing.so");
     EXPECT_FALSE(missing.scene);
-    EXPECT_NE(missing.error.find("cannot read the plugin file"), std::string::npos) << missing.error;
+    EXPECT_NE(missing.error.find("cannot read the plugin file"), std::string::npos)
+        << missing.error;
     std::ofstream(plugins.path() / "text.so") << "not a library";
     const LoadResult text = reload_scene_plugin(plugins.path() / "text.so");
     EXPECT_FALSE(text.scene);

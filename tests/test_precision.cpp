@@ -2,22 +2,32 @@
 // the double pipeline renders an ordinary view like float at every packet width it supports, the
 // kernel's double DE agrees with a long-double C++ DE to the float rounding of its result, and in
 // deep zooms double's depths are a long-double march's. The assertions are about double: float's
-// figures are printed beside them, never required to be bad.
+// figures are printed beside them, never required to be bad. And fgr render, fgr view and
+// fgr bench decide float or double alike.
+#include <chrono>
 #include <cmath>
 #include <filesystem>
 #include <limits>
+#include <memory>
+#include <optional>
 #include <random>
 #include <set>
+#include <string>
+#include <thread>
+#include <vector>
 
 #include <glm/vec2.hpp>
 #include <gtest/gtest.h>
 
 #include "child_process.hpp"
 #include "fgr/camera.hpp"
+#include "fgr/bench.hpp"
 #include "fgr/camera_path_file.hpp"
 #include "fgr/parameters.hpp"
 #include "fgr/precision.hpp"
 #include "fgr/renderer.hpp"
+#include "fgr/still_image.hpp"
+#include "fgr/viewer/render_worker.hpp"
 #include "deep_zoom.hpp"
 #include "mandelbulb_reference.hpp"
 #include "test_scenes.hpp"
@@ -133,17 +143,23 @@ CameraView with_far_target(CameraView view) {
     return view;
 }
 
-// Auto also judges at the hits: a float probe of a view whose camera is close to a surface finer
-// than float resolves finds it, wherever the target is; an ordinary view's hits are coarse.
-TEST_F(FloatAndDouble, FloatProbeFindsSurfaceFinerThanFloatAtTheHits) {
+// Auto also judges at the nearest surface: the DE at a camera close to a surface finer than float
+// resolves finds it, wherever the target is; an ordinary view's camera is far from everything.
+TEST_F(FloatAndDouble, AutoRuleJudgesAtTheNearestSurfaceTheDEFinds) {
     const auto params = default_param_values(*bulb_);
+    Renderer in_float = renderer(false);
     const CameraView far_target = with_far_target(deep_zoom(1e-7));
-    ASSERT_FALSE(needs_double_precision(far_target, 640)) << "judged at the target: coarse";
-    EXPECT_TRUE(hits_finer_than_float(renderer(false).render({80, 60, far_target, params}),
-                                      far_target, 640));
+    ASSERT_FALSE(auto_wants_double(far_target, 640, -1.0f)) << "judged at the target: coarse";
+    // Float's DE there is rough (the coordinates' own steps are 6e-8), but a distance of the
+    // standoff's order, not more: small enough to call for double.
+    const float near = surface_distance(in_float, far_target, params);
+    EXPECT_GT(near, 0.0f);
+    EXPECT_LT(near, 1.5 * test::kDeepZoomStandoff);
+    EXPECT_TRUE(auto_wants_double(far_target, 640, near));
     const CameraView canonical = bulb_->cameras.front().view;
-    EXPECT_FALSE(hits_finer_than_float(renderer(false).render({80, 60, canonical, params}),
-                                       canonical, 640));
+    EXPECT_FALSE(auto_wants_double(canonical, 640, surface_distance(in_float, canonical, params)));
+    // A surface beyond the target changes nothing: the target is nearer.
+    EXPECT_TRUE(auto_wants_double(deep_zoom(1e-7), 640, 10.0f));
 }
 
 // `fgr render` under auto renders such a view in double, and says why; float stays float.
@@ -396,6 +412,92 @@ TEST_F(FloatAndDouble, DeepZoomCameraPathMovesTheImageContinuously) {
     }
     // The camera slides right, so the image slides left, 24 pixels in all.
     EXPECT_NEAR(-travelled, pixels_per_frame * frames, 4.0);
+}
+
+// --- One rule in the three front ends ------------------------------------------------------------
+//
+// fgr render (render_still), fgr view (the viewer's RenderWorker) and fgr bench (run_benchmark)
+// decide float or double for a view by the same rule, so they agree on every view. Each is asked
+// for the views below at 64x48 under auto.
+
+struct RuleCase {
+    std::string name;
+    CameraView view;
+    bool in_double;  // what the rule decides
+};
+
+// The deep zoom's camera turned round: 2e-6 from the surface, looking away from it at a target 1
+// unit away. The DE at the camera still bounds what is in view from below, so the rule errs
+// towards double here.
+CameraView looking_away(const CameraView& view) {
+    CameraView away = view;
+    away.target = view.position - glm::normalize(view.target - view.position);
+    return away;
+}
+
+// The precision fgr view renders `view` in: the last frame of the render thread, refined.
+bool viewer_renders_in_double(const std::shared_ptr<const Scene>& scene, const CameraView& view,
+                              int width, int height) {
+    viewer::RenderWorker worker(-1, 0, viewer::QualitySettings{33.0, 1, 0.1f});
+    viewer::ViewState state;
+    state.scene = scene;
+    state.effects = scene->effects;
+    state.view = view;
+    state.params = default_param_values(*scene);
+    state.width = width;
+    state.height = height;
+    state.precision = Precision::Auto;
+    state.generation = 1;
+    worker.submit(state);
+    std::optional<bool> in_double;
+    const auto deadline = std::chrono::steady_clock::now() + std::chrono::minutes(2);
+    while (std::chrono::steady_clock::now() < deadline) {
+        if (auto frame = worker.take_frame()) in_double = frame->double_precision;
+        const viewer::WorkerStatus status = worker.status();
+        EXPECT_TRUE(status.error.empty()) << status.error;
+        if (status.idle && status.idle_generation == 1 && in_double) break;
+        std::this_thread::sleep_for(std::chrono::milliseconds(2));
+    }
+    EXPECT_TRUE(in_double.has_value()) << "the viewer rendered no frame";
+    return in_double.value_or(false);
+}
+
+TEST_F(FloatAndDouble, RenderViewAndBenchDecideAlike) {
+    constexpr int width = 64, height = 48;
+    const CameraView deep = deep_zoom(1e-7);
+    const std::vector<RuleCase> cases = {
+        {"canonical", bulb_->cameras.front().view, false},
+        {"deep zoom (its target on the surface)", deep, true},
+        {"camera 2e-6 from the surface, target 1 unit away", with_far_target(deep), true},
+        {"camera 2e-6 from the surface, looking away", looking_away(deep), true},
+    };
+    const auto params = default_param_values(*bulb_);
+    for (const RuleCase& rule : cases) {
+        SCOPED_TRACE(rule.name);
+        // fgr render
+        StillSettings still;
+        still.effects = bulb_->effects;
+        const Frame rendered =
+            render_still(*bulb_, {width, height, rule.view, params}, *device_, cache_, still);
+        EXPECT_EQ(rendered.double_precision, rule.in_double) << "fgr render";
+
+        // fgr view
+        auto scene = std::make_shared<const Scene>(*bulb_);
+        EXPECT_EQ(viewer_renders_in_double(scene, rule.view, width, height), rule.in_double)
+            << "fgr view";
+
+        // fgr bench, along a path that holds the view
+        Scene benched = *bulb_;
+        benched.camera_paths.push_back({"rule", {{0.0f, rule.view}, {1.0f, rule.view}}});
+        BenchSettings settings;
+        settings.width = width;
+        settings.height = height;
+        settings.frames = 2;
+        settings.path = "rule";
+        const BenchReport report = run_benchmark(benched, *device_, cache_, settings);
+        ASSERT_EQ(report.runs.size(), 1u);
+        EXPECT_EQ(report.runs[0].double_frames, rule.in_double ? 2 : 0) << "fgr bench";
+    }
 }
 
 }  // namespace

@@ -425,6 +425,8 @@ TEST_F(ViewerTest, RebuiltPluginThatStaysLoadedIsReloadedAsRebuilt) {
     const fs::path plugins = dir() / "plugins";
     fs::create_directory(plugins);
     fs::copy_file(fixtures / "nodelete_v1.so", plugins / "fixture.so");
+    // After the first screenshot the new version is renamed over the old: wait until the viewer
+    // has dealt with it, then until the view is refined.
     const std::string script = R"(0 wait_idle
 0 key F12
 0 wait_reload
@@ -434,11 +436,11 @@ TEST_F(ViewerTest, RebuiltPluginThatStaysLoadedIsReloadedAsRebuilt) {
 )";
     ViewerRun run;
     {
-        AfterEachScreenshot changes(dir(), {[&] {
-                                        fs::copy_file(fixtures / "nodelete_v2.so",
-                                                      plugins / "fixture.so.new");
-                                        fs::rename(plugins / "fixture.so.new", plugins / "fixture.so");
-                                    }});
+        const auto rebuild = [&] {
+            fs::copy_file(fixtures / "nodelete_v2.so", plugins / "fixture.so.new");
+            fs::rename(plugins / "fixture.so.new", plugins / "fixture.so");
+        };
+        AfterEachScreenshot changes(dir(), {rebuild});
         run = view(script, {"fixture-nodelete"}, plugins);
     }
     ASSERT_EQ(run.result.exit_code, 0) << run.result;

@@ -17,7 +17,8 @@ namespace {
 std::filesystem::path cache_directory() {
     const std::filesystem::path directory = ProgramCache::default_directory();
     if (directory.empty()) {
-        throw RuntimeFailure("no kernel cache directory: set FGR_CACHE_DIR, XDG_CACHE_HOME or HOME");
+        throw RuntimeFailure(
+            "no kernel cache directory: set FGR_CACHE_DIR, XDG_CACHE_HOME or HOME");
     }
     return directory;
 }

@@ -62,10 +62,9 @@ int run_cli(int argc, char** argv) {
     if (const std::string first = argv[1]; !first.empty() && first.front() != '-' &&
         first != "list" && first != "info" && first != "render" && first != "view" &&
         first != "new-scene" && first != "bench" && first != "cache") {
-        return report_error(
-            fmt::format(
-                "unknown command '{}' (commands: list, info, render, view, new-scene, bench, cache)",
-                first),
+        return report_error(fmt::format("unknown command '{}' (commands: list, info, render, "
+                                        "view, new-scene, bench, cache)",
+                                        first),
                             kExitUsage);
     }
     try {

@@ -1,9 +1,9 @@
 #pragma once
 // The `fgr` executable's commands, one file each (list.cpp, info.cpp, render.cpp, view.cpp,
-// bench.cpp, bench_accuracy.cpp, new_scene.cpp, cache.cpp), and what they share (common.cpp). run_cli
-// (cli.cpp) registers each command's options with CLI11 and runs the one given. A command returns
-// the exit code, throws UsageError for bad input (exit 2) and anything else for failures while
-// running (exit 1).
+// bench.cpp, bench_accuracy.cpp, new_scene.cpp, cache.cpp), and what they share (common.cpp).
+// run_cli (cli.cpp) registers each command's options with CLI11 and runs the one given. A command
+// returns the exit code, throws UsageError for bad input (exit 2) and anything else for failures
+// while running (exit 1).
 
 #include <filesystem>
 #include <optional>

@@ -136,16 +136,21 @@ RunFigures bench_run(const CameraPath& path, const Scene& scene, const BenchSett
         }
         progress(fraction);
         request.view = evaluate_camera_path(path, time);
-        const bool in_double =
-            renderers.chooser.in_double(settings.precision, request.view, settings.width);
-        Renderer* renderer = renderers.renderers.built(in_double);
-        if (renderer == nullptr) {
-            // The run's clock stops while a kernel builds: builds are reported on their own.
-            const auto build_start = Clock::now();
-            renderer = &build_renderer(renderers.renderers, in_double, report);
-            start += Clock::now() - build_start;
-        }
-        frame_ms.push_back(renderer->render(request).render_ms);
+        const auto renderer_in = [&](bool double_precision) -> Renderer& {
+            Renderer* renderer = renderers.renderers.built(double_precision);
+            if (renderer == nullptr) {
+                // The run's clock stops while a kernel builds: builds are reported on their own.
+                const auto build_start = Clock::now();
+                renderer = &build_renderer(renderers.renderers, double_precision, report);
+                start += Clock::now() - build_start;
+            }
+            return *renderer;
+        };
+        // The auto rule's DE at the camera comes from the float kernel, as in fgr render and view.
+        const bool in_double = renderers.chooser.in_double(
+            settings.precision, request.view, settings.width,
+            [&] { return surface_distance(renderer_in(false), request.view, request.params); });
+        frame_ms.push_back(renderer_in(in_double).render(request).render_ms);
         double_frames += in_double;
         if (settings.on_frame) settings.on_frame(request.view, time, frame_ms.back());
     }

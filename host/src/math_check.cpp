@@ -322,7 +322,9 @@ std::string math_check_verdict(const ComputeDevice& device, ProgramCache& cache,
         const std::string failure = store_cache_entry(
             file, (verdict.empty() ? "pass" : "fail: " + verdict) + "\n", cache.size_limit());
         // Like the program cache, the verdict file only saves time.
-        if (!failure.empty()) spdlog::debug("could not store the math self-test verdict: {}", failure);
+        if (!failure.empty()) {
+            spdlog::debug("could not store the math self-test verdict: {}", failure);
+        }
     }
     return verdicts[memory_key] = verdict;
 }

@@ -1,6 +1,8 @@
 #include "fgr/precision.hpp"
 
 #include <algorithm>
+#include <cmath>
+#include <span>
 #include <stdexcept>
 #include <utility>
 
@@ -28,29 +30,61 @@ std::string_view precision_name(Precision precision) {
 
 namespace {
 
-bool wants_double(Precision precision, const CameraView& view, int width) {
-    return precision == Precision::Double ||
-           (precision == Precision::Auto && needs_double_precision(view, width));
+// The view whose footprint decides: the target brought in to the nearest surface when the DE at
+// the camera puts one nearer.
+CameraView detail_view(const CameraView& view, float surface_distance) {
+    const glm::dvec3 ahead = view.target - view.position;
+    const double target_distance = glm::length(ahead);
+    if (!(surface_distance >= 0.0f) || !(surface_distance < target_distance)) return view;
+    CameraView nearer = view;
+    nearer.target = view.position + ahead * (double(surface_distance) / target_distance);
+    return nearer;
+}
+
+bool wants_double(Precision precision, const CameraView& view, int width,
+                  const SurfaceDistance& distance) {
+    if (precision != Precision::Auto) return precision == Precision::Double;
+    // The target alone may decide, before anything is probed.
+    if (auto_wants_double(view, width, -1.0f)) return true;
+    return distance && auto_wants_double(view, width, distance());
+}
+
+}  // namespace
+
+bool auto_wants_double(const CameraView& view, int width, float surface_distance) {
+    return needs_double_precision(detail_view(view, surface_distance), width);
+}
+
+float surface_distance(Renderer& in_float, const CameraView& view,
+                       const std::vector<float>& params) {
+    const std::vector<float> de = in_float.probe_de(std::span(&view.position, 1), params);
+    return std::isfinite(de.at(0)) ? std::abs(de[0]) : -1.0f;
+}
+
+namespace {
+
+void check_double_available(Precision precision, const DeviceInfo& device) {
+    if (precision == Precision::Double && !device.has_fp64) {
+        throw std::runtime_error(
+            fmt::format("{} has no double precision (cl_khr_fp64)", device.name));
+    }
 }
 
 }  // namespace
 
 bool use_double_precision(Precision precision, const CameraView& view, int width,
-                          const DeviceInfo& device) {
-    if (!wants_double(precision, view, width)) return false;
-    if (device.has_fp64) return true;
-    if (precision == Precision::Double) {
-        throw std::runtime_error(
-            fmt::format("{} has no double precision (cl_khr_fp64)", device.name));
-    }
-    return false;
+                          const DeviceInfo& device, const SurfaceDistance& distance) {
+    check_double_available(precision, device);
+    return device.has_fp64 && wants_double(precision, view, width, distance);
 }
 
 PrecisionChooser::PrecisionChooser(const DeviceInfo& device, Warn warn)
     : device_(device), warn_(std::move(warn)) {}
 
-bool PrecisionChooser::in_double(Precision precision, const CameraView& view, int width) {
-    const bool double_wanted = wants_double(precision, view, width);
+bool PrecisionChooser::in_double(Precision precision, const CameraView& view, int width,
+                                 const SurfaceDistance& distance) {
+    check_double_available(precision, device_);
+    const bool double_wanted = wants_double(precision, view, width, distance);
     if (!warned_ && double_wanted && precision == Precision::Auto && !device_.has_fp64) {
         warned_ = true;
         if (warn_) {
@@ -58,36 +92,7 @@ bool PrecisionChooser::in_double(Precision precision, const CameraView& view, in
                               device_.name));
         }
     }
-    return double_wanted && use_double_precision(precision, view, width, device_);
-}
-
-bool hits_finer_than_float(const Frame& frame, const CameraView& view, int width) {
-    const CameraBasis basis = camera_basis(view);
-    const float angle = pixel_angle(basis, width);
-    const int probe_width = frame.image.width, probe_height = frame.image.height;
-    long hits = 0, fine = 0;
-    for (int y = 0; y < probe_height; ++y) {
-        for (int x = 0; x < probe_width; ++x) {
-            const float t = frame.depth[size_t(y) * size_t(probe_width) + size_t(x)];
-            if (t < 0.0f) continue;
-            const glm::dvec3 hit =
-                basis.eye + glm::dvec3(primary_ray_direction(basis, probe_width, probe_height,
-                                                             float(x), float(y))) * double(t);
-            ++hits;
-            fine += finer_than_float(
-                t * angle, static_cast<float>(std::max(glm::length(hit), glm::length(basis.eye))));
-        }
-    }
-    return fine * 100 > hits;
-}
-
-bool float_probe_finds_fine_surface(Renderer& in_float, const FrameRequest& request) {
-    FrameRequest probe;
-    probe.view = request.view;
-    probe.params = request.params;
-    probe.width = std::max(8, request.width / 8);
-    probe.height = std::max(8, request.height * probe.width / request.width);
-    return hits_finer_than_float(in_float.render(probe), request.view, request.width);
+    return double_wanted && device_.has_fp64;
 }
 
 KernelSwitches with_precision(KernelSwitches switches, bool double_precision) {

@@ -145,7 +145,9 @@ void ProgramCache::store_binary(const cl::Program& program, const std::filesyste
         failure = error.what();
     }
     // The cache only saves time; failing to fill it must never fail a render.
-    if (!failure.empty()) spdlog::debug("could not cache program binary {}: {}", file.string(), failure);
+    if (!failure.empty()) {
+        spdlog::debug("could not cache program binary {}: {}", file.string(), failure);
+    }
 }
 
 }  // namespace fgr

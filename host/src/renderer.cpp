@@ -291,6 +291,7 @@ Frame Renderer::render(const FrameRequest& request) {
     device_.queue.enqueueReadBuffer(planes, CL_TRUE, 0, host.size() * sizeof(float), host.data());
 
     Frame frame;
+    frame.double_precision = switches_.double_precision;
     frame.depth.resize(static_cast<size_t>(request.width) * request.height);
     frame.linear.resize(frame.depth.size() * 3);
     const float average = 1.0f / static_cast<float>(request.samples);

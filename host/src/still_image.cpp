@@ -25,6 +25,7 @@ Frame render_still(const Scene& scene, const FrameRequest& request, const Comput
         settings.effects, settings.stats};
     PrecisionRenderers renderers(device, cache, scene, in_float);
     const auto build = [&](bool double_precision) -> Renderer& {
+        if (Renderer* built = renderers.built(double_precision)) return *built;
         const KernelSwitches switches = with_precision(in_float, double_precision);
         spdlog::info("building '{}' for {} ({} rays per work-item, {}, effects: {})", scene.id,
                      device.info.name, switches.packet_width,
@@ -35,14 +36,16 @@ Frame render_still(const Scene& scene, const FrameRequest& request, const Comput
     };
     PrecisionChooser chooser(device.info,
                              [](const std::string& warning) { spdlog::warn("{}", warning); });
-    const bool in_double = chooser.in_double(settings.precision, request.view, request.width);
-    Renderer* chosen = &build(in_double);
-    if (settings.precision == Precision::Auto && !in_double && device.info.has_fp64 &&
-        float_probe_finds_fine_surface(*chosen, request)) {
-        spdlog::info("the surface in view is finer than float resolves: rendering in double");
-        chosen = &build(true);
+    // The auto rule's DE at the camera comes from the float kernel, as in fgr view and fgr bench.
+    const auto distance = [&] {
+        return surface_distance(build(false), request.view, request.params);
+    };
+    const bool in_double =
+        chooser.in_double(settings.precision, request.view, request.width, distance);
+    if (in_double && settings.precision == Precision::Auto) {
+        spdlog::info("a pixel of this view is finer than float resolves: rendering in double");
     }
-    Frame frame = chosen->render(request);
+    Frame frame = build(in_double).render(request);
     // A pixel the kernel could not compute must not reach a file as if it were an image.
     if (const long broken = non_finite_pixels(frame); broken > 0) {
         throw std::runtime_error(fmt::format(

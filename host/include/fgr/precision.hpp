@@ -2,12 +2,14 @@
 // Float or double lanes for a render. Float is ~2x faster and resolves any view whose pixels are
 // coarser than a few float steps of the coordinates; a deep zoom needs double, where float would
 // round neighbouring pixels' rays onto the same points (flat blocks, noisy depth). `Auto` picks
-// per view, so every front end (render, view, bench) switches the same way.
+// per view by one rule (auto_wants_double), which every front end (fgr render, fgr view,
+// fgr bench) calls through PrecisionChooser, so all three decide alike on the same view.
 
 #include <functional>
 #include <memory>
 #include <string>
 #include <string_view>
+#include <vector>
 
 #include "fgr/camera.hpp"
 #include "fgr/kernel_assembly.hpp"
@@ -24,10 +26,33 @@ enum class Precision { Float, Double, Auto };
 Precision parse_precision(std::string_view text);
 std::string_view precision_name(Precision precision);
 
+// --- The auto rule ---------------------------------------------------------------------------
+
+// `--precision auto`'s one rule: double when one pixel's footprint (a `width`-pixel image of
+// `view`) is under 16 float steps of the coordinates (finer_than_float) where the view's finest
+// detail can be: at the camera target, or, when `surface_distance` (the DE at the camera) puts a
+// surface nearer than the target, at that distance along the view. The DE bounds the distance to
+// everything in view from below, so a camera close to a surface renders in double wherever its
+// target is (the viewer's fly camera keeps its target far ahead), and the rule errs towards
+// double; a camera far from every surface is judged at its target (a deep zoom's target is on
+// the surface). A negative `surface_distance` (unknown) judges at the target alone.
+bool auto_wants_double(const CameraView& view, int width, float surface_distance);
+
+// The distance auto_wants_double takes: |DE| at the camera, evaluated once by `in_float`, the
+// scene's float kernel (whichever precision renders, so every front end judges by the same
+// number); -1 when it is not finite.
+float surface_distance(Renderer& in_float, const CameraView& view,
+                       const std::vector<float>& params);
+
+// Asked for the surface distance only when the rule needs it (Auto, and the target alone does
+// not already call for double): front ends pass a function that builds (or reuses) the float
+// renderer and calls surface_distance. An empty function means "unknown".
+using SurfaceDistance = std::function<float()>;
+
 // Whether to render `view` at `width` pixels in double. Double on a device without cl_khr_fp64
 // throws std::runtime_error; Auto there falls back to float (PrecisionChooser says so).
 bool use_double_precision(Precision precision, const CameraView& view, int width,
-                          const DeviceInfo& device);
+                          const DeviceInfo& device, const SurfaceDistance& distance = {});
 
 // Decides float or double view by view on one device, as use_double_precision does, and tells
 // `warn` once (a line naming the device) the first time Auto wanted double on a device without it.
@@ -36,25 +61,14 @@ public:
     using Warn = std::function<void(const std::string&)>;
     PrecisionChooser(const DeviceInfo& device, Warn warn);
 
-    bool in_double(Precision precision, const CameraView& view, int width);
+    bool in_double(Precision precision, const CameraView& view, int width,
+                   const SurfaceDistance& distance = {});
 
 private:
     const DeviceInfo& device_;
     Warn warn_;
     bool warned_ = false;
 };
-
-// Whether the surface a float render found is finer than float resolves, judged at the hits
-// rather than at the camera target: more than 1% of the frame's hit pixels have a footprint
-// (depth times the pixel angle of a `width`-pixel image of the view) under 16 float steps of the
-// coordinates there. `frame` may be a smaller probe render of the same view.
-bool hits_finer_than_float(const Frame& frame, const CameraView& view, int width);
-
-// Auto judges a view at its camera target; the camera may still stand close to a surface finer
-// than float resolves while the target is far. This renders a float probe of `request`'s view at
-// an eighth of its size (under 2% of the render's work) with `in_float` and judges it at the hits
-// (hits_finer_than_float).
-bool float_probe_finds_fine_surface(Renderer& in_float, const FrameRequest& request);
 
 // OpenCL C's scalar double overloads are ambiguous with the kernel library's float literals;
 // vector lanes are not, so double runs at least this many rays per work-item.

@@ -1,7 +1,8 @@
 #pragma once
 // Building OpenCL programs once per (source, switches, device): in memory for the process, and as
 // device binaries on disk across runs, so a second `fgr render` skips the compiler. The disk
-// entries live in a cache directory shared with the math self-test's verdicts (cache_directory.hpp).
+// entries live in a cache directory shared with the math self-test's verdicts
+// (cache_directory.hpp).
 
 #include <cstdint>
 #include <filesystem>

@@ -52,6 +52,7 @@ struct Frame {
     long hits = 0;              // pixels whose ray met the surface
     double render_ms = 0.0;     // kernel, read-back and encoding; no build, no file output
     bool cancelled = false;     // FrameRequest::cancel stopped it: no pixels
+    bool double_precision = false;  // rendered with double lanes (KernelSwitches)
     std::optional<MarchStats> stats;  // when the renderer was built with stats
 };
 

@@ -21,12 +21,11 @@ struct StillSettings {
 };
 
 // Builds the scene's kernel (logging what it builds and how long it took) and renders `request`.
-// Float or double as PrecisionChooser decides for the view; Auto on a device with double also
-// renders a float probe (float_probe_finds_fine_surface) and switches to double when the surface
-// in view is finer than float resolves. Throws KernelBuildError when the scene does not compile,
-// std::runtime_error when double was asked of a device without it, and std::runtime_error when
-// a pixel's colour or depth came out NaN or infinite (non_finite_pixels): an image that could not
-// be computed is an error, never a file.
+// Float or double as PrecisionChooser decides for the view (Auto: auto_wants_double, with the DE
+// at the camera from the float kernel when the target alone does not call for double). Throws
+// KernelBuildError when the scene does not compile, std::runtime_error when double was asked of a
+// device without it, and std::runtime_error when a pixel's colour or depth came out NaN or
+// infinite (non_finite_pixels): an image that could not be computed is an error, never a file.
 Frame render_still(const Scene& scene, const FrameRequest& request, const ComputeDevice& device,
                    ProgramCache& cache, const StillSettings& settings);
 

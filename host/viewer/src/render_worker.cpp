@@ -21,19 +21,6 @@ FrameRequest frame_request(const ViewState& state, int width, int height) {
     return request;
 }
 
-// The view whose finest detail decides the precision. The fly camera's target stays as far ahead
-// as the scene's camera put it, so flying in towards the surface would never look like a deep
-// zoom: the target is brought in to the nearest surface (the DE at the camera) when that is
-// nearer. The DE bounds the distance to anything in view from below, so this errs towards double.
-CameraView detail_view(const CameraView& view, float surface_distance) {
-    const glm::dvec3 ahead = view.target - view.position;
-    const double target_distance = glm::length(ahead);
-    if (!(surface_distance >= 0.0f) || !(surface_distance < target_distance)) return view;
-    CameraView nearer = view;
-    nearer.target = view.position + ahead * (surface_distance / target_distance);
-    return nearer;
-}
-
 }  // namespace
 
 RenderWorker::RenderWorker(int device_index, int packet_width, QualitySettings quality)
@@ -238,25 +225,28 @@ Renderer* RenderWorker::build_renderer(const std::shared_ptr<const Scene>& scene
 
 Renderer* RenderWorker::choose_renderer(const ViewState& state) {
     if (state.generation == chosen_generation_) return renderer_for(state, chosen_double_);
-    Renderer* renderer = renderer_for(state, in_double(state));
+    // The auto rule's DE at the camera comes from the float kernel, as in fgr render and fgr
+    // bench, so all three decide alike.
+    bool float_failed = false;
+    const auto distance = [&] {
+        Renderer* in_float = renderer_for(state, false);
+        if (in_float == nullptr) {
+            float_failed = true;
+            return -1.0f;
+        }
+        probe_camera(*in_float, state);
+        return probed_de_;
+    };
+    const bool in_double =
+        precision_chooser_.in_double(state.precision, state.view, state.width, distance);
+    if (float_failed) return nullptr;
+    Renderer* renderer = renderer_for(state, in_double);
     if (renderer == nullptr) return nullptr;
+    // The DE that sets the fly speed, probed in the precision that renders.
     probe_camera(*renderer, state);
-    // The DE just probed at this position may tip the choice (flying in towards the surface):
-    // change precision, and probe again with the renderer that renders, before any pixel.
-    if (in_double(state) != renderer->switches().double_precision) {
-        renderer = renderer_for(state, !renderer->switches().double_precision);
-        if (renderer == nullptr) return nullptr;
-        probe_camera(*renderer, state);
-    }
     chosen_generation_ = state.generation;
-    chosen_double_ = renderer->switches().double_precision;
+    chosen_double_ = in_double;
     return renderer;
-}
-
-bool RenderWorker::in_double(const ViewState& state) {
-    const CameraView view =
-        detail_view(state.view, state.scene == probed_scene_ ? probed_de_ : -1.0f);
-    return precision_chooser_.in_double(state.precision, view, state.width);
 }
 
 Renderer* RenderWorker::renderer_for(const ViewState& state, bool double_precision) {
@@ -373,13 +363,10 @@ void RenderWorker::probe_camera(Renderer& renderer, const ViewState& state) {
         state.params == probed_params_) {
         return;
     }
-    const std::vector<float> de = renderer.probe_de(std::span(&state.view.position, 1),
-                                                    state.params);
-    probed_scene_ = state.scene;
     probed_renderer_ = &renderer;
     probed_position_ = state.view.position;
     probed_params_ = state.params;
-    probed_de_ = std::isfinite(de.at(0)) ? std::abs(de[0]) : -1.0f;
+    probed_de_ = surface_distance(renderer, state.view, state.params);
     std::lock_guard lock(mutex_);
     status_.de_at_camera = probed_de_;
 }

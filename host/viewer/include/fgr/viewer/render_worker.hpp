@@ -133,12 +133,10 @@ private:
     void run();
     // The next thing to do, or nothing when the thread should stop; waits while idle.
     std::optional<Job> next_job();
-    // The renderer for the state's scene, effects and precision (decided once per generation,
-    // so refinement never mixes float and double samples), the DE at the camera probed with it;
-    // null when the build failed (the status then carries the error).
+    // The renderer for the state's scene, effects and precision (decided once per generation by
+    // the library's auto rule, so refinement never mixes float and double samples), the DE at the
+    // camera probed with it; null when the build failed (the status then carries the error).
     Renderer* choose_renderer(const ViewState& state);
-    // Whether to render `state` in double, judged with the DE last probed in its scene.
-    bool in_double(const ViewState& state);
     // The renderer for the state's scene and effects in the given precision, building it when
     // needed; null when the build failed (the status then carries the error).
     Renderer* renderer_for(const ViewState& state, bool double_precision);
@@ -171,7 +169,6 @@ private:
     uint64_t accumulated_generation_ = UINT64_MAX;
     int accumulated_samples_ = 0;
     std::vector<float> accumulation_;  // sum of linear RGB over the samples
-    std::shared_ptr<const Scene> probed_scene_;
     const Renderer* probed_renderer_ = nullptr;  // renderers live as long as the worker
     glm::dvec3 probed_position_{NAN};
     std::vector<float> probed_params_;
