@@ -2,7 +2,9 @@
 
 #include <array>
 
+#include "fgr_bsdf_cl.h"
 #include "fgr_colour_cl.h"
+#include "fgr_environment_cl.h"
 #include "fgr_effects_cl.h"
 #include "fgr_folds_cl.h"
 #include "fgr_fractals_cl.h"
@@ -10,6 +12,7 @@
 #include "fgr_math_cl.h"
 #include "fgr_math_check_cl.h"
 #include "fgr_render_cl.h"
+#include "fgr_sampler_cl.h"
 #include "fgr_sdf_cl.h"
 #include "fgr_shade_cl.h"
 #include "fgr_types_cl.h"
@@ -36,6 +39,15 @@ std::span<const KernelFile> kernel_postlude() {
         KernelFile{"fgr_shade.cl", fgr_shade_cl},
         KernelFile{"fgr_effects.cl", fgr_effects_cl},
         KernelFile{"fgr_render.cl", fgr_render_cl},
+    };
+    return files;
+}
+
+std::span<const KernelFile> path_library() {
+    static constexpr std::array files{
+        KernelFile{"fgr_sampler.cl", fgr_sampler_cl},
+        KernelFile{"fgr_bsdf.cl", fgr_bsdf_cl},
+        KernelFile{"fgr_environment.cl", fgr_environment_cl},
     };
     return files;
 }

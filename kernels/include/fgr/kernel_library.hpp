@@ -17,6 +17,11 @@ std::span<const KernelFile> kernel_prelude();
 // Marching, shading and the kernel entry points, which call the scene's functions.
 std::span<const KernelFile> kernel_postlude();
 
+// What the path tracer adds after the postlude: the sample generator (fgr_sampler.cl), materials'
+// BSDFs (fgr_bsdf.cl) and the environment's lookup and importance sampling (fgr_environment.cl).
+// Each needs only the prelude's types and maths.
+std::span<const KernelFile> path_library();
+
 // The device math self-test kernel (fgr_math_check.cl), built on its own.
 const char* math_check_source();
 

@@ -1,0 +1,1 @@
+/* fgr kernel library: materials and their BSDFs (being written, issue 13). */
