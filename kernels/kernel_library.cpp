@@ -1,6 +1,7 @@
 #include "fgr/kernel_library.hpp"
 
 #include <array>
+#include <string_view>
 
 #include "fgr_bsdf_cl.h"
 #include "fgr_colour_cl.h"
@@ -11,7 +12,10 @@
 #include "fgr_march_cl.h"
 #include "fgr_math_cl.h"
 #include "fgr_math_check_cl.h"
-#include "fgr_render_cl.h"
+#include "fgr_camera_cl.h"
+#include "fgr_mode_path_cl.h"
+#include "fgr_mode_shaded_cl.h"
+#include "fgr_probe_cl.h"
 #include "fgr_sampler_cl.h"
 #include "fgr_sdf_cl.h"
 #include "fgr_shade_cl.h"
@@ -38,9 +42,23 @@ std::span<const KernelFile> kernel_postlude() {
         KernelFile{"fgr_march.cl", fgr_march_cl},
         KernelFile{"fgr_shade.cl", fgr_shade_cl},
         KernelFile{"fgr_effects.cl", fgr_effects_cl},
-        KernelFile{"fgr_render.cl", fgr_render_cl},
+        KernelFile{"fgr_camera.cl", fgr_camera_cl},
+        KernelFile{"fgr_probe.cl", fgr_probe_cl},
     };
     return files;
+}
+
+std::span<const KernelFile> mode_files(std::string_view mode) {
+    static constexpr std::array shaded{KernelFile{"fgr_mode_shaded.cl", fgr_mode_shaded_cl}};
+    static constexpr std::array path{
+        KernelFile{"fgr_sampler.cl", fgr_sampler_cl},
+        KernelFile{"fgr_bsdf.cl", fgr_bsdf_cl},
+        KernelFile{"fgr_environment.cl", fgr_environment_cl},
+        KernelFile{"fgr_mode_path.cl", fgr_mode_path_cl},
+    };
+    if (mode == "shaded") return shaded;
+    if (mode == "path") return path;
+    return {};
 }
 
 std::span<const KernelFile> path_library() {

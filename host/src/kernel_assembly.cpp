@@ -121,6 +121,9 @@ AssembledProgram assemble_program(const Scene& scene, const KernelSwitches& swit
                 param_accessors(scene).c_str());
     append_file(source, scene.source_name, scene.source.c_str());
     for (const auto& file : kernel_postlude()) append_file(source, file.name, file.source);
+    for (const auto& file : mode_files(render_mode_name(switches.mode))) {
+        append_file(source, file.name, file.source);
+    }
     return program;
 }
 

@@ -16,6 +16,7 @@
 #include "fgr/math_check.hpp"
 #include "fgr/parameters.hpp"
 #include "fgr/view_validation.hpp"
+#include "modes/mode_kernel.hpp"
 
 namespace fgr {
 namespace {
@@ -33,8 +34,6 @@ struct CameraFrame {
 };
 static_assert(sizeof(CameraFrame) == 80, "must match camera_frame in fgr_render.cl");
 
-constexpr int kLightFloats = 8;  // FGR_LIGHT_FLOATS in fgr_shade.cl
-
 cl_float4 to_float4(glm::vec3 v, float w = 0.0f) { return {{v.x, v.y, v.z, w}}; }
 
 // The eye goes as a hi/lo split of its double value: hi the nearest float, lo the rest rounded to
@@ -51,18 +50,6 @@ CameraFrame camera_frame(const CameraView& view, int width, int height) {
             pixel_angle(basis, width),
             width,
             height};
-}
-
-std::vector<float> light_values(const Scene& scene) {
-    std::vector<float> values;
-    for (const Light& light : scene.lights) {
-        const glm::vec3 vector =
-            light.type == LightType::Directional ? glm::normalize(light.vector) : light.vector;
-        values.insert(values.end(), {light.type == LightType::Point ? 1.0f : 0.0f, vector.x,
-                                     vector.y, vector.z, light.colour.r, light.colour.g,
-                                     light.colour.b, light.intensity});
-    }
-    return values;
 }
 
 void check_request(const Scene& scene, const FrameRequest& request) {
@@ -126,28 +113,6 @@ double elapsed_ms(std::chrono::steady_clock::time_point since) {
         .count();
 }
 
-// Sums the stats planes (4: steps, 5: ran out of steps) over the image's pixels; depth (plane 3)
-// says which pixels hit and so had their normal estimated.
-MarchStats march_stats(const std::vector<float>& planes, const TileLayout& layout, int width,
-                       int height) {
-    const size_t plane = static_cast<size_t>(layout.plane_size());
-    MarchStats stats;
-    long steps = 0;
-    for (int y = 0; y < height; ++y) {
-        for (int x = 0; x < width; ++x) {
-            const size_t i = static_cast<size_t>(layout.index(x, y));
-            const int pixel_steps = static_cast<int>(planes[4 * plane + i]);
-            steps += pixel_steps;
-            stats.max_steps = std::max(stats.max_steps, pixel_steps);
-            stats.de_evaluations += pixel_steps + (planes[3 * plane + i] >= 0.0f ? 4 : 0);
-            stats.out_of_steps += planes[5 * plane + i] > 0.5f;
-            ++stats.pixels;
-        }
-    }
-    stats.mean_steps = stats.pixels ? double(steps) / double(stats.pixels) : 0.0;
-    return stats;
-}
-
 }  // namespace
 
 Image16 linear_image16(const Frame& frame, float exposure) {
@@ -207,9 +172,12 @@ Renderer::Renderer(const ComputeDevice& device, ProgramCache& cache, const Scene
     render_kernel_ = cl::Kernel(program_, "fgr_render");
     probe_kernel_ = cl::Kernel(program_, "fgr_probe_de");
     normal_kernel_ = cl::Kernel(program_, "fgr_probe_normal");
-    lights_ = upload(light_values(scene));
+    mode_ = make_mode_kernel(switches_.mode, device, scene);
     warm_up();
 }
+
+Renderer::~Renderer() = default;
+Renderer::Renderer(Renderer&&) noexcept = default;
 
 void Renderer::warm_up() {
     FrameRequest tiny;
@@ -257,7 +225,7 @@ Frame Renderer::render(const FrameRequest& request) {
     const auto start = std::chrono::steady_clock::now();
 
     cl::Buffer params = upload(request.params);
-    const int plane_count = switches_.stats ? 6 : 4;  // r, g, b, depth[, steps, out of steps]
+    const int plane_count = kCommonPlanes + mode_->extra_planes(switches_);
     cl::Buffer planes(device_.context, CL_MEM_READ_WRITE, sizeof(float) * plane_count * plane);
     const int tiles = layout.tiles_x * layout.tiles_y;
     render_kernel_.setArg(0, planes);
@@ -265,8 +233,7 @@ Frame Renderer::render(const FrameRequest& request) {
     render_kernel_.setArg(2, tiles);
     render_kernel_.setArg(3, camera_frame(request.view, request.width, request.height));
     render_kernel_.setArg(5, params);
-    render_kernel_.setArg(6, lights_);
-    render_kernel_.setArg(7, static_cast<cl_int>(scene_.lights.size()));
+    mode_->bind(render_kernel_, request);
     const int group = work_group_size(device_);
     // Samples accumulate in the planes, one launch each, in order (in-order queue). Sample 0
     // overwrites them; a request starting later starts from zeroed planes instead.
@@ -308,9 +275,7 @@ Frame Renderer::render(const FrameRequest& request) {
         }
     }
     frame.image = display_image(scene_, request.params, frame.linear, request.width, request.height);
-    if (switches_.stats && request.first_sample == 0) {
-        frame.stats = march_stats(host, layout, request.width, request.height);
-    }
+    if (request.first_sample == 0) mode_->read_back(host, layout, request.samples, frame);
     frame.render_ms = elapsed_ms(start);
     return frame;
 }

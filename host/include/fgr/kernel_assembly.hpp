@@ -7,6 +7,7 @@
 #include <string>
 #include <string_view>
 
+#include "fgr/render_mode.hpp"
 #include "fgr/scene.hpp"
 
 namespace fgr {
@@ -17,6 +18,7 @@ struct KernelSwitches {
     uint64_t effects = 0;  // fgr_effect_flag bits compiled in
     bool stats = false;    // also record each pixel's march steps and whether it ran out of them
     bool double_precision = false;  // march and shade in double (needs cl_khr_fp64)
+    RenderMode mode = RenderMode::Shaded;  // which entry point (kernels/fgr_mode_<name>.cl)
 };
 
 struct AssembledProgram {

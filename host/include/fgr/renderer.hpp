@@ -3,6 +3,7 @@
 // program once, then renders frames whose camera and parameters change freely without a rebuild.
 
 #include <functional>
+#include <memory>
 #include <optional>
 #include <span>
 #include <vector>
@@ -16,6 +17,8 @@
 #include "fgr/scene.hpp"
 
 namespace fgr {
+
+class ModeKernel;
 
 struct FrameRequest {
     int width = 640;
@@ -64,6 +67,9 @@ public:
     // Throws KernelBuildError when the scene's source does not compile.
     Renderer(const ComputeDevice& device, ProgramCache& cache, const Scene& scene,
              const KernelSwitches& switches);
+    ~Renderer();
+    Renderer(Renderer&&) noexcept;
+    Renderer& operator=(Renderer&&) = delete;  // holds references to its device and scene
 
     Frame render(const FrameRequest& request);
 
@@ -107,7 +113,7 @@ private:
     cl::Kernel render_kernel_;
     cl::Kernel probe_kernel_;
     cl::Kernel normal_kernel_;
-    cl::Buffer lights_;
+    std::unique_ptr<ModeKernel> mode_;  // the render mode's own arguments and planes
 };
 
 // Linear RGB planes (tile-major, as the kernel stores them) to an sRGB image in rows.

@@ -1,8 +1,10 @@
 #pragma once
 // The OpenCL C kernel library, embedded in the binary. A scene's program is
-//   switches + prelude files + parameter accessors + scene source + postlude files.
+//   switches + prelude files + parameter accessors + scene source + postlude files
+//   + the render mode's files.
 
 #include <span>
+#include <string_view>
 
 namespace fgr {
 
@@ -14,8 +16,12 @@ struct KernelFile {
 // Types and maths a scene's source may use: packet types, vec3 maths, the SDF toolkit
 // (primitives, combinators, transforms), IFS folds and orbit-trap colouring.
 std::span<const KernelFile> kernel_prelude();
-// Marching, shading and the kernel entry points, which call the scene's functions.
+// Marching, shading, the camera and the probe kernels, which call the scene's functions.
 std::span<const KernelFile> kernel_postlude();
+
+// What render mode `mode` ("shaded", "path") adds after the postlude, ending with its file
+// fgr_mode_<mode>.cl and its entry point fgr_render; empty for an unknown mode.
+std::span<const KernelFile> mode_files(std::string_view mode);
 
 // What the path tracer adds after the postlude: the sample generator (fgr_sampler.cl), materials'
 // BSDFs (fgr_bsdf.cl) and the environment's lookup and importance sampling (fgr_environment.cl).

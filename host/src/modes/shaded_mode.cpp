@@ -1,0 +1,70 @@
+// Render mode "shaded" (kernels/fgr_mode_shaded.cl): its arguments are the scene's lights; with
+// stats it writes each pixel's march steps and whether they ran out (planes 4 and 5).
+#include "modes/shaded_mode.hpp"
+
+#include <glm/geometric.hpp>
+
+namespace fgr {
+namespace {
+
+constexpr int kLightFloats = 8;  // FGR_LIGHT_FLOATS in fgr_shade.cl
+
+// Each light as fgr_shade.cl reads it: type, vector (directions normalised), colour, intensity.
+std::vector<float> light_values(const Scene& scene) {
+    std::vector<float> values;
+    values.reserve(scene.lights.size() * kLightFloats);
+    for (const Light& light : scene.lights) {
+        const glm::vec3 vector =
+            light.type == LightType::Directional ? glm::normalize(light.vector) : light.vector;
+        values.insert(values.end(), {light.type == LightType::Point ? 1.0f : 0.0f, vector.x,
+                                     vector.y, vector.z, light.colour.r, light.colour.g,
+                                     light.colour.b, light.intensity});
+    }
+    return values;
+}
+
+// Sums the stats planes (4: steps, 5: ran out of steps) over the image's pixels; depth (plane 3)
+// says which pixels hit and so had their normal estimated.
+MarchStats march_stats(const std::vector<float>& planes, const TileLayout& layout, int width,
+                       int height) {
+    const size_t plane = static_cast<size_t>(layout.plane_size());
+    MarchStats stats;
+    long steps = 0;
+    for (int y = 0; y < height; ++y) {
+        for (int x = 0; x < width; ++x) {
+            const size_t i = static_cast<size_t>(layout.index(x, y));
+            const int pixel_steps = static_cast<int>(planes[4 * plane + i]);
+            steps += pixel_steps;
+            stats.max_steps = std::max(stats.max_steps, pixel_steps);
+            stats.de_evaluations += pixel_steps + (planes[3 * plane + i] >= 0.0f ? 4 : 0);
+            stats.out_of_steps += planes[5 * plane + i] > 0.5f;
+            ++stats.pixels;
+        }
+    }
+    stats.mean_steps = stats.pixels ? double(steps) / double(stats.pixels) : 0.0;
+    return stats;
+}
+
+}  // namespace
+
+ShadedMode::ShadedMode(const ComputeDevice& device, const Scene& scene)
+    : lights_(upload_floats(device, light_values(scene))),
+      light_count_(static_cast<cl_int>(scene.lights.size())) {}
+
+int ShadedMode::extra_planes(const KernelSwitches& switches) const {
+    return switches.stats ? 2 : 0;  // steps, out of steps
+}
+
+void ShadedMode::bind(cl::Kernel& kernel, const FrameRequest&) {
+    kernel.setArg(kFirstModeArgument, lights_);
+    kernel.setArg(kFirstModeArgument + 1, light_count_);
+}
+
+void ShadedMode::read_back(const std::vector<float>& planes, const TileLayout& layout, int,
+                           Frame& frame) const {
+    if (planes.size() < static_cast<size_t>(layout.plane_size()) * 6) return;  // no stats planes
+    const int width = frame.image.width, height = frame.image.height;
+    frame.stats = march_stats(planes, layout, width, height);
+}
+
+}  // namespace fgr

@@ -1,0 +1,20 @@
+#pragma once
+
+#include "modes/mode_kernel.hpp"
+
+namespace fgr {
+
+class ShadedMode final : public ModeKernel {
+public:
+    ShadedMode(const ComputeDevice& device, const Scene& scene);
+    int extra_planes(const KernelSwitches& switches) const override;
+    void bind(cl::Kernel& kernel, const FrameRequest& request) override;
+    void read_back(const std::vector<float>& planes, const TileLayout& layout, int samples,
+                   Frame& frame) const override;
+
+private:
+    cl::Buffer lights_;
+    cl_int light_count_;
+};
+
+}  // namespace fgr

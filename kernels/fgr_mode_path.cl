@@ -1,0 +1,348 @@
+/* fgr render mode "path": unbiased Monte Carlo path tracing of the scene's DE surface.
+ *
+ * Each launch adds one sample to every pixel: a camera ray (jittered in the pixel and, with depth
+ * of field, on the lens) is marched to the surface; there the scene's material (scene_material, by
+ * default a diffuse surface of the scene's colour) scatters it by BSDF sampling, bounce after
+ * bounce, until it leaves the scene into the environment, is absorbed by Russian roulette or hits
+ * the bounce cap. At every diffuse or glossy vertex one light is also sampled (next-event
+ * estimation): the environment by its importance (fgr_environment.cl), a sun disc uniformly in
+ * its cone, a point light at its position; a shadow ray decides whether it is seen. Both
+ * strategies can reach the environment and sun discs, so their contributions are weighted by the
+ * power heuristic (Veach 1997, multiple importance sampling): a sun of any size converges, from a
+ * point-like one (light sampling wins) to a broad one (BSDF sampling wins). The sample generator
+ * (fgr_sampler.cl) is indexed by dimension, so every decision draws its own stratified numbers.
+ *
+ * fgr's world has z up; environment maps have y up (fgr_environment.cl), so directions are
+ * turned by env_from_world before a lookup.
+ *
+ * Arguments: those every mode takes (planes .. PARAMS, see fgr_camera.cl), then the lights (the
+ * scene's and the sky's sun, FGR_PATH_LIGHT_FLOATS each, laid out by host/src/modes/path_mode.cpp),
+ * the settings, and the environment (ENVIRONMENT, fgr_environment.cl).
+ *
+ * Planes: 0-2 radiance (summed over samples), 3 depth of the first hit (sample 0), then the
+ * auxiliary outputs summed over samples: 4-6 albedo of the first hit, 7-9 its normal, 10 alpha
+ * (1 where the camera ray met the surface); with FGR_STATS 11 the DE evaluations each lane took
+ * part in and 12 those its packet made (for lane utilisation), summed over samples. */
+
+/* A light as the path tracer reads it: type (FGR_LIGHT_POINT or directional), the unit direction
+ * towards a directional light or a point light's position, radiance (directional: of its disc;
+ * point: intensity, W/sr-like), the cosine of a disc's angular radius (1: a delta light), and
+ * the cumulative probability of picking lights 0..this one for next-event estimation. */
+#define FGR_PATH_LIGHT_FLOATS 10
+
+/* Set bits of path_settings.flags. */
+#define FGR_PATH_LIGHT_SAMPLING 1  /* next-event estimation */
+#define FGR_PATH_MIS 2             /* weigh light and BSDF sampling by the power heuristic */
+#define FGR_PATH_ENVIRONMENT_IS 4  /* sample the environment by importance, not uniformly */
+
+/* Mirrors PathSettingsArgument in host/src/modes/path_mode.cpp. */
+typedef struct path_settings {
+    int max_bounces;       /* scattering events after the camera ray at most */
+    int roulette_depth;    /* Russian roulette from this bounce on */
+    float radiance_clamp;  /* > 0: each sample's radiance is clamped to it (biased); 0: off */
+    int flags;
+    uint seed;             /* the render's seed: another seed, another noise */
+    int light_count;
+    float environment_pick; /* probability of sampling the environment rather than a light */
+    int padding;
+} path_settings;
+
+#ifndef FGR_SCENE_HAS_MATERIAL
+/* A scene without its own materials is diffuse, coloured by scene_colour. */
+inline material scene_material(vec3 p, PARAMS) {
+    return diffuse_material(scene_colour(p, PARAMS_PASS));
+}
+#endif
+
+/* fgr's z-up world to the environment's y-up frame, and back (a rotation by 90 degrees about x). */
+inline vec3 env_from_world(vec3 d) { return v3(d.x, d.z, -d.y); }
+inline vec3 world_from_env(vec3 d) { return v3(d.x, -d.z, d.y); }
+
+/* The power heuristic with exponent 2 for one sample of each strategy: the weight of the strategy
+ * with pdf `a` when the other has pdf `b`. */
+inline real power_heuristic(real a, real b) {
+    const real a2 = a * a, b2 = b * b;
+    return select(a2 / (a2 + b2), fgr_real(0.0f), a2 + b2 <= 0.0f);
+}
+
+/* Unit direction uniformly inside the cone of cosine cos_max around axis (a sun disc). */
+inline vec3 sample_cone(vec3 axis, real cos_max, real u1, real u2) {
+    const real cos_theta = 1.0f - u1 * (1.0f - cos_max);
+    const real sin_theta = sqrt(fmax(1.0f - cos_theta * cos_theta, 0.0f));
+    const real phi = 6.28318530717958647692f * u2;
+    vec3 tangent, bitangent;
+    orthonormal_basis(axis, &tangent, &bitangent);
+    return v3_add(v3_scale(axis, cos_theta),
+                  v3_add(v3_scale(tangent, sin_theta * fgr_cos(phi)),
+                         v3_scale(bitangent, sin_theta * fgr_sin(phi))));
+}
+
+/* Solid-angle pdf of sample_cone. */
+inline real cone_pdf(real cos_max) {
+    return 1.0f / (6.28318530717958647692f * (1.0f - cos_max));
+}
+
+/* The weight of radiance a BSDF-sampled ray found on a light that light sampling also reaches:
+ * `light_sampled` lanes left a vertex where light sampling ran (not a camera ray, not a mirror
+ * bounce); with MIS they take the power heuristic's share, without it none (light sampling
+ * counted that light in full), and the other lanes count it in full. */
+inline real escaped_weight(mask light_sampled, bool mis, real bsdf_pdf, real light_pdf) {
+    const real shared = mis ? power_heuristic(bsdf_pdf, light_pdf) : fgr_real(0.0f);
+    return select(fgr_real(1.0f), shared, light_sampled);
+}
+
+/* Radiance arriving along `dir` from the environment and the sun discs, for a ray that left the
+ * scene, weighted as escaped_weight says (bsdf_pdf: the BSDF's pdf of dir at the last vertex). */
+inline vec3 escaped_radiance(vec3 dir, mask light_sampled, bool mis, real bsdf_pdf,
+                             __constant const float* lights, path_settings settings, ENVIRONMENT) {
+    const vec3 env_dir = env_from_world(dir);
+    vec3 radiance = environment_radiance(env_dir, ENVIRONMENT_PASS);
+    const real env_pdf = settings.environment_pick * environment_pdf(env_dir, ENVIRONMENT_PASS);
+    radiance = v3_scale(radiance, escaped_weight(light_sampled, mis, bsdf_pdf, env_pdf));
+    float picked_before = settings.environment_pick;
+    for (int i = 0; i < settings.light_count; ++i) {
+        __constant const float* light = lights + i * FGR_PATH_LIGHT_FLOATS;
+        const float pick = light[8] - picked_before;
+        picked_before = light[8];
+        const float cos_max = light[7];
+        if ((int)light[0] == FGR_LIGHT_POINT || cos_max >= 1.0f) continue; /* delta lights */
+        const mask in_disc = v3_dot(dir, v3_splat(light[1], light[2], light[3])) >= cos_max;
+        if (!fgr_any(in_disc)) continue;
+        const real w = escaped_weight(light_sampled, mis, bsdf_pdf,
+                                      fgr_real(pick * cone_pdf(cos_max)));
+        radiance = v3_add(radiance, v3_select(v3_splat(0.0f, 0.0f, 0.0f),
+                                              v3_scale(v3_splat(light[4], light[5], light[6]), w),
+                                              in_disc));
+    }
+    return radiance;
+}
+
+/* One light sample for next-event estimation at p: a direction, the radiance arriving along it
+ * if nothing blocks it, its pdf (solid angle, including the pick; 0 for delta lights, which MIS
+ * leaves alone) and how far a shadow ray must look. */
+typedef struct light_sample {
+    vec3 dir;
+    vec3 radiance;  /* already divided by the pick probability for delta lights */
+    real pdf;       /* solid-angle pdf, pick included; 0 marks a delta light */
+    real reach;
+} light_sample;
+
+inline light_sample sample_light(vec3 p, real u_pick, real u1, real u2,
+                                 __constant const float* lights, path_settings settings,
+                                 float max_distance, ENVIRONMENT) {
+    light_sample s;
+    /* The environment, when it is picked. */
+    real env_pdf = fgr_real(0.0f);
+    const vec3 env_dir = environment_sample(u1, u2, ENVIRONMENT_PASS, &env_pdf);
+    s.dir = world_from_env(env_dir);
+    s.radiance = environment_radiance(env_dir, ENVIRONMENT_PASS);
+    s.pdf = settings.environment_pick * env_pdf;
+    s.reach = fgr_real(max_distance);
+    float picked_before = settings.environment_pick;
+    for (int i = 0; i < settings.light_count; ++i) {
+        __constant const float* light = lights + i * FGR_PATH_LIGHT_FLOATS;
+        const float pick = light[8] - picked_before;
+        const mask chosen = (u_pick >= picked_before) & (u_pick < light[8]);
+        picked_before = light[8];
+        if (!fgr_any(chosen)) continue;
+        const vec3 vector = v3_splat(light[1], light[2], light[3]);
+        const vec3 colour = v3_splat(light[4], light[5], light[6]);
+        const float cos_max = light[7];
+        vec3 dir;
+        vec3 radiance;
+        real pdf, reach;
+        if ((int)light[0] == FGR_LIGHT_POINT) {
+            const vec3 to_light = v3_sub(vector, p);
+            const real dist2 = fmax(v3_length2(to_light), FGR_MIN_LENGTH * FGR_MIN_LENGTH);
+            dir = v3_scale(to_light, rsqrt(dist2));
+            radiance = v3_scale(colour, 1.0f / (pick * dist2));
+            pdf = fgr_real(0.0f);
+            reach = fmin(sqrt(dist2), max_distance);
+        } else if (cos_max >= 1.0f) {
+            dir = vector;
+            radiance = v3_scale(colour, 1.0f / pick);
+            pdf = fgr_real(0.0f);
+            reach = fgr_real(max_distance);
+        } else {
+            dir = sample_cone(vector, fgr_real(cos_max), u1, u2);
+            radiance = colour;
+            pdf = fgr_real(pick * cone_pdf(cos_max));
+            reach = fgr_real(max_distance);
+        }
+        s.dir = v3_select(s.dir, dir, chosen);
+        s.radiance = v3_select(s.radiance, radiance, chosen);
+        s.pdf = select(s.pdf, pdf, chosen);
+        s.reach = select(s.reach, reach, chosen);
+    }
+    return s;
+}
+
+/* The largest value among the lanes (FGR_STATS only: a packet's DE calls are its longest lane's). */
+inline int lanes_max(mask values) {
+#if FGR_WIDTH == 1
+    return (int)values;
+#else
+    int largest = 0;
+    for (int i = 0; i < FGR_WIDTH; ++i) largest = max(largest, (int)values[i]);
+    return largest;
+#endif
+}
+
+__kernel void fgr_render(FGR_RENDER_ARGS, __constant const float* lights, path_settings settings,
+                         ENVIRONMENT) {
+    const int tile = get_global_id(0);
+    if (tile >= tile_count) return;
+    const tile_pixels pixels = pixels_of_tile(tile, camera);
+    mask active = pixels.inside;
+
+    sampler rng = sampler_start(pixels.px, pixels.py, sample, settings.seed);
+    const real2 in_pixel = sampler_next_2d(&rng);
+    const real2 on_lens = sampler_next_2d(&rng);
+    camera_sample jitter;
+    jitter.pixel_x = in_pixel.x;
+    jitter.pixel_y = in_pixel.y;
+    /* Uniform on the unit disc: radius sqrt(u), angle 2 pi v. */
+    const real lens_radius = sqrt(on_lens.x), lens_angle = 6.28318530717958647692f * on_lens.y;
+    jitter.lens_x = lens_radius * fgr_cos(lens_angle);
+    jitter.lens_y = lens_radius * fgr_sin(lens_angle);
+    const camera_ray ray = camera_ray_through(camera, pixels.px, pixels.py, jitter, PARAMS_PASS);
+
+    const march_limits limits = scene_march_limits(camera.pixel_angle, PARAMS_PASS);
+    const bool light_sampling = (settings.flags & FGR_PATH_LIGHT_SAMPLING) != 0;
+    const bool mis = (settings.flags & FGR_PATH_MIS) != 0;
+
+    vec3 origin = ray.origin, dir = ray.dir;
+    vec3 radiance = v3_splat(0.0f, 0.0f, 0.0f);
+    vec3 throughput = v3_splat(1.0f, 1.0f, 1.0f);
+    real travelled = fgr_real(0.0f);
+    /* Whether light sampling also covered the last bounce's BSDF sample, and that sample's pdf. */
+    mask light_sampled = (mask)(0);
+    real last_pdf = fgr_real(0.0f);
+    /* The first hit, for depth and the auxiliary planes. */
+    real depth = fgr_real(-1.0f);
+    vec3 first_albedo = v3_splat(0.0f, 0.0f, 0.0f), first_normal = v3_splat(0.0f, 0.0f, 0.0f);
+    real alpha = fgr_real(0.0f);
+#ifdef FGR_STATS
+    mask lane_steps = (mask)(0);
+    int packet_steps = 0;
+#endif
+
+    for (int bounce = 0; fgr_any(active); ++bounce) {
+        const march_result hit = march_rays_after(origin, dir, active, travelled, limits,
+                                                  PARAMS_PASS);
+#ifdef FGR_STATS
+        lane_steps += hit.steps;
+        packet_steps += lanes_max(hit.steps);
+#endif
+        const mask escaped = active & !hit.hit;
+        if (fgr_any(escaped)) {
+            const vec3 arriving = escaped_radiance(dir, light_sampled, mis, last_pdf, lights,
+                                                   settings, ENVIRONMENT_PASS);
+            radiance = v3_select(radiance, v3_add(radiance, v3_mul(throughput, arriving)), escaped);
+        }
+        active &= hit.hit;
+        if (!fgr_any(active)) break;
+
+        const vec3 p = v3_mad(origin, dir, hit.t);
+        const real path_length = travelled + hit.t;
+        const real eps = fmax(path_length * camera.pixel_angle * param_normal_epsilon,
+                              FGR_MIN_LENGTH);
+        vec3 n = estimate_normal(p, eps, PARAMS_PASS);
+#ifdef FGR_STATS
+        lane_steps += select((mask)(0), (mask)(4), active);
+        packet_steps += 4;
+#endif
+        const vec3 wo = v3_neg(dir);
+        /* A ray that met the surface from behind its normal (inside a thin sliver the march
+         * stepped into) sees the side it came from. */
+        n = v3_select(n, v3_neg(n), v3_dot(n, wo) < 0.0f);
+        const material m = scene_material(p, PARAMS_PASS);
+        radiance = v3_select(radiance, v3_add(radiance, v3_mul(throughput, m.emission)), active);
+        if (bounce == 0) {
+            depth = select(depth, hit.t, active);
+            first_albedo = v3_select(first_albedo, v3_min(v3_add(m.albedo, m.specular),
+                                                          v3_splat(1.0f, 1.0f, 1.0f)),
+                                     active);
+            first_normal = v3_select(first_normal, n, active);
+            alpha = select(alpha, fgr_real(1.0f), active);
+        }
+        if (bounce >= settings.max_bounces) break;
+
+        const vec3 leave = leave_surface(p, n, path_length, limits);
+        const real2 light_u = sampler_next_2d(&rng);
+        const real light_pick = sampler_next_1d(&rng);
+        const real2 bsdf_u = sampler_next_2d(&rng);
+        const real lobe_u = sampler_next_1d(&rng);
+        const real roulette_u = sampler_next_1d(&rng);
+
+        /* Next-event estimation, where the surface is not a perfect mirror there. */
+        if (light_sampling) {
+            const light_sample light = sample_light(p, light_pick, light_u.x, light_u.y, lights,
+                                                    settings, limits.max_distance,
+                                                    ENVIRONMENT_PASS);
+            const vec3 f = bsdf_eval(m, n, wo, light.dir);
+            mask lit = active & (v3_dot(light.dir, n) > 0.0f) &
+                       (fmax(fmax(f.x, f.y), f.z) > 0.0f) &
+                       (fmax(fmax(light.radiance.x, light.radiance.y), light.radiance.z) > 0.0f);
+            if (fgr_any(lit)) {
+                const march_result shadow = march_rays_within(leave, light.dir, lit, path_length,
+                                                              light.reach, limits, PARAMS_PASS);
+#ifdef FGR_STATS
+                lane_steps += shadow.steps;
+                packet_steps += lanes_max(shadow.steps);
+#endif
+                lit &= !shadow.hit;
+                const mask delta_light = light.pdf <= 0.0f;
+                const real w = select(mis ? power_heuristic(light.pdf,
+                                                            bsdf_pdf(m, n, wo, light.dir))
+                                          : fgr_real(1.0f),
+                                      fgr_real(1.0f), delta_light);
+                const real scale = select(w / light.pdf, fgr_real(1.0f), delta_light);
+                const vec3 contribution = v3_scale(v3_mul(f, light.radiance), scale);
+                radiance = v3_select(radiance,
+                                     v3_add(radiance, v3_mul(throughput, contribution)), lit);
+            }
+        }
+
+        /* Continue the path by sampling the BSDF. */
+        const bsdf_sample scattered = bsdf_sample_direction(m, n, wo, lobe_u, bsdf_u.x, bsdf_u.y);
+        active &= scattered.valid;
+        throughput = v3_mul(throughput, scattered.weight);
+        light_sampled = light_sampling ? !scattered.delta : (mask)(0);
+        last_pdf = scattered.pdf;
+
+        /* Russian roulette: a path continues with probability q (its throughput's largest
+         * component, at most 1) and is weighted by 1/q when it does: unbiased. */
+        if (bounce + 1 >= settings.roulette_depth) {
+            const real q = fmin(fmax(fmax(throughput.x, throughput.y), throughput.z), 1.0f);
+            const mask survives = roulette_u < q;
+            throughput = v3_scale(throughput, select(fgr_real(0.0f), 1.0f / q, survives));
+            active &= survives;
+        }
+        origin = leave;
+        dir = scattered.wi;
+        travelled = path_length;
+    }
+
+    if (settings.radiance_clamp > 0.0f) {
+        const real largest = fmax(fmax(radiance.x, radiance.y), radiance.z);
+        const real scale = select(fgr_real(1.0f), settings.radiance_clamp / largest,
+                                  largest > settings.radiance_clamp);
+        radiance = v3_scale(radiance, scale);
+    }
+    accumulate_plane(radiance.x, sample, tile, planes);
+    accumulate_plane(radiance.y, sample, tile, planes + plane_size);
+    accumulate_plane(radiance.z, sample, tile, planes + 2 * plane_size);
+    if (sample == 0) fgr_store(depth, tile, planes + 3 * plane_size);
+    accumulate_plane(first_albedo.x, sample, tile, planes + 4 * plane_size);
+    accumulate_plane(first_albedo.y, sample, tile, planes + 5 * plane_size);
+    accumulate_plane(first_albedo.z, sample, tile, planes + 6 * plane_size);
+    accumulate_plane(first_normal.x, sample, tile, planes + 7 * plane_size);
+    accumulate_plane(first_normal.y, sample, tile, planes + 8 * plane_size);
+    accumulate_plane(first_normal.z, sample, tile, planes + 9 * plane_size);
+    accumulate_plane(alpha, sample, tile, planes + 10 * plane_size);
+#ifdef FGR_STATS
+    accumulate_plane(convert_real(lane_steps), sample, tile, planes + 11 * plane_size);
+    accumulate_plane(fgr_real((float)packet_steps), sample, tile, planes + 12 * plane_size);
+#endif
+}

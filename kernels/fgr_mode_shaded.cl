@@ -1,0 +1,66 @@
+/* fgr render mode "shaded": Blinn-Phong with the scene's lights plus the effects it asks for
+ * (shadows, occlusion, reflections, refraction, glow, fog, depth of field), one primary ray per
+ * pixel and sample. The fast mode, and the one the viewer previews with.
+ *
+ * Arguments: those every mode takes (planes .. PARAMS, see fgr_camera.cl), then the scene's
+ * lights (FGR_LIGHT_FLOATS floats each, see fgr_shade.cl) and their count. */
+
+/* Renders sample `sample` of every pixel of the tile. Sample 0 writes the planes; later samples
+ * add to them (the host divides by the sample count), and only sample 0 writes depth (and, with
+ * FGR_STATS, the step count and out-of-steps planes 4 and 5). */
+__kernel void fgr_render(FGR_RENDER_ARGS, __constant const float* lights, int light_count) {
+    const int tile = get_global_id(0);
+    if (tile >= tile_count) return;
+    const tile_pixels pixels = pixels_of_tile(tile, camera);
+    const real px = pixels.px, py = pixels.py;
+    const mask inside = pixels.inside;
+
+    const camera_sample jitter = sample_camera(px, py, sample);
+    const camera_ray ray = camera_ray_through(camera, px, py, jitter, PARAMS_PASS);
+    const vec3 eye = ray.origin, dir = ray.dir;
+
+    const march_limits limits = scene_march_limits(camera.pixel_angle, PARAMS_PASS);
+    march_result hit = march_rays(eye, dir, inside, limits, PARAMS_PASS);
+
+    vec3 colour = background(dir);
+    real depth = fgr_real(-1.0f);
+    if (fgr_any(hit.hit)) {
+        vec3 p = v3_mad(eye, dir, hit.t);
+        real eps = fmax(hit.t * camera.pixel_angle * param_normal_epsilon, FGR_MIN_LENGTH);
+        vec3 n = estimate_normal(p, eps, PARAMS_PASS);
+        vec3 lit = shade_surface(p, n, dir, eps, hit.steps, hit.t, hit.hit, 1, limits, lights,
+                                 light_count, PARAMS_PASS);
+#ifdef FGR_EFFECT_REFRACTION
+        lit = add_refraction(lit, p, n, dir, eps, hit.t, hit.hit, limits, lights, light_count,
+                             PARAMS_PASS);
+#endif
+#ifdef FGR_EFFECT_REFLECTIONS
+        lit = add_reflection(lit, p, n, dir, eps, hit.t, hit.hit, limits, lights, light_count,
+                             PARAMS_PASS);
+#endif
+        colour = v3_select(colour, lit, hit.hit);
+        depth = select(depth, hit.t, hit.hit);
+    }
+#ifdef FGR_EFFECT_GLOW
+    colour = apply_glow(colour, hit.closest, !hit.hit, PARAMS_PASS);
+#endif
+#ifdef FGR_EFFECT_FOG
+    colour = apply_fog(colour, hit.t, hit.hit, limits.max_distance, PARAMS_PASS);
+#endif
+    accumulate_plane(colour.x, sample, tile, planes);
+    accumulate_plane(colour.y, sample, tile, planes + plane_size);
+    accumulate_plane(colour.z, sample, tile, planes + 2 * plane_size);
+    if (sample == 0) fgr_store(depth, tile, planes + 3 * plane_size);
+#ifdef FGR_STATS
+    /* The work behind each pixel, for `fgr render --stats`: the primary march's DE evaluations
+     * (steps), and whether the ray ran out of steps before it hit or left the scene. */
+    if (sample == 0) {
+        mask exhausted = inside & !hit.hit & (hit.steps >= limits.max_steps) &
+                         (hit.t <= limits.max_distance);
+        fgr_store(convert_real(hit.steps), tile, planes + 4 * plane_size);
+        fgr_store(select(fgr_real(0.0f), fgr_real(1.0f), exhausted), tile,
+                  planes + 5 * plane_size);
+    }
+#endif
+}
+

@@ -1,0 +1,40 @@
+/* fgr kernel library: probes that evaluate the scene's DE and normals at given points, for
+ * tests and for the host's tools (the DE at the camera decides auto precision). They share the
+ * image layout macros of fgr_camera.cl. */
+
+/* A probe's points: planes x, y, z of floats, then x, y, z of what those miss of the host's double
+ * points, which double lanes add back (float lanes cannot use them). */
+inline vec3 load_probe_point(__global const float* points, int plane_size, int packet) {
+    vec3 p = v3(fgr_load(packet, points), fgr_load(packet, points + plane_size),
+                fgr_load(packet, points + 2 * plane_size));
+#ifdef FGR_DOUBLE
+    p = v3_add(p, v3(fgr_load(packet, points + 3 * plane_size),
+                     fgr_load(packet, points + 4 * plane_size),
+                     fgr_load(packet, points + 5 * plane_size)));
+#endif
+    return p;
+}
+
+/* Evaluates the scene's DE at `count` points (see load_probe_point; padded to whole packets):
+ * used by tests to compare the kernel's DE with a host implementation, and by tools that need the
+ * distance at a point (e.g. camera speed). */
+__kernel void fgr_probe_de(__global const float* points, int plane_size, int packet_count,
+                           __global float* out, PARAMS) {
+    const int packet = get_global_id(0);
+    if (packet >= packet_count) return;
+    vec3 p = load_probe_point(points, plane_size, packet);
+    fgr_store(scene_de(p, PARAMS_PASS), packet, out);
+}
+
+/* The surface normal the shading uses at each point (planes x, y, z in and out), with stencil
+ * size eps: lets tests check normals are finite and unit length wherever rays can hit. */
+__kernel void fgr_probe_normal(__global const float* points, int plane_size, int packet_count,
+                               __global float* out, PARAMS, float eps) {
+    const int packet = get_global_id(0);
+    if (packet >= packet_count) return;
+    vec3 p = load_probe_point(points, plane_size, packet);
+    vec3 n = estimate_normal(p, fgr_real(eps), PARAMS_PASS);
+    fgr_store(n.x, packet, out);
+    fgr_store(n.y, packet, out + plane_size);
+    fgr_store(n.z, packet, out + 2 * plane_size);
+}
