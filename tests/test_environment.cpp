@@ -871,9 +871,20 @@ TEST(StudioEnvironment, HasItsLightsWhereDocumented) {
     const double surround = at(0.0, 60.0), floor = at(0.0, -40.0);
     EXPECT_LT(floor, surround);
     EXPECT_GT(floor, 0.3 * surround);
-    EXPECT_GT(at(270.0, 40.0), 50.0 * surround);  // key
-    EXPECT_GT(at(175.0, 15.0), 15.0 * surround);  // fill
-    EXPECT_GT(at(45.0, 30.0), 50.0 * surround);   // rim
+    // Each box is centred where documented: bright there, dark past its edges on either side.
+    struct Box {
+        double azimuth, elevation, beyond_edge, brighter;
+    };
+    for (const Box& box : {Box{270.0, 40.0, 40.0, 50.0},    // key
+                           Box{175.0, 15.0, 45.0, 15.0},    // fill
+                           Box{45.0, 30.0, 15.0, 50.0}}) {  // rim
+        const double centre = at(box.azimuth, box.elevation);
+        EXPECT_GT(centre, box.brighter * surround) << box.azimuth;
+        EXPECT_LT(at(box.azimuth - box.beyond_edge, box.elevation), 2.0 * surround)
+            << box.azimuth;
+        EXPECT_LT(at(box.azimuth + box.beyond_edge, box.elevation), 2.0 * surround)
+            << box.azimuth;
+    }
     // Irradiance on a surface facing the key box, over its hemisphere.
     const glm::dvec3 normal = environment_direction(270.0 / 360.0, 50.0 / 180.0);
     double irradiance = 0.0;
