@@ -243,8 +243,8 @@ HdrImage spot_and_gradient(int width, int height) {
     map.height = height;
     for (int y = 0; y < height; ++y) {
         for (int x = 0; x < width; ++x) {
-            const float g = 0.1f + 1.5f * float(height - y) / float(height) +
-                            0.5f * float(x) / float(width);
+            const float g =
+                0.1f + 1.5f * float(height - y) / float(height) + 0.5f * float(x) / float(width);
             glm::vec3 c(g, 0.8f * g, 0.6f * g + 0.05f);
             if (x == 3 && y == height - 2) c = glm::vec3(0.0f);
             if (y == 1 && x >= width / 2 && x < width / 2 + 3) c = glm::vec3(0.0f);
@@ -276,7 +276,7 @@ TEST_F(EnvironmentTest, SampledDirectionsFollowThePdf) {
     const std::vector<Variant> tested = variants();
     const double alpha = 0.01 / double(tested.size() * rotations.size());
     constexpr size_t kSamples = 120000;
-    constexpr int kSub = 2;   // bins per texel, each way
+    constexpr int kSub = 2;     // bins per texel, each way
     constexpr int kPoints = 2;  // quadrature points per bin, each way
     const int bins_u = map.width * kSub, bins_v = map.height * kSub;
     for (const Variant v : tested) {
@@ -346,8 +346,7 @@ TEST_F(EnvironmentTest, SampledDirectionsFollowThePdf) {
                     pooled_expected += expected[b];
                     pooled_observed += observed[b];
                 } else {
-                    chi2 += (observed[b] - expected[b]) * (observed[b] - expected[b]) /
-                            expected[b];
+                    chi2 += (observed[b] - expected[b]) * (observed[b] - expected[b]) / expected[b];
                     ++cells;
                 }
             }
@@ -394,8 +393,8 @@ TEST_F(EnvironmentTest, EstimatorIsUnbiased) {
     glm::dvec3 truth(0.0);
     for (int y = 0; y < map.height; ++y) {
         for (int x = 0; x < map.width; ++x) {
-            truth += texel(map, x, y) *
-                     environment_texel_solid_angle(y, map.width, map.height) * double(kIntensity);
+            truth += texel(map, x, y) * environment_texel_solid_angle(y, map.width, map.height) *
+                     double(kIntensity);
         }
     }
     EXPECT_NEAR(tables.luminance_integral * kIntensity, luminance(truth), 1e-9 * luminance(truth));
@@ -555,18 +554,18 @@ TEST_F(EnvironmentTest, LookupReturnsTheTexelADirectionFallsIn) {
     };
     // Rows are 45 degrees of theta, columns 45 degrees of phi.
     const std::vector<Known> known = {
-        {{0.0, 0.0, 1.0}, -1, 0},        // straight up
-        {{0.0, 0.0, -1.0}, -1, 3},       // straight down
-        {{0.01, 0.0, 1.0}, -1, 0},       // near the pole
-        {{-1.0, 0.01, 0.2}, 0, 1},       // just past phi = 0 (-x), a little above the horizon
-        {{-1.0, -0.01, 0.2}, 7, 1},      // just before the seam
-        {{-1.0, 0.0, -0.2}, 0, 2},       // on the seam, a little below the horizon
-        {{-0.01, 1.0, -0.2}, 1, 2},      // just before phi = 90 (+y)
-        {{0.01, 1.0, 1.5}, 2, 0},        // just past +y, 34 degrees from the zenith
-        {{1.0, 0.01, 0.5}, 3, 1},        // just before phi = 180 (+x)
-        {{1.0, -0.01, -2.0}, 4, 3},      // just past +x, far below the horizon
-        {{0.05, -1.0, -0.9}, 5, 2},      // just before phi = 270 (-y)
-        {{-0.3, -1.0, 0.0001}, 6, 1},    // between -y and -x, on the horizon's upper side
+        {{0.0, 0.0, 1.0}, -1, 0},      // straight up
+        {{0.0, 0.0, -1.0}, -1, 3},     // straight down
+        {{0.01, 0.0, 1.0}, -1, 0},     // near the pole
+        {{-1.0, 0.01, 0.2}, 0, 1},     // just past phi = 0 (-x), a little above the horizon
+        {{-1.0, -0.01, 0.2}, 7, 1},    // just before the seam
+        {{-1.0, 0.0, -0.2}, 0, 2},     // on the seam, a little below the horizon
+        {{-0.01, 1.0, -0.2}, 1, 2},    // just before phi = 90 (+y)
+        {{0.01, 1.0, 1.5}, 2, 0},      // just past +y, 34 degrees from the zenith
+        {{1.0, 0.01, 0.5}, 3, 1},      // just before phi = 180 (+x)
+        {{1.0, -0.01, -2.0}, 4, 3},    // just past +x, far below the horizon
+        {{0.05, -1.0, -0.9}, 5, 2},    // just before phi = 270 (-y)
+        {{-0.3, -1.0, 0.0001}, 6, 1},  // between -y and -x, on the horizon's upper side
     };
     for (const Variant v : variants()) {
         SCOPED_TRACE(label(v));
@@ -612,10 +611,12 @@ TEST(EnvironmentTables, RejectBadMapsInOneLine) {
     EXPECT_EQ(message(good), "accepted");
     EXPECT_EQ(message(nan),
               "sky.hdr: pixel (1, 0) has a B value nan (values must be finite and non-negative)");
-    EXPECT_EQ(message(negative), "sky.hdr: pixel (1, 1) has the G value -0.5 (values must be "
-                                 "finite and non-negative)");
-    EXPECT_EQ(message(infinite), "sky.hdr: pixel (0, 0) has the R value inf (values must be "
-                                 "finite and non-negative)");
+    EXPECT_EQ(message(negative),
+              "sky.hdr: pixel (1, 1) has the G value -0.5 (values must be "
+              "finite and non-negative)");
+    EXPECT_EQ(message(infinite),
+              "sky.hdr: pixel (0, 0) has the R value inf (values must be "
+              "finite and non-negative)");
     EXPECT_EQ(message(empty), "sky.hdr: empty (0 x 0 pixels)");
     EXPECT_EQ(message(short_of_values), "sky.hdr: holds 95 values, 8 x 4 pixels need 96");
     EXPECT_THROW(environment_info(environment_tables(good), 0.0, -1.0f), std::invalid_argument);
@@ -638,8 +639,8 @@ TEST(EnvironmentTables, ProbabilitiesFollowLuminanceTimesSolidAngle) {
         EXPECT_EQ(conditional[0], 0.0f);
         EXPECT_EQ(conditional[16], 1.0f);
         for (int x = 0; x < 16; ++x) {
-            const double p = double(marginal[y + 1] - marginal[y]) *
-                             double(conditional[x + 1] - conditional[x]);
+            const double p =
+                double(marginal[y + 1] - marginal[y]) * double(conditional[x + 1] - conditional[x]);
             const double expected = luminance(texel(map, x, y)) *
                                     environment_texel_solid_angle(y, 16, 8) /
                                     tables.luminance_integral;
@@ -686,9 +687,9 @@ TEST(PreethamSky, ZenithMatchesThePaper) {
         float turbidity, sun_zenith_degrees;
         double luminance, x, y;
     };
-    for (const Case& c : {Case{2.0f, 30.0f, 5.8867, 0.25142, 0.25592},
-                          Case{3.0f, 55.0f, 5.8035, 0.24410, 0.25082},
-                          Case{6.0f, 70.0f, 6.5797, 0.27145, 0.28981}}) {
+    for (const Case& c :
+         {Case{2.0f, 30.0f, 5.8867, 0.25142, 0.25592}, Case{3.0f, 55.0f, 5.8035, 0.24410, 0.25082},
+          Case{6.0f, 70.0f, 6.5797, 0.27145, 0.28981}}) {
         SkySettings sky;
         sky.turbidity = c.turbidity;
         sky.sun_elevation_degrees = 90.0f - c.sun_zenith_degrees;
@@ -712,8 +713,8 @@ TEST(PreethamSky, BrighterTowardsTheSunThanOpposite) {
         const double toward = sky.sun_azimuth_degrees / 360.0;
         for (double altitude_degrees : {5.0, 20.0, 45.0}) {
             const double v = (90.0 - altitude_degrees) / 180.0;
-            const double near = luminance(
-                glm::dvec3(preetham_sky_radiance(sky, environment_direction(toward, v))));
+            const double near =
+                luminance(glm::dvec3(preetham_sky_radiance(sky, environment_direction(toward, v))));
             const double far = luminance(
                 glm::dvec3(preetham_sky_radiance(sky, environment_direction(toward + 0.5, v))));
             EXPECT_GT(near, 1.2 * far) << elevation << " " << altitude_degrees;
@@ -728,8 +729,10 @@ TEST(PreethamSky, SymmetricAboutTheSunsVerticalPlane) {
     const double sun_u = 123.0 / 360.0;
     for (double offset : {0.01, 0.1, 0.3, 0.45}) {
         for (double v : {0.05, 0.3, 0.49}) {
-            const glm::dvec3 left(preetham_sky_radiance(sky, environment_direction(sun_u - offset, v)));
-            const glm::dvec3 right(preetham_sky_radiance(sky, environment_direction(sun_u + offset, v)));
+            const glm::dvec3 left(
+                preetham_sky_radiance(sky, environment_direction(sun_u - offset, v)));
+            const glm::dvec3 right(
+                preetham_sky_radiance(sky, environment_direction(sun_u + offset, v)));
             for (int c = 0; c < 3; ++c) EXPECT_NEAR(left[c], right[c], 1e-5 * right[c] + 1e-9);
         }
     }
@@ -880,10 +883,8 @@ TEST(StudioEnvironment, HasItsLightsWhereDocumented) {
                            Box{45.0, 30.0, 15.0, 50.0}}) {  // rim
         const double centre = at(box.azimuth, box.elevation);
         EXPECT_GT(centre, box.brighter * surround) << box.azimuth;
-        EXPECT_LT(at(box.azimuth - box.beyond_edge, box.elevation), 2.0 * surround)
-            << box.azimuth;
-        EXPECT_LT(at(box.azimuth + box.beyond_edge, box.elevation), 2.0 * surround)
-            << box.azimuth;
+        EXPECT_LT(at(box.azimuth - box.beyond_edge, box.elevation), 2.0 * surround) << box.azimuth;
+        EXPECT_LT(at(box.azimuth + box.beyond_edge, box.elevation), 2.0 * surround) << box.azimuth;
     }
     // Irradiance on a surface facing the key box, over its hemisphere.
     const glm::dvec3 normal = environment_direction(270.0 / 360.0, 50.0 / 180.0);

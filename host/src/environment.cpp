@@ -84,13 +84,12 @@ double smooth_step(double edge0, double edge1, double x) {
 }
 
 glm::dvec3 light_box(const LightBox& box, glm::dvec3 direction) {
-    const glm::dvec3 centre = environment_direction(
-        box.azimuth_degrees / 360.0, (90.0 - box.elevation_degrees) / 180.0);
+    const glm::dvec3 centre =
+        environment_direction(box.azimuth_degrees / 360.0, (90.0 - box.elevation_degrees) / 180.0);
     const double facing = glm::dot(direction, centre);
     if (facing <= 0.0) return glm::dvec3(0.0);
     // Tangent frame: `up` towards +z in the box's plane, `side` across it.
-    const glm::dvec3 up =
-        glm::normalize(glm::dvec3(0.0, 0.0, 1.0) - centre * centre.z);
+    const glm::dvec3 up = glm::normalize(glm::dvec3(0.0, 0.0, 1.0) - centre * centre.z);
     const glm::dvec3 side = glm::cross(up, centre);
     const double x = glm::dot(direction, side) / facing;
     const double y = glm::dot(direction, up) / facing;
@@ -118,8 +117,8 @@ struct Perez {
 };
 
 struct PreethamModel {
-    glm::dvec3 sun;   // unit, towards the sun
-    double theta_s;   // the sun's zenith angle
+    glm::dvec3 sun;  // unit, towards the sun
+    double theta_s;  // the sun's zenith angle
     Perez luminance, x, y;
     double zenith_luminance;  // cd/m^2
     double zenith_x, zenith_y;
@@ -132,10 +131,10 @@ struct PreethamModel {
         sun = environment_direction(double(sky.sun_azimuth_degrees) / 360.0, theta_s / kPi);
         luminance = {0.1787 * t - 1.4630, -0.3554 * t + 0.4275, -0.0227 * t + 5.3251,
                      0.1206 * t - 2.5771, -0.0670 * t + 0.3703};
-        x = {-0.0193 * t - 0.2592, -0.0665 * t + 0.0008, -0.0004 * t + 0.2125,
-             -0.0641 * t - 0.8989, -0.0033 * t + 0.0452};
-        y = {-0.0167 * t - 0.2608, -0.0950 * t + 0.0092, -0.0079 * t + 0.2102,
-             -0.0441 * t - 1.6537, -0.0109 * t + 0.0529};
+        x = {-0.0193 * t - 0.2592, -0.0665 * t + 0.0008, -0.0004 * t + 0.2125, -0.0641 * t - 0.8989,
+             -0.0033 * t + 0.0452};
+        y = {-0.0167 * t - 0.2608, -0.0950 * t + 0.0092, -0.0079 * t + 0.2102, -0.0441 * t - 1.6537,
+             -0.0109 * t + 0.0529};
         // Zenith luminance (kcd/m^2 in the paper) and chromaticity (Appendix A.2).
         const double chi = (4.0 / 9.0 - t / 120.0) * (kPi - 2.0 * theta_s);
         zenith_luminance = 1000.0 * ((4.0453 * t - 4.9710) * std::tan(chi) - 0.2155 * t + 2.4192);
@@ -254,13 +253,12 @@ constexpr double kSunAngularRadius = 0.2667 * kPi / 180.0;
 // CIE XYZ (cd/m^2 in Y) of the sun's disc seen through the atmosphere at zenith angle theta_s.
 glm::dvec3 sun_xyz(double turbidity, double theta_s) {
     const double beta = 0.04608365822050 * turbidity - 0.04586025928522;
-    constexpr double alpha = 1.3;     // ratio of small to large aerosol particles
-    constexpr double ozone = 0.35;    // cm (NTP)
-    constexpr double water = 2.0;     // cm of precipitable water vapour
+    constexpr double alpha = 1.3;   // ratio of small to large aerosol particles
+    constexpr double ozone = 0.35;  // cm (NTP)
+    constexpr double water = 2.0;   // cm of precipitable water vapour
     // Relative optical air mass (Kasten's formula, as the paper gives it).
     const double theta_degrees = theta_s * 180.0 / kPi;
-    const double mass =
-        1.0 / (std::cos(theta_s) + 0.15 * std::pow(93.885 - theta_degrees, -1.253));
+    const double mass = 1.0 / (std::cos(theta_s) + 0.15 * std::pow(93.885 - theta_degrees, -1.253));
     glm::dvec3 xyz(0.0);
     constexpr double step = 5.0;
     for (double l = 380.0; l <= 750.0 + 1e-9; l += step) {
@@ -302,10 +300,9 @@ glm::dvec3 sky_horizontal_irradiance(const PreethamModel& model) {
 PreethamModel sky_model_with_ground(const SkySettings& sky) {
     PreethamModel model(sky);
     const double sun_solid_angle = 2.0 * kPi * (1.0 - std::cos(kSunAngularRadius));
-    const glm::dvec3 sun_irradiance =
-        sun_rgb(sky) * sun_solid_angle * std::max(model.sun.z, 0.0);
-    model.ground = double(sky.ground_albedo) / kPi *
-                   (sky_horizontal_irradiance(model) + sun_irradiance);
+    const glm::dvec3 sun_irradiance = sun_rgb(sky) * sun_solid_angle * std::max(model.sun.z, 0.0);
+    model.ground =
+        double(sky.ground_albedo) / kPi * (sky_horizontal_irradiance(model) + sun_irradiance);
     return model;
 }
 
@@ -366,15 +363,14 @@ void validate_sky(const SkySettings& sky) {
     }
     if (!std::isfinite(sky.sun_elevation_degrees) || sky.sun_elevation_degrees < 0.0f ||
         sky.sun_elevation_degrees > 90.0f) {
-        throw std::invalid_argument(fmt::format("sun elevation {} degrees is outside [0, 90]",
-                                                sky.sun_elevation_degrees));
+        throw std::invalid_argument(
+            fmt::format("sun elevation {} degrees is outside [0, 90]", sky.sun_elevation_degrees));
     }
     if (!std::isfinite(sky.sun_azimuth_degrees)) {
         throw std::invalid_argument(
             fmt::format("sun azimuth {} degrees is not finite", sky.sun_azimuth_degrees));
     }
-    if (!std::isfinite(sky.ground_albedo) || sky.ground_albedo < 0.0f ||
-        sky.ground_albedo > 1.0f) {
+    if (!std::isfinite(sky.ground_albedo) || sky.ground_albedo < 0.0f || sky.ground_albedo > 1.0f) {
         throw std::invalid_argument(
             fmt::format("ground albedo {} is outside [0, 1]", sky.ground_albedo));
     }
@@ -430,8 +426,8 @@ EnvironmentTables environment_tables(const HdrImage& map, std::string_view name)
             fmt::format("{}: {} x {} pixels is too large", name, map.width, map.height));
     }
     if (int64_t(map.rgb.size()) != 3 * w * h) {
-        throw std::invalid_argument(fmt::format("{}: holds {} values, {} x {} pixels need {}",
-                                                name, map.rgb.size(), w, h, 3 * w * h));
+        throw std::invalid_argument(fmt::format("{}: holds {} values, {} x {} pixels need {}", name,
+                                                map.rgb.size(), w, h, 3 * w * h));
     }
     for (size_t i = 0; i < map.rgb.size(); ++i) {
         const float value = map.rgb[i];
@@ -459,8 +455,8 @@ EnvironmentTables environment_tables(const HdrImage& map, std::string_view name)
         const double solid_angle = environment_texel_solid_angle(int(y), map.width, map.height);
         for (int64_t x = 0; x < w; ++x) {
             const size_t i = size_t(y * w + x);
-            weights[i] = luminance(map.rgb[3 * i], map.rgb[3 * i + 1], map.rgb[3 * i + 2]) *
-                         solid_angle;
+            weights[i] =
+                luminance(map.rgb[3 * i], map.rgb[3 * i + 1], map.rgb[3 * i + 2]) * solid_angle;
             total += weights[i];
         }
     }
@@ -468,8 +464,7 @@ EnvironmentTables environment_tables(const HdrImage& map, std::string_view name)
     if (!(total > 0.0)) {
         // Black everywhere: sample uniformly over the sphere.
         for (int64_t y = 0; y < h; ++y) {
-            const double solid_angle =
-                environment_texel_solid_angle(int(y), map.width, map.height);
+            const double solid_angle = environment_texel_solid_angle(int(y), map.width, map.height);
             std::fill_n(weights.begin() + y * w, w, solid_angle);
         }
     }
@@ -512,8 +507,8 @@ EnvironmentInfo environment_info(const EnvironmentTables& tables, double rotatio
             fmt::format("environment rotation {} degrees is not finite", rotation_degrees));
     }
     if (!std::isfinite(intensity) || intensity < 0.0f) {
-        throw std::invalid_argument(fmt::format(
-            "environment intensity {} must be finite and non-negative", intensity));
+        throw std::invalid_argument(
+            fmt::format("environment intensity {} must be finite and non-negative", intensity));
     }
     double turns = std::fmod(rotation_degrees / 360.0, 1.0);
     if (turns < 0.0) turns += 1.0;

@@ -53,7 +53,7 @@ HdrImage studio_environment(int width = 512);
 
 // Preetham, Shirley, Smits, "A Practical Analytic Model for Daylight" (SIGGRAPH 1999).
 struct SkySettings {
-    float turbidity = 3.0f;             // 1.7 (very clear) to 10 (hazy), the model's fitted range
+    float turbidity = 3.0f;               // 1.7 (very clear) to 10 (hazy), the model's fitted range
     float sun_elevation_degrees = 35.0f;  // 0 (on the horizon) to 90 (at the zenith)
     float sun_azimuth_degrees = 40.0f;    // phi of the sun, as the map's azimuth (see above)
     float ground_albedo = 0.3f;           // 0 to 1: the plain ground below the horizon
