@@ -24,7 +24,13 @@
  * lanes, and only the final conversion differs (float keeps the top 24 bits, double all 32).
  *
  * Progressive renders call sampler_start with sample 0, 1, 2, ... for each pixel; the best
- * stratification is at power-of-two sample counts. */
+ * stratification is at power-of-two sample counts.
+ *
+ * The dimension counter is one for the whole packet, as lane-wise control flow makes every lane
+ * take the same calls. For a lane's numbers not to depend on its packet, a path should draw a
+ * fixed number of dimensions per bounce (lanes whose path has ended keep drawing and ignore
+ * them), never a count that depends on another lane, such as a loop run while any lane rejects
+ * its sample. */
 
 /* An unsigned 32-bit integer per lane, in both precisions (`ulanes` is 64 bits in double builds;
  * the sampler wants 32-bit wrap-around). The sampler needs no masks, so it never selects on
