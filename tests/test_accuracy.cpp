@@ -227,6 +227,9 @@ TEST(AccuracySweep, MeasuresEveryKnobAgainstTheReference) {
     }
     EXPECT_NE(script.find("set output 'a.png'"), std::string::npos);
     EXPECT_NE(script.find("1 - SSIM"), std::string::npos);
+    // The fronts travel as inline data (a line drawn from the CSV would break at every row off it).
+    EXPECT_NE(script.find("$front_rmse << EOD"), std::string::npos);
+    EXPECT_NE(script.find("$front_ssim << EOD"), std::string::npos);
     EXPECT_NE(script.find("title 'spp (vs samples reference)'"), std::string::npos);
 }
 
