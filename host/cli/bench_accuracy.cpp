@@ -51,18 +51,17 @@ int command_bench_accuracy(const AccuracyOptions& options, int device_index) {
         fmt::print("{} reference ({}): {:.0f} ms\n", reference.name, reference.settings,
                    reference.render_ms);
     }
-    fmt::print("{:<15} {:>6} {:>8} {:>10} {:>9} {:>8} {:>8} {:>8} {:>10} {:>12} {}\n", "knob",
-               "value", "ref", "render ms", "steps/px", "rmse", "psnr dB", "1-ssim", "hit diff %",
-               "depth error", "pareto");
+    // PSNR and the relative depth error are in the CSV; the front column marks the RMSE front
+    // (r) and the 1 - SSIM front (s) among the points of one reference.
+    fmt::print("{:<15} {:>6} {:>8} {:>9} {:>8} {:>8} {:>8} {:>6} {:>9} {}\n", "knob", "value",
+               "ref", "render ms", "steps/px", "rmse", "1-ssim", "hit %", "depth err", "front");
     for (const AccuracyPoint& point : report.points) {
-        // The Pareto columns: RMSE's front, then 1 - SSIM's, among the points of one reference.
-        fmt::print(
-            "{:<15} {:>6} {:>8} {:>10.1f} {:>9.2f} {:>8.3f} {:>8.2f} {:>8.4f} {:>10.3f} {:>12.3g} "
-            "{}{}\n",
-            point.knob, point.value, point.reference, point.render_ms, point.steps_per_pixel,
-            point.error.rmse, point.error.psnr, point.error.one_minus_ssim,
-            point.error.hit_mismatch_percent, point.error.mean_depth_error,
-            point.pareto ? "*" : " ", point.pareto_ssim ? "*" : " ");
+        const std::string front = std::string(point.pareto || point.pareto_ssim ? " " : "") +
+                                  (point.pareto ? "r" : "") + (point.pareto_ssim ? "s" : "");
+        fmt::print("{:<15} {:>6} {:>8} {:>9.1f} {:>8.2f} {:>8.3f} {:>8.4f} {:>6.2f} {:>9.3g}{}\n",
+                   point.knob, point.value, point.reference, point.render_ms,
+                   point.steps_per_pixel, point.error.rmse, point.error.one_minus_ssim,
+                   point.error.hit_mismatch_percent, point.error.mean_depth_error, front);
     }
     write_output(csv, accuracy_csv(report));
     write_output(script, accuracy_gnuplot(report, scene.id, csv.filename().string(),
