@@ -203,6 +203,14 @@ TEST(Ssim, OnLinearRgbComparesWhatTheScreenShows) {
     EXPECT_NEAR(ssim(a, c), 0.996777938802, 1e-5);
     EXPECT_EQ(ssim(a, a), 1.0);
     EXPECT_THROW(ssim(a, HdrImage{16, 12, std::vector<float>(16 * 12 * 3)}), std::invalid_argument);
+    // Exposure scales the light before display: HDR images ten times as bright, judged at
+    // exposure 0.1, are the same images (to float rounding of the scaling).
+    HdrImage bright_a = a, bright_c = c;
+    for (float& v : bright_a.rgb) v *= 10.0f;
+    for (float& v : bright_c.rgb) v *= 10.0f;
+    EXPECT_NEAR(ssim(bright_a, bright_c, 0.1f), 0.996777938802, 1e-5);
+    // At exposure 1 most of both clamp to white: another comparison (0.9946 here).
+    EXPECT_GT(std::abs(ssim(bright_a, bright_c) - 0.996777938802), 1e-3);
 }
 
 TEST(DisplayLuma, EncodesClampsAndWeighsChannels) {

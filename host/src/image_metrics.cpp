@@ -152,11 +152,11 @@ GreyImage display_luma(const HdrImage& linear, float exposure) {
     return luma;
 }
 
-double ssim(const HdrImage& image, const HdrImage& reference) {
+double ssim(const HdrImage& image, const HdrImage& reference, float exposure) {
     check_hdr(image, "ssim");
     check_hdr(reference, "ssim");
     check_same_size(image.width, image.height, reference.width, reference.height, "ssim");
-    return ssim(display_luma(image), display_luma(reference), 1.0);
+    return ssim(display_luma(image, exposure), display_luma(reference, exposure), 1.0);
 }
 
 double rmse(const HdrImage& image, const HdrImage& reference) {

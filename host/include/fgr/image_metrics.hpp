@@ -47,10 +47,11 @@ double ssim(const GreyImage& image, const GreyImage& reference, double dynamic_r
 // scikit-image's rgb2gray form it).
 GreyImage display_luma(const HdrImage& linear, float exposure = 1.0f);
 
-// SSIM of two linear-RGB images of the same size as they are displayed: on display_luma (exposure
-// 1, clamping), L = 1. Colour enters through luma only. The perceptual metric of the accuracy
-// sweeps; 1 - ssim is its error (0 for identical images, lower is better).
-double ssim(const HdrImage& image, const HdrImage& reference);
+// SSIM of two linear-RGB images of the same size as they are displayed: on display_luma (both
+// times `exposure`, then clamped; HDR images can pick what range of light to judge), L = 1.
+// Colour enters through luma only. The perceptual metric of the accuracy sweeps; 1 - ssim is
+// their error (0 for identical images, lower is better).
+double ssim(const HdrImage& image, const HdrImage& reference, float exposure = 1.0f);
 
 // Root-mean-square difference over every channel of every pixel, in linear units. Throws
 // std::invalid_argument when the sizes differ.
