@@ -18,12 +18,14 @@ void add_bench_accuracy_command(CLI::App& bench, BenchOptions& options) {
     options.accuracy_command = accuracy;
     AccuracyOptions& sweep = options.accuracy;
     accuracy->add_option("scene", sweep.scene, "scene id (see `fgr list`)")->required();
+    // SSIM's window needs 11x11 pixels.
     accuracy->add_option("--width", sweep.settings.width, "image width (default 320)")
-        ->check(CLI::Range(8, 4096));
+        ->check(CLI::Range(16, 4096));
     accuracy->add_option("--height", sweep.settings.height, "image height (default 240)")
-        ->check(CLI::Range(8, 4096));
+        ->check(CLI::Range(16, 4096));
     accuracy->add_option("--reference-spp", sweep.settings.reference_samples,
-                         "samples per pixel of the reference (default 16)")
+                         "samples per pixel of the samples reference, the one the spp points "
+                         "are measured against (default 64)")
         ->check(CLI::Range(1, kMaxSamples));
     accuracy->add_option("--repeats", sweep.settings.repeats,
                          "timing rounds over all settings (alternating); each setting's fastest "
@@ -45,14 +47,21 @@ int command_bench_accuracy(const AccuracyOptions& options, int device_index) {
         scene, device, cache, options.settings, [](int done, int total, const std::string& what) {
             if (done < total) spdlog::info("[{}/{}] {}", done + 1, total, what);
         });
-    fmt::print("reference ({}): {:.0f} ms\n", report.reference_settings, report.reference_ms);
-    fmt::print("{:<15} {:>8} {:>10} {:>9} {:>8} {:>8} {:>10} {:>12} {}\n", "knob", "value",
-               "render ms", "steps/px", "rmse", "psnr dB", "hit diff %", "depth error", "pareto");
+    for (const AccuracyReference& reference : report.references) {
+        fmt::print("{} reference ({}): {:.0f} ms\n", reference.name, reference.settings,
+                   reference.render_ms);
+    }
+    // PSNR and the relative depth error are in the CSV; the front column marks the RMSE front
+    // (r) and the 1 - SSIM front (s) among the points of one reference.
+    fmt::print("{:<15} {:>6} {:>8} {:>9} {:>8} {:>8} {:>8} {:>6} {:>9} {}\n", "knob", "value",
+               "ref", "render ms", "steps/px", "rmse", "1-ssim", "hit %", "depth err", "front");
     for (const AccuracyPoint& point : report.points) {
-        fmt::print("{:<15} {:>8} {:>10.1f} {:>9.2f} {:>8.3f} {:>8.2f} {:>10.3f} {:>12.3g} {}\n",
-                   point.knob, point.value, point.render_ms, point.steps_per_pixel,
-                   point.error.rmse, point.error.psnr, point.error.hit_mismatch_percent,
-                   point.error.mean_depth_error, point.pareto ? "*" : "");
+        const std::string front = std::string(point.pareto || point.pareto_ssim ? " " : "") +
+                                  (point.pareto ? "r" : "") + (point.pareto_ssim ? "s" : "");
+        fmt::print("{:<15} {:>6} {:>8} {:>9.1f} {:>8.2f} {:>8.3f} {:>8.4f} {:>6.2f} {:>9.3g}{}\n",
+                   point.knob, point.value, point.reference, point.render_ms,
+                   point.steps_per_pixel, point.error.rmse, point.error.one_minus_ssim,
+                   point.error.hit_mismatch_percent, point.error.mean_depth_error, front);
     }
     write_output(csv, accuracy_csv(report));
     write_output(script, accuracy_gnuplot(report, scene.id, csv.filename().string(),
