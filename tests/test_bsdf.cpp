@@ -1011,6 +1011,26 @@ TEST_F(BsdfTest, MirrorReflectsExactlyWithSchlickWeight) {
     }
 }
 
+// The glossy lobe's Fresnel is Schlick's in wo.h: for a narrow lobe (roughness 0.1, alpha 0.01)
+// wo.h stays within ~2 alpha of cos θo, so the albedo of F0 = 0.04 over that of F0 = 1 is
+// F(cos θo) up to the curvature of F across the lobe (below 3e-3 at 80 degrees).
+TEST_F(BsdfTest, GlossyLobeFresnelIsSchlick) {
+    for (const Precision& p : all_precisions()) {
+        const BsdfKernels& k = kernels(p.width, p.double_precision);
+        const dvec3 n = normals()[2];
+        for (double degrees : {0.0, 60.0, 80.0}) {
+            const dvec3 wo = incident(n, degrees);
+            const HemisphereGrid grid(n, reflect(wo, n), 0.02, 24, 48);
+            const double white =
+                integrate_cells(k, metal(dvec3(1.0), 0.1), n, wo, grid, 5).eval_total().y;
+            const double dielectric =
+                integrate_cells(k, metal(dvec3(0.04), 0.1), n, wo, grid, 5).eval_total().y;
+            EXPECT_NEAR(dielectric / white, schlick(dvec3(0.04), glm::dot(n, wo)).y, 0.01)
+                << label(k) << " at " << degrees << " degrees";
+        }
+    }
+}
+
 // A mirror-coated diffuse material (roughness 0, F0 0.04 over albedo a) returns on average
 // F(cos_o) through its mirror samples and (1 - 0.04) a through its diffuse ones, whatever
 // probability it samples each with.
