@@ -11,9 +11,7 @@
  * power heuristic (Veach 1997, multiple importance sampling): a sun of any size converges, from a
  * point-like one (light sampling wins) to a broad one (BSDF sampling wins). The sample generator
  * (fgr_sampler.cl) is indexed by dimension, so every decision draws its own stratified numbers.
- *
- * fgr's world has z up; environment maps have y up (fgr_environment.cl), so directions are
- * turned by env_from_world before a lookup.
+
  *
  * Arguments: those every mode takes (planes .. PARAMS, see fgr_camera.cl), then the lights (the
  * scene's and the sky's sun, FGR_PATH_LIGHT_FLOATS each, laid out by host/src/modes/path_mode.cpp),
@@ -54,10 +52,6 @@ inline material scene_material(vec3 p, PARAMS) {
 }
 #endif
 
-/* fgr's z-up world to the environment's y-up frame, and back (a rotation by 90 degrees about x). */
-inline vec3 env_from_world(vec3 d) { return v3(d.x, d.z, -d.y); }
-inline vec3 world_from_env(vec3 d) { return v3(d.x, -d.z, d.y); }
-
 /* The power heuristic with exponent 2 for one sample of each strategy: the weight of the strategy
  * with pdf `a` when the other has pdf `b`. */
 inline real power_heuristic(real a, real b) {
@@ -65,16 +59,32 @@ inline real power_heuristic(real a, real b) {
     return select(a2 / (a2 + b2), fgr_real(0.0f), a2 + b2 <= 0.0f);
 }
 
+/* The environment as a light: sampled by its importance (fgr_environment.cl), or uniformly over
+ * the sphere when that is switched off (to show what importance sampling buys). */
+inline vec3 environment_light_sample(real u1, real u2, path_settings settings, ENVIRONMENT,
+                                     real* pdf) {
+    if (settings.flags & FGR_PATH_ENVIRONMENT_IS) {
+        return environment_sample(u1, u2, ENVIRONMENT_PASS, pdf);
+    }
+    const real z = 1.0f - 2.0f * u1;
+    const real r = sqrt(fmax(1.0f - z * z, 0.0f));
+    const real phi = 6.28318530717958647692f * u2;
+    *pdf = fgr_real(1.0f / (4.0f * 3.14159265358979323846f));
+    return v3(r * fgr_cos(phi), r * fgr_sin(phi), z);
+}
+
+inline real environment_light_pdf(vec3 dir, path_settings settings, ENVIRONMENT) {
+    if (settings.flags & FGR_PATH_ENVIRONMENT_IS) return environment_pdf(dir, ENVIRONMENT_PASS);
+    return fgr_real(1.0f / (4.0f * 3.14159265358979323846f));
+}
+
 /* Unit direction uniformly inside the cone of cosine cos_max around axis (a sun disc). */
 inline vec3 sample_cone(vec3 axis, real cos_max, real u1, real u2) {
     const real cos_theta = 1.0f - u1 * (1.0f - cos_max);
     const real sin_theta = sqrt(fmax(1.0f - cos_theta * cos_theta, 0.0f));
     const real phi = 6.28318530717958647692f * u2;
-    vec3 tangent, bitangent;
-    orthonormal_basis(axis, &tangent, &bitangent);
-    return v3_add(v3_scale(axis, cos_theta),
-                  v3_add(v3_scale(tangent, sin_theta * fgr_cos(phi)),
-                         v3_scale(bitangent, sin_theta * fgr_sin(phi))));
+    return bsdf_to_world(bsdf_frame_of(axis),
+                         v3(sin_theta * fgr_cos(phi), sin_theta * fgr_sin(phi), cos_theta));
 }
 
 /* Solid-angle pdf of sample_cone. */
@@ -95,9 +105,9 @@ inline real escaped_weight(mask light_sampled, bool mis, real bsdf_pdf, real lig
  * scene, weighted as escaped_weight says (bsdf_pdf: the BSDF's pdf of dir at the last vertex). */
 inline vec3 escaped_radiance(vec3 dir, mask light_sampled, bool mis, real bsdf_pdf,
                              __constant const float* lights, path_settings settings, ENVIRONMENT) {
-    const vec3 env_dir = env_from_world(dir);
-    vec3 radiance = environment_radiance(env_dir, ENVIRONMENT_PASS);
-    const real env_pdf = settings.environment_pick * environment_pdf(env_dir, ENVIRONMENT_PASS);
+    vec3 radiance = environment_radiance(dir, ENVIRONMENT_PASS);
+    const real env_pdf =
+        settings.environment_pick * environment_light_pdf(dir, settings, ENVIRONMENT_PASS);
     radiance = v3_scale(radiance, escaped_weight(light_sampled, mis, bsdf_pdf, env_pdf));
     float picked_before = settings.environment_pick;
     for (int i = 0; i < settings.light_count; ++i) {
@@ -133,9 +143,8 @@ inline light_sample sample_light(vec3 p, real u_pick, real u1, real u2,
     light_sample s;
     /* The environment, when it is picked. */
     real env_pdf = fgr_real(0.0f);
-    const vec3 env_dir = environment_sample(u1, u2, ENVIRONMENT_PASS, &env_pdf);
-    s.dir = world_from_env(env_dir);
-    s.radiance = environment_radiance(env_dir, ENVIRONMENT_PASS);
+    s.dir = environment_light_sample(u1, u2, settings, ENVIRONMENT_PASS, &env_pdf);
+    s.radiance = environment_radiance(s.dir, ENVIRONMENT_PASS);
     s.pdf = settings.environment_pick * env_pdf;
     s.reach = fgr_real(max_distance);
     float picked_before = settings.environment_pick;

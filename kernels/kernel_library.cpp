@@ -29,6 +29,7 @@ std::span<const KernelFile> kernel_prelude() {
         KernelFile{"fgr_types.cl", fgr_types_cl},
         KernelFile{"fgr_math.cl", fgr_math_cl},
         KernelFile{"fgr_vec3.cl", fgr_vec3_cl},
+        KernelFile{"fgr_bsdf.cl", fgr_bsdf_cl},
         KernelFile{"fgr_sdf.cl", fgr_sdf_cl},
         KernelFile{"fgr_folds.cl", fgr_folds_cl},
         KernelFile{"fgr_colour.cl", fgr_colour_cl},
@@ -52,7 +53,6 @@ std::span<const KernelFile> mode_files(std::string_view mode) {
     static constexpr std::array shaded{KernelFile{"fgr_mode_shaded.cl", fgr_mode_shaded_cl}};
     static constexpr std::array path{
         KernelFile{"fgr_sampler.cl", fgr_sampler_cl},
-        KernelFile{"fgr_bsdf.cl", fgr_bsdf_cl},
         KernelFile{"fgr_environment.cl", fgr_environment_cl},
         KernelFile{"fgr_mode_path.cl", fgr_mode_path_cl},
     };
@@ -64,7 +64,6 @@ std::span<const KernelFile> mode_files(std::string_view mode) {
 std::span<const KernelFile> path_library() {
     static constexpr std::array files{
         KernelFile{"fgr_sampler.cl", fgr_sampler_cl},
-        KernelFile{"fgr_bsdf.cl", fgr_bsdf_cl},
         KernelFile{"fgr_environment.cl", fgr_environment_cl},
     };
     return files;

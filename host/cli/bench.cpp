@@ -65,6 +65,7 @@ void add_bench_command(CLI::App& app, BenchOptions& options) {
     add_precision_option(bench, options.settings.precision,
                          "for the frames of the path finer than float resolves");
     add_device_options(bench, options.device, options.settings.packet_width);
+    add_mode_options(bench, options.mode);
     add_bench_accuracy_command(*bench, options);
 }
 
@@ -81,13 +82,18 @@ int command_bench(BenchOptions& options) {
     } catch (const std::invalid_argument& error) {
         throw UsageError(error.what());
     }
+    options.settings.render_mode = chosen_mode(options.mode, scene);
+    if (options.settings.render_mode == RenderMode::Path) {
+        options.settings.path_tracing = chosen_path_settings(options.mode, scene);
+    }
     const std::string prefix = options.output.empty() ? "bench-" + scene.id : options.output;
     const std::filesystem::path json_file = prefix + ".json", csv_file = prefix + ".csv";
     check_output_directory(json_file);
     const ComputeDevice device = open_requested_device(options.device);
     ProgramCache cache(ProgramCache::default_directory());
-    spdlog::info("benchmarking '{}' at {}x{} on {}", scene.id, options.settings.width,
-                 options.settings.height, device.info.name);
+    spdlog::info("benchmarking '{}' at {}x{} in {} mode on {}", scene.id, options.settings.width,
+                 options.settings.height, render_mode_name(options.settings.render_mode),
+                 device.info.name);
     const BenchReport report = run_benchmark(scene, device, cache, options.settings,
                                              bench_progress(options.settings.runs));
     fmt::print("{}", bench_table(report));

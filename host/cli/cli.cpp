@@ -53,17 +53,21 @@ int run_cli(int argc, char** argv) {
     add_bench_command(app, bench_options);
     CacheOptions cache_options;
     add_cache_command(app, cache_options);
+    EnvironmentOptions environment_options;
+    add_environment_command(app, environment_options);
     if (argc < 2) {
         std::fputs(app.help().c_str(), stdout);
         return report_error(
-            "no command given (commands: list, info, render, view, new-scene, bench, cache)",
+            "no command given (commands: list, info, render, view, new-scene, bench, cache, "
+            "environment)",
             kExitUsage);
     }
     if (const std::string first = argv[1]; !first.empty() && first.front() != '-' &&
         first != "list" && first != "info" && first != "render" && first != "view" &&
-        first != "new-scene" && first != "bench" && first != "cache") {
+        first != "new-scene" && first != "bench" && first != "cache" &&
+        first != "environment") {
         return report_error(fmt::format("unknown command '{}' (commands: list, info, render, "
-                                        "view, new-scene, bench, cache)",
+                                        "view, new-scene, bench, cache, environment)",
                                         first),
                             kExitUsage);
     }
@@ -83,6 +87,7 @@ int run_cli(int argc, char** argv) {
         if (command == "new-scene") return command_new_scene(new_scene_options);
         if (command == "bench") return command_bench(bench_options);
         if (command == "cache") return command_cache(cache_options);
+        if (command == "environment") return command_environment(environment_options);
         return command_render(render_options);
     } catch (const UsageError& error) {
         return report_error(error.what(), kExitUsage);

@@ -18,7 +18,9 @@
 #include "fgr/discovery.hpp"
 #include "fgr/opencl_device.hpp"
 #include "fgr/parameters.hpp"
+#include "fgr/path_settings.hpp"
 #include "fgr/precision.hpp"
+#include "fgr/render_mode.hpp"
 #include "fgr/scene.hpp"
 #include "fgr/viewer/viewer.hpp"
 
@@ -44,6 +46,33 @@ ComputeDevice open_requested_device(int index);
 void add_device_options(CLI::App* command, int& device, int& packet_width);
 // --precision, for the commands that render; `auto_means` ends its help text.
 void add_precision_option(CLI::App* command, Precision& precision, const std::string& auto_means);
+// --mode and the path tracer's options, shared by render, view and bench.
+struct ModeOptions {
+    std::optional<std::string> mode;  // default: the scene's (Scene::default_mode)
+    std::string environment = "sky";  // sky, studio, uniform[:RADIANCE] or an .hdr/.exr file
+    float environment_rotation = 0.0f;   // degrees about the up axis
+    float environment_intensity = 1.0f;
+    std::optional<float> turbidity;
+    std::optional<float> sun_elevation;  // degrees above the horizon
+    std::optional<float> sun_azimuth;    // degrees
+    int bounces = PathSettings{}.max_bounces;
+    int roulette_depth = PathSettings{}.roulette_depth;
+    float radiance_clamp = 0.0f;
+    bool no_light_sampling = false;
+    bool no_mis = false;
+    bool no_scene_lights = false;
+    uint32_t seed = 0;
+};
+void add_mode_options(CLI::App* command, ModeOptions& options);
+// The mode to render `scene` in: --mode, else the scene's own; UsageError for an unknown name.
+RenderMode chosen_mode(const ModeOptions& options, const Scene& scene);
+// The path settings the options ask for, the environment loaded or generated (UsageError for
+// bad values, RuntimeFailure for an environment file that cannot be read).
+PathSettings chosen_path_settings(const ModeOptions& options, const Scene& scene);
+// The same without an environment, and the environment asked for (UsageError for bad values).
+PathSettings path_settings_from(const ModeOptions& options);
+EnvironmentChoice environment_choice_from(const ModeOptions& options);
+
 // Throws UsageError unless the directory `file` would be written into exists.
 void check_output_directory(const std::filesystem::path& file);
 // Writes `text` to `file` atomically; a failure is a RuntimeFailure.
@@ -67,13 +96,16 @@ struct RenderOptions {
     std::optional<std::string> camera_path;
     std::optional<float> time;
     int device = -1;
-    int samples = 1;       // per pixel, jittered (anti-aliasing, depth of field)
-    int bit_depth = 8;     // 8: tone-mapped sRGB; 16: linear
+    std::optional<int> samples;  // per pixel, jittered; default 1 (shaded), 64 (path)
+    int bit_depth = 8;     // 8: tone-mapped sRGB; 16: linear (PNG only)
     int packet_width = 0;  // 0: the device's preference
     bool all = false;      // every scene's default view into the directory `output`
     bool stats = false;    // print the primary rays' work: steps, DE evaluations, out of steps
     Precision precision = Precision::Auto;
     std::string effect_changes;  // "+shadows,-ambient_occlusion": over the scene's own effects
+    ModeOptions mode;
+    std::optional<double> time_limit;  // seconds: stop adding samples after this long
+    std::string aovs;                  // "albedo,normal,depth,alpha": EXR layers beside the image
 };
 
 void add_render_command(CLI::App& app, RenderOptions& options);
@@ -83,6 +115,7 @@ int command_render(const RenderOptions& options);
 
 struct ViewCommandOptions {
     viewer::ViewerOptions viewer;
+    ModeOptions mode;
     std::string preset;
     std::string camera_path_file;
     std::string replay;
@@ -106,6 +139,7 @@ struct BenchOptions {
     int frames = 0;
     std::string output;  // prefix of the .json and .csv files
     int device = -1;
+    ModeOptions mode;
     AccuracyOptions accuracy;
     CLI::App* accuracy_command = nullptr;
 };
@@ -135,5 +169,18 @@ struct CacheOptions {
 
 void add_cache_command(CLI::App& app, CacheOptions& options);
 int command_cache(const CacheOptions& options);
+
+// --- fgr environment ----------------------------------------------------------------------------
+
+struct EnvironmentOptions {
+    std::string kind;    // studio or sky
+    std::string output;  // .hdr or .exr
+    int width = 1024;    // the map is width x width/2
+    float turbidity = SkySettings{}.turbidity;
+    float sun_elevation = SkySettings{}.sun_elevation_degrees;
+    float sun_azimuth = SkySettings{}.sun_azimuth_degrees;
+};
+void add_environment_command(CLI::App& app, EnvironmentOptions& options);
+int command_environment(const EnvironmentOptions& options);
 
 }  // namespace fgr

@@ -2,6 +2,7 @@
 #include <vector>
 
 #include <fmt/format.h>
+#include <spdlog/spdlog.h>
 
 #include "commands.hpp"
 #include "fgr/atomic_file.hpp"
@@ -53,6 +54,121 @@ void add_precision_option(CLI::App* command, Precision& precision, const std::st
         ->add_option_function<std::string>("--precision", choose,
                                            "float, double, or auto (default): double " + auto_means)
         ->check(CLI::IsMember(names));
+}
+
+void add_mode_options(CLI::App* command, ModeOptions& options) {
+    std::vector<std::string> names;
+    for (const RenderModeInfo& info : render_modes()) names.emplace_back(info.name);
+    command
+        ->add_option("--mode", options.mode,
+                     "render mode: shaded (Blinn-Phong and effects) or path (path tracing); "
+                     "default: the scene's own")
+        ->check(CLI::IsMember(names));
+    const std::string path = "Path tracing (--mode path)";
+    command->add_option("--environment", options.environment,
+                        "what lights the scene: sky (default), studio, uniform[:RADIANCE or R,G,B] "
+                        "or an equirectangular .hdr/.exr file")
+        ->group(path);
+    command->add_option("--environment-rotation", options.environment_rotation,
+                        "turn the environment about the up axis, degrees")
+        ->group(path);
+    command->add_option("--environment-intensity", options.environment_intensity,
+                        "scale the environment's radiance")
+        ->check(CLI::NonNegativeNumber)
+        ->group(path);
+    command->add_option("--turbidity", options.turbidity, "sky haze, 2 (clear) to 10 (hazy)")
+        ->check(CLI::Range(1.7f, 10.0f))
+        ->group(path);
+    command->add_option("--sun-elevation", options.sun_elevation,
+                        "sun above the horizon, degrees (default: the scene's key light)")
+        ->check(CLI::Range(-10.0f, 90.0f))
+        ->group(path);
+    command->add_option("--sun-azimuth", options.sun_azimuth,
+                        "sun's compass angle, degrees (default: the scene's key light)")
+        ->group(path);
+    command->add_option("--bounces", options.bounces, "scattering events per path at most")
+        ->check(CLI::Range(0, kMaxBounces))
+        ->group(path);
+    command->add_option("--roulette-depth", options.roulette_depth,
+                        "Russian roulette from this bounce on (unbiased); 0: never")
+        ->check(CLI::Range(0, kMaxBounces))
+        ->group(path);
+    command->add_option("--clamp", options.radiance_clamp,
+                        "clamp each sample's radiance to this (removes fireflies, biased); 0: off")
+        ->check(CLI::NonNegativeNumber)
+        ->group(path);
+    command->add_flag("--no-light-sampling", options.no_light_sampling,
+                      "find lights by BSDF sampling alone (no next-event estimation)")
+        ->group(path);
+    command->add_flag("--no-mis", options.no_mis,
+                      "no multiple importance sampling between light and BSDF sampling")
+        ->group(path);
+    command->add_flag("--no-scene-lights", options.no_scene_lights,
+                      "light the scene by the environment alone")
+        ->group(path);
+    command->add_option("--seed", options.seed, "noise pattern of the path tracer")->group(path);
+}
+
+RenderMode chosen_mode(const ModeOptions& options, const Scene& scene) {
+    if (!options.mode) return scene.default_mode;
+    try {
+        return parse_render_mode(*options.mode);
+    } catch (const std::invalid_argument& error) {
+        throw UsageError(error.what());
+    }
+}
+
+PathSettings path_settings_from(const ModeOptions& options) {
+    PathSettings settings;
+    settings.max_bounces = options.bounces;
+    settings.roulette_depth = options.roulette_depth;
+    settings.radiance_clamp = options.radiance_clamp;
+    settings.light_sampling = !options.no_light_sampling;
+    settings.mis = !options.no_mis;
+    settings.scene_lights = !options.no_scene_lights;
+    settings.seed = options.seed;
+    try {
+        check_path_settings(settings);
+    } catch (const std::invalid_argument& error) {
+        throw UsageError(error.what());
+    }
+    return settings;
+}
+
+EnvironmentChoice environment_choice_from(const ModeOptions& options) {
+    EnvironmentChoice choice;
+    try {
+        choice = parse_environment(options.environment);
+    } catch (const std::invalid_argument& error) {
+        throw UsageError(error.what());
+    }
+    choice.rotation_degrees = options.environment_rotation;
+    choice.intensity = options.environment_intensity;
+    if (options.turbidity) choice.sky.turbidity = *options.turbidity;
+    if (options.sun_elevation || options.sun_azimuth) {
+        choice.sun_from_scene = false;
+        if (options.sun_elevation) choice.sky.sun_elevation_degrees = *options.sun_elevation;
+        if (options.sun_azimuth) choice.sky.sun_azimuth_degrees = *options.sun_azimuth;
+    }
+    if (choice.kind != EnvironmentKind::Sky &&
+        (options.turbidity || options.sun_elevation || options.sun_azimuth)) {
+        throw UsageError("--turbidity, --sun-elevation and --sun-azimuth need --environment sky");
+    }
+    return choice;
+}
+
+PathSettings chosen_path_settings(const ModeOptions& options, const Scene& scene) {
+    PathSettings settings = path_settings_from(options);
+    const EnvironmentChoice choice = environment_choice_from(options);
+    try {
+        settings.environment = prepare_environment(choice, scene);
+    } catch (const std::invalid_argument& error) {
+        throw UsageError(error.what());
+    } catch (const std::runtime_error& error) {
+        throw RuntimeFailure(error.what());
+    }
+    spdlog::info("environment: {}", settings.environment->description);
+    return settings;
 }
 
 void check_output_directory(const std::filesystem::path& file) {

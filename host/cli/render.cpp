@@ -1,6 +1,7 @@
 // fgr render: one image of a scene to a PNG file, or every scene's default view (--all).
 #include <algorithm>
 #include <cctype>
+#include <chrono>
 #include <filesystem>
 #include <string>
 
@@ -74,8 +75,8 @@ void check_output_path(const std::filesystem::path& output) {
     std::string extension = output.extension().string();
     std::transform(extension.begin(), extension.end(), extension.begin(),
                    [](unsigned char c) { return static_cast<char>(std::tolower(c)); });
-    if (extension != ".png") {
-        throw UsageError(fmt::format("output '{}' must be a .png file", output.string()));
+    if (extension != ".png" && extension != ".exr") {
+        throw UsageError(fmt::format("output '{}' must be a .png or .exr file", output.string()));
     }
     const auto directory = output.has_parent_path() ? output.parent_path() : ".";
     std::error_code error;
@@ -103,6 +104,14 @@ void check_render_options(const RenderOptions& options) {
     if (options.time && !options.camera_path) throw UsageError("--time needs --camera-path");
     if (options.camera_path && !options.time) throw UsageError("--camera-path needs --time");
     check_output_path(options.output);
+    const bool exr = std::filesystem::path(options.output).extension() != ".png";
+    if (!options.aovs.empty() && !exr) throw UsageError("--aov needs an .exr output");
+    if (exr && options.bit_depth != 8) throw UsageError("--bit-depth is for PNG output");
+    try {
+        parse_aovs(options.aovs);
+    } catch (const std::invalid_argument& error) {
+        throw UsageError(error.what());
+    }
 }
 
 // Renders `request` (render_still: the kernel, float or double), writes the PNG, prints the
@@ -115,16 +124,43 @@ void render_to_file(const Scene& scene, const FrameRequest& request, const Compu
     settings.effects = apply_effect_changes(scene.effects, options.effect_changes);
     settings.stats = options.stats;
     settings.precision = options.precision;
+    settings.mode = chosen_mode(options.mode, scene);
     FrameRequest reported = request;
-    if (request.samples >= 8) {
+    if (!options.samples && settings.mode == RenderMode::Path) reported.samples = kPathSamples;
+    if (settings.mode == RenderMode::Path) {
+        reported.path = chosen_path_settings(options.mode, scene);
+        if (reported.path.radiance_clamp > 0.0f) {
+            spdlog::warn("radiance clamped to {:g} per sample: fireflies go, and so does some "
+                         "energy (the image is biased)", reported.path.radiance_clamp);
+        }
+    }
+    if (options.time_limit) {
+        const auto until = std::chrono::steady_clock::now() +
+                           std::chrono::duration_cast<std::chrono::steady_clock::duration>(
+                               std::chrono::duration<double>(*options.time_limit));
+        reported.enough = [until] { return std::chrono::steady_clock::now() >= until; };
+    }
+    if (reported.samples >= 8) {
         // Long multi-sample renders say how far they are, about every tenth of the way.
-        reported.on_sample = [step = std::max(1, request.samples / 10)](int done, int total) {
+        reported.on_sample = [step = std::max(1, reported.samples / 10)](int done, int total) {
             if (done % step == 0 || done == total) spdlog::info("sample {}/{}", done, total);
         };
     }
     const Frame frame = render_still(scene, reported, device, cache, settings);
     fmt::print("render_ms {:.1f}\n", frame.render_ms);
     fmt::print("hits {}\n", frame.hits);
+    fmt::print("samples_per_pixel {}\n", frame.samples);
+    if (frame.samples < reported.samples) {
+        spdlog::info("--time-limit {:g} s reached after {} of {} samples per pixel",
+                     *options.time_limit, frame.samples, reported.samples);
+    }
+    fmt::print("samples_per_second {:.0f}\n",
+               double(frame.samples) * request.width * request.height /
+                   std::max(frame.render_ms / 1000.0, 1e-9));
+    if (frame.lane_stats) {
+        fmt::print("lane_utilisation {:.3f} ({} rays per work-item)\n",
+                   frame.lane_stats->utilisation(), frame.lane_stats->packet_width);
+    }
     if (frame.stats) {
         const MarchStats& stats = *frame.stats;
         fmt::print("steps_per_pixel {:.2f} (max {})\n", stats.mean_steps, stats.max_steps);
@@ -135,7 +171,7 @@ void render_to_file(const Scene& scene, const FrameRequest& request, const Compu
     }
     try {
         write_still(output, frame, options.bit_depth,
-                    param_value(scene, request.params, "exposure"));
+                    param_value(scene, request.params, "exposure"), parse_aovs(options.aovs));
     } catch (const std::runtime_error& error) {
         throw RuntimeFailure(error.what());
     }
@@ -148,7 +184,7 @@ FrameRequest default_request(const Scene& scene, const RenderOptions& options) {
     request.height = options.height;
     request.view = scene.cameras.front().view;
     request.params = default_param_values(scene);
-    request.samples = options.samples;
+    request.samples = options.samples.value_or(1);
     return request;
 }
 
@@ -176,10 +212,11 @@ int render_all(const RenderOptions& options) {
 
 void add_render_command(CLI::App& app, RenderOptions& options) {
     CLI::App* render = app.add_subcommand(
-        "render", "render one image of a scene to a PNG file, or every scene's default view");
+        "render", "render one image of a scene to a PNG or EXR file, or every scene's default view");
     render->add_option("scene", options.scene, "scene id (see `fgr list`)");
     render->add_flag("--all", options.all, "render every scene's default view into the directory -o");
-    render->add_option("-o,--output", options.output, "output PNG file (a directory with --all)")
+    render->add_option("-o,--output", options.output,
+                       "output .png (tone-mapped) or .exr (linear) file; a directory with --all")
         ->required();
     render->add_option("--width", options.width, "image width in pixels")
         ->check(CLI::Range(1, kMaxImageSide));
@@ -193,11 +230,19 @@ void add_render_command(CLI::App& app, RenderOptions& options) {
     path->excludes(camera);
     render->add_option("--time", options.time, "time along the camera path, in seconds");
     render->add_option("--spp", options.samples,
-                       "samples per pixel, jittered and averaged: anti-aliasing, depth of field")
+                       "samples per pixel, jittered and averaged: anti-aliasing, depth of field, "
+                       "and the path tracer's estimate (default 1; 64 with --mode path)")
         ->check(CLI::Range(1, kMaxSamples));
+    render->add_option("--time-limit", options.time_limit,
+                       "stop adding samples after this many seconds and write what is done")
+        ->check(CLI::PositiveNumber);
     render->add_option("--bit-depth", options.bit_depth,
                        "8: tone-mapped sRGB PNG (default); 16: linear 16-bit PNG (exposure only)")
         ->check(CLI::IsMember({8, 16}));
+    render->add_option("--aov", options.aovs,
+                       "EXR layers beside the linear image: albedo,normal,depth,alpha "
+                       "(albedo and normal need --mode path)");
+    add_mode_options(render, options.mode);
     render->add_option("--effects", options.effect_changes,
                        "change the scene's effects, e.g. +shadows,-ambient_occlusion");
     add_precision_option(render, options.precision,

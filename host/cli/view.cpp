@@ -10,6 +10,7 @@
 
 #include "commands.hpp"
 #include "fgr/camera_path_file.hpp"
+#include "fgr/hdr_io.hpp"
 #include "fgr/kernel_assembly.hpp"
 #include "fgr/renderer.hpp"
 
@@ -66,6 +67,7 @@ void add_view_command(CLI::App& app, ViewCommandOptions& options) {
     add_precision_option(view, viewer.precision,
                          "while the view is finer than float resolves (flying in deep), per frame");
     add_device_options(view, viewer.device, viewer.packet_width);
+    add_mode_options(view, options.mode);
 }
 
 int command_view(ViewCommandOptions& options) {
@@ -83,6 +85,23 @@ int command_view(ViewCommandOptions& options) {
             throw UsageError("--camera-path must name a .json file saved by the viewer");
         }
         viewer.camera_path_file = options.camera_path_file;
+    }
+    if (options.mode.mode) {
+        try {
+            viewer.mode = parse_render_mode(*options.mode.mode);
+        } catch (const std::invalid_argument& error) {
+            throw UsageError(error.what());
+        }
+    }
+    viewer.path = path_settings_from(options.mode);
+    viewer.environment = environment_choice_from(options.mode);
+    if (viewer.environment.kind == EnvironmentKind::File) {
+        // A bad file is refused before a window opens.
+        try {
+            read_hdr_image(viewer.environment.file);
+        } catch (const std::runtime_error& error) {
+            throw RuntimeFailure(error.what());
+        }
     }
     if (!options.replay.empty()) viewer.replay = options.replay;
     if (options.exit_after > 0.0) viewer.exit_after_seconds = options.exit_after;

@@ -54,16 +54,19 @@ json figures_json(const RunFigures& run) {
     return {{"frames", run.frames},     {"seconds", run.seconds},   {"min_ms", run.min_ms},
             {"max_ms", run.max_ms},     {"mean_ms", run.mean_ms},   {"mean_fps", run.mean_fps},
             {"min_fps", run.min_fps},   {"max_fps", run.max_fps},
-            {"double_frames", run.double_frames}};
+            {"double_frames", run.double_frames},
+            {"samples_per_second", run.samples_per_second}};
 }
 
 std::string csv_row(const std::string& label, const BenchReport& report, const RunFigures& run) {
     return fmt::format(
-        "{},{},{},{},{},{:.3f},{:.3f},{:.3f},{:.3f},{:.3f},{:.3f},{:.3f},{:.1f},{},{},{:.1f}\n",
+        "{},{},{},{},{},{:.3f},{:.3f},{:.3f},{:.3f},{:.3f},{:.3f},{:.3f},{:.1f},{},{},{:.1f},{},"
+        "{:.0f}\n",
         report.scene, label, report.settings.width, report.settings.height, run.frames,
         run.seconds, run.min_ms, run.max_ms, run.mean_ms, run.mean_fps, run.min_fps, run.max_fps,
         report.build_ms, precision_name(report.settings.precision), run.double_frames,
-        report.double_build_ms);
+        report.double_build_ms, render_mode_name(report.settings.render_mode),
+        run.samples_per_second);
 }
 
 std::string origin_name(BuildReport::Origin origin) {
@@ -83,7 +86,7 @@ struct BenchRenderers {
         : renderers(device, cache, scene,
                     {settings.packet_width ? settings.packet_width
                                            : preferred_packet_width(device.info),
-                     scene.effects}),
+                     scene.effects, false, false, settings.render_mode}),
           chooser(device.info, [](const std::string& warning) { spdlog::warn("{}", warning); }) {}
 
     PrecisionRenderers renderers;
@@ -112,6 +115,7 @@ RunFigures bench_run(const CameraPath& path, const Scene& scene, const BenchSett
     request.height = settings.height;
     request.params = default_param_values(scene);
     request.samples = settings.samples;
+    request.path = settings.path_tracing;
     const float start_time = path.keyframes.front().time;
     std::vector<double> frame_ms;
     int double_frames = 0;
@@ -157,6 +161,9 @@ RunFigures bench_run(const CameraPath& path, const Scene& scene, const BenchSett
     RunFigures run =
         summarise_run(frame_ms, std::chrono::duration<double>(Clock::now() - start).count());
     run.double_frames = double_frames;
+    run.samples_per_second = run.seconds > 0.0 ? double(run.frames) * settings.samples *
+                                                     settings.width * settings.height / run.seconds
+                                               : 0.0;
     return run;
 }
 
@@ -190,6 +197,7 @@ RunFigures average_runs(const std::vector<RunFigures>& runs) {
         mean.max_ms += run.max_ms / n;
         mean.mean_ms += run.mean_ms / n;
         mean.mean_fps += run.mean_fps / n;
+        mean.samples_per_second += run.samples_per_second / n;
         mean.min_fps += run.min_fps / n;
         mean.max_fps += run.max_fps / n;
     }
@@ -269,6 +277,7 @@ std::string bench_json(const BenchReport& report) {
           {"duration_seconds", report.settings.frames ? 0.0 : report.settings.duration_seconds},
           {"runs", report.settings.runs},
           {"samples_per_pixel", report.settings.samples},
+          {"render_mode", render_mode_name(report.settings.render_mode)},
           {"precision", precision_name(report.settings.precision)}}},
         {"kernel_build_ms", report.build_ms},
         {"kernel_build_origin", report.build_origin},
@@ -294,7 +303,8 @@ std::string bench_json(const BenchReport& report) {
 std::string bench_csv(const BenchReport& report) {
     std::string csv =
         "scene,run,width,height,frames,seconds,min_ms,max_ms,mean_ms,mean_fps,min_fps,max_fps,"
-        "kernel_build_ms,precision,double_frames,double_kernel_build_ms\n";
+        "kernel_build_ms,precision,double_frames,double_kernel_build_ms,render_mode,"
+        "samples_per_second\n";
     for (size_t i = 0; i < report.runs.size(); ++i) {
         csv += csv_row(std::to_string(i + 1), report, report.runs[i]);
     }
@@ -323,23 +333,25 @@ std::string kernel_builds(const BenchReport& report) {
 std::string bench_table(const BenchReport& report) {
     const SystemInfo& system = report.system;
     std::string table = fmt::format(
-        "scene {} along '{}' ({:.1f} s), {}x{}, {} spp, precision {}, {}\n"
+        "scene {} along '{}' ({:.1f} s), {}x{}, {} mode, {} spp, precision {}, {}\n"
         "system: {}; {} ({} threads), {:.1f} GiB\n"
         "OpenCL: {} / {} ({}, {} compute units, {} MiB)\n\n",
         report.scene, report.path, report.path_seconds, report.settings.width,
-        report.settings.height, report.settings.samples,
+        report.settings.height, render_mode_name(report.settings.render_mode),
+        report.settings.samples,
         precision_name(report.settings.precision), kernel_builds(report), system.os, system.cpu,
         system.cpu_threads, double(system.memory_bytes) / double(1ull << 30),
         system.device.platform, system.device.name, system.device.version,
         system.device.compute_units, system.device.global_memory_bytes >> 20);
-    table += fmt::format("{:>8} {:>7} {:>8} {:>9} {:>9} {:>9} {:>8} {:>8} {:>8} {:>7}\n", "run",
-                         "frames", "seconds", "min ms", "mean ms", "max ms", "avg fps",
-                         "min fps", "max fps", "double");
+    table += fmt::format("{:>8} {:>7} {:>8} {:>9} {:>9} {:>9} {:>8} {:>8} {:>8} {:>7} {:>12}\n",
+                         "run", "frames", "seconds", "min ms", "mean ms", "max ms", "avg fps",
+                         "min fps", "max fps", "double", "samples/s");
     const auto row = [&](const std::string& label, const RunFigures& run) {
         table += fmt::format("{:>8} {:>7} {:>8.2f} {:>9.1f} {:>9.1f} {:>9.1f} {:>8.2f} {:>8.2f} "
-                             "{:>8.2f} {:>7}\n",
+                             "{:>8.2f} {:>7} {:>12.0f}\n",
                              label, run.frames, run.seconds, run.min_ms, run.mean_ms, run.max_ms,
-                             run.mean_fps, run.min_fps, run.max_fps, run.double_frames);
+                             run.mean_fps, run.min_fps, run.max_fps, run.double_frames,
+                             run.samples_per_second);
     };
     for (size_t i = 0; i < report.runs.size(); ++i) row(std::to_string(i + 1), report.runs[i]);
     if (report.runs.size() > 1) row("average", report.average);

@@ -241,17 +241,24 @@ Frame Renderer::render(const FrameRequest& request) {
         device_.queue.enqueueFillBuffer(planes, 0.0f, 0, sizeof(float) * 3 * plane);
         device_.queue.enqueueFillBuffer(planes, -1.0f, sizeof(float) * 3 * plane,
                                         sizeof(float) * plane);
+        if (plane_count > kCommonPlanes) {
+            device_.queue.enqueueFillBuffer(planes, 0.0f, sizeof(float) * kCommonPlanes * plane,
+                                            sizeof(float) * (plane_count - kCommonPlanes) * plane);
+        }
     }
-    for (int done = 0; done < request.samples; ++done) {
+    int done = 0;
+    while (done < request.samples) {
         render_kernel_.setArg(4, request.first_sample + done);
         if (!launch_tiles(tiles, group, request.cancel)) {
             Frame cancelled;
             cancelled.cancelled = true;
             return cancelled;
         }
-        if (request.on_sample) {
+        ++done;
+        if (request.on_sample || request.enough) {
             device_.queue.finish();  // report each sample as it completes
-            request.on_sample(done + 1, request.samples);
+            if (request.on_sample) request.on_sample(done, request.samples);
+            if (request.enough && done < request.samples && request.enough()) break;
         }
     }
     std::vector<float> host(static_cast<size_t>(plane) * plane_count);
@@ -261,7 +268,8 @@ Frame Renderer::render(const FrameRequest& request) {
     frame.double_precision = switches_.double_precision;
     frame.depth.resize(static_cast<size_t>(request.width) * request.height);
     frame.linear.resize(frame.depth.size() * 3);
-    const float average = 1.0f / static_cast<float>(request.samples);
+    frame.samples = done;
+    const float average = 1.0f / static_cast<float>(done);
     for (int y = 0; y < request.height; ++y) {
         for (int x = 0; x < request.width; ++x) {
             const size_t source = layout.index(x, y);
@@ -275,7 +283,7 @@ Frame Renderer::render(const FrameRequest& request) {
         }
     }
     frame.image = display_image(scene_, request.params, frame.linear, request.width, request.height);
-    if (request.first_sample == 0) mode_->read_back(host, layout, request.samples, frame);
+    mode_->read_back(host, layout, request, done, frame);
     frame.render_ms = elapsed_ms(start);
     return frame;
 }

@@ -1,6 +1,10 @@
 #include "fgr/still_image.hpp"
 
+#include <algorithm>
+#include <cctype>
 #include <cmath>
+#include <limits>
+#include <vector>
 #include <cstddef>
 #include <stdexcept>
 #include <string>
@@ -8,6 +12,7 @@
 #include <fmt/format.h>
 #include <spdlog/spdlog.h>
 
+#include "fgr/hdr_io.hpp"
 #include "fgr/image_io.hpp"
 #include "fgr/kernel_assembly.hpp"
 #include "fgr/view_validation.hpp"
@@ -22,14 +27,15 @@ Frame render_still(const Scene& scene, const FrameRequest& request, const Comput
     }
     const KernelSwitches in_float{
         settings.packet_width ? settings.packet_width : preferred_packet_width(device.info),
-        settings.effects, settings.stats};
+        settings.effects, settings.stats, false, settings.mode};
     PrecisionRenderers renderers(device, cache, scene, in_float);
     const auto build = [&](bool double_precision) -> Renderer& {
         if (Renderer* built = renderers.built(double_precision)) return *built;
         const KernelSwitches switches = with_precision(in_float, double_precision);
-        spdlog::info("building '{}' for {} ({} rays per work-item, {}, effects: {})", scene.id,
-                     device.info.name, switches.packet_width,
-                     double_precision ? "double" : "float", effect_names(switches.effects));
+        spdlog::info("building '{}' for {} ({} mode, {} rays per work-item, {}, effects: {})",
+                     scene.id, device.info.name, render_mode_name(switches.mode),
+                     switches.packet_width, double_precision ? "double" : "float",
+                     effect_names(switches.effects));
         Renderer& built = renderers.get(double_precision);
         spdlog::info("kernel ready in {:.0f} ms", built.build_report().build_ms);
         return built;
@@ -65,9 +71,75 @@ long non_finite_pixels(const Frame& frame) {
     return broken;
 }
 
+Aovs parse_aovs(std::string_view list) {
+    Aovs aovs;
+    size_t start = 0;
+    while (start <= list.size()) {
+        const size_t comma = std::min(list.find(',', start), list.size());
+        const std::string_view name = list.substr(start, comma - start);
+        start = comma + 1;
+        if (name.empty()) continue;
+        if (name == "albedo") {
+            aovs.albedo = true;
+        } else if (name == "normal") {
+            aovs.normal = true;
+        } else if (name == "depth") {
+            aovs.depth = true;
+        } else if (name == "alpha") {
+            aovs.alpha = true;
+        } else {
+            throw std::invalid_argument(
+                fmt::format("unknown --aov layer '{}' (choose from albedo,normal,depth,alpha)",
+                            name));
+        }
+    }
+    return aovs;
+}
+
+namespace {
+
+std::string lower_extension(const std::filesystem::path& path) {
+    std::string extension = path.extension().string();
+    for (char& c : extension) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
+    return extension;
+}
+
+void write_exr_still(const std::filesystem::path& path, const Frame& frame, const Aovs& aovs) {
+    const int width = frame.image.width, height = frame.image.height;
+    const size_t pixels = static_cast<size_t>(width) * static_cast<size_t>(height);
+    std::vector<ExrLayer> layers{{"", {"R", "G", "B"}, frame.linear}};
+    if ((aovs.albedo && frame.albedo.size() != pixels * 3) ||
+        (aovs.normal && frame.normal.size() != pixels * 3)) {
+        throw std::invalid_argument("albedo and normal layers come from --mode path only");
+    }
+    if (aovs.albedo) layers.push_back({"albedo", {"R", "G", "B"}, frame.albedo});
+    if (aovs.normal) layers.push_back({"normal", {"X", "Y", "Z"}, frame.normal});
+    if (aovs.depth) {
+        ExrLayer depth{"depth", {"Z"}, frame.depth};
+        for (float& z : depth.values) {
+            if (z < 0.0f) z = std::numeric_limits<float>::infinity();
+        }
+        layers.push_back(std::move(depth));
+    }
+    if (aovs.alpha) {
+        // Path mode averages coverage over its samples; a shaded frame has its hits.
+        std::vector<float> alpha = frame.alpha;
+        if (alpha.size() != pixels) {
+            alpha.resize(pixels);
+            for (size_t i = 0; i < pixels; ++i) alpha[i] = frame.depth[i] >= 0.0f ? 1.0f : 0.0f;
+        }
+        layers.push_back({"", {"A"}, std::move(alpha)});
+    }
+    write_exr(path, width, height, layers);
+}
+
+}  // namespace
+
 void write_still(const std::filesystem::path& path, const Frame& frame, int bit_depth,
-                 float exposure) {
-    if (bit_depth == 16) {
+                 float exposure, const Aovs& aovs) {
+    if (lower_extension(path) == ".exr") {
+        write_exr_still(path, frame, aovs);
+    } else if (bit_depth == 16) {
         write_png16_linear(path, linear_image16(frame, exposure));
     } else {
         write_png(path, frame.image);

@@ -1,4 +1,4 @@
-/* @SCENE_NAME@ (@SCENE_ID@): the distance estimator and the colour.
+/* @SCENE_NAME@ (@SCENE_ID@): the distance estimator, the colour and the material.
  *
  * fgr evaluates many rays at once, so `real` is a float or a vector of floats and `vec3` holds
  * one of them per axis; write the maths once with the v3_* helpers and it runs on CPUs (16 rays
@@ -21,4 +21,15 @@ vec3 scene_colour(vec3 p, PARAMS) {
     real t = clamp(0.5f + 1.5f * wave, 0.0f, 1.0f);
     vec3 white = v3_splat(0.9f, 0.9f, 0.88f);
     return v3_add(v3_scale(white, 1.0f - t), v3_scale(param_tint, t));
+}
+
+/* The material the path tracer (`fgr render --mode path`) shades with: the same colour as a
+ * satin plastic (a diffuse base under a faint glossy coat). Without this function the path
+ * tracer uses diffuse_material(scene_colour(p)); the fields are explained in fgr's SDK guide. */
+#define FGR_SCENE_HAS_MATERIAL
+material scene_material(vec3 p, PARAMS) {
+    material m = diffuse_material(scene_colour(p, PARAMS_PASS));
+    m.specular = v3_splat(0.04f, 0.04f, 0.04f);
+    m.roughness = fgr_real(0.4f);
+    return m;
 }

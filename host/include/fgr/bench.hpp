@@ -15,8 +15,10 @@
 #include <vector>
 
 #include "fgr/opencl_device.hpp"
+#include "fgr/path_settings.hpp"
 #include "fgr/precision.hpp"
 #include "fgr/program_cache.hpp"
+#include "fgr/render_mode.hpp"
 #include "fgr/scene.hpp"
 
 namespace fgr {
@@ -30,6 +32,8 @@ struct BenchSettings {
     int samples = 1;                 // per pixel
     int packet_width = 0;            // 0: the device's preference
     Precision precision = Precision::Auto;
+    RenderMode render_mode = RenderMode::Shaded;
+    PathSettings path_tracing;       // render_mode Path: bounces, strategies, environment
     std::string path;                // camera path; empty: "benchmark" if the scene has it, else the first
     // Called after every frame with the view rendered, its time on the camera path (in the
     // keyframes' seconds) and its render time in ms, when set: what was played, for tests.
@@ -44,6 +48,7 @@ struct RunFigures {
     double min_fps = 0.0;   // 1000 / max_ms
     double max_fps = 0.0;   // 1000 / min_ms
     int double_frames = 0;  // frames rendered in double
+    double samples_per_second = 0.0;  // pixel samples (frames x spp x pixels) per second
 };
 
 struct SystemInfo {

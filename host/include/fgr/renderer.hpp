@@ -12,6 +12,7 @@
 
 #include "fgr/image_io.hpp"
 #include "fgr/kernel_assembly.hpp"
+#include "fgr/path_settings.hpp"
 #include "fgr/opencl_device.hpp"
 #include "fgr/program_cache.hpp"
 #include "fgr/scene.hpp"
@@ -35,6 +36,11 @@ struct FrameRequest {
     // Polled between bands of tiles, when set: returning true abandons the frame (Frame::cancelled),
     // so an interactive caller never waits for a slow frame it no longer wants.
     std::function<bool()> cancel{};
+    // Render mode "path" only: bounces, strategies and the environment.
+    PathSettings path{};
+    // Polled after each finished sample, when set: returning true ends the render there with the
+    // samples done so far (Frame::samples), e.g. at a time budget.
+    std::function<bool()> enough{};
 };
 
 // The primary rays' work, from sample 0 of a render built with KernelSwitches::stats.
@@ -47,6 +53,20 @@ struct MarchStats {
     double out_of_steps_percent() const { return pixels ? 100.0 * double(out_of_steps) / double(pixels) : 0.0; }
 };
 
+// How busy the lanes of a packet are (path mode with stats): the DE evaluations lanes took part
+// in, against those the packets made times their width. Coherent camera rays keep packets full;
+// diffuse bounces scatter the lanes, which then wait for each other.
+struct LaneStats {
+    int packet_width = 1;
+    double lane_evaluations = 0.0;    // per lane that needed it
+    double packet_evaluations = 0.0;  // per packet (each costs packet_width lanes)
+    double utilisation() const {
+        return packet_evaluations > 0.0
+                   ? lane_evaluations / (packet_evaluations * double(packet_width))
+                   : 0.0;
+    }
+};
+
 struct Frame {
     Image8 image;               // sRGB, gamma-encoded
     std::vector<float> linear;  // row-major linear RGB, averaged over samples, before exposure
@@ -57,6 +77,14 @@ struct Frame {
     bool cancelled = false;     // FrameRequest::cancel stopped it: no pixels
     bool double_precision = false;  // rendered with double lanes (KernelSwitches)
     std::optional<MarchStats> stats;  // when the renderer was built with stats
+    int samples = 0;            // per pixel in this frame (fewer than asked when `enough` said so)
+    // Render mode "path": the first hit's albedo and shading normal (row-major RGB / XYZ) and
+    // coverage (1 where the camera ray met the surface), averaged over the samples, for
+    // compositing and denoising (EXR layers).
+    std::vector<float> albedo;
+    std::vector<float> normal;
+    std::vector<float> alpha;
+    std::optional<LaneStats> lane_stats;  // path mode built with stats
 };
 
 // Image sizes fgr accepts; larger would not fit device buffers on small machines.

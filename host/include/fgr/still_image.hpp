@@ -1,13 +1,16 @@
 #pragma once
 // One still image of a scene, as `fgr render` makes it: the scene's kernel built with the
-// requested switches, float or double chosen for the view, the frame rendered and written as PNG.
+// requested switches and render mode, float or double chosen for the view, the frame rendered and
+// written as PNG or EXR.
 
 #include <cstdint>
 #include <filesystem>
+#include <string_view>
 
 #include "fgr/opencl_device.hpp"
 #include "fgr/precision.hpp"
 #include "fgr/program_cache.hpp"
+#include "fgr/render_mode.hpp"
 #include "fgr/renderer.hpp"
 #include "fgr/scene.hpp"
 
@@ -18,7 +21,23 @@ struct StillSettings {
     uint64_t effects = 0;   // fgr_effect_flag bits compiled in
     bool stats = false;     // count the primary rays' work (Frame::stats)
     Precision precision = Precision::Auto;
+    RenderMode mode = RenderMode::Shaded;
 };
+
+// Samples per pixel a path-traced still takes unless told otherwise.
+constexpr int kPathSamples = 64;
+
+// Auxiliary layers an EXR still carries beside its linear image.
+struct Aovs {
+    bool albedo = false;  // the first hit's albedo (path mode)
+    bool normal = false;  // the first hit's shading normal (path mode)
+    bool depth = false;   // distance along the camera ray; +Inf where it missed
+    bool alpha = false;   // coverage: 1 where the camera ray met the surface
+};
+
+// "albedo,normal,depth,alpha" (any subset, any order; "" for none). Throws std::invalid_argument
+// naming an unknown layer.
+Aovs parse_aovs(std::string_view list);
 
 // Builds the scene's kernel (logging what it builds and how long it took) and renders `request`.
 // Float or double as PrecisionChooser decides for the view (Auto: auto_wants_double, with the DE
@@ -32,9 +51,12 @@ Frame render_still(const Scene& scene, const FrameRequest& request, const Comput
 // Pixels of `frame` whose linear colour or depth is NaN or infinite.
 long non_finite_pixels(const Frame& frame);
 
-// Writes `frame` as a PNG: bit_depth 8, the tone-mapped sRGB image; 16, its linear colour times
-// `exposure` in a linear 16-bit PNG. Atomic and throwing like write_png.
+// Writes `frame` by the file's extension. PNG: bit_depth 8, the tone-mapped sRGB image; 16, its
+// linear colour times `exposure` in a linear 16-bit PNG. EXR: the linear colour as rendered
+// (scene-referred: no exposure, no tone mapping) in 32-bit float channels R, G, B, plus the
+// layers `aovs` asks for (albedo.R/G/B, normal.X/Y/Z, depth.Z, A). Atomic; throws
+// std::runtime_error (and std::invalid_argument for a layer the frame does not have).
 void write_still(const std::filesystem::path& path, const Frame& frame, int bit_depth,
-                 float exposure);
+                 float exposure, const Aovs& aovs = {});
 
 }  // namespace fgr

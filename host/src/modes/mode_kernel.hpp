@@ -31,8 +31,8 @@ public:
 
     // Fills what the mode adds to a frame from the planes read back (plane p of pixel (x, y) at
     // planes[p * layout.plane_size() + layout.index(x, y)]), `samples` samples summed in them.
-    virtual void read_back(const std::vector<float>& planes, const TileLayout& layout, int samples,
-                           Frame& frame) const = 0;
+    virtual void read_back(const std::vector<float>& planes, const TileLayout& layout,
+                           const FrameRequest& request, int samples, Frame& frame) const = 0;
 };
 
 // A read-only device buffer holding `values` (one unused float when empty).

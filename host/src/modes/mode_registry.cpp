@@ -1,6 +1,9 @@
 // Which host module serves which render mode.
 #include "modes/mode_kernel.hpp"
+#include "modes/path_mode.hpp"
 #include "modes/shaded_mode.hpp"
+
+#include <stdexcept>
 
 namespace fgr {
 
@@ -15,9 +18,9 @@ std::unique_ptr<ModeKernel> make_mode_kernel(RenderMode mode, const ComputeDevic
                                              const Scene& scene) {
     switch (mode) {
         case RenderMode::Shaded: return std::make_unique<ShadedMode>(device, scene);
-        case RenderMode::Path: break;
+        case RenderMode::Path: return std::make_unique<PathMode>(device, scene);
     }
-    return std::make_unique<ShadedMode>(device, scene);
+    throw std::invalid_argument("unknown render mode");
 }
 
 }  // namespace fgr

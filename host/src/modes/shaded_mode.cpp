@@ -60,9 +60,11 @@ void ShadedMode::bind(cl::Kernel& kernel, const FrameRequest&) {
     kernel.setArg(kFirstModeArgument + 1, light_count_);
 }
 
-void ShadedMode::read_back(const std::vector<float>& planes, const TileLayout& layout, int,
-                           Frame& frame) const {
-    if (planes.size() < static_cast<size_t>(layout.plane_size()) * 6) return;  // no stats planes
+void ShadedMode::read_back(const std::vector<float>& planes, const TileLayout& layout,
+                           const FrameRequest& request, int, Frame& frame) const {
+    // Stats come from sample 0 (a request starting later has none), when built with them.
+    if (request.first_sample > 0) return;
+    if (planes.size() < static_cast<size_t>(layout.plane_size()) * 6) return;
     const int width = frame.image.width, height = frame.image.height;
     frame.stats = march_stats(planes, layout, width, height);
 }

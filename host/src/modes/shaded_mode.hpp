@@ -9,8 +9,8 @@ public:
     ShadedMode(const ComputeDevice& device, const Scene& scene);
     int extra_planes(const KernelSwitches& switches) const override;
     void bind(cl::Kernel& kernel, const FrameRequest& request) override;
-    void read_back(const std::vector<float>& planes, const TileLayout& layout, int samples,
-                   Frame& frame) const override;
+    void read_back(const std::vector<float>& planes, const TileLayout& layout,
+                   const FrameRequest& request, int samples, Frame& frame) const override;
 
 private:
     cl::Buffer lights_;

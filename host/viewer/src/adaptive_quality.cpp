@@ -27,7 +27,7 @@ float lowest_scale(const QualitySettings& settings) {
 QualityController::QualityController(QualitySettings settings) : settings_(settings) {}
 
 RenderPass QualityController::next_pass(bool interactive, int samples_done,
-                                        int64_t full_pixels) const {
+                                        int64_t full_pixels, int sample_cap) const {
     RenderPass pass;
     if (interactive) {
         pass.kind = RenderPass::Kind::Preview;
@@ -35,7 +35,7 @@ RenderPass QualityController::next_pass(bool interactive, int samples_done,
         return pass;
     }
     // A still view always gets its full-resolution centre sample, whatever the cap says.
-    const int cap = std::max(settings_.sample_cap, 1);
+    const int cap = std::max(sample_cap > 0 ? sample_cap : settings_.sample_cap, 1);
     const int next_sample = std::max(samples_done, 0);
     if (next_sample < cap) {
         pass.kind = RenderPass::Kind::Refine;

@@ -18,7 +18,12 @@ FrameRequest frame_request(const ViewState& state, int width, int height) {
     request.height = height;
     request.view = state.view;
     request.params = state.params;
+    request.path = state.path;
     return request;
+}
+
+double samples_per_second(int width, int height, double render_ms) {
+    return render_ms > 0.0 ? double(width) * double(height) * 1000.0 / render_ms : 0.0;
 }
 
 }  // namespace
@@ -177,9 +182,9 @@ void RenderWorker::run() {
 }
 
 Renderer* RenderWorker::build_renderer(const std::shared_ptr<const Scene>& scene,
-                                       uint64_t effects, bool double_precision,
+                                       uint64_t effects, bool double_precision, RenderMode mode,
                                        std::pair<std::string, std::string>* failure) {
-    const RendererKey key{scene.get(), effects, double_precision};
+    const RendererKey key{scene.get(), effects, double_precision, mode};
     if (auto found = renderers_.find(key); found != renderers_.end()) {
         return found->second.renderer.get();
     }
@@ -197,10 +202,11 @@ Renderer* RenderWorker::build_renderer(const std::shared_ptr<const Scene>& scene
     try {
         renderer = std::make_unique<Renderer>(
             device_, cache_, *scene,
-            with_precision(KernelSwitches{packet_width_, effects}, double_precision));
-        spdlog::info("kernel for '{}' (effects: {}, {}) ready in {:.0f} ms", scene->id,
-                     effect_names(effects), double_precision ? "double" : "float",
-                     renderer->build_report().build_ms);
+            with_precision(KernelSwitches{packet_width_, effects, false, false, mode},
+                           double_precision));
+        spdlog::info("kernel for '{}' ({} mode, effects: {}, {}) ready in {:.0f} ms", scene->id,
+                     render_mode_name(mode), effect_names(effects),
+                     double_precision ? "double" : "float", renderer->build_report().build_ms);
     } catch (const KernelBuildError& error) {
         *failure = {fmt::format("scene '{}': {}", scene->id, error.what()), error.build_log()};
     } catch (const cl::Error& error) {
@@ -250,10 +256,11 @@ Renderer* RenderWorker::choose_renderer(const ViewState& state) {
 }
 
 Renderer* RenderWorker::renderer_for(const ViewState& state, bool double_precision) {
-    const RendererKey key{state.scene.get(), state.effects, double_precision};
+    const RendererKey key{state.scene.get(), state.effects, double_precision, state.mode};
     const bool known = renderers_.count(key) || failures_.count(key);
     std::pair<std::string, std::string> failure;
-    Renderer* renderer = build_renderer(state.scene, state.effects, double_precision, &failure);
+    Renderer* renderer =
+        build_renderer(state.scene, state.effects, double_precision, state.mode, &failure);
     std::lock_guard lock(mutex_);
     if (renderer == nullptr && !known) messages_.push_back(failure.first);
     std::tie(status_.error, status_.error_log) = failure;
@@ -263,8 +270,8 @@ Renderer* RenderWorker::renderer_for(const ViewState& state, bool double_precisi
 void RenderWorker::reload(const ReloadRequest& request) {
     std::pair<std::string, std::string> failure;
     // The float kernel decides: a deep view builds the double one when it first needs it.
-    const bool ok =
-        build_renderer(request.candidate, request.effects, false, &failure) != nullptr;
+    const bool ok = build_renderer(request.candidate, request.effects, false,
+                                   RenderMode::Shaded, &failure) != nullptr;
     std::lock_guard lock(mutex_);
     reload_results_.push_back({request, ok, failure.first, failure.second});
     status_.pending_reloads = static_cast<int>(reloads_.size());
@@ -279,7 +286,8 @@ void RenderWorker::render_pass(Renderer& renderer, const ViewState& state) {
     {
         std::lock_guard lock(mutex_);
         pass = quality_.next_pass(state.interactive, accumulated_samples_,
-                                  int64_t{state.width} * state.height);
+                                  int64_t{state.width} * state.height,
+                                  state.mode == RenderMode::Path ? kPathSampleCap : 0);
     }
     switch (pass.kind) {
         case RenderPass::Kind::Preview: render_preview(renderer, state, pass.scale); break;
@@ -300,6 +308,7 @@ void RenderWorker::render_preview(Renderer& renderer, const ViewState& state, fl
         previewed_generation_ = state.generation;
     }
     publish({std::move(frame.image), scale, 1, frame.render_ms,
+             samples_per_second(width, height, frame.render_ms),
              renderer.switches().double_precision, state.generation});
 }
 
@@ -320,6 +329,7 @@ void RenderWorker::refine(Renderer& renderer, const ViewState& state, int sample
         accumulation_ = std::move(frame.linear);
         accumulated_samples_ = 1;
         publish({std::move(frame.image), 1.0f, 1, frame.render_ms,
+                 samples_per_second(state.width, state.height, frame.render_ms),
                  renderer.switches().double_precision, state.generation});
         return;
     }
@@ -327,8 +337,9 @@ void RenderWorker::refine(Renderer& renderer, const ViewState& state, int sample
     ++accumulated_samples_;
     publish({display_image(*state.scene, state.params, accumulation_, state.width, state.height,
                            1.0f / static_cast<float>(accumulated_samples_)),
-             1.0f, accumulated_samples_, frame.render_ms, renderer.switches().double_precision,
-             state.generation});
+             1.0f, accumulated_samples_, frame.render_ms,
+             samples_per_second(state.width, state.height, frame.render_ms),
+             renderer.switches().double_precision, state.generation});
 }
 
 void RenderWorker::take_screenshot(const ScreenshotRequest& request) {

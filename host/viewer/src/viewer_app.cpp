@@ -41,7 +41,12 @@ bool same_image_inputs(const ViewState& a, const ViewState& b) {
            a.height == b.height && a.view.position == b.view.position &&
            a.view.target == b.view.target && a.view.up == b.view.up &&
            a.view.fov_degrees == b.view.fov_degrees && a.params == b.params &&
-           a.precision == b.precision;
+           a.precision == b.precision && a.mode == b.mode &&
+           a.path.environment == b.path.environment && a.path.max_bounces == b.path.max_bounces &&
+           a.path.roulette_depth == b.path.roulette_depth &&
+           a.path.radiance_clamp == b.path.radiance_clamp &&
+           a.path.light_sampling == b.path.light_sampling && a.path.mis == b.path.mis &&
+           a.path.scene_lights == b.path.scene_lights && a.path.seed == b.path.seed;
 }
 
 std::string timestamp() {
@@ -78,6 +83,9 @@ ViewerApp::ViewerApp(const ViewerOptions& options, std::vector<Scene> scenes)
     quality_.target_ms = options.target_ms;
     quality_.sample_cap = options.sample_cap;
     precision_ = options.precision;
+    mode_ = options.mode;
+    path_ = options.path;
+    environment_ = options.environment;
     fullscreen_ = options.fullscreen;
     if (options.camera_path_file) {
         try {
@@ -396,6 +404,22 @@ void ViewerApp::update_playback(double dt) {
     session().camera = FlyCamera::from_view(view);
 }
 
+std::shared_ptr<const PreparedEnvironment> ViewerApp::environment_for_scene() {
+    const Scene* current = &scene();
+    auto found = environments_.find(current);
+    if (found != environments_.end()) return found->second;
+    std::shared_ptr<const PreparedEnvironment> prepared;
+    try {
+        prepared = prepare_environment(environment_, *current);
+    } catch (const std::exception& error) {
+        // A file that stopped being readable: say so and light the scene with the sky instead.
+        add_message(fmt::format("environment: {}; using the sky", error.what()));
+        environment_ = EnvironmentChoice{};
+        prepared = prepare_environment(environment_, *current);
+    }
+    return environments_[current] = prepared;
+}
+
 void ViewerApp::submit_view() {
     int width = 0, height = 0;
     SDL_GL_GetDrawableSize(window_.get(), &width, &height);
@@ -405,6 +429,11 @@ void ViewerApp::submit_view() {
     state.view = session().camera.to_view();
     state.params = session().params;
     state.precision = precision_;
+    state.mode = current_mode();
+    if (state.mode == RenderMode::Path) {
+        state.path = path_;
+        state.path.environment = environment_for_scene();
+    }
     state.width = std::clamp(width, 1, kMaxImageSide);
     state.height = std::clamp(height, 1, kMaxImageSide);
     const double now = seconds_since(start_);

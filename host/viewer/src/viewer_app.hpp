@@ -206,6 +206,8 @@ private:
     void draw_effects_section();
     void draw_quality_section();
     void draw_precision_combo();
+    void draw_mode_section();
+    bool draw_environment_controls();
     void draw_messages();
     void draw_help();
     void draw_build_error();
@@ -247,6 +249,15 @@ private:
     float keyframe_interval_ = 2.0f;
     QualitySettings quality_;
     Precision precision_ = Precision::Auto;
+    // The render mode chosen in the panel (or by --mode); unset: each scene's own.
+    std::optional<RenderMode> mode_;
+    PathSettings path_;  // path mode's settings; the environment is prepared per scene
+    EnvironmentChoice environment_;
+    // The environment prepared for each scene (the sky's sun follows the scene's key light),
+    // dropped when the choice changes.
+    std::map<const Scene*, std::shared_ptr<const PreparedEnvironment>> environments_;
+    RenderMode current_mode() const { return mode_.value_or(scene().default_mode); }
+    std::shared_ptr<const PreparedEnvironment> environment_for_scene();
 
     ViewState last_state_;
     bool submitted_ = false;

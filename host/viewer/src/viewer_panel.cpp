@@ -12,6 +12,7 @@
 #include "fgr/parameters.hpp"
 #include "fgr/plugin.h"
 #include "fgr/precision.hpp"
+#include "fgr/render_mode.hpp"
 
 namespace fgr::viewer {
 namespace {
@@ -85,9 +86,15 @@ void ViewerApp::draw_status_overlay() {
     ImGui::Begin("##status", nullptr, flags);
     ImGui::Text("%s  %dx%d", scene().id.c_str(), last_state_.width, last_state_.height);
     if (shown_) {
+        const bool path = last_state_.mode == RenderMode::Path;
         ImGui::Text("resolution %.0f%%  samples %d/%d  frame %.0f ms  %s",
-                    shown_->scale * 100.0f, shown_->samples, quality_.sample_cap,
-                    shown_->render_ms, precision_label(precision_, shown_->double_precision));
+                    shown_->scale * 100.0f, shown_->samples,
+                    path ? kPathSampleCap : quality_.sample_cap, shown_->render_ms,
+                    precision_label(precision_, shown_->double_precision));
+        if (path) {
+            ImGui::Text("path tracing: %d samples/pixel, %.2f M samples/s", shown_->samples,
+                        shown_->samples_per_second / 1e6);
+        }
     }
     if (status_.compiling) {
         ImGui::TextColored(ImVec4(1, 0.8f, 0.2f, 1), "compiling %s%s...",
@@ -120,6 +127,7 @@ void ViewerApp::draw_panel() {
     draw_camera_section();
     draw_params_section();
     draw_effects_section();
+    draw_mode_section();
     draw_quality_section();
     ImGui::PopItemWidth();
     draw_messages();
@@ -310,6 +318,88 @@ void ViewerApp::draw_quality_section() {
         toggle_fullscreen();
     }
     ImGui::TextDisabled("device: %s", worker_->device_info().name.c_str());
+}
+
+void ViewerApp::draw_mode_section() {
+    if (!ImGui::CollapsingHeader("Render mode", ImGuiTreeNodeFlags_DefaultOpen)) return;
+    const RenderMode current = current_mode();
+    if (ImGui::BeginCombo("mode", std::string(render_mode_name(current)).c_str())) {
+        for (const RenderModeInfo& info : render_modes()) {
+            if (ImGui::Selectable(std::string(info.name).c_str(), info.mode == current)) {
+                mode_ = info.mode;
+            }
+            if (ImGui::IsItemHovered()) ImGui::SetTooltip("%s", std::string(info.summary).c_str());
+        }
+        ImGui::EndCombo();
+    }
+    if (current != RenderMode::Path) return;
+    ImGui::TextDisabled("accumulates while the camera stands still");
+    if (draw_environment_controls()) environments_.clear();
+    ImGui::SliderInt("bounces", &path_.max_bounces, 0, 32);
+    ImGui::Checkbox("light sampling", &path_.light_sampling);
+    ImGui::SameLine();
+    ImGui::Checkbox("MIS", &path_.mis);
+    ImGui::Checkbox("scene lights", &path_.scene_lights);
+    if (ImGui::IsItemHovered()) {
+        ImGui::SetTooltip("the scene's own lights shine besides the environment");
+    }
+}
+
+// The environment's controls; true when the choice changed (its maps are then made again).
+bool ViewerApp::draw_environment_controls() {
+    static constexpr std::pair<EnvironmentKind, const char*> kinds[] = {
+        {EnvironmentKind::Sky, "sky"},
+        {EnvironmentKind::Studio, "studio"},
+        {EnvironmentKind::Uniform, "uniform"},
+        {EnvironmentKind::File, "file"},
+    };
+    bool changed = false;
+    const char* shown = "sky";
+    for (const auto& [kind, name] : kinds) {
+        if (kind == environment_.kind) shown = name;
+    }
+    if (ImGui::BeginCombo("environment", shown)) {
+        for (const auto& [kind, name] : kinds) {
+            // A file comes from --environment FILE; without one there is none to pick.
+            const bool unavailable = kind == EnvironmentKind::File && environment_.file.empty();
+            if (ImGui::Selectable(name, kind == environment_.kind,
+                                  unavailable ? ImGuiSelectableFlags_Disabled : 0)) {
+                changed |= kind != environment_.kind;
+                environment_.kind = kind;
+            }
+        }
+        ImGui::EndCombo();
+    }
+    if (environment_.kind == EnvironmentKind::File) {
+        ImGui::TextDisabled("%s", environment_.file.filename().string().c_str());
+    }
+    // Sliders change the maps when let go: making a sky takes a few milliseconds, not a frame's.
+    ImGui::SliderFloat("intensity", &environment_.intensity, 0.0f, 10.0f, "%.2f",
+                       ImGuiSliderFlags_Logarithmic);
+    changed |= ImGui::IsItemDeactivatedAfterEdit();
+    ImGui::SliderFloat("rotation", &environment_.rotation_degrees, -180.0f, 180.0f, "%.0f deg");
+    changed |= ImGui::IsItemDeactivatedAfterEdit();
+    if (environment_.kind == EnvironmentKind::Sky) {
+        ImGui::SliderFloat("turbidity", &environment_.sky.turbidity, 1.7f, 10.0f, "%.1f");
+        changed |= ImGui::IsItemDeactivatedAfterEdit();
+        bool own_sun = !environment_.sun_from_scene;
+        if (ImGui::Checkbox("place the sun", &own_sun)) {
+            environment_.sun_from_scene = !own_sun;
+            changed = true;
+        }
+        if (ImGui::IsItemHovered()) {
+            ImGui::SetTooltip("off: the sun stands where the scene's key light is");
+        }
+        if (own_sun) {
+            ImGui::SliderFloat("sun elevation", &environment_.sky.sun_elevation_degrees, -5.0f,
+                               90.0f, "%.0f deg");
+            changed |= ImGui::IsItemDeactivatedAfterEdit();
+            ImGui::SliderFloat("sun azimuth", &environment_.sky.sun_azimuth_degrees, -180.0f,
+                               180.0f, "%.0f deg");
+            changed |= ImGui::IsItemDeactivatedAfterEdit();
+        }
+    }
+    return changed;
 }
 
 void ViewerApp::draw_precision_combo() {

@@ -13,8 +13,8 @@ struct KernelFile {
     const char* source;  // NUL-terminated OpenCL C
 };
 
-// Types and maths a scene's source may use: packet types, vec3 maths, the SDF toolkit
-// (primitives, combinators, transforms), IFS folds and orbit-trap colouring.
+// Types and maths a scene's source may use: packet types, vec3 maths, materials and their BSDFs,
+// the SDF toolkit (primitives, combinators, transforms), IFS folds and orbit-trap colouring.
 std::span<const KernelFile> kernel_prelude();
 // Marching, shading, the camera and the probe kernels, which call the scene's functions.
 std::span<const KernelFile> kernel_postlude();
@@ -23,9 +23,9 @@ std::span<const KernelFile> kernel_postlude();
 // fgr_mode_<mode>.cl and its entry point fgr_render; empty for an unknown mode.
 std::span<const KernelFile> mode_files(std::string_view mode);
 
-// What the path tracer adds after the postlude: the sample generator (fgr_sampler.cl), materials'
-// BSDFs (fgr_bsdf.cl) and the environment's lookup and importance sampling (fgr_environment.cl).
-// Each needs only the prelude's types and maths.
+// What the path tracer adds after the postlude: the sample generator (fgr_sampler.cl) and the
+// environment's lookup and importance sampling (fgr_environment.cl). Each needs only the
+// prelude's types and maths; materials and their BSDFs (fgr_bsdf.cl) are in the prelude.
 std::span<const KernelFile> path_library();
 
 // The device math self-test kernel (fgr_math_check.cl), built on its own.

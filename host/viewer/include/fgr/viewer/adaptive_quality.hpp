@@ -25,8 +25,9 @@ public:
     explicit QualityController(QualitySettings settings);
 
     // The next pass: a Preview while `interactive`; otherwise a Refine of sample
-    // `samples_done` until the cap is reached, then Idle.
-    RenderPass next_pass(bool interactive, int samples_done, int64_t full_pixels) const;
+    // `samples_done` until the cap is reached (`sample_cap`, or the settings' when 0), then Idle.
+    RenderPass next_pass(bool interactive, int samples_done, int64_t full_pixels,
+                         int sample_cap = 0) const;
 
     // Resolution scale whose frame should take target_ms: sqrt(target / (cost * pixels)), clamped
     // to [min_scale, 1]; 1 before any measurement. Rounded down to a multiple of 1/64 so small

@@ -2,7 +2,8 @@
 // The viewer's render thread. The window thread posts the state to show (latest wins) and takes
 // finished frames; it never waits on OpenCL. The worker builds kernels (keeping the last image on
 // screen meanwhile), renders previews at a reduced resolution while the view changes, refines the
-// still view sample by sample, renders screenshots at full quality, and reports the distance
+// still view sample by sample (the path tracer's for as long as the view stands still), renders
+// screenshots at full quality, and reports the distance
 // estimate at the camera for the fly speed. It picks float or double lanes per view (see
 // precision.hpp), building the double kernel the first time a deep view needs it.
 
@@ -22,8 +23,10 @@
 
 #include "fgr/image_io.hpp"
 #include "fgr/opencl_device.hpp"
+#include "fgr/path_settings.hpp"
 #include "fgr/precision.hpp"
 #include "fgr/program_cache.hpp"
+#include "fgr/render_mode.hpp"
 #include "fgr/renderer.hpp"
 #include "fgr/scene.hpp"
 #include "fgr/viewer/adaptive_quality.hpp"
@@ -40,15 +43,22 @@ struct ViewState {
     int width = 1;   // full resolution
     int height = 1;
     Precision precision = Precision::Auto;
+    RenderMode mode = RenderMode::Shaded;
+    PathSettings path;  // mode Path: bounces, strategies, the environment (null: the sky)
     bool interactive = false;  // the view is changing: preview frames, no refinement
     uint64_t generation = 0;
 };
+
+// Samples per pixel the path tracer accumulates while the view stands still (the shaded mode's
+// cap is QualitySettings::sample_cap): a path-traced view keeps converging for minutes.
+constexpr int kPathSampleCap = 4096;
 
 struct DisplayFrame {
     Image8 image;  // tone-mapped sRGB at the rendered size
     float scale = 1.0f;    // rendered size / full size
     int samples = 1;       // samples per pixel averaged into it
     double render_ms = 0;  // the pass that produced it
+    double samples_per_second = 0;  // pixel samples per second of that pass
     bool double_precision = false;  // rendered with double lanes
     uint64_t generation = 0;
 };
@@ -118,6 +128,7 @@ private:
         const Scene* scene;
         uint64_t effects;
         bool double_precision;
+        RenderMode mode;
         auto operator<=>(const RendererKey&) const = default;
     };
     struct CachedRenderer {
@@ -142,7 +153,8 @@ private:
     Renderer* renderer_for(const ViewState& state, bool double_precision);
     // Builds (or finds) the renderer; on failure returns null and fills `failure`.
     Renderer* build_renderer(const std::shared_ptr<const Scene>& scene, uint64_t effects,
-                             bool double_precision, std::pair<std::string, std::string>* failure);
+                             bool double_precision, RenderMode mode,
+                             std::pair<std::string, std::string>* failure);
     void reload(const ReloadRequest& request);
     void render_pass(Renderer& renderer, const ViewState& state);
     void render_preview(Renderer& renderer, const ViewState& state, float scale);

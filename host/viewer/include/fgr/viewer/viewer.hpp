@@ -7,7 +7,9 @@
 #include <string>
 #include <vector>
 
+#include "fgr/path_settings.hpp"
 #include "fgr/precision.hpp"
+#include "fgr/render_mode.hpp"
 
 namespace fgr::viewer {
 
@@ -21,6 +23,9 @@ struct ViewerOptions {
     int device = -1;                // OpenCL device index, -1: first GPU, else first device
     int packet_width = 0;           // 0: the device's preference
     Precision precision = Precision::Auto;  // float, double or per view; the panel changes it
+    std::optional<RenderMode> mode;         // shaded or path; default: each scene's own
+    PathSettings path;                      // path mode's settings (its environment unset)
+    EnvironmentChoice environment;          // what lights path-traced scenes; the panel changes it
     std::vector<std::string> assignments;   // --set id=value for the first scene
     std::string effect_changes;             // --effects for the first scene
     std::optional<std::filesystem::path> camera_path_file;  // load (and list) a recorded path
