@@ -196,10 +196,11 @@ RadianceHeader parse_radiance_header(const fs::path& path,
 }
 
 // Walks the scanlines exactly as stb_image 2.27 decodes them and throws unless they are whole
-// and well-formed. stb_image itself reads zeros past the end of its input (so truncated files
-// decode silently), loops forever on a zero-length literal run in a run-length-encoded scanline
-// (CVE-2021-42715, unfixed in Debian 12's copy), and restarts from the top on an unencoded
-// scanline after encoded ones; once this check has passed, none of that can happen.
+// and well-formed. stb_image itself reads zeros past the end of its input, so a truncated flat
+// file decodes silently as black and a truncated run-length-encoded scanline as an endless
+// series of zero-length runs: it hangs (CVE-2021-42715, unfixed in Debian 12's copy). It also
+// restarts from the top on an unencoded scanline after encoded ones. Once this check has passed,
+// none of that can happen. Zero-length literal runs, which no writer emits, are refused too.
 void check_radiance_scanlines(const fs::path& path, const std::vector<unsigned char>& bytes,
                               const RadianceHeader& header) {
     std::size_t position = header.data_offset;
