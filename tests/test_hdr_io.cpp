@@ -553,6 +553,30 @@ TEST_F(HdrIo, ExrWithAbsurdDimensionsIsRefused) {
     }
 }
 
+// An attribute of a type OpenEXR 3.1 does not know, whose value it allocates at the stated size
+// before reading it.
+TEST_F(HdrIo, ExrWithAnOversizedAttributeIsRefused) {
+    const fs::path file = directory_ / "attribute.exr";
+    write_exr(file, 4, 4, {{"", {"R", "G", "B"}, std::vector<float>(48, 1.0f)}});
+    Bytes bytes = read_bytes(file);
+    const std::string attribute("lineOrder\0lineOrder\0", 20);
+    const auto found = std::search(bytes.begin(), bytes.end(), attribute.begin(), attribute.end());
+    ASSERT_NE(found, bytes.end());
+    const std::size_t at = std::size_t(found - bytes.begin()) + attribute.size();
+    ASSERT_EQ(bytes[at], 1);  // a one-byte value
+    bytes[at + 3] = 0x7f;     // now 2 GiB - 255 bytes
+    bytes[at - 2] = 'X';      // of type "lineOrdeX"
+    write_bytes(file, bytes);
+    EXPECT_NE(read_error(file).find("an attribute of 2130706433 bytes"), std::string::npos);
+
+    // A known fixed-size type with another size: OpenEXR would read one byte and lose step.
+    bytes[at + 3] = 0;
+    bytes[at - 2] = 'r';
+    bytes[at] = 2;
+    write_bytes(file, bytes);
+    EXPECT_NE(read_error(file).find("attribute 'lineOrder' has the wrong size"), std::string::npos);
+}
+
 // ---- Writing: validation and atomicity ----
 
 TEST_F(HdrIo, FailedWritesThrowOneLineAndLeaveNoFile) {

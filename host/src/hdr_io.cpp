@@ -39,7 +39,7 @@ namespace fs = std::filesystem;
 // stb_image takes the encoded size as an int.
 constexpr std::uintmax_t kMaxFileBytes = std::numeric_limits<int>::max();
 // OpenEXR allocates a tile's worth of pixels per tile read; real files use 32 to 256.
-constexpr int kMaxExrTileSide = 4096;
+constexpr int kMaxExrTileSide = 1024;
 // Longest channel name OpenEXR writes (its "long names" limit).
 constexpr std::size_t kMaxExrNameBytes = 255;
 
@@ -305,6 +305,111 @@ private:
     std::size_t position_ = 0;
 };
 
+// Bytes of each fixed-size attribute type OpenEXR 3.1 knows. It reads these many whatever the
+// attribute's size field says.
+std::optional<std::size_t> fixed_attribute_bytes(std::string_view type) {
+    static const std::pair<std::string_view, std::size_t> kSizes[] = {
+        {"box2i", 16},      {"box2f", 16},    {"v2i", 8},      {"v2f", 8},
+        {"v2d", 16},        {"v3i", 12},      {"v3f", 12},     {"v3d", 24},
+        {"m33f", 36},       {"m33d", 72},     {"m44f", 64},    {"m44d", 128},
+        {"int", 4},         {"float", 4},     {"double", 8},   {"rational", 8},
+        {"compression", 1}, {"lineOrder", 1}, {"envmap", 1},   {"deepImageState", 1},
+        {"tiledesc", 9},    {"keycode", 28},  {"timecode", 8}, {"chromaticities", 32},
+    };
+    for (const auto& [name, bytes] : kSizes) {
+        if (name == type) return bytes;
+    }
+    return std::nullopt;
+}
+
+// Little-endian 32-bit value at `at`; the caller has checked the bytes are there.
+std::uint32_t read_u32(const std::vector<unsigned char>& bytes, std::size_t at) {
+    return std::uint32_t(bytes[at]) | std::uint32_t(bytes[at + 1]) << 8 |
+           std::uint32_t(bytes[at + 2]) << 16 | std::uint32_t(bytes[at + 3]) << 24;
+}
+
+// Walks the attributes of the file's headers (name, type, byte size, value) as OpenEXR 3.1
+// reads them, and throws unless each value fits in the file and, where OpenEXR decides how much
+// to read or allocate from the value itself, agrees with its size field. OpenEXR 3.1 allocates
+// what a header says before reading it (an unknown type's value, a string, a preview image, a
+// string list's entries), so a 100-byte file could otherwise make it allocate gigabytes; and it
+// reads a fixed-size type's natural size whatever the size field says, which this walk must
+// follow to stay in step with it.
+void check_exr_header(const fs::path& path, const std::vector<unsigned char>& bytes) {
+    constexpr std::uint32_t kLongNamesFlag = 0x400;
+    constexpr std::uint32_t kMultipartFlag = 0x1000;
+    const std::size_t size = bytes.size();
+    if (size < 8) fail_read(path, "truncated header");
+    const std::uint32_t version = read_u32(bytes, 4);
+    const std::size_t max_name = (version & kLongNamesFlag) != 0 ? 256 : 32;  // with the NUL
+    auto corrupt = [&](const std::string& what) {
+        fail_read(path, "corrupt header (" + what + ")");
+    };
+    // The NUL-terminated string at `at` (at most `limit` bytes with the NUL); `at` moves past it.
+    auto read_name = [&](std::size_t& at, std::size_t limit) -> std::string_view {
+        const auto* begin = bytes.data() + at;
+        const auto* end = bytes.data() + std::min(size, at + limit);
+        const auto* nul = std::find(begin, end, static_cast<unsigned char>(0));
+        if (nul == end) corrupt("a name is unterminated or too long");
+        at += std::size_t(nul - begin) + 1;
+        return {reinterpret_cast<const char*>(begin), std::size_t(nul - begin)};
+    };
+    std::size_t position = 8;
+    for (;;) {
+        for (;;) {
+            const std::string_view name = read_name(position, max_name);
+            if (name.empty()) break;
+            const std::string_view type = read_name(position, max_name);
+            if (size - position < 4) fail_read(path, "truncated header");
+            const std::size_t value_bytes = read_u32(bytes, position);
+            position += 4;
+            if (value_bytes > size - position) {
+                fail_read(path, "corrupt or truncated header (an attribute of " +
+                                    std::to_string(value_bytes) + " bytes)");
+            }
+            const std::size_t value = position;
+            const std::size_t value_end = position + value_bytes;
+            const std::string label = "attribute '" + printable(std::string(name)) + "'";
+            if (const auto fixed = fixed_attribute_bytes(type)) {
+                if (value_bytes != *fixed) corrupt(label + " has the wrong size");
+            } else if (type == "chlist") {
+                std::size_t at = value;
+                while (at < value_end && bytes[at] != 0) {
+                    read_name(at, 256);
+                    at += 16;  // pixel type, linear flag, reserved, x and y sampling
+                }
+                if (at + 1 != value_end) corrupt(label + " has the wrong size");
+            } else if (type == "preview") {
+                const std::uint64_t pixels =
+                    value_bytes < 8
+                        ? 0
+                        : std::uint64_t(read_u32(bytes, value)) * read_u32(bytes, value + 4);
+                if (value_bytes < 8 || pixels * 4 + 8 != value_bytes) {
+                    corrupt(label + " has the wrong size");
+                }
+            } else if (type == "stringvector") {
+                std::size_t at = value;
+                while (at < value_end) {
+                    if (value_end - at < 4 || read_u32(bytes, at) > value_end - at - 4) {
+                        corrupt(label + " has the wrong size");
+                    }
+                    at += 4 + read_u32(bytes, at);
+                }
+            } else if (type == "floatvector") {
+                if (value_bytes % 4 != 0) corrupt(label + " has the wrong size");
+            } else if (type == "idmanifest") {
+                fail_read(path, "unsupported " + label + " of type idmanifest");
+            }
+            // Anything else (a string, or a type OpenEXR does not know) is read at its size.
+            position = value_end;
+        }
+        // Multi-part files list headers up to an empty one; single-part files have one.
+        if ((version & kMultipartFlag) == 0) return;
+        if (position >= size) fail_read(path, "truncated header");
+        if (bytes[position] == 0) return;
+    }
+}
+
 void limit_openexr_allocations() {
     static std::once_flag once;
     std::call_once(once, [] {
@@ -314,6 +419,7 @@ void limit_openexr_allocations() {
 }
 
 HdrImage read_openexr(const fs::path& path, const std::vector<unsigned char>& bytes) {
+    check_exr_header(path, bytes);
     limit_openexr_allocations();
     HdrImage image;
     try {

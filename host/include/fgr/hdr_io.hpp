@@ -17,13 +17,14 @@ inline constexpr std::size_t kMaxHdrImageBytes = std::size_t{1} << 31;
 
 // Reads a Radiance .hdr (RGBE; flat or run-length-encoded scanlines, "-Y height +X width" only)
 // or an OpenEXR .exr (the R, G and B channels of the first part's default layer, half, float or
-// uint, any compression and tiling OpenEXR reads; other channels and layers are ignored), chosen
-// by the file's first bytes, not its name. The top row of the file is row 0. The file is
-// untrusted: anything wrong (missing, a directory, not an HDR image, truncated, corrupt, larger
-// than the limits above, no R, G, B channels) throws a one-line std::runtime_error
-// ("cannot read '<file>': <reason>"). Texels: NaN and infinities are refused (the error names
-// the first such pixel); negative values, which filtered (resampled) images carry as ringing,
-// become 0, since light is never negative. RGBE cannot hold either.
+// uint, any compression OpenEXR reads, scanlines or tiles up to 1024 a side; other channels and
+// layers are ignored), chosen by the file's first bytes, not its name. The top row of the file
+// is row 0. The file is untrusted: anything wrong (missing, a directory, not an HDR image,
+// truncated, corrupt, over 2^31 - 1 bytes or the limits above, no R, G, B channels) throws a
+// one-line std::runtime_error ("cannot read '<file>': <reason>"). Texels: NaN and infinities are
+// refused (the error names the first such pixel); negative values, which filtered (resampled)
+// images carry as ringing, become 0, since light is never negative. RGBE cannot hold either.
+// Peak memory: the file, plus the image twice for .hdr (stb_image's copy, then ours).
 HdrImage read_hdr_image(const std::filesystem::path& file);
 
 // Writes `image` as a run-length-encoded Radiance .hdr ("-Y height +X width": top row first),
