@@ -520,9 +520,9 @@ const fgr_light lights[] = {
     FGR_POINT_LIGHT(0.0f, 0.0f, 3.0f, 1.0f, 1.0f, 1.0f, 2.0f),
 };
 const char source[] = "real scene_de(vec3 p, PARAMS) { return v3_length(p) - param_radius; }";
-const fgr_scene_desc plain = FGR_SCENE("helper-scene", "Helper scene", "built by the helpers",
-                                       source, "helper.cl", params, cameras, paths, lights,
-                                       FGR_EFFECT_SHADOWS, FGR_MARCH(64u, 10.0f, 1.0f, 8u, 1.0f));
+const fgr_scene_desc plain =
+    FGR_SCENE("helper-scene", "Helper scene", "built by the helpers", source, "helper.cl", params,
+              cameras, paths, lights, FGR_EFFECT_SHADOWS, FGR_MARCH(64u, 10.0f, 1.0f, 8u, 1.0f));
 const fgr_scene_desc path_traced = FGR_SCENE_WITH_MODE(
     "helper-scene", "Helper scene", "built by the helpers", source, "helper.cl", params, cameras,
     paths, lights, FGR_EFFECT_SHADOWS, FGR_MARCH(64u, 10.0f, 1.0f, 8u, 1.0f), "path");

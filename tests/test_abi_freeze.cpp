@@ -43,15 +43,13 @@ namespace fs = std::filesystem;
 const fs::path kFrozenDir = fs::path(FGR_TEST_FIXTURE_DIR) / "frozen_v1";
 const fs::path kFrozenPlugin = kFrozenDir / "frozen_v1.so";
 const fs::path kMajor2Plugin = kFrozenDir / "frozen_v1_major2.so";
-const fs::path kFrozenHeader = fs::path(__FILE__).parent_path() / "abi_v1" / "fgr" / "plugin.h";
+const fs::path kFrozenHeader = fs::path(FGR_TEST_SOURCE_DIR) / "abi_v1" / "fgr" / "plugin.h";
 const fs::path kFrozenV1_1Plugin =
     fs::path(FGR_TEST_FIXTURE_DIR) / "frozen_v1_1" / "frozen_v1_1.so";
-const fs::path kFrozenV1_1Header =
-    fs::path(__FILE__).parent_path() / "abi_v1_1" / "fgr" / "plugin.h";
+const fs::path kFrozenV1_1Header = fs::path(FGR_TEST_SOURCE_DIR) / "abi_v1_1" / "fgr" / "plugin.h";
 const fs::path kFrozenV1_2Plugin =
     fs::path(FGR_TEST_FIXTURE_DIR) / "frozen_v1_2" / "frozen_v1_2.so";
-const fs::path kFrozenV1_2Header =
-    fs::path(__FILE__).parent_path() / "abi_v1_2" / "fgr" / "plugin.h";
+const fs::path kFrozenV1_2Header = fs::path(FGR_TEST_SOURCE_DIR) / "abi_v1_2" / "fgr" / "plugin.h";
 
 // FNV-1a (64 bit) of tests/abi_v1/fgr/plugin.h as committed. Never update it: see
 // FrozenHeaderNeverChanges.
