@@ -13,6 +13,8 @@
 #include "fgr/camera.hpp"
 #include "fgr/description_validation.hpp"
 #include "fgr/plugin.h"
+#include "fgr/render_mode.hpp"
+#include "fgr/scene_helpers.h"
 
 namespace fgr {
 namespace {
@@ -75,11 +77,14 @@ TEST(AbiLayout, CameraPath) {
 }
 
 TEST(AbiLayout, Light) {
-    PIN_SIZE(fgr_light, 40);
+    PIN_SIZE(fgr_light, 44);
     PIN_OFFSET(fgr_light, type, 8);
     PIN_OFFSET(fgr_light, vector, 12);
     PIN_OFFSET(fgr_light, colour, 24);
     PIN_OFFSET(fgr_light, intensity, 36);
+    // ABI 1.2: after the 1.0 struct's 40 bytes; a float keeps the struct 4-aligned.
+    PIN_OFFSET(fgr_light, angular_radius_degrees, 40);
+    static_assert(alignof(fgr_light) == 4, "an appended field must not raise the alignment");
 }
 
 TEST(AbiLayout, MarchSettings) {
@@ -92,7 +97,7 @@ TEST(AbiLayout, MarchSettings) {
 }
 
 TEST(AbiLayout, SceneDesc) {
-    PIN_SIZE(fgr_scene_desc, 160);
+    PIN_SIZE(fgr_scene_desc, 168);
     PIN_OFFSET(fgr_scene_desc, id, 8);
     PIN_OFFSET(fgr_scene_desc, name, 16);
     PIN_OFFSET(fgr_scene_desc, description, 24);
@@ -110,6 +115,9 @@ TEST(AbiLayout, SceneDesc) {
     PIN_OFFSET(fgr_scene_desc, march, 120);
     // ABI 1.1: after the 1.0 struct's 152 bytes (its end padded to the pointer alignment).
     PIN_OFFSET(fgr_scene_desc, source_length, 152);
+    // ABI 1.2.
+    PIN_OFFSET(fgr_scene_desc, default_mode, 160);
+    static_assert(alignof(fgr_scene_desc) == 8, "an appended field must not raise the alignment");
 }
 
 TEST(AbiVersion, PackingMacros) {
@@ -153,8 +161,8 @@ struct SceneBuilder {
         };
         paths = {{FGR_HEADER(fgr_camera_path), "orbit", keyframes.data(), 3}};
         lights = {
-            {FGR_HEADER(fgr_light), FGR_LIGHT_DIRECTIONAL, {0, 0, 2}, {1, 1, 1}, 1.0f},
-            {FGR_HEADER(fgr_light), FGR_LIGHT_POINT, {1, 2, 3}, {1, 0.5f, 0}, 4.0f},
+            {FGR_HEADER(fgr_light), FGR_LIGHT_DIRECTIONAL, {0, 0, 2}, {1, 1, 1}, 1.0f, 0.0f},
+            {FGR_HEADER(fgr_light), FGR_LIGHT_POINT, {1, 2, 3}, {1, 0.5f, 0}, 4.0f, 0.0f},
         };
         desc = {FGR_HEADER(fgr_scene_desc),
                 "test-scene",
@@ -172,7 +180,8 @@ struct SceneBuilder {
                 static_cast<uint32_t>(lights.size()),
                 FGR_EFFECT_ALL_V1,
                 {FGR_HEADER(fgr_march_settings), 256, 10.0f, 1.5f, 12, 0.9f},
-                0};
+                0,
+                nullptr};
         // clang-format on
     }
     SceneBuilder(const SceneBuilder&) = delete;
@@ -368,6 +377,174 @@ TEST_F(CopyScene, RefusesSourceLengthOverTheLimitUnread) {
     built.desc.source = "";
     built.desc.source_length = 1;
     expect_refused("source is empty");
+}
+
+// --- The default render mode and light discs (ABI 1.2) -------------------------------------------
+
+TEST_F(CopyScene, DefaultModeIsShadedUnlessTheSceneAsks) {
+    EXPECT_EQ(expect_accepted().default_mode, RenderMode::Shaded) << "NULL means shaded";
+    built.desc.default_mode = "";
+    EXPECT_EQ(expect_accepted().default_mode, RenderMode::Shaded) << "\"\" means shaded";
+    built.desc.default_mode = "path";
+    EXPECT_EQ(expect_accepted().default_mode, RenderMode::Path);
+    built.desc.default_mode = "shaded";
+    EXPECT_EQ(expect_accepted().default_mode, RenderMode::Shaded);
+}
+
+// Every mode the host has can be asked for by its name (and so the refusal's list is complete).
+TEST_F(CopyScene, DefaultModeAcceptsEveryRenderModeName) {
+    ASSERT_FALSE(render_modes().empty());
+    for (const RenderModeInfo& info : render_modes()) {
+        const std::string name(info.name);
+        built.desc.default_mode = name.c_str();
+        EXPECT_EQ(expect_accepted().default_mode, info.mode) << name;
+    }
+}
+
+TEST_F(CopyScene, RefusesUnknownDefaultMode) {
+    const std::string choices = "(choose " + render_mode_choices() + ")";
+    EXPECT_EQ(choices, "(choose shaded|path)");
+    built.desc.default_mode = "pathz";
+    expect_refused("default_mode 'pathz' is not a render mode " + choices);
+    built.desc.default_mode = "Path";
+    expect_refused("default_mode 'Path' is not a render mode " + choices);
+    built.desc.default_mode = " path";
+    expect_refused("default_mode ' path' is not a render mode");
+    built.desc.default_mode = "path\n\x1b[31m";
+    expect_refused("default_mode 'path\\x0a\\x1b[31m' is not a render mode");
+    const std::string too_long(64, 'p');
+    built.desc.default_mode = too_long.c_str();
+    expect_refused("default_mode longer than 63 bytes");
+}
+
+// A plugin built against 1.0 or 1.1 has no default_mode: whatever follows its struct is not read.
+TEST_F(CopyScene, DefaultModeIsReadOnlyWhenTheStructCoversIt) {
+    built.desc.default_mode = "path";
+    built.desc.header.struct_size = offsetof(fgr_scene_desc, default_mode);  // a 1.1 plugin
+    EXPECT_EQ(expect_accepted().default_mode, RenderMode::Shaded) << "read beyond struct_size";
+    built.desc.default_mode = "pathz";
+    EXPECT_EQ(expect_accepted().default_mode, RenderMode::Shaded) << "checked beyond struct_size";
+    built.desc.header.struct_size = offsetof(fgr_scene_desc, source_length);  // a 1.0 plugin
+    EXPECT_EQ(expect_accepted().default_mode, RenderMode::Shaded);
+}
+
+TEST_F(CopyScene, CopiesAngularRadiusInRadians) {
+    const Scene delta = expect_accepted();
+    ASSERT_EQ(delta.lights.size(), 2u);
+    EXPECT_EQ(delta.lights[0].angular_radius, 0.0f) << "0: a delta light";
+    constexpr double kDegree = 3.14159265358979323846 / 180.0;
+    for (const float degrees : {5.0f, 0.27f, 45.0f, 1e-30f}) {
+        built.lights[0].angular_radius_degrees = degrees;
+        const Scene scene = expect_accepted();
+        ASSERT_EQ(scene.lights.size(), 2u);
+        // Within one float ulp of the exact angle.
+        const double expected = double{degrees} * kDegree;
+        EXPECT_NEAR(scene.lights[0].angular_radius, expected, expected * 1.2e-7) << degrees;
+    }
+}
+
+TEST_F(CopyScene, PointLightsIgnoreTheAngularRadius) {
+    built.lights[1].angular_radius_degrees = 10.0f;
+    const Scene scene = expect_accepted();
+    ASSERT_EQ(scene.lights.size(), 2u);
+    EXPECT_EQ(scene.lights[1].type, LightType::Point);
+    EXPECT_EQ(scene.lights[1].angular_radius, 0.0f);
+}
+
+TEST_F(CopyScene, RefusesAngularRadiusOutsideZeroTo45Degrees) {
+    built.lights[0].angular_radius_degrees = -1.0f;
+    expect_refused("light 0: angular_radius_degrees -1 outside [0, 45]");
+    built.lights[0].angular_radius_degrees = 46.0f;
+    expect_refused("light 0: angular_radius_degrees 46 outside [0, 45]");
+    built.lights[0].angular_radius_degrees = 45.001f;
+    expect_refused("light 0: angular_radius_degrees 45.001 outside [0, 45]");
+    built.lights[0].angular_radius_degrees = kNaN;
+    expect_refused("light 0: angular_radius_degrees nan outside [0, 45]");
+    built.lights[0].angular_radius_degrees = std::numeric_limits<float>::infinity();
+    expect_refused("light 0: angular_radius_degrees inf outside [0, 45]");
+    built.lights[0].angular_radius_degrees = -std::numeric_limits<float>::infinity();
+    expect_refused("light 0: angular_radius_degrees -inf outside [0, 45]");
+    built.lights[0].angular_radius_degrees = 0.0f;
+    // A point light ignores the value, but it must still be one a directional light may have.
+    built.lights[1].angular_radius_degrees = kNaN;
+    expect_refused("light 1: angular_radius_degrees nan outside [0, 45]");
+}
+
+// The 1.1 light as a plugin built against 1.1 lays it out: 40 bytes, no angular radius.
+struct LightV1_1 {
+    fgr_struct_header header;
+    uint32_t type;
+    float vector[3];
+    float colour[3];
+    float intensity;
+};
+static_assert(sizeof(LightV1_1) == 40 && alignof(LightV1_1) == alignof(fgr_light));
+
+// A 1.1 plugin's lights have no radius: the host walks them with the 40-byte stride and reads
+// nothing past each one (here the next light's header, and after the last one a float that would
+// be a valid radius).
+TEST_F(CopyScene, AngularRadiusIsReadOnlyWhenTheLightCoversIt) {
+    struct {
+        LightV1_1 lights[2];
+        float after;
+    } v1_1 = {{{{40, (1u << 16) | 1u}, FGR_LIGHT_DIRECTIONAL, {0, 0, 1}, {1, 1, 1}, 1.0f},
+               {{40, (1u << 16) | 1u}, FGR_LIGHT_DIRECTIONAL, {0, 1, 0}, {1, 1, 1}, 2.0f}},
+              5.0f};
+    static_assert(sizeof(v1_1) == 84);
+    built.desc.lights = reinterpret_cast<const fgr_light*>(&v1_1.lights[0]);
+    const Scene scene = expect_accepted();
+    ASSERT_EQ(scene.lights.size(), 2u);
+    EXPECT_EQ(scene.lights[1].vector, glm::vec3(0, 1, 0)) << "walked with the 1.1 stride";
+    EXPECT_FLOAT_EQ(scene.lights[1].intensity, 2.0f);
+    EXPECT_EQ(scene.lights[0].angular_radius, 0.0f) << "read the next light's header";
+    EXPECT_EQ(scene.lights[1].angular_radius, 0.0f) << "read past the last light";
+    // Nor is it checked: a 1.1 light followed by bytes that would be refused still loads.
+    v1_1.after = kNaN;
+    const Scene again = expect_accepted();
+    ASSERT_EQ(again.lights.size(), 2u);
+    EXPECT_EQ(again.lights[1].angular_radius, 0.0f);
+}
+
+// fgr/scene_helpers.h: FGR_SCENE asks for no mode and its lights are point-like; the 1.2 helpers
+// set both.
+namespace helpers {
+const fgr_param_desc params[] = {
+    FGR_FLOAT_PARAM("radius", "Radius", "Shape", 0.5f, 2.0f, 1.0f, "sphere radius")};
+const fgr_camera cameras[] = {FGR_CAMERA_Z_UP("front", 0.0f, -3.0f, 0.0f, 0, 0, 0, 60.0f)};
+const fgr_keyframe keys[] = {FGR_KEYFRAME_Z_UP(0.0f, 0.0f, -3.0f, 0.0f, 0, 0, 0, 60.0f),
+                             FGR_KEYFRAME_Z_UP(1.0f, 3.0f, 0.0f, 0.0f, 0, 0, 0, 60.0f)};
+const fgr_camera_path paths[] = {FGR_CAMERA_PATH("orbit", keys)};
+const fgr_light lights[] = {
+    FGR_DIRECTIONAL_LIGHT(0.0f, 0.0f, 1.0f, 1.0f, 1.0f, 1.0f, 1.0f),
+    FGR_DIRECTIONAL_DISC_LIGHT(1.0f, 0.0f, 1.0f, 1.0f, 0.9f, 0.8f, 3.0f, 5.0f),
+    FGR_POINT_LIGHT(0.0f, 0.0f, 3.0f, 1.0f, 1.0f, 1.0f, 2.0f),
+};
+const char source[] = "real scene_de(vec3 p, PARAMS) { return v3_length(p) - param_radius; }";
+const fgr_scene_desc plain =
+    FGR_SCENE("helper-scene", "Helper scene", "built by the helpers", source, "helper.cl", params,
+              cameras, paths, lights, FGR_EFFECT_SHADOWS, FGR_MARCH(64u, 10.0f, 1.0f, 8u, 1.0f));
+const fgr_scene_desc path_traced = FGR_SCENE_WITH_MODE(
+    "helper-scene", "Helper scene", "built by the helpers", source, "helper.cl", params, cameras,
+    paths, lights, FGR_EFFECT_SHADOWS, FGR_MARCH(64u, 10.0f, 1.0f, 8u, 1.0f), "path");
+}  // namespace helpers
+
+TEST(SceneHelpers, FillTheV1_2Fields) {
+    EXPECT_EQ(helpers::plain.header.struct_size, sizeof(fgr_scene_desc));
+    EXPECT_EQ(helpers::plain.default_mode, nullptr);
+    const LoadResult plain = copy_scene_description(&helpers::plain);
+    ASSERT_TRUE(plain.scene) << plain.error;
+    EXPECT_EQ(plain.scene->default_mode, RenderMode::Shaded);
+    EXPECT_EQ(plain.scene->source, helpers::source);
+    ASSERT_EQ(plain.scene->lights.size(), 3u);
+    EXPECT_EQ(plain.scene->lights[0].angular_radius, 0.0f);
+    EXPECT_NEAR(plain.scene->lights[1].angular_radius, 0.0872664626, 1e-8) << "5 degrees";
+    EXPECT_FLOAT_EQ(plain.scene->lights[1].intensity, 3.0f);
+    EXPECT_EQ(plain.scene->lights[2].type, LightType::Point);
+
+    const LoadResult path_traced = copy_scene_description(&helpers::path_traced);
+    ASSERT_TRUE(path_traced.scene) << path_traced.error;
+    EXPECT_EQ(path_traced.scene->default_mode, RenderMode::Path);
+    EXPECT_EQ(path_traced.scene->source, helpers::source);
 }
 
 TEST_F(CopyScene, RefusesOtherMajorVersion) {

@@ -3,7 +3,9 @@
 // intact and renders it, its table of 1.0 offsets and sizes matches the current header's, the same
 // plugin claiming major version 2 is refused by name, and the frozen copy itself has not changed.
 // tests/fixtures/frozen_v1_1 does the same for 1.1 (tests/abi_v1_1), whose one addition is the
-// source's length.
+// source's length, and tests/fixtures/frozen_v1_2 for 1.2 (tests/abi_v1_2): the render mode a scene
+// asks for and the angular radius of a directional light's disc. Plugins built against 1.0 and 1.1
+// get 1.2's defaults.
 
 #include <dlfcn.h>
 #include <gtest/gtest.h>
@@ -28,9 +30,11 @@
 #include "fgr/plugin.h"
 #include "fgr/plugin_loader.hpp"
 #include "fgr/program_cache.hpp"
+#include "fgr/render_mode.hpp"
 #include "fgr/renderer.hpp"
 #include "fixtures/frozen_v1/frozen_layout.h"
 #include "fixtures/frozen_v1_1/frozen_layout_v1_1.h"
+#include "fixtures/frozen_v1_2/frozen_layout_v1_2.h"
 
 namespace fgr {
 namespace {
@@ -39,17 +43,21 @@ namespace fs = std::filesystem;
 const fs::path kFrozenDir = fs::path(FGR_TEST_FIXTURE_DIR) / "frozen_v1";
 const fs::path kFrozenPlugin = kFrozenDir / "frozen_v1.so";
 const fs::path kMajor2Plugin = kFrozenDir / "frozen_v1_major2.so";
-const fs::path kFrozenHeader = fs::path(__FILE__).parent_path() / "abi_v1" / "fgr" / "plugin.h";
+const fs::path kFrozenHeader = fs::path(FGR_TEST_SOURCE_DIR) / "abi_v1" / "fgr" / "plugin.h";
 const fs::path kFrozenV1_1Plugin =
     fs::path(FGR_TEST_FIXTURE_DIR) / "frozen_v1_1" / "frozen_v1_1.so";
-const fs::path kFrozenV1_1Header =
-    fs::path(__FILE__).parent_path() / "abi_v1_1" / "fgr" / "plugin.h";
+const fs::path kFrozenV1_1Header = fs::path(FGR_TEST_SOURCE_DIR) / "abi_v1_1" / "fgr" / "plugin.h";
+const fs::path kFrozenV1_2Plugin =
+    fs::path(FGR_TEST_FIXTURE_DIR) / "frozen_v1_2" / "frozen_v1_2.so";
+const fs::path kFrozenV1_2Header = fs::path(FGR_TEST_SOURCE_DIR) / "abi_v1_2" / "fgr" / "plugin.h";
 
 // FNV-1a (64 bit) of tests/abi_v1/fgr/plugin.h as committed. Never update it: see
 // FrozenHeaderNeverChanges.
 constexpr uint64_t kFrozenHeaderHash = 0x725cb0f5e489cfb4u;
 // The same of tests/abi_v1_1/fgr/plugin.h.
 constexpr uint64_t kFrozenV1_1HeaderHash = 0x5f1aab15c211936u;
+// The same of tests/abi_v1_2/fgr/plugin.h.
+constexpr uint64_t kFrozenV1_2HeaderHash = 0x2c4886571464b29au;
 
 // How many rows ABI 1.0 has in each list of frozen_layout.h: a row dropped from a list would
 // otherwise quietly stop being checked.
@@ -60,6 +68,10 @@ constexpr std::size_t kV1ConstantCount = 18;
 constexpr std::size_t kV1_1StructCount = kV1StructCount;
 constexpr std::size_t kV1_1FieldCount = kV1FieldCount + 1;
 constexpr std::size_t kV1_1ConstantCount = kV1ConstantCount;
+// ABI 1.2 added two: fgr_light::angular_radius_degrees and fgr_scene_desc::default_mode.
+constexpr std::size_t kV1_2StructCount = kV1_1StructCount;
+constexpr std::size_t kV1_2FieldCount = kV1_1FieldCount + 2;
+constexpr std::size_t kV1_2ConstantCount = kV1_1ConstantCount;
 
 Scene load_frozen_scene() {
     LoadResult loaded = load_scene_plugin(kFrozenPlugin);
@@ -251,6 +263,13 @@ const std::vector<fgr_frozen_field_row> kCurrentV1_1Fields = {
 const std::vector<fgr_frozen_constant_row> kCurrentV1_1Constants = {
     FGR_FROZEN_V1_1_CONSTANTS(CURRENT_CONSTANT_ROW)};
 
+const std::vector<fgr_frozen_struct_row> kCurrentV1_2Structs = {
+    FGR_FROZEN_V1_2_STRUCTS(CURRENT_STRUCT_ROW)};
+const std::vector<fgr_frozen_field_row> kCurrentV1_2Fields = {
+    FGR_FROZEN_V1_2_FIELDS(CURRENT_FIELD_ROW)};
+const std::vector<fgr_frozen_constant_row> kCurrentV1_2Constants = {
+    FGR_FROZEN_V1_2_CONSTANTS(CURRENT_CONSTANT_ROW)};
+
 // The frozen plugin's table against the current header's rows for the same lists: nothing moved,
 // shrank, changed alignment or value. Then its description's header is what FGR_HEADER gave it:
 // the frozen struct size and `version`.
@@ -321,6 +340,12 @@ TEST(AbiFreeze, CurrentHeaderKeepsTheV1_1Layout) {
                        kV1_1StructCount, kV1_1FieldCount, kV1_1ConstantCount);
 }
 
+TEST(AbiFreeze, CurrentHeaderKeepsTheV1_2Layout) {
+    expect_layout_kept(kFrozenV1_2Plugin, FGR_FROZEN_V1_2_LAYOUT_SYMBOL, 0x00010002u,
+                       kCurrentV1_2Structs, kCurrentV1_2Fields, kCurrentV1_2Constants,
+                       kV1_2StructCount, kV1_2FieldCount, kV1_2ConstantCount);
+}
+
 // The 1.1 plugin's source has no NUL: its source_length says where it ends, and the bytes after
 // it ("NOT-SRC!") are not part of it.
 TEST(AbiFreeze, FrozenV1_1PluginLoadsItsSourceByLengthAndRenders) {
@@ -341,6 +366,42 @@ TEST(AbiFreeze, FrozenV1_1PluginLoadsItsSourceByLengthAndRenders) {
     request.view = scene.cameras.front().view;
     request.params = default_param_values(scene);
     EXPECT_GT(renderer.render(request).hits, 0);
+}
+
+// The 1.2 plugin asks for the path mode; its directional lights have discs of 5 and 0.27 degrees,
+// which the host keeps in radians, and its point light's radius is ignored.
+TEST(AbiFreeze, FrozenV1_2PluginLoadsItsModeAndLightDiscs) {
+    LoadResult loaded = load_scene_plugin(kFrozenV1_2Plugin);
+    ASSERT_TRUE(loaded.scene) << kFrozenV1_2Plugin << ": " << loaded.error;
+    const Scene& scene = *loaded.scene;
+    EXPECT_EQ(scene.id, "frozen-v1-2");
+    EXPECT_EQ(scene.source,
+              "real scene_de(vec3 p, PARAMS) { return v3_length(p) - param_radius; }\n");
+    EXPECT_EQ(scene.default_mode, RenderMode::Path);
+    ASSERT_EQ(scene.lights.size(), 3u);
+    // 5 and 0.27 degrees in radians, to float's precision (a relative 6e-8).
+    EXPECT_NEAR(scene.lights[0].angular_radius, 0.08726646259971647, 1e-8);
+    EXPECT_NEAR(scene.lights[1].angular_radius, 0.004712388980384690, 1e-9);
+    expect_vec3(scene.lights[1].vector, glm::normalize(glm::vec3(-1, 0.5f, 1)), "light 1 vector");
+    EXPECT_FLOAT_EQ(scene.lights[1].intensity, 0.5f);
+    EXPECT_EQ(scene.lights[2].type, LightType::Point);
+    EXPECT_EQ(scene.lights[2].angular_radius, 0.0f) << "point lights ignore the radius";
+    expect_vec3(scene.lights[2].vector, {0, 0, 3}, "light 2 position");
+}
+
+// Plugins built before 1.2 ask for no mode and have point-like lights. The 1.0 plugin's first light
+// is followed by the second's header, which a host reading past 1.0's 40 bytes would take for a
+// radius.
+TEST(AbiFreeze, OlderPluginsGetTheV1_2Defaults) {
+    for (const fs::path& plugin : {kFrozenPlugin, kFrozenV1_1Plugin}) {
+        LoadResult loaded = load_scene_plugin(plugin);
+        ASSERT_TRUE(loaded.scene) << plugin << ": " << loaded.error;
+        EXPECT_EQ(loaded.scene->default_mode, RenderMode::Shaded) << plugin;
+        ASSERT_FALSE(loaded.scene->lights.empty());
+        for (const Light& light : loaded.scene->lights) {
+            EXPECT_EQ(light.angular_radius, 0.0f) << plugin;
+        }
+    }
 }
 
 // --- (d) A plugin for another major version is refused, by file name ----------------------------
@@ -389,6 +450,15 @@ std::string hex(uint64_t value) {
     std::ostringstream out;
     out << "0x" << std::hex << value;
     return out.str();
+}
+
+TEST(AbiFreeze, FrozenV1_2HeaderNeverChanges) {
+    ASSERT_TRUE(fs::is_regular_file(kFrozenV1_2Header)) << kFrozenV1_2Header << " is missing";
+    const uint64_t hash = fnv1a64(test::read_file(kFrozenV1_2Header));
+    EXPECT_EQ(hash, kFrozenV1_2HeaderHash)
+        << kFrozenV1_2Header << " has changed (FNV-1a " << hex(hash) << ", frozen "
+        << hex(kFrozenV1_2HeaderHash) << "). It is the ABI 1.2 header exactly as released and "
+        << "must never change: restore it from git.";
 }
 
 TEST(AbiFreeze, FrozenV1_1HeaderNeverChanges) {

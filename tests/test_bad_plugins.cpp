@@ -39,6 +39,7 @@
 #include "fgr/plugin.h"
 #include "fgr/plugin_loader.hpp"
 #include "fgr/program_cache.hpp"
+#include "fgr/render_mode.hpp"
 #include "fgr/renderer.hpp"
 
 namespace fgr {
@@ -115,6 +116,11 @@ const BrokenFixture kBrokenFixtures[] = {
     {"entry_null.so", "entry returned NULL"},
     // Read, the NUL-less source would fault at its end: refused for source_length alone.
     {"long_source_length.so", "source longer than 4194304 bytes (source_length 5242880)"},
+    // ABI 1.2: a render mode no host has, and light discs outside [0, 45] degrees.
+    {"unknown_mode.so", "default_mode 'pathz' is not a render mode (choose shaded|path)"},
+    {"negative_radius.so", "light 0: angular_radius_degrees -1 outside [0, 45]"},
+    {"wide_radius.so", "light 0: angular_radius_degrees 46 outside [0, 45]"},
+    {"nan_radius.so", "light 0: angular_radius_degrees nan outside [0, 45]"},
 };
 
 void PrintTo(const BrokenFixture& fixture, std::ostream* out) { *out << fixture.file; }
@@ -597,6 +603,8 @@ DescSpec random_valid_spec(Rng& rng, Arena& arena) {
         set3(light.vector, random_direction(rng));
         set3(light.colour, glm::vec3(rng.uniform(0, 1), rng.uniform(0, 1), rng.uniform(0, 1)));
         light.intensity = rng.uniform(0.0f, 5.0f);
+        // ABI 1.2: a disc of up to 45 degrees, often none.
+        light.angular_radius_degrees = rng.chance(0.5) ? 0.0f : rng.uniform(0.0f, 45.0f);
         spec.lights.elements.push_back(light);
     }
     desc.effects = rng.next() & FGR_EFFECT_ALL_V1;
@@ -606,6 +614,8 @@ DescSpec random_valid_spec(Rng& rng, Arena& arena) {
     desc.march.hit_threshold = rng.uniform(0.001f, 1000.0f);
     desc.march.de_iterations = static_cast<uint32_t>(rng.range(1, 1000));
     desc.march.step_factor = rng.chance(0.3) ? 0.0f : rng.uniform(0.05f, 1.0f);
+    const char* const modes[] = {nullptr, "", "shaded", "path"};
+    desc.default_mode = rng.pick(modes);
     return spec;
 }
 
@@ -734,7 +744,7 @@ void mutate_param(Rng& rng, Arena& arena, fgr_param_desc& param,
 }
 
 void mutate_light(Rng& rng, fgr_light& light) {
-    switch (rng.below(5)) {
+    switch (rng.below(6)) {
         case 0: {
             const uint32_t types[] = {0, 1, 2, 7, 0xffffffffu};
             light.type = rng.pick(types);
@@ -749,6 +759,11 @@ void mutate_light(Rng& rng, fgr_light& light) {
         case 3:
             light.intensity = any_float(rng);
             break;
+        case 4: {  // ABI 1.2: at and around [0, 45], or anything
+            const float radii[] = {0.0f, -0.0f, 45.0f, 45.00001f, -FLT_TRUE_MIN, 0.27f, 90.0f};
+            light.angular_radius_degrees = rng.chance(0.5) ? rng.pick(radii) : any_float(rng);
+            break;
+        }
         default: {  // zero, or a valid direction whose squared length under- or overflows float
             const float sizes[] = {0.0f, -0.0f, 1e-22f, FLT_TRUE_MIN, 1e20f, FLT_MAX};
             const float size = rng.pick(sizes);
@@ -795,7 +810,7 @@ const std::string& source_of_size(std::size_t size) {
 
 void mutate(Rng& rng, Arena& arena, DescSpec& spec) {
     fgr_scene_desc& desc = spec.desc;
-    switch (rng.below(20)) {
+    switch (rng.below(21)) {
         case 0:
             desc.id = any_string(rng, arena);
             break;
@@ -916,6 +931,11 @@ void mutate(Rng& rng, Arena& arena, DescSpec& spec) {
         case 18:
             mutate_march(rng, desc.march);
             break;
+        case 19: {  // ABI 1.2: a mode, almost a mode, or any text
+            const char* const modes[] = {"shaded", "path", "pathz", "Path", "shaded ", "brute"};
+            desc.default_mode = rng.chance(0.5) ? rng.pick(modes) : any_string(rng, arena);
+            break;
+        }
         default:  // a camera name repeated
             if (spec.cameras.elements.size() >= 2) {
                 spec.cameras.elements[1].name = spec.cameras.elements[0].name;
@@ -929,7 +949,9 @@ void mutate(Rng& rng, Arena& arena, DescSpec& spec) {
 
 // The array as the validator will walk it: element i at i * struct_size when that stride is
 // usable, so the memory behind it covers (count - 1) * struct_size + sizeof(T) either way. Gaps
-// between elements (fields of a "newer minor version") hold random bytes.
+// between elements (fields of a "newer minor version") hold random bytes. A stride smaller than
+// sizeof(T) is an older minor version's: each element then overwrites the previous one's fields
+// beyond that stride, which the validator must not read.
 template <typename T>
 const T* layout(Rng& rng, Arena& arena, const ArraySpec<T>& array, uint32_t* count) {
     if (array.null) {
@@ -942,7 +964,7 @@ const T* layout(Rng& rng, Arena& arena, const ArraySpec<T>& array, uint32_t* cou
     // The validator's stride is the first element's struct_size.
     const std::size_t declared =
         array.odd_element == 0 ? array.odd_header.struct_size : array.struct_size;
-    const bool usable = declared >= sizeof(T) && declared % alignof(T) == 0;
+    const bool usable = declared >= sizeof(fgr_struct_header) && declared % alignof(T) == 0;
     const std::size_t stride = usable ? declared : sizeof(T);
     const std::size_t size = array.elements.size() * std::max(declared, sizeof(T)) + 64;
     unsigned char* bytes = arena.bytes(size);
@@ -1117,6 +1139,33 @@ void check_accepted(const Scene& scene, const fgr_scene_desc& desc) {
             EXPECT_NEAR(glm::length(glm::dvec3(light.vector)), 1.0, 1e-5)
                 << "directional lights are normalised";
         }
+    }
+    // ABI 1.2: a directional light's disc in radians, read only when its struct has the field (the
+    // array's stride is the first light's struct_size); point lights have none.
+    const uint32_t light_stride = desc.lights[0].header.struct_size;
+    const bool has_radius = light_stride >= offsetof(fgr_light, angular_radius_degrees) + 4;
+    for (uint32_t i = 0; i < desc.light_count; ++i) {
+        fgr_light given;
+        std::memcpy(&given, reinterpret_cast<const unsigned char*>(desc.lights) + i * light_stride,
+                    sizeof given);
+        const float radius = scene.lights[i].angular_radius;
+        EXPECT_TRUE(radius >= 0.0f && radius <= 0.7853982f) << "light " << i << ": " << radius;
+        if (has_radius && given.type == FGR_LIGHT_DIRECTIONAL) {
+            const double expected = double{given.angular_radius_degrees} * 0.017453292519943295;
+            // Float's rounding: relative, or absolute where the angle is subnormal.
+            EXPECT_NEAR(radius, expected, 1e-7 * expected + FLT_TRUE_MIN) << "light " << i;
+        } else {
+            EXPECT_EQ(radius, 0.0f) << "light " << i << ": no disc";
+        }
+    }
+
+    // ABI 1.2: the mode asked for by name, when the struct has the field; shaded otherwise.
+    const bool has_mode =
+        desc.header.struct_size >= offsetof(fgr_scene_desc, default_mode) + sizeof(const char*);
+    if (has_mode && desc.default_mode != nullptr && desc.default_mode[0] != '\0') {
+        EXPECT_EQ(render_mode_name(scene.default_mode), desc.default_mode);
+    } else {
+        EXPECT_EQ(scene.default_mode, RenderMode::Shaded);
     }
 
     // Effects and march settings, which also become the quality knobs' defaults.

@@ -5,6 +5,7 @@
 #include <cstddef>
 #include <cstring>
 #include <exception>
+#include <numbers>
 #include <set>
 #include <stdexcept>
 #include <string_view>
@@ -14,6 +15,7 @@
 #include <glm/vec3.hpp>
 #include <spdlog/fmt/fmt.h>
 
+#include "fgr/render_mode.hpp"
 #include "fgr/view_validation.hpp"
 
 namespace fgr {
@@ -39,6 +41,11 @@ constexpr std::size_t kV1MarchSize =
 // ABI 1.1 appended source_length to the scene description.
 constexpr std::size_t kV1_1SceneDescSize =
     offsetof(fgr_scene_desc, source_length) + sizeof(fgr_scene_desc::source_length);
+// ABI 1.2 appended default_mode to the scene description and angular_radius_degrees to lights.
+constexpr std::size_t kV1_2SceneDescSize =
+    offsetof(fgr_scene_desc, default_mode) + sizeof(fgr_scene_desc::default_mode);
+constexpr std::size_t kV1_2LightSize =
+    offsetof(fgr_light, angular_radius_degrees) + sizeof(fgr_light::angular_radius_degrees);
 
 constexpr std::size_t kMaxIdLength = 63;
 constexpr std::size_t kMaxSourceBytes = 4u << 20;
@@ -55,6 +62,7 @@ constexpr uint32_t kMinKeyframes = 2;
 constexpr uint32_t kMaxKeyframes = 10000;
 constexpr uint32_t kMaxMarchSteps = 100000;
 constexpr uint32_t kMaxDeIterations = 1000;
+constexpr float kMaxAngularRadiusDegrees = 45.0f;
 
 // --- Failure reporting ---------------------------------------------------------------------------
 
@@ -374,6 +382,19 @@ std::vector<CameraPath> copy_camera_paths(const fgr_scene_desc& desc) {
 
 // --- Lights, effects, march settings -------------------------------------------------------------
 
+// ABI 1.2: the angular radius of a directional light's disc, read only when the light's struct
+// covers it (0, a delta light, otherwise). Checked for point lights too, which ignore it.
+float copy_angular_radius(const fgr_light& light, const std::string& where) {
+    if (light.header.struct_size < kV1_2LightSize) return 0.0f;
+    const float degrees = light.angular_radius_degrees;
+    if (!(degrees >= 0.0f && degrees <= kMaxAngularRadiusDegrees)) {
+        fail("{}: angular_radius_degrees {} outside [0, {}]", where, degrees,
+             kMaxAngularRadiusDegrees);
+    }
+    if (light.type != FGR_LIGHT_DIRECTIONAL) return 0.0f;
+    return static_cast<float>(double{degrees} * (std::numbers::pi / 180.0));
+}
+
 Light copy_light(const fgr_light& light, uint32_t index) {
     const std::string where = fmt::format("light {}", index);
     if (light.type != FGR_LIGHT_DIRECTIONAL && light.type != FGR_LIGHT_POINT) {
@@ -400,6 +421,7 @@ Light copy_light(const fgr_light& light, uint32_t index) {
         if (!(length > 0.0)) fail("{}: zero direction", where);
         copy.vector = glm::vec3(direction / length);
     }
+    copy.angular_radius = copy_angular_radius(light, where);
     return copy;
 }
 
@@ -482,6 +504,21 @@ std::string copy_source(const fgr_scene_desc& desc) {
     return std::string(desc.source, bytes);
 }
 
+// ABI 1.2: the render mode the scene asks for by name, read only when the struct covers it; NULL
+// or "" (and every older plugin) mean shaded.
+RenderMode copy_default_mode(const fgr_scene_desc& desc) {
+    if (desc.header.struct_size < kV1_2SceneDescSize || desc.default_mode == nullptr) {
+        return RenderMode::Shaded;
+    }
+    const std::string name = bounded_string(desc.default_mode, kMaxIdLength, "default_mode");
+    if (name.empty()) return RenderMode::Shaded;
+    for (const RenderModeInfo& info : render_modes()) {
+        if (info.name == name) return info.mode;
+    }
+    fail("default_mode '{}' is not a render mode (choose {})", printable(name),
+         render_mode_choices());
+}
+
 Scene copy_checked(const fgr_scene_desc& desc) {
     check_scene_header(desc);
     Scene scene;
@@ -502,6 +539,7 @@ Scene copy_checked(const fgr_scene_desc& desc) {
     scene.lights = copy_lights(desc);
     scene.effects = copy_effects(desc.effects);
     scene.march = copy_march(desc.march);
+    scene.default_mode = copy_default_mode(desc);
     add_builtin_params(scene);
     check_builtin_defaults(scene);
     return scene;

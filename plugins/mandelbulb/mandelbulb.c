@@ -48,9 +48,9 @@ static const fgr_camera_path paths[] = {
 /* A warm key light from the upper left of the canonical view and a cool fill from the right. */
 static const fgr_light lights[] = {
     {FGR_HEADER(fgr_light), FGR_LIGHT_DIRECTIONAL, {-0.1f, -0.75f, 0.75f}, {1.0f, 0.93f, 0.82f},
-     1.1f},
+     1.1f, 0.0f},
     {FGR_HEADER(fgr_light), FGR_LIGHT_DIRECTIONAL, {0.7f, 0.5f, -0.3f}, {0.45f, 0.55f, 0.8f},
-     0.35f},
+     0.35f, 0.0f},
 };
 
 /* The analytic DE 0.5 r log(r) / dr is an estimate: sampled, its gradient reaches about 1.24, so

@@ -33,12 +33,16 @@ static const fgr_camera_path paths[] = {
     FGR_CAMERA_PATH("orbit", orbit_keys),
 };
 
-/* Directional lights point towards the light; colour, then intensity. */
+/* Directional lights point towards the light; colour, then intensity. For a light with a disc
+ * (soft shadows in the path mode; the shaded mode treats it as point-like), use
+ * FGR_DIRECTIONAL_DISC_LIGHT(..., angular_radius_degrees): the sun's is about 0.27. */
 static const fgr_light lights[] = {
     FGR_DIRECTIONAL_LIGHT(0.6f, -0.5f, 0.8f, 1.0f, 0.95f, 0.85f, 1.1f),
     FGR_DIRECTIONAL_LIGHT(-0.7f, 0.4f, 0.2f, 0.4f, 0.5f, 0.8f, 0.35f),
 };
 
+/* FGR_SCENE asks for no render mode (default_mode NULL): fgr renders shaded unless the user
+ * names a mode. FGR_SCENE_WITH_MODE(..., "path") makes the path tracer the scene's default. */
 static const fgr_scene_desc scene = FGR_SCENE(
     "@SCENE_ID@", "@SCENE_NAME@", "a bumpy ball: the scene fgr new-scene starts from",
     @SCENE_SYMBOL@_cl, @SCENE_SYMBOL@_cl_path, params, cameras, paths, lights,

@@ -11,6 +11,8 @@
 
 #include <glm/vec3.hpp>
 
+#include "fgr/render_mode.hpp"
+
 namespace fgr {
 
 enum class ParamType { Float, Int, Bool, Vec3, Colour };
@@ -64,6 +66,10 @@ struct Light {
     glm::vec3 vector{0.0f, 0.0f, 1.0f};  // towards the light (directional) or position (point)
     glm::vec3 colour{1.0f};
     float intensity = 1.0f;
+    // Directional lights: the angular radius of the light's disc (ABI 1.2), 0 for a point-like
+    // light and always 0 for point lights. The path mode samples the disc; the shaded mode ignores
+    // it.
+    float angular_radius = 0.0f;  // radians
 };
 
 struct MarchSettings {
@@ -87,6 +93,7 @@ struct Scene {
     std::vector<Light> lights;
     uint64_t effects = 0;
     MarchSettings march;
+    RenderMode default_mode = RenderMode::Shaded;  // what the scene asks for (ABI 1.2)
 
     const ParamInfo* find_param(const std::string& param_id) const;
     const NamedCamera* find_camera(const std::string& camera_name) const;

@@ -35,7 +35,7 @@ extern "C" {
 #endif
 
 #define FGR_ABI_VERSION_MAJOR 1u
-#define FGR_ABI_VERSION_MINOR 1u
+#define FGR_ABI_VERSION_MINOR 2u
 /* Packed as (major << 16) | minor. */
 #define FGR_ABI_VERSION ((FGR_ABI_VERSION_MAJOR << 16) | FGR_ABI_VERSION_MINOR)
 #define FGR_ABI_MAJOR(version) ((uint32_t)(version) >> 16)
@@ -129,6 +129,13 @@ typedef struct fgr_light {
     float vector[3];
     float colour[3]; /* linear RGB, non-negative */
     float intensity; /* non-negative */
+
+    /* ABI 1.2. Directional lights: the angular radius of the light's disc as seen from the scene,
+     * in degrees (the sun's is about 0.27). 0, and every light of a plugin built against 1.0 or
+     * 1.1, means a point-like (delta) light. Finite, in [0, 45]. Point lights ignore it (it must
+     * still be in range). The path mode samples the disc; the shaded mode ignores it (its soft
+     * shadows, FGR_EFFECT_SOFT_SHADOWS, keep their own parameter, shadow_sharpness). */
+    float angular_radius_degrees;
 } fgr_light;
 
 /* ---------------------------------------------------------------------------------------------
@@ -166,8 +173,10 @@ typedef struct fgr_march_settings {
 } fgr_march_settings;
 
 /* ---------------------------------------------------------------------------------------------
- * The scene. Fields after `march` were appended in later minor versions (see each one's comment);
- * fgr_march_settings can therefore no longer grow: new march settings go into the scene itself.
+ * The scene. Fields after `march` were appended in later minor versions (see each one's comment):
+ * the source's length (1.1) and the render mode the scene asks for by default (`default_mode`,
+ * 1.2). fgr_march_settings can therefore no longer grow: new march settings go into the scene
+ * itself.
  *
  * OpenCL source contract (see sdk/README.md): the source defines
  *     real scene_de(vec3 p, PARAMS)
@@ -205,6 +214,11 @@ typedef struct fgr_scene_desc {
      * 4 MiB + 1 (a NUL-terminated 4 MiB source). 0, or a plugin built against 1.0, means that
      * `source` is NUL-terminated. FGR_SCENE (fgr/scene_helpers.h) fills it for a source array. */
     uint64_t source_length;
+
+    /* ABI 1.2. The render mode the scene asks for when the user names none, by name: "shaded"
+     * or "path" (fgr's `--mode`; a host refuses a name it does not know, with the choices). NULL
+     * or "", and every plugin built against 1.0 or 1.1, mean "shaded". */
+    const char* default_mode;
 } fgr_scene_desc;
 
 /* The entry point. Must return the same pointer every call, or NULL on failure. */

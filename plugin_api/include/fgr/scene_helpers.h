@@ -69,11 +69,20 @@
 #define FGR_CAMERA_PATH(name, keys) \
     { FGR_HEADER(fgr_camera_path), name, keys, (uint32_t)(sizeof(keys) / sizeof((keys)[0])) }
 
+/* A directional light from (x, y, z), point-like (angular radius 0). */
 #define FGR_DIRECTIONAL_LIGHT(x, y, z, r, g, b, intensity) \
-    { FGR_HEADER(fgr_light), FGR_LIGHT_DIRECTIONAL, {x, y, z}, {r, g, b}, intensity }
+    { FGR_HEADER(fgr_light), FGR_LIGHT_DIRECTIONAL, {x, y, z}, {r, g, b}, intensity, 0.0f }
+
+/* A directional light whose disc has the given angular radius in degrees, in [0, 45] (the sun's
+ * is about 0.27): the path mode samples the disc, the shaded mode treats it as point-like. */
+#define FGR_DIRECTIONAL_DISC_LIGHT(x, y, z, r, g, b, intensity, angular_radius_degrees) \
+    {                                                                                   \
+        FGR_HEADER(fgr_light), FGR_LIGHT_DIRECTIONAL, {x, y, z}, {r, g, b}, intensity,  \
+            angular_radius_degrees                                                      \
+    }
 
 #define FGR_POINT_LIGHT(x, y, z, r, g, b, intensity) \
-    { FGR_HEADER(fgr_light), FGR_LIGHT_POINT, {x, y, z}, {r, g, b}, intensity }
+    { FGR_HEADER(fgr_light), FGR_LIGHT_POINT, {x, y, z}, {r, g, b}, intensity, 0.0f }
 
 #define FGR_COUNT(array) ((uint32_t)(sizeof(array) / sizeof((array)[0])))
 
@@ -97,13 +106,25 @@ constexpr uint64_t fgr_source_length(const char (&)[N]) { return N; }
              char(*)[sizeof(source)]: (uint64_t)sizeof(source), default: (uint64_t)0)
 #endif
 
-/* A whole scene description from static arrays of params, cameras, camera paths and lights. */
+/* A whole scene description from static arrays of params, cameras, camera paths and lights. It
+ * asks for no render mode (default_mode NULL: fgr renders it shaded unless told otherwise). */
 #define FGR_SCENE(id, name, description, source, source_name, params, cameras, paths, lights,   \
                   effects, march)                                                                 \
     {                                                                                             \
         FGR_HEADER(fgr_scene_desc), id, name, description, source, source_name, params,           \
             FGR_COUNT(params), cameras, FGR_COUNT(cameras), paths, FGR_COUNT(paths), lights,      \
-            FGR_COUNT(lights), effects, march, FGR_SOURCE_LENGTH(source)                          \
+            FGR_COUNT(lights), effects, march, FGR_SOURCE_LENGTH(source), NULL                    \
+    }
+
+/* The same, asking for a render mode by default: "shaded" or "path" (ABI 1.2). (Not written with
+ * FGR_SCENE's help: `march` is usually FGR_MARCH(...), whose commas would split the arguments of a
+ * macro it is passed on to.) */
+#define FGR_SCENE_WITH_MODE(id, name, description, source, source_name, params, cameras, paths,  \
+                            lights, effects, march, default_mode)                                 \
+    {                                                                                             \
+        FGR_HEADER(fgr_scene_desc), id, name, description, source, source_name, params,           \
+            FGR_COUNT(params), cameras, FGR_COUNT(cameras), paths, FGR_COUNT(paths), lights,      \
+            FGR_COUNT(lights), effects, march, FGR_SOURCE_LENGTH(source), default_mode            \
     }
 
 #endif /* FGR_SCENE_HELPERS_H */
