@@ -48,8 +48,8 @@ inline march_limits scene_march_limits(float pixel_angle, PARAMS) {
  * Inactive lanes are not evaluated for hits and keep t = 0. `travelled` is the distance the ray
  * covered before origin (a reflected ray's first leg): the hit footprint grows with the whole
  * path, so secondary rays resolve no finer than the pixel they end up in. */
-inline march_result march_rays_within(vec3 origin, vec3 dir, mask active, real travelled,
-                                      real reach, march_limits limits, PARAMS) {
+inline march_result march_rays_core(vec3 origin, vec3 dir, mask active, real travelled,
+                                    real reach, march_limits limits, int departing, PARAMS) {
     march_result result;
     result.t = fgr_real(0.0f);
     result.hit = (mask)(0);
@@ -62,6 +62,8 @@ inline march_result march_rays_within(vec3 origin, vec3 dir, mask active, real t
      * (only such steps need checking). */
     real last_radius = fgr_real(0.0f);
     real last_step = fgr_real(0.0f);
+    /* The DE at the last point, for `departing` rays (infinite before the first). */
+    real last_dist = fgr_real(INFINITY);
     mask stretched = (mask)(0);
     const bool relaxing = limits.relaxation > 1.0f;
     for (int step = 0; step < limits.max_steps; ++step) {
@@ -79,6 +81,12 @@ inline march_result march_rays_within(vec3 origin, vec3 dir, mask active, real t
         result.closest = select(result.closest, fmin(result.closest, dist), active & !overshot);
 #endif
         mask now_hit = active & !overshot & (dist < (result.t + travelled) * limits.footprint);
+        if (departing) {
+            /* A ray leaving a surface may start within the footprint of a wall beside it (in a
+             * crevice): only a surface it approaches (the DE falling) stops it. */
+            now_hit &= dist < last_dist;
+            last_dist = select(last_dist, dist, active & !overshot);
+        }
         result.hit |= now_hit;
         active &= !now_hit;
         if (relaxing) {
@@ -109,6 +117,19 @@ inline march_result march_rays_within(vec3 origin, vec3 dir, mask active, real t
         active &= result.t <= reach;
     }
     return result;
+}
+
+inline march_result march_rays_within(vec3 origin, vec3 dir, mask active, real travelled,
+                                      real reach, march_limits limits, PARAMS) {
+    return march_rays_core(origin, dir, active, travelled, reach, limits, 0, PARAMS_PASS);
+}
+
+/* march_rays_within for a ray leaving a surface point (the path tracer's bounces and shadow rays,
+ * which must see the same occluders): a hit counts only where the DE fell since the last step, so
+ * a wall the ray starts beside and moves away from never stops it. */
+inline march_result march_rays_departing(vec3 origin, vec3 dir, mask active, real travelled,
+                                         real reach, march_limits limits, PARAMS) {
+    return march_rays_core(origin, dir, active, travelled, reach, limits, 1, PARAMS_PASS);
 }
 
 inline march_result march_rays_after(vec3 origin, vec3 dir, mask active, real travelled,

@@ -32,6 +32,7 @@
 #define FGR_PATH_LIGHT_SAMPLING 1  /* next-event estimation */
 #define FGR_PATH_MIS 2             /* weigh light and BSDF sampling by the power heuristic */
 #define FGR_PATH_ENVIRONMENT_IS 4  /* sample the environment by importance, not uniformly */
+#define FGR_PATH_INDEPENDENT 8     /* independent random samples instead of stratified ones */
 
 /* Mirrors PathSettingsArgument in host/src/modes/path_mode.cpp. */
 typedef struct path_settings {
@@ -204,7 +205,13 @@ __kernel void fgr_render(FGR_RENDER_ARGS, __constant const float* lights, path_s
     const tile_pixels pixels = pixels_of_tile(tile, camera);
     mask active = pixels.inside;
 
-    sampler rng = sampler_start(pixels.px, pixels.py, sample, settings.seed);
+    /* Stratified: sample `sample` of one scrambled Sobol sequence per pixel. Independent (to
+     * measure what stratification buys): the first point of a sequence scrambled anew for every
+     * sample, which is a uniformly random point. */
+    const bool independent = (settings.flags & FGR_PATH_INDEPENDENT) != 0;
+    sampler rng = sampler_start(pixels.px, pixels.py, independent ? 0 : sample,
+                                independent ? settings.seed + (uint)sample * 0x9e3779b9u
+                                            : settings.seed);
     const real2 in_pixel = sampler_next_2d(&rng);
     const real2 on_lens = sampler_next_2d(&rng);
     camera_sample jitter;
@@ -223,7 +230,12 @@ __kernel void fgr_render(FGR_RENDER_ARGS, __constant const float* lights, path_s
     vec3 origin = ray.origin, dir = ray.dir;
     vec3 radiance = v3_splat(0.0f, 0.0f, 0.0f);
     vec3 throughput = v3_splat(1.0f, 1.0f, 1.0f);
-    real travelled = fgr_real(0.0f);
+    /* How far the camera saw the surface: the distance whose pixel footprint sets how finely
+     * every later vertex of the path resolves the surface (0 before the first hit). A bounce
+     * resolves the surface no finer than its pixel shows it, and no coarser either: a footprint
+     * that kept growing with the path's length would thicken the surface bounce after bounce
+     * until crevices closed around the path and trapped its light. */
+    real seen_at = fgr_real(0.0f);
     /* Whether light sampling also covered the last bounce's BSDF sample, and that sample's pdf. */
     mask light_sampled = (mask)(0);
     real last_pdf = fgr_real(0.0f);
@@ -237,8 +249,10 @@ __kernel void fgr_render(FGR_RENDER_ARGS, __constant const float* lights, path_s
 #endif
 
     for (int bounce = 0; fgr_any(active); ++bounce) {
-        const march_result hit = march_rays_after(origin, dir, active, travelled, limits,
-                                                  PARAMS_PASS);
+        const march_result hit =
+            bounce == 0 ? march_rays(origin, dir, active, limits, PARAMS_PASS)
+                        : march_rays_departing(origin, dir, active, seen_at,
+                                               fgr_real(limits.max_distance), limits, PARAMS_PASS);
 #ifdef FGR_STATS
         lane_steps += hit.steps;
         packet_steps += lanes_max(hit.steps);
@@ -253,7 +267,8 @@ __kernel void fgr_render(FGR_RENDER_ARGS, __constant const float* lights, path_s
         if (!fgr_any(active)) break;
 
         const vec3 p = v3_mad(origin, dir, hit.t);
-        const real path_length = travelled + hit.t;
+        if (bounce == 0) seen_at = hit.t;
+        const real path_length = seen_at;
         const real eps = fmax(path_length * camera.pixel_angle * param_normal_epsilon,
                               FGR_MIN_LENGTH);
         vec3 n = estimate_normal(p, eps, PARAMS_PASS);
@@ -262,9 +277,12 @@ __kernel void fgr_render(FGR_RENDER_ARGS, __constant const float* lights, path_s
         packet_steps += 4;
 #endif
         const vec3 wo = v3_neg(dir);
-        /* A ray that met the surface from behind its normal (inside a thin sliver the march
-         * stepped into) sees the side it came from. */
-        n = v3_select(n, v3_neg(n), v3_dot(n, wo) < 0.0f);
+        /* Where the DE's gradient vanishes over the stencil (a point midway between two walls
+         * of a slot), there is no normal to estimate: the surface faces the ray. */
+        n = v3_select(n, wo, !(v3_length2(n) > 0.5f));
+        /* A ray that meets a surface from behind its normal (a camera ray inside a sliver it
+         * stepped into, a bounce grazing a thickened edge) sees the side it came from. */
+        n = v3_select(n, v3_neg(n), active & (v3_dot(n, wo) < 0.0f));
         const material m = scene_material(p, PARAMS_PASS);
         radiance = v3_select(radiance, v3_add(radiance, v3_mul(throughput, m.emission)), active);
         if (bounce == 0) {
@@ -294,8 +312,8 @@ __kernel void fgr_render(FGR_RENDER_ARGS, __constant const float* lights, path_s
                        (fmax(fmax(f.x, f.y), f.z) > 0.0f) &
                        (fmax(fmax(light.radiance.x, light.radiance.y), light.radiance.z) > 0.0f);
             if (fgr_any(lit)) {
-                const march_result shadow = march_rays_within(leave, light.dir, lit, path_length,
-                                                              light.reach, limits, PARAMS_PASS);
+                const march_result shadow = march_rays_departing(
+                    leave, light.dir, lit, path_length, light.reach, limits, PARAMS_PASS);
 #ifdef FGR_STATS
                 lane_steps += shadow.steps;
                 packet_steps += lanes_max(shadow.steps);
@@ -330,7 +348,6 @@ __kernel void fgr_render(FGR_RENDER_ARGS, __constant const float* lights, path_s
         }
         origin = leave;
         dir = scattered.wi;
-        travelled = path_length;
     }
 
     if (settings.radiance_clamp > 0.0f) {

@@ -169,8 +169,18 @@ TEST_F(BenchRun, FixedFramesPerRunWithConsistentFigures) {
     std::vector<std::string> lines;
     for (std::string line; std::getline(csv, line);) lines.push_back(line);
     ASSERT_EQ(lines.size(), 4u);  // header, two runs, average
-    for (const std::string& line : lines) EXPECT_EQ(std::count(line.begin(), line.end(), ','), 15);
+    for (const std::string& line : lines) EXPECT_EQ(std::count(line.begin(), line.end(), ','), 17);
     EXPECT_EQ(lines[3].rfind("inline,average,48,32,5,", 0), 0u) << lines[3];
+    // Samples per second: every run's frames x spp x pixels over its seconds.
+    for (const RunFigures& run : report.runs) {
+        EXPECT_NEAR(run.samples_per_second,
+                    double(run.frames) * settings.samples * 48 * 32 / run.seconds,
+                    1e-9 * run.samples_per_second);
+        EXPECT_GT(run.samples_per_second, 0.0);
+    }
+    EXPECT_NE(lines[0].find(",render_mode,samples_per_second"), std::string::npos) << lines[0];
+    EXPECT_NE(lines[3].find(",shaded,"), std::string::npos) << lines[3];
+    EXPECT_EQ(json["settings"]["render_mode"], "shaded");
 }
 
 // A path from the Mandelbulb's canonical view into a deep zoom, two frames: one at each end.

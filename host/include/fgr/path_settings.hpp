@@ -64,6 +64,9 @@ struct PathSettings {
     bool mis = true;             // power-heuristic weights between light and BSDF sampling
     bool environment_importance = true;  // sample the environment by its luminance
     bool scene_lights = true;    // the scene's own lights shine besides the environment
+    // Stratified samples (scrambled Sobol per pixel); false draws independent random ones, to
+    // measure what stratification buys (the error then falls exactly as 1 / sqrt(samples)).
+    bool stratified = true;
     uint32_t seed = 0;           // another seed, another noise pattern
     // What lights the scene; null renders with the default sky.
     std::shared_ptr<const PreparedEnvironment> environment;

@@ -26,7 +26,12 @@ struct PathSettingsArgument {
 };
 static_assert(sizeof(PathSettingsArgument) == 32, "must match path_settings in fgr_mode_path.cl");
 
-enum PathFlags : cl_int { kLightSampling = 1, kMis = 2, kEnvironmentImportance = 4 };
+enum PathFlags : cl_int {
+    kLightSampling = 1,
+    kMis = 2,
+    kEnvironmentImportance = 4,
+    kIndependentSamples = 8,
+};
 
 float luminance(glm::vec3 rgb) { return 0.2126f * rgb.r + 0.7152f * rgb.g + 0.0722f * rgb.b; }
 
@@ -168,7 +173,8 @@ void PathMode::bind(cl::Kernel& kernel, const FrameRequest& request) {
     argument.roulette_depth = settings.roulette_depth > 0 ? settings.roulette_depth : kMaxBounces + 1;
     argument.radiance_clamp = settings.radiance_clamp;
     argument.flags = (settings.light_sampling ? kLightSampling : 0) | (settings.mis ? kMis : 0) |
-                     (settings.environment_importance ? kEnvironmentImportance : 0);
+                     (settings.environment_importance ? kEnvironmentImportance : 0) |
+                     (settings.stratified ? 0 : kIndependentSamples);
     argument.seed = settings.seed;
     argument.light_count = light_count_;
     argument.environment_pick = environment_pick_;
