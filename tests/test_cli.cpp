@@ -5,6 +5,11 @@
 #include <gtest/gtest.h>
 
 #include "child_process.hpp"
+#include "fgr/hdr_io.hpp"
+
+#include <ImfChannelList.h>
+#include <ImfHeader.h>
+#include <ImfRgbaFile.h>
 
 
 #include <algorithm>
@@ -247,6 +252,31 @@ const std::vector<BadInput> kBadInputs = {
     {"BadBitDepth", render_args({"--bit-depth", "12"}), 2, {"bit-depth"}},
     {"UnknownEffect", render_args({"--effects", "+sparkles"}), 2, {"sparkles", "shadows"}},
     {"UnknownPrecision", render_args({"--precision", "half"}), 2, {"precision", "half"}},
+    {"UnknownMode", render_args({"--mode", "raster"}), 2, {"mode", "raster"}},
+    {"ViewUnknownMode", {"view", "--mode", "raster"}, 2, {"mode", "raster"}},
+    {"BenchUnknownMode", {"bench", "mandelbulb", "--frames", "1", "--mode", "raster"}, 2,
+     {"mode", "raster"}},
+    {"MissingEnvironmentFile",
+     render_args({"--mode", "path", "--environment", "no_such_map.hdr"}),
+     1,
+     {"no_such_map.hdr"}},
+    {"EnvironmentNotAnImage", render_args({"--mode", "path", "--environment", "/etc/hostname"}),
+     1, {"hostname"}},
+    {"BadUniformRadiance", render_args({"--mode", "path", "--environment", "uniform:-1"}), 2,
+     {"uniform"}},
+    {"SkyOptionWithoutSky",
+     render_args({"--mode", "path", "--environment", "studio", "--turbidity", "3"}),
+     2,
+     {"turbidity", "sky"}},
+    {"TurbidityOutOfRange", render_args({"--mode", "path", "--turbidity", "40"}), 2,
+     {"turbidity"}},
+    {"NegativeClamp", render_args({"--mode", "path", "--clamp", "-1"}), 2, {"clamp"}},
+    {"AovWithPng", render_args({"--aov", "albedo"}), 2, {"aov", ".exr"}},
+    {"UnknownAov", render_args({"--aov", "velocity"}), 2, {"velocity"}, "out.exr"},
+    {"AlbedoAovInShadedMode", render_args({"--aov", "albedo"}), 2, {"path"}, "out.exr"},
+    {"ZeroTimeLimit", render_args({"--time-limit", "0"}), 2, {"time-limit"}},
+    {"EnvironmentCommandBadOutput", {"environment", "studio", "-o", "studio.png"}, 2, {".hdr"}},
+    {"EnvironmentCommandUnknownKind", {"environment", "disco", "-o", "x.hdr"}, 2, {"disco"}},
     {"ViewUnknownPrecision", {"view", "--precision", "half"}, 2, {"precision", "half"}},
     {"BenchUnknownPrecision",
      {"bench", "mandelbulb", "--frames", "1", "--precision", "half"},
@@ -342,6 +372,37 @@ TEST_F(CliTest, PrecisionDoubleRendersAndUnknownPrecisionIsRefused) {
     const RunResult bad = run({"render", "mandelbulb", "-o", out_png().string(), "--precision",
                                "half"});
     EXPECT_EQ(bad.exit_code, 2) << bad;
+}
+
+// Path mode to an EXR with every layer: the beauty read back is finite, non-negative radiance at
+// the size asked for, every layer's channels are in the file, and the figures are on stdout. A
+// time limit stops a long render early with what it has, and says so.
+TEST_F(CliTest, PathModeWritesAnExrWithItsLayersAndStopsAtATimeLimit) {
+    const fs::path exr = dir() / "path.exr";
+    const RunResult result =
+        run({"render", "mandelbulb", "--mode", "path", "--spp", "2", "-o", exr.string(),
+             "--width", "24", "--height", "16", "--aov", "albedo,normal,depth,alpha"});
+    ASSERT_EQ(result.exit_code, 0) << result;
+    EXPECT_NE(result.out.find("samples_per_pixel 2\n"), std::string::npos) << result;
+    EXPECT_NE(result.err.find("environment: sky"), std::string::npos) << result;
+    const HdrImage beauty = read_hdr_image(exr);
+    ASSERT_EQ(beauty.width, 24);
+    ASSERT_EQ(beauty.height, 16);
+    const Imf::RgbaInputFile file(exr.string().c_str());
+    const Imf::ChannelList& channels = file.header().channels();
+    for (const char* name : {"R", "G", "B", "A", "albedo.R", "albedo.G", "albedo.B", "normal.X",
+                             "normal.Y", "normal.Z", "depth.Z"}) {
+        EXPECT_NE(channels.findChannel(name), nullptr) << name;
+    }
+    for (float value : beauty.rgb) EXPECT_TRUE(std::isfinite(value) && value >= 0.0f);
+
+    const RunResult limited =
+        run({"render", "mandelbulb", "--mode", "path", "--spp", "4096", "--time-limit", "0.5",
+             "-o", (dir() / "limited.png").string(), "--width", "24", "--height", "16"});
+    ASSERT_EQ(limited.exit_code, 0) << limited;
+    EXPECT_NE(limited.err.find("--time-limit"), std::string::npos) << limited;
+    EXPECT_EQ(limited.out.find("samples_per_pixel 4096"), std::string::npos) << limited;
+    EXPECT_TRUE(fs::exists(dir() / "limited.png"));
 }
 
 TEST_F(CliTest, RelativeOutputPathIsInWorkingDirectory) {

@@ -125,6 +125,10 @@ void render_to_file(const Scene& scene, const FrameRequest& request, const Compu
     settings.stats = options.stats;
     settings.precision = options.precision;
     settings.mode = chosen_mode(options.mode, scene);
+    const Aovs aovs = parse_aovs(options.aovs);
+    if ((aovs.albedo || aovs.normal) && settings.mode != RenderMode::Path) {
+        throw UsageError("--aov albedo and normal come from the path tracer: add --mode path");
+    }
     FrameRequest reported = request;
     if (!options.samples && settings.mode == RenderMode::Path) reported.samples = kPathSamples;
     if (settings.mode == RenderMode::Path) {
@@ -171,7 +175,7 @@ void render_to_file(const Scene& scene, const FrameRequest& request, const Compu
     }
     try {
         write_still(output, frame, options.bit_depth,
-                    param_value(scene, request.params, "exposure"), parse_aovs(options.aovs));
+                    param_value(scene, request.params, "exposure"), aovs);
     } catch (const std::runtime_error& error) {
         throw RuntimeFailure(error.what());
     }
