@@ -20,6 +20,8 @@ set ylabel "RMSE against 4096 spp"
 set key top right
 set grid
 set title "Path tracer convergence (Mandelbulb, studio, 4 bounces)"
+set fit quiet
+set fit logfile "/dev/null"
 f(x) = a * x**-0.5
 a = 0.3
 fit f(x) "< grep independent bench/results/path/convergence.dat" using 2:3 via a

@@ -8,8 +8,8 @@ fgr=${FGR:-build/bin/fgr}
 out=bench/results/path
 mkdir -p "$out"
 "$fgr" environment studio -o "$out/studio.hdr" --width 1024
-"$fgr" render bulb-stage --spp 256 --width 480 --height 360 -o "$out/bulb-stage-sky.png"
-"$fgr" render bulb-stage --spp 256 --width 480 --height 360 --environment "$out/studio.hdr" \
+"$fgr" render bulb-stage --spp 256 --width 360 --height 270 -o "$out/bulb-stage-sky.png"
+"$fgr" render bulb-stage --spp 256 --width 360 --height 270 --environment "$out/studio.hdr" \
     --no-scene-lights -o "$out/bulb-stage-studio.png"
-"$fgr" render mandelbulb --mode path --spp 256 --width 480 --height 360 \
+"$fgr" render mandelbulb --mode path --spp 256 --width 360 --height 270 \
     -o "$out/mandelbulb-sky.png"

@@ -1,6 +1,7 @@
 // `fgr bench accuracy`: image error metrics, the Pareto front, and a sweep that measures every knob
 // against a reference render, with its CSV, gnuplot script and plot.
 #include <cmath>
+#include <cstdio>
 #include <filesystem>
 #include <set>
 #include <tuple>
@@ -272,6 +273,53 @@ TEST(AccuracySweep, SsimOrdersClearlyOrderedSettingsAsRmseDoes) {
                     1e-5 * std::max(p.error.one_minus_ssim, 1e-3))
             << line;
     }
+}
+
+// The path tracer's sweep: every knob against the one path reference; more samples always lower
+// the error (noise falls as 1/sqrt(spp): from 1 to 64 samples RMSE must fall by well over half),
+// and the bounce cap of 1 (direct light only) is farther from the reference than 4 bounces, on
+// a Menger sponge whose crevices hold interreflected light.
+TEST(AccuracySweep, PathModeSweepsNoiseKnobsAgainstALongRender) {
+    const ComputeDevice device = open_device(-1);
+    ProgramCache cache{std::filesystem::path()};
+    const Scene scene = test::built_scene("menger.so");
+    AccuracySettings settings;
+    settings.width = 40;
+    settings.height = 30;
+    settings.reference_samples = 256;
+    settings.repeats = 1;
+    PathSettings base;
+    EnvironmentChoice studio;
+    studio.kind = EnvironmentKind::Studio;
+    base.environment = prepare_environment(studio, scene);
+    const AccuracyReport report = run_path_accuracy_sweep(scene, device, cache, settings, base);
+    ASSERT_EQ(report.references.size(), 1u);
+    EXPECT_EQ(report.references[0].name, "path");
+    const auto point_of = [&](const std::string& knob, const std::string& value) {
+        for (const AccuracyPoint& p : report.points) {
+            if (p.knob == knob && p.value == value) return p;
+        }
+        ADD_FAILURE() << "no point " << knob << "=" << value;
+        return AccuracyPoint{};
+    };
+    for (const auto& [knob, value] :
+         std::vector<std::pair<std::string, std::string>>{{"default", ""},
+                                                          {"bounces", "2"},
+                                                          {"roulette_depth", "off"},
+                                                          {"strategy", "no MIS"},
+                                                          {"strategy", "no light sampling"},
+                                                          {"strategy", "uniform environment"}}) {
+        EXPECT_EQ(point_of(knob, value).reference, "path") << knob;
+    }
+    const double one = point_of("spp", "1").error.rmse, four = point_of("spp", "4").error.rmse;
+    const double many = point_of("spp", "64").error.rmse;
+    std::printf("RMSE at 1, 4, 64 spp: %.3f %.3f %.3f\n", one, four, many);
+    EXPECT_GT(one, four);
+    EXPECT_GT(four, many);
+    EXPECT_LT(many, 0.4 * one);
+    EXPECT_GT(point_of("bounces", "1").error.rmse, point_of("bounces", "4").error.rmse);
+    const std::string csv = accuracy_csv(report);
+    EXPECT_NE(csv.find("\nstrategy,no light sampling,path,"), std::string::npos) << csv;
 }
 
 TEST(AccuracyCommand, WritesTheCsvScriptAndPlot) {

@@ -11,6 +11,7 @@
 #include <functional>
 #include <thread>
 #include <cmath>
+#include <cstdio>
 #include <filesystem>
 #include <fstream>
 #include <map>
@@ -512,6 +513,27 @@ TEST_F(ViewerTest, ExitAfterEndsCleanlyWithFrameStatistics) {
     EXPECT_GE(shown[0], 1) << "no frame reached the window in 4 s" << run.result;
     EXPECT_FALSE(stat_text(run.result.out, "last_frame").empty()) << run.result;
     EXPECT_TRUE(run.screenshots.empty());
+}
+
+// Path mode refines a still view progressively past the shaded mode's sample cap (the viewer
+// runs with --samples 1): after 8 s standing still the last frame shown averages several samples
+// per pixel, all at full resolution.
+TEST_F(ViewerTest, PathModeAccumulatesSamplesWhileTheViewStandsStill) {
+    const test::RunResult warm =
+        test::run_fgr({"render", "mandelbulb", "--mode", "path", "--spp", "1", "--width", "16",
+                       "--height", "12", "-o", "warm.png"},
+                      dir());
+    ASSERT_EQ(warm.exit_code, 0) << warm;
+    fs::remove(dir() / "warm.png");
+    const ViewerRun run = view("", {"--mode", "path", "--environment", "uniform"}, std::nullopt, 8);
+    ASSERT_EQ(run.result.exit_code, 0) << run.result;
+    const std::string last = stat_text(run.result.out, "last_frame");
+    ASSERT_FALSE(last.empty()) << run.result;
+    int samples = 0;
+    float scale = 0.0f;
+    ASSERT_EQ(std::sscanf(last.c_str(), "scale %f samples %d", &scale, &samples), 2) << last;
+    EXPECT_EQ(scale, 1.0f) << last;
+    EXPECT_GT(samples, 2) << last;
 }
 
 // --precision double renders in double: not just the label, the pixels. With a fine hit

@@ -33,6 +33,9 @@ void add_bench_accuracy_command(CLI::App& bench, BenchOptions& options) {
         ->check(CLI::Range(1, 20));
     accuracy->add_option("-o,--output", sweep.output,
                          "write PREFIX.csv, PREFIX.gp and PREFIX.png (default: accuracy-SCENE)");
+    // --mode path sweeps samples, bounces, roulette and sampling strategies instead, against a
+    // path reference of --reference-spp (at least 256) samples per pixel.
+    add_mode_options(accuracy, sweep.mode);
 }
 
 int command_bench_accuracy(const AccuracyOptions& options, int device_index) {
@@ -43,22 +46,26 @@ int command_bench_accuracy(const AccuracyOptions& options, int device_index) {
     check_output_directory(csv);
     const ComputeDevice device = open_requested_device(device_index);
     ProgramCache cache(ProgramCache::default_directory());
-    const AccuracyReport report = run_accuracy_sweep(
-        scene, device, cache, options.settings, [](int done, int total, const std::string& what) {
-            if (done < total) spdlog::info("[{}/{}] {}", done + 1, total, what);
-        });
+    const auto progress = [](int done, int total, const std::string& what) {
+        if (done < total) spdlog::info("[{}/{}] {}", done + 1, total, what);
+    };
+    const AccuracyReport report =
+        chosen_mode(options.mode, scene) == RenderMode::Path
+            ? run_path_accuracy_sweep(scene, device, cache, options.settings,
+                                      chosen_path_settings(options.mode, scene), progress)
+            : run_accuracy_sweep(scene, device, cache, options.settings, progress);
     for (const AccuracyReference& reference : report.references) {
         fmt::print("{} reference ({}): {:.0f} ms\n", reference.name, reference.settings,
                    reference.render_ms);
     }
     // PSNR and the relative depth error are in the CSV; the front column marks the RMSE front
     // (r) and the 1 - SSIM front (s) among the points of one reference.
-    fmt::print("{:<15} {:>6} {:>8} {:>9} {:>8} {:>8} {:>8} {:>6} {:>9} {}\n", "knob", "value",
+    fmt::print("{:<15} {:>19} {:>8} {:>9} {:>8} {:>8} {:>8} {:>6} {:>9} {}\n", "knob", "value",
                "ref", "render ms", "steps/px", "rmse", "1-ssim", "hit %", "depth err", "front");
     for (const AccuracyPoint& point : report.points) {
         const std::string front = std::string(point.pareto || point.pareto_ssim ? " " : "") +
                                   (point.pareto ? "r" : "") + (point.pareto_ssim ? "s" : "");
-        fmt::print("{:<15} {:>6} {:>8} {:>9.1f} {:>8.2f} {:>8.3f} {:>8.4f} {:>6.2f} {:>9.3g}{}\n",
+        fmt::print("{:<15} {:>19} {:>8} {:>9.1f} {:>8.2f} {:>8.3f} {:>8.4f} {:>6.2f} {:>9.3g}{}\n",
                    point.knob, point.value, point.reference, point.render_ms,
                    point.steps_per_pixel, point.error.rmse, point.error.one_minus_ssim,
                    point.error.hit_mismatch_percent, point.error.mean_depth_error, front);

@@ -130,6 +130,7 @@ int command_view(ViewCommandOptions& options);
 struct AccuracyOptions {
     std::string scene;
     AccuracySettings settings;
+    ModeOptions mode;  // --mode path sweeps the path tracer's noise knobs instead
     std::string output;  // prefix of the .csv, .gp and .png files
 };
 

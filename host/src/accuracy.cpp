@@ -260,13 +260,14 @@ std::string accuracy_gnuplot(const AccuracyReport& report, const std::string& sc
             series.emplace_back(point.knob, point.reference);
         }
     }
-    // The geometry knobs' Pareto fronts as inline data, in order of time (drawn from the CSV, a
+    // The Pareto fronts of the points against the first reference (the geometry knobs', or the
+    // path tracer's) as inline data, in order of time (drawn from the CSV, a
     // line would break at every row that is not on the front).
     const auto front = [&](const std::string& name, bool AccuracyPoint::*on_front,
                            double ImageError::*error) {
         std::vector<std::pair<double, double>> line;
         for (const AccuracyPoint& point : report.points) {
-            if (point.reference == "geometry" && point.*on_front) {
+            if (point.reference == report.references.front().name && point.*on_front) {
                 line.emplace_back(point.render_ms, point.error.*error);
             }
         }
@@ -280,12 +281,12 @@ std::string accuracy_gnuplot(const AccuracyReport& report, const std::string& sc
                            const std::string& ylabel) {
         std::string plot = fmt::format(
             "set ylabel '{}'\n"
-            "plot ${} using 1:2 with lines lw 2 lc rgb '#888888' title 'Pareto front (geometry "
-            "knobs)'",
-            ylabel, front_name);
+            "plot ${} using 1:2 with lines lw 2 lc rgb '#888888' title 'Pareto front ({} "
+            "reference)'",
+            ylabel, front_name, report.references.front().name);
         int style = 1;
         for (const auto& [knob, reference] : series) {
-            const bool own = reference != "geometry";
+            const bool own = reference != report.references.front().name;
             plot += fmt::format(
                 ", \\\n     '{0}' skip 1 using (strcol(1) eq '{1}' ? $4 : NaN):{2} with "
                 "linespoints pt {3} ps 1.3{4} title '{1}{5}', \\\n     '{0}' skip 1 using "

@@ -21,14 +21,14 @@ static const fgr_param_desc params[] = {
 };
 
 static const fgr_camera cameras[] = {
-    FGR_CAMERA_Z_UP("front", 2.7f, -2.4f, 0.55f, 0.0f, 0.0f, -0.2f, 45.0f),
+    FGR_CAMERA_Z_UP("front", 3.5f, -3.1f, 0.9f, 0.0f, 0.0f, -0.15f, 45.0f),
     FGR_CAMERA_Z_UP("low", 1.9f, -1.4f, -0.75f, 0.0f, 0.0f, -0.1f, 55.0f),
 };
 
 static const fgr_keyframe orbit_keys[] = {
-    FGR_KEYFRAME_Z_UP(0.0f, 2.7f, -2.4f, 0.55f, 0.0f, 0.0f, -0.2f, 45.0f),
-    FGR_KEYFRAME_Z_UP(4.0f, 2.7f, 2.4f, 0.35f, 0.0f, 0.0f, -0.2f, 45.0f),
-    FGR_KEYFRAME_Z_UP(8.0f, -2.7f, 2.4f, 0.55f, 0.0f, 0.0f, -0.2f, 45.0f),
+    FGR_KEYFRAME_Z_UP(0.0f, 3.5f, -3.1f, 0.9f, 0.0f, 0.0f, -0.15f, 45.0f),
+    FGR_KEYFRAME_Z_UP(4.0f, 3.5f, 3.1f, 0.6f, 0.0f, 0.0f, -0.15f, 45.0f),
+    FGR_KEYFRAME_Z_UP(8.0f, -3.5f, 3.1f, 0.9f, 0.0f, 0.0f, -0.15f, 45.0f),
 };
 
 static const fgr_camera_path paths[] = {

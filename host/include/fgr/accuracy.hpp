@@ -19,6 +19,7 @@
 #include <vector>
 
 #include "fgr/opencl_device.hpp"
+#include "fgr/path_settings.hpp"
 #include "fgr/program_cache.hpp"
 #include "fgr/renderer.hpp"
 #include "fgr/scene.hpp"
@@ -81,6 +82,17 @@ struct AccuracyReport {
 AccuracyReport run_accuracy_sweep(const Scene& scene, const ComputeDevice& device,
                                   ProgramCache& cache, const AccuracySettings& settings,
                                   const AccuracyProgress& progress = {});
+
+// The same question for the path tracer's noise (render mode "path", `base` its settings): samples
+// per pixel (1, 4, 16, 64), the bounce cap (1, 2, 4 at 16 spp), Russian roulette from bounce 1
+// or never, and the sampling strategies (no MIS, no light sampling, uniform environment
+// sampling), each against one "path" reference: the default settings at reference_samples
+// samples per pixel (at least 256) with 32 bounces and another seed, so a point's error is its
+// noise plus the bias of a bounce cap it has and the reference does not.
+AccuracyReport run_path_accuracy_sweep(const Scene& scene, const ComputeDevice& device,
+                                       ProgramCache& cache, const AccuracySettings& settings,
+                                       const PathSettings& base,
+                                       const AccuracyProgress& progress = {});
 
 std::string accuracy_csv(const AccuracyReport& report);
 
