@@ -12,6 +12,7 @@
 #include <string>
 #include <vector>
 
+#include <glm/geometric.hpp>
 #include <gtest/gtest.h>
 
 #include "fgr/opencl_device.hpp"
@@ -505,9 +506,35 @@ TEST_F(PathTracer, EveryPacketWidthRendersTheSameImage) {
     }
 }
 
-// Every scene this build ships, from each of its cameras, in float and double: path tracing gives
-// finite radiance in every pixel (no NaN from a degenerate normal, a zero pdf or a grazing
-// sample), with the default sky and its sun.
+// The stability suite's hard camera placements (tests/test_scene_stability.cpp) beside a scene's
+// own cameras: at the origin (inside most fractals), a centre ray through the origin, a narrow
+// view grazing the silhouette, and a camera 1000 times farther out.
+std::vector<std::pair<std::string, CameraView>> hard_views(const Scene& scene) {
+    std::vector<std::pair<std::string, CameraView>> views;
+    for (const NamedCamera& camera : scene.cameras) views.push_back({camera.name, camera.view});
+    const CameraView& home = scene.cameras.front().view;
+    CameraView inside = home;
+    inside.position = {0.0, 0.0, 0.0};
+    inside.target = {1.0, 0.3, 0.2};
+    views.push_back({"at the origin", inside});
+    CameraView through_origin = home;
+    through_origin.target = {0.0, 0.0, 0.0};
+    views.push_back({"ray through the origin", through_origin});
+    CameraView grazing = home;
+    const glm::dvec3 side = glm::normalize(glm::cross(home.target - home.position,
+                                                      glm::dvec3(home.up)));
+    grazing.target = home.target + side * glm::length(home.target - home.position) * 0.5;
+    grazing.fov_degrees = 5.0f;
+    views.push_back({"grazing", grazing});
+    CameraView far_away = home;
+    far_away.position = home.target + (home.position - home.target) * 1000.0;
+    views.push_back({"far away", far_away});
+    return views;
+}
+
+// Every scene this build ships, from each of its cameras and the hard placements, in float and
+// double: path tracing gives finite, non-negative radiance in every pixel (no NaN from a
+// degenerate normal, a zero pdf or a grazing sample), with the default sky and its sun.
 TEST(PathTracerScenes, EveryBuiltSceneRendersFinitePixels) {
     static ComputeDevice device = open_device(-1);
     ProgramCache cache{std::filesystem::path()};
@@ -518,17 +545,17 @@ TEST(PathTracerScenes, EveryBuiltSceneRendersFinitePixels) {
             switches.mode = RenderMode::Path;
             switches.double_precision = double_precision;
             Renderer renderer(device, cache, scene, switches);
-            for (const NamedCamera& camera : scene.cameras) {
+            for (const auto& [name, view] : hard_views(scene)) {
                 FrameRequest request;
                 request.width = 24;
                 request.height = 16;
-                request.view = camera.view;
+                request.view = view;
                 request.params = default_param_values(scene);
                 request.samples = 2;
                 const Frame frame = renderer.render(request);
                 long broken = 0;
                 for (float value : frame.linear) broken += !std::isfinite(value) || value < 0.0f;
-                EXPECT_EQ(broken, 0) << scene.id << " camera " << camera.name
+                EXPECT_EQ(broken, 0) << scene.id << " " << name
                                      << (double_precision ? " double" : " float");
             }
         }
