@@ -7,7 +7,7 @@
 
 /* Renders sample `sample` of every pixel of the tile. Sample 0 writes the planes; later samples
  * add to them (the host divides by the sample count), and only sample 0 writes depth (and, with
- * FGR_STATS, the step count and out-of-steps planes 4 and 5). */
+ * FGR_STATS, the step count, out-of-steps and secondary-ray work planes 4, 5 and 6). */
 __kernel void fgr_render(FGR_RENDER_ARGS, __constant const float* lights, int light_count) {
     const int tile = get_global_id(0);
     if (tile >= tile_count) return;
@@ -24,19 +24,20 @@ __kernel void fgr_render(FGR_RENDER_ARGS, __constant const float* lights, int li
 
     vec3 colour = background(dir);
     real depth = fgr_real(-1.0f);
+    mask secondary_steps = (mask)(0); /* shadow, reflection and refraction rays' DE evaluations */
     if (fgr_any(hit.hit)) {
         vec3 p = v3_mad(eye, dir, hit.t);
         real eps = fmax(hit.t * camera.pixel_angle * param_normal_epsilon, FGR_MIN_LENGTH);
         vec3 n = estimate_normal(p, eps, PARAMS_PASS);
         vec3 lit = shade_surface(p, n, dir, eps, hit.steps, hit.t, hit.hit, 1, limits, lights,
-                                 light_count, PARAMS_PASS);
+                                 light_count, &secondary_steps, PARAMS_PASS);
 #ifdef FGR_EFFECT_REFRACTION
         lit = add_refraction(lit, p, n, dir, eps, hit.t, hit.hit, limits, lights, light_count,
-                             PARAMS_PASS);
+                             &secondary_steps, PARAMS_PASS);
 #endif
 #ifdef FGR_EFFECT_REFLECTIONS
         lit = add_reflection(lit, p, n, dir, eps, hit.t, hit.hit, limits, lights, light_count,
-                             PARAMS_PASS);
+                             &secondary_steps, PARAMS_PASS);
 #endif
         colour = v3_select(colour, lit, hit.hit);
         depth = select(depth, hit.t, hit.hit);
@@ -53,13 +54,15 @@ __kernel void fgr_render(FGR_RENDER_ARGS, __constant const float* lights, int li
     if (sample == 0) fgr_store(depth, tile, planes + 3 * plane_size);
 #ifdef FGR_STATS
     /* The work behind each pixel, for `fgr render --stats`: the primary march's DE evaluations
-     * (steps), and whether the ray ran out of steps before it hit or left the scene. */
+     * (steps), whether the ray ran out of steps before it hit or left the scene, and the DE
+     * evaluations of the secondary rays its lane took part in. */
     if (sample == 0) {
         mask exhausted = inside & !hit.hit & (hit.steps >= limits.max_steps) &
                          (hit.t <= limits.max_distance);
         fgr_store(convert_real(hit.steps), tile, planes + 4 * plane_size);
         fgr_store(select(fgr_real(0.0f), fgr_real(1.0f), exhausted), tile,
                   planes + 5 * plane_size);
+        fgr_store(convert_real(secondary_steps), tile, planes + 6 * plane_size);
     }
 #endif
 }

@@ -42,6 +42,10 @@ inline vec3 light_direction(__constant const float* light, vec3 p, float max_dis
     return v; /* the host normalised directional vectors */
 }
 
+/* Secondary rays (shadow, reflection, refraction) add the DE evaluations each lane took part in
+ * to a per-lane counter, which `fgr render --stats` reports (plane 6 of the shaded mode). */
+#define fgr_count_work(counter, steps) (*(counter) += (steps))
+
 #ifdef FGR_EFFECT_SAMPLED_OCCLUSION
 /* Ambient occlusion from five DE probes along the normal at distances h = r/5 .. r (r is the
  * built-in parameter ao_radius): in open space DE(p + h n) = h, so every unit the DE falls short
@@ -84,7 +88,7 @@ inline vec3 leave_surface(vec3 p, vec3 n, real travelled, march_limits limits) {
 /* Soft visibility in [0, 1] of the light along to_light from p. `travelled` is the primary ray's
  * length, which sets the footprint below which the shadow ray counts as blocked. */
 inline real light_visibility(vec3 p, vec3 to_light, mask lit, real travelled, real reach,
-                             march_limits limits, PARAMS) {
+                             march_limits limits, mask* work, PARAMS) {
     real visibility = select(fgr_real(0.0f), fgr_real(1.0f), lit);
     real t = fgr_real(0.0f);
     real previous = fgr_real(1e10f);
@@ -93,6 +97,7 @@ inline real light_visibility(vec3 p, vec3 to_light, mask lit, real travelled, re
     for (int step = 0; step < limits.max_steps; ++step) {
         if (!fgr_any(active)) break;
         real dist = scene_de(v3_mad(p, to_light, t), PARAMS_PASS);
+        fgr_count_if(*work, active);
         mask blocked = active & (dist < (t + travelled) * limits.footprint);
         /* Closest approach between this sample and the previous one (the two DE spheres'
          * intersection), not just at the samples: without it, long steps leave bands. */
@@ -122,8 +127,9 @@ inline real light_visibility(vec3 p, vec3 to_light, mask lit, real travelled, re
 /* 1 where the light is visible from p, 0 where the surface blocks it: a march towards the light
  * that counts any hit before the light (`reach`) as an occluder. */
 inline real light_visibility(vec3 p, vec3 to_light, mask lit, real travelled, real reach,
-                             march_limits limits, PARAMS) {
+                             march_limits limits, mask* work, PARAMS) {
     march_result shadow = march_rays_within(p, to_light, lit, travelled, reach, limits, PARAMS_PASS);
+    fgr_count_work(work, shadow.steps);
     return select(fgr_real(1.0f), fgr_real(0.0f), shadow.hit);
 }
 #endif
@@ -131,10 +137,11 @@ inline real light_visibility(vec3 p, vec3 to_light, mask lit, real travelled, re
 /* Linear colour of surface point p with normal n seen along view_dir, reached after `travelled`
  * along the (possibly reflected) ray, for the lanes in `surface` (the others get a colour nobody
  * uses, and no shadow rays). `steps` feeds the cheap step-count ambient occlusion when the scene
- * asks for it; `with_shadows` lets reflections skip shadow rays. */
+ * asks for it; `with_shadows` lets reflections skip shadow rays. Shadow rays' DE evaluations are
+ * added to *work. */
 inline vec3 shade_surface(vec3 p, vec3 n, vec3 view_dir, real eps, mask steps, real travelled,
                           mask surface, int with_shadows, march_limits limits,
-                          __constant const float* lights, int light_count, PARAMS) {
+                          __constant const float* lights, int light_count, mask* work, PARAMS) {
     vec3 albedo = scene_colour(p, PARAMS_PASS);
     real ambient = fgr_real(FGR_AMBIENT);
 #ifdef FGR_EFFECT_AMBIENT_OCCLUSION
@@ -161,7 +168,7 @@ inline vec3 shade_surface(vec3 p, vec3 n, vec3 view_dir, real eps, mask steps, r
         if (with_shadows) {
             vec3 start = leave_surface(p, n, travelled, limits);
             strength *= light_visibility(start, l, surface & (diffuse > 0.0f), travelled, reach,
-                                         limits, PARAMS_PASS);
+                                         limits, work, PARAMS_PASS);
         }
 #endif
         vec3 light_colour = v3_splat(light[4], light[5], light[6]);
@@ -188,7 +195,7 @@ inline real scene_reflectivity(vec3 p, PARAMS) {
  * Fresnel approximation) times the weights of the bounces before it. Lanes in `surface` only. */
 inline vec3 add_reflection(vec3 colour, vec3 p, vec3 n, vec3 dir, real eps, real travelled,
                            mask surface, march_limits limits, __constant const float* lights,
-                           int light_count, PARAMS) {
+                           int light_count, mask* work, PARAMS) {
     real throughput = fgr_real(1.0f); /* how much of this path's light reaches the eye */
     vec3 result = colour;
     vec3 mirror_colour = colour;      /* colour of the surface the current bounce leaves */
@@ -203,6 +210,7 @@ inline vec3 add_reflection(vec3 colour, vec3 p, vec3 n, vec3 dir, real eps, real
         vec3 start = leave_surface(p, n, travelled, limits);
         march_result next = march_rays_after(start, reflected, surface, travelled, limits,
                                              PARAMS_PASS);
+        fgr_count_work(work, next.steps);
         vec3 seen = background(reflected);
         vec3 q = v3_mad(start, reflected, next.t);
         real q_eps = fmax((travelled + next.t) * limits.footprint * 0.5f, FGR_MIN_LENGTH);
@@ -211,7 +219,7 @@ inline vec3 add_reflection(vec3 colour, vec3 p, vec3 n, vec3 dir, real eps, real
             q_normal = estimate_normal(q, q_eps, PARAMS_PASS);
             vec3 q_colour = shade_surface(q, q_normal, reflected, q_eps, next.steps,
                                           travelled + next.t, next.hit, 0, limits, lights,
-                                          light_count, PARAMS_PASS);
+                                          light_count, work, PARAMS_PASS);
             seen = v3_select(seen, q_colour, next.hit);
         }
         /* This surface shows (1 - F) of its own colour and F of what it reflects. */
@@ -248,13 +256,14 @@ inline real scene_transmission(vec3 p, PARAMS) {
  * reach it are set in *reached; the others ran out of steps or distance inside. Returns the
  * length crossed. */
 inline real cross_solid(vec3 start, vec3 dir, mask active, real travelled, march_limits limits,
-                        mask* reached, PARAMS) {
+                        mask* reached, mask* work, PARAMS) {
     real t = fgr_real(0.0f);
     mask crossing = active;
     *reached = (mask)(0);
     for (int step = 0; step < limits.max_steps; ++step) {
         if (!fgr_any(crossing)) break;
         real dist = -scene_de(v3_mad(start, dir, t), PARAMS_PASS);
+        fgr_count_if(*work, crossing);
         const real footprint = (t + travelled) * limits.footprint;
         mask arrived = crossing & (dist < footprint);
         *reached |= arrived;
@@ -276,7 +285,7 @@ inline real cross_solid(vec3 start, vec3 dir, mask active, real travelled, march
  * rays that run out of steps inside, and rays still trapped after the last inner bounce. */
 inline vec3 add_refraction(vec3 colour, vec3 p, vec3 n, vec3 dir, real eps, real travelled,
                            mask surface, march_limits limits, __constant const float* lights,
-                           int light_count, PARAMS) {
+                           int light_count, mask* work, PARAMS) {
     real transmission = select(fgr_real(0.0f), scene_transmission(p, PARAMS_PASS), surface);
     /* Entry: Snell's law with eta = 1 / ior; k < 0 is total reflection, nothing enters. */
     const real cos_in = fmax(-v3_dot(dir, n), 0.0f);
@@ -297,7 +306,7 @@ inline vec3 add_refraction(vec3 colour, vec3 p, vec3 n, vec3 dir, real eps, real
         if (!fgr_any(inside)) break;
         mask reached;
         const real t = cross_solid(start, d, inside, travelled + path, limits, &reached,
-                                   PARAMS_PASS);
+                                   work, PARAMS_PASS);
         path = select(path, path + t, inside);
         inside &= reached; /* lanes lost inside stop here and keep the surface colour */
         const vec3 q = v3_mad(start, d, t);
@@ -326,6 +335,7 @@ inline vec3 add_refraction(vec3 colour, vec3 p, vec3 n, vec3 dir, real eps, real
     vec3 behind_start = leave_surface(exit_point, exit_normal, travelled + path, limits);
     march_result behind = march_rays_after(behind_start, out_dir, leaves, travelled + path, limits,
                                            PARAMS_PASS);
+    fgr_count_work(work, behind.steps);
     vec3 seen = background(out_dir);
     if (fgr_any(behind.hit)) {
         vec3 q = v3_mad(behind_start, out_dir, behind.t);
@@ -333,7 +343,7 @@ inline vec3 add_refraction(vec3 colour, vec3 p, vec3 n, vec3 dir, real eps, real
         vec3 q_normal = estimate_normal(q, q_eps, PARAMS_PASS);
         vec3 q_colour = shade_surface(q, q_normal, out_dir, q_eps, behind.steps,
                                       travelled + path + behind.t, behind.hit, 0, limits, lights,
-                                      light_count, PARAMS_PASS);
+                                      light_count, work, PARAMS_PASS);
         seen = v3_select(seen, q_colour, behind.hit);
     }
     /* Beer-Lambert: each colour channel decays at a rate that grows as the albedo darkens. */

@@ -267,6 +267,34 @@ TEST_F(RenderTest, MarchStatsCountStepsAndRaysThatRanOutOfSteps) {
                 100.0 * double(starved.stats->out_of_steps) / double(stats.pixels), 1e-9);
 }
 
+// Shadow and reflection rays start only where the camera ray hit: a missed lane of a packet
+// marches nothing (its shadow ray would start far out along its miss and cost a packet steps
+// after every hit lane has finished). The stats count the DE evaluations each lane's secondary
+// rays took part in, per pixel; before shade_surface took the hit mask, missed pixels facing the
+// light marched shadow rays too.
+TEST_F(RenderTest, SecondaryRaysStartOnlyFromHits) {
+    FrameRequest request{96, 72, mandelbulb_->cameras.front().view,
+                         default_param_values(*mandelbulb_)};
+    const int width = preferred_packet_width(device_->info);
+    for (const uint64_t effects :
+         {uint64_t{FGR_EFFECT_SHADOWS}, uint64_t{FGR_EFFECT_SOFT_SHADOWS},
+          uint64_t{FGR_EFFECT_SHADOWS | FGR_EFFECT_REFLECTIONS}}) {
+        SCOPED_TRACE(effects);
+        Renderer counting(*device_, cache_, *mandelbulb_, {width, effects, true});
+        const Frame counted = counting.render(request);
+        ASSERT_TRUE(counted.stats.has_value());
+        const MarchStats& stats = *counted.stats;
+        ASSERT_GT(counted.hits, stats.pixels / 10);
+        ASSERT_LT(counted.hits, stats.pixels * 9 / 10) << "the view must show misses too";
+        EXPECT_GT(stats.secondary_de_evaluations, 2 * counted.hits)
+            << "every lit hit marches a shadow ray of a few steps at least";
+        EXPECT_EQ(stats.secondary_de_evaluations_missed, 0);
+        Renderer plain(*device_, cache_, *mandelbulb_, {width, effects, false});
+        EXPECT_EQ(plain.render(request).image.rgb, counted.image.rgb)
+            << "counting changes no pixel";
+    }
+}
+
 // Over-relaxation stretches steps where that is safe: the default (1.6) takes at least 10% fewer
 // march steps than plain sphere tracing (over_relaxation 1) in the same view (15.6 against 18.3
 // here, 19.2 against 23.7 at 640x480) and hits the same pixels within 0.1%.

@@ -172,6 +172,10 @@ void render_to_file(const Scene& scene, const FrameRequest& request, const Compu
                    stats.de_evaluations, double(stats.de_evaluations) / double(stats.pixels));
         fmt::print("out_of_steps {:.3f}% ({} of {} pixels)\n", stats.out_of_steps_percent(),
                    stats.out_of_steps, stats.pixels);
+        fmt::print("secondary_de_evaluations {} ({:.2f} per pixel: shadow, reflection and "
+                   "refraction rays)\n",
+                   stats.secondary_de_evaluations,
+                   double(stats.secondary_de_evaluations) / double(stats.pixels));
     }
     try {
         write_still(output, frame, options.bit_depth,

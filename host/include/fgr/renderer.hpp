@@ -50,6 +50,11 @@ struct MarchStats {
     int max_steps = 0;        // the most any pixel took
     long de_evaluations = 0;  // march steps plus the normal's four DE taps at every hit
     long out_of_steps = 0;    // rays that used max_steps without hitting or leaving the scene
+    // Shaded mode: DE evaluations of shadow, reflection and refraction rays, summed over the
+    // lanes that took part, and the part of them spent for pixels whose camera ray missed
+    // (none: secondary rays start only from hits).
+    long secondary_de_evaluations = 0;
+    long secondary_de_evaluations_missed = 0;
     double out_of_steps_percent() const { return pixels ? 100.0 * double(out_of_steps) / double(pixels) : 0.0; }
 };
 

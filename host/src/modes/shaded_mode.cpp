@@ -1,5 +1,6 @@
 // Render mode "shaded" (kernels/fgr_mode_shaded.cl): its arguments are the scene's lights; with
-// stats it writes each pixel's march steps and whether they ran out (planes 4 and 5).
+// stats it writes each pixel's march steps, whether they ran out and its secondary rays' DE
+// evaluations (planes 4, 5 and 6).
 #include "modes/shaded_mode.hpp"
 
 #include <glm/geometric.hpp>
@@ -23,8 +24,8 @@ std::vector<float> light_values(const Scene& scene) {
     return values;
 }
 
-// Sums the stats planes (4: steps, 5: ran out of steps) over the image's pixels; depth (plane 3)
-// says which pixels hit and so had their normal estimated.
+// Sums the stats planes (4: steps, 5: ran out of steps, 6: secondary rays' DE evaluations) over
+// the image's pixels; depth (plane 3) says which pixels hit and so had their normal estimated.
 MarchStats march_stats(const std::vector<float>& planes, const TileLayout& layout, int width,
                        int height) {
     const size_t plane = static_cast<size_t>(layout.plane_size());
@@ -36,8 +37,12 @@ MarchStats march_stats(const std::vector<float>& planes, const TileLayout& layou
             const int pixel_steps = static_cast<int>(planes[4 * plane + i]);
             steps += pixel_steps;
             stats.max_steps = std::max(stats.max_steps, pixel_steps);
-            stats.de_evaluations += pixel_steps + (planes[3 * plane + i] >= 0.0f ? 4 : 0);
+            const bool hit = planes[3 * plane + i] >= 0.0f;
+            stats.de_evaluations += pixel_steps + (hit ? 4 : 0);
             stats.out_of_steps += planes[5 * plane + i] > 0.5f;
+            const long secondary = static_cast<long>(planes[6 * plane + i]);
+            stats.secondary_de_evaluations += secondary;
+            if (!hit) stats.secondary_de_evaluations_missed += secondary;
             ++stats.pixels;
         }
     }
@@ -52,7 +57,7 @@ ShadedMode::ShadedMode(const ComputeDevice& device, const Scene& scene)
       light_count_(static_cast<cl_int>(scene.lights.size())) {}
 
 int ShadedMode::extra_planes(const KernelSwitches& switches) const {
-    return switches.stats ? 2 : 0;  // steps, out of steps
+    return switches.stats ? 3 : 0;  // steps, out of steps, secondary rays' steps
 }
 
 void ShadedMode::bind(cl::Kernel& kernel, const FrameRequest&) {
@@ -64,7 +69,7 @@ void ShadedMode::read_back(const std::vector<float>& planes, const TileLayout& l
                            const FrameRequest& request, int, Frame& frame) const {
     // Stats come from sample 0 (a request starting later has none), when built with them.
     if (request.first_sample > 0) return;
-    if (planes.size() < static_cast<size_t>(layout.plane_size()) * 6) return;
+    if (planes.size() < static_cast<size_t>(layout.plane_size()) * 7) return;
     const int width = frame.image.width, height = frame.image.height;
     frame.stats = march_stats(planes, layout, width, height);
 }
