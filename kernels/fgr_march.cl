@@ -22,6 +22,12 @@ typedef struct march_result {
 #ifdef FGR_EFFECT_GLOW
     real closest; /* smallest DE met along the ray: how near a miss passed the surface */
 #endif
+#ifdef FGR_GEOMETRY_IFS
+    /* IFS scenes know their surface where they hit it (fgr_ifs.cl): steps counts nodes visited */
+    vec3 normal;
+    vec3 albedo;
+    mask heap_peak; /* most nodes a lane's heap held */
+#endif
 } march_result;
 
 /* How far and how finely rays march: the built-in quality parameters, read once per kernel. */
@@ -48,8 +54,18 @@ inline march_limits scene_march_limits(float pixel_angle, PARAMS) {
  * Inactive lanes are not evaluated for hits and keep t = 0. `travelled` is the distance the ray
  * covered before origin (a reflected ray's first leg): the hit footprint grows with the whole
  * path, so secondary rays resolve no finer than the pixel they end up in. */
+#ifdef FGR_GEOMETRY_IFS
+/* IFS scenes are traced exactly instead (fgr_ifs.cl, after this file). */
+march_result ifs_trace_rays(vec3 origin, vec3 dir, mask active, real travelled, real reach,
+                            march_limits limits, int any_hit, PARAMS);
+#endif
+
 inline march_result march_rays_core(vec3 origin, vec3 dir, mask active, real travelled,
                                     real reach, march_limits limits, int departing, PARAMS) {
+#ifdef FGR_GEOMETRY_IFS
+    (void)departing; /* an exact hit ahead of the origin never is the surface the ray leaves */
+    return ifs_trace_rays(origin, dir, active, travelled, reach, limits, 0, PARAMS_PASS);
+#else
     march_result result;
     result.t = fgr_real(0.0f);
     result.hit = (mask)(0);
@@ -117,6 +133,7 @@ inline march_result march_rays_core(vec3 origin, vec3 dir, mask active, real tra
         active &= result.t <= reach;
     }
     return result;
+#endif
 }
 
 inline march_result march_rays_within(vec3 origin, vec3 dir, mask active, real travelled,
@@ -130,6 +147,18 @@ inline march_result march_rays_within(vec3 origin, vec3 dir, mask active, real t
 inline march_result march_rays_departing(vec3 origin, vec3 dir, mask active, real travelled,
                                          real reach, march_limits limits, PARAMS) {
     return march_rays_core(origin, dir, active, travelled, reach, limits, 1, PARAMS_PASS);
+}
+
+/* Whether anything blocks the ray before `reach` (shadow rays): march_rays_within, except that
+ * an IFS scene stops at the first leaf it finds instead of the nearest. */
+inline march_result march_rays_occluded(vec3 origin, vec3 dir, mask active, real travelled,
+                                        real reach, march_limits limits, int departing, PARAMS) {
+#ifdef FGR_GEOMETRY_IFS
+    (void)departing;
+    return ifs_trace_rays(origin, dir, active, travelled, reach, limits, 1, PARAMS_PASS);
+#else
+    return march_rays_core(origin, dir, active, travelled, reach, limits, departing, PARAMS_PASS);
+#endif
 }
 
 inline march_result march_rays_after(vec3 origin, vec3 dir, mask active, real travelled,
@@ -151,4 +180,18 @@ inline vec3 estimate_normal(vec3 p, real eps, PARAMS) {
     real c = scene_de(v3(p.x - eps, p.y + eps, p.z - eps), PARAMS_PASS);
     real d = scene_de(v3(p.x + eps, p.y + eps, p.z + eps), PARAMS_PASS);
     return v3_normalize(v3(a - b - c + d, -a - b + c + d, -a + b - c + d));
+}
+
+/* The surface normal where `hit` met the surface at p: the DE's gradient, or for IFS scenes the
+ * one the trace found. */
+inline vec3 surface_normal(march_result hit, vec3 p, real eps, PARAMS) {
+#ifdef FGR_GEOMETRY_IFS
+    (void)p;
+    (void)eps;
+    (void)fgr_params;
+    return hit.normal;
+#else
+    (void)hit;
+    return estimate_normal(p, eps, PARAMS_PASS);
+#endif
 }

@@ -53,6 +53,19 @@ inline material scene_material(vec3 p, PARAMS) {
 }
 #endif
 
+/* The material where `hit` met the surface at p: the scene's, or for IFS scenes a diffuse one of
+ * the colour the trace found. */
+inline material surface_material(march_result hit, vec3 p, PARAMS) {
+#ifdef FGR_GEOMETRY_IFS
+    (void)p;
+    (void)fgr_params;
+    return diffuse_material(hit.albedo);
+#else
+    (void)hit;
+    return scene_material(p, PARAMS_PASS);
+#endif
+}
+
 /* The power heuristic with exponent 2 for one sample of each strategy: the weight of the strategy
  * with pdf `a` when the other has pdf `b`. */
 inline real power_heuristic(real a, real b) {
@@ -271,8 +284,8 @@ __kernel void fgr_render(FGR_RENDER_ARGS, __constant const float* lights, path_s
         const real path_length = seen_at;
         const real eps = fmax(path_length * camera.pixel_angle * param_normal_epsilon,
                               FGR_MIN_LENGTH);
-        vec3 n = estimate_normal(p, eps, PARAMS_PASS);
-#ifdef FGR_STATS
+        vec3 n = surface_normal(hit, p, eps, PARAMS_PASS);
+#if defined(FGR_STATS) && !defined(FGR_GEOMETRY_IFS)
         lane_steps += select((mask)(0), (mask)(4), active);
         packet_steps += 4;
 #endif
@@ -283,7 +296,7 @@ __kernel void fgr_render(FGR_RENDER_ARGS, __constant const float* lights, path_s
         /* A ray that meets a surface from behind its normal (a camera ray inside a sliver it
          * stepped into, a bounce grazing a thickened edge) sees the side it came from. */
         n = v3_select(n, v3_neg(n), active & (v3_dot(n, wo) < 0.0f));
-        const material m = scene_material(p, PARAMS_PASS);
+        const material m = surface_material(hit, p, PARAMS_PASS);
         radiance = v3_select(radiance, v3_add(radiance, v3_mul(throughput, m.emission)), active);
         if (bounce == 0) {
             depth = select(depth, hit.t, active);
@@ -312,8 +325,8 @@ __kernel void fgr_render(FGR_RENDER_ARGS, __constant const float* lights, path_s
                        (fmax(fmax(f.x, f.y), f.z) > 0.0f) &
                        (fmax(fmax(light.radiance.x, light.radiance.y), light.radiance.z) > 0.0f);
             if (fgr_any(lit)) {
-                const march_result shadow = march_rays_departing(
-                    leave, light.dir, lit, path_length, light.reach, limits, PARAMS_PASS);
+                const march_result shadow = march_rays_occluded(
+                    leave, light.dir, lit, path_length, light.reach, limits, 1, PARAMS_PASS);
 #ifdef FGR_STATS
                 lane_steps += shadow.steps;
                 packet_steps += lanes_max(shadow.steps);

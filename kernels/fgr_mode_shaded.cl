@@ -7,7 +7,7 @@
 
 /* Renders sample `sample` of every pixel of the tile. Sample 0 writes the planes; later samples
  * add to them (the host divides by the sample count), and only sample 0 writes depth (and, with
- * FGR_STATS, the step count, out-of-steps and secondary-ray work planes 4, 5 and 6). */
+ * FGR_STATS, the step count, out-of-steps, secondary-ray work and heap planes 4 to 7). */
 __kernel void fgr_render(FGR_RENDER_ARGS, __constant const float* lights, int light_count) {
     const int tile = get_global_id(0);
     if (tile >= tile_count) return;
@@ -28,9 +28,10 @@ __kernel void fgr_render(FGR_RENDER_ARGS, __constant const float* lights, int li
     if (fgr_any(hit.hit)) {
         vec3 p = v3_mad(eye, dir, hit.t);
         real eps = fmax(hit.t * camera.pixel_angle * param_normal_epsilon, FGR_MIN_LENGTH);
-        vec3 n = estimate_normal(p, eps, PARAMS_PASS);
-        vec3 lit = shade_surface(p, n, dir, eps, hit.steps, hit.t, hit.hit, 1, limits, lights,
-                                 light_count, &secondary_steps, PARAMS_PASS);
+        vec3 n = surface_normal(hit, p, eps, PARAMS_PASS);
+        vec3 lit = shade_surface(p, n, surface_albedo(hit, p, PARAMS_PASS), dir, eps, hit.steps,
+                                 hit.t, hit.hit, 1, limits, lights, light_count,
+                                 &secondary_steps, PARAMS_PASS);
 #ifdef FGR_EFFECT_REFRACTION
         lit = add_refraction(lit, p, n, dir, eps, hit.t, hit.hit, limits, lights, light_count,
                              &secondary_steps, PARAMS_PASS);
@@ -55,9 +56,17 @@ __kernel void fgr_render(FGR_RENDER_ARGS, __constant const float* lights, int li
 #ifdef FGR_STATS
     /* The work behind each pixel, for `fgr render --stats`: the primary march's DE evaluations
      * (steps), whether the ray ran out of steps before it hit or left the scene, and the DE
-     * evaluations of the secondary rays its lane took part in. */
+     * evaluations of the secondary rays its lane took part in. IFS scenes count nodes visited
+     * as steps, and the most nodes the ray's heap held. */
     if (sample == 0) {
-        mask exhausted = inside & !hit.hit & (hit.steps >= limits.max_steps) &
+#ifdef FGR_GEOMETRY_IFS
+        const int step_cap = limits.max_steps * FGR_IFS_NODES_PER_STEP;
+        fgr_store(convert_real(hit.heap_peak), tile, planes + 7 * plane_size);
+#else
+        const int step_cap = limits.max_steps;
+        fgr_store(fgr_real(0.0f), tile, planes + 7 * plane_size);
+#endif
+        mask exhausted = inside & !hit.hit & (hit.steps >= step_cap) &
                          (hit.t <= limits.max_distance);
         fgr_store(convert_real(hit.steps), tile, planes + 4 * plane_size);
         fgr_store(select(fgr_real(0.0f), fgr_real(1.0f), exhausted), tile,

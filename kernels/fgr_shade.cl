@@ -128,21 +128,34 @@ inline real light_visibility(vec3 p, vec3 to_light, mask lit, real travelled, re
  * that counts any hit before the light (`reach`) as an occluder. */
 inline real light_visibility(vec3 p, vec3 to_light, mask lit, real travelled, real reach,
                              march_limits limits, mask* work, PARAMS) {
-    march_result shadow = march_rays_within(p, to_light, lit, travelled, reach, limits, PARAMS_PASS);
+    march_result shadow =
+        march_rays_occluded(p, to_light, lit, travelled, reach, limits, 0, PARAMS_PASS);
     fgr_count_work(work, shadow.steps);
     return select(fgr_real(1.0f), fgr_real(0.0f), shadow.hit);
 }
 #endif
 
-/* Linear colour of surface point p with normal n seen along view_dir, reached after `travelled`
+/* The albedo where `hit` met the surface at p: the scene's colour, or for IFS scenes the one the
+ * trace found. */
+inline vec3 surface_albedo(march_result hit, vec3 p, PARAMS) {
+#ifdef FGR_GEOMETRY_IFS
+    (void)p;
+    (void)fgr_params;
+    return hit.albedo;
+#else
+    (void)hit;
+    return scene_colour(p, PARAMS_PASS);
+#endif
+}
+
+/* Linear colour of surface point p with normal n and albedo `albedo` seen along view_dir, reached after `travelled`
  * along the (possibly reflected) ray, for the lanes in `surface` (the others get a colour nobody
  * uses, and no shadow rays). `steps` feeds the cheap step-count ambient occlusion when the scene
  * asks for it; `with_shadows` lets reflections skip shadow rays. Shadow rays' DE evaluations are
  * added to *work. */
-inline vec3 shade_surface(vec3 p, vec3 n, vec3 view_dir, real eps, mask steps, real travelled,
-                          mask surface, int with_shadows, march_limits limits,
+inline vec3 shade_surface(vec3 p, vec3 n, vec3 albedo, vec3 view_dir, real eps, mask steps,
+                          real travelled, mask surface, int with_shadows, march_limits limits,
                           __constant const float* lights, int light_count, mask* work, PARAMS) {
-    vec3 albedo = scene_colour(p, PARAMS_PASS);
     real ambient = fgr_real(FGR_AMBIENT);
 #ifdef FGR_EFFECT_AMBIENT_OCCLUSION
     /* Rays that needed many steps crept past nearby geometry: darken them (the classic
@@ -216,8 +229,9 @@ inline vec3 add_reflection(vec3 colour, vec3 p, vec3 n, vec3 dir, real eps, real
         real q_eps = fmax((travelled + next.t) * limits.footprint * 0.5f, FGR_MIN_LENGTH);
         vec3 q_normal = n;
         if (fgr_any(next.hit)) {
-            q_normal = estimate_normal(q, q_eps, PARAMS_PASS);
-            vec3 q_colour = shade_surface(q, q_normal, reflected, q_eps, next.steps,
+            q_normal = surface_normal(next, q, q_eps, PARAMS_PASS);
+            vec3 q_colour = shade_surface(q, q_normal, surface_albedo(next, q, PARAMS_PASS),
+                                          reflected, q_eps, next.steps,
                                           travelled + next.t, next.hit, 0, limits, lights,
                                           light_count, work, PARAMS_PASS);
             seen = v3_select(seen, q_colour, next.hit);
@@ -340,8 +354,9 @@ inline vec3 add_refraction(vec3 colour, vec3 p, vec3 n, vec3 dir, real eps, real
     if (fgr_any(behind.hit)) {
         vec3 q = v3_mad(behind_start, out_dir, behind.t);
         real q_eps = fmax((travelled + path + behind.t) * limits.footprint * 0.5f, FGR_MIN_LENGTH);
-        vec3 q_normal = estimate_normal(q, q_eps, PARAMS_PASS);
-        vec3 q_colour = shade_surface(q, q_normal, out_dir, q_eps, behind.steps,
+        vec3 q_normal = surface_normal(behind, q, q_eps, PARAMS_PASS);
+        vec3 q_colour = shade_surface(q, q_normal, surface_albedo(behind, q, PARAMS_PASS),
+                                      out_dir, q_eps, behind.steps,
                                       travelled + path + behind.t, behind.hit, 0, limits, lights,
                                       light_count, work, PARAMS_PASS);
         seen = v3_select(seen, q_colour, behind.hit);

@@ -9,6 +9,7 @@
 #include "fgr_effects_cl.h"
 #include "fgr_folds_cl.h"
 #include "fgr_fractals_cl.h"
+#include "fgr_ifs_cl.h"
 #include "fgr_march_cl.h"
 #include "fgr_math_cl.h"
 #include "fgr_math_check_cl.h"
@@ -41,6 +42,7 @@ std::span<const KernelFile> kernel_prelude() {
 std::span<const KernelFile> kernel_postlude() {
     static constexpr std::array files{
         KernelFile{"fgr_march.cl", fgr_march_cl},
+        KernelFile{"fgr_ifs.cl", fgr_ifs_cl},
         KernelFile{"fgr_shade.cl", fgr_shade_cl},
         KernelFile{"fgr_effects.cl", fgr_effects_cl},
         KernelFile{"fgr_camera.cl", fgr_camera_cl},

@@ -55,6 +55,10 @@ struct MarchStats {
     // (none: secondary rays start only from hits).
     long secondary_de_evaluations = 0;
     long secondary_de_evaluations_missed = 0;
+    // IFS scenes: the most nodes any ray's heap held, and the rays whose heap would have
+    // overflowed (kIfsHeapCapacity) and were traced depth first instead.
+    int heap_peak = 0;
+    long heap_overflows = 0;
     double out_of_steps_percent() const { return pixels ? 100.0 * double(out_of_steps) / double(pixels) : 0.0; }
 };
 

@@ -1,9 +1,11 @@
 // Render mode "shaded" (kernels/fgr_mode_shaded.cl): its arguments are the scene's lights; with
-// stats it writes each pixel's march steps, whether they ran out and its secondary rays' DE
-// evaluations (planes 4, 5 and 6).
+// stats it writes each pixel's march steps (nodes visited in IFS scenes), whether they ran out,
+// its secondary rays' DE evaluations and its IFS heap's high-water mark (planes 4 to 7).
 #include "modes/shaded_mode.hpp"
 
 #include <glm/geometric.hpp>
+
+#include "fgr/ifs.hpp"
 
 namespace fgr {
 namespace {
@@ -43,6 +45,9 @@ MarchStats march_stats(const std::vector<float>& planes, const TileLayout& layou
             const long secondary = static_cast<long>(planes[6 * plane + i]);
             stats.secondary_de_evaluations += secondary;
             if (!hit) stats.secondary_de_evaluations_missed += secondary;
+            const int heap = static_cast<int>(planes[7 * plane + i]);
+            stats.heap_peak = std::max(stats.heap_peak, heap);
+            stats.heap_overflows += heap > kIfsHeapCapacity;
             ++stats.pixels;
         }
     }
@@ -57,7 +62,7 @@ ShadedMode::ShadedMode(const ComputeDevice& device, const Scene& scene)
       light_count_(static_cast<cl_int>(scene.lights.size())) {}
 
 int ShadedMode::extra_planes(const KernelSwitches& switches) const {
-    return switches.stats ? 3 : 0;  // steps, out of steps, secondary rays' steps
+    return switches.stats ? 4 : 0;  // steps, out of steps, secondary rays' steps, IFS heap
 }
 
 void ShadedMode::bind(cl::Kernel& kernel, const FrameRequest&) {
@@ -69,7 +74,7 @@ void ShadedMode::read_back(const std::vector<float>& planes, const TileLayout& l
                            const FrameRequest& request, int, Frame& frame) const {
     // Stats come from sample 0 (a request starting later has none), when built with them.
     if (request.first_sample > 0) return;
-    if (planes.size() < static_cast<size_t>(layout.plane_size()) * 7) return;
+    if (planes.size() < static_cast<size_t>(layout.plane_size()) * 8) return;
     const int width = frame.image.width, height = frame.image.height;
     frame.stats = march_stats(planes, layout, width, height);
 }

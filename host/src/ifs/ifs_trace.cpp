@@ -1,0 +1,138 @@
+// The reference IFS ray tracer: kernels/fgr_ifs.cl's traversal in double precision, with an
+// unbounded heap, for tests and host-side queries.
+#include <algorithm>
+#include <cmath>
+#include <queue>
+#include <vector>
+
+#include <glm/geometric.hpp>
+#include <glm/matrix.hpp>
+
+#include "fgr/ifs.hpp"
+
+namespace fgr {
+namespace {
+
+// A node: the affine map from world space into its space (x -> linear * x + offset), in which it
+// is the bounding ball.
+struct Node {
+    glm::dmat3 linear{1.0};
+    glm::dvec3 offset{0.0};
+    double entry = 0.0;
+    double size = 0.0;
+    int depth = 0;
+    int top_map = -1;
+    std::vector<int> path;  // map indices from the root
+};
+
+struct LaterEntry {
+    bool operator()(const Node& a, const Node& b) const { return a.entry > b.entry; }
+};
+
+// Where the ray enters and leaves the ball in the node's space, if it meets it: by way of the
+// closest approach, as kernels/fgr_ifs.cl's ifs_enter.
+bool enter(const Node& node, const IfsBounds& ball, const glm::dvec3& o, const glm::dvec3& d,
+           double& entry, double& exit) {
+    const glm::dvec3 oc = node.linear * o + node.offset - ball.centre;
+    const glm::dvec3 dl = node.linear * d;
+    const double a = glm::dot(dl, dl);
+    if (!(a > 0.0)) return false;
+    const double closest = -glm::dot(oc, dl) / a;
+    const glm::dvec3 offset = oc + closest * dl;
+    const double half_chord2 = ball.radius * ball.radius - glm::dot(offset, offset);
+    if (!(half_chord2 >= 0.0)) return false;
+    const double half_chord = std::sqrt(half_chord2 / a);
+    entry = closest - half_chord;
+    exit = closest + half_chord;
+    return true;
+}
+
+Node child_of(const Node& parent, const IfsScene& ifs, const std::vector<glm::dmat3>& inverses,
+              int map) {
+    Node child;
+    const glm::dmat3& inverse = inverses[static_cast<size_t>(map)];
+    child.linear = inverse * parent.linear;
+    child.offset = inverse * (parent.offset - ifs.maps[static_cast<size_t>(map)].offset);
+    child.size = parent.size * ifs.maps[static_cast<size_t>(map)].contraction;
+    child.depth = parent.depth + 1;
+    child.top_map = parent.top_map < 0 ? map : parent.top_map;
+    child.path = parent.path;
+    child.path.push_back(map);
+    return child;
+}
+
+bool is_leaf(const Node& node, const IfsTraceRules& rules) {
+    return node.depth >= rules.max_depth ||
+           node.size <= rules.footprint * (std::max(node.entry, 0.0) + rules.travelled);
+}
+
+// The leaf's normal: world-space unit normals of the ellipsoids of its last levels at the hit
+// point, averaged (kernels/fgr_ifs.cl's ifs_normal).
+glm::dvec3 averaged_normal(const Node& leaf, const IfsScene& ifs, const glm::dvec3& point,
+                           int levels) {
+    glm::dmat3 linear = leaf.linear;
+    glm::dvec3 q = leaf.linear * point + leaf.offset;
+    glm::dvec3 sum{0.0};
+    levels = std::min(levels, leaf.depth + 1);
+    for (int level = 0; level < levels; ++level) {
+        const glm::dvec3 world = glm::transpose(linear) * (q - ifs.bounds.centre);
+        const double length = glm::length(world);
+        if (length > 0.0) sum += world / length;
+        if (level + 1 == levels) break;
+        const IfsMap& map = ifs.maps[static_cast<size_t>(leaf.path[leaf.path.size() - 1 - level])];
+        q = map.linear * q + map.offset;
+        linear = map.linear * linear;
+    }
+    const double length = glm::length(sum);
+    return length > 0.0 ? sum / length : glm::dvec3(0.0, 0.0, 1.0);
+}
+
+}  // namespace
+
+IfsRayHit trace_ifs_ray(const IfsScene& ifs, const glm::dvec3& origin, const glm::dvec3& dir,
+                        const IfsTraceRules& rules) {
+    std::vector<glm::dmat3> inverses;
+    inverses.reserve(ifs.maps.size());
+    for (const IfsMap& map : ifs.maps) inverses.push_back(glm::inverse(map.linear));
+    IfsRayHit result;
+    Node root;
+    root.size = ifs.bounds.radius;
+    double entry = 0.0, exit = 0.0;
+    if (!enter(root, ifs.bounds, origin, dir, entry, exit) || exit <= 0.0 || entry > rules.reach) {
+        return result;
+    }
+    root.entry = entry;
+    std::priority_queue<Node, std::vector<Node>, LaterEntry> heap;
+    heap.push(root);
+    result.heap_peak = 1;
+    while (!heap.empty()) {
+        const Node node = heap.top();
+        heap.pop();
+        ++result.visited;
+        if (is_leaf(node, rules)) {
+            if (node.entry > 0.0 && node.entry <= rules.reach) {
+                result.hit = true;
+                result.t = node.entry;
+                result.depth = node.depth;
+                result.top_map = node.top_map;
+                result.normal = averaged_normal(node, ifs, origin + node.entry * dir,
+                                                rules.normal_levels);
+                return result;
+            }
+            continue;
+        }
+        for (int map = 0; map < static_cast<int>(ifs.maps.size()); ++map) {
+            Node child = child_of(node, ifs, inverses, map);
+            if (!enter(child, ifs.bounds, origin, dir, entry, exit) || exit <= 0.0 ||
+                entry > rules.reach) {
+                continue;
+            }
+            child.entry = entry;
+            heap.push(std::move(child));
+            result.heap_peak = std::max(result.heap_peak, static_cast<long>(heap.size()));
+        }
+    }
+    return result;
+}
+
+}  // namespace fgr
