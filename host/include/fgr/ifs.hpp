@@ -1,0 +1,92 @@
+#pragma once
+// IFS scenes: fractals given as iterated function systems of affine maps, read from JSON files
+// (`*.ifs.json` in any plugin folder) and rendered exactly by ray tracing the hierarchy of
+// bounding spheres the maps generate (Hart and DeFanti, "Efficient Antialiased Rendering of 3-D
+// Linear Fractals", SIGGRAPH 1991), not by a distance estimator.
+
+#include <cstddef>
+#include <filesystem>
+#include <stdexcept>
+#include <string>
+#include <vector>
+
+#include <glm/mat3x3.hpp>
+#include <glm/vec3.hpp>
+
+#include "fgr/scene.hpp"
+
+namespace fgr {
+
+// The newest IFS file format version this build reads.
+constexpr int kIfsFormatVersion = 1;
+// Limits on what a file may ask for: beyond them a file is refused, not rendered slowly.
+constexpr int kIfsMaxMaps = 64;
+constexpr int kIfsMaxDepth = 24;
+// Files larger than this are refused before they are parsed.
+constexpr std::size_t kIfsMaxFileBytes = 4u << 20;
+// Nodes the kernel's heap holds per ray (FGR_IFS_HEAP); a ray that would overflow it is traced
+// again depth first, exactly, and counted in the stats.
+constexpr int kIfsHeapCapacity = 48;
+
+// One affine map w(x) = linear * x + offset, contractive.
+struct IfsMap {
+    glm::dmat3 linear{1.0};  // column-major, as glm: linear[c][r]
+    glm::dvec3 offset{0.0};
+    glm::vec3 colour{0.75f, 0.72f, 0.68f};  // linear RGB albedo of the points this map makes
+    double contraction = 0.0;  // largest singular value of `linear`, < 1
+};
+
+// A ball B = {x : |x - centre| <= radius} with w_i(B) inside B for every map, so the attractor
+// lies in B and in every image of B under compositions of the maps.
+struct IfsBounds {
+    glm::dvec3 centre{0.0};
+    double radius = 1.0;
+};
+
+struct IfsScene {
+    int version = kIfsFormatVersion;
+    std::string id;
+    std::string name;
+    std::string description;
+    std::vector<IfsMap> maps;
+    int default_depth = 6;
+    int max_depth = 12;
+    std::vector<NamedCamera> cameras;  // [0] is the default view
+    std::vector<CameraPath> camera_paths;
+    std::vector<Light> lights;
+    IfsBounds bounds;  // computed from the maps by ifs_bounding_sphere
+};
+
+// A file fgr refuses, with a one-line reason that names the file (and the map, where one is at
+// fault).
+class IfsError : public std::runtime_error {
+public:
+    using std::runtime_error::runtime_error;
+};
+
+// Whether `file` is named like an IFS scene file (`NAME.ifs.json`).
+bool is_ifs_file_name(const std::filesystem::path& file);
+
+// Parses and validates an IFS file's text; `origin` names it in error messages. Throws IfsError.
+IfsScene parse_ifs_json(const std::string& text, const std::string& origin);
+
+// Reads, parses and validates an IFS file. Throws IfsError.
+IfsScene read_ifs_file(const std::filesystem::path& file);
+
+// Largest singular value of a 3x3 matrix (the most a map stretches any vector).
+double largest_singular_value(const glm::dmat3& m);
+
+// All three singular values, largest first (one-sided Jacobi: accurate for the small ones too, so
+// a nearly singular map is told apart from a merely small one).
+glm::dvec3 singular_values(const glm::dmat3& m);
+
+// A bounding ball for the maps' attractor (see IfsBounds), from each map's contraction factor
+// s_i and where it sends the centre c: B(c, R) contains w_i(B(c, R)) when
+// |w_i(c) - c| + s_i R <= R, so R = max_i |w_i(c) - c| / (1 - s_i); c is chosen to make R small.
+IfsBounds ifs_bounding_sphere(const std::vector<IfsMap>& maps);
+
+// The fgr scene an IFS file describes: its cameras, paths and lights, the built-in parameters
+// plus the depth slider `ifs_depth`, and generated OpenCL C source holding the maps.
+Scene ifs_scene_to_scene(const IfsScene& ifs, const std::filesystem::path& file);
+
+}  // namespace fgr
