@@ -145,13 +145,12 @@ TEST(IfsFile, BoundingSphereOfSymmetricFilesIsTheCircumsphere) {
         EXPECT_NEAR(ifs.bounds.radius, std::sqrt(3.0), 1e-6) << name;
         EXPECT_LT(glm::length(ifs.bounds.centre), 1e-6) << name;
     }
-    // From a poor start (the fixed points' centroid is far off the best centre) it still gets
-    // within a few percent of the optimum: two maps x/2 and x/2 + (10, 0, 0) have the segment
-    // [0, 20] as attractor, radius 10 about (10, 0, 0).
-    std::vector<IfsMap> maps(2);
-    maps[0].linear = glm::dmat3(0.5);
-    maps[1].linear = glm::dmat3(0.5);
-    maps[1].offset = {10, 0, 0};
+    // From a poor start: maps x/2 (twice) and x/2 + (10, 0, 0) have the segment [0, 20] as
+    // attractor, but the centroid of their fixed points is (20/3, 0, 0), where R is 40/3. The
+    // search finds radius 10 about (10, 0, 0).
+    std::vector<IfsMap> maps(3);
+    for (IfsMap& map : maps) map.linear = glm::dmat3(0.5);
+    maps[2].offset = {10, 0, 0};
     const IfsBounds bounds = ifs_bounding_sphere(maps);
     EXPECT_NEAR(bounds.radius, 10.0, 1e-6);
     EXPECT_NEAR(bounds.centre.x, 10.0, 1e-6);
