@@ -367,7 +367,7 @@ march_result ifs_trace_rays(vec3 origin, vec3 dir, mask active, real travelled, 
     fgr_lanes_store(active, active_lanes);
     ifs_real t[FGR_WIDTH], nx[FGR_WIDTH], ny[FGR_WIDTH], nz[FGR_WIDTH], cr[FGR_WIDTH],
         cg[FGR_WIDTH], cb[FGR_WIDTH];
-    FGR_LANES(int, long) hit[FGR_WIDTH], visited[FGR_WIDTH], peak[FGR_WIDTH];
+    FGR_LANES(int, long) hit[FGR_WIDTH], visited[FGR_WIDTH], peak[FGR_WIDTH], level[FGR_WIDTH];
     const int max_depth = (int)param_ifs_depth;
     const int max_nodes = limits.max_steps * FGR_IFS_NODES_PER_STEP;
     for (int lane = 0; lane < FGR_WIDTH; ++lane) {
@@ -375,6 +375,7 @@ march_result ifs_trace_rays(vec3 origin, vec3 dir, mask active, real travelled, 
         hit[lane] = 0;
         visited[lane] = 0;
         peak[lane] = 0;
+        level[lane] = -1;
         nx[lane] = 0;
         ny[lane] = 0;
         nz[lane] = 1;
@@ -392,6 +393,7 @@ march_result ifs_trace_rays(vec3 origin, vec3 dir, mask active, real travelled, 
         t[lane] = found.hit ? found.t : reach_lanes[lane];
         if (!found.hit) continue;
         hit[lane] = FGR_WIDTH == 1 ? 1 : -1; /* a true lane, as select() reads it */
+        level[lane] = found.leaf.depth;
         if (any_hit) continue;
         const ifs_real3 n = ifs_normal(found.leaf, o + found.t * d);
         const ifs_real3 c = ifs_colour(found.leaf);
@@ -407,6 +409,7 @@ march_result ifs_trace_rays(vec3 origin, vec3 dir, mask active, real travelled, 
     result.hit = fgr_lanes_load(hit);
     result.steps = fgr_lanes_load(visited);
     result.heap_peak = fgr_lanes_load(peak);
+    result.leaf_depth = fgr_lanes_load(level);
     result.normal = v3(fgr_lanes_load(nx), fgr_lanes_load(ny), fgr_lanes_load(nz));
     result.albedo = v3(fgr_lanes_load(cr), fgr_lanes_load(cg), fgr_lanes_load(cb));
 #ifdef FGR_EFFECT_GLOW

@@ -26,7 +26,8 @@ typedef struct march_result {
     /* IFS scenes know their surface where they hit it (fgr_ifs.cl): steps counts nodes visited */
     vec3 normal;
     vec3 albedo;
-    mask heap_peak; /* most nodes a lane's heap held */
+    mask heap_peak;  /* most nodes a lane's heap held */
+    mask leaf_depth; /* the level of the node hit (-1 where the ray missed) */
 #endif
 } march_result;
 

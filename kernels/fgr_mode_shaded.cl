@@ -5,6 +5,16 @@
  * Arguments: those every mode takes (planes .. PARAMS, see fgr_camera.cl), then the scene's
  * lights (FGR_LIGHT_FLOATS floats each, see fgr_shade.cl) and their count. */
 
+#ifdef FGR_GEOMETRY_IFS
+/* IFS scenes also write the level of the node each pixel hit (-1: missed), after the stats
+ * planes: how deep the footprint and the depth slider let the image go. */
+#ifdef FGR_STATS
+#define FGR_IFS_LEVEL_PLANE 8
+#else
+#define FGR_IFS_LEVEL_PLANE 4
+#endif
+#endif
+
 /* Renders sample `sample` of every pixel of the tile. Sample 0 writes the planes; later samples
  * add to them (the host divides by the sample count), and only sample 0 writes depth (and, with
  * FGR_STATS, the step count, out-of-steps, secondary-ray work and heap planes 4 to 7). */
@@ -53,6 +63,11 @@ __kernel void fgr_render(FGR_RENDER_ARGS, __constant const float* lights, int li
     accumulate_plane(colour.y, sample, tile, planes + plane_size);
     accumulate_plane(colour.z, sample, tile, planes + 2 * plane_size);
     if (sample == 0) fgr_store(depth, tile, planes + 3 * plane_size);
+#ifdef FGR_GEOMETRY_IFS
+    if (sample == 0) {
+        fgr_store(convert_real(hit.leaf_depth), tile, planes + FGR_IFS_LEVEL_PLANE * plane_size);
+    }
+#endif
 #ifdef FGR_STATS
     /* The work behind each pixel, for `fgr render --stats`: the primary march's DE evaluations
      * (steps), whether the ray ran out of steps before it hit or left the scene, and the DE

@@ -40,6 +40,7 @@
 #include "fgr/plugin_loader.hpp"
 #include "fgr/program_cache.hpp"
 #include "fgr/render_mode.hpp"
+#include "fgr/scene_file.hpp"
 #include "fgr/renderer.hpp"
 
 namespace fgr {
@@ -304,7 +305,8 @@ TEST(BadPlugin, RealPluginsStillLoadAfterAllTheBadOnes) {
 
     std::size_t plugin_files = 0;
     for (const auto& entry : fs::directory_iterator(kPluginDir)) {
-        if (entry.path().extension() == ".so") ++plugin_files;
+        // Plugins and the shipped IFS files (plugins/ifs/) alike.
+        if (is_scene_file_name(entry.path())) ++plugin_files;
     }
     const Discovery discovery = discover_scenes({kPluginDir});
     for (const SkippedPlugin& skipped : discovery.skipped) {

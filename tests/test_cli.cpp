@@ -607,6 +607,22 @@ private:
     test::TempDir cache_{"fgr_cli_cache"};
 };
 
+// An IFS file in a folder of FGR_PLUGIN_PATH is listed like a plugin scene, marked as an IFS file.
+TEST_F(CliWithOwnCache, ListShowsIfsScenesFromThePluginPath) {
+    const fs::path plugins = dir() / "plugins";
+    fs::create_directories(plugins);
+    std::ofstream(plugins / "two.ifs.json")
+        << R"({"format": "fgr-ifs", "version": 1, "id": "two-maps", "name": "Two maps",)"
+        << R"( "maps": [{"scale": 0.5}, {"scale": 0.5, "translate": [1, 0, 0]}]})";
+    const RunResult result = run_with({"list"}, plugins);
+    ASSERT_EQ(result.exit_code, 0) << result;
+    EXPECT_NE(result.out.find("two-maps  Two maps"), std::string::npos) << result.out;
+    EXPECT_NE(result.out.find("IFS file: " + (plugins / "two.ifs.json").string() + " (2 maps"),
+              std::string::npos)
+        << result.out;
+    EXPECT_NE(result.out.find("ifs_depth"), std::string::npos) << result.out;
+}
+
 class CliUncomputable : public CliWithOwnCache {
 protected:
     // A camera path file in the test's directory with these keyframes (JSON objects).

@@ -56,6 +56,18 @@ TEST_F(FileWatcherTest, ReportsNewAndChangedPluginsOnceTheyHoldStill) {
     EXPECT_EQ(watcher.poll(), Files{});
 }
 
+// IFS scene files (NAME.ifs.json) in a plugin folder are watched like plugins; other JSON is not.
+TEST_F(FileWatcherTest, ReportsChangedIfsFiles) {
+    write(dir_.path() / "tree.ifs.json", "v1");
+    FileWatcher watcher;
+    watcher.watch_directory(dir_.path());
+    EXPECT_EQ(watcher.poll(), Files{});
+    write(dir_.path() / "tree.ifs.json", "v2");
+    write(dir_.path() / "path.json", "a camera path");
+    EXPECT_EQ(watcher.poll(), Files{});
+    EXPECT_EQ(watcher.poll(), Files{dir_.path() / "tree.ifs.json"});
+}
+
 TEST_F(FileWatcherTest, WatchesSingleFilesAndDirectoriesThatAppearLater) {
     const fs::path later = dir_.path() / "later";
     const fs::path source = dir_.path() / "scene.cl";

@@ -15,7 +15,6 @@
 #include "fgr/parameters.hpp"
 #include "fgr/program_cache.hpp"
 #include "fgr/renderer.hpp"
-#include "../host/src/ifs/ifs_source.hpp"  // TEMPORARY
 
 namespace fgr {
 namespace {
@@ -45,25 +44,7 @@ IfsScene sierpinski() {
     return ifs;
 }
 
-// TEMPORARY until the file loader lands: the scene as fgr builds it from an IFS.
-Scene scene_of(const IfsScene& ifs) {
-    Scene scene;
-    scene.id = ifs.id;
-    scene.name = ifs.name;
-    scene.source = ifs_kernel_source(ifs);
-    scene.source_name = ifs.id + ".ifs.json";
-    scene.cameras = ifs.cameras;
-    scene.lights = ifs.lights;
-    ParamInfo depth;
-    depth.id = "ifs_depth";
-    depth.type = ParamType::Int;
-    depth.min_value = 0;
-    depth.max_value = float(ifs.max_depth);
-    depth.default_value = {float(ifs.default_depth), 0, 0};
-    scene.params.push_back(depth);
-    add_builtin_params(scene);
-    return scene;
-}
+Scene scene_of(const IfsScene& ifs) { return ifs_scene_to_scene(ifs, ifs.id + ".ifs.json"); }
 
 class IfsRenderTest : public ::testing::Test {
 protected:

@@ -4,6 +4,7 @@
 #include <fmt/format.h>
 
 #include "commands.hpp"
+#include "fgr/ifs.hpp"
 #include "fgr/kernel_assembly.hpp"
 
 namespace fgr {
@@ -31,7 +32,15 @@ std::string default_text(const ParamInfo& param) {
 
 void print_scene(const Scene& scene) {
     fmt::print("{}  {} - {}\n", scene.id, scene.name, scene.description);
-    fmt::print("  plugin: {}\n", scene.plugin_file.string());
+    if (scene.ifs) {
+        fmt::print("  IFS file: {} ({} maps; bounding sphere centre {:.4g} {:.4g} {:.4g}, radius "
+                   "{:.4g})\n",
+                   scene.plugin_file.string(), scene.ifs->maps.size(), scene.ifs->bounds.centre.x,
+                   scene.ifs->bounds.centre.y, scene.ifs->bounds.centre.z,
+                   scene.ifs->bounds.radius);
+    } else {
+        fmt::print("  plugin: {}\n", scene.plugin_file.string());
+    }
     fmt::print("  parameters:\n");
     for (const auto& param : scene.params) {
         fmt::print("    {:<20} {:<7} {:<30} default {:<16} {} ({})\n", param.id,

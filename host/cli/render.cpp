@@ -11,6 +11,7 @@
 #include "commands.hpp"
 #include "fgr/camera.hpp"
 #include "fgr/camera_path_file.hpp"
+#include "fgr/ifs.hpp"
 #include "fgr/kernel_assembly.hpp"
 #include "fgr/program_cache.hpp"
 #include "fgr/renderer.hpp"
@@ -165,7 +166,21 @@ void render_to_file(const Scene& scene, const FrameRequest& request, const Compu
         fmt::print("lane_utilisation {:.3f} ({} rays per work-item)\n",
                    frame.lane_stats->utilisation(), frame.lane_stats->packet_width);
     }
-    if (frame.stats) {
+    if (frame.ifs_levels) {
+        fmt::print("ifs_depth_reached {} (mean {:.2f} over the hits; the slider allows {})\n",
+                   frame.ifs_levels->deepest, frame.ifs_levels->mean,
+                   static_cast<int>(param_value(scene, request.params, "ifs_depth")));
+    }
+    if (frame.stats && scene.ifs) {
+        // IFS scenes trace nodes, not march steps.
+        const MarchStats& stats = *frame.stats;
+        fmt::print("ifs_nodes_per_ray {:.2f} (max {})\n", stats.mean_steps, stats.max_steps);
+        fmt::print("ifs_heap_peak {} of {} (rays traced depth first after a full heap: {})\n",
+                   stats.heap_peak, kIfsHeapCapacity, stats.heap_overflows);
+        fmt::print("secondary_nodes {} ({:.2f} per pixel: shadow and reflection rays)\n",
+                   stats.secondary_de_evaluations,
+                   double(stats.secondary_de_evaluations) / double(stats.pixels));
+    } else if (frame.stats) {
         const MarchStats& stats = *frame.stats;
         fmt::print("steps_per_pixel {:.2f} (max {})\n", stats.mean_steps, stats.max_steps);
         fmt::print("de_evaluations {} ({:.2f} per pixel: primary march and normals)\n",

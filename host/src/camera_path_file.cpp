@@ -1,16 +1,13 @@
 #include "fgr/camera_path_file.hpp"
 
-#include <cmath>
-#include <cstdint>
 #include <fstream>
 #include <sstream>
 #include <stdexcept>
 
-#include <glm/geometric.hpp>
 #include <nlohmann/json.hpp>
 
 #include "fgr/atomic_file.hpp"
-#include "fgr/view_validation.hpp"
+#include "json_fields.hpp"
 
 namespace fgr {
 namespace {
@@ -26,62 +23,14 @@ json vec3_json(glm::dvec3 v) { return json::array({v.x, v.y, v.z}); }
 
 [[noreturn]] void fail(const std::string& reason) { throw std::runtime_error(reason); }
 
-double finite_double(const json& value, const std::string& what) {
-    if (!value.is_number()) fail(what + " must be a number");
-    const double number = value.get<double>();
-    if (!std::isfinite(number) || std::abs(number) > 1e30) {
-        fail(what + " must be finite and at most 1e30 in magnitude");
-    }
-    return number;
-}
-
-float finite_number(const json& value, const std::string& what) {
-    return static_cast<float>(finite_double(value, what));
-}
-
-// Read in full double precision: a deep zoom's keyframes may differ below float's step.
-glm::dvec3 dvec3_from(const json& keyframe, const char* key, const std::string& where) {
-    const std::string what = where + " \"" + key + "\"";
-    if (!keyframe.contains(key)) fail(what + " is missing");
-    const json& value = keyframe.at(key);
-    if (!value.is_array() || value.size() != 3) fail(what + " must be an array of 3 numbers");
-    return {finite_double(value[0], what), finite_double(value[1], what),
-            finite_double(value[2], what)};
-}
-
-glm::vec3 vec3_from(const json& keyframe, const char* key, const std::string& where) {
-    return glm::vec3(dvec3_from(keyframe, key, where));
-}
-
-// "version" must be the integer 1: compared as the integer JSON holds, never converted first
-// (4294967297 is not 1), and 1.5 or "1" are not integers.
-void check_version(const json& document) {
-    if (!document.contains("version")) fail("\"version\" is missing (this fgr reads version 1)");
-    const json& version = document.at("version");
-    const bool is_one = version.is_number_unsigned() ? version.get<std::uint64_t>() == 1
-                        : version.is_number_integer() ? version.get<std::int64_t>() == 1
-                                                      : false;
-    if (!is_one) {
-        std::string shown = version.dump();
-        if (shown.size() > 40) shown = shown.substr(0, 40) + "...";
-        fail("unsupported \"version\" " + shown + " (this fgr reads version 1)");
-    }
-}
-
 Keyframe keyframe_from(const json& entry, std::size_t index) {
     const std::string where = "keyframe " + std::to_string(index);
     if (!entry.is_object()) fail(where + " must be an object");
     Keyframe keyframe;
     if (!entry.contains("time")) fail(where + " \"time\" is missing");
-    keyframe.time = finite_number(entry.at("time"), where + " \"time\"");
-    keyframe.view.position = dvec3_from(entry, "position", where);
-    keyframe.view.target = dvec3_from(entry, "target", where);
-    keyframe.view.up = entry.contains("up") ? vec3_from(entry, "up", where) : glm::vec3(0, 0, 1);
-    if (entry.contains("fov")) keyframe.view.fov_degrees = finite_number(entry.at("fov"), where + " \"fov\"");
-    // The check plugins' cameras and keyframes get (view_validation.hpp).
-    if (const std::string problem = view_problem(keyframe.view); !problem.empty()) {
-        fail(where + ": " + problem);
-    }
+    keyframe.time =
+        static_cast<float>(json_fields::finite_double(entry.at("time"), where + " \"time\""));
+    keyframe.view = json_fields::view_from(entry, where);
     return keyframe;
 }
 
@@ -107,7 +56,7 @@ CameraPathFile parse_camera_path_json(const std::string& text) {
     if (document.is_discarded()) fail("not valid JSON");
     if (!document.is_object()) fail("must be a JSON object");
     if (document.value("format", "") != kFormat) fail("\"format\" must be \"fgr-camera-path\"");
-    check_version(document);
+    json_fields::check_version(document, kVersion);
     CameraPathFile file;
     if (document.contains("scene") && document.at("scene").is_string()) {
         file.scene = document.at("scene").get<std::string>();

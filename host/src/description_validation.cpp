@@ -93,21 +93,6 @@ std::string optional_string(const char* text, std::size_t max_length, std::strin
     return bounded_string(text, max_length, what);
 }
 
-// A plugin's text as it may appear in a refusal: bytes outside printable ASCII become \xNN, so a
-// newline or a terminal escape in a bad id cannot break the one-line reason.
-std::string printable(std::string_view text) {
-    std::string out;
-    for (const char c : text) {
-        const auto byte = static_cast<unsigned char>(c);
-        if (byte >= 0x20 && byte < 0x7f) {
-            out += c;
-        } else {
-            out += fmt::format("\\x{:02x}", byte);
-        }
-    }
-    return out;
-}
-
 bool is_lower_or_digit(char c) { return (c >= 'a' && c <= 'z') || (c >= '0' && c <= '9'); }
 
 // [a-z][a-z0-9_]* plus '-' when allow_dash, at most kMaxIdLength chars.
@@ -548,6 +533,25 @@ Scene copy_checked(const fgr_scene_desc& desc) {
 LoadResult failure(std::string reason) { return LoadResult{std::nullopt, std::move(reason)}; }
 
 }  // namespace
+
+// A plugin's text as it may appear in a refusal: bytes outside printable ASCII become \xNN, so a
+// newline or a terminal escape in a bad id cannot break the one-line reason.
+std::string printable(std::string_view text) {
+    std::string out;
+    for (const char c : text) {
+        const auto byte = static_cast<unsigned char>(c);
+        if (byte >= 0x20 && byte < 0x7f) {
+            out += c;
+        } else {
+            out += fmt::format("\\x{:02x}", byte);
+        }
+    }
+    return out;
+}
+
+bool is_scene_id(std::string_view id) { return is_identifier(id, true); }
+
+bool is_camera_name(std::string_view name) { return is_name(name); }
 
 LoadResult copy_scene_description(const fgr_scene_desc* desc) {
     if (desc == nullptr) return failure("description is NULL");

@@ -9,7 +9,7 @@
 
 #include <spdlog/spdlog.h>
 
-#include "fgr/plugin_loader.hpp"
+#include "fgr/scene_file.hpp"
 
 namespace fgr {
 namespace fs = std::filesystem;
@@ -27,8 +27,9 @@ std::vector<fs::path> split_path_list(std::string_view list) {
     return directories;
 }
 
-// Regular files (or links to them) named *.so, sorted by file name so the load order, and thus
-// which of two duplicate ids wins, does not depend on the filesystem's directory order.
+// Regular files (or links to them) named *.so or *.ifs.json, sorted by file name so the load
+// order, and thus which of two duplicate ids wins, does not depend on the filesystem's directory
+// order.
 std::vector<fs::path> plugin_files_in(const fs::path& directory) {
     std::vector<fs::path> files;
     std::error_code error;
@@ -36,7 +37,7 @@ std::vector<fs::path> plugin_files_in(const fs::path& directory) {
     for (fs::directory_iterator it(directory, error), end; !error && it != end;
          it.increment(error)) {
         std::error_code status_error;
-        if (it->path().extension() == ".so" && it->is_regular_file(status_error)) {
+        if (is_scene_file_name(it->path()) && it->is_regular_file(status_error)) {
             files.push_back(it->path());
         }
     }
@@ -71,7 +72,7 @@ public:
 
 private:
     void load(const fs::path& file) {
-        LoadResult result = load_scene_plugin(file);
+        LoadResult result = load_scene_file(file);
         if (!result.scene) return skip(file, result.error);
         const auto [existing, inserted] = loaded_from_.emplace(result.scene->id, file);
         if (!inserted) {

@@ -88,6 +88,10 @@ std::string effect_names(uint64_t effects) {
     return names.empty() ? "none" : names;
 }
 
+uint64_t supported_effects(const Scene& scene) {
+    return scene.ifs ? kIfsEffects : ~uint64_t{0};
+}
+
 uint64_t apply_effect_changes(uint64_t effects, std::string_view changes) {
     size_t start = 0;
     while (start <= changes.size()) {
@@ -113,6 +117,12 @@ uint64_t apply_effect_changes(uint64_t effects, std::string_view changes) {
 }
 
 AssembledProgram assemble_program(const Scene& scene, const KernelSwitches& switches) {
+    if (const uint64_t unsupported = switches.effects & ~supported_effects(scene)) {
+        throw std::invalid_argument(fmt::format(
+            "the IFS scene '{}' cannot have {}: exact IFS tracing has no distance estimate (it "
+            "can have {})",
+            scene.id, effect_names(unsupported), effect_names(kIfsEffects)));
+    }
     AssembledProgram program;
     program.options = switch_options(switches);
     std::string& source = program.source;

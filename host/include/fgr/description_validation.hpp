@@ -6,6 +6,7 @@
 
 #include <optional>
 #include <string>
+#include <string_view>
 
 #include "fgr/plugin.h"
 #include "fgr/scene.hpp"
@@ -22,5 +23,14 @@ struct LoadResult {
 // a host-owned Scene, built-in quality parameters included. Never dereferences a pointer it has
 // not checked for NULL.
 LoadResult copy_scene_description(const fgr_scene_desc* desc);
+
+// The naming rules every scene follows, whatever it came from (a plugin or an IFS file):
+// scene ids match [a-z][a-z0-9_-]*, camera and camera path names [a-z0-9_-]+, both at most 63
+// characters.
+bool is_scene_id(std::string_view id);
+bool is_camera_name(std::string_view name);
+
+// `text` as it may appear in a one-line refusal: bytes outside printable ASCII become \xNN.
+std::string printable(std::string_view text);
 
 }  // namespace fgr

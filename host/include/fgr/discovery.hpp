@@ -1,5 +1,5 @@
 #pragma once
-// Finding scene plugins: the search path and the scan of its directories.
+// Finding scenes (plugins and IFS files): the search path and the scan of its directories.
 
 #include <filesystem>
 #include <string>
@@ -27,8 +27,9 @@ struct Discovery {
     std::vector<SkippedPlugin> skipped;
 };
 
-// Loads every *.so in each directory (sorted by name within a directory; missing directories are
-// ignored). Each skipped file gets one warning log line naming the file and the reason.
+// Loads every *.so plugin and *.ifs.json IFS file (fgr/ifs.hpp) in each directory, sorted together
+// by name within a directory; missing directories are ignored. Each skipped file gets one warning
+// log line naming the file and the reason.
 Discovery discover_scenes(const std::vector<std::filesystem::path>& directories);
 
 }  // namespace fgr

@@ -4,6 +4,7 @@
 // bounding spheres the maps generate (Hart and DeFanti, "Efficient Antialiased Rendering of 3-D
 // Linear Fractals", SIGGRAPH 1991), not by a distance estimator.
 
+#include <cstddef>
 #include <filesystem>
 #include <stdexcept>
 #include <string>
@@ -21,6 +22,8 @@ constexpr int kIfsFormatVersion = 1;
 // Limits on what a file may ask for: beyond them a file is refused, not rendered slowly.
 constexpr int kIfsMaxMaps = 64;
 constexpr int kIfsMaxDepth = 24;
+// Files larger than this are refused before they are parsed.
+constexpr std::size_t kIfsMaxFileBytes = 4u << 20;
 // Nodes the kernel's heap holds per ray (FGR_IFS_HEAP); a ray that would overflow it is traced
 // again depth first, exactly, and counted in the stats.
 constexpr int kIfsHeapCapacity = 48;
@@ -74,6 +77,10 @@ IfsScene read_ifs_file(const std::filesystem::path& file);
 
 // Largest singular value of a 3x3 matrix (the most a map stretches any vector).
 double largest_singular_value(const glm::dmat3& m);
+
+// All three singular values, largest first (one-sided Jacobi: accurate for the small ones too, so
+// a nearly singular map is told apart from a merely small one).
+glm::dvec3 singular_values(const glm::dmat3& m);
 
 // A bounding ball for the maps' attractor (see IfsBounds), from each map's contraction factor
 // s_i and where it sends the centre c: B(c, R) contains w_i(B(c, R)) when

@@ -7,6 +7,7 @@
 #include <string>
 #include <string_view>
 
+#include "fgr/plugin.h"
 #include "fgr/render_mode.hpp"
 #include "fgr/scene.hpp"
 
@@ -36,6 +37,15 @@ std::string switch_options(const KernelSwitches& switches);
 
 // Names of the effect bits, in bit order ("shadows,ambient_occlusion"), or "none".
 std::string effect_names(uint64_t effects);
+
+// The effects an IFS scene can have: those that need only rays and hits. Soft shadows, both
+// occlusions, glow and refraction read a distance estimate (or march step counts) along the way,
+// which exact IFS tracing does not have.
+constexpr uint64_t kIfsEffects =
+    FGR_EFFECT_SHADOWS | FGR_EFFECT_REFLECTIONS | FGR_EFFECT_FOG | FGR_EFFECT_DEPTH_OF_FIELD;
+
+// The effects `scene` can be built with: all for DE scenes, kIfsEffects for IFS scenes.
+uint64_t supported_effects(const Scene& scene);
 
 // Applies a comma-separated list of changes to `effects`: "+name" or "name" adds an effect,
 // "-name" removes it, "none" removes all, e.g. "+shadows,-ambient_occlusion" or "none,+fog". Throws std::invalid_argument naming an

@@ -76,6 +76,13 @@ struct LaneStats {
     }
 };
 
+// How deep an IFS image went (shaded mode): the levels of the nodes its pixels hit, which the
+// depth slider caps and the pixel footprint stops short of where detail would be sub-pixel.
+struct IfsLevels {
+    int deepest = -1;   // -1: no pixel hit
+    double mean = 0.0;  // over the pixels that hit
+};
+
 struct Frame {
     Image8 image;               // sRGB, gamma-encoded
     std::vector<float> linear;  // row-major linear RGB, averaged over samples, before exposure
@@ -94,6 +101,7 @@ struct Frame {
     std::vector<float> normal;
     std::vector<float> alpha;
     std::optional<LaneStats> lane_stats;  // path mode built with stats
+    std::optional<IfsLevels> ifs_levels;  // IFS scenes in the shaded mode
 };
 
 // Image sizes fgr accepts; larger would not fit device buffers on small machines.

@@ -5,6 +5,7 @@
 #include <array>
 #include <cstdint>
 #include <filesystem>
+#include <memory>
 #include <string>
 #include <string_view>
 #include <vector>
@@ -14,6 +15,8 @@
 #include "fgr/render_mode.hpp"
 
 namespace fgr {
+
+struct IfsScene;  // fgr/ifs.hpp
 
 enum class ParamType { Float, Int, Bool, Vec3, Colour };
 
@@ -94,6 +97,8 @@ struct Scene {
     uint64_t effects = 0;
     MarchSettings march;
     RenderMode default_mode = RenderMode::Shaded;  // what the scene asks for (ABI 1.2)
+    // The maps of a scene read from an IFS file (fgr/ifs.hpp); null for distance-estimated scenes.
+    std::shared_ptr<const IfsScene> ifs;
 
     const ParamInfo* find_param(const std::string& param_id) const;
     const NamedCamera* find_camera(const std::string& camera_name) const;

@@ -55,14 +55,35 @@ MarchStats march_stats(const std::vector<float>& planes, const TileLayout& layou
     return stats;
 }
 
+// The deepest and mean level of the IFS nodes the pixels hit (plane `index`; -1 where missed).
+IfsLevels hit_levels(const std::vector<float>& planes, const TileLayout& layout, int index,
+                     int width, int height) {
+    const size_t offset = static_cast<size_t>(index) * static_cast<size_t>(layout.plane_size());
+    IfsLevels levels;
+    long sum = 0, hits = 0;
+    for (int y = 0; y < height; ++y) {
+        for (int x = 0; x < width; ++x) {
+            const int level = static_cast<int>(planes[offset + static_cast<size_t>(layout.index(x, y))]);
+            if (level < 0) continue;
+            levels.deepest = std::max(levels.deepest, level);
+            sum += level;
+            ++hits;
+        }
+    }
+    levels.mean = hits ? double(sum) / double(hits) : 0.0;
+    return levels;
+}
+
 }  // namespace
 
 ShadedMode::ShadedMode(const ComputeDevice& device, const Scene& scene)
     : lights_(upload_floats(device, light_values(scene))),
-      light_count_(static_cast<cl_int>(scene.lights.size())) {}
+      light_count_(static_cast<cl_int>(scene.lights.size())),
+      ifs_(scene.ifs != nullptr) {}
 
 int ShadedMode::extra_planes(const KernelSwitches& switches) const {
-    return switches.stats ? 4 : 0;  // steps, out of steps, secondary rays' steps, IFS heap
+    // With stats: steps, out of steps, secondary rays' steps, IFS heap; IFS scenes: their level.
+    return (switches.stats ? 4 : 0) + (ifs_ ? 1 : 0);
 }
 
 void ShadedMode::bind(cl::Kernel& kernel, const FrameRequest&) {
@@ -72,11 +93,13 @@ void ShadedMode::bind(cl::Kernel& kernel, const FrameRequest&) {
 
 void ShadedMode::read_back(const std::vector<float>& planes, const TileLayout& layout,
                            const FrameRequest& request, int, Frame& frame) const {
-    // Stats come from sample 0 (a request starting later has none), when built with them.
+    // Stats and levels come from sample 0 (a request starting later has none).
     if (request.first_sample > 0) return;
-    if (planes.size() < static_cast<size_t>(layout.plane_size()) * 8) return;
     const int width = frame.image.width, height = frame.image.height;
-    frame.stats = march_stats(planes, layout, width, height);
+    const size_t plane = static_cast<size_t>(layout.plane_size());
+    const bool stats = planes.size() >= plane * (ifs_ ? 9 : 8);
+    if (stats) frame.stats = march_stats(planes, layout, width, height);
+    if (ifs_) frame.ifs_levels = hit_levels(planes, layout, stats ? 8 : 4, width, height);
 }
 
 }  // namespace fgr

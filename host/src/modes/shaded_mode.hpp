@@ -15,6 +15,7 @@ public:
 private:
     cl::Buffer lights_;
     cl_int light_count_;
+    bool ifs_;  // an IFS scene: one more plane, the level each pixel's hit reached
 };
 
 }  // namespace fgr

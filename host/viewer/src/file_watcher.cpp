@@ -3,6 +3,8 @@
 #include <algorithm>
 #include <system_error>
 
+#include "fgr/scene_file.hpp"
+
 namespace fgr::viewer {
 
 namespace fs = std::filesystem;
@@ -31,7 +33,7 @@ std::map<fs::path, FileWatcher::Stamp> FileWatcher::current_files() const {
         std::error_code error;
         for (fs::directory_iterator it(directory, error), end; !error && it != end;
              it.increment(error)) {
-            if (it->path().extension() == ".so") record(it->path());
+            if (is_scene_file_name(it->path())) record(it->path());
         }
     }
     for (const fs::path& file : files_) record(file);

@@ -283,8 +283,10 @@ void ViewerApp::draw_params_section() {
 void ViewerApp::draw_effects_section() {
     if (!ImGui::CollapsingHeader("Effects (compiled in)", ImGuiTreeNodeFlags_DefaultOpen)) return;
     uint64_t& effects = session().effects;
+    // An IFS scene offers only the effects exact tracing supports (kIfsEffects).
+    const uint64_t offered = FGR_EFFECT_ALL_V1 & supported_effects(scene());
     for (uint64_t bit = 1; bit != 0 && bit <= FGR_EFFECT_ALL_V1; bit <<= 1) {
-        if ((FGR_EFFECT_ALL_V1 & bit) == 0) continue;
+        if ((offered & bit) == 0) continue;
         bool on = (effects & bit) != 0;
         if (ImGui::Checkbox(effect_names(bit).c_str(), &on)) effects ^= bit;
     }

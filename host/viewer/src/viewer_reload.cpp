@@ -11,7 +11,7 @@
 
 #include "fgr/discovery.hpp"
 #include "fgr/parameters.hpp"
-#include "fgr/plugin_loader.hpp"
+#include "fgr/scene_file.hpp"
 
 namespace fgr::viewer {
 namespace {
@@ -45,7 +45,7 @@ void ViewerApp::poll_sources() {
     if (now < next_watch_) return;
     next_watch_ = now + kWatchSeconds;
     for (const std::filesystem::path& file : watcher_.poll()) {
-        if (file.extension() == ".so") {
+        if (is_scene_file_name(file)) {
             reload_plugin(file);
         } else {
             reload_source(file);
@@ -54,8 +54,9 @@ void ViewerApp::poll_sources() {
 }
 
 void ViewerApp::reload_plugin(const std::filesystem::path& file) {
-    // From a fresh copy: a library still loaded under this path would come back as it was.
-    LoadResult loaded = reload_scene_plugin(file);
+    // A plugin from a fresh copy (a library still loaded under this path would come back as it
+    // was), an IFS file read again.
+    LoadResult loaded = reload_scene_file(file);
     if (!loaded.scene) {
         const std::string message =
             fmt::format("{}: {} (keeping the version loaded before)", file.string(), loaded.error);
@@ -72,7 +73,8 @@ void ViewerApp::reload_plugin(const std::filesystem::path& file) {
         spdlog::info("new scene '{}' from {}", candidate->id, file.string());
         add_message(fmt::format("new scene '{}'", candidate->id));
         scenes_.push_back(candidate);
-        if (options_.dev) watcher_.watch_file(candidate->source_name);
+        // An IFS scene's source is generated, not a file to watch.
+        if (options_.dev && !candidate->ifs) watcher_.watch_file(candidate->source_name);
         ++watched_changes_handled_;
         return;
     }

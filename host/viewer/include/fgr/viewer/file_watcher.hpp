@@ -1,6 +1,6 @@
 #pragma once
 // Notices new and changed files by polling their modification time and size: the plugin folders
-// (every *.so in them) and single files (a scene's .cl source in `fgr view --dev`). Polling is
+// (every scene file in them: *.so plugins and *.ifs.json IFS files) and single files (a scene's .cl source in `fgr view --dev`). Polling is
 // portable and cheap at the viewer's rate (a stat per file, twice a second).
 
 #include <cstdint>
@@ -12,7 +12,7 @@ namespace fgr::viewer {
 
 class FileWatcher {
 public:
-    // Every *.so in `directory` (which need not exist yet).
+    // Every *.so and *.ifs.json in `directory` (which need not exist yet).
     void watch_directory(const std::filesystem::path& directory);
     // One file (which need not exist yet).
     void watch_file(const std::filesystem::path& file);

@@ -1,0 +1,626 @@
+// IFS scene files (`NAME.ifs.json`): reading, validating, and the bounding sphere of the maps.
+// The format is documented in sdk/README.md ("IFS scenes").
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <cstdint>
+#include <fstream>
+#include <limits>
+#include <numbers>
+#include <set>
+#include <stdexcept>
+#include <string_view>
+#include <utility>
+
+#include <fmt/format.h>
+#include <glm/geometric.hpp>
+#include <glm/gtc/matrix_transform.hpp>
+#include <glm/mat3x3.hpp>
+#include <glm/matrix.hpp>
+#include <nlohmann/json.hpp>
+
+#include "../json_fields.hpp"
+#include "fgr/description_validation.hpp"
+#include "fgr/ifs.hpp"
+#include "fgr/view_validation.hpp"
+
+namespace fgr {
+namespace {
+
+using nlohmann::json;
+using json_fields::check_keys;
+using json_fields::dvec3_from;
+using json_fields::finite_double;
+using json_fields::shown;
+
+constexpr const char* kFormat = "fgr-ifs";
+constexpr std::string_view kSuffix = ".ifs.json";
+
+// Numbers in a map (matrix entries, scales, translations): a contraction's entries are below 1
+// anyway; translations are bounded so the kernel's float arithmetic stays meaningful.
+constexpr double kMaxMapNumber = 1e6;
+// A map whose smallest singular value is below this times its largest flattens space: the exact
+// ray tracer needs every map's inverse.
+constexpr double kSingularRatio = 1e-9;
+// How far from the origin the attractor's bounding sphere may reach.
+constexpr double kMaxExtent = 1e5;
+// The limits plugins have (description_validation.cpp).
+constexpr std::size_t kMaxTextLength = 4096;
+constexpr std::size_t kMaxCameras = 256;
+constexpr std::size_t kMaxCameraPaths = 256;
+constexpr std::size_t kMinKeyframes = 2;
+constexpr std::size_t kMaxKeyframes = 10000;
+constexpr std::size_t kMaxLights = 16;
+constexpr double kMaxAngularRadiusDegrees = 45.0;
+// Defaults for files that leave the depth out.
+constexpr int kDefaultDepth = 6;
+constexpr int kDefaultMaxDepth = 12;
+
+// Validation stops at the first problem with a one-line reason; parse_ifs_json puts the file's
+// name in front. json_fields throws std::runtime_error the same way.
+[[noreturn]] void fail(const std::string& reason) { throw std::runtime_error(reason); }
+
+template <typename... Args>
+[[noreturn]] void fail(fmt::format_string<Args...> format, Args&&... args) {
+    fail(fmt::format(format, std::forward<Args>(args)...));
+}
+
+// --- Small readers -------------------------------------------------------------------------------
+
+// Names and descriptions: at most kMaxTextLength bytes, no control characters (they would break
+// `fgr list` and the one-line messages that quote them).
+std::string text_from(const json& object, const char* key, const std::string& where,
+                      bool required) {
+    const std::string what = where.empty() ? fmt::format("\"{}\"", key)
+                                           : fmt::format("{} \"{}\"", where, key);
+    if (!object.contains(key)) {
+        if (required) fail("{} is missing", what);
+        return {};
+    }
+    const json& value = object.at(key);
+    if (!value.is_string()) fail("{} must be a string", what);
+    std::string text = value.get<std::string>();
+    if (text.size() > kMaxTextLength) fail("{} longer than {} bytes", what, kMaxTextLength);
+    if (std::any_of(text.begin(), text.end(),
+                    [](char c) { return static_cast<unsigned char>(c) < 0x20 || c == 0x7f; })) {
+        fail("{} contains a control character", what);
+    }
+    return text;
+}
+
+const json& array_from(const json& object, const char* key, std::size_t min_size,
+                       std::size_t max_size, const std::string& what) {
+    const json& value = object.at(key);
+    if (!value.is_array()) fail("{} must be an array", what);
+    if (value.size() < min_size || value.size() > max_size) {
+        fail("{} has {} entries; {} to {} allowed", what, value.size(), min_size, max_size);
+    }
+    return value;
+}
+
+void require_object(const json& value, const std::string& where) {
+    if (!value.is_object()) fail("{} must be an object", where);
+}
+
+// A colour in [0, 1]: a map's albedo.
+glm::vec3 albedo_from(const json& object, const std::string& where) {
+    const glm::dvec3 colour = dvec3_from(object, "colour", where);
+    for (int i = 0; i < 3; ++i) {
+        if (colour[i] < 0.0 || colour[i] > 1.0) {
+            fail("{} \"colour\" components must be in [0, 1]", where);
+        }
+    }
+    return glm::vec3(colour);
+}
+
+std::string camera_name_from(const json& object, const std::string& where) {
+    const std::string name = text_from(object, "name", where, true);
+    if (!is_camera_name(name)) {
+        fail("{}: name '{}' must match [a-z0-9_-]+ (at most 63 characters)", where,
+             printable(name));
+    }
+    return name;
+}
+
+// --- Maps ----------------------------------------------------------------------------------------
+
+// x -> T + R S x from "scale", "rotate" and "translate", each optional.
+void compose_map(const json& entry, const std::string& where, IfsMap& map) {
+    glm::dvec3 scale(1.0);
+    if (entry.contains("scale")) {
+        const json& value = entry.at("scale");
+        if (value.is_array()) {
+            scale = dvec3_from(entry, "scale", where, kMaxMapNumber);
+        } else {
+            scale = glm::dvec3(finite_double(value, where + " \"scale\"", kMaxMapNumber));
+        }
+    }
+    glm::dmat3 rotation(1.0);
+    if (entry.contains("rotate")) {
+        const json& rotate = entry.at("rotate");
+        const std::string rotate_where = where + " \"rotate\"";
+        require_object(rotate, rotate_where);
+        check_keys(rotate, {"axis", "degrees"}, rotate_where);
+        const glm::dvec3 axis = dvec3_from(rotate, "axis", rotate_where, kMaxMapNumber);
+        if (!rotate.contains("degrees")) fail("{} \"degrees\" is missing", rotate_where);
+        const double degrees =
+            finite_double(rotate.at("degrees"), rotate_where + " \"degrees\"", 1e6);
+        const double length = glm::length(axis);
+        if (!(length > 1e-12)) fail("{} \"axis\" must not be zero", rotate_where);
+        rotation = glm::dmat3(glm::rotate(glm::dmat4(1.0), glm::radians(degrees), axis / length));
+    }
+    map.linear = rotation * glm::dmat3(glm::dvec3(scale.x, 0, 0), glm::dvec3(0, scale.y, 0),
+                                       glm::dvec3(0, 0, scale.z));
+    map.offset = entry.contains("translate")
+                     ? dvec3_from(entry, "translate", where, kMaxMapNumber)
+                     : glm::dvec3(0.0);
+}
+
+// "matrix": three rows [a, b, c, t]: the linear part's row and the translation's component.
+void matrix_map(const json& entry, const std::string& where, IfsMap& map) {
+    const std::string what = where + " \"matrix\"";
+    const json& rows = entry.at("matrix");
+    const auto shape_error = [&] { fail("{} must be 3 rows of 4 numbers", what); };
+    if (!rows.is_array() || rows.size() != 3) shape_error();
+    for (int r = 0; r < 3; ++r) {
+        const json& row = rows[static_cast<std::size_t>(r)];
+        if (!row.is_array() || row.size() != 4) shape_error();
+        for (int c = 0; c < 3; ++c) {
+            map.linear[c][r] = finite_double(row[static_cast<std::size_t>(c)], what, kMaxMapNumber);
+        }
+        map.offset[r] = finite_double(row[3], what, kMaxMapNumber);
+    }
+}
+
+IfsMap map_from(const json& entry, std::size_t index) {
+    const std::string where = fmt::format("map {}", index);
+    require_object(entry, where);
+    check_keys(entry, {"matrix", "scale", "rotate", "translate", "colour"}, where);
+    IfsMap map;
+    if (entry.contains("matrix")) {
+        if (entry.contains("scale") || entry.contains("rotate") || entry.contains("translate")) {
+            fail("{}: \"matrix\" cannot be combined with \"scale\", \"rotate\" or \"translate\"",
+                 where);
+        }
+        matrix_map(entry, where, map);
+    } else {
+        compose_map(entry, where, map);
+    }
+    if (entry.contains("colour")) map.colour = albedo_from(entry, where);
+    const glm::dvec3 sigma = singular_values(map.linear);
+    if (!(sigma[0] < 1.0)) {
+        fail("{} is not contractive (largest singular value {:.6g} >= 1)", where, sigma[0]);
+    }
+    if (!(sigma[2] > kSingularRatio * sigma[0])) {
+        fail("{} is singular (smallest singular value {:.3g}, largest {:.3g}): every map must be "
+             "invertible",
+             where, sigma[2], sigma[0]);
+    }
+    map.contraction = sigma[0];
+    return map;
+}
+
+// --- Depth ---------------------------------------------------------------------------------------
+
+void depth_from(const json& document, IfsScene& scene) {
+    scene.default_depth = kDefaultDepth;
+    scene.max_depth = kDefaultMaxDepth;
+    if (!document.contains("depth")) return;
+    const json& depth = document.at("depth");
+    require_object(depth, "\"depth\"");
+    check_keys(depth, {"default", "max"}, "\"depth\"");
+    const auto read = [&](const char* key) {
+        std::int64_t value = 0;
+        if (!json_fields::integer_in(depth.at(key), 0, kIfsMaxDepth, value)) {
+            fail("\"depth\" \"{}\" {} must be an integer in [0, {}]", key, shown(depth.at(key)),
+                 kIfsMaxDepth);
+        }
+        return static_cast<int>(value);
+    };
+    const bool has_default = depth.contains("default");
+    const bool has_max = depth.contains("max");
+    if (has_default) scene.default_depth = read("default");
+    if (has_max) scene.max_depth = read("max");
+    if (has_default && !has_max) scene.max_depth = std::max(kDefaultMaxDepth, scene.default_depth);
+    if (has_max && !has_default) scene.default_depth = std::min(kDefaultDepth, scene.max_depth);
+    if (scene.default_depth > scene.max_depth) {
+        fail("\"depth\" \"default\" {} is above \"max\" {}", scene.default_depth, scene.max_depth);
+    }
+}
+
+// --- Cameras, paths, lights ----------------------------------------------------------------------
+
+std::vector<NamedCamera> cameras_from(const json& document) {
+    std::vector<NamedCamera> cameras;
+    if (!document.contains("cameras")) return cameras;
+    const json& array = array_from(document, "cameras", 1, kMaxCameras, "\"cameras\"");
+    std::set<std::string> names;
+    for (std::size_t i = 0; i < array.size(); ++i) {
+        const json& entry = array[i];
+        const std::string where = fmt::format("camera {}", i);
+        require_object(entry, where);
+        check_keys(entry, {"name", "position", "target", "up", "fov"}, where);
+        NamedCamera camera;
+        camera.name = camera_name_from(entry, where);
+        if (!names.insert(camera.name).second) fail("{}: duplicate name '{}'", where, camera.name);
+        camera.view = json_fields::view_from(entry, fmt::format("camera '{}'", camera.name));
+        cameras.push_back(std::move(camera));
+    }
+    return cameras;
+}
+
+std::vector<Keyframe> keyframes_from(const json& path, const std::string& where) {
+    if (!path.contains("keyframes")) fail("{} \"keyframes\" is missing", where);
+    const json& array =
+        array_from(path, "keyframes", kMinKeyframes, kMaxKeyframes, where + " \"keyframes\"");
+    std::vector<Keyframe> keyframes;
+    for (std::size_t i = 0; i < array.size(); ++i) {
+        const json& entry = array[i];
+        const std::string keyframe_where = fmt::format("{} keyframe {}", where, i);
+        require_object(entry, keyframe_where);
+        check_keys(entry, {"time", "position", "target", "up", "fov"}, keyframe_where);
+        if (!entry.contains("time")) fail("{} \"time\" is missing", keyframe_where);
+        Keyframe keyframe;
+        // Times are floats in a Scene: read as the plugins' are, then compared as stored.
+        keyframe.time = static_cast<float>(
+            finite_double(entry.at("time"), keyframe_where + " \"time\"", 1e30));
+        if (!keyframes.empty() && !(keyframe.time > keyframes.back().time)) {
+            fail("{}: time {} not after {}", keyframe_where, keyframe.time,
+                 keyframes.back().time);
+        }
+        keyframe.view = json_fields::view_from(entry, keyframe_where);
+        keyframes.push_back(keyframe);
+    }
+    return keyframes;
+}
+
+std::vector<CameraPath> camera_paths_from(const json& document) {
+    std::vector<CameraPath> paths;
+    if (!document.contains("camera_paths")) return paths;
+    const json& array = array_from(document, "camera_paths", 0, kMaxCameraPaths,
+                                   "\"camera_paths\"");
+    std::set<std::string> names;
+    for (std::size_t i = 0; i < array.size(); ++i) {
+        const json& entry = array[i];
+        std::string where = fmt::format("camera path {}", i);
+        require_object(entry, where);
+        check_keys(entry, {"name", "keyframes"}, where);
+        CameraPath path;
+        path.name = camera_name_from(entry, where);
+        if (!names.insert(path.name).second) fail("{}: duplicate name '{}'", where, path.name);
+        path.keyframes = keyframes_from(entry, fmt::format("camera path '{}'", path.name));
+        paths.push_back(std::move(path));
+    }
+    return paths;
+}
+
+// As a plugin's lights (description_validation.cpp copy_light): finite, colour and intensity not
+// negative, a directional light's direction not zero (normalised here), its disc's angular radius
+// in [0, 45] degrees.
+Light light_from(const json& entry, std::size_t index) {
+    const std::string where = fmt::format("light {}", index);
+    require_object(entry, where);
+    if (!entry.contains("type")) fail("{} \"type\" is missing", where);
+    const json& type = entry.at("type");
+    Light light;
+    if (type == "directional") {
+        check_keys(entry, {"type", "direction", "colour", "intensity", "angular_radius_degrees"},
+                   where);
+        light.type = LightType::Directional;
+        const glm::dvec3 direction = dvec3_from(entry, "direction", where);
+        const double length = glm::length(direction);
+        if (!(length > 0.0) || !std::isfinite(length)) fail("{}: zero direction", where);
+        light.vector = glm::vec3(direction / length);
+        if (entry.contains("angular_radius_degrees")) {
+            const double degrees = finite_double(entry.at("angular_radius_degrees"),
+                                                 where + " \"angular_radius_degrees\"");
+            if (degrees < 0.0 || degrees > kMaxAngularRadiusDegrees) {
+                fail("{}: angular_radius_degrees {} outside [0, {}]", where, degrees,
+                     kMaxAngularRadiusDegrees);
+            }
+            light.angular_radius = static_cast<float>(degrees * (std::numbers::pi / 180.0));
+        }
+    } else if (type == "point") {
+        check_keys(entry, {"type", "position", "colour", "intensity"}, where);
+        light.type = LightType::Point;
+        light.vector = glm::vec3(dvec3_from(entry, "position", where));
+    } else {
+        fail("{} \"type\" {} must be \"directional\" or \"point\"", where, shown(type));
+    }
+    if (entry.contains("colour")) {
+        const glm::dvec3 colour = dvec3_from(entry, "colour", where, 1e6);
+        if (colour.r < 0.0 || colour.g < 0.0 || colour.b < 0.0) {
+            fail("{}: negative colour", where);
+        }
+        light.colour = glm::vec3(colour);
+    }
+    if (entry.contains("intensity")) {
+        const double intensity = finite_double(entry.at("intensity"), where + " \"intensity\"", 1e6);
+        if (intensity < 0.0) fail("{}: negative intensity {}", where, intensity);
+        light.intensity = static_cast<float>(intensity);
+    }
+    return light;
+}
+
+std::vector<Light> lights_from(const json& document) {
+    std::vector<Light> lights;
+    if (!document.contains("lights")) return lights;
+    const json& array = array_from(document, "lights", 1, kMaxLights, "\"lights\"");
+    for (std::size_t i = 0; i < array.size(); ++i) lights.push_back(light_from(array[i], i));
+    return lights;
+}
+
+// --- Defaults ------------------------------------------------------------------------------------
+
+// Looks at the bounding sphere's centre from the front right, above, from where a sphere of the
+// bounding radius is a little narrower than the view at 60 degrees: distance R / sin(30 degrees),
+// plus a tenth.
+NamedCamera default_camera(const IfsBounds& bounds) {
+    const double fov_degrees = 60.0;
+    const double radius = std::max(bounds.radius, 1e-6 * std::max(1.0, glm::length(bounds.centre)));
+    const double distance = 1.1 * radius / std::sin(glm::radians(fov_degrees / 2.0));
+    const glm::dvec3 direction = glm::normalize(glm::dvec3(1.0, -1.3, 0.75));
+    NamedCamera camera;
+    camera.name = "default";
+    camera.view.position = bounds.centre + distance * direction;
+    camera.view.target = bounds.centre;
+    camera.view.up = glm::vec3(0.0f, 0.0f, 1.0f);
+    camera.view.fov_degrees = static_cast<float>(fov_degrees);
+    if (const std::string problem = view_problem(camera.view); !problem.empty()) {
+        fail("cannot place a default camera for the attractor: {}", problem);
+    }
+    return camera;
+}
+
+// The DE scenes' usual warm key light (sdk/template/scene.c).
+Light default_light() {
+    Light light;
+    light.type = LightType::Directional;
+    light.vector = glm::vec3(glm::normalize(glm::dvec3(0.6, -0.5, 0.8)));
+    light.colour = glm::vec3(1.0f, 0.95f, 0.85f);
+    light.intensity = 1.1f;
+    return light;
+}
+
+// --- The document --------------------------------------------------------------------------------
+
+void header_from(const json& document, IfsScene& scene) {
+    if (!document.contains("format")) fail("\"format\" is missing (must be \"{}\")", kFormat);
+    if (document.at("format") != kFormat) {
+        fail("\"format\" {} must be \"{}\"", shown(document.at("format")), kFormat);
+    }
+    json_fields::check_version(document, kIfsFormatVersion);
+    scene.version = kIfsFormatVersion;
+    scene.id = text_from(document, "id", "", true);
+    if (!is_scene_id(scene.id)) {
+        fail("\"id\" '{}' must match [a-z][a-z0-9_-]* (at most 63 characters)",
+             printable(scene.id));
+    }
+    scene.name = text_from(document, "name", "", true);
+    if (scene.name.empty()) fail("\"name\" is empty");
+    scene.description = text_from(document, "description", "", false);
+}
+
+IfsScene parse_checked(const std::string& text) {
+    if (text.size() > kIfsMaxFileBytes) {
+        fail("{} bytes, more than the {} an IFS file may have", text.size(), kIfsMaxFileBytes);
+    }
+    json document;
+    try {
+        document = json::parse(text);
+    } catch (const json::parse_error& error) {
+        // "[json.exception.parse_error.101] parse error at line 3, column 5: ..." without the tag.
+        std::string message = error.what();
+        if (const std::size_t tag = message.find("] "); tag != std::string::npos) {
+            message.erase(0, tag + 2);
+        }
+        for (char& c : message) {
+            if (static_cast<unsigned char>(c) < 0x20) c = ' ';
+        }
+        fail("not valid JSON: {}", message);
+    }
+    if (!document.is_object()) fail("must be a JSON object");
+    check_keys(document,
+               {"format", "version", "id", "name", "description", "depth", "maps", "cameras",
+                "camera_paths", "lights"},
+               "top level");
+    IfsScene scene;
+    header_from(document, scene);
+    depth_from(document, scene);
+    if (!document.contains("maps")) fail("\"maps\" is missing");
+    const json& maps = array_from(document, "maps", 1, static_cast<std::size_t>(kIfsMaxMaps),
+                                  "\"maps\"");
+    for (std::size_t i = 0; i < maps.size(); ++i) scene.maps.push_back(map_from(maps[i], i));
+    scene.bounds = ifs_bounding_sphere(scene.maps);
+    const double extent = glm::length(scene.bounds.centre) + scene.bounds.radius;
+    if (!(extent <= kMaxExtent)) {
+        fail("the attractor's bounding sphere (centre {:.4g} {:.4g} {:.4g}, radius {:.4g}) reaches "
+             "beyond {:g} from the origin",
+             scene.bounds.centre.x, scene.bounds.centre.y, scene.bounds.centre.z,
+             scene.bounds.radius, kMaxExtent);
+    }
+    scene.cameras = cameras_from(document);
+    if (scene.cameras.empty()) scene.cameras.push_back(default_camera(scene.bounds));
+    scene.camera_paths = camera_paths_from(document);
+    scene.lights = lights_from(document);
+    if (scene.lights.empty()) scene.lights.push_back(default_light());
+    return scene;
+}
+
+// --- Bounding sphere -----------------------------------------------------------------------------
+
+struct Contraction {
+    glm::dmat3 linear;
+    glm::dvec3 offset;
+    double factor;  // s_i
+};
+
+// R(c) = max_i |w_i(c) - c| / (1 - s_i): the smallest radius of a ball about c that every map
+// sends into itself, given only the maps' contraction factors.
+double radius_about(const std::vector<Contraction>& maps, const glm::dvec3& centre) {
+    double radius = 0.0;
+    for (const Contraction& map : maps) {
+        const glm::dvec3 image = map.linear * centre + map.offset;
+        radius = std::max(radius, glm::length(image - centre) / (1.0 - map.factor));
+    }
+    return radius;
+}
+
+// Nelder-Mead downhill simplex (Nelder and Mead, 1965) on R(c). R is convex in c (a maximum of
+// norms of affine functions), so a simplex search from a good start finds a centre near the best;
+// it needs no derivatives, which R lacks where two maps tie for the maximum.
+glm::dvec3 minimise_radius(const std::vector<Contraction>& maps, glm::dvec3 start, double size) {
+    std::array<glm::dvec3, 4> points{start, start, start, start};
+    std::array<double, 4> values{};
+    for (int k = 0; k < 3; ++k) points[static_cast<std::size_t>(k + 1)][k] += size;
+    for (std::size_t i = 0; i < 4; ++i) values[i] = radius_about(maps, points[i]);
+    for (int iteration = 0; iteration < 2000; ++iteration) {
+        std::array<std::size_t, 4> order{0, 1, 2, 3};
+        std::sort(order.begin(), order.end(),
+                  [&](std::size_t a, std::size_t b) { return values[a] < values[b]; });
+        const std::size_t best = order[0];
+        const std::size_t worst = order[3];
+        const std::size_t second_worst = order[2];
+        if (values[worst] - values[best] <= 1e-15 * std::max(values[best], 1e-300)) break;
+        glm::dvec3 centroid(0.0);
+        for (std::size_t i = 0; i < 3; ++i) centroid += points[order[i]] / 3.0;
+        const auto at = [&](double t) { return centroid + t * (points[worst] - centroid); };
+        const glm::dvec3 reflected = at(-1.0);
+        const double reflected_value = radius_about(maps, reflected);
+        if (reflected_value < values[best]) {
+            const glm::dvec3 expanded = at(-2.0);
+            const double expanded_value = radius_about(maps, expanded);
+            const bool expand = expanded_value < reflected_value;
+            points[worst] = expand ? expanded : reflected;
+            values[worst] = expand ? expanded_value : reflected_value;
+        } else if (reflected_value < values[second_worst]) {
+            points[worst] = reflected;
+            values[worst] = reflected_value;
+        } else {
+            const bool outside = reflected_value < values[worst];
+            const glm::dvec3 contracted = at(outside ? -0.5 : 0.5);
+            const double contracted_value = radius_about(maps, contracted);
+            if (contracted_value < std::min(values[worst], reflected_value)) {
+                points[worst] = contracted;
+                values[worst] = contracted_value;
+            } else {  // shrink towards the best point
+                for (std::size_t i = 0; i < 4; ++i) {
+                    if (i == best) continue;
+                    points[i] = points[best] + 0.5 * (points[i] - points[best]);
+                    values[i] = radius_about(maps, points[i]);
+                }
+            }
+        }
+    }
+    return points[static_cast<std::size_t>(
+        std::min_element(values.begin(), values.end()) - values.begin())];
+}
+
+}  // namespace
+
+bool is_ifs_file_name(const std::filesystem::path& file) {
+    const std::string name = file.filename().string();
+    return name.size() > kSuffix.size() &&
+           name.compare(name.size() - kSuffix.size(), kSuffix.size(), kSuffix) == 0;
+}
+
+IfsScene parse_ifs_json(const std::string& text, const std::string& origin) {
+    try {
+        return parse_checked(text);
+    } catch (const std::runtime_error& error) {
+        throw IfsError(origin + ": " + error.what());
+    } catch (const json::exception& error) {
+        // Not expected (every value's type is checked before it is read); still one line.
+        throw IfsError(origin + ": unexpected JSON content (" + std::string(error.what()) + ")");
+    }
+}
+
+IfsScene read_ifs_file(const std::filesystem::path& file) {
+    std::ifstream in(file, std::ios::binary);
+    if (!in) throw IfsError(file.string() + ": cannot open the file");
+    std::string text;
+    // Reads one byte past the limit at most, so a huge file is refused without reading it all.
+    text.resize(kIfsMaxFileBytes + 1);
+    in.read(text.data(), static_cast<std::streamsize>(text.size()));
+    if (in.bad()) throw IfsError(file.string() + ": cannot read the file");
+    text.resize(static_cast<std::size_t>(in.gcount()));
+    if (text.size() > kIfsMaxFileBytes) {
+        throw IfsError(fmt::format("{}: larger than the {} bytes an IFS file may have",
+                                   file.string(), kIfsMaxFileBytes));
+    }
+    return parse_ifs_json(text, file.string());
+}
+
+// One-sided Jacobi (Hestenes 1958): plane rotations applied to the columns until they are
+// mutually orthogonal; their lengths are then the singular values. It diagonalises M^T M without
+// forming it, so small singular values keep their relative accuracy.
+glm::dvec3 singular_values(const glm::dmat3& m) {
+    std::array<glm::dvec3, 3> columns{m[0], m[1], m[2]};
+    constexpr std::array<std::pair<int, int>, 3> kPairs{{{0, 1}, {0, 2}, {1, 2}}};
+    for (int sweep = 0; sweep < 64; ++sweep) {
+        bool rotated = false;
+        for (const auto& [p, q] : kPairs) {
+            glm::dvec3& a = columns[static_cast<std::size_t>(p)];
+            glm::dvec3& b = columns[static_cast<std::size_t>(q)];
+            const double alpha = glm::dot(a, a);
+            const double beta = glm::dot(b, b);
+            const double gamma = glm::dot(a, b);
+            if (!(std::abs(gamma) > 1e-16 * std::sqrt(alpha * beta))) continue;
+            rotated = true;
+            const double zeta = (beta - alpha) / (2.0 * gamma);
+            const double t = std::copysign(1.0, zeta) / (std::abs(zeta) + std::hypot(1.0, zeta));
+            const double c = 1.0 / std::hypot(1.0, t);
+            const double s = c * t;
+            const glm::dvec3 old_a = a;
+            a = c * old_a - s * b;
+            b = s * old_a + c * b;
+        }
+        if (!rotated) break;
+    }
+    std::array<double, 3> values{glm::length(columns[0]), glm::length(columns[1]),
+                                 glm::length(columns[2])};
+    std::sort(values.begin(), values.end(), [](double x, double y) { return x > y; });
+    return {values[0], values[1], values[2]};
+}
+
+double largest_singular_value(const glm::dmat3& m) { return singular_values(m)[0]; }
+
+// Hart and DeFanti, "Efficient Antialiased Rendering of 3-D Linear Fractals" (SIGGRAPH 1991),
+// section 4: a ball B(c, R) holds its images w_i(B) when |w_i(c) - c| + s_i R <= R for every map,
+// s_i being w_i's contraction factor, so R(c) = max_i |w_i(c) - c| / (1 - s_i) bounds the
+// attractor for any c. c starts at the centroid of the maps' fixed points (the attractor contains
+// them) and a simplex search moves it to make R small.
+IfsBounds ifs_bounding_sphere(const std::vector<IfsMap>& maps) {
+    IfsBounds bounds;
+    if (maps.empty()) return {glm::dvec3(0.0), 0.0};
+    std::vector<Contraction> contractions;
+    glm::dvec3 centroid(0.0);
+    for (const IfsMap& map : maps) {
+        const double factor = std::max(map.contraction, largest_singular_value(map.linear));
+        if (!(factor < 1.0)) {
+            return {glm::dvec3(0.0), std::numeric_limits<double>::infinity()};
+        }
+        contractions.push_back({map.linear, map.offset, factor});
+        // w(x) = x at x = (I - L)^-1 t; I - L is invertible when |L| < 1.
+        centroid += glm::inverse(glm::dmat3(1.0) - map.linear) * map.offset;
+    }
+    centroid /= static_cast<double>(maps.size());
+    glm::dvec3 centre = centroid;
+    double radius = radius_about(contractions, centre);
+    // Restarts with a smaller simplex: Nelder-Mead can stall on a ridge of the max.
+    for (double size = 0.25 * radius; size > 1e-6 * radius; size *= 0.1) {
+        const glm::dvec3 better = minimise_radius(contractions, centre, size);
+        const double better_radius = radius_about(contractions, better);
+        if (better_radius < radius) {
+            centre = better;
+            radius = better_radius;
+        }
+    }
+    bounds.centre = centre;
+    // A relative 1e-9 more than the bound needs, so rounding in R's arithmetic cannot leave an
+    // image of the ball poking out.
+    bounds.radius = radius * (1.0 + 1e-9);
+    return bounds;
+}
+
+}  // namespace fgr

@@ -1,0 +1,46 @@
+#pragma once
+// Reading fgr's JSON files (camera path files, IFS scene files): the checks their fields share, so
+// a camera or a version number is read and refused the same way in every file. Each throws
+// std::runtime_error with a one-line reason that starts with `what` or `where` (callers add the
+// file's name in front).
+
+#include <cstdint>
+#include <initializer_list>
+#include <string>
+#include <string_view>
+
+#include <glm/vec3.hpp>
+#include <nlohmann/json.hpp>
+
+#include "fgr/scene.hpp"
+
+namespace fgr::json_fields {
+
+// A number, finite and at most `limit` in magnitude.
+double finite_double(const nlohmann::json& value, const std::string& what, double limit = 1e30);
+
+// object[key], required: an array of three numbers as finite_double reads them.
+glm::dvec3 dvec3_from(const nlohmann::json& object, const char* key, const std::string& where,
+                      double limit = 1e30);
+
+// Whether `value` is an integer in [low, high], compared as the integer JSON holds, never converted
+// first (4294967297 is not 1, and 1.0 or "1" are not integers). Sets `out` when it is.
+bool integer_in(const nlohmann::json& value, std::int64_t low, std::int64_t high,
+                std::int64_t& out);
+
+// "version" must be the integer `version`.
+void check_version(const nlohmann::json& document, int version);
+
+// A view's "position" and "target" (required), "up" (default +z) and "fov" (horizontal degrees,
+// default 60), checked by view_problem (view_validation.hpp).
+CameraView view_from(const nlohmann::json& entry, const std::string& where);
+
+// Refuses any key of `object` not in `known`: a misspelt key must not pass silently.
+void check_keys(const nlohmann::json& object, std::initializer_list<std::string_view> known,
+                const std::string& where);
+
+// A JSON value as it may appear in a one-line message: dumped with non-ASCII escaped, shortened to
+// about 40 characters.
+std::string shown(const nlohmann::json& value);
+
+}  // namespace fgr::json_fields
