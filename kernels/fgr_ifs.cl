@@ -30,16 +30,17 @@ typedef FGR_LANES(float3, double3) ifs_real3;
 
 /* FGR_IFS_HEAP (from the host, kIfsHeapCapacity): nodes a heap holds; a ray whose heap would
  * overflow is traced again depth first (exact, slower) and counted in the stats. */
-/* Deepest levels whose ellipsoid normals are averaged into the surface normal. */
-#ifndef FGR_IFS_NORMAL_LEVELS
-#define FGR_IFS_NORMAL_LEVELS 5
-#endif
+/* FGR_IFS_NORMAL_LEVELS (from the host, kIfsNormalLevels): the deepest levels whose ellipsoid
+ * normals are averaged into the surface normal. */
 /* Nodes a ray may visit per march step of the `max_steps` budget: far more than any sensible
  * view needs (the traversal always ends); the cap only keeps a pathological one from stalling
  * the device. */
 #define FGR_IFS_NODES_PER_STEP 256
 /* Bits per map index in a node's record of its last maps (FGR_IFS_MAPS <= 64). */
 #define FGR_IFS_INDEX_BITS 6u
+#if FGR_IFS_NORMAL_LEVELS > 10
+#error "a node records its last 10 maps (6 bits each in a ulong): FGR_IFS_NORMAL_LEVELS <= 10"
+#endif
 
 /* The map from world space into a node's space: rows of L, then l. */
 typedef struct ifs_frame {
@@ -52,7 +53,8 @@ typedef struct ifs_node {
     ifs_real size;  /* an upper bound of the ellipsoid's radius in world units */
     int depth;
     int top;        /* the first map on the path from the root (-1 at the root): the colour */
-    uint recent;    /* the last maps applied, newest in the low bits */
+    ulong recent;   /* the last maps applied, newest in the low bits (10 of them) */
+    int resolved;   /* a leaf whose entry is where the ray meets its shape: the hit itself */
 } ifs_node;
 
 /* What one lane's trace found. */
@@ -127,7 +129,8 @@ inline ifs_node ifs_root(void) {
     root.size = (ifs_real)FGR_IFS_RADIUS;
     root.depth = 0;
     root.top = -1;
-    root.recent = 0u;
+    root.recent = 0ul;
+    root.resolved = 0;
     return root;
 }
 
@@ -138,7 +141,8 @@ inline ifs_node ifs_child(ifs_node parent, int map, ifs_real entry) {
     child.size = parent.size * (ifs_real)fgr_ifs_contraction[map];
     child.depth = parent.depth + 1;
     child.top = parent.top < 0 ? map : parent.top;
-    child.recent = (parent.recent << FGR_IFS_INDEX_BITS) | (uint)map;
+    child.recent = (parent.recent << FGR_IFS_INDEX_BITS) | (ulong)map;
+    child.resolved = 0;
     return child;
 }
 
@@ -150,9 +154,62 @@ inline int ifs_is_leaf(ifs_node node, int max_depth, ifs_real travelled, float f
            node.size <= (ifs_real)footprint * (fmax(node.entry, (ifs_real)0) + travelled);
 }
 
-/* A hit counts where the ray enters a leaf ahead of its origin and before `reach`. */
-inline int ifs_leaf_counts(ifs_node node, ifs_real reach) {
-    return node.entry > 0 && node.entry <= reach;
+#if FGR_IFS_LEAF_PLANES > 0
+/* Where the ray enters the leaf's polytope (half-spaces n . x <= h in the node's space), and
+ * through which plane; 0 where it misses. Plane by plane, as Kay and Kajiya's slabs: a plane the
+ * ray crosses inwards (n . d < 0) bounds its entry, one it crosses outwards its exit. */
+inline int ifs_polytope_enter(ifs_frame f, ifs_real3 o, ifs_real3 d, ifs_real* entry, int* face) {
+    const ifs_real3 ol = ifs_apply(f, o);
+    const ifs_real3 dl = ifs_linear(f, d);
+    ifs_real enter = -INFINITY, leave = INFINITY;
+    *face = 0;
+    for (int i = 0; i < FGR_IFS_LEAF_PLANES; ++i) {
+        const ifs_real3 n = ifs_table_row(fgr_ifs_leaf_planes[i], 0);
+        const ifs_real h = fgr_ifs_leaf_planes[i][3];
+        const ifs_real along = dot(n, dl);
+        const ifs_real room = h - dot(n, ol); /* >= 0 where the origin is inside this plane */
+        if (along == 0) {
+            if (room < 0) return 0; /* parallel, outside */
+            continue;
+        }
+        const ifs_real t = room / along;
+        if (along < 0) {
+            if (t > enter) {
+                enter = t;
+                *face = i;
+            }
+        } else {
+            leave = fmin(leave, t);
+        }
+    }
+    *entry = enter;
+    return enter <= leave;
+}
+#endif
+
+/* Whether a leaf draws the scene's polytope (FGR_IFS_LEAF_PLANES > 0): at the depth cap, where
+ * the image shows the level-n solid exactly. A leaf the footprint stopped is below a pixel and
+ * draws its ball, which covers what the pixel sees of the attractor inside it, as the marcher's
+ * hit footprint does (tiny exact polytopes there would alias into speckle). */
+inline int ifs_draws_polytope(ifs_node node, int max_depth) {
+    return FGR_IFS_LEAF_PLANES > 0 && node.depth >= max_depth;
+}
+
+/* Where the ray meets what a leaf draws, if it does: its ball's entry (already known), or its
+ * polytope's entry, which lies inside the ball. */
+inline int ifs_leaf_hit(ifs_node node, ifs_real3 o, ifs_real3 d, int max_depth, ifs_real* t) {
+#if FGR_IFS_LEAF_PLANES > 0
+    if (ifs_draws_polytope(node, max_depth)) {
+        int face;
+        return ifs_polytope_enter(node.frame, o, d, t, &face);
+    }
+#else
+    (void)o;
+    (void)d;
+    (void)max_depth;
+#endif
+    *t = node.entry;
+    return 1;
 }
 
 /* Heap of nodes by entry distance, smallest on top (a binary heap in an array). */
@@ -205,9 +262,10 @@ inline ifs_hit ifs_trace_depth_first(ifs_real3 o, ifs_real3 d, ifs_real travelle
     next_map[0] = 0;
     result.visited = 1;
     if (ifs_is_leaf(root, max_depth, travelled, footprint)) {
-        if (ifs_leaf_counts(root, reach)) {
+        ifs_real t;
+        if (ifs_leaf_hit(root, o, d, max_depth, &t) && t > 0 && t <= reach) {
             result.hit = 1;
-            result.t = root.entry;
+            result.t = t;
             result.leaf = root;
         }
         return result;
@@ -226,9 +284,11 @@ inline ifs_hit ifs_trace_depth_first(ifs_real3 o, ifs_real3 d, ifs_real travelle
         child.entry = entry;
         ++result.visited;
         if (ifs_is_leaf(child, max_depth, travelled, footprint)) {
-            if (ifs_leaf_counts(child, result.t) && (!result.hit || child.entry < result.t)) {
+            ifs_real t;
+            if (ifs_leaf_hit(child, o, d, max_depth, &t) && t > 0 && t <= result.t &&
+                (!result.hit || t < result.t)) {
                 result.hit = 1;
-                result.t = child.entry;
+                result.t = t;
                 result.leaf = child;
                 if (any_hit) return result;
             }
@@ -258,18 +318,38 @@ inline ifs_hit ifs_trace_nearest(ifs_real3 o, ifs_real3 d, ifs_real travelled, i
     ifs_heap_push(heap, &count, root);
     result.heap_peak = 1;
     while (count > 0 && result.visited < max_nodes) {
-        const ifs_node node = ifs_heap_pop(heap, &count);
+        ifs_node node = ifs_heap_pop(heap, &count);
         ++result.visited;
+        if (node.resolved) {
+            /* Every node still waiting is entered at or after this hit: the nearest. */
+            result.hit = 1;
+            result.t = node.entry;
+            result.leaf = node;
+            return result;
+        }
         if (ifs_is_leaf(node, max_depth, travelled, footprint)) {
-            /* Every node still waiting is entered at or after this one: nearest hit found,
-             * unless the ray started inside this leaf (then it does not count, and the search
-             * goes on). */
-            if (ifs_leaf_counts(node, reach)) {
+            /* A leaf whose shape the ray meets ahead of its origin (not the surface a ray
+             * starts inside) goes back into the heap at that distance: a ball's at once (it is
+             * the entry it was taken out at), a polytope's deeper inside the ball, where nodes
+             * entered before it may still hold a nearer hit. */
+            ifs_real t;
+            if (!ifs_leaf_hit(node, o, d, max_depth, &t) || !(t > 0) || t > reach) continue;
+            node.entry = t;
+            node.resolved = 1;
+            if (!ifs_draws_polytope(node, max_depth) || count == 0 || t <= heap[0].entry) {
                 result.hit = 1;
-                result.t = node.entry;
+                result.t = t;
                 result.leaf = node;
                 return result;
             }
+            if (count == FGR_IFS_HEAP) {
+                ifs_hit fallback = ifs_trace_depth_first(o, d, travelled, reach, footprint,
+                                                         max_depth, max_nodes, 0);
+                fallback.visited += result.visited;
+                return fallback;
+            }
+            ifs_heap_push(heap, &count, node);
+            result.heap_peak = max(result.heap_peak, count);
             continue;
         }
         for (int map = 0; map < FGR_IFS_MAPS; ++map) {
@@ -279,9 +359,8 @@ inline ifs_hit ifs_trace_nearest(ifs_real3 o, ifs_real3 d, ifs_real travelled, i
             }
             child.entry = entry;
             if (count == FGR_IFS_HEAP) {
-                const ifs_hit exact = ifs_trace_depth_first(o, d, travelled, reach, footprint,
-                                                            max_depth, max_nodes, 0);
-                ifs_hit fallback = exact;
+                ifs_hit fallback = ifs_trace_depth_first(o, d, travelled, reach, footprint,
+                                                         max_depth, max_nodes, 0);
                 fallback.visited += result.visited;
                 return fallback;
             }
@@ -292,17 +371,17 @@ inline ifs_hit ifs_trace_nearest(ifs_real3 o, ifs_real3 d, ifs_real travelled, i
     return result;
 }
 
-/* The surface normal at a leaf hit: the ellipsoid normals of the leaf and of its ancestors up to
+/* A ball leaf's surface normal: the ellipsoid normals of the leaf and of its ancestors up to
  * FGR_IFS_NORMAL_LEVELS levels, each taken at the hit point and made a unit vector in world
  * space, averaged. A leaf's own ellipsoid is a coarse stand-in for the attractor inside it; its
  * ancestors' normals describe the shape the leaf belongs to. In a node's space the ellipsoid is
  * the ball B, whose normal at q is q - c; in world space the normal is L^T (q - c). Going up a
  * level applies the node's last map: q' = A q + b and L' = A L. */
-inline ifs_real3 ifs_normal(ifs_node leaf, ifs_real3 hit_point) {
+inline ifs_real3 ifs_ball_normal(ifs_node leaf, ifs_real3 hit_point) {
     const ifs_real3 centre = (ifs_real3)(FGR_IFS_CENTRE_X, FGR_IFS_CENTRE_Y, FGR_IFS_CENTRE_Z);
     ifs_frame f = leaf.frame;
     ifs_real3 q = ifs_apply(f, hit_point);
-    uint recent = leaf.recent;
+    ulong recent = leaf.recent;
     ifs_real3 sum = (ifs_real3)(0, 0, 0);
     const int levels = min(FGR_IFS_NORMAL_LEVELS, leaf.depth + 1);
     for (int level = 0; level < levels; ++level) {
@@ -313,7 +392,7 @@ inline ifs_real3 ifs_normal(ifs_node leaf, ifs_real3 hit_point) {
         const ifs_real length2 = dot(world, world);
         if (length2 > 0) sum += world * rsqrt(length2);
         if (level + 1 == levels) break;
-        const int map = (int)(recent & ((1u << FGR_IFS_INDEX_BITS) - 1u));
+        const int map = (int)(recent & ((1ul << FGR_IFS_INDEX_BITS) - 1ul));
         recent >>= FGR_IFS_INDEX_BITS;
         __constant const ifs_real* fwd = fgr_ifs_forward[map];
         const ifs_real3 a0 = ifs_table_row(fwd, 0), a1 = ifs_table_row(fwd, 1),
@@ -328,6 +407,28 @@ inline ifs_real3 ifs_normal(ifs_node leaf, ifs_real3 hit_point) {
     }
     const ifs_real length2 = dot(sum, sum);
     return length2 > 0 ? sum * rsqrt(length2) : (ifs_real3)(0, 0, 1);
+}
+
+/* The surface normal at a leaf hit: the face of the polytope the ray entered through (exact), or
+ * for ball leaves the average of ifs_ball_normal. A face's normal n in the node's space is L^T n
+ * in world space, as the ball's is. */
+inline ifs_real3 ifs_normal(ifs_node leaf, ifs_real3 o, ifs_real3 d, ifs_real t,
+                            int max_depth) {
+#if FGR_IFS_LEAF_PLANES > 0
+    if (!ifs_draws_polytope(leaf, max_depth)) return ifs_ball_normal(leaf, o + t * d);
+    ifs_real entry;
+    int face;
+    ifs_polytope_enter(leaf.frame, o, d, &entry, &face);
+    const ifs_real3 n = ifs_table_row(fgr_ifs_leaf_planes[face], 0);
+    const ifs_frame f = leaf.frame;
+    const ifs_real3 world = (ifs_real3)(f.row0.x * n.x + f.row1.x * n.y + f.row2.x * n.z,
+                                        f.row0.y * n.x + f.row1.y * n.y + f.row2.y * n.z,
+                                        f.row0.z * n.x + f.row1.z * n.y + f.row2.z * n.z);
+    return normalize(world);
+#else
+    (void)max_depth;
+    return ifs_ball_normal(leaf, o + t * d);
+#endif
 }
 
 /* The albedo of a leaf: its first map's colour (the root, at depth 0: their mean). */
@@ -395,7 +496,7 @@ march_result ifs_trace_rays(vec3 origin, vec3 dir, mask active, real travelled, 
         hit[lane] = FGR_WIDTH == 1 ? 1 : -1; /* a true lane, as select() reads it */
         level[lane] = found.leaf.depth;
         if (any_hit) continue;
-        const ifs_real3 n = ifs_normal(found.leaf, o + found.t * d);
+        const ifs_real3 n = ifs_normal(found.leaf, o, d, found.t, max_depth);
         const ifs_real3 c = ifs_colour(found.leaf);
         nx[lane] = n.x;
         ny[lane] = n.y;

@@ -228,6 +228,76 @@ void depth_from(const json& document, IfsScene& scene) {
     }
 }
 
+// --- Leaf shape ----------------------------------------------------------------------------------
+
+// The half-space n . x <= h through a, b, c whose inside holds `inside`.
+glm::dvec4 plane_through(const glm::dvec3& a, const glm::dvec3& b, const glm::dvec3& c,
+                         const glm::dvec3& inside) {
+    glm::dvec3 n = glm::normalize(glm::cross(b - a, c - a));
+    if (glm::dot(n, inside - a) > 0.0) n = -n;
+    return {n, glm::dot(n, a)};
+}
+
+// "leaf": {"shape": "ball"} (the default), {"shape": "box", "min": [..], "max": [..]} or
+// {"shape": "tetrahedron", "vertices": [4 points]}. A polytope must lie inside the bounding ball,
+// which culls every node's subtree, leaf shapes included.
+IfsLeaf leaf_from(const json& document, const IfsBounds& bounds) {
+    IfsLeaf leaf;
+    if (!document.contains("leaf")) return leaf;
+    const json& entry = document.at("leaf");
+    require_object(entry, "\"leaf\"");
+    leaf.shape = text_from(entry, "shape", "\"leaf\"", true);
+    std::vector<glm::dvec3> corners;
+    if (leaf.shape == "ball") {
+        check_keys(entry, {"shape"}, "\"leaf\"");
+        return leaf;
+    } else if (leaf.shape == "box") {
+        check_keys(entry, {"shape", "min", "max"}, "\"leaf\"");
+        const glm::dvec3 low = dvec3_from(entry, "min", "\"leaf\"", kMaxMapNumber);
+        const glm::dvec3 high = dvec3_from(entry, "max", "\"leaf\"", kMaxMapNumber);
+        for (int axis = 0; axis < 3; ++axis) {
+            if (!(low[axis] < high[axis])) fail("\"leaf\" box: \"min\" must be below \"max\" on every axis");
+            glm::dvec3 n(0.0);
+            n[axis] = 1.0;
+            leaf.planes.push_back({n, high[axis]});
+            leaf.planes.push_back({-n, -low[axis]});
+        }
+        for (int corner = 0; corner < 8; ++corner) {
+            corners.emplace_back(corner & 1 ? high.x : low.x, corner & 2 ? high.y : low.y,
+                                 corner & 4 ? high.z : low.z);
+        }
+    } else if (leaf.shape == "tetrahedron") {
+        check_keys(entry, {"shape", "vertices"}, "\"leaf\"");
+        if (!entry.contains("vertices")) fail("\"leaf\" tetrahedron needs \"vertices\"");
+        const json& vertices = array_from(entry, "vertices", 4, 4, "\"leaf\" \"vertices\"");
+        for (std::size_t i = 0; i < 4; ++i) {
+            corners.push_back(json_fields::dvec3_from(json{{"v", vertices[i]}}, "v",
+                                                      fmt::format("\"leaf\" vertex {}", i),
+                                                      kMaxMapNumber));
+        }
+        const double volume = std::abs(glm::dot(corners[1] - corners[0],
+                                                glm::cross(corners[2] - corners[0],
+                                                           corners[3] - corners[0]))) / 6.0;
+        const double size = glm::length(corners[1] - corners[0]);
+        if (!(volume > 1e-9 * size * size * size)) fail("\"leaf\" tetrahedron is flat");
+        for (int face = 0; face < 4; ++face) {
+            leaf.planes.push_back(plane_through(corners[(face + 1) % 4], corners[(face + 2) % 4],
+                                                corners[(face + 3) % 4], corners[face]));
+        }
+    } else {
+        fail("\"leaf\" \"shape\" '{}' must be \"ball\", \"box\" or \"tetrahedron\"", printable(leaf.shape));
+    }
+    for (const glm::dvec3& corner : corners) {
+        if (glm::length(corner - bounds.centre) > bounds.radius * (1.0 + 1e-6)) {
+            fail("\"leaf\" {} corner ({:.4g} {:.4g} {:.4g}) lies outside the maps' bounding sphere "
+                 "(centre {:.4g} {:.4g} {:.4g}, radius {:.4g}), which must hold it",
+                 leaf.shape, corner.x, corner.y, corner.z, bounds.centre.x, bounds.centre.y,
+                 bounds.centre.z, bounds.radius);
+        }
+    }
+    return leaf;
+}
+
 // --- Cameras, paths, lights ----------------------------------------------------------------------
 
 std::vector<NamedCamera> cameras_from(const json& document) {
@@ -372,6 +442,26 @@ NamedCamera default_camera(const IfsBounds& bounds) {
     return camera;
 }
 
+// A turn around the vertical through the default camera's target, at its distance and height:
+// five keyframes 90 degrees apart, two seconds each (the last back where it started).
+CameraPath default_orbit(const NamedCamera& camera) {
+    CameraPath path;
+    path.name = "orbit";
+    const glm::dvec3 target = camera.view.target;
+    const glm::dvec3 offset = camera.view.position - target;
+    for (int step = 0; step <= 4; ++step) {
+        const double angle = glm::radians(90.0 * step);
+        const double c = std::cos(angle), s = std::sin(angle);
+        Keyframe keyframe;
+        keyframe.time = 2.0f * static_cast<float>(step);
+        keyframe.view = camera.view;
+        keyframe.view.position =
+            target + glm::dvec3(c * offset.x - s * offset.y, s * offset.x + c * offset.y, offset.z);
+        path.keyframes.push_back(keyframe);
+    }
+    return path;
+}
+
 // The DE scenes' usual warm key light (sdk/template/scene.c).
 Light default_light() {
     Light light;
@@ -421,8 +511,8 @@ IfsScene parse_checked(const std::string& text) {
     }
     if (!document.is_object()) fail("must be a JSON object");
     check_keys(document,
-               {"format", "version", "id", "name", "description", "depth", "maps", "cameras",
-                "camera_paths", "lights"},
+               {"format", "version", "id", "name", "description", "depth", "maps", "leaf",
+                "cameras", "camera_paths", "lights"},
                "top level");
     IfsScene scene;
     header_from(document, scene);
@@ -439,9 +529,11 @@ IfsScene parse_checked(const std::string& text) {
              scene.bounds.centre.x, scene.bounds.centre.y, scene.bounds.centre.z,
              scene.bounds.radius, kMaxExtent);
     }
+    scene.leaf = leaf_from(document, scene.bounds);
     scene.cameras = cameras_from(document);
     if (scene.cameras.empty()) scene.cameras.push_back(default_camera(scene.bounds));
     scene.camera_paths = camera_paths_from(document);
+    if (scene.camera_paths.empty()) scene.camera_paths.push_back(default_orbit(scene.cameras[0]));
     scene.lights = lights_from(document);
     if (scene.lights.empty()) scene.lights.push_back(default_light());
     return scene;

@@ -16,6 +16,7 @@ namespace {
 // A node: the affine map from world space into its space (x -> linear * x + offset), in which it
 // is the bounding ball.
 struct Node {
+    bool resolved = false;  // a leaf whose entry is where the ray meets its shape
     glm::dmat3 linear{1.0};
     glm::dvec3 offset{0.0};
     double entry = 0.0;
@@ -45,6 +46,54 @@ bool enter(const Node& node, const IfsBounds& ball, const glm::dvec3& o, const g
     entry = closest - half_chord;
     exit = closest + half_chord;
     return true;
+}
+
+// Where the ray enters a leaf's polytope, and through which plane (kernels/fgr_ifs.cl's
+// ifs_polytope_enter).
+bool enter_polytope(const Node& node, const IfsLeaf& leaf, const glm::dvec3& o,
+                    const glm::dvec3& d, double& entry, int& face) {
+    const glm::dvec3 ol = node.linear * o + node.offset;
+    const glm::dvec3 dl = node.linear * d;
+    double enter = -INFINITY, leave = INFINITY;
+    face = 0;
+    for (int i = 0; i < static_cast<int>(leaf.planes.size()); ++i) {
+        const glm::dvec4& plane = leaf.planes[static_cast<size_t>(i)];
+        const glm::dvec3 n(plane);
+        const double along = glm::dot(n, dl);
+        const double room = plane.w - glm::dot(n, ol);
+        if (along == 0.0) {
+            if (room < 0.0) return false;
+            continue;
+        }
+        const double t = room / along;
+        if (along < 0.0) {
+            if (t > enter) {
+                enter = t;
+                face = i;
+            }
+        } else {
+            leave = std::min(leave, t);
+        }
+    }
+    entry = enter;
+    return enter <= leave;
+}
+
+// Whether a leaf draws the polytope: at the depth cap (a leaf the footprint stopped draws its
+// ball; kernels/fgr_ifs.cl's ifs_draws_polytope).
+bool draws_polytope(const Node& node, const IfsScene& ifs, const IfsTraceRules& rules) {
+    return !ifs.leaf.planes.empty() && node.depth >= rules.max_depth;
+}
+
+// Where the ray meets what a leaf draws: its ball's entry, or its polytope's.
+bool leaf_hit(const Node& node, const IfsScene& ifs, const IfsTraceRules& rules,
+              const glm::dvec3& o, const glm::dvec3& d, double& t) {
+    if (!draws_polytope(node, ifs, rules)) {
+        t = node.entry;
+        return true;
+    }
+    int face = 0;
+    return enter_polytope(node, ifs.leaf, o, d, t, face);
 }
 
 Node child_of(const Node& parent, const IfsScene& ifs, const std::vector<glm::dmat3>& inverses,
@@ -87,6 +136,20 @@ glm::dvec3 averaged_normal(const Node& leaf, const IfsScene& ifs, const glm::dve
     return length > 0.0 ? sum / length : glm::dvec3(0.0, 0.0, 1.0);
 }
 
+// The normal where the ray enters a resolved leaf: its polytope's face, or the averaged ball
+// normals (kernels/fgr_ifs.cl's ifs_normal).
+glm::dvec3 surface_normal(const Node& leaf, const IfsScene& ifs, const IfsTraceRules& rules,
+                          const glm::dvec3& origin, const glm::dvec3& dir) {
+    if (!draws_polytope(leaf, ifs, rules)) {
+        return averaged_normal(leaf, ifs, origin + leaf.entry * dir, rules.normal_levels);
+    }
+    double entry = 0.0;
+    int face = 0;
+    enter_polytope(leaf, ifs.leaf, origin, dir, entry, face);
+    return glm::normalize(glm::transpose(leaf.linear) *
+                          glm::dvec3(ifs.leaf.planes[static_cast<size_t>(face)]));
+}
+
 }  // namespace
 
 IfsRayHit trace_ifs_ray(const IfsScene& ifs, const glm::dvec3& origin, const glm::dvec3& dir,
@@ -106,19 +169,24 @@ IfsRayHit trace_ifs_ray(const IfsScene& ifs, const glm::dvec3& origin, const glm
     heap.push(root);
     result.heap_peak = 1;
     while (!heap.empty()) {
-        const Node node = heap.top();
+        Node node = heap.top();
         heap.pop();
         ++result.visited;
+        if (node.resolved) {
+            result.hit = true;
+            result.t = node.entry;
+            result.depth = node.depth;
+            result.top_map = node.top_map;
+            result.normal = surface_normal(node, ifs, rules, origin, dir);
+            return result;
+        }
         if (is_leaf(node, rules)) {
-            if (node.entry > 0.0 && node.entry <= rules.reach) {
-                result.hit = true;
-                result.t = node.entry;
-                result.depth = node.depth;
-                result.top_map = node.top_map;
-                result.normal = averaged_normal(node, ifs, origin + node.entry * dir,
-                                                rules.normal_levels);
-                return result;
-            }
+            double t = 0.0;
+            if (!leaf_hit(node, ifs, rules, origin, dir, t) || !(t > 0.0) || t > rules.reach) continue;
+            node.entry = t;
+            node.resolved = true;
+            heap.push(std::move(node));
+            result.heap_peak = std::max(result.heap_peak, static_cast<long>(heap.size()));
             continue;
         }
         for (int map = 0; map < static_cast<int>(ifs.maps.size()); ++map) {
