@@ -62,7 +62,7 @@ typedef struct ifs_hit {
     ifs_real t;
     int hit;
     int visited;    /* nodes taken out of the heap or stack */
-    int heap_peak;  /* most nodes the heap held (FGR_IFS_HEAP + 1: overflowed, traced depth first) */
+    int heap_peak;  /* most nodes the heap held (-1: it would have overflowed; traced depth first) */
     ifs_node leaf;
 } ifs_hit;
 
@@ -250,7 +250,7 @@ inline ifs_hit ifs_trace_depth_first(ifs_real3 o, ifs_real3 d, ifs_real travelle
     result.hit = 0;
     result.t = reach;
     result.visited = 0;
-    result.heap_peak = FGR_IFS_HEAP + 1;
+    result.heap_peak = -1; /* no heap: a ray that overflowed one, or a shadow ray */
     ifs_node stack[FGR_IFS_MAX_DEPTH + 1];
     int next_map[FGR_IFS_MAX_DEPTH + 1];
     ifs_real entry, exit;

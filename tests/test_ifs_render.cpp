@@ -339,5 +339,28 @@ TEST_F(IfsRenderTest, PathModeTracesIfsGeometry) {
     EXPECT_GT(double(front) / double(hits), 0.8) << front << " of " << hits;
 }
 
+// A heap too small for the view is never silent and never wrong: rays that would overflow it are
+// traced again depth first, which finds the same hits at the same distances, and the stats count
+// them. Here the heap holds 4 nodes instead of kIfsHeapCapacity.
+TEST_F(IfsRenderTest, AFullHeapFallsBackToAnExactDepthFirstTrace) {
+    const IfsScene sponge = shipped("menger.ifs.json");
+    const Scene roomy = scene_of(sponge);
+    Scene cramped = roomy;
+    const std::string heap_line = "#define FGR_IFS_HEAP " + std::to_string(kIfsHeapCapacity) + "\n";
+    const size_t at = cramped.source.find(heap_line);
+    ASSERT_NE(at, std::string::npos);
+    cramped.source.replace(at, heap_line.size(), "#define FGR_IFS_HEAP 4\n");
+    FrameRequest request{64, 48, sponge.cameras[0].view, default_param_values(roomy)};
+    set_param_from_text(roomy, request.params, "ifs_depth=4");
+    const Frame full = render(roomy, request, 16, true);
+    const Frame fallen_back = render(cramped, request, 16, true);
+    ASSERT_GT(full.hits, 64 * 48 / 10);
+    EXPECT_EQ(full.stats->heap_overflows, 0);
+    EXPECT_LE(full.stats->heap_peak, kIfsHeapCapacity);
+    EXPECT_GT(fallen_back.stats->heap_overflows, full.hits / 4);
+    EXPECT_EQ(fallen_back.depth, full.depth);
+    EXPECT_EQ(fallen_back.image.rgb, full.image.rgb);
+}
+
 }  // namespace
 }  // namespace fgr

@@ -25,8 +25,10 @@ constexpr int kIfsMaxDepth = 24;
 // Files larger than this are refused before they are parsed.
 constexpr std::size_t kIfsMaxFileBytes = 4u << 20;
 // Nodes the kernel's heap holds per ray (FGR_IFS_HEAP); a ray that would overflow it is traced
-// again depth first, exactly, and counted in the stats.
-constexpr int kIfsHeapCapacity = 48;
+// again depth first, exactly, and counted in the stats. Measured: the shipped scenes at their
+// deepest, from every camera, peak at 11 to 35 nodes at 640x480 and at 42 (the sponge face on) at
+// 1920x1080; 64 leaves half as much again.
+constexpr int kIfsHeapCapacity = 64;
 // Levels whose ellipsoid normals are averaged into an IFS surface normal (FGR_IFS_NORMAL_LEVELS):
 // measured on the faces of the Menger sponge and the Sierpinski tetrahedron (320x240, default
 // views), whose true normals are known, the mean error falls from 38 and 52 degrees with the

@@ -5,8 +5,6 @@
 
 #include <glm/geometric.hpp>
 
-#include "fgr/ifs.hpp"
-
 namespace fgr {
 namespace {
 
@@ -45,9 +43,9 @@ MarchStats march_stats(const std::vector<float>& planes, const TileLayout& layou
             const long secondary = static_cast<long>(planes[6 * plane + i]);
             stats.secondary_de_evaluations += secondary;
             if (!hit) stats.secondary_de_evaluations_missed += secondary;
-            const int heap = static_cast<int>(planes[7 * plane + i]);
+            const int heap = static_cast<int>(planes[7 * plane + i]);  // -1: overflowed
             stats.heap_peak = std::max(stats.heap_peak, heap);
-            stats.heap_overflows += heap > kIfsHeapCapacity;
+            stats.heap_overflows += heap < 0;
             ++stats.pixels;
         }
     }
