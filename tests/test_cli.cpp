@@ -285,6 +285,12 @@ const std::vector<BadInput> kBadInputs = {
     {"AllWithScene", {"render", "--all", "mandelbulb", "-o", "{out}"}, 2, {"--all"}},
     {"AllWithSet", {"render", "--all", "-o", "{out}", "--set", "power=8"}, 2, {"--all"}},
     {"NoSceneNorAll", {"render", "-o", "{out}"}, 2, {"scene"}},
+    // Exact IFS tracing has no distance estimate for soft shadows to read.
+    {"IfsSceneWithSoftShadows",
+     {"render", "sierpinski-ifs", "-o", "{out}", "--width", "16", "--height", "12", "--effects",
+      "+soft_shadows"},
+     kAnyFailure,
+     {"sierpinski-ifs", "soft_shadows", "distance estimate"}},
     {"UnknownSubcommand", {"frobnicate"}, 2, {"frobnicate"}},
     {"NoSubcommand", {}, kAnyFailure, {}},
 };

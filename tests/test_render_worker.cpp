@@ -14,6 +14,7 @@
 #include <thread>
 
 #include "child_process.hpp"
+#include "fgr/ifs.hpp"
 #include "fgr/image_io.hpp"
 #include "fgr/opencl_device.hpp"
 #include "fgr/parameters.hpp"
@@ -150,6 +151,33 @@ TEST_F(RenderWorkerTest, StillViewIsRefinedToTheSampleCapThenLeftAlone) {
     // Idle means idle: nothing more arrives for the same view.
     std::this_thread::sleep_for(200ms);
     EXPECT_FALSE(worker_->take_frame().has_value());
+}
+
+// An IFS scene's frames say how deep the image went, for the viewer's status line: the depth
+// slider's value where the footprint does not stop it sooner, and every refined sample keeps
+// the level sample 0 reported. A DE scene reports none.
+TEST_F(RenderWorkerTest, IfsFramesReportTheDepthReached) {
+    const auto sponge = std::make_shared<const Scene>(ifs_scene_to_scene(
+        read_ifs_file(std::filesystem::path(FGR_TEST_PLUGIN_DIR) / "menger.ifs.json"),
+        "menger.ifs.json"));
+    for (const int depth : {1, 3}) {
+        ViewState view = state(kSphere, 64, 48, uint64_t(depth));
+        view.scene = sponge;
+        view.effects = sponge->effects;
+        view.view = sponge->cameras.front().view;
+        view.params = default_param_values(*sponge);
+        set_param_from_text(*sponge, view.params, "ifs_depth=" + std::to_string(depth));
+        worker_->submit(view);
+        ASSERT_TRUE(wait_idle(uint64_t(depth)));
+        const DisplayFrame* last = last_frame_of(uint64_t(depth));
+        ASSERT_NE(last, nullptr);
+        EXPECT_EQ(last->samples, 3);
+        EXPECT_EQ(last->ifs_depth_reached, depth);
+    }
+    worker_->submit(state(kSphere, 64, 48, 10));
+    ASSERT_TRUE(wait_idle(10));
+    ASSERT_NE(last_frame_of(10), nullptr);
+    EXPECT_EQ(last_frame_of(10)->ifs_depth_reached, -1);
 }
 
 TEST_F(RenderWorkerTest, MovingViewGetsPreviewsAtTheResolutionThatHoldsTheTarget) {

@@ -116,13 +116,17 @@ uint64_t apply_effect_changes(uint64_t effects, std::string_view changes) {
     return effects;
 }
 
-AssembledProgram assemble_program(const Scene& scene, const KernelSwitches& switches) {
-    if (const uint64_t unsupported = switches.effects & ~supported_effects(scene)) {
+void check_supported_effects(const Scene& scene, uint64_t effects) {
+    if (const uint64_t unsupported = effects & ~supported_effects(scene)) {
         throw std::invalid_argument(fmt::format(
             "the IFS scene '{}' cannot have {}: exact IFS tracing has no distance estimate (it "
             "can have {})",
             scene.id, effect_names(unsupported), effect_names(kIfsEffects)));
     }
+}
+
+AssembledProgram assemble_program(const Scene& scene, const KernelSwitches& switches) {
+    check_supported_effects(scene, switches.effects);
     AssembledProgram program;
     program.options = switch_options(switches);
     std::string& source = program.source;

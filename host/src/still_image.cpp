@@ -25,6 +25,7 @@ Frame render_still(const Scene& scene, const FrameRequest& request, const Comput
     if (const std::string problem = computed_view_problem(request.view); !problem.empty()) {
         throw std::invalid_argument("cannot render this view: " + problem);
     }
+    check_supported_effects(scene, settings.effects);
     const KernelSwitches in_float{
         settings.packet_width ? settings.packet_width : preferred_packet_width(device.info),
         settings.effects, settings.stats, false, settings.mode};

@@ -47,6 +47,10 @@ constexpr uint64_t kIfsEffects =
 // The effects `scene` can be built with: all for DE scenes, kIfsEffects for IFS scenes.
 uint64_t supported_effects(const Scene& scene);
 
+// Throws std::invalid_argument, naming the scene and the effects, when `effects` holds one the
+// scene cannot have (assemble_program checks it too).
+void check_supported_effects(const Scene& scene, uint64_t effects);
+
 // Applies a comma-separated list of changes to `effects`: "+name" or "name" adds an effect,
 // "-name" removes it, "none" removes all, e.g. "+shadows,-ambient_occlusion" or "none,+fog". Throws std::invalid_argument naming an
 // unknown effect and listing the known ones.

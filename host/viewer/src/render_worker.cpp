@@ -114,6 +114,7 @@ void RenderWorker::post_message(std::string message) {
 }
 
 void RenderWorker::publish(DisplayFrame frame) {
+    frame.ifs_depth_reached = ifs_depth_reached_;
     std::lock_guard lock(mutex_);
     frame_ = std::move(frame);
 }
@@ -307,6 +308,7 @@ void RenderWorker::render_preview(Renderer& renderer, const ViewState& state, fl
         quality_.record_frame(int64_t{width} * height, frame.render_ms);
         previewed_generation_ = state.generation;
     }
+    ifs_depth_reached_ = frame.ifs_levels ? frame.ifs_levels->deepest : -1;
     publish({std::move(frame.image), scale, 1, frame.render_ms,
              samples_per_second(width, height, frame.render_ms),
              renderer.switches().double_precision, state.generation});
@@ -326,6 +328,7 @@ void RenderWorker::refine(Renderer& renderer, const ViewState& state, int sample
         quality_.record_frame(int64_t{state.width} * state.height, frame.render_ms);
     }
     if (sample == 0) {
+        ifs_depth_reached_ = frame.ifs_levels ? frame.ifs_levels->deepest : -1;
         accumulation_ = std::move(frame.linear);
         accumulated_samples_ = 1;
         publish({std::move(frame.image), 1.0f, 1, frame.render_ms,

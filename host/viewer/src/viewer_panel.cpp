@@ -95,6 +95,12 @@ void ViewerApp::draw_status_overlay() {
             ImGui::Text("path tracing: %d samples/pixel, %.2f M samples/s", shown_->samples,
                         shown_->samples_per_second / 1e6);
         }
+        if (scene().ifs && shown_->ifs_depth_reached >= 0) {
+            // The slider caps the depth; the pixel footprint stops it sooner where detail
+            // would be smaller than a pixel.
+            ImGui::Text("IFS depth reached %d (slider %d)", shown_->ifs_depth_reached,
+                        static_cast<int>(param_value(scene(), last_state_.params, "ifs_depth")));
+        }
     }
     if (status_.compiling) {
         ImGui::TextColored(ImVec4(1, 0.8f, 0.2f, 1), "compiling %s%s...",

@@ -61,6 +61,7 @@ struct DisplayFrame {
     double samples_per_second = 0;  // pixel samples per second of that pass
     bool double_precision = false;  // rendered with double lanes
     uint64_t generation = 0;
+    int ifs_depth_reached = -1;  // IFS scenes: the deepest level a pixel hit (-1: none or not IFS)
 };
 
 struct WorkerStatus {
@@ -180,6 +181,7 @@ private:
     // Refinement of the current generation (render thread only).
     uint64_t accumulated_generation_ = UINT64_MAX;
     int accumulated_samples_ = 0;
+    int ifs_depth_reached_ = -1;  // of the last frame that reported it (sample 0 or a preview)
     std::vector<float> accumulation_;  // sum of linear RGB over the samples
     const Renderer* probed_renderer_ = nullptr;  // renderers live as long as the worker
     glm::dvec3 probed_position_{NAN};
