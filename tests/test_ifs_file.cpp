@@ -435,6 +435,22 @@ std::vector<BadCase> bad_cases() {
     light["lights"] = {{{"type", "point"}, {"position", {0, 0, 2}}, {"intensity", -1}}};
     add("negative intensity", light, "light 0: negative intensity -1");
 
+    // Leaf shapes: inside the bounding sphere (radius sqrt(3) about the origin here), solid.
+    json leaf = doc;
+    leaf["leaf"] = {{"shape", "box"}, {"min", {-1, -1, -1}}, {"max", {1, 1, 1.5}}};
+    add("leaf box outside the sphere", leaf, "\"leaf\" box corner (-1 -1 1.5) lies outside");
+    leaf["leaf"] = {{"shape", "box"}, {"min", {-1, 1, -1}}, {"max", {1, 1, 1}}};
+    add("leaf box with no depth", leaf, "\"leaf\" box: \"min\" must be below \"max\"");
+    leaf["leaf"] = {{"shape", "tetrahedron"},
+                    {"vertices", {{1, 1, 1}, {-1, -1, 1}, {1, -1, -1}, {0, 0, 1}}}};
+    add("flat leaf tetrahedron", leaf, "\"leaf\" tetrahedron is flat");
+    leaf["leaf"] = {{"shape", "tetrahedron"}, {"vertices", {{1, 1, 1}, {-1, -1, 1}, {1, -1, -1}}}};
+    add("three leaf vertices", leaf, "\"vertices\" has 3 entries; 4 to 4 allowed");
+    leaf["leaf"] = {{"shape", "cone"}};
+    add("unknown leaf shape", leaf, "\"leaf\" \"shape\" 'cone' must be");
+    leaf["leaf"] = {{"shape", "ball"}, {"radius", 2}};
+    add("unknown leaf key", leaf, "radius");
+
     cases.push_back({"broken JSON", R"({"format": "fgr-ifs", "version": 1,,})",
                      "not valid JSON: parse error at line 1, column"});
     cases.push_back({"truncated JSON", doc.dump().substr(0, 40), "not valid JSON"});
