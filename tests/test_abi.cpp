@@ -97,7 +97,7 @@ TEST(AbiLayout, MarchSettings) {
 }
 
 TEST(AbiLayout, SceneDesc) {
-    PIN_SIZE(fgr_scene_desc, 168);
+    PIN_SIZE(fgr_scene_desc, 192);
     PIN_OFFSET(fgr_scene_desc, id, 8);
     PIN_OFFSET(fgr_scene_desc, name, 16);
     PIN_OFFSET(fgr_scene_desc, description, 24);
@@ -117,7 +117,21 @@ TEST(AbiLayout, SceneDesc) {
     PIN_OFFSET(fgr_scene_desc, source_length, 152);
     // ABI 1.2.
     PIN_OFFSET(fgr_scene_desc, default_mode, 160);
+    // ABI 1.3: the IFS maps and the depth slider's range (the struct's end padded to 8).
+    PIN_OFFSET(fgr_scene_desc, ifs_maps, 168);
+    PIN_OFFSET(fgr_scene_desc, ifs_map_count, 176);
+    PIN_OFFSET(fgr_scene_desc, ifs_default_depth, 180);
+    PIN_OFFSET(fgr_scene_desc, ifs_max_depth, 184);
     static_assert(alignof(fgr_scene_desc) == 8, "an appended field must not raise the alignment");
+}
+
+// ABI 1.3.
+TEST(AbiLayout, IfsMap) {
+    PIN_SIZE(fgr_ifs_map, 68);
+    PIN_OFFSET(fgr_ifs_map, header, 0);
+    PIN_OFFSET(fgr_ifs_map, matrix, 8);
+    PIN_OFFSET(fgr_ifs_map, colour, 56);
+    static_assert(alignof(fgr_ifs_map) == 4);
 }
 
 TEST(AbiVersion, PackingMacros) {
@@ -181,7 +195,11 @@ struct SceneBuilder {
                 FGR_EFFECT_ALL_V1,
                 {FGR_HEADER(fgr_march_settings), 256, 10.0f, 1.5f, 12, 0.9f},
                 0,
-                nullptr};
+                nullptr,
+                nullptr,
+                0,
+                0,
+                0};
         // clang-format on
     }
     SceneBuilder(const SceneBuilder&) = delete;

@@ -5,7 +5,8 @@
 // tests/fixtures/frozen_v1_1 does the same for 1.1 (tests/abi_v1_1), whose one addition is the
 // source's length, and tests/fixtures/frozen_v1_2 for 1.2 (tests/abi_v1_2): the render mode a scene
 // asks for and the angular radius of a directional light's disc. Plugins built against 1.0 and 1.1
-// get 1.2's defaults.
+// get 1.2's defaults. tests/fixtures/frozen_v1_3 (tests/abi_v1_3) is an IFS scene: maps instead of
+// a source; older plugins' descriptions end before the maps.
 
 #include <dlfcn.h>
 #include <gtest/gtest.h>
@@ -35,6 +36,8 @@
 #include "fixtures/frozen_v1/frozen_layout.h"
 #include "fixtures/frozen_v1_1/frozen_layout_v1_1.h"
 #include "fixtures/frozen_v1_2/frozen_layout_v1_2.h"
+#include "fixtures/frozen_v1_3/frozen_layout_v1_3.h"
+#include "fgr/ifs.hpp"
 
 namespace fgr {
 namespace {
@@ -50,6 +53,9 @@ const fs::path kFrozenV1_1Header = fs::path(FGR_TEST_SOURCE_DIR) / "abi_v1_1" / 
 const fs::path kFrozenV1_2Plugin =
     fs::path(FGR_TEST_FIXTURE_DIR) / "frozen_v1_2" / "frozen_v1_2.so";
 const fs::path kFrozenV1_2Header = fs::path(FGR_TEST_SOURCE_DIR) / "abi_v1_2" / "fgr" / "plugin.h";
+const fs::path kFrozenV1_3Plugin =
+    fs::path(FGR_TEST_FIXTURE_DIR) / "frozen_v1_3" / "frozen_v1_3.so";
+const fs::path kFrozenV1_3Header = fs::path(FGR_TEST_SOURCE_DIR) / "abi_v1_3" / "fgr" / "plugin.h";
 
 // FNV-1a (64 bit) of tests/abi_v1/fgr/plugin.h as committed. Never update it: see
 // FrozenHeaderNeverChanges.
@@ -58,6 +64,8 @@ constexpr uint64_t kFrozenHeaderHash = 0x725cb0f5e489cfb4u;
 constexpr uint64_t kFrozenV1_1HeaderHash = 0x5f1aab15c211936u;
 // The same of tests/abi_v1_2/fgr/plugin.h.
 constexpr uint64_t kFrozenV1_2HeaderHash = 0x2c4886571464b29au;
+// The same of tests/abi_v1_3/fgr/plugin.h.
+constexpr uint64_t kFrozenV1_3HeaderHash = 0x813ebe43a6b91a8au;
 
 // How many rows ABI 1.0 has in each list of frozen_layout.h: a row dropped from a list would
 // otherwise quietly stop being checked.
@@ -72,6 +80,10 @@ constexpr std::size_t kV1_1ConstantCount = kV1ConstantCount;
 constexpr std::size_t kV1_2StructCount = kV1_1StructCount;
 constexpr std::size_t kV1_2FieldCount = kV1_1FieldCount + 2;
 constexpr std::size_t kV1_2ConstantCount = kV1_1ConstantCount;
+// ABI 1.3 added a struct, fgr_ifs_map (three fields), and four fields of fgr_scene_desc.
+constexpr std::size_t kV1_3StructCount = kV1_2StructCount + 1;
+constexpr std::size_t kV1_3FieldCount = kV1_2FieldCount + 3 + 4;
+constexpr std::size_t kV1_3ConstantCount = kV1_2ConstantCount;
 
 Scene load_frozen_scene() {
     LoadResult loaded = load_scene_plugin(kFrozenPlugin);
@@ -270,6 +282,13 @@ const std::vector<fgr_frozen_field_row> kCurrentV1_2Fields = {
 const std::vector<fgr_frozen_constant_row> kCurrentV1_2Constants = {
     FGR_FROZEN_V1_2_CONSTANTS(CURRENT_CONSTANT_ROW)};
 
+const std::vector<fgr_frozen_struct_row> kCurrentV1_3Structs = {
+    FGR_FROZEN_V1_3_STRUCTS(CURRENT_STRUCT_ROW)};
+const std::vector<fgr_frozen_field_row> kCurrentV1_3Fields = {
+    FGR_FROZEN_V1_3_FIELDS(CURRENT_FIELD_ROW)};
+const std::vector<fgr_frozen_constant_row> kCurrentV1_3Constants = {
+    FGR_FROZEN_V1_3_CONSTANTS(CURRENT_CONSTANT_ROW)};
+
 // The frozen plugin's table against the current header's rows for the same lists: nothing moved,
 // shrank, changed alignment or value. Then its description's header is what FGR_HEADER gave it:
 // the frozen struct size and `version`.
@@ -346,6 +365,12 @@ TEST(AbiFreeze, CurrentHeaderKeepsTheV1_2Layout) {
                        kV1_2StructCount, kV1_2FieldCount, kV1_2ConstantCount);
 }
 
+TEST(AbiFreeze, CurrentHeaderKeepsTheV1_3Layout) {
+    expect_layout_kept(kFrozenV1_3Plugin, FGR_FROZEN_V1_3_LAYOUT_SYMBOL, 0x00010003u,
+                       kCurrentV1_3Structs, kCurrentV1_3Fields, kCurrentV1_3Constants,
+                       kV1_3StructCount, kV1_3FieldCount, kV1_3ConstantCount);
+}
+
 // The 1.1 plugin's source has no NUL: its source_length says where it ends, and the bytes after
 // it ("NOT-SRC!") are not part of it.
 TEST(AbiFreeze, FrozenV1_1PluginLoadsItsSourceByLengthAndRenders) {
@@ -389,6 +414,42 @@ TEST(AbiFreeze, FrozenV1_2PluginLoadsItsModeAndLightDiscs) {
     expect_vec3(scene.lights[2].vector, {0, 0, 3}, "light 2 position");
 }
 
+// The 1.3 plugin is an IFS scene: its three maps (two of them rotations, so rows and columns
+// cannot be swapped unseen), their colours and its depths arrive intact, and it renders.
+TEST(AbiFreeze, FrozenV1_3PluginLoadsItsMapsAndRenders) {
+    LoadResult loaded = load_scene_plugin(kFrozenV1_3Plugin);
+    ASSERT_TRUE(loaded.scene) << kFrozenV1_3Plugin << ": " << loaded.error;
+    const Scene& scene = *loaded.scene;
+    EXPECT_EQ(scene.id, "frozen-v1-3");
+    ASSERT_TRUE(scene.ifs);
+    EXPECT_EQ(scene.effects, uint64_t{FGR_EFFECT_SHADOWS | FGR_EFFECT_FOG});
+    EXPECT_EQ(scene.ifs->default_depth, 4);
+    EXPECT_EQ(scene.ifs->max_depth, 10);
+    ASSERT_EQ(scene.ifs->maps.size(), 3u);
+    // Each map applied to a point: w(x) = A x + t, with the rows the plugin wrote.
+    const glm::dvec3 x(1.0, 2.0, 3.0);
+    const glm::dvec3 expected[3] = {
+        {0.5, 1.0, 1.5}, {1.0 - 1.0, 0.5, 1.5}, {0.4, 1.0 - 1.2f, 0.5 + 0.8f}};
+    for (std::size_t i = 0; i < 3; ++i) {
+        const IfsMap& map = scene.ifs->maps[i];
+        const glm::dvec3 image = map.linear * x + map.offset;
+        for (glm::dvec3::length_type c = 0; c < 3; ++c) {
+            EXPECT_NEAR(image[c], expected[i][c], 1e-6) << "map " << i << " component " << c;
+        }
+    }
+    expect_vec3(scene.ifs->maps[1].colour, {0.2f, 0.8f, 0.3f}, "map 1 colour");
+
+    const ComputeDevice device = open_device(-1);
+    ProgramCache cache{fs::path()};
+    Renderer renderer(device, cache, scene, {preferred_packet_width(device.info), scene.effects});
+    FrameRequest request;
+    request.width = 32;
+    request.height = 24;
+    request.view = scene.cameras.front().view;
+    request.params = default_param_values(scene);
+    EXPECT_GT(renderer.render(request).hits, 0);
+}
+
 // Plugins built before 1.2 ask for no mode and have point-like lights. The 1.0 plugin's first light
 // is followed by the second's header, which a host reading past 1.0's 40 bytes would take for a
 // radius.
@@ -401,6 +462,17 @@ TEST(AbiFreeze, OlderPluginsGetTheV1_2Defaults) {
         for (const Light& light : loaded.scene->lights) {
             EXPECT_EQ(light.angular_radius, 0.0f) << plugin;
         }
+    }
+}
+
+// Plugins built before 1.3 have no maps: whatever follows their smaller descriptions is not read
+// as maps, and they stay distance-estimated scenes.
+TEST(AbiFreeze, OlderPluginsAreDistanceEstimated) {
+    for (const fs::path& plugin : {kFrozenPlugin, kFrozenV1_1Plugin, kFrozenV1_2Plugin}) {
+        LoadResult loaded = load_scene_plugin(plugin);
+        ASSERT_TRUE(loaded.scene) << plugin << ": " << loaded.error;
+        EXPECT_FALSE(loaded.scene->ifs) << plugin;
+        EXPECT_EQ(loaded.scene->find_param("ifs_depth"), nullptr) << plugin;
     }
 }
 
@@ -450,6 +522,15 @@ std::string hex(uint64_t value) {
     std::ostringstream out;
     out << "0x" << std::hex << value;
     return out.str();
+}
+
+TEST(AbiFreeze, FrozenV1_3HeaderNeverChanges) {
+    ASSERT_TRUE(fs::is_regular_file(kFrozenV1_3Header)) << kFrozenV1_3Header << " is missing";
+    const uint64_t hash = fnv1a64(test::read_file(kFrozenV1_3Header));
+    EXPECT_EQ(hash, kFrozenV1_3HeaderHash)
+        << kFrozenV1_3Header << " has changed (FNV-1a " << hex(hash) << ", frozen "
+        << hex(kFrozenV1_3HeaderHash) << "). It is the ABI 1.3 header exactly as released and "
+        << "must never change: restore it from git.";
 }
 
 TEST(AbiFreeze, FrozenV1_2HeaderNeverChanges) {

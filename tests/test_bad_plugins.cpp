@@ -122,6 +122,16 @@ const BrokenFixture kBrokenFixtures[] = {
     {"negative_radius.so", "light 0: angular_radius_degrees -1 outside [0, 45]"},
     {"wide_radius.so", "light 0: angular_radius_degrees 46 outside [0, 45]"},
     {"nan_radius.so", "light 0: angular_radius_degrees nan outside [0, 45]"},
+    // ABI 1.3: IFS maps, checked as an IFS file's are, and what an IFS scene cannot also have.
+    {"ifs_expanding.so", "IFS map 2 is not contractive (largest singular value 1.5 >= 1)"},
+    {"ifs_singular.so", "IFS map 1 is singular (smallest singular value 0, largest 0.5)"},
+    {"ifs_nan.so", "IFS map 3: matrix numbers must be finite and at most 1e+06 in size"},
+    {"ifs_too_many.so", "IFS map count 65 outside [1, 64]"},
+    {"ifs_too_deep.so", "ifs_max_depth 25 outside [0, 24]"},
+    {"ifs_with_source.so", "IFS maps and a source: a scene with ifs_map_count 4 is an IFS scene"},
+    {"ifs_with_params.so", "IFS scenes have no parameters of their own (param_count 1)"},
+    {"ifs_soft_shadows.so", "IFS scenes cannot have soft_shadows: exact IFS tracing has no "
+                            "distance estimate"},
 };
 
 void PrintTo(const BrokenFixture& fixture, std::ostream* out) { *out << fixture.file; }

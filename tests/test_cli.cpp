@@ -629,6 +629,22 @@ TEST_F(CliWithOwnCache, ListShowsIfsScenesFromThePluginPath) {
     EXPECT_NE(result.out.find("ifs_depth"), std::string::npos) << result.out;
 }
 
+// A compiled plugin that hands over IFS maps (ABI 1.3) is listed as an IFS plugin, with its maps
+// and bounding sphere, not as an IFS file.
+TEST_F(CliWithOwnCache, ListShowsAnIfsPluginsMaps) {
+    const fs::path plugins = fs::path(FGR_TEST_FIXTURE_DIR) / "ifs_plugin";
+    const RunResult result = run_with({"list"}, plugins);
+    ASSERT_EQ(result.exit_code, 0) << result;
+    EXPECT_NE(result.out.find("sierpinski-ifs-plugin  Sierpinski tetrahedron (IFS plugin)"),
+              std::string::npos)
+        << result.out;
+    EXPECT_NE(result.out.find("IFS plugin: " + (plugins / "sierpinski_ifs_plugin.so").string() +
+                              " (4 maps"),
+              std::string::npos)
+        << result.out;
+    EXPECT_EQ(result.err.find("skipping"), std::string::npos) << result.err;
+}
+
 class CliUncomputable : public CliWithOwnCache {
 protected:
     // A camera path file in the test's directory with these keyframes (JSON objects).

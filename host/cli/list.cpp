@@ -33,8 +33,10 @@ std::string default_text(const ParamInfo& param) {
 void print_scene(const Scene& scene) {
     fmt::print("{}  {} - {}\n", scene.id, scene.name, scene.description);
     if (scene.ifs) {
-        fmt::print("  IFS file: {} ({} maps; bounding sphere centre {:.4g} {:.4g} {:.4g}, radius "
+        // An IFS file, or a plugin that handed over maps (ABI 1.3).
+        fmt::print("  {}: {} ({} maps; bounding sphere centre {:.4g} {:.4g} {:.4g}, radius "
                    "{:.4g})\n",
+                   is_ifs_file_name(scene.plugin_file) ? "IFS file" : "IFS plugin",
                    scene.plugin_file.string(), scene.ifs->maps.size(), scene.ifs->bounds.centre.x,
                    scene.ifs->bounds.centre.y, scene.ifs->bounds.centre.z,
                    scene.ifs->bounds.radius);

@@ -5,7 +5,9 @@
 #include <cstddef>
 #include <cstring>
 #include <exception>
+#include <filesystem>
 #include <numbers>
+#include <optional>
 #include <set>
 #include <stdexcept>
 #include <string_view>
@@ -15,6 +17,8 @@
 #include <glm/vec3.hpp>
 #include <spdlog/fmt/fmt.h>
 
+#include "fgr/ifs.hpp"
+#include "fgr/kernel_assembly.hpp"
 #include "fgr/render_mode.hpp"
 #include "fgr/view_validation.hpp"
 
@@ -46,6 +50,11 @@ constexpr std::size_t kV1_2SceneDescSize =
     offsetof(fgr_scene_desc, default_mode) + sizeof(fgr_scene_desc::default_mode);
 constexpr std::size_t kV1_2LightSize =
     offsetof(fgr_light, angular_radius_degrees) + sizeof(fgr_light::angular_radius_degrees);
+// ABI 1.3 appended IFS maps to the scene description; fgr_ifs_map came with it.
+constexpr std::size_t kV1_3SceneDescSize =
+    offsetof(fgr_scene_desc, ifs_max_depth) + sizeof(fgr_scene_desc::ifs_max_depth);
+constexpr std::size_t kV1_3IfsMapSize =
+    offsetof(fgr_ifs_map, colour) + sizeof(fgr_ifs_map::colour);
 
 constexpr std::size_t kMaxIdLength = 63;
 constexpr std::size_t kMaxSourceBytes = 4u << 20;
@@ -504,6 +513,85 @@ RenderMode copy_default_mode(const fgr_scene_desc& desc) {
          render_mode_choices());
 }
 
+// --- IFS scenes (ABI 1.3) ------------------------------------------------------------------------
+
+// Whether the plugin hands over IFS maps: only when its struct has the fields.
+bool is_ifs_description(const fgr_scene_desc& desc) {
+    return desc.header.struct_size >= kV1_3SceneDescSize && desc.ifs_map_count != 0;
+}
+
+// A depth field: 0 is "not given".
+std::optional<int> copy_depth(uint32_t depth, std::string_view what) {
+    if (depth > static_cast<uint32_t>(kIfsMaxDepth)) {
+        fail("{} {} outside [0, {}]", what, depth, kIfsMaxDepth);
+    }
+    return depth == 0 ? std::nullopt : std::optional<int>(static_cast<int>(depth));
+}
+
+// w(x)_r = matrix[4r] x + matrix[4r+1] y + matrix[4r+2] z + matrix[4r+3]; glm is column-major.
+IfsMap copy_ifs_map(const fgr_ifs_map& given) {
+    IfsMap map;
+    for (int r = 0; r < 3; ++r) {
+        for (int c = 0; c < 3; ++c) map.linear[c][r] = given.matrix[4 * r + c];
+        map.offset[r] = given.matrix[4 * r + 3];
+    }
+    map.colour = to_vec3(given.colour);
+    return map;
+}
+
+// The maps and depths, checked as an IFS file's are (validate_ifs_maps), and the parts every
+// scene has. The scene's own source and parameters must be absent; march settings are checked but
+// not used (IFS scenes are traced, not marched); effects are those exact tracing supports.
+Scene copy_ifs_checked(const fgr_scene_desc& desc, Scene named) {
+    if (desc.source != nullptr && !copy_source(desc).empty()) {
+        fail("IFS maps and a source: a scene with ifs_map_count {} is an IFS scene, whose source "
+             "must be NULL or empty",
+             desc.ifs_map_count);
+    }
+    if (desc.param_count != 0) {
+        fail("IFS scenes have no parameters of their own (param_count {}): they get ifs_depth and "
+             "the built-in ones",
+             desc.param_count);
+    }
+    IfsScene ifs;
+    ifs.id = named.id;
+    ifs.name = named.name;
+    ifs.description = named.description;
+    check_count(desc.ifs_map_count, 1, static_cast<uint32_t>(kIfsMaxMaps), "IFS map");
+    const StructArray<fgr_ifs_map> maps(desc.ifs_maps, desc.ifs_map_count, kV1_3IfsMapSize,
+                                        "IFS map");
+    for (uint32_t i = 0; i < maps.size(); ++i) ifs.maps.push_back(copy_ifs_map(maps[i]));
+    const std::optional<int> default_depth =
+        copy_depth(desc.ifs_default_depth, "ifs_default_depth");
+    const std::optional<int> max_depth = copy_depth(desc.ifs_max_depth, "ifs_max_depth");
+    set_ifs_depths(ifs, default_depth, max_depth);
+    if (ifs.default_depth > ifs.max_depth) {
+        fail("ifs_default_depth {} is above ifs_max_depth {}", ifs.default_depth, ifs.max_depth);
+    }
+    try {
+        validate_ifs_maps(ifs, "IFS map");
+    } catch (const IfsError& error) {
+        fail("{}", error.what());
+    }
+    ifs.cameras = copy_cameras(desc);
+    ifs.camera_paths = copy_camera_paths(desc);
+    ifs.lights = copy_lights(desc);
+    const uint64_t effects = copy_effects(desc.effects);
+    if (const uint64_t unsupported = effects & ~kIfsEffects) {
+        fail("IFS scenes cannot have {}: exact IFS tracing has no distance estimate (they can "
+             "have {})",
+             effect_names(unsupported), effect_names(kIfsEffects));
+    }
+    (void)copy_march(desc.march);
+    const RenderMode mode = copy_default_mode(desc);
+    Scene scene = ifs_scene_to_scene(ifs, std::filesystem::path());
+    scene.effects = effects;
+    scene.default_mode = mode;
+    return scene;
+}
+
+// --- The whole description -----------------------------------------------------------------------
+
 Scene copy_checked(const fgr_scene_desc& desc) {
     check_scene_header(desc);
     Scene scene;
@@ -514,6 +602,7 @@ Scene copy_checked(const fgr_scene_desc& desc) {
     scene.name = bounded_string(desc.name, kMaxTextLength, "scene name");
     if (scene.name.empty()) fail("scene name is empty");
     scene.description = bounded_string(desc.description, kMaxTextLength, "scene description");
+    if (is_ifs_description(desc)) return copy_ifs_checked(desc, std::move(scene));
     scene.source = copy_source(desc);
     if (scene.source.empty()) fail("source is empty");
     scene.source_name =

@@ -7,6 +7,7 @@
 #include <fstream>
 #include <limits>
 #include <numbers>
+#include <optional>
 #include <set>
 #include <stdexcept>
 #include <string_view>
@@ -187,6 +188,32 @@ IfsMap map_from(const json& entry, std::size_t index) {
         compose_map(entry, where, map);
     }
     if (entry.contains("colour")) map.colour = albedo_from(entry, where);
+    return map;  // checked with the others by validate_ifs_maps
+}
+
+// Numbers a map may hold: finite and at most kMaxMapNumber in size.
+bool map_numbers_ok(const IfsMap& map) {
+    const auto ok = [](double value) { return std::abs(value) <= kMaxMapNumber; };  // false for NaN
+    for (int c = 0; c < 3; ++c) {
+        for (int r = 0; r < 3; ++r) {
+            if (!ok(map.linear[c][r])) return false;
+        }
+        if (!ok(map.offset[c])) return false;
+    }
+    return true;
+}
+
+// One map, wherever it came from: its numbers and colour, contractive and invertible. Sets its
+// contraction factor.
+void check_map(IfsMap& map, const std::string& where) {
+    if (!map_numbers_ok(map)) {
+        fail("{}: matrix numbers must be finite and at most {:g} in size", where, kMaxMapNumber);
+    }
+    for (int i = 0; i < 3; ++i) {
+        if (!(map.colour[i] >= 0.0f && map.colour[i] <= 1.0f)) {
+            fail("{}: colour components must be in [0, 1]", where);
+        }
+    }
     const glm::dvec3 sigma = singular_values(map.linear);
     if (!(sigma[0] < 1.0)) {
         fail("{} is not contractive (largest singular value {:.6g} >= 1)", where, sigma[0]);
@@ -197,14 +224,36 @@ IfsMap map_from(const json& entry, std::size_t index) {
              where, sigma[2], sigma[0]);
     }
     map.contraction = sigma[0];
-    return map;
+}
+
+void check_maps(IfsScene& scene, std::string_view map_word) {
+    const std::size_t count = scene.maps.size();
+    if (count < 1 || count > static_cast<std::size_t>(kIfsMaxMaps)) {
+        fail("{} {}s; 1 to {} allowed", count, map_word, kIfsMaxMaps);
+    }
+    for (std::size_t i = 0; i < count; ++i) {
+        check_map(scene.maps[i], fmt::format("{} {}", map_word, i));
+    }
+    for (const int depth : {scene.default_depth, scene.max_depth}) {
+        if (depth < 0 || depth > kIfsMaxDepth) fail("depth {} outside [0, {}]", depth, kIfsMaxDepth);
+    }
+    if (scene.default_depth > scene.max_depth) {
+        fail("default depth {} is above the maximum {}", scene.default_depth, scene.max_depth);
+    }
+    scene.bounds = ifs_bounding_sphere(scene.maps);
+    const double extent = glm::length(scene.bounds.centre) + scene.bounds.radius;
+    if (!(extent <= kMaxExtent)) {
+        fail("the attractor's bounding sphere (centre {:.4g} {:.4g} {:.4g}, radius {:.4g}) reaches "
+             "beyond {:g} from the origin",
+             scene.bounds.centre.x, scene.bounds.centre.y, scene.bounds.centre.z,
+             scene.bounds.radius, kMaxExtent);
+    }
 }
 
 // --- Depth ---------------------------------------------------------------------------------------
 
 void depth_from(const json& document, IfsScene& scene) {
-    scene.default_depth = kDefaultDepth;
-    scene.max_depth = kDefaultMaxDepth;
+    set_ifs_depths(scene, std::nullopt, std::nullopt);
     if (!document.contains("depth")) return;
     const json& depth = document.at("depth");
     require_object(depth, "\"depth\"");
@@ -217,12 +266,10 @@ void depth_from(const json& document, IfsScene& scene) {
         }
         return static_cast<int>(value);
     };
-    const bool has_default = depth.contains("default");
-    const bool has_max = depth.contains("max");
-    if (has_default) scene.default_depth = read("default");
-    if (has_max) scene.max_depth = read("max");
-    if (has_default && !has_max) scene.max_depth = std::max(kDefaultMaxDepth, scene.default_depth);
-    if (has_max && !has_default) scene.default_depth = std::min(kDefaultDepth, scene.max_depth);
+    std::optional<int> default_depth, max_depth;
+    if (depth.contains("default")) default_depth = read("default");
+    if (depth.contains("max")) max_depth = read("max");
+    set_ifs_depths(scene, default_depth, max_depth);
     if (scene.default_depth > scene.max_depth) {
         fail("\"depth\" \"default\" {} is above \"max\" {}", scene.default_depth, scene.max_depth);
     }
@@ -521,14 +568,7 @@ IfsScene parse_checked(const std::string& text) {
     const json& maps = array_from(document, "maps", 1, static_cast<std::size_t>(kIfsMaxMaps),
                                   "\"maps\"");
     for (std::size_t i = 0; i < maps.size(); ++i) scene.maps.push_back(map_from(maps[i], i));
-    scene.bounds = ifs_bounding_sphere(scene.maps);
-    const double extent = glm::length(scene.bounds.centre) + scene.bounds.radius;
-    if (!(extent <= kMaxExtent)) {
-        fail("the attractor's bounding sphere (centre {:.4g} {:.4g} {:.4g}, radius {:.4g}) reaches "
-             "beyond {:g} from the origin",
-             scene.bounds.centre.x, scene.bounds.centre.y, scene.bounds.centre.z,
-             scene.bounds.radius, kMaxExtent);
-    }
+    check_maps(scene, "map");
     scene.leaf = leaf_from(document, scene.bounds);
     scene.cameras = cameras_from(document);
     if (scene.cameras.empty()) scene.cameras.push_back(default_camera(scene.bounds));
@@ -609,6 +649,22 @@ glm::dvec3 minimise_radius(const std::vector<Contraction>& maps, glm::dvec3 star
 }
 
 }  // namespace
+
+void set_ifs_depths(IfsScene& scene, std::optional<int> default_depth,
+                    std::optional<int> max_depth) {
+    scene.default_depth = default_depth.value_or(kDefaultDepth);
+    scene.max_depth = max_depth.value_or(kDefaultMaxDepth);
+    if (default_depth && !max_depth) scene.max_depth = std::max(kDefaultMaxDepth, *default_depth);
+    if (max_depth && !default_depth) scene.default_depth = std::min(kDefaultDepth, *max_depth);
+}
+
+void validate_ifs_maps(IfsScene& scene, std::string_view map_word) {
+    try {
+        check_maps(scene, map_word);
+    } catch (const std::runtime_error& error) {
+        throw IfsError(error.what());
+    }
+}
 
 bool is_ifs_file_name(const std::filesystem::path& file) {
     const std::string name = file.filename().string();

@@ -1,5 +1,5 @@
 /*
- * fgr scene plugin ABI, version 1.
+ * fgr scene plugin ABI, version 1 (minor 3: see FGR_ABI_VERSION_MINOR and plugin_api/ABI.md).
  *
  * A scene plugin is a shared library that exports exactly one symbol, FGR_SCENE_ENTRY_SYMBOL
  * ("fgr_scene_entry"), a function returning a pointer to a constant fgr_scene_desc. Everything the
@@ -16,6 +16,10 @@
  *
  * Arrays of structs (params, cameras, ...) are read with the first element's struct_size as the
  * stride; every element of one array carries the same header.
+ *
+ * A scene is either distance-estimated (its OpenCL `source` defines scene_de) or, from ABI 1.3, an
+ * iterated function system: a list of contractive affine maps (fgr_ifs_map) that the host ray
+ * traces exactly, as it does IFS scene files (*.ifs.json). See fgr_scene_desc::ifs_maps.
  *
  * Ownership: every pointer in these structs is owned by the plugin and must stay valid and unchanged
  * from the moment fgr_scene_entry returns until the host unloads the library. The host copies
@@ -35,7 +39,7 @@ extern "C" {
 #endif
 
 #define FGR_ABI_VERSION_MAJOR 1u
-#define FGR_ABI_VERSION_MINOR 2u
+#define FGR_ABI_VERSION_MINOR 3u
 /* Packed as (major << 16) | minor. */
 #define FGR_ABI_VERSION ((FGR_ABI_VERSION_MAJOR << 16) | FGR_ABI_VERSION_MINOR)
 #define FGR_ABI_MAJOR(version) ((uint32_t)(version) >> 16)
@@ -173,9 +177,23 @@ typedef struct fgr_march_settings {
 } fgr_march_settings;
 
 /* ---------------------------------------------------------------------------------------------
+ * IFS maps (ABI 1.3). One contractive affine map w(x) = A x + t of an iterated function system; the
+ * scene's surface is the attractor, the set the maps reproduce. The host checks each map as it
+ * checks an IFS file's (sdk/README.md, "IFS scenes"): every number finite, at most 1e6 in size;
+ * A contractive (largest singular value < 1) and invertible (smallest singular value above 1e-9
+ * times the largest).
+ */
+typedef struct fgr_ifs_map {
+    fgr_struct_header header;
+    float matrix[12]; /* three rows [a b c t]: row r of A, then component r of t; so
+                         w(x)_r = matrix[4r] x + matrix[4r+1] y + matrix[4r+2] z + matrix[4r+3] */
+    float colour[3];  /* linear RGB albedo of the points this map makes, components in [0, 1] */
+} fgr_ifs_map;
+
+/* ---------------------------------------------------------------------------------------------
  * The scene. Fields after `march` were appended in later minor versions (see each one's comment):
- * the source's length (1.1) and the render mode the scene asks for by default (`default_mode`,
- * 1.2). fgr_march_settings can therefore no longer grow: new march settings go into the scene
+ * the source's length (1.1), the render mode the scene asks for by default (`default_mode`, 1.2)
+ * and IFS maps instead of a distance estimator (`ifs_maps`, 1.3). fgr_march_settings can therefore no longer grow: new march settings go into the scene
  * itself.
  *
  * OpenCL source contract (see sdk/README.md): the source defines
@@ -219,6 +237,24 @@ typedef struct fgr_scene_desc {
      * or "path" (fgr's `--mode`; a host refuses a name it does not know, with the choices). NULL
      * or "", and every plugin built against 1.0 or 1.1, mean "shaded". */
     const char* default_mode;
+
+    /* ABI 1.3. An IFS scene: when ifs_map_count is not 0 the scene is the attractor of these
+     * maps, ray traced exactly like an IFS scene file, and has no distance estimator. Then
+     * `source` must be NULL or "" (source_name and march are ignored, though march must still be
+     * valid), `params` must be empty (the scene gets the depth slider `ifs_depth` and the
+     * built-in parameters), `effects` may hold only FGR_EFFECT_SHADOWS, FGR_EFFECT_REFLECTIONS,
+     * FGR_EFFECT_FOG and FGR_EFFECT_DEPTH_OF_FIELD (exact tracing has no distance estimate), and
+     * cameras, camera paths, lights and default_mode are as for any scene. ifs_map_count 0, and
+     * every plugin built against 1.0 to 1.2, mean a distance-estimated scene; the other three
+     * fields are then ignored. */
+    const fgr_ifs_map* ifs_maps; /* ifs_maps[0 .. ifs_map_count), at most 64 */
+    uint32_t ifs_map_count;
+    /* The depth slider's default and maximum: levels of maps applied at most before a node's
+     * bounding ellipsoid counts as the surface. Each in [0, 24], default <= max; 0 means "not
+     * given", as in an IFS file that leaves it out: neither gives 6 and 12, a default d alone
+     * gives max(12, d) as the maximum, a maximum m alone gives min(6, m) as the default. */
+    uint32_t ifs_default_depth;
+    uint32_t ifs_max_depth;
 } fgr_scene_desc;
 
 /* The entry point. Must return the same pointer every call, or NULL on failure. */

@@ -113,7 +113,7 @@ constexpr uint64_t fgr_source_length(const char (&)[N]) { return N; }
     {                                                                                             \
         FGR_HEADER(fgr_scene_desc), id, name, description, source, source_name, params,           \
             FGR_COUNT(params), cameras, FGR_COUNT(cameras), paths, FGR_COUNT(paths), lights,      \
-            FGR_COUNT(lights), effects, march, FGR_SOURCE_LENGTH(source), NULL                    \
+            FGR_COUNT(lights), effects, march, FGR_SOURCE_LENGTH(source), NULL, NULL, 0, 0, 0     \
     }
 
 /* The same, asking for a render mode by default: "shaded" or "path" (ABI 1.2). (Not written with
@@ -124,7 +124,27 @@ constexpr uint64_t fgr_source_length(const char (&)[N]) { return N; }
     {                                                                                             \
         FGR_HEADER(fgr_scene_desc), id, name, description, source, source_name, params,           \
             FGR_COUNT(params), cameras, FGR_COUNT(cameras), paths, FGR_COUNT(paths), lights,      \
-            FGR_COUNT(lights), effects, march, FGR_SOURCE_LENGTH(source), default_mode            \
+            FGR_COUNT(lights), effects, march, FGR_SOURCE_LENGTH(source), default_mode, NULL, 0,  \
+            0, 0                                                                                  \
+    }
+
+/* An IFS map x -> scale x + (tx, ty, tz): a uniform scaling towards a point (ABI 1.3). */
+#define FGR_IFS_SCALE_MAP(scale, tx, ty, tz, r, g, b)                                       \
+    {                                                                                        \
+        FGR_HEADER(fgr_ifs_map), {scale, 0.0f, 0.0f, tx, 0.0f, scale, 0.0f, ty, 0.0f, 0.0f, \
+                                  scale, tz},                                                \
+            {r, g, b}                                                                        \
+    }
+
+/* A whole IFS scene description (ABI 1.3): no source and no parameters of its own, the maps of a
+ * static array, the depth slider's default and maximum (0: fgr's defaults, 6 and 12). */
+#define FGR_IFS_SCENE(id, name, description, maps, default_depth, max_depth, cameras, paths,     \
+                      lights, effects)                                                           \
+    {                                                                                            \
+        FGR_HEADER(fgr_scene_desc), id, name, description, NULL, NULL, NULL, 0, cameras,         \
+            FGR_COUNT(cameras), paths, FGR_COUNT(paths), lights, FGR_COUNT(lights), effects,     \
+            FGR_MARCH(1u, 100.0f, 1.0f, 1u, 1.0f), 0, NULL, maps, FGR_COUNT(maps),               \
+            default_depth, max_depth                                                             \
     }
 
 #endif /* FGR_SCENE_HELPERS_H */
