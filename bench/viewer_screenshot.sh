@@ -2,7 +2,7 @@
 # Screenshot of the viewer window (panel included) for the README: runs `fgr view` in a virtual X
 # server, waits until it has refined the still view, and grabs the screen with ImageMagick.
 #
-#   bench/viewer_screenshot.sh [OUT.png]      (default: bench/results/viewer.png)
+#   [FGR_SCENE=ID] bench/viewer_screenshot.sh [OUT.png]   (default: mandelbulb, bench/results/viewer.png)
 #
 # Needs a built tree (BUILD_DIR, default build) and xvfb, xauth and imagemagick.
 set -euo pipefail
@@ -19,7 +19,7 @@ printf '0 wait_idle\n10 quit\n' > "$work/replay.txt"
 cat > "$work/session.sh" <<SESSION
 #!/usr/bin/env bash
 set -e
-"$build_dir/bin/fgr" -v view mandelbulb --width 1280 --height 720 --samples 4 \
+"$build_dir/bin/fgr" -v view ${FGR_SCENE:-mandelbulb} --width 1280 --height 720 --samples 4 \
     --replay "$work/replay.txt" --exit-after 600 2> "$work/log" &
 until grep -q "view refined" "$work/log"; do
     kill -0 \$! 2>/dev/null || { cat "$work/log" >&2; exit 1; }

@@ -1,5 +1,8 @@
 #include "fgr/precision.hpp"
 
+#include "fgr/ifs.hpp"
+#include "fgr/parameters.hpp"
+
 #include <algorithm>
 #include <cmath>
 #include <span>
@@ -57,6 +60,11 @@ bool auto_wants_double(const CameraView& view, int width, float surface_distance
 
 float surface_distance(Renderer& in_float, const CameraView& view,
                        const std::vector<float>& params) {
+    if (const auto& ifs = in_float.scene().ifs) {
+        // No DE in the kernel: a bound from the node tree, to the depth the slider allows.
+        const int depth = static_cast<int>(param_value(in_float.scene(), params, "ifs_depth"));
+        return static_cast<float>(ifs_distance_bound(*ifs, view.position, depth));
+    }
     const std::vector<float> de = in_float.probe_de(std::span(&view.position, 1), params);
     return std::isfinite(de.at(0)) ? std::abs(de[0]) : -1.0f;
 }

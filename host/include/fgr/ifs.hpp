@@ -148,6 +148,13 @@ struct IfsTraceRules {
 IfsRayHit trace_ifs_ray(const IfsScene& ifs, const glm::dvec3& origin, const glm::dvec3& dir,
                         const IfsTraceRules& rules);
 
+// A lower bound of the distance from p to the attractor, at least two thirds of the true distance
+// (or of the distance to the `max_depth` level's balls): the smallest distance to a node's
+// bounding ball, found best first over the node tree, stopping at a node whose radius is at most
+// a quarter of its distance. Zero inside a node at the depth limit. What the viewer's fly speed and the auto
+// precision rule read as "the DE at the camera" for IFS scenes, whose kernel has no DE.
+double ifs_distance_bound(const IfsScene& ifs, const glm::dvec3& p, int max_depth);
+
 // The fgr scene an IFS file describes: its cameras, paths and lights, the built-in parameters
 // plus the depth slider `ifs_depth`, and generated OpenCL C source holding the maps.
 Scene ifs_scene_to_scene(const IfsScene& ifs, const std::filesystem::path& file);

@@ -131,6 +131,7 @@ public:
                                          const std::vector<float>& params, float eps);
 
     const BuildReport& build_report() const { return build_report_; }
+    const Scene& scene() const { return scene_; }
     const KernelSwitches& switches() const { return switches_; }
 
 private:

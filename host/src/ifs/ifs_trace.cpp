@@ -151,6 +151,44 @@ glm::dvec3 surface_normal(const Node& leaf, const IfsScene& ifs, const IfsTraceR
 
 }  // namespace
 
+double ifs_distance_bound(const IfsScene& ifs, const glm::dvec3& p, int max_depth) {
+    // A node in world space: its ball's centre and radius (R times its maps' contractions).
+    struct Ball {
+        glm::dmat3 linear{1.0};
+        glm::dvec3 offset{0.0};
+        double radius = 0.0;
+        int depth = 0;
+        double bound = 0.0;  // max(|p - centre| - radius, 0)
+    };
+    const auto later = [](const Ball& a, const Ball& b) { return a.bound > b.bound; };
+    std::priority_queue<Ball, std::vector<Ball>, decltype(later)> heap(later);
+    const auto bound_of = [&](Ball& ball) {
+        const glm::dvec3 centre = ball.linear * ifs.bounds.centre + ball.offset;
+        ball.bound = std::max(glm::length(p - centre) - ball.radius, 0.0);
+    };
+    Ball root;
+    root.radius = ifs.bounds.radius;
+    bound_of(root);
+    heap.push(root);
+    // Enough for any view; the bound stays valid (the smallest waiting) when it runs out.
+    constexpr int kMaxNodes = 20000;
+    for (int popped = 0; popped < kMaxNodes && !heap.empty(); ++popped) {
+        const Ball ball = heap.top();
+        if (ball.depth >= max_depth || ball.radius <= 0.25 * ball.bound) return ball.bound;
+        heap.pop();
+        for (const IfsMap& map : ifs.maps) {
+            Ball child;
+            child.linear = ball.linear * map.linear;
+            child.offset = ball.linear * map.offset + ball.offset;
+            child.radius = ball.radius * map.contraction;
+            child.depth = ball.depth + 1;
+            bound_of(child);
+            heap.push(child);
+        }
+    }
+    return heap.empty() ? 0.0 : heap.top().bound;
+}
+
 IfsRayHit trace_ifs_ray(const IfsScene& ifs, const glm::dvec3& origin, const glm::dvec3& dir,
                         const IfsTraceRules& rules) {
     std::vector<glm::dmat3> inverses;
