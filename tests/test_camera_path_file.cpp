@@ -107,6 +107,9 @@ TEST(CameraPathFile, MalformedFilesAreRefusedWithTheReason) {
         {"{not json", "not valid JSON"},
         {"[1, 2]", "must be a JSON object"},
         {R"({"format": "other", "version": 1})", "\"format\""},
+        // Not a string: was a JSON type_error that escaped as an exception of another kind.
+        {R"({"format": 3, "version": 1})", "\"format\""},
+        {R"({"version": 1})", "\"format\""},
         {R"({"format": "fgr-camera-path", "version": 2, "keyframes": []})", "version"},
         {keyframes_json("{}"), "\"keyframes\" must be an array"},
         {keyframes_json(std::string("[") + kKeyframe0 + "]"), "at least two keyframes"},

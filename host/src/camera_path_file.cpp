@@ -55,7 +55,10 @@ CameraPathFile parse_camera_path_json(const std::string& text) {
     const json document = json::parse(text, nullptr, /*allow_exceptions=*/false);
     if (document.is_discarded()) fail("not valid JSON");
     if (!document.is_object()) fail("must be a JSON object");
-    if (document.value("format", "") != kFormat) fail("\"format\" must be \"fgr-camera-path\"");
+    // Compared as JSON: value("format", "") throws a type_error when "format" is not a string.
+    if (!document.contains("format") || document.at("format") != kFormat) {
+        fail("\"format\" must be \"fgr-camera-path\"");
+    }
     json_fields::check_version(document, kVersion);
     CameraPathFile file;
     if (document.contains("scene") && document.at("scene").is_string()) {
