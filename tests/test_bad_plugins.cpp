@@ -34,6 +34,8 @@
 #include "fgr/camera.hpp"
 #include "fgr/description_validation.hpp"
 #include "fgr/discovery.hpp"
+#include "fgr/ifs.hpp"
+#include "fgr/kernel_assembly.hpp"
 #include "fgr/opencl_device.hpp"
 #include "fgr/parameters.hpp"
 #include "fgr/plugin.h"
@@ -502,6 +504,7 @@ struct DescSpec {
     bool paths_null = false;
     uint32_t paths_null_count = 0;
     ArraySpec<fgr_light> lights;
+    ArraySpec<fgr_ifs_map> ifs_maps;  // ABI 1.3: empty for a DE scene
 };
 
 // A direction that is never zero or parallel to +z, so +z works as up.
@@ -820,9 +823,49 @@ const std::string& source_of_size(std::size_t size) {
     return it->second;
 }
 
+// ABI 1.3: a map that is mostly a fine contraction (a scaled rotation-like matrix and an offset),
+// now and then one that grows, flattens or holds a NaN.
+fgr_ifs_map random_ifs_map(Rng& rng) {
+    fgr_ifs_map map{};
+    map.header = FGR_HEADER(fgr_ifs_map);
+    const float scale = rng.chance(0.9) ? rng.uniform(0.2f, 0.6f) : rng.uniform(0.0f, 1.5f);
+    for (int row = 0; row < 3; ++row) {
+        for (int column = 0; column < 3; ++column) {
+            map.matrix[4 * row + column] =
+                (row == column ? scale : 0.0f) + rng.uniform(-0.1f, 0.1f) * scale;
+        }
+        map.matrix[4 * row + 3] = rng.uniform(-1.0f, 1.0f);
+        map.colour[row] = rng.chance(0.95) ? rng.uniform(0.0f, 1.0f) : rng.uniform(-1.0f, 2.0f);
+    }
+    if (rng.chance(0.05)) map.matrix[rng.below(12)] = std::numeric_limits<float>::quiet_NaN();
+    return map;
+}
+
+// ABI 1.3: the scene becomes an IFS (maps, depths, and usually no source and no parameters, as
+// such a scene must have), or its maps change.
+void mutate_ifs(Rng& rng, Arena& arena, DescSpec& spec) {
+    fgr_scene_desc& desc = spec.desc;
+    if (spec.ifs_maps.elements.empty() || rng.chance(0.3)) {
+        spec.ifs_maps.elements.clear();
+        for (int i = 0, n = rng.range(1, 6); i < n; ++i) {
+            spec.ifs_maps.elements.push_back(random_ifs_map(rng));
+        }
+        if (rng.chance(0.85)) desc.source = rng.chance(0.5) ? nullptr : "";
+        if (rng.chance(0.85)) spec.params.elements.clear();
+        if (rng.chance(0.85)) desc.effects &= FGR_EFFECT_SHADOWS | FGR_EFFECT_FOG;
+        desc.ifs_default_depth = rng.chance(0.8) ? rng.below(8) : rng.below(40);
+        desc.ifs_max_depth = rng.chance(0.8) ? desc.ifs_default_depth + rng.below(8) : rng.below(40);
+    } else if (rng.chance(0.5)) {
+        spec.ifs_maps.elements[rng.below(spec.ifs_maps.elements.size())] = random_ifs_map(rng);
+    } else {
+        mutate_array_shape(rng, spec.ifs_maps, 100);
+    }
+    (void)arena;
+}
+
 void mutate(Rng& rng, Arena& arena, DescSpec& spec) {
     fgr_scene_desc& desc = spec.desc;
-    switch (rng.below(21)) {
+    switch (rng.below(22)) {
         case 0:
             desc.id = any_string(rng, arena);
             break;
@@ -943,6 +986,9 @@ void mutate(Rng& rng, Arena& arena, DescSpec& spec) {
         case 18:
             mutate_march(rng, desc.march);
             break;
+        case 20:
+            mutate_ifs(rng, arena, spec);
+            break;
         case 19: {  // ABI 1.2: a mode, almost a mode, or any text
             const char* const modes[] = {"shaded", "path", "pathz", "Path", "shaded ", "brute"};
             desc.default_mode = rng.chance(0.5) ? rng.pick(modes) : any_string(rng, arena);
@@ -1006,6 +1052,7 @@ const fgr_scene_desc* layout(Rng& rng, Arena& arena, DescSpec& spec) {
         paths.elements.push_back(copy);
     }
     desc.camera_paths = layout(rng, arena, paths, &desc.camera_path_count);
+    desc.ifs_maps = layout(rng, arena, spec.ifs_maps, &desc.ifs_map_count);
     unsigned char* bytes = arena.bytes(spec.desc_capacity);
     std::memcpy(bytes, &desc, sizeof(desc));
     return reinterpret_cast<const fgr_scene_desc*>(bytes);
@@ -1073,12 +1120,43 @@ void check_param(const ParamInfo& param) {
     }
 }
 
+// An accepted IFS plugin (ABI 1.3): its maps, all contractive and invertible, a depth slider
+// within the limits, no parameters of its own, only the effects exact tracing has.
+void check_accepted_ifs(const Scene& scene, const fgr_scene_desc& desc) {
+    ASSERT_GE(desc.header.struct_size, offsetof(fgr_scene_desc, ifs_max_depth) + sizeof(uint32_t));
+    const IfsScene& ifs = *scene.ifs;
+    EXPECT_EQ(ifs.maps.size(), desc.ifs_map_count);
+    EXPECT_LE(ifs.maps.size(), std::size_t(kIfsMaxMaps));
+    for (const IfsMap& map : ifs.maps) {
+        const glm::dvec3 sigma = singular_values(map.linear);
+        EXPECT_LT(sigma[0], 1.0);
+        EXPECT_GT(sigma[2], 0.0);
+        for (int i = 0; i < 3; ++i) {
+            EXPECT_TRUE(std::isfinite(map.offset[i]));
+            EXPECT_GE(map.colour[i], 0.0f);
+            EXPECT_LE(map.colour[i], 1.0f);
+        }
+    }
+    EXPECT_LE(0, ifs.default_depth);
+    EXPECT_LE(ifs.default_depth, ifs.max_depth);
+    EXPECT_LE(ifs.max_depth, kIfsMaxDepth);
+    EXPECT_TRUE(std::isfinite(ifs.bounds.radius) && ifs.bounds.radius > 0.0);
+    ASSERT_EQ(scene.params.size(), 1 + builtin_param_count());
+    EXPECT_EQ(scene.params[0].id, "ifs_depth");
+    EXPECT_EQ(desc.param_count, 0u);
+    EXPECT_EQ(scene.effects & ~kIfsEffects, 0u);
+}
+
 void check_accepted(const Scene& scene, const fgr_scene_desc& desc) {
     // Identity and texts, copied faithfully.
     EXPECT_TRUE(std::regex_match(scene.id, kSceneIdPattern)) << scene.id;
     EXPECT_EQ(scene.id, desc.id);
     EXPECT_FALSE(scene.name.empty());
     EXPECT_EQ(scene.name, desc.name);
+    if (scene.ifs) {
+        check_accepted_ifs(scene, desc);
+        return;
+    }
     EXPECT_FALSE(scene.source.empty());
     EXPECT_LE(scene.source.size(), std::size_t{4} << 20);
     // ABI 1.1: at most source_length bytes when the struct has it, up to a NUL.

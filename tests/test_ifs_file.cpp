@@ -254,9 +254,11 @@ TEST(IfsFile, ComposedScaleRotateTranslateEqualsTheMatrix) {
         {{{"scale", {scale.x, scale.y, scale.z}},
           {"rotate", {{"axis", {axis.x, axis.y, axis.z}}, {"degrees", degrees}}},
           {"translate", {translate.x, translate.y, translate.z}}},
-         {{"matrix", matrix}}}));
+         {{"matrix", matrix}},
+         // Another fixed point: two equal maps alone would make a single point.
+         {{"scale", 0.5}, {"translate", {1, 0, 0}}}}));
     const IfsScene ifs = parse_ifs_json(composed.dump(), "composed.ifs.json");
-    ASSERT_EQ(ifs.maps.size(), 2u);
+    ASSERT_EQ(ifs.maps.size(), 3u);
     for (int c = 0; c < 3; ++c) {
         for (int r = 0; r < 3; ++r) {
             EXPECT_NEAR(ifs.maps[0].linear[c][r], expected[c][r], 1e-12) << c << "," << r;
@@ -434,6 +436,11 @@ std::vector<BadCase> bad_cases() {
     add("unknown light type", light, "light 0 \"type\" \"spot\" must be \"directional\" or \"point\"");
     light["lights"] = {{{"type", "point"}, {"position", {0, 0, 2}}, {"intensity", -1}}};
     add("negative intensity", light, "light 0: negative intensity -1");
+
+    add("a single map", minimal(json::array({{{"scale", 0.5}, {"translate", {1, 0, 0}}}})),
+        "the attractor is a single point (2 0 0)");
+    add("maps with one fixed point", minimal(json::array({{{"scale", 0.5}}, {{"scale", 0.3}}})),
+        "the attractor is a single point");
 
     // Leaf shapes: inside the bounding sphere (radius sqrt(3) about the origin here), solid.
     json leaf = doc;

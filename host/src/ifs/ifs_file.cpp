@@ -242,6 +242,13 @@ void check_maps(IfsScene& scene, std::string_view map_word) {
     }
     scene.bounds = ifs_bounding_sphere(scene.maps);
     const double extent = glm::length(scene.bounds.centre) + scene.bounds.radius;
+    // One map, or maps that all fix the same point: the attractor is that point, nothing to draw
+    // (and a ball of radius 0 to trace).
+    if (!(scene.bounds.radius > 1e-9 * std::max(1.0, glm::length(scene.bounds.centre)))) {
+        fail("the attractor is a single point ({:.4g} {:.4g} {:.4g}): the {}s must not all fix "
+             "the same point",
+             scene.bounds.centre.x, scene.bounds.centre.y, scene.bounds.centre.z, map_word);
+    }
     if (!(extent <= kMaxExtent)) {
         fail("the attractor's bounding sphere (centre {:.4g} {:.4g} {:.4g}, radius {:.4g}) reaches "
              "beyond {:g} from the origin",
