@@ -78,20 +78,29 @@ inline ifs_real3 ifs_table_row(__constant const ifs_real* m, int row) {
     return (ifs_real3)(m[3 * row], m[3 * row + 1], m[3 * row + 2]);
 }
 
-/* The frame of child `map` of a node with frame f: w_map^-1 after f. */
-inline ifs_frame ifs_child_frame(ifs_frame f, int map) {
-    __constant const ifs_real* inv = fgr_ifs_inverse[map];
-    const ifs_real3 r0 = ifs_table_row(inv, 0), r1 = ifs_table_row(inv, 1), r2 = ifs_table_row(inv, 2);
+/* The frame f followed by the affine map m (a table entry: the rows of A, then b): x -> A (L x +
+ * l) + b. A child's frame is its map's inverse after its parent's; a parent's, its last map after
+ * the child's. */
+inline ifs_frame ifs_then(ifs_frame f, __constant const ifs_real* m) {
+    const ifs_real3 r0 = ifs_table_row(m, 0), r1 = ifs_table_row(m, 1), r2 = ifs_table_row(m, 2);
     const ifs_real3 c0 = (ifs_real3)(f.row0.x, f.row1.x, f.row2.x);
     const ifs_real3 c1 = (ifs_real3)(f.row0.y, f.row1.y, f.row2.y);
     const ifs_real3 c2 = (ifs_real3)(f.row0.z, f.row1.z, f.row2.z);
-    ifs_frame child;
-    child.row0 = (ifs_real3)(dot(r0, c0), dot(r0, c1), dot(r0, c2));
-    child.row1 = (ifs_real3)(dot(r1, c0), dot(r1, c1), dot(r1, c2));
-    child.row2 = (ifs_real3)(dot(r2, c0), dot(r2, c1), dot(r2, c2));
-    child.offset = (ifs_real3)(dot(r0, f.offset), dot(r1, f.offset), dot(r2, f.offset)) +
-                   ifs_table_row(inv, 3);
-    return child;
+    ifs_frame then;
+    then.row0 = (ifs_real3)(dot(r0, c0), dot(r0, c1), dot(r0, c2));
+    then.row1 = (ifs_real3)(dot(r1, c0), dot(r1, c1), dot(r1, c2));
+    then.row2 = (ifs_real3)(dot(r2, c0), dot(r2, c1), dot(r2, c2));
+    then.offset = (ifs_real3)(dot(r0, f.offset), dot(r1, f.offset), dot(r2, f.offset)) +
+                  ifs_table_row(m, 3);
+    return then;
+}
+
+/* A gradient n taken in a frame's space, in world space: L^T n (the chain rule through
+ * x -> L x + l). */
+inline ifs_real3 ifs_world_normal(ifs_frame f, ifs_real3 n) {
+    return (ifs_real3)(f.row0.x * n.x + f.row1.x * n.y + f.row2.x * n.z,
+                       f.row0.y * n.x + f.row1.y * n.y + f.row2.y * n.z,
+                       f.row0.z * n.x + f.row1.z * n.y + f.row2.z * n.z);
 }
 
 /* Where the ray o + t d enters and leaves the ball B seen in frame f, if it meets it:
@@ -135,10 +144,11 @@ inline ifs_node ifs_root(void) {
     return root;
 }
 
-inline ifs_node ifs_child(ifs_node parent, int map, ifs_real entry) {
+/* Child `map` of a node; its entry distance is set once the ray has been tested against it. */
+inline ifs_node ifs_child(ifs_node parent, int map) {
     ifs_node child;
-    child.frame = ifs_child_frame(parent.frame, map);
-    child.entry = entry;
+    child.frame = ifs_then(parent.frame, fgr_ifs_inverse[map]);
+    child.entry = 0;
     child.size = parent.size * (ifs_real)fgr_ifs_contraction[map];
     child.depth = parent.depth + 1;
     child.top = parent.top < 0 ? map : parent.top;
@@ -213,9 +223,11 @@ inline int ifs_leaf_hit(ifs_node node, ifs_real3 o, ifs_real3 d, int max_depth, 
     return 1;
 }
 
-/* Heap of nodes by entry distance, smallest on top (a binary heap in an array). */
-inline void ifs_heap_push(ifs_node* heap, int* count, ifs_node node) {
+/* Heap of nodes by entry distance, smallest on top (a binary heap in an array). A push raises
+ * *peak, the most nodes the heap has held. */
+inline void ifs_heap_push(ifs_node* heap, int* count, ifs_node node, int* peak) {
     int i = (*count)++;
+    *peak = max(*peak, *count);
     while (i > 0) {
         const int parent = (i - 1) / 2;
         if (heap[parent].entry <= node.entry) break;
@@ -278,7 +290,7 @@ inline ifs_hit ifs_trace_depth_first(ifs_real3 o, ifs_real3 d, ifs_real travelle
         }
         const int map = next_map[level]++;
         const ifs_node parent = stack[level];
-        ifs_node child = ifs_child(parent, map, 0);
+        ifs_node child = ifs_child(parent, map);
         if (!ifs_enter(child.frame, o, d, &entry, &exit) || exit <= 0 || entry > result.t) {
             continue;
         }
@@ -302,6 +314,16 @@ inline ifs_hit ifs_trace_depth_first(ifs_real3 o, ifs_real3 d, ifs_real travelle
     return result;
 }
 
+/* A ray whose heap is full, traced again depth first (which needs no heap), counting the
+ * `visited` nodes the heap had taken already. */
+inline ifs_hit ifs_retrace_depth_first(ifs_real3 o, ifs_real3 d, ifs_real travelled,
+                                       ifs_real reach, float footprint, int max_depth,
+                                       int max_nodes, int visited) {
+    ifs_hit exact = ifs_trace_depth_first(o, d, travelled, reach, footprint, max_depth, max_nodes, 0);
+    exact.visited += visited;
+    return exact;
+}
+
 /* The nearest hit, best first (see the top of this file). */
 inline ifs_hit ifs_trace_nearest(ifs_real3 o, ifs_real3 d, ifs_real travelled, ifs_real reach,
                                  float footprint, int max_depth, int max_nodes) {
@@ -316,8 +338,7 @@ inline ifs_hit ifs_trace_nearest(ifs_real3 o, ifs_real3 d, ifs_real travelled, i
     ifs_node root = ifs_root();
     if (!ifs_enter(root.frame, o, d, &entry, &exit) || exit <= 0 || entry > reach) return result;
     root.entry = entry;
-    ifs_heap_push(heap, &count, root);
-    result.heap_peak = 1;
+    ifs_heap_push(heap, &count, root, &result.heap_peak);
     while (count > 0 && result.visited < max_nodes) {
         ifs_node node = ifs_heap_pop(heap, &count);
         ++result.visited;
@@ -344,29 +365,23 @@ inline ifs_hit ifs_trace_nearest(ifs_real3 o, ifs_real3 d, ifs_real travelled, i
                 return result;
             }
             if (count == FGR_IFS_HEAP) {
-                ifs_hit fallback = ifs_trace_depth_first(o, d, travelled, reach, footprint,
-                                                         max_depth, max_nodes, 0);
-                fallback.visited += result.visited;
-                return fallback;
+                return ifs_retrace_depth_first(o, d, travelled, reach, footprint, max_depth,
+                                               max_nodes, result.visited);
             }
-            ifs_heap_push(heap, &count, node);
-            result.heap_peak = max(result.heap_peak, count);
+            ifs_heap_push(heap, &count, node, &result.heap_peak);
             continue;
         }
         for (int map = 0; map < FGR_IFS_MAPS; ++map) {
-            ifs_node child = ifs_child(node, map, 0);
+            ifs_node child = ifs_child(node, map);
             if (!ifs_enter(child.frame, o, d, &entry, &exit) || exit <= 0 || entry > reach) {
                 continue;
             }
             child.entry = entry;
             if (count == FGR_IFS_HEAP) {
-                ifs_hit fallback = ifs_trace_depth_first(o, d, travelled, reach, footprint,
-                                                         max_depth, max_nodes, 0);
-                fallback.visited += result.visited;
-                return fallback;
+                return ifs_retrace_depth_first(o, d, travelled, reach, footprint, max_depth,
+                                               max_nodes, result.visited);
             }
-            ifs_heap_push(heap, &count, child);
-            result.heap_peak = max(result.heap_peak, count);
+            ifs_heap_push(heap, &count, child, &result.heap_peak);
         }
     }
     return result;
@@ -377,42 +392,28 @@ inline ifs_hit ifs_trace_nearest(ifs_real3 o, ifs_real3 d, ifs_real travelled, i
  * space, averaged. A leaf's own ellipsoid is a coarse stand-in for the attractor inside it; its
  * ancestors' normals describe the shape the leaf belongs to. In a node's space the ellipsoid is
  * the ball B, whose normal at q is q - c; in world space the normal is L^T (q - c). Going up a
- * level applies the node's last map: q' = A q + b and L' = A L. */
+ * level applies the node's last map after its frame. */
 inline ifs_real3 ifs_ball_normal(ifs_node leaf, ifs_real3 hit_point) {
     const ifs_real3 centre = (ifs_real3)(FGR_IFS_CENTRE_X, FGR_IFS_CENTRE_Y, FGR_IFS_CENTRE_Z);
     ifs_frame f = leaf.frame;
-    ifs_real3 q = ifs_apply(f, hit_point);
     ulong recent = leaf.recent;
     ifs_real3 sum = (ifs_real3)(0, 0, 0);
     const int levels = min(FGR_IFS_NORMAL_LEVELS, leaf.depth + 1);
     for (int level = 0; level < levels; ++level) {
-        const ifs_real3 r = q - centre;
-        const ifs_real3 world = (ifs_real3)(f.row0.x * r.x + f.row1.x * r.y + f.row2.x * r.z,
-                                            f.row0.y * r.x + f.row1.y * r.y + f.row2.y * r.z,
-                                            f.row0.z * r.x + f.row1.z * r.y + f.row2.z * r.z);
+        const ifs_real3 world = ifs_world_normal(f, ifs_apply(f, hit_point) - centre);
         const ifs_real length2 = dot(world, world);
         if (length2 > 0) sum += world * rsqrt(length2);
         if (level + 1 == levels) break;
         const int map = (int)(recent & ((1ul << FGR_IFS_INDEX_BITS) - 1ul));
         recent >>= FGR_IFS_INDEX_BITS;
-        __constant const ifs_real* fwd = fgr_ifs_forward[map];
-        const ifs_real3 a0 = ifs_table_row(fwd, 0), a1 = ifs_table_row(fwd, 1),
-                        a2 = ifs_table_row(fwd, 2);
-        q = (ifs_real3)(dot(a0, q), dot(a1, q), dot(a2, q)) + ifs_table_row(fwd, 3);
-        const ifs_real3 c0 = (ifs_real3)(f.row0.x, f.row1.x, f.row2.x);
-        const ifs_real3 c1 = (ifs_real3)(f.row0.y, f.row1.y, f.row2.y);
-        const ifs_real3 c2 = (ifs_real3)(f.row0.z, f.row1.z, f.row2.z);
-        f.row0 = (ifs_real3)(dot(a0, c0), dot(a0, c1), dot(a0, c2));
-        f.row1 = (ifs_real3)(dot(a1, c0), dot(a1, c1), dot(a1, c2));
-        f.row2 = (ifs_real3)(dot(a2, c0), dot(a2, c1), dot(a2, c2));
+        f = ifs_then(f, fgr_ifs_forward[map]);
     }
     const ifs_real length2 = dot(sum, sum);
     return length2 > 0 ? sum * rsqrt(length2) : (ifs_real3)(0, 0, 1);
 }
 
 /* The surface normal at a leaf hit: the face of the polytope the ray entered through (exact), or
- * for ball leaves the average of ifs_ball_normal. A face's normal n in the node's space is L^T n
- * in world space, as the ball's is. */
+ * for ball leaves the average of ifs_ball_normal. */
 inline ifs_real3 ifs_normal(ifs_node leaf, ifs_real3 o, ifs_real3 d, ifs_real t,
                             int max_depth) {
 #if FGR_IFS_LEAF_PLANES > 0
@@ -420,12 +421,7 @@ inline ifs_real3 ifs_normal(ifs_node leaf, ifs_real3 o, ifs_real3 d, ifs_real t,
     ifs_real entry;
     int face;
     ifs_polytope_enter(leaf.frame, o, d, &entry, &face);
-    const ifs_real3 n = ifs_table_row(fgr_ifs_leaf_planes[face], 0);
-    const ifs_frame f = leaf.frame;
-    const ifs_real3 world = (ifs_real3)(f.row0.x * n.x + f.row1.x * n.y + f.row2.x * n.z,
-                                        f.row0.y * n.x + f.row1.y * n.y + f.row2.y * n.z,
-                                        f.row0.z * n.x + f.row1.z * n.y + f.row2.z * n.z);
-    return normalize(world);
+    return normalize(ifs_world_normal(leaf.frame, ifs_table_row(fgr_ifs_leaf_planes[face], 0)));
 #else
     (void)max_depth;
     return ifs_ball_normal(leaf, o + t * d);
