@@ -94,6 +94,19 @@ Scene load_frozen_scene() {
     return std::move(*loaded.scene);
 }
 
+// Pixels of the scene's default view (32x24, its own effects) that hit: it builds and renders.
+long default_view_hits(const Scene& scene) {
+    const ComputeDevice device = open_device(-1);
+    ProgramCache cache{fs::path()};
+    Renderer renderer(device, cache, scene, {preferred_packet_width(device.info), scene.effects});
+    FrameRequest request;
+    request.width = 32;
+    request.height = 24;
+    request.view = scene.cameras.front().view;
+    request.params = default_param_values(scene);
+    return renderer.render(request).hits;
+}
+
 void expect_vec3(const glm::vec3& actual, const glm::vec3& expected, const std::string& what) {
     for (glm::vec3::length_type i = 0; i < 3; ++i) {
         EXPECT_FLOAT_EQ(actual[i], expected[i]) << what << " component " << i;
@@ -382,15 +395,7 @@ TEST(AbiFreeze, FrozenV1_1PluginLoadsItsSourceByLengthAndRenders) {
               "real scene_de(vec3 p, PARAMS) { return v3_length(p) - param_radius; }\n");
     EXPECT_EQ(scene.plugin_file, kFrozenV1_1Plugin);
 
-    const ComputeDevice device = open_device(-1);
-    ProgramCache cache{fs::path()};
-    Renderer renderer(device, cache, scene, {preferred_packet_width(device.info), scene.effects});
-    FrameRequest request;
-    request.width = 32;
-    request.height = 24;
-    request.view = scene.cameras.front().view;
-    request.params = default_param_values(scene);
-    EXPECT_GT(renderer.render(request).hits, 0);
+    EXPECT_GT(default_view_hits(scene), 0);
 }
 
 // The 1.2 plugin asks for the path mode; its directional lights have discs of 5 and 0.27 degrees,
@@ -439,15 +444,7 @@ TEST(AbiFreeze, FrozenV1_3PluginLoadsItsMapsAndRenders) {
     }
     expect_vec3(scene.ifs->maps[1].colour, {0.2f, 0.8f, 0.3f}, "map 1 colour");
 
-    const ComputeDevice device = open_device(-1);
-    ProgramCache cache{fs::path()};
-    Renderer renderer(device, cache, scene, {preferred_packet_width(device.info), scene.effects});
-    FrameRequest request;
-    request.width = 32;
-    request.height = 24;
-    request.view = scene.cameras.front().view;
-    request.params = default_param_values(scene);
-    EXPECT_GT(renderer.render(request).hits, 0);
+    EXPECT_GT(default_view_hits(scene), 0);
 }
 
 // Plugins built before 1.2 ask for no mode and have point-like lights. The 1.0 plugin's first light

@@ -20,7 +20,6 @@
 #include <map>
 #include <memory>
 #include <optional>
-#include <random>
 #include <regex>
 #include <set>
 #include <sstream>
@@ -44,6 +43,7 @@
 #include "fgr/render_mode.hpp"
 #include "fgr/scene_file.hpp"
 #include "fgr/renderer.hpp"
+#include "fuzz_rng.hpp"
 
 namespace fgr {
 namespace {
@@ -348,28 +348,7 @@ TEST(BadPlugin, RealPluginsStillLoadAfterAllTheBadOnes) {
 constexpr uint64_t kFuzzSeed = 0x46475246757a7a31;  // "FGRFuzz1"
 constexpr int kFuzzCases = 20000;
 
-// Deterministic on every platform: only mt19937_64's raw output is used, no <random>
-// distributions (their results are implementation-defined).
-class Rng {
-public:
-    explicit Rng(uint64_t seed) : engine_(seed) {}
-    uint64_t next() { return engine_(); }
-    // Uniform in [0, n) (modulo bias is irrelevant here).
-    uint32_t below(uint64_t n) { return static_cast<uint32_t>(next() % n); }
-    int range(int low, int high) { return low + static_cast<int>(below(uint64_t(high - low) + 1)); }
-    bool chance(double p) { return unit() < p; }
-    double unit() { return static_cast<double>(next() >> 11) * 0x1.0p-53; }
-    float uniform(float low, float high) {
-        return static_cast<float>(low + (double{high} - double{low}) * unit());
-    }
-    template <typename T, std::size_t N>
-    const T& pick(const T (&items)[N]) {
-        return items[below(N)];
-    }
-
-private:
-    std::mt19937_64 engine_;
-};
+using Rng = test::FuzzRng;
 
 // Owns every string and array one description points into.
 class Arena {

@@ -31,6 +31,7 @@
 #include "fgr/discovery.hpp"
 #include "fgr/ifs.hpp"
 #include "fgr/scene_file.hpp"
+#include "fuzz_rng.hpp"
 
 namespace fgr {
 namespace {
@@ -614,16 +615,7 @@ TEST(IfsDiscovery, TheBuildsPluginFolderHoldsTheShippedFiles) {
 constexpr uint64_t kFuzzSeed = 0x49465346757a7a31;  // "IFSFuzz1"
 constexpr int kFuzzCases = 10000;
 
-class Rng {
-public:
-    explicit Rng(uint64_t seed) : engine_(seed) {}
-    uint64_t next() { return engine_(); }
-    std::size_t below(std::size_t n) { return n == 0 ? 0 : static_cast<std::size_t>(next() % n); }
-    bool chance(double p) { return static_cast<double>(next() >> 11) * 0x1.0p-53 < p; }
-
-private:
-    std::mt19937_64 engine_;
-};
+using Rng = test::FuzzRng;
 
 json nasty_value(Rng& rng) {
     switch (rng.below(16)) {
