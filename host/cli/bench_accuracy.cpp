@@ -1,4 +1,5 @@
 // fgr bench accuracy: the accuracy-for-time knobs swept against a reference render, with a plot.
+#include <algorithm>
 #include <cstdlib>
 #include <filesystem>
 #include <string>
@@ -7,6 +8,7 @@
 #include <spdlog/spdlog.h>
 
 #include "commands.hpp"
+#include "fgr/brute_accuracy.hpp"
 #include "fgr/program_cache.hpp"
 #include "fgr/renderer.hpp"
 
@@ -34,9 +36,74 @@ void add_bench_accuracy_command(CLI::App& bench, BenchOptions& options) {
     accuracy->add_option("-o,--output", sweep.output,
                          "write PREFIX.csv, PREFIX.gp and PREFIX.png (default: accuracy-SCENE)");
     // --mode path sweeps samples, bounces, roulette and sampling strategies instead, against a
-    // path reference of --reference-spp (at least 256) samples per pixel.
+    // path reference of --reference-spp (at least 256) samples per pixel; --mode brute the
+    // brute-force passes, against the sphere tracer's depth (or 1024 passes without a DE).
     add_mode_options(accuracy, sweep.mode);
 }
+
+namespace {
+
+void report_progress(int done, int total, const std::string& what) {
+    if (done < total) spdlog::info("[{}/{}] {}", done + 1, total, what);
+}
+
+// Runs gnuplot on `script` beside it (so the script's relative names resolve), making `png`;
+// without gnuplot, says how to get the plot later.
+void plot(const std::filesystem::path& csv, const std::filesystem::path& script,
+          const std::filesystem::path& png) {
+    fmt::print("wrote {} and {}\n", csv.string(), script.string());
+    const std::string directory = csv.has_parent_path() ? csv.parent_path().string() : ".";
+    const std::string command = fmt::format("cd '{}' && gnuplot '{}' 2>&1", directory,
+                                            script.filename().string());
+    if (std::system("command -v gnuplot > /dev/null 2>&1") != 0) {
+        spdlog::warn("gnuplot not found: no plot (apt-get install gnuplot-nox, then gnuplot {})",
+                     script.string());
+        return;
+    }
+    if (std::system(command.c_str()) != 0 || !std::filesystem::exists(png)) {
+        throw RuntimeFailure(fmt::format("gnuplot failed on {}", script.string()));
+    }
+    fmt::print("wrote {}\n", png.string());
+}
+
+// --mode brute: the depth's convergence over passes (fgr/brute_accuracy.hpp).
+void brute_accuracy(const Scene& scene, const AccuracySettings& settings,
+                    const ComputeDevice& device, ProgramCache& cache,
+                    const std::filesystem::path& csv, const std::filesystem::path& script,
+                    const std::filesystem::path& png) {
+    BruteConvergenceSettings brute;
+    brute.width = settings.width;
+    brute.height = settings.height;
+    brute.repeats = settings.repeats;
+    const BruteConvergence result = run_brute_convergence(scene, device, cache, brute,
+                                                          report_progress);
+    fmt::print("reference: {} ({:.0f} ms)\n", result.reference, result.reference_ms);
+    fmt::print("{:>6} {:>10} {:>10} {:>8} {:>12} {:>8} {:>10}\n", "passes", "render ms",
+               "x ref", "tests/px", "disagree %", "IoU", "err (fp)");
+    for (const BrutePoint& point : result.points) {
+        fmt::print("{:>6} {:>10.1f} {:>10.1f} {:>8.1f} {:>12.3f} {:>8.4f} {:>10.3f}\n",
+                   point.passes, point.render_ms, point.render_ms / result.reference_ms,
+                   point.inside_tests_per_pixel, point.agreement.disagreeing_percent(),
+                   point.agreement.iou(), point.agreement.mean_footprints);
+    }
+    // The headline: the first pass count whose depth agrees on 98% of the pixels (the brute
+    // mode's test), and what it costs against the reference.
+    const auto agreed = std::find_if(result.points.begin(), result.points.end(), [](const auto& p) {
+        return p.agreement.disagreeing_percent() <= 2.0;
+    });
+    if (agreed != result.points.end()) {
+        fmt::print("98% agreement after {} passes: {:.0f} ms, {:.1f}x the reference\n",
+                   agreed->passes, agreed->render_ms, agreed->render_ms / result.reference_ms);
+    } else {
+        fmt::print("98% agreement not reached in {} passes\n", result.points.back().passes);
+    }
+    write_output(csv, brute_convergence_csv(result));
+    write_output(script, brute_convergence_gnuplot(result, scene.id, csv.filename().string(),
+                                                   png.filename().string()));
+    plot(csv, script, png);
+}
+
+}  // namespace
 
 int command_bench_accuracy(const AccuracyOptions& options, int device_index) {
     const Discovery found = discover();
@@ -46,11 +113,14 @@ int command_bench_accuracy(const AccuracyOptions& options, int device_index) {
     check_output_directory(csv);
     const ComputeDevice device = open_requested_device(device_index);
     ProgramCache cache(ProgramCache::default_directory());
-    const auto progress = [](int done, int total, const std::string& what) {
-        if (done < total) spdlog::info("[{}/{}] {}", done + 1, total, what);
-    };
+    const RenderMode mode = chosen_mode(options.mode, scene);
+    if (mode == RenderMode::Brute) {
+        brute_accuracy(scene, options.settings, device, cache, csv, script, png);
+        return 0;
+    }
+    const auto progress = report_progress;
     const AccuracyReport report =
-        chosen_mode(options.mode, scene) == RenderMode::Path
+        mode == RenderMode::Path
             ? run_path_accuracy_sweep(scene, device, cache, options.settings,
                                       chosen_path_settings(options.mode, scene), progress)
             : run_accuracy_sweep(scene, device, cache, options.settings, progress);
@@ -73,20 +143,7 @@ int command_bench_accuracy(const AccuracyOptions& options, int device_index) {
     write_output(csv, accuracy_csv(report));
     write_output(script, accuracy_gnuplot(report, scene.id, csv.filename().string(),
                                           png.filename().string()));
-    fmt::print("wrote {} and {}\n", csv.string(), script.string());
-    // gnuplot runs beside the files, so the script's relative names resolve.
-    const std::string directory = csv.has_parent_path() ? csv.parent_path().string() : ".";
-    const std::string command = fmt::format("cd '{}' && gnuplot '{}' 2>&1", directory,
-                                            script.filename().string());
-    if (std::system("command -v gnuplot > /dev/null 2>&1") != 0) {
-        spdlog::warn("gnuplot not found: no plot (apt-get install gnuplot-nox, then gnuplot {})",
-                     script.string());
-        return 0;
-    }
-    if (std::system(command.c_str()) != 0 || !std::filesystem::exists(png)) {
-        throw RuntimeFailure(fmt::format("gnuplot failed on {}", script.string()));
-    }
-    fmt::print("wrote {}\n", png.string());
+    plot(csv, script, png);
     return 0;
 }
 
