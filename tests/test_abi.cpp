@@ -421,7 +421,7 @@ TEST_F(CopyScene, DefaultModeAcceptsEveryRenderModeName) {
 
 TEST_F(CopyScene, RefusesUnknownDefaultMode) {
     const std::string choices = "(choose " + render_mode_choices() + ")";
-    EXPECT_EQ(choices, "(choose shaded|path)");
+    EXPECT_EQ(choices, "(choose shaded|path|brute)");
     built.desc.default_mode = "pathz";
     expect_refused("default_mode 'pathz' is not a render mode " + choices);
     built.desc.default_mode = "Path";

@@ -120,7 +120,7 @@ const BrokenFixture kBrokenFixtures[] = {
     // Read, the NUL-less source would fault at its end: refused for source_length alone.
     {"long_source_length.so", "source longer than 4194304 bytes (source_length 5242880)"},
     // ABI 1.2: a render mode no host has, and light discs outside [0, 45] degrees.
-    {"unknown_mode.so", "default_mode 'pathz' is not a render mode (choose shaded|path)"},
+    {"unknown_mode.so", "default_mode 'pathz' is not a render mode (choose shaded|path|brute)"},
     {"negative_radius.so", "light 0: angular_radius_degrees -1 outside [0, 45]"},
     {"wide_radius.so", "light 0: angular_radius_degrees 46 outside [0, 45]"},
     {"nan_radius.so", "light 0: angular_radius_degrees nan outside [0, 45]"},

@@ -291,6 +291,18 @@ const std::vector<BadInput> kBadInputs = {
       "+soft_shadows"},
      kAnyFailure,
      {"sierpinski-ifs", "soft_shadows", "distance estimate"}},
+    // A scene with an inside test alone renders only by brute force; exact IFS tracing has
+    // neither an inside test nor a DE for it.
+    {"InsideOnlySceneInShadedMode",
+     {"render", "stereographic-julia", "-o", "{out}", "--width", "16", "--height", "12",
+      "--mode", "shaded"},
+     kAnyFailure,
+     {"stereographic-julia", "no distance estimator", "--mode brute"}},
+    {"IfsSceneInBruteMode",
+     {"render", "sierpinski-ifs", "-o", "{out}", "--width", "16", "--height", "12", "--mode",
+      "brute"},
+     kAnyFailure,
+     {"sierpinski-ifs", "brute"}},
     {"UnknownSubcommand", {"frobnicate"}, 2, {"frobnicate"}},
     {"NoSubcommand", {}, kAnyFailure, {}},
 };
@@ -409,6 +421,29 @@ TEST_F(CliTest, PathModeWritesAnExrWithItsLayersAndStopsAtATimeLimit) {
     EXPECT_NE(limited.err.find("--time-limit"), std::string::npos) << limited;
     EXPECT_EQ(limited.out.find("samples_per_pixel 4096"), std::string::npos) << limited;
     EXPECT_TRUE(fs::exists(dir() / "limited.png"));
+}
+
+// A scene with no DE renders by default in the brute mode, with its passes and inside tests
+// reported; a DE scene renders in it on request, with the shading's layers in an EXR.
+TEST_F(CliTest, BruteModeRendersInsideOnlyScenesByDefaultAndDeScenesOnRequest) {
+    const RunResult inside = run({"render", "stereographic-julia", "-o", "julia.png", "--width",
+                                  "48", "--height", "36", "--stats"});
+    ASSERT_EQ(inside.exit_code, 0) << inside;
+    EXPECT_NE(inside.out.find("samples_per_pixel 16\n"), std::string::npos) << inside;
+    EXPECT_NE(inside.out.find("inside_tests_per_pixel "), std::string::npos) << inside;
+    EXPECT_EQ(inside.out.find("hits 0\n"), std::string::npos) << inside;
+    expect_rgb_png(dir() / "julia.png", 48, 36);
+
+    const fs::path exr = dir() / "brute.exr";
+    const RunResult de = run({"render", "mandelbulb", "--mode", "brute", "--spp", "2", "-o",
+                              exr.string(), "--width", "24", "--height", "16", "--aov",
+                              "albedo,normal,depth,alpha", "--effects", "+reflections"});
+    ASSERT_EQ(de.exit_code, 0) << de;
+    EXPECT_NE(de.err.find("ignores reflections"), std::string::npos) << de;
+    const Imf::RgbaInputFile file(exr.string().c_str());
+    for (const char* name : {"A", "albedo.R", "normal.X", "depth.Z"}) {
+        EXPECT_NE(file.header().channels().findChannel(name), nullptr) << name;
+    }
 }
 
 TEST_F(CliTest, RelativeOutputPathIsInWorkingDirectory) {

@@ -536,6 +536,26 @@ TEST_F(ViewerTest, PathModeAccumulatesSamplesWhileTheViewStandsStill) {
     EXPECT_GT(samples, 2) << last;
 }
 
+// A scene with no DE opens in the brute mode, whose passes accumulate while the view stands
+// still: the frame shown is full size and several passes deep.
+TEST_F(ViewerTest, BruteModeAddsPassesWhileTheViewStandsStill) {
+    const test::RunResult warm = test::run_fgr(
+        {"render", "stereographic-julia", "--spp", "1", "--width", "16", "--height", "12", "-o",
+         "warm.png"},
+        dir());
+    ASSERT_EQ(warm.exit_code, 0) << warm;
+    fs::remove(dir() / "warm.png");
+    const ViewerRun run = view("", {"stereographic-julia"}, std::nullopt, 8);
+    ASSERT_EQ(run.result.exit_code, 0) << run.result;
+    const std::string last = stat_text(run.result.out, "last_frame");
+    ASSERT_FALSE(last.empty()) << run.result;
+    int samples = 0;
+    float scale = 0.0f;
+    ASSERT_EQ(std::sscanf(last.c_str(), "scale %f samples %d", &scale, &samples), 2) << last;
+    EXPECT_EQ(scale, 1.0f) << last;
+    EXPECT_GT(samples, 2) << last;
+}
+
 // --precision double renders in double: not just the label, the pixels. With a fine hit
 // threshold (0.001) float and double images of the default view differ (about 1% of pixels by
 // more than a level at 400x300); the screenshot must be the double one, pixel for pixel, as

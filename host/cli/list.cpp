@@ -4,6 +4,7 @@
 #include <fmt/format.h>
 
 #include "commands.hpp"
+#include "fgr/render_mode.hpp"
 #include "fgr/ifs.hpp"
 #include "fgr/kernel_assembly.hpp"
 
@@ -60,6 +61,11 @@ void print_scene(const Scene& scene) {
     }
     fmt::print("  camera paths: {}\n", paths.empty() ? "none" : paths);
     fmt::print("  effects: {}\n", effect_names(scene.effects));
+    // What renders the surface, and so which modes the scene has.
+    const char* surface = scene.ifs            ? "IFS maps, traced exactly (shaded, path)"
+                          : scene.inside_only() ? "inside test only, no DE (brute)"
+                                                : "distance estimator (shaded, path, brute)";
+    fmt::print("  surface: {}; default mode {}\n", surface, render_mode_name(scene.default_mode));
 }
 
 }  // namespace

@@ -131,6 +131,12 @@ void render_to_file(const Scene& scene, const FrameRequest& request, const Compu
         throw UsageError(
             "--aov albedo and normal come from the path and brute modes: add --mode path or brute");
     }
+    if (settings.mode == RenderMode::Brute) {
+        if (const uint64_t ignored = settings.effects & ~kBruteModeEffects) {
+            spdlog::info("the brute mode shades in screen space and ignores {}",
+                         effect_names(ignored));
+        }
+    }
     FrameRequest reported = request;
     if (!options.samples && settings.mode == RenderMode::Path) reported.samples = kPathSamples;
     if (!options.samples && settings.mode == RenderMode::Brute) reported.samples = kBrutePasses;
@@ -272,7 +278,7 @@ void add_render_command(CLI::App& app, RenderOptions& options) {
         ->check(CLI::IsMember({8, 16}));
     render->add_option("--aov", options.aovs,
                        "EXR layers beside the linear image: albedo,normal,depth,alpha "
-                       "(albedo and normal need --mode path)");
+                       "(albedo and normal need --mode path or brute)");
     add_mode_options(render, options.mode);
     render->add_option("--effects", options.effect_changes,
                        "change the scene's effects, e.g. +shadows,-ambient_occlusion");

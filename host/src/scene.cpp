@@ -98,7 +98,8 @@ void add_effect_params(Scene& scene) {
     params.push_back(effect_param("shadow_sharpness", "Shadow sharpness", ParamType::Float, 1.0f,
                                   128.0f, 12.0f, "soft shadows: higher is a narrower penumbra"));
     params.push_back(effect_param("ao_radius", "Occlusion radius", ParamType::Float, 1e-9f,
-                                  100.0f, 0.1f, "sampled occlusion: how far along the normal it probes"));
+                                  100.0f, 0.1f, "sampled occlusion: how far along the normal it probes; brute "
+                                  "mode: the screen-space occlusion's radius"));
     params.push_back(colour_param("glow_colour", "Glow colour", {0.45f, 0.65f, 1.0f},
                                   "colour rays that miss pick up near the surface"));
     params.push_back(effect_param("glow_strength", "Glow strength", ParamType::Float, 0.0f, 20.0f,

@@ -13,6 +13,12 @@ real scene_de(vec3 p, PARAMS) {
     return op_displace_sine(ball, p, param_bumps, param_frequency);
 }
 
+/* No distance estimator for your formula? Replace scene_de with an inside test, true in the lanes
+ * where p is in the set, and fgr renders it by brute force (--mode brute; the colour below still
+ * applies). Put `#define FGR_SCENE_INSIDE_ONLY` on a line of its own, outside this comment, then
+ *     mask scene_inside(vec3 p, PARAMS) { return v3_length(p) < param_radius; }
+ * See "Scenes without a distance estimator" in fgr's SDK guide. */
+
 /* Albedo in linear RGB: the tint on the bumps' tops, fading to white in the hollows. */
 #define FGR_SCENE_HAS_COLOUR
 vec3 scene_colour(vec3 p, PARAMS) {

@@ -44,6 +44,13 @@ std::string effect_names(uint64_t effects);
 constexpr uint64_t kIfsEffects =
     FGR_EFFECT_SHADOWS | FGR_EFFECT_REFLECTIONS | FGR_EFFECT_FOG | FGR_EFFECT_DEPTH_OF_FIELD;
 
+// The effects the brute-force mode renders (in screen space, or with its inside test); it ignores
+// the others, which need a distance estimate or a traced ray.
+constexpr uint64_t kBruteModeEffects = FGR_EFFECT_SHADOWS | FGR_EFFECT_SOFT_SHADOWS |
+                                       FGR_EFFECT_AMBIENT_OCCLUSION |
+                                       FGR_EFFECT_SAMPLED_OCCLUSION | FGR_EFFECT_GLOW |
+                                       FGR_EFFECT_FOG;
+
 // The effects `scene` can be built with: all for DE scenes, kIfsEffects for IFS scenes.
 uint64_t supported_effects(const Scene& scene);
 

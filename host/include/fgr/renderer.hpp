@@ -94,9 +94,9 @@ struct Frame {
     bool double_precision = false;  // rendered with double lanes (KernelSwitches)
     std::optional<MarchStats> stats;  // when the renderer was built with stats
     int samples = 0;            // per pixel in this frame (fewer than asked when `enough` said so)
-    // Render mode "path": the first hit's albedo and shading normal (row-major RGB / XYZ) and
-    // coverage (1 where the camera ray met the surface), averaged over the samples, for
-    // compositing and denoising (EXR layers).
+    // Render modes "path" and "brute": the first hit's albedo and shading normal (row-major
+    // RGB / XYZ) and, path only, coverage (1 where the camera ray met the surface), averaged
+    // over the samples, for compositing and denoising (EXR layers).
     std::vector<float> albedo;
     std::vector<float> normal;
     std::vector<float> alpha;

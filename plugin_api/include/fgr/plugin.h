@@ -17,9 +17,10 @@
  * Arrays of structs (params, cameras, ...) are read with the first element's struct_size as the
  * stride; every element of one array carries the same header.
  *
- * A scene is either distance-estimated (its OpenCL `source` defines scene_de) or, from ABI 1.3, an
- * iterated function system: a list of contractive affine maps (fgr_ifs_map) that the host ray
- * traces exactly, as it does IFS scene files (*.ifs.json). See fgr_scene_desc::ifs_maps.
+ * A scene is either given by its OpenCL `source` (which defines scene_de, or only an inside test,
+ * scene_inside: see fgr_scene_desc) or, from ABI 1.3, an iterated function system: a list of
+ * contractive affine maps (fgr_ifs_map) that the host ray traces exactly, as it does IFS scene
+ * files (*.ifs.json). See fgr_scene_desc::ifs_maps.
  *
  * Ownership: every pointer in these structs is owned by the plugin and must stay valid and unchanged
  * from the moment fgr_scene_entry returns until the host unloads the library. The host copies
@@ -198,7 +199,12 @@ typedef struct fgr_ifs_map {
  *
  * OpenCL source contract (see sdk/README.md): the source defines
  *     real scene_de(vec3 p, PARAMS)
- * returning a distance bound to the surface for every lane of p, and optionally, after
+ * returning a distance bound to the surface for every lane of p, or instead, for a set with no
+ * known distance estimator, after `#define FGR_SCENE_INSIDE_ONLY` on a line of its own,
+ *     mask scene_inside(vec3 p, PARAMS)
+ * true in the lanes where p is in the set (with `#define FGR_SCENE_HAS_INSIDE`, a scene may define
+ * both). This is no ABI change: the description is the same, and the host reads the directive
+ * from the source. Such a scene renders only in the "brute" mode. Optionally, after
  * `#define FGR_SCENE_HAS_COLOUR`,
  *     vec3 scene_colour(vec3 p, PARAMS)
  * returning the linear albedo. `real` and `vec3` are the packet types of the kernel library.
@@ -233,9 +239,11 @@ typedef struct fgr_scene_desc {
      * `source` is NUL-terminated. FGR_SCENE (fgr/scene_helpers.h) fills it for a source array. */
     uint64_t source_length;
 
-    /* ABI 1.2. The render mode the scene asks for when the user names none, by name: "shaded"
-     * or "path" (fgr's `--mode`; a host refuses a name it does not know, with the choices). NULL
-     * or "", and every plugin built against 1.0 or 1.1, mean "shaded". */
+    /* ABI 1.2. The render mode the scene asks for when the user names none, by name: "shaded",
+     * "path" or "brute" (fgr's `--mode`: every mode the host has; a host refuses a name it does not
+     * know, with the choices). NULL or "", and every plugin built against 1.0 or 1.1, mean
+     * "shaded". A source with FGR_SCENE_INSIDE_ONLY renders "brute" whatever this says, and
+     * "path" is refused for it. */
     const char* default_mode;
 
     /* ABI 1.3. An IFS scene: when ifs_map_count is not 0 the scene is the attractor of these

@@ -107,7 +107,8 @@ constexpr uint64_t fgr_source_length(const char (&)[N]) { return N; }
 #endif
 
 /* A whole scene description from static arrays of params, cameras, camera paths and lights. It
- * asks for no render mode (default_mode NULL: fgr renders it shaded unless told otherwise). */
+ * asks for no render mode (default_mode NULL: fgr renders it shaded unless told otherwise, or in
+ * the brute mode if its source is inside-only, see FGR_SCENE_INSIDE_ONLY in fgr's SDK guide). */
 #define FGR_SCENE(id, name, description, source, source_name, params, cameras, paths, lights,   \
                   effects, march)                                                                 \
     {                                                                                             \
@@ -116,7 +117,8 @@ constexpr uint64_t fgr_source_length(const char (&)[N]) { return N; }
             FGR_COUNT(lights), effects, march, FGR_SOURCE_LENGTH(source), NULL, NULL, 0, 0, 0     \
     }
 
-/* The same, asking for a render mode by default: "shaded" or "path" (ABI 1.2). (Not written with
+/* The same, asking for a render mode by default: "shaded", "path" or "brute" (ABI 1.2: any mode
+ * the host has; an inside-only source renders brute whatever it asks, "path" is refused). (Not written with
  * FGR_SCENE's help: `march` is usually FGR_MARCH(...), whose commas would split the arguments of a
  * macro it is passed on to.) */
 #define FGR_SCENE_WITH_MODE(id, name, description, source, source_name, params, cameras, paths,  \
