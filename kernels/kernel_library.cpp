@@ -9,11 +9,13 @@
 #include "fgr_effects_cl.h"
 #include "fgr_folds_cl.h"
 #include "fgr_fractals_cl.h"
+#include "fgr_geometry_cl.h"
 #include "fgr_ifs_cl.h"
 #include "fgr_march_cl.h"
 #include "fgr_math_cl.h"
 #include "fgr_math_check_cl.h"
 #include "fgr_camera_cl.h"
+#include "fgr_mode_brute_cl.h"
 #include "fgr_mode_path_cl.h"
 #include "fgr_mode_shaded_cl.h"
 #include "fgr_probe_cl.h"
@@ -41,6 +43,7 @@ std::span<const KernelFile> kernel_prelude() {
 
 std::span<const KernelFile> kernel_postlude() {
     static constexpr std::array files{
+        KernelFile{"fgr_geometry.cl", fgr_geometry_cl},
         KernelFile{"fgr_march.cl", fgr_march_cl},
         KernelFile{"fgr_ifs.cl", fgr_ifs_cl},
         KernelFile{"fgr_shade.cl", fgr_shade_cl},
@@ -58,7 +61,9 @@ std::span<const KernelFile> mode_files(std::string_view mode) {
         KernelFile{"fgr_environment.cl", fgr_environment_cl},
         KernelFile{"fgr_mode_path.cl", fgr_mode_path_cl},
     };
+    static constexpr std::array brute{KernelFile{"fgr_mode_brute.cl", fgr_mode_brute_cl}};
     if (mode == "shaded") return shaded;
+    if (mode == "brute") return brute;
     if (mode == "path") return path;
     return {};
 }

@@ -61,7 +61,8 @@ void add_mode_options(CLI::App* command, ModeOptions& options) {
     for (const RenderModeInfo& info : render_modes()) names.emplace_back(info.name);
     command
         ->add_option("--mode", options.mode,
-                     "render mode: shaded (Blinn-Phong and effects) or path (path tracing); "
+                     "render mode: shaded (Blinn-Phong and effects), path (path tracing) or "
+                     "brute (brute-force inside tests, for scenes with no distance estimator); "
                      "default: the scene's own")
         ->check(CLI::IsMember(names));
     const std::string path = "Path tracing (--mode path)";

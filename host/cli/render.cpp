@@ -132,6 +132,7 @@ void render_to_file(const Scene& scene, const FrameRequest& request, const Compu
     }
     FrameRequest reported = request;
     if (!options.samples && settings.mode == RenderMode::Path) reported.samples = kPathSamples;
+    if (!options.samples && settings.mode == RenderMode::Brute) reported.samples = kBrutePasses;
     if (settings.mode == RenderMode::Path) {
         reported.path = chosen_path_settings(options.mode, scene);
         if (reported.path.radiance_clamp > 0.0f) {
@@ -165,6 +166,11 @@ void render_to_file(const Scene& scene, const FrameRequest& request, const Compu
     if (frame.lane_stats) {
         fmt::print("lane_utilisation {:.3f} ({} rays per work-item)\n",
                    frame.lane_stats->utilisation(), frame.lane_stats->packet_width);
+    }
+    if (frame.inside_tests_per_pixel) {
+        fmt::print("inside_tests_per_pixel {:.1f} ({:.1f} per pass)\n",
+                   *frame.inside_tests_per_pixel,
+                   *frame.inside_tests_per_pixel / std::max(frame.samples, 1));
     }
     if (frame.ifs_levels) {
         fmt::print("ifs_depth_reached {} (mean {:.2f} over the hits; the slider allows {})\n",
@@ -254,7 +260,8 @@ void add_render_command(CLI::App& app, RenderOptions& options) {
     render->add_option("--time", options.time, "time along the camera path, in seconds");
     render->add_option("--spp", options.samples,
                        "samples per pixel, jittered and averaged: anti-aliasing, depth of field, "
-                       "and the path tracer's estimate (default 1; 64 with --mode path)")
+                       "and the path tracer's estimate (default 1; 64 with --mode path); with "
+                       "--mode brute, passes of sampling along each ray (default 16)")
         ->check(CLI::Range(1, kMaxSamples));
     render->add_option("--time-limit", options.time_limit,
                        "stop adding samples after this many seconds and write what is done")

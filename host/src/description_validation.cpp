@@ -614,6 +614,14 @@ Scene copy_checked(const fgr_scene_desc& desc) {
     scene.effects = copy_effects(desc.effects);
     scene.march = copy_march(desc.march);
     scene.default_mode = copy_default_mode(desc);
+    if (scene.inside_only()) {
+        // An inside test alone renders only by brute force, whatever the description asks.
+        if (scene.default_mode == RenderMode::Path) {
+            fail("default_mode 'path' needs a distance estimator: this source defines "
+                 "FGR_SCENE_INSIDE_ONLY (use \"brute\" or NULL)");
+        }
+        scene.default_mode = RenderMode::Brute;
+    }
     add_builtin_params(scene);
     check_builtin_defaults(scene);
     return scene;

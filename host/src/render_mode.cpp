@@ -13,6 +13,9 @@ std::span<const RenderModeInfo> render_modes() {
                        "Blinn-Phong with the scene's lights and effects (fast, interactive)"},
         RenderModeInfo{RenderMode::Path, "path",
                        "unbiased path tracing: materials, sun, sky and image-based lighting"},
+        RenderModeInfo{RenderMode::Brute, "brute",
+                       "brute-force sampling of the inside test, screen-space shading: renders "
+                       "sets with no distance estimator (progressive: more passes, closer hits)"},
     };
     return modes;
 }

@@ -10,6 +10,7 @@
 #include <string>
 
 #include <glm/geometric.hpp>
+#include <fmt/format.h>
 #include <spdlog/spdlog.h>
 
 #include "fgr/camera.hpp"
@@ -108,12 +109,33 @@ void warn_once(const std::string& message) {
     if (said.insert(message).second) spdlog::warn("{}", message);
 }
 
+Frame cancelled_frame() {
+    Frame cancelled;
+    cancelled.cancelled = true;
+    return cancelled;
+}
+
 double elapsed_ms(std::chrono::steady_clock::time_point since) {
     return std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - since)
         .count();
 }
 
 }  // namespace
+
+void check_mode_supported(const Scene& scene, RenderMode mode) {
+    if (mode == RenderMode::Brute && scene.ifs) {
+        throw std::invalid_argument(fmt::format(
+            "the IFS scene '{}' cannot render in the brute mode: it is ray traced exactly and has "
+            "neither an inside test nor a distance estimator (use --mode shaded or path)",
+            scene.id));
+    }
+    if (mode != RenderMode::Brute && scene.inside_only()) {
+        throw std::invalid_argument(fmt::format(
+            "scene '{}' has no distance estimator (its source defines only scene_inside): it "
+            "renders only with --mode brute, not {}",
+            scene.id, render_mode_name(mode)));
+    }
+}
 
 Image16 linear_image16(const Frame& frame, float exposure) {
     Image16 image{frame.image.width, frame.image.height, {}};
@@ -166,13 +188,14 @@ TileLayout tile_layout(int packet_width, int width, int height) {
 Renderer::Renderer(const ComputeDevice& device, ProgramCache& cache, const Scene& scene,
                    const KernelSwitches& switches)
     : device_(device), scene_(scene), switches_(switches) {
+    check_mode_supported(scene, switches.mode);
     switches_.packet_width = trusted_packet_width(device, cache, switches.double_precision,
                                                   switches.packet_width, warn_once);
     program_ = cache.build(device, assemble_program(scene, switches_), &build_report_);
     render_kernel_ = cl::Kernel(program_, "fgr_render");
     probe_kernel_ = cl::Kernel(program_, "fgr_probe_de");
     normal_kernel_ = cl::Kernel(program_, "fgr_probe_normal");
-    mode_ = make_mode_kernel(switches_.mode, device, scene);
+    mode_ = make_mode_kernel(switches_.mode, device, program_, scene);
     warm_up();
 }
 
@@ -187,9 +210,11 @@ void Renderer::warm_up() {
     tiny.params = default_param_values(scene_);
     const auto start = std::chrono::steady_clock::now();
     render(tiny);
-    const glm::vec3 origin(0.0f);
-    probe_de(std::span(&origin, 1), tiny.params);
-    probe_normals(std::span(&origin, 1), tiny.params, 1e-3f);
+    if (!scene_.inside_only()) {  // an inside-only scene has no DE to probe
+        const glm::vec3 origin(0.0f);
+        probe_de(std::span(&origin, 1), tiny.params);
+        probe_normals(std::span(&origin, 1), tiny.params, 1e-3f);
+    }
     build_report_.build_ms += elapsed_ms(start);
 }
 
@@ -198,9 +223,10 @@ cl::Buffer Renderer::upload(const std::vector<float>& values) {
                       values.size() * sizeof(float), const_cast<float*>(values.data()));
 }
 
-bool Renderer::launch_tiles(int tiles, int group, const std::function<bool()>& cancel) {
+bool Renderer::launch_tiles(cl::Kernel& kernel, int tiles, int group,
+                            const std::function<bool()>& cancel) {
     if (!cancel) {
-        device_.queue.enqueueNDRangeKernel(render_kernel_, cl::NullRange, global_range(tiles, group),
+        device_.queue.enqueueNDRangeKernel(kernel, cl::NullRange, global_range(tiles, group),
                                            cl::NDRange(group));
         return true;
     }
@@ -210,7 +236,7 @@ bool Renderer::launch_tiles(int tiles, int group, const std::function<bool()>& c
     const int band = std::max(1, (groups + kCancelBands - 1) / kCancelBands) * group;
     for (int first = 0; first < tiles; first += band) {
         if (cancel()) return false;
-        device_.queue.enqueueNDRangeKernel(render_kernel_, cl::NDRange(first),
+        device_.queue.enqueueNDRangeKernel(kernel, cl::NDRange(first),
                                            global_range(std::min(band, tiles - first), group),
                                            cl::NDRange(group));
         device_.queue.finish();
@@ -228,12 +254,17 @@ Frame Renderer::render(const FrameRequest& request) {
     const int plane_count = kCommonPlanes + mode_->extra_planes(switches_);
     cl::Buffer planes(device_.context, CL_MEM_READ_WRITE, sizeof(float) * plane_count * plane);
     const int tiles = layout.tiles_x * layout.tiles_y;
-    render_kernel_.setArg(0, planes);
-    render_kernel_.setArg(1, plane);
-    render_kernel_.setArg(2, tiles);
-    render_kernel_.setArg(3, camera_frame(request.view, request.width, request.height));
-    render_kernel_.setArg(5, params);
-    mode_->bind(render_kernel_, request);
+    const CameraFrame camera = camera_frame(request.view, request.width, request.height);
+    cl::Kernel* resolve = mode_->resolve_kernel();
+    for (cl::Kernel* kernel : {&render_kernel_, resolve}) {
+        if (kernel == nullptr) continue;
+        kernel->setArg(0, planes);
+        kernel->setArg(1, plane);
+        kernel->setArg(2, tiles);
+        kernel->setArg(3, camera);
+        kernel->setArg(5, params);
+    }
+    mode_->bind(render_kernel_, request, layout);
     const int group = work_group_size(device_);
     // Samples accumulate in the planes, one launch each, in order (in-order queue). Sample 0
     // overwrites them; a request starting later starts from zeroed planes instead.
@@ -249,17 +280,17 @@ Frame Renderer::render(const FrameRequest& request) {
     int done = 0;
     while (done < request.samples) {
         render_kernel_.setArg(4, request.first_sample + done);
-        if (!launch_tiles(tiles, group, request.cancel)) {
-            Frame cancelled;
-            cancelled.cancelled = true;
-            return cancelled;
-        }
+        if (!launch_tiles(render_kernel_, tiles, group, request.cancel)) return cancelled_frame();
         ++done;
         if (request.on_sample || request.enough) {
             device_.queue.finish();  // report each sample as it completes
             if (request.on_sample) request.on_sample(done, request.samples);
             if (request.enough && done < request.samples && request.enough()) break;
         }
+    }
+    if (resolve != nullptr) {
+        resolve->setArg(4, request.first_sample + done);
+        if (!launch_tiles(*resolve, tiles, group, request.cancel)) return cancelled_frame();
     }
     std::vector<float> host(static_cast<size_t>(plane) * plane_count);
     device_.queue.enqueueReadBuffer(planes, CL_TRUE, 0, host.size() * sizeof(float), host.data());
@@ -269,7 +300,7 @@ Frame Renderer::render(const FrameRequest& request) {
     frame.depth.resize(static_cast<size_t>(request.width) * request.height);
     frame.linear.resize(frame.depth.size() * 3);
     frame.samples = done;
-    const float average = 1.0f / static_cast<float>(done);
+    const float average = mode_->sums_samples() ? 1.0f / static_cast<float>(done) : 1.0f;
     for (int y = 0; y < request.height; ++y) {
         for (int x = 0; x < request.width; ++x) {
             const size_t source = layout.index(x, y);
@@ -335,6 +366,11 @@ std::vector<float> Renderer::probe_de(std::span<const glm::vec3> points,
 
 std::vector<float> Renderer::probe_de(std::span<const glm::dvec3> points,
                                       const std::vector<float>& params) {
+    if (scene_.inside_only()) {
+        throw std::logic_error(fmt::format(
+            "scene '{}' has no distance estimator to probe (it defines only scene_inside)",
+            scene_.id));
+    }
     if (points.empty()) return {};
     int plane = 0;
     std::vector<float> distances =
@@ -345,6 +381,12 @@ std::vector<float> Renderer::probe_de(std::span<const glm::dvec3> points,
 
 std::vector<glm::vec3> Renderer::probe_normals(std::span<const glm::vec3> points,
                                                const std::vector<float>& params, float eps) {
+    if (scene_.inside_only()) {
+        throw std::logic_error(fmt::format(
+            "scene '{}' has no distance estimator to take normals from (it defines only "
+            "scene_inside)",
+            scene_.id));
+    }
     if (points.empty()) return {};
     int plane = 0;
     const std::vector<glm::dvec3> wide(points.begin(), points.end());

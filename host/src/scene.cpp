@@ -1,6 +1,8 @@
 #include "fgr/scene.hpp"
 
 #include <algorithm>
+#include <regex>
+#include <string_view>
 
 #include <glm/geometric.hpp>
 
@@ -126,7 +128,69 @@ void add_effect_params(Scene& scene) {
                                   "depth of field: distance of the sharp plane"));
 }
 
+// The source with its comments blanked out (newlines kept), so a commented-out #define is none.
+std::string without_comments(std::string_view source) {
+    std::string out;
+    out.reserve(source.size());
+    for (size_t i = 0; i < source.size(); ++i) {
+        if (source.compare(i, 2, "//") == 0) {
+            while (i < source.size() && source[i] != '\n') ++i;
+            if (i < source.size()) out += '\n';
+        } else if (source.compare(i, 2, "/*") == 0) {
+            const size_t end = source.find("*/", i + 2);
+            const size_t stop = end == std::string_view::npos ? source.size() : end + 2;
+            for (; i < stop; ++i) {
+                if (source[i] == '\n') out += '\n';
+            }
+            out += ' ';
+            --i;
+        } else {
+            out += source[i];
+        }
+    }
+    return out;
+}
+
+// Whether the source says `#define FGR_SCENE_INSIDE_ONLY` on a line of its own (a scene with an
+// inside test and no distance estimator, see kernels/fgr_geometry.cl).
+bool declares_inside_only(std::string_view source) {
+    static const std::regex directive(R"(^[ \t]*#[ \t]*define[ \t]+FGR_SCENE_INSIDE_ONLY\b)",
+                                      std::regex::multiline);
+    if (source.find("FGR_SCENE_INSIDE_ONLY") == std::string_view::npos) return false;
+    const std::string code = without_comments(source);
+    return std::regex_search(code, directive);
+}
+
+// The knobs of the brute-force mode (kernels/fgr_mode_brute.cl); other modes never read them.
+void add_brute_force_params(Scene& scene) {
+    const std::string group = "Brute force";
+    scene.params.push_back(builtin_param("brute_samples", "Samples per pass", ParamType::Int,
+                                         1.0f, 1024.0f, 24.0f,
+                                         "brute force: inside tests along each ray per pass, "
+                                         "stratified between near and the best hit so far",
+                                         group));
+    scene.params.push_back(builtin_param("brute_bisection", "Bisection steps", ParamType::Int,
+                                         0.0f, 40.0f, 16.0f,
+                                         "brute force: steps refining each new hit, each halving "
+                                         "its depth's uncertainty",
+                                         group));
+    scene.params.push_back(builtin_param("brute_near", "Near distance", ParamType::Float, 0.0f,
+                                         1e6f, 0.0f,
+                                         "brute force: sampling starts this far from the camera",
+                                         group));
+    ParamInfo solid = builtin_param("brute_solid", "Solid", ParamType::Int, 0.0f, 2.0f, 0.0f,
+                                    "brute force: what rays hit: auto (the state they do not "
+                                    "start in), the set, or its complement (interior renderings)",
+                                    group);
+    solid.choices = {"auto", "set", "complement"};
+    scene.params.push_back(std::move(solid));
+}
+
 }  // namespace
+
+bool Scene::inside_only() const { return declares_inside_only(source); }
+
+bool Scene::has_distance_estimator() const { return ifs == nullptr && !inside_only(); }
 
 const ParamInfo* Scene::find_param(const std::string& param_id) const {
     return find_by(params, param_id, [](const ParamInfo& param) { return param.id; });
@@ -177,6 +241,7 @@ void add_builtin_params(Scene& scene) {
                                          0.01f, 16.0f, 0.5f,
                                          "normal stencil size, in pixel footprints at the hit"));
     add_effect_params(scene);
+    add_brute_force_params(scene);
 }
 
 }  // namespace fgr

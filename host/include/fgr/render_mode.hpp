@@ -14,6 +14,7 @@ namespace fgr {
 enum class RenderMode {
     Shaded,  // Blinn-Phong plus the effects the scene asks for: fast, interactive
     Path,    // unbiased Monte Carlo path tracing with materials, sky and image-based lighting
+    Brute,   // brute-force sampling of an inside test, screen-space shading: sets with no DE
 };
 
 struct RenderModeInfo {

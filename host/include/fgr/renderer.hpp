@@ -102,14 +102,21 @@ struct Frame {
     std::vector<float> alpha;
     std::optional<LaneStats> lane_stats;  // path mode built with stats
     std::optional<IfsLevels> ifs_levels;  // IFS scenes in the shaded mode
+    // Render mode "brute" built with stats: inside tests per pixel, all passes of this frame.
+    std::optional<double> inside_tests_per_pixel;
 };
 
 // Image sizes fgr accepts; larger would not fit device buffers on small machines.
 constexpr int kMaxImageSide = 16384;
 
+// Throws std::invalid_argument, naming the scene and what it can do, when `scene` cannot render
+// in `mode`: inside-only scenes render only in the brute mode, which IFS scenes cannot.
+void check_mode_supported(const Scene& scene, RenderMode mode);
+
 class Renderer {
 public:
-    // Throws KernelBuildError when the scene's source does not compile.
+    // Throws KernelBuildError when the scene's source does not compile, std::invalid_argument
+    // when the scene cannot render in the switches' mode (check_mode_supported).
     Renderer(const ComputeDevice& device, ProgramCache& cache, const Scene& scene,
              const KernelSwitches& switches);
     ~Renderer();
@@ -139,8 +146,10 @@ private:
     // timed frame (counted in build_report().build_ms).
     void warm_up();
     cl::Buffer upload(const std::vector<float>& values);
-    // Launches the render kernel over `tiles`; false when `cancel` (if set) asked to stop.
-    bool launch_tiles(int tiles, int group, const std::function<bool()>& cancel);
+    // Launches `kernel` (the render kernel or the mode's resolve kernel) over `tiles`; false
+    // when `cancel` (if set) asked to stop.
+    bool launch_tiles(cl::Kernel& kernel, int tiles, int group,
+                      const std::function<bool()>& cancel);
     // Points as planes x, y, z (the nearest floats) then x, y, z of the rest (what the floats
     // miss of the double points), padded to whole packets, and the packet count.
     cl::Buffer upload_points(std::span<const glm::dvec3> points, int* packets, int* plane);

@@ -87,7 +87,7 @@ struct Scene {
     std::string id;
     std::string name;
     std::string description;
-    std::string source;       // OpenCL C source of the DE (and optional colour)
+    std::string source;       // OpenCL C source of the DE or inside test (and optional colour)
     std::string source_name;  // file name shown in compiler messages
     std::filesystem::path plugin_file;
     std::vector<ParamInfo> params;  // the scene's own, then the built-in quality knobs
@@ -99,6 +99,12 @@ struct Scene {
     RenderMode default_mode = RenderMode::Shaded;  // what the scene asks for (ABI 1.2)
     // The maps of a scene read from an IFS file (fgr/ifs.hpp); null for distance-estimated scenes.
     std::shared_ptr<const IfsScene> ifs;
+
+    // Whether the source defines only an inside test (`#define FGR_SCENE_INSIDE_ONLY`, see
+    // kernels/fgr_geometry.cl): such a scene renders only in the brute-force mode.
+    bool inside_only() const;
+    // A distance estimator to march: not for IFS scenes (traced exactly) nor inside-only ones.
+    bool has_distance_estimator() const;
 
     const ParamInfo* find_param(const std::string& param_id) const;
     const NamedCamera* find_camera(const std::string& camera_name) const;

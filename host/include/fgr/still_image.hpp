@@ -26,6 +26,8 @@ struct StillSettings {
 
 // Samples per pixel a path-traced still takes unless told otherwise.
 constexpr int kPathSamples = 64;
+// Passes a brute-force still takes unless told otherwise.
+constexpr int kBrutePasses = 16;
 
 // Auxiliary layers an EXR still carries beside its linear image.
 struct Aovs {

@@ -26,8 +26,20 @@ public:
     // Planes the kernel writes after the common four, with these switches.
     virtual int extra_planes(const KernelSwitches& switches) const = 0;
 
-    // Sets the kernel's arguments from kFirstModeArgument on, for this frame.
-    virtual void bind(cl::Kernel& kernel, const FrameRequest& request) = 0;
+    // Sets the kernel's arguments from kFirstModeArgument on, for this frame (and those of its
+    // resolve kernel, if it has one).
+    virtual void bind(cl::Kernel& kernel, const FrameRequest& request,
+                      const TileLayout& layout) = 0;
+
+    // A second kernel the renderer runs once after the samples, over the same tiles and with the
+    // same first arguments (FGR_RENDER_ARGS, `sample` being the samples done), for a mode whose
+    // colour needs the whole image (the brute-force mode's screen-space shading); null for modes
+    // that shade as they sample.
+    virtual cl::Kernel* resolve_kernel() { return nullptr; }
+
+    // Whether the colour planes hold a sum over the samples, which the renderer divides by their
+    // count, or the finished colour.
+    virtual bool sums_samples() const { return true; }
 
     // Fills what the mode adds to a frame from the planes read back (plane p of pixel (x, y) at
     // planes[p * layout.plane_size() + layout.index(x, y)]), `samples` samples summed in them.
@@ -38,7 +50,11 @@ public:
 // A read-only device buffer holding `values` (one unused float when empty).
 cl::Buffer upload_floats(const ComputeDevice& device, const std::vector<float>& values);
 
+// The scene's lights as fgr_shade.cl reads them: FGR_LIGHT_FLOATS floats each (type, vector with
+// directions normalised, colour, intensity).
+std::vector<float> scene_light_values(const Scene& scene);
+
 std::unique_ptr<ModeKernel> make_mode_kernel(RenderMode mode, const ComputeDevice& device,
-                                             const Scene& scene);
+                                             const cl::Program& program, const Scene& scene);
 
 }  // namespace fgr

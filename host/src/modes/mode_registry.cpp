@@ -1,9 +1,12 @@
 // Which host module serves which render mode.
+#include "modes/brute_mode.hpp"
 #include "modes/mode_kernel.hpp"
 #include "modes/path_mode.hpp"
 #include "modes/shaded_mode.hpp"
 
 #include <stdexcept>
+
+#include <glm/geometric.hpp>
 
 namespace fgr {
 
@@ -14,11 +17,26 @@ cl::Buffer upload_floats(const ComputeDevice& device, const std::vector<float>& 
                       padded.size() * sizeof(float), const_cast<float*>(padded.data()));
 }
 
+std::vector<float> scene_light_values(const Scene& scene) {
+    constexpr size_t kLightFloats = 8;  // FGR_LIGHT_FLOATS in fgr_shade.cl
+    std::vector<float> values;
+    values.reserve(scene.lights.size() * kLightFloats);
+    for (const Light& light : scene.lights) {
+        const glm::vec3 vector =
+            light.type == LightType::Directional ? glm::normalize(light.vector) : light.vector;
+        values.insert(values.end(), {light.type == LightType::Point ? 1.0f : 0.0f, vector.x,
+                                     vector.y, vector.z, light.colour.r, light.colour.g,
+                                     light.colour.b, light.intensity});
+    }
+    return values;
+}
+
 std::unique_ptr<ModeKernel> make_mode_kernel(RenderMode mode, const ComputeDevice& device,
-                                             const Scene& scene) {
+                                             const cl::Program& program, const Scene& scene) {
     switch (mode) {
         case RenderMode::Shaded: return std::make_unique<ShadedMode>(device, scene);
         case RenderMode::Path: return std::make_unique<PathMode>(device, scene);
+        case RenderMode::Brute: return std::make_unique<BruteMode>(device, program, scene);
     }
     throw std::invalid_argument("unknown render mode");
 }

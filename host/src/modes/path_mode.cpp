@@ -164,7 +164,7 @@ void PathMode::prepare(const PathSettings& settings) {
     bound_scene_lights_ = settings.scene_lights;
 }
 
-void PathMode::bind(cl::Kernel& kernel, const FrameRequest& request) {
+void PathMode::bind(cl::Kernel& kernel, const FrameRequest& request, const TileLayout&) {
     const PathSettings& settings = request.path;
     check_path_settings(settings);
     prepare(settings);

@@ -13,7 +13,7 @@ class PathMode final : public ModeKernel {
 public:
     PathMode(const ComputeDevice& device, const Scene& scene);
     int extra_planes(const KernelSwitches& switches) const override;
-    void bind(cl::Kernel& kernel, const FrameRequest& request) override;
+    void bind(cl::Kernel& kernel, const FrameRequest& request, const TileLayout& layout) override;
     void read_back(const std::vector<float>& planes, const TileLayout& layout,
                    const FrameRequest& request, int samples, Frame& frame) const override;
 

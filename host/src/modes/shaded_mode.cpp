@@ -3,26 +3,8 @@
 // its secondary rays' DE evaluations and its IFS heap's high-water mark (planes 4 to 7).
 #include "modes/shaded_mode.hpp"
 
-#include <glm/geometric.hpp>
-
 namespace fgr {
 namespace {
-
-constexpr int kLightFloats = 8;  // FGR_LIGHT_FLOATS in fgr_shade.cl
-
-// Each light as fgr_shade.cl reads it: type, vector (directions normalised), colour, intensity.
-std::vector<float> light_values(const Scene& scene) {
-    std::vector<float> values;
-    values.reserve(scene.lights.size() * kLightFloats);
-    for (const Light& light : scene.lights) {
-        const glm::vec3 vector =
-            light.type == LightType::Directional ? glm::normalize(light.vector) : light.vector;
-        values.insert(values.end(), {light.type == LightType::Point ? 1.0f : 0.0f, vector.x,
-                                     vector.y, vector.z, light.colour.r, light.colour.g,
-                                     light.colour.b, light.intensity});
-    }
-    return values;
-}
 
 // Sums the stats planes (4: steps, 5: ran out of steps, 6: secondary rays' DE evaluations) over
 // the image's pixels; depth (plane 3) says which pixels hit and so had their normal estimated.
@@ -75,7 +57,7 @@ IfsLevels hit_levels(const std::vector<float>& planes, const TileLayout& layout,
 }  // namespace
 
 ShadedMode::ShadedMode(const ComputeDevice& device, const Scene& scene)
-    : lights_(upload_floats(device, light_values(scene))),
+    : lights_(upload_floats(device, scene_light_values(scene))),
       light_count_(static_cast<cl_int>(scene.lights.size())),
       ifs_(scene.ifs != nullptr) {}
 
@@ -84,7 +66,7 @@ int ShadedMode::extra_planes(const KernelSwitches& switches) const {
     return (switches.stats ? 4 : 0) + (ifs_ ? 1 : 0);
 }
 
-void ShadedMode::bind(cl::Kernel& kernel, const FrameRequest&) {
+void ShadedMode::bind(cl::Kernel& kernel, const FrameRequest&, const TileLayout&) {
     kernel.setArg(kFirstModeArgument, lights_);
     kernel.setArg(kFirstModeArgument + 1, light_count_);
 }

@@ -214,6 +214,8 @@ Renderer* RenderWorker::build_renderer(const std::shared_ptr<const Scene>& scene
         *failure = {fmt::format("scene '{}': {} failed: {}", scene->id, error.what(),
                                 cl_error_name(error.err())),
                     ""};
+    } catch (const std::invalid_argument& error) {  // a mode the scene cannot render in
+        *failure = {error.what(), ""};
     }
     {
         std::lock_guard lock(mutex_);
@@ -288,7 +290,7 @@ void RenderWorker::render_pass(Renderer& renderer, const ViewState& state) {
         std::lock_guard lock(mutex_);
         pass = quality_.next_pass(state.interactive, accumulated_samples_,
                                   int64_t{state.width} * state.height,
-                                  state.mode == RenderMode::Path ? kPathSampleCap : 0);
+                                  mode_sample_cap(state.mode));
     }
     switch (pass.kind) {
         case RenderPass::Kind::Preview: render_preview(renderer, state, pass.scale); break;
@@ -326,6 +328,15 @@ void RenderWorker::refine(Renderer& renderer, const ViewState& state, int sample
     {
         std::lock_guard lock(mutex_);
         quality_.record_frame(int64_t{state.width} * state.height, frame.render_ms);
+    }
+    if (state.mode == RenderMode::Brute) {
+        // The renderer carries the depth buffer from pass to pass: each frame is the whole image
+        // so far, not one more sample to average.
+        accumulated_samples_ = sample + 1;
+        publish({std::move(frame.image), 1.0f, accumulated_samples_, frame.render_ms,
+                 samples_per_second(state.width, state.height, frame.render_ms),
+                 renderer.switches().double_precision, state.generation});
+        return;
     }
     if (sample == 0) {
         ifs_depth_reached_ = frame.ifs_levels ? frame.ifs_levels->deepest : -1;

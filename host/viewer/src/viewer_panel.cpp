@@ -89,7 +89,9 @@ void ViewerApp::draw_status_overlay() {
         const bool path = last_state_.mode == RenderMode::Path;
         ImGui::Text("resolution %.0f%%  samples %d/%d  frame %.0f ms  %s",
                     shown_->scale * 100.0f, shown_->samples,
-                    path ? kPathSampleCap : quality_.sample_cap, shown_->render_ms,
+                    mode_sample_cap(last_state_.mode) > 0 ? mode_sample_cap(last_state_.mode)
+                                                          : quality_.sample_cap,
+                    shown_->render_ms,
                     precision_label(precision_, shown_->double_precision));
         if (path) {
             ImGui::Text("path tracing: %d samples/pixel, %.2f M samples/s", shown_->samples,

@@ -1,0 +1,44 @@
+#include "modes/brute_mode.hpp"
+
+namespace fgr {
+
+BruteMode::BruteMode(const ComputeDevice& device, const cl::Program& program, const Scene& scene)
+    : device_(device),
+      shade_kernel_(program, "fgr_brute_shade"),
+      lights_(upload_floats(device, scene_light_values(scene))),
+      light_count_(static_cast<cl_int>(scene.lights.size())) {}
+
+int BruteMode::extra_planes(const KernelSwitches& switches) const { return switches.stats ? 1 : 0; }
+
+void BruteMode::bind(cl::Kernel& kernel, const FrameRequest& request, const TileLayout& layout) {
+    const int floats = layout.plane_size();
+    const bool same_image = floats == state_floats_ && request.width == state_width_ &&
+                            request.height == state_height_;
+    if (!same_image) {
+        state_ = cl::Buffer(device_.context, CL_MEM_READ_WRITE, sizeof(float) * floats);
+        state_floats_ = floats;
+        state_width_ = request.width;
+        state_height_ = request.height;
+        // A continued render (first sample > 0) of a new size has nothing to continue from.
+        device_.queue.enqueueFillBuffer(state_, -1.0f, 0, sizeof(float) * floats);
+    }
+    kernel.setArg(kFirstModeArgument, state_);
+    shade_kernel_.setArg(kFirstModeArgument, state_);
+    shade_kernel_.setArg(kFirstModeArgument + 1, lights_);
+    shade_kernel_.setArg(kFirstModeArgument + 2, light_count_);
+}
+
+void BruteMode::read_back(const std::vector<float>& planes, const TileLayout& layout,
+                          const FrameRequest& request, int, Frame& frame) const {
+    const size_t plane = static_cast<size_t>(layout.plane_size());
+    if (planes.size() < plane * (kCommonPlanes + 1)) return;
+    double tests = 0.0;
+    for (int y = 0; y < request.height; ++y) {
+        for (int x = 0; x < request.width; ++x) {
+            tests += planes[kCommonPlanes * plane + static_cast<size_t>(layout.index(x, y))];
+        }
+    }
+    frame.inside_tests_per_pixel = tests / (double(request.width) * double(request.height));
+}
+
+}  // namespace fgr
