@@ -28,21 +28,22 @@ static const fgr_param_desc params[] = {
 };
 
 /* The set spans about (-0.4, -0.7, -1.0) .. (2.2, 1.8, 1.6) (its big shell) and holds the small
- * inverted twin within |p| < 0.4; the mouth of the shell faces (-x, -y). */
+ * inverted twin, a ball of thin shells within |p| < 0.4, in the mouth of the shell, which faces
+ * (-x, -y). max_distance below is 7.5: the far side of the set from the farthest camera. */
 static const fgr_camera cameras[] = {
-    FGR_CAMERA_Z_UP("conch", 4.0f, -2.6f, 2.2f, 0.9f, 0.55f, 0.4f, 50.0f),
+    FGR_CAMERA_Z_UP("conch", 4.4f, -2.9f, 2.3f, 0.9f, 0.55f, 0.25f, 50.0f),
     FGR_CAMERA_Z_UP("mouth", -2.35f, -1.63f, 1.89f, 0.88f, 0.52f, 0.28f, 50.0f),
-    FGR_CAMERA_Z_UP("pagoda", 2.23f, 1.42f, 4.8f, 0.88f, 0.52f, 0.28f, 50.0f),
-    FGR_CAMERA_Z_UP("twin", -1.3f, -1.0f, 0.75f, 0.0f, 0.0f, 0.0f, 50.0f),
+    FGR_CAMERA_Z_UP("pagoda", 2.4f, 1.55f, 5.2f, 0.88f, 0.52f, 0.15f, 50.0f),
+    FGR_CAMERA_Z_UP("spiral", -3.5f, 2.8f, 0.6f, 0.9f, 0.5f, 0.3f, 50.0f),
 };
 
-/* Once round the shell, rising over its top and back. */
+/* Once round the shell, past the spiral and mouth views. */
 static const fgr_keyframe orbit_keys[] = {
-    FGR_KEYFRAME_Z_UP(0.0f, 4.0f, -2.6f, 2.2f, 0.9f, 0.55f, 0.4f, 50.0f),
-    FGR_KEYFRAME_Z_UP(3.0f, 4.4f, 3.2f, 1.4f, 0.9f, 0.55f, 0.4f, 50.0f),
-    FGR_KEYFRAME_Z_UP(6.0f, -2.6f, 3.6f, 2.6f, 0.9f, 0.55f, 0.4f, 50.0f),
-    FGR_KEYFRAME_Z_UP(9.0f, -2.35f, -1.63f, 1.89f, 0.88f, 0.52f, 0.28f, 50.0f),
-    FGR_KEYFRAME_Z_UP(12.0f, 4.0f, -2.6f, 2.2f, 0.9f, 0.55f, 0.4f, 50.0f),
+    FGR_KEYFRAME_Z_UP(0.0f, 4.4f, -2.9f, 2.3f, 0.9f, 0.55f, 0.25f, 50.0f),
+    FGR_KEYFRAME_Z_UP(3.0f, 4.6f, 3.0f, 1.2f, 0.9f, 0.55f, 0.3f, 50.0f),
+    FGR_KEYFRAME_Z_UP(6.0f, -3.5f, 2.8f, 0.6f, 0.9f, 0.5f, 0.3f, 50.0f),
+    FGR_KEYFRAME_Z_UP(9.0f, -2.8f, -2.0f, 2.0f, 0.88f, 0.52f, 0.28f, 50.0f),
+    FGR_KEYFRAME_Z_UP(12.0f, 4.4f, -2.9f, 2.3f, 0.9f, 0.55f, 0.25f, 50.0f),
 };
 
 /* Into the mouth of the shell, towards the twin at its bottom. */
@@ -65,13 +66,13 @@ static const fgr_light lights[] = {
 
 /* No distance estimate: max_steps, hit_threshold and step_factor are the march's and unused
  * here; max_distance is where the brute-force sampling along each ray ends, just past the set
- * from every camera above; 12 iterations keep the shells thick enough to sample. */
+ * from every camera and keyframe above; 12 iterations keep the shells thick enough to sample. */
 static const fgr_scene_desc scene = FGR_SCENE_WITH_MODE(
     "stereographic-julia", "Stereographic quaternion Julia",
     "quaternion Julia set q -> q^2 + c on the 3-sphere, stereographically projected to R^3 "
     "(inside-only)",
     stereographic_julia_cl, "stereographic_julia.cl", params, cameras, paths, lights,
-    FGR_EFFECT_AMBIENT_OCCLUSION | FGR_EFFECT_GLOW, FGR_MARCH(256u, 7.0f, 1.0f, 12u, 1.0f),
+    FGR_EFFECT_AMBIENT_OCCLUSION | FGR_EFFECT_GLOW, FGR_MARCH(256u, 7.5f, 1.0f, 12u, 1.0f),
     "brute");
 
 FGR_PLUGIN_EXPORT const fgr_scene_desc* fgr_scene_entry(void) { return &scene; }
