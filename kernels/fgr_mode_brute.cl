@@ -3,7 +3,8 @@
  * its DE's sign against the hit threshold, see fgr_geometry.cl), so this mode renders sets no DE
  * is known for.
  *
- * Two kernels:
+ * Two kernels (planes: colour, depth, then the albedo and normal the shading used, then with
+ * FGR_STATS each pixel's inside tests):
  *   fgr_render       one pass of sampling along each pixel's ray. The pass draws
  *                    brute_samples stratified samples between brute_near and the pixel's best
  *                    depth so far (max_distance before the first hit), stops at the first sample
@@ -24,6 +25,12 @@
  * Arguments of both: those every mode takes (planes .. PARAMS, see fgr_camera.cl), then `state`
  * (each pixel's best depth, tile-major like the planes; -1: none yet); fgr_brute_shade then takes
  * the scene's lights (FGR_LIGHT_FLOATS floats each) and their count. */
+
+/* Planes after the common four: the shading's albedo and normal (for EXR layers and tests), then
+ * with FGR_STATS the inside tests. */
+#define FGR_BRUTE_ALBEDO_PLANE 4
+#define FGR_BRUTE_NORMAL_PLANE 7
+#define FGR_BRUTE_STATS_PLANE 10
 
 #define FGR_BRUTE_SOLID_AUTO 0
 #define FGR_BRUTE_SOLID_SET 1
@@ -131,8 +138,8 @@ inline real brute_pass(vec3 eye, vec3 dir, float footprint, real best, mask acti
 }
 
 /* Renders pass `sample` of every pixel of the tile: refines `state` and writes the depth so far
- * to plane 3 (and with FGR_STATS, the pass's inside tests, summed over passes, to plane 4). The
- * colour planes are left to fgr_brute_shade. */
+ * to plane 3 (and with FGR_STATS, the pass's inside tests, summed over passes, to
+ * FGR_BRUTE_STATS_PLANE). The colour planes are left to fgr_brute_shade. */
 __kernel void fgr_render(FGR_RENDER_ARGS, __global float* state) {
     const int tile = get_global_id(0);
     if (tile >= tile_count) return;
@@ -146,7 +153,8 @@ __kernel void fgr_render(FGR_RENDER_ARGS, __global float* state) {
     fgr_store(best, tile, state);
     fgr_store(best, tile, planes + 3 * plane_size);
 #ifdef FGR_STATS
-    accumulate_plane(convert_real(tests), sample, tile, planes + 4 * plane_size);
+    accumulate_plane(convert_real(tests), sample, tile,
+                     planes + FGR_BRUTE_STATS_PLANE * plane_size);
 #endif
 }
 
@@ -178,9 +186,10 @@ inline vec3 brute_world_point(camera_frame camera, vec3 eye, index_lanes x, inde
     return v3_mad(eye, brute_pixel_direction(camera, convert_real(x), convert_real(y)), depth);
 }
 
-/* The surface's tangent along pixel step (dx, dy) at `centre`: towards whichever neighbour
- * continues the surface best (the smaller depth jump), so a pixel at a silhouette takes its
- * tangent from the side it belongs to. *valid is false where neither neighbour does. */
+/* The surface's tangent along pixel step (dx, dy) at `centre`: the central difference where both
+ * neighbours continue the surface (second-order accurate), otherwise towards whichever neighbour
+ * continues it best (the smaller depth jump), so a pixel at a silhouette takes its tangent from
+ * the side it belongs to. *valid is false where neither neighbour does. */
 inline vec3 brute_tangent(__global const float* state, camera_frame camera, vec3 eye,
                           index_lanes x, index_lanes y, real depth, vec3 centre, int dx, int dy,
                           mask* valid) {
@@ -190,10 +199,14 @@ inline vec3 brute_tangent(__global const float* state, camera_frame camera, vec3
     const real jump_before = fabs(depth - before), jump_after = fabs(after - depth);
     const mask use_after = has_after & (!has_before | (jump_after <= jump_before));
     const real jump = select(jump_before, jump_after, use_after);
-    *valid = (has_before | has_after) & (jump <= FGR_BRUTE_DISCONTINUITY * depth);
-    const vec3 towards_after = v3_sub(brute_world_point(camera, eye, x + dx, y + dy, after), centre);
-    const vec3 from_before = v3_sub(centre, brute_world_point(camera, eye, x - dx, y - dy, before));
-    return v3_select(from_before, towards_after, use_after);
+    const real limit = FGR_BRUTE_DISCONTINUITY * depth;
+    *valid = (has_before | has_after) & (jump <= limit);
+    const mask central = has_before & has_after & (jump_before <= limit) & (jump_after <= limit);
+    const vec3 after_point = brute_world_point(camera, eye, x + dx, y + dy, after);
+    const vec3 before_point = brute_world_point(camera, eye, x - dx, y - dy, before);
+    const vec3 one_sided = v3_select(v3_sub(centre, before_point), v3_sub(after_point, centre),
+                                     use_after);
+    return v3_select(one_sided, v3_sub(after_point, before_point), central);
 }
 
 /* The surface normal at pixel (x, y), facing the camera, from its neighbours' world positions;
@@ -225,8 +238,9 @@ inline real brute_spin(real px, real py) {
 
 /* Screen-space ambient occlusion with its radius in world units (ao_radius): each disc sample's
  * world point occludes by how far it rises above the tangent plane (the cosine of its direction
- * with the normal, less a small bias against a curved surface occluding itself), fading to
- * nothing at the radius. An open face gives 1, a crease or a pit less. */
+ * with the normal, less a small bias against a curved surface occluding itself), weighted by
+ * radius / d (at most 4) and fading as 1 - (d / radius)^2 to nothing at the radius. An open face
+ * gives 1, a crease or a pit less. */
 inline real brute_occlusion(__global const float* state, camera_frame camera, vec3 eye,
                             index_lanes x, index_lanes y, real px, real py, real depth,
                             vec3 centre, vec3 n, mask hit, PARAMS) {
@@ -244,11 +258,13 @@ inline real brute_occlusion(__global const float* state, camera_frame camera, ve
         const vec3 v = v3_sub(brute_world_point(camera, eye, sx, sy, sample_depth), centre);
         const real distance = v3_length(v);
         const real rise = v3_dot(n, v) / fmax(distance, FGR_MIN_LENGTH) - 0.1f;
-        const real fade = 1.0f - clamp(distance / radius, 0.0f, 1.0f);
-        occluded += select(fgr_real(0.0f), fmax(rise, 0.0f) * fade * fade,
+        /* As in McGuire et al.'s Alchemy AO, nearer occluders weigh more (up to 4 times). */
+        const real reach = clamp(distance / radius, 0.0f, 1.0f);
+        const real nearness = fmin(radius / fmax(distance, FGR_MIN_LENGTH), 4.0f);
+        occluded += select(fgr_real(0.0f), fmax(rise, 0.0f) * nearness * (1.0f - reach * reach),
                            hit & (sample_depth >= 0.0f));
     }
-    return clamp(1.0f - 2.0f * occluded / (float)FGR_SSAO_SAMPLES, 0.0f, 1.0f);
+    return clamp(1.0f - occluded / (float)FGR_SSAO_SAMPLES, 0.0f, 1.0f);
 }
 
 #if defined(FGR_EFFECT_SHADOWS) || defined(FGR_EFFECT_SOFT_SHADOWS)
@@ -357,6 +373,7 @@ __kernel void fgr_brute_shade(FGR_RENDER_ARGS, __global const float* state,
     const mask hit = pixels.inside & (depth >= 0.0f);
 
     vec3 colour = background(dir);
+    vec3 albedo = v3_splat(0.0f, 0.0f, 0.0f), normal = albedo;
     if (fgr_any(hit)) {
         const real safe_depth = select(fgr_real(1.0f), depth, hit);
         const vec3 p = v3_mad(eye, dir, safe_depth);
@@ -365,9 +382,12 @@ __kernel void fgr_brute_shade(FGR_RENDER_ARGS, __global const float* state,
 #if defined(FGR_EFFECT_AMBIENT_OCCLUSION) || defined(FGR_EFFECT_SAMPLED_OCCLUSION)
         ao = brute_occlusion(state, camera, eye, x, y, px, py, safe_depth, p, n, hit, PARAMS_PASS);
 #endif
-        const vec3 lit = brute_lighting(eye, dir, safe_depth, p, n, scene_colour(p, PARAMS_PASS),
-                                        ao, hit, px, py, camera, lights, light_count, PARAMS_PASS);
+        const vec3 surface_albedo = scene_colour(p, PARAMS_PASS);
+        const vec3 lit = brute_lighting(eye, dir, safe_depth, p, n, surface_albedo, ao, hit, px,
+                                        py, camera, lights, light_count, PARAMS_PASS);
         colour = v3_select(colour, lit, hit);
+        albedo = v3_select(albedo, surface_albedo, hit);
+        normal = v3_select(normal, n, hit);
     }
 #ifdef FGR_EFFECT_GLOW
     colour = brute_glow(colour, state, camera, x, y, px, py, pixels.inside & !hit, PARAMS_PASS);
@@ -379,4 +399,10 @@ __kernel void fgr_brute_shade(FGR_RENDER_ARGS, __global const float* state,
     fgr_store(colour.y, tile, planes + plane_size);
     fgr_store(colour.z, tile, planes + 2 * plane_size);
     fgr_store(select(fgr_real(-1.0f), depth, hit), tile, planes + 3 * plane_size);
+    fgr_store(albedo.x, tile, planes + FGR_BRUTE_ALBEDO_PLANE * plane_size);
+    fgr_store(albedo.y, tile, planes + (FGR_BRUTE_ALBEDO_PLANE + 1) * plane_size);
+    fgr_store(albedo.z, tile, planes + (FGR_BRUTE_ALBEDO_PLANE + 2) * plane_size);
+    fgr_store(normal.x, tile, planes + FGR_BRUTE_NORMAL_PLANE * plane_size);
+    fgr_store(normal.y, tile, planes + (FGR_BRUTE_NORMAL_PLANE + 1) * plane_size);
+    fgr_store(normal.z, tile, planes + (FGR_BRUTE_NORMAL_PLANE + 2) * plane_size);
 }

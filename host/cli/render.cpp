@@ -127,8 +127,9 @@ void render_to_file(const Scene& scene, const FrameRequest& request, const Compu
     settings.precision = options.precision;
     settings.mode = chosen_mode(options.mode, scene);
     const Aovs aovs = parse_aovs(options.aovs);
-    if ((aovs.albedo || aovs.normal) && settings.mode != RenderMode::Path) {
-        throw UsageError("--aov albedo and normal come from the path tracer: add --mode path");
+    if ((aovs.albedo || aovs.normal) && settings.mode == RenderMode::Shaded) {
+        throw UsageError(
+            "--aov albedo and normal come from the path and brute modes: add --mode path or brute");
     }
     FrameRequest reported = request;
     if (!options.samples && settings.mode == RenderMode::Path) reported.samples = kPathSamples;

@@ -170,7 +170,7 @@ void add_brute_force_params(Scene& scene) {
                                          "stratified between near and the best hit so far",
                                          group));
     scene.params.push_back(builtin_param("brute_bisection", "Bisection steps", ParamType::Int,
-                                         0.0f, 40.0f, 16.0f,
+                                         0.0f, 40.0f, 24.0f,
                                          "brute force: steps refining each new hit, each halving "
                                          "its depth's uncertainty",
                                          group));
