@@ -1,7 +1,8 @@
 // Numerical stability of every scene plugin that is built: the DE never overestimates, nothing
 // produces NaN or Inf in the hard cases (the origin, huge points, a camera inside the fractal,
 // every parameter at its extremes, every camera path), and each default view is a real image.
-// New plugins under plugins/ are picked up automatically.
+// New plugins under plugins/ are picked up automatically. Inside-only ones (no DE) render by brute
+// force and get the checks that need no DE (InsideOnlyStability).
 #include <algorithm>
 #include <cmath>
 #include <limits>
@@ -25,10 +26,24 @@ namespace {
 
 using test::all_scenes;
 
+// Every built scene that the shaded mode can march: not the inside-only ones, which have no DE to
+// check and render only by brute force (InsideOnlyStability below; tests/test_brute_mode.cpp
+// renders them from inside the set too, tests/test_lane_safety.cpp at every precision and width).
 std::vector<std::string> scene_ids() {
     std::vector<std::string> ids;
-    for (const auto& scene : all_scenes()) ids.push_back(scene.id);
+    for (const auto& scene : all_scenes()) {
+        if (!scene.inside_only()) ids.push_back(scene.id);
+    }
     return ids;
+}
+
+void expect_all_finite(const Frame& frame, const std::string& what) {
+    for (size_t i = 0; i < frame.linear.size(); ++i) {
+        ASSERT_TRUE(std::isfinite(frame.linear[i])) << what << ": pixel value " << i / 3;
+    }
+    for (size_t i = 0; i < frame.depth.size(); ++i) {
+        ASSERT_TRUE(std::isfinite(frame.depth[i])) << what << ": depth " << i;
+    }
 }
 
 // One device and one built program per scene for the whole suite.
@@ -52,9 +67,13 @@ protected:
             for (const auto& scene : all_scenes()) {
                 if (scene.id == GetParam()) found.scene = &scene;
             }
+            // An inside-only scene renders only by brute force (InsideOnlyStability below).
+            const RenderMode mode =
+                found.scene->inside_only() ? RenderMode::Brute : RenderMode::Shaded;
             found.renderer = std::make_unique<Renderer>(
                 device(), cache, *found.scene,
-                KernelSwitches{preferred_packet_width(device().info), found.scene->effects});
+                KernelSwitches{preferred_packet_width(device().info), found.scene->effects, false,
+                               false, mode});
         }
         return found;
     }
@@ -80,16 +99,72 @@ protected:
                  int height = 32) {
         return renderer().render(FrameRequest{width, height, view, params});
     }
-};
 
-void expect_all_finite(const Frame& frame, const std::string& what) {
-    for (size_t i = 0; i < frame.linear.size(); ++i) {
-        ASSERT_TRUE(std::isfinite(frame.linear[i])) << what << ": pixel value " << i / 3;
+    // The checks every scene gets, DE or inside-only (the rig renders each in its mode).
+    void expect_hard_camera_placements_finite() {
+        const auto defaults = default_param_values(scene());
+        const CameraView& home = scene().cameras.front().view;
+        CameraView inside = home;  // at the origin: inside most fractals, looking outwards
+        inside.position = {0.0f, 0.0f, 0.0f};
+        inside.target = {1.0f, 0.3f, 0.2f};
+        expect_all_finite(render(inside, defaults), "camera at the origin");
+        CameraView through_origin = home;  // the centre pixel's ray passes exactly through 0
+        through_origin.target = {0.0f, 0.0f, 0.0f};
+        expect_all_finite(render(through_origin, defaults, 33, 33), "ray through the origin");
+        CameraView grazing = home;  // a narrow view along the silhouette
+        const glm::vec3 side =
+            glm::normalize(glm::cross(glm::vec3(home.target - home.position), home.up));
+        grazing.target =
+            home.target + glm::dvec3(side) * glm::length(home.target - home.position) * 0.5;
+        grazing.fov_degrees = 5.0f;
+        expect_all_finite(render(grazing, defaults), "grazing view");
+        CameraView far_away = home;
+        far_away.position = home.target + (home.position - home.target) * 1000.0;
+        expect_all_finite(render(far_away, defaults), "distant camera");
     }
-    for (size_t i = 0; i < frame.depth.size(); ++i) {
-        ASSERT_TRUE(std::isfinite(frame.depth[i])) << what << ": depth " << i;
+
+    // With `probe_de`, the DE at two points must stay finite too.
+    void expect_parameter_extremes_finite(bool probe_de) {
+        const auto offsets = param_offsets(scene());
+        for (size_t i = 0; i < scene().params.size(); ++i) {
+            const ParamInfo& param = scene().params[i];
+            for (float extreme : {param.min_value, param.max_value}) {
+                std::vector<float> values = default_param_values(scene());
+                for (int c = 0; c < param_components(param.type); ++c) {
+                    values[offsets[i] + c] = extreme;
+                }
+                const std::string what = param.id + " = " + std::to_string(extreme);
+                expect_all_finite(render(scene().cameras.front().view, values, 24, 16), what);
+                if (!probe_de) continue;
+                const std::vector<glm::vec3> origin{{0, 0, 0}, {0.5f, 0.5f, 0.5f}};
+                for (float distance : renderer().probe_de(origin, values)) {
+                    EXPECT_TRUE(std::isfinite(distance)) << what;
+                }
+            }
+        }
     }
-}
+
+    void expect_every_camera_and_path_renders() {
+        const auto defaults = default_param_values(scene());
+        for (const auto& camera : scene().cameras) {
+            const Frame frame = render(camera.view, defaults);
+            expect_all_finite(frame, "camera " + camera.name);
+            EXPECT_GT(frame.hits, 0) << "camera " << camera.name << " sees nothing";
+        }
+        ASSERT_FALSE(scene().camera_paths.empty())
+            << "every scene needs at least one camera path";
+        for (const auto& path : scene().camera_paths) {
+            const float start = path.keyframes.front().time;
+            for (float fraction : {0.0f, 0.37f, 0.81f, 1.0f}) {
+                const float time = start + fraction * path.duration();
+                const Frame frame = render(evaluate_camera_path(path, time), defaults);
+                const std::string what = "path " + path.name + " at " + std::to_string(time);
+                expect_all_finite(frame, what);
+                EXPECT_GT(frame.hits, 0) << what << " sees nothing";
+            }
+        }
+    }
+};
 
 TEST_P(SceneStability, DistanceIsOneLipschitz) {
     const auto defaults = default_param_values(scene());
@@ -327,63 +402,13 @@ TEST_P(SceneStability, DefaultViewIsANonTrivialImage) {
     EXPECT_GT(mean, 15.0) << "the image is nearly black";
 }
 
-TEST_P(SceneStability, HardCameraPlacementsStayFinite) {
-    const auto defaults = default_param_values(scene());
-    const CameraView& home = scene().cameras.front().view;
-    CameraView inside = home;  // at the origin: inside most fractals, looking outwards
-    inside.position = {0.0f, 0.0f, 0.0f};
-    inside.target = {1.0f, 0.3f, 0.2f};
-    expect_all_finite(render(inside, defaults), "camera at the origin");
-    CameraView through_origin = home;  // the centre pixel's ray passes exactly through 0
-    through_origin.target = {0.0f, 0.0f, 0.0f};
-    expect_all_finite(render(through_origin, defaults, 33, 33), "ray through the origin");
-    CameraView grazing = home;  // a narrow view along the silhouette
-    const glm::vec3 side =
-        glm::normalize(glm::cross(glm::vec3(home.target - home.position), home.up));
-    grazing.target = home.target + glm::dvec3(side) * glm::length(home.target - home.position) * 0.5;
-    grazing.fov_degrees = 5.0f;
-    expect_all_finite(render(grazing, defaults), "grazing view");
-    CameraView far_away = home;
-    far_away.position = home.target + (home.position - home.target) * 1000.0;
-    expect_all_finite(render(far_away, defaults), "distant camera");
-}
+TEST_P(SceneStability, HardCameraPlacementsStayFinite) { expect_hard_camera_placements_finite(); }
 
 TEST_P(SceneStability, EveryParameterAtItsExtremesStaysFinite) {
-    const auto offsets = param_offsets(scene());
-    for (size_t i = 0; i < scene().params.size(); ++i) {
-        const ParamInfo& param = scene().params[i];
-        for (float extreme : {param.min_value, param.max_value}) {
-            std::vector<float> values = default_param_values(scene());
-            for (int c = 0; c < param_components(param.type); ++c) values[offsets[i] + c] = extreme;
-            const std::string what = param.id + " = " + std::to_string(extreme);
-            expect_all_finite(render(scene().cameras.front().view, values, 24, 16), what);
-            const std::vector<glm::vec3> origin{{0, 0, 0}, {0.5f, 0.5f, 0.5f}};
-            for (float distance : renderer().probe_de(origin, values)) {
-                EXPECT_TRUE(std::isfinite(distance)) << what;
-            }
-        }
-    }
+    expect_parameter_extremes_finite(true);
 }
 
-TEST_P(SceneStability, EveryCameraAndPathRenders) {
-    const auto defaults = default_param_values(scene());
-    for (const auto& camera : scene().cameras) {
-        const Frame frame = render(camera.view, defaults);
-        expect_all_finite(frame, "camera " + camera.name);
-        EXPECT_GT(frame.hits, 0) << "camera " << camera.name << " sees nothing";
-    }
-    ASSERT_FALSE(scene().camera_paths.empty()) << "every scene needs at least one camera path";
-    for (const auto& path : scene().camera_paths) {
-        const float start = path.keyframes.front().time;
-        for (float fraction : {0.0f, 0.37f, 0.81f, 1.0f}) {
-            const float time = start + fraction * path.duration();
-            const Frame frame = render(evaluate_camera_path(path, time), defaults);
-            const std::string what = "path " + path.name + " at " + std::to_string(time);
-            expect_all_finite(frame, what);
-            EXPECT_GT(frame.hits, 0) << what << " sees nothing";
-        }
-    }
-}
+TEST_P(SceneStability, EveryCameraAndPathRenders) { expect_every_camera_and_path_renders(); }
 
 // How two renders of the same request differ, pixel by pixel.
 struct PixelDifference {
@@ -522,7 +547,37 @@ TEST_P(SceneStability, RelaxedStepsAgreeWithACautiousMarch) {
     }
 }
 
+// The inside-only scenes, rendered by brute force: the hard camera placements, every parameter at
+// its extremes and every camera and path give finite images (there is no DE to check; the inside
+// test's own overflow and NaN guards are exercised by the same renders).
+class InsideOnlyStability : public SceneStability {};
+
+std::vector<std::string> inside_only_scene_ids() {
+    std::vector<std::string> ids;
+    for (const auto& scene : all_scenes()) {
+        if (scene.inside_only()) ids.push_back(scene.id);
+    }
+    return ids;
+}
+
+TEST_P(InsideOnlyStability, HardCameraPlacementsStayFinite) {
+    expect_hard_camera_placements_finite();
+}
+
+TEST_P(InsideOnlyStability, EveryParameterAtItsExtremesStaysFinite) {
+    expect_parameter_extremes_finite(false);
+}
+
+TEST_P(InsideOnlyStability, EveryCameraAndPathRenders) { expect_every_camera_and_path_renders(); }
+
 INSTANTIATE_TEST_SUITE_P(Scenes, SceneStability, ::testing::ValuesIn(scene_ids()),
+                         [](const auto& test_info) {
+                             std::string name = test_info.param;
+                             std::replace(name.begin(), name.end(), '-', '_');
+                             return name;
+                         });
+
+INSTANTIATE_TEST_SUITE_P(Scenes, InsideOnlyStability, ::testing::ValuesIn(inside_only_scene_ids()),
                          [](const auto& test_info) {
                              std::string name = test_info.param;
                              std::replace(name.begin(), name.end(), '-', '_');

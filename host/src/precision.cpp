@@ -65,7 +65,7 @@ float surface_distance(Renderer& in_float, const CameraView& view,
         const int depth = static_cast<int>(param_value(in_float.scene(), params, "ifs_depth"));
         return static_cast<float>(ifs_distance_bound(*ifs, view.position, depth));
     }
-    // No distance at all: the view's target alone decides.
+    // An inside test alone says nothing about distance: unknown, the target alone decides.
     if (in_float.scene().inside_only()) return -1.0f;
     const std::vector<float> de = in_float.probe_de(std::span(&view.position, 1), params);
     return std::isfinite(de.at(0)) ? std::abs(de[0]) : -1.0f;

@@ -40,7 +40,7 @@ bool auto_wants_double(const CameraView& view, int width, float surface_distance
 
 // The distance auto_wants_double takes: |DE| at the camera, evaluated once by `in_float`, the
 // scene's float kernel (whichever precision renders, so every front end judges by the same
-// number); -1 when it is not finite.
+// number); -1 when it is not finite, or the scene has only an inside test (no distance to judge).
 float surface_distance(Renderer& in_float, const CameraView& view,
                        const std::vector<float>& params);
 
