@@ -1,6 +1,6 @@
 #!/usr/bin/env bash
 # The README's brute-force gallery and cost figures: the inside-only scenes (no distance estimator:
-# stereographic-julia, bristorbrot) from their cameras, and two DE scenes rendered from the sign of
+# stereographic-julia, bristorbrot) from two cameras each, and two DE scenes rendered from the sign of
 # their DE, all at 360x270 with 64 passes; then the convergence sweep of the Mandelbulb's depth
 # against the sphere tracer's (`fgr bench accuracy --mode brute`, 320x240, 3 timing rounds) and of
 # stereographic-julia's against 1024 passes. Run from the repository root after ./build.sh.
@@ -15,8 +15,9 @@ render() { # scene, output name, extra options...
         sed -n "s/^render_ms \(.*\)/$name: \1 ms/p"
 }
 render stereographic-julia stereographic-julia
-render stereographic-julia stereographic-julia-inside --camera inside
+render stereographic-julia stereographic-julia-spiral --camera spiral
 render bristorbrot bristorbrot
+render bristorbrot bristorbrot-whorl --camera whorl
 render mandelbulb mandelbulb
 render menger menger
 "$fgr" bench accuracy mandelbulb --mode brute --repeats 3 -o "$out/convergence-mandelbulb"

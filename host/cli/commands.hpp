@@ -64,7 +64,8 @@ struct ModeOptions {
     uint32_t seed = 0;
 };
 void add_mode_options(CLI::App* command, ModeOptions& options);
-// The mode to render `scene` in: --mode, else the scene's own; UsageError for an unknown name.
+// The mode to render `scene` in: --mode, else the scene's own; UsageError for an unknown name or
+// a mode the scene cannot render in (check_mode_supported).
 RenderMode chosen_mode(const ModeOptions& options, const Scene& scene);
 // The path settings the options ask for, the environment loaded or generated (UsageError for
 // bad values, RuntimeFailure for an environment file that cannot be read).

@@ -6,6 +6,7 @@
 
 #include "commands.hpp"
 #include "fgr/atomic_file.hpp"
+#include "fgr/renderer.hpp"
 
 namespace fgr {
 namespace {
@@ -113,7 +114,9 @@ void add_mode_options(CLI::App* command, ModeOptions& options) {
 RenderMode chosen_mode(const ModeOptions& options, const Scene& scene) {
     if (!options.mode) return scene.default_mode;
     try {
-        return parse_render_mode(*options.mode);
+        const RenderMode mode = parse_render_mode(*options.mode);
+        check_mode_supported(scene, mode);  // before any kernel is built for it
+        return mode;
     } catch (const std::invalid_argument& error) {
         throw UsageError(error.what());
     }

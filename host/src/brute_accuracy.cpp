@@ -86,6 +86,7 @@ BruteConvergence run_brute_convergence(
         Renderer traced(device, cache, scene,
                         switches_for(scene, device, RenderMode::Shaded, false));
         result.reference = "the sphere-traced depth (shaded mode)";
+        result.sphere_traced = true;
         for (int round = 0; round < settings.repeats; ++round) {
             const Frame frame = traced.render(first_view(scene, settings, 1));
             result.reference_ms =

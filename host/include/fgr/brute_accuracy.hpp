@@ -49,6 +49,7 @@ struct BrutePoint {
 struct BruteConvergence {
     std::string reference;  // what the points are compared with, in words
     double reference_ms = 0.0;
+    bool sphere_traced = false;  // the reference is the sphere tracer's (a DE scene's)
     std::vector<BrutePoint> points;  // passes ascending
 };
 
