@@ -113,3 +113,17 @@ inline vec3 trap_colour(orbit_trap trap, int mode, int palette_index, vec3 base)
         iterate(p, PARAMS_PASS, 1, &trap);                                                  \
         return trap_colour(trap, param_colour_mode, param_palette, param_base_colour);      \
     }
+
+/* The same for an inside-only scene (fgr_geometry.cl): `iterate` returns the lanes whose orbit
+ * stayed bounded, and defines scene_inside and scene_colour. Put `#define FGR_SCENE_INSIDE_ONLY`
+ * on a line of its own above it: the host reads that line to know the scene has no DE. */
+#define FGR_TRAP_COLOURED_INSIDE_SCENE(iterate)                                             \
+    mask scene_inside(vec3 p, PARAMS) {                                                     \
+        orbit_trap unused;                                                                  \
+        return iterate(p, PARAMS_PASS, 0, &unused);                                         \
+    }                                                                                       \
+    vec3 scene_colour(vec3 p, PARAMS) {                                                     \
+        orbit_trap trap = trap_init();                                                      \
+        iterate(p, PARAMS_PASS, 1, &trap);                                                  \
+        return trap_colour(trap, param_colour_mode, param_palette, param_base_colour);      \
+    }

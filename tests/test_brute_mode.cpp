@@ -72,19 +72,6 @@ bool all_finite(const Frame& frame) {
     return true;
 }
 
-// A unit ball given by its inside test alone.
-Scene inside_ball_scene() {
-    Scene scene = test::inline_scene(R"(
-#define FGR_SCENE_INSIDE_ONLY
-mask scene_inside(vec3 p, PARAMS) {
-    (void)fgr_params;
-    return v3_length(p) < 1.0f;
-}
-)");
-    scene.default_mode = RenderMode::Brute;
-    return scene;
-}
-
 // The distance along the ray through pixel (x, y)'s centre to the unit ball, or -1.
 float ball_depth(const CameraView& view, int width, int height, int x, int y) {
     const CameraBasis basis = camera_basis(view);
@@ -155,7 +142,7 @@ TEST_F(BruteModeTest, DepthNeverIncreasesFromPassToPass) {
 
 TEST_F(BruteModeTest, BisectionHalvesTheDepthErrorPerStep) {
     constexpr int kW = 64, kH = 48;
-    const Scene scene = inside_ball_scene();
+    const Scene scene = test::inside_ball_scene();
     auto brute = renderer(scene, RenderMode::Brute);
     const CameraView view = scene.cameras.front().view;
     std::vector<double> errors;
@@ -430,7 +417,7 @@ TEST_F(BruteModeTest, EveryDeSceneRendersInTheBruteMode) {
 }
 
 TEST_F(BruteModeTest, ModesAScenesCannotRenderInAreRefused) {
-    const Scene ball = inside_ball_scene();
+    const Scene ball = test::inside_ball_scene();
     for (RenderMode mode : {RenderMode::Shaded, RenderMode::Path}) {
         try {
             renderer(ball, mode);

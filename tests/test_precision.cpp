@@ -165,14 +165,7 @@ TEST_F(FloatAndDouble, AutoRuleJudgesAtTheNearestSurfaceTheDEFinds) {
 // An inside test says nothing about distance: for an inside-only scene the surface distance is
 // unknown (-1, nothing is probed: it has no DE) and auto judges at the target alone.
 TEST_F(FloatAndDouble, SurfaceDistanceOfAnInsideOnlySceneIsUnknown) {
-    Scene ball = test::inline_scene(R"(
-#define FGR_SCENE_INSIDE_ONLY
-mask scene_inside(vec3 p, PARAMS) {
-    (void)fgr_params;
-    return v3_length(p) < 1.0f;
-}
-)");
-    ball.default_mode = RenderMode::Brute;
+    const Scene ball = test::inside_ball_scene();
     Renderer in_float(*device_, cache_, ball, {16, 0, false, false, RenderMode::Brute});
     const CameraView view = ball.cameras.front().view;
     EXPECT_EQ(surface_distance(in_float, view, default_param_values(ball)), -1.0f);

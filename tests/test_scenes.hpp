@@ -65,4 +65,17 @@ inline Scene sphere_scene() {
     return scene;
 }
 
+// The unit ball given by an inside test alone (no DE: it renders only in the brute mode).
+inline Scene inside_ball_scene() {
+    Scene scene = inline_scene(R"(
+#define FGR_SCENE_INSIDE_ONLY
+mask scene_inside(vec3 p, PARAMS) {
+    (void)fgr_params;
+    return v3_length(p) < 1.0f;
+}
+)");
+    scene.default_mode = RenderMode::Brute;
+    return scene;
+}
+
 }  // namespace fgr::test

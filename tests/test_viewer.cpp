@@ -36,6 +36,9 @@ const fs::path kXvfbRun = "/usr/bin/xvfb-run";
 constexpr int kWidth = 400;  // wide enough that the window centre is clear of the panel
 constexpr int kHeight = 300;
 
+// The value of `key` in a --stats line of the viewer's output (defined below).
+std::string stat_text(const std::string& out, const std::string& key);
+
 struct ViewerRun {
     test::RunResult result;
     std::vector<fs::path> screenshots;  // in the order they were written
@@ -91,6 +94,27 @@ protected:
                       return std::pair(fs::last_write_time(a), a) < std::pair(fs::last_write_time(b), b);
                   });
         return run;
+    }
+
+    // Renders once (`warm`: fgr render's arguments after the subcommand) so the kernel is
+    // cached, then opens the viewer (`extra`) on a still view for a few seconds: the last frame
+    // must be full size and more than two samples (passes) deep.
+    void expect_still_view_accumulates(std::vector<std::string> warm,
+                                       const std::vector<std::string>& extra) {
+        warm.insert(warm.begin(), "render");
+        warm.insert(warm.end(), {"--spp", "1", "--width", "16", "--height", "12", "-o", "warm.png"});
+        const test::RunResult warmed = test::run_fgr(warm, dir());
+        ASSERT_EQ(warmed.exit_code, 0) << warmed;
+        fs::remove(dir() / "warm.png");
+        const ViewerRun run = view("", extra, std::nullopt, 8);
+        ASSERT_EQ(run.result.exit_code, 0) << run.result;
+        const std::string last = stat_text(run.result.out, "last_frame");
+        ASSERT_FALSE(last.empty()) << run.result;
+        int samples = 0;
+        float scale = 0.0f;
+        ASSERT_EQ(std::sscanf(last.c_str(), "scale %f samples %d", &scale, &samples), 2) << last;
+        EXPECT_EQ(scale, 1.0f) << last;
+        EXPECT_GT(samples, 2) << last;
     }
 
     const fs::path& dir() const { return dir_.path(); }
@@ -519,41 +543,14 @@ TEST_F(ViewerTest, ExitAfterEndsCleanlyWithFrameStatistics) {
 // runs with --samples 1): after 8 s standing still the last frame shown averages several samples
 // per pixel, all at full resolution.
 TEST_F(ViewerTest, PathModeAccumulatesSamplesWhileTheViewStandsStill) {
-    const test::RunResult warm =
-        test::run_fgr({"render", "mandelbulb", "--mode", "path", "--spp", "1", "--width", "16",
-                       "--height", "12", "-o", "warm.png"},
-                      dir());
-    ASSERT_EQ(warm.exit_code, 0) << warm;
-    fs::remove(dir() / "warm.png");
-    const ViewerRun run = view("", {"--mode", "path", "--environment", "uniform"}, std::nullopt, 8);
-    ASSERT_EQ(run.result.exit_code, 0) << run.result;
-    const std::string last = stat_text(run.result.out, "last_frame");
-    ASSERT_FALSE(last.empty()) << run.result;
-    int samples = 0;
-    float scale = 0.0f;
-    ASSERT_EQ(std::sscanf(last.c_str(), "scale %f samples %d", &scale, &samples), 2) << last;
-    EXPECT_EQ(scale, 1.0f) << last;
-    EXPECT_GT(samples, 2) << last;
+    expect_still_view_accumulates({"mandelbulb", "--mode", "path"},
+                                  {"--mode", "path", "--environment", "uniform"});
 }
 
 // A scene with no DE opens in the brute mode, whose passes accumulate while the view stands
 // still: the frame shown is full size and several passes deep.
 TEST_F(ViewerTest, BruteModeAddsPassesWhileTheViewStandsStill) {
-    const test::RunResult warm = test::run_fgr(
-        {"render", "stereographic-julia", "--spp", "1", "--width", "16", "--height", "12", "-o",
-         "warm.png"},
-        dir());
-    ASSERT_EQ(warm.exit_code, 0) << warm;
-    fs::remove(dir() / "warm.png");
-    const ViewerRun run = view("", {"stereographic-julia"}, std::nullopt, 8);
-    ASSERT_EQ(run.result.exit_code, 0) << run.result;
-    const std::string last = stat_text(run.result.out, "last_frame");
-    ASSERT_FALSE(last.empty()) << run.result;
-    int samples = 0;
-    float scale = 0.0f;
-    ASSERT_EQ(std::sscanf(last.c_str(), "scale %f samples %d", &scale, &samples), 2) << last;
-    EXPECT_EQ(scale, 1.0f) << last;
-    EXPECT_GT(samples, 2) << last;
+    expect_still_view_accumulates({"stereographic-julia"}, {"stereographic-julia"});
 }
 
 // --precision double renders in double: not just the label, the pixels. With a fine hit

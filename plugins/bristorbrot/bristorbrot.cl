@@ -51,14 +51,5 @@ inline mask bristorbrot_iterate(vec3 p, PARAMS, int record, orbit_trap* trap) {
     return inside;
 }
 
-mask scene_inside(vec3 p, PARAMS) {
-    orbit_trap unused;
-    return bristorbrot_iterate(p, PARAMS_PASS, 0, &unused);
-}
-
 #define FGR_SCENE_HAS_COLOUR
-vec3 scene_colour(vec3 p, PARAMS) {
-    orbit_trap trap = trap_init();
-    bristorbrot_iterate(p, PARAMS_PASS, 1, &trap);
-    return trap_colour(trap, param_colour_mode, param_palette, param_base_colour);
-}
+FGR_TRAP_COLOURED_INSIDE_SCENE(bristorbrot_iterate)
