@@ -9,8 +9,8 @@
 #include <stdexcept>
 #include <string>
 
-#include <glm/geometric.hpp>
 #include <fmt/format.h>
+#include <glm/geometric.hpp>
 #include <spdlog/spdlog.h>
 
 #include "fgr/camera.hpp"
