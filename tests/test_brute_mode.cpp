@@ -394,9 +394,16 @@ TEST_F(BruteModeTest, PacketWidthsAgreePerPixel) {
                                   std::abs(a - b) <= 1e-5f * std::max(1.0f, std::abs(b));
                 differing += !same;
             }
-            // The same random strata in every width; only a DE's or test's last bits can differ
-            // between vector and scalar maths, flipping a sample that lies on the surface.
-            EXPECT_LE(differing, long(frame.depth.size() / 200)) << differing << " pixels differ";
+            // The same random strata in every width, the same tests: the same hits, to the
+            // rounding of vector against scalar maths (measured: no pixel differs), and images
+            // within one 8-bit level.
+            EXPECT_EQ(differing, 0);
+            int worst_level = 0;
+            for (size_t i = 0; i < frame.image.rgb.size(); ++i) {
+                worst_level = std::max(worst_level,
+                                       std::abs(int(frame.image.rgb[i]) - int(reference.image.rgb[i])));
+            }
+            EXPECT_LE(worst_level, 1);
         }
     }
 }
