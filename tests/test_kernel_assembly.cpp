@@ -37,6 +37,13 @@ TEST(KernelAssembly, OptionsCarryPacketWidthAndOnlyRequestedEffects) {
     EXPECT_EQ(effect_names(0), "none");
 }
 
+TEST(KernelAssembly, FloatBuildsMakePlainLiteralsSinglePrecision) {
+    EXPECT_NE(switch_options({16, 0}).find("-cl-single-precision-constant"), std::string::npos);
+    KernelSwitches in_double{16, 0};
+    in_double.double_precision = true;
+    EXPECT_EQ(switch_options(in_double).find("-cl-single-precision-constant"), std::string::npos);
+}
+
 TEST(KernelAssembly, EffectChangesAddAndRemoveByName) {
     const uint64_t base = FGR_EFFECT_AMBIENT_OCCLUSION;
     EXPECT_EQ(apply_effect_changes(base, ""), base);

@@ -87,6 +87,34 @@ void expect_same_pixels(const Frame& packets, const Frame& scalar, const std::st
     EXPECT_EQ(over_one, 0) << what << ": channels more than one level apart";
 }
 
+// A scene written with plain literals, as the maths reads (`p * 2.0`), builds in float and in
+// double and renders exactly what the same scene with float literals (`2.0f`) renders: float
+// builds make the literals single precision, double builds keep them double (their values here
+// are exact in both, so the two sources must agree to the bit in each precision).
+TEST_F(RenderTest, PlainLiteralsWorkInFloatAndDouble) {
+    const auto ball = [](const std::string& two, const std::string& half,
+                         const std::string& radius) {
+        return test::inline_scene("real scene_de(vec3 p, PARAMS) {\n    (void)fgr_params;\n"
+                                  "    return v3_length(v3_scale(p, " + two + ")) * " + half +
+                                  " - " + radius + ";\n}\n");
+    };
+    const Scene plain = ball("2.0", "0.5", "0.75");
+    const Scene suffixed = ball("2.0f", "0.5f", "0.75f");
+    for (const bool in_double : {false, true}) {
+        SCOPED_TRACE(in_double ? "double" : "float");
+        KernelSwitches switches{16, 0};
+        switches.double_precision = in_double;
+        const FrameRequest request{48, 36, plain.cameras.front().view, default_param_values(plain)};
+        Renderer plain_renderer(*device_, cache_, plain, switches);
+        Renderer suffixed_renderer(*device_, cache_, suffixed, switches);
+        const Frame a = plain_renderer.render(request);
+        const Frame b = suffixed_renderer.render(request);
+        EXPECT_GT(a.hits, 48 * 36 / 10);
+        EXPECT_EQ(a.depth, b.depth);
+        EXPECT_EQ(a.image.rgb, b.image.rgb);
+    }
+}
+
 TEST_F(RenderTest, EveryPacketWidthRendersTheSameImage) {
     const Frame scalar = render(*mandelbulb_, 64, 48, 1);
     ASSERT_GT(scalar.hits, 64 * 48 / 4);
