@@ -5,6 +5,7 @@
 #include <cstdlib>
 #include <filesystem>
 #include <fstream>
+#include <sstream>
 
 #include <gtest/gtest.h>
 
@@ -67,7 +68,13 @@ std::string preprocessed(const AssembledProgram& program) {
     const auto source = std::filesystem::temp_directory_path() /
                         ("fgr-assembly-" + std::to_string(::getpid()) + ".cl");
     std::ofstream(source) << program.source;
-    const std::string command = "cpp -P " + program.options + " " + source.string() + " 2>/dev/null";
+    // The C preprocessor takes the switches' macros, not the OpenCL compiler's own options.
+    std::string macros;
+    std::istringstream options(program.options);
+    for (std::string option; options >> option;) {
+        if (option.rfind("-D", 0) == 0) macros += option + " ";
+    }
+    const std::string command = "cpp -P " + macros + source.string() + " 2>/dev/null";
     std::string output;
     if (FILE* pipe = ::popen(command.c_str(), "r")) {
         char buffer[4096];
