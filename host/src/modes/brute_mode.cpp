@@ -12,21 +12,6 @@ namespace {
 
 constexpr int kSurfacePlanes = 6;  // albedo (3) and normal (3): FGR_BRUTE_ALBEDO_PLANE onwards
 
-// Plane `first` .. first + count - 1 of each pixel, row-major.
-std::vector<float> pixel_planes(const std::vector<float>& planes, const TileLayout& layout,
-                                int first, int count, int width, int height) {
-    const size_t plane = static_cast<size_t>(layout.plane_size());
-    std::vector<float> rows(static_cast<size_t>(width) * height * count);
-    for (int y = 0; y < height; ++y) {
-        for (int x = 0; x < width; ++x) {
-            const size_t source = static_cast<size_t>(layout.index(x, y));
-            const size_t pixel = static_cast<size_t>(y) * width + x;
-            for (int c = 0; c < count; ++c) rows[pixel * count + c] = planes[(first + c) * plane + source];
-        }
-    }
-    return rows;
-}
-
 }  // namespace
 
 int BruteMode::extra_planes(const KernelSwitches& switches) const {
@@ -54,8 +39,8 @@ void BruteMode::bind(cl::Kernel& kernel, const FrameRequest& request, const Tile
 void BruteMode::read_back(const std::vector<float>& planes, const TileLayout& layout,
                           const FrameRequest& request, int, Frame& frame) const {
     const int width = request.width, height = request.height;
-    frame.albedo = pixel_planes(planes, layout, kCommonPlanes, 3, width, height);
-    frame.normal = pixel_planes(planes, layout, kCommonPlanes + 3, 3, width, height);
+    frame.albedo = planes_in_rows(planes, layout, kCommonPlanes, 3, width, height);
+    frame.normal = planes_in_rows(planes, layout, kCommonPlanes + 3, 3, width, height);
     const size_t plane = static_cast<size_t>(layout.plane_size());
     const size_t stats_plane = kCommonPlanes + kSurfacePlanes;
     if (planes.size() < plane * (stats_plane + 1)) return;

@@ -47,6 +47,11 @@ public:
                            const FrameRequest& request, int samples, Frame& frame) const = 0;
 };
 
+// Planes `first` .. first + count - 1 of each pixel in rows (count floats per pixel), times
+// `scale` (1 / samples for planes that sum them).
+std::vector<float> planes_in_rows(const std::vector<float>& planes, const TileLayout& layout,
+                                  int first, int count, int width, int height, float scale = 1.0f);
+
 // A read-only device buffer holding `values` (one unused float when empty).
 cl::Buffer upload_floats(const ComputeDevice& device, const std::vector<float>& values);
 

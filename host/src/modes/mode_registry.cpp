@@ -17,6 +17,22 @@ cl::Buffer upload_floats(const ComputeDevice& device, const std::vector<float>& 
                       padded.size() * sizeof(float), const_cast<float*>(padded.data()));
 }
 
+std::vector<float> planes_in_rows(const std::vector<float>& planes, const TileLayout& layout,
+                                  int first, int count, int width, int height, float scale) {
+    const size_t plane = static_cast<size_t>(layout.plane_size());
+    std::vector<float> rows(static_cast<size_t>(width) * height * count);
+    for (int y = 0; y < height; ++y) {
+        for (int x = 0; x < width; ++x) {
+            const size_t source = static_cast<size_t>(layout.index(x, y));
+            const size_t pixel = static_cast<size_t>(y) * width + x;
+            for (int c = 0; c < count; ++c) {
+                rows[pixel * count + c] = planes[(first + c) * plane + source] * scale;
+            }
+        }
+    }
+    return rows;
+}
+
 std::vector<float> scene_light_values(const Scene& scene) {
     constexpr size_t kLightFloats = 8;  // FGR_LIGHT_FLOATS in fgr_shade.cl
     std::vector<float> values;

@@ -119,24 +119,6 @@ LightList light_list(const Scene& scene, const PreparedEnvironment& environment,
     return list;
 }
 
-// Row-major averages of `count` planes starting at `first` (samples summed in them).
-std::vector<float> averaged_planes(const std::vector<float>& planes, const TileLayout& layout,
-                                   int first, int count, int width, int height, int samples) {
-    const size_t plane = static_cast<size_t>(layout.plane_size());
-    std::vector<float> rows(static_cast<size_t>(width) * height * count);
-    const float average = 1.0f / static_cast<float>(std::max(samples, 1));
-    for (int y = 0; y < height; ++y) {
-        for (int x = 0; x < width; ++x) {
-            const size_t source = static_cast<size_t>(layout.index(x, y));
-            const size_t pixel = static_cast<size_t>(y) * width + x;
-            for (int c = 0; c < count; ++c) {
-                rows[pixel * count + c] = planes[(first + c) * plane + source] * average;
-            }
-        }
-    }
-    return rows;
-}
-
 }  // namespace
 
 PathMode::PathMode(const ComputeDevice& device, const Scene& scene)
@@ -190,9 +172,10 @@ void PathMode::bind(cl::Kernel& kernel, const FrameRequest& request, const TileL
 void PathMode::read_back(const std::vector<float>& planes, const TileLayout& layout,
                          const FrameRequest& request, int samples, Frame& frame) const {
     const int width = request.width, height = request.height;
-    frame.albedo = averaged_planes(planes, layout, kCommonPlanes, 3, width, height, samples);
-    frame.normal = averaged_planes(planes, layout, kCommonPlanes + 3, 3, width, height, samples);
-    frame.alpha = averaged_planes(planes, layout, kCommonPlanes + 6, 1, width, height, samples);
+    const float average = 1.0f / static_cast<float>(std::max(samples, 1));
+    frame.albedo = planes_in_rows(planes, layout, kCommonPlanes, 3, width, height, average);
+    frame.normal = planes_in_rows(planes, layout, kCommonPlanes + 3, 3, width, height, average);
+    frame.alpha = planes_in_rows(planes, layout, kCommonPlanes + 6, 1, width, height, average);
     const size_t plane = static_cast<size_t>(layout.plane_size());
     if (planes.size() < plane * (kCommonPlanes + kAuxiliaryPlanes + kStatsPlanes)) return;
     // Sum the lanes' evaluations over every pixel; a packet's count is the same in all of its
