@@ -109,6 +109,15 @@ void warn_once(const std::string& message) {
     if (said.insert(message).second) spdlog::warn("{}", message);
 }
 
+// The probes evaluate the DE: an inside-only scene has none (std::logic_error, saying `to_do`).
+void require_distance_estimator(const Scene& scene, const char* to_do) {
+    if (scene.inside_only()) {
+        throw std::logic_error(fmt::format(
+            "scene '{}' has no distance estimator to {} (it defines only scene_inside)", scene.id,
+            to_do));
+    }
+}
+
 Frame cancelled_frame() {
     Frame cancelled;
     cancelled.cancelled = true;
@@ -366,11 +375,7 @@ std::vector<float> Renderer::probe_de(std::span<const glm::vec3> points,
 
 std::vector<float> Renderer::probe_de(std::span<const glm::dvec3> points,
                                       const std::vector<float>& params) {
-    if (scene_.inside_only()) {
-        throw std::logic_error(fmt::format(
-            "scene '{}' has no distance estimator to probe (it defines only scene_inside)",
-            scene_.id));
-    }
+    require_distance_estimator(scene_, "probe");
     if (points.empty()) return {};
     int plane = 0;
     std::vector<float> distances =
@@ -381,12 +386,7 @@ std::vector<float> Renderer::probe_de(std::span<const glm::dvec3> points,
 
 std::vector<glm::vec3> Renderer::probe_normals(std::span<const glm::vec3> points,
                                                const std::vector<float>& params, float eps) {
-    if (scene_.inside_only()) {
-        throw std::logic_error(fmt::format(
-            "scene '{}' has no distance estimator to take normals from (it defines only "
-            "scene_inside)",
-            scene_.id));
-    }
+    require_distance_estimator(scene_, "take normals from");
     if (points.empty()) return {};
     int plane = 0;
     const std::vector<glm::dvec3> wide(points.begin(), points.end());
