@@ -101,6 +101,14 @@ inline vec3 trap_colour(orbit_trap trap, int mode, int palette_index, vec3 base)
     return v3_mul(v3_max(ramp, v3_splat(0.0f, 0.0f, 0.0f)), base);
 }
 
+/* scene_colour from the orbit trap `iterate` records, for the (few) points being shaded. */
+#define FGR_TRAP_COLOUR_FUNCTION(iterate)                                                   \
+    vec3 scene_colour(vec3 p, PARAMS) {                                                     \
+        orbit_trap trap = trap_init();                                                      \
+        iterate(p, PARAMS_PASS, 1, &trap);                                                  \
+        return trap_colour(trap, param_colour_mode, param_palette, param_base_colour);      \
+    }
+
 /* scene_de and scene_colour of a fractal coloured by its orbit: `iterate` runs the iteration once
  * for the distance, and again recording the orbit trap at the (few) points being shaded. */
 #define FGR_TRAP_COLOURED_SCENE(iterate)                                                    \
@@ -108,11 +116,7 @@ inline vec3 trap_colour(orbit_trap trap, int mode, int palette_index, vec3 base)
         orbit_trap unused;                                                                  \
         return iterate(p, PARAMS_PASS, 0, &unused);                                         \
     }                                                                                       \
-    vec3 scene_colour(vec3 p, PARAMS) {                                                     \
-        orbit_trap trap = trap_init();                                                      \
-        iterate(p, PARAMS_PASS, 1, &trap);                                                  \
-        return trap_colour(trap, param_colour_mode, param_palette, param_base_colour);      \
-    }
+    FGR_TRAP_COLOUR_FUNCTION(iterate)
 
 /* The same for an inside-only scene (fgr_geometry.cl): `iterate` returns the lanes whose orbit
  * stayed bounded, and defines scene_inside and scene_colour. Put `#define FGR_SCENE_INSIDE_ONLY`
@@ -122,8 +126,4 @@ inline vec3 trap_colour(orbit_trap trap, int mode, int palette_index, vec3 base)
         orbit_trap unused;                                                                  \
         return iterate(p, PARAMS_PASS, 0, &unused);                                         \
     }                                                                                       \
-    vec3 scene_colour(vec3 p, PARAMS) {                                                     \
-        orbit_trap trap = trap_init();                                                      \
-        iterate(p, PARAMS_PASS, 1, &trap);                                                  \
-        return trap_colour(trap, param_colour_mode, param_palette, param_base_colour);      \
-    }
+    FGR_TRAP_COLOUR_FUNCTION(iterate)
