@@ -15,6 +15,21 @@
  * flow uses fgr_any/fgr_all and select(): a loop runs while fgr_any(active) and freezes finished
  * lanes with select(old, new, active).
  */
+/* The kernel library's API: what a scene's source codes against (`real`, `vec3`, `v3_*`, `sd_*`,
+ * `fold_*`, `PARAMS`, `FGR_SCENE_HAS_*`, the scene macros). A scene says which version it was
+ * written for with `#define FGR_KERNEL_API 2` on a line of its own; the host reads that line and
+ * defines the same value before the library, so the library shows the scene exactly the names and
+ * signatures of that version. A scene that says nothing was written for version 1 (before versions
+ * were counted), and keeps compiling as it did. Version 2 added: helpers taking a direction, axis
+ * or size as `vec3` (what a vec3 parameter gives: rotation_about_axis, rotate_about), the folds
+ * fold_box_axes, fold_icosahedral/fold_dodecahedral, invert_sphere, scale_about, and the
+ * iterate-function scenes (FGR_ITERATION ... FGR_END_ITERATION, FGR_ITERATED_SCENE). Names are only
+ * ever added in a new version; a change to an existing one keeps the old form for older versions. */
+#define FGR_KERNEL_API_LATEST 2
+#ifndef FGR_KERNEL_API
+#define FGR_KERNEL_API 1
+#endif
+
 #ifndef FGR_WIDTH
 #define FGR_WIDTH 1
 #endif

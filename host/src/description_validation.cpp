@@ -18,6 +18,7 @@
 #include <spdlog/fmt/fmt.h>
 
 #include "fgr/ifs.hpp"
+#include "fgr/kernel_api.hpp"
 #include "fgr/kernel_assembly.hpp"
 #include "fgr/render_mode.hpp"
 #include "fgr/view_validation.hpp"
@@ -605,6 +606,7 @@ Scene copy_checked(const fgr_scene_desc& desc) {
     if (is_ifs_description(desc)) return copy_ifs_checked(desc, std::move(scene));
     scene.source = copy_source(desc);
     if (scene.source.empty()) fail("source is empty");
+    declared_kernel_api(scene.source);  // refuses a version this fgr does not have
     scene.source_name =
         optional_string(desc.source_name, kMaxTextLength, "source name", scene.id + ".cl");
     scene.params = copy_params(desc);

@@ -5,6 +5,7 @@
 #include <stdexcept>
 #include <fmt/format.h>
 
+#include "fgr/kernel_api.hpp"
 #include "fgr/kernel_library.hpp"
 #include "fgr/parameters.hpp"
 #include "fgr/plugin.h"
@@ -135,6 +136,9 @@ AssembledProgram assemble_program(const Scene& scene, const KernelSwitches& swit
     AssembledProgram program;
     program.options = switch_options(switches);
     std::string& source = program.source;
+    // The library shows the scene the names of the kernel API version its source is written for.
+    const int kernel_api = declared_kernel_api(scene.source);
+    append_file(source, "<kernel API>", fmt::format("#define FGR_KERNEL_API {}\n", kernel_api).c_str());
     for (const auto& file : kernel_prelude()) append_file(source, file.name, file.source);
     append_file(source, fmt::format("<parameters of {}>", scene.id),
                 param_accessors(scene).c_str());

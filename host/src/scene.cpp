@@ -2,9 +2,13 @@
 
 #include <algorithm>
 #include <regex>
+#include <stdexcept>
 #include <string_view>
 
+#include <fmt/format.h>
 #include <glm/geometric.hpp>
+
+#include "fgr/kernel_api.hpp"
 
 namespace fgr {
 
@@ -161,6 +165,31 @@ bool declares_inside_only(std::string_view source) {
     const std::string code = without_comments(source);
     return std::regex_search(code, directive);
 }
+
+}  // namespace
+
+int declared_kernel_api(std::string_view source) {
+    static const std::regex directive(
+        R"(^[ \t]*#[ \t]*define[ \t]+FGR_KERNEL_API[ \t]+([^ \t\r\n]+)[ \t\r]*$)",
+        std::regex::multiline);
+    if (source.find("FGR_KERNEL_API") == std::string_view::npos) return 1;
+    const std::string code = without_comments(source);
+    std::smatch match;
+    if (!std::regex_search(code, match, directive)) return 1;
+    const std::string value = match[1].str();
+    const bool is_number = value.size() <= 3 && std::all_of(value.begin(), value.end(), [](char c) {
+        return c >= '0' && c <= '9';
+    });
+    const int version = is_number ? std::stoi(value) : 0;
+    if (version < 1 || version > kKernelApiLatest) {
+        throw std::invalid_argument(fmt::format(
+            "the source is written for kernel API '{}', and this fgr has kernel APIs 1 to {}{}",
+            value, kKernelApiLatest, version > kKernelApiLatest ? ": update fgr" : ""));
+    }
+    return version;
+}
+
+namespace {
 
 // The knobs of the brute-force mode (kernels/fgr_mode_brute.cl); other modes never read them.
 void add_brute_force_params(Scene& scene) {
