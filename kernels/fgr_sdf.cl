@@ -167,8 +167,52 @@ inline real op_smooth_intersection(real d1, real d2, float k) {
  * Transforms. Each returns the point at which to evaluate the untransformed shape.
  */
 
-/* A rotation by a uniform angle about a fixed unit axis (Rodrigues' matrix), built once from
- * parameters so a loop applying it does a matrix multiply instead of trigonometry. */
+#if FGR_KERNEL_API >= 2
+/* A rotation by `degrees` about `axis` (Rodrigues' matrix), built once outside a loop so the loop
+ * does a matrix multiply instead of trigonometry. The axis is a vec3, as a vec3 parameter gives
+ * it (`rotation_about_axis(param_axis, param_angle)`), or v3_splat(x, y, z) for a fixed one; it
+ * need not be unit length (a zero axis gives the identity). */
+typedef struct rotation3 {
+    real xx, xy, xz, yx, yy, yz, zx, zy, zz; /* rows x, y, z */
+} rotation3;
+
+/* cos and sin of `degrees`. A pure function kept out of line, so that a loop calling
+ * rotate_about with a fixed angle has it computed once: inlined, sincos's branches would keep the
+ * compiler from moving it out of the loop, and trigonometry per iteration doubles a KIFS's cost. */
+__attribute__((const)) __attribute__((noinline)) float2 fgr_cos_sin_degrees(float degrees) {
+    float c = 1.0f;
+    const float s = sincos(radians(degrees), &c);
+    return (float2)(c, s);
+}
+
+inline rotation3 rotation_about_axis(vec3 axis, float degrees) {
+    const real length = v3_length(axis);
+    const real inverse = select(1.0f / length, fgr_real(0.0f), length <= 0.0f);
+    const vec3 u = v3_scale(axis, inverse);
+    const float2 cos_sin = fgr_cos_sin_degrees(degrees);
+    const float c = cos_sin.x, s = cos_sin.y;
+    /* A zero axis has u = 0: every term below but c vanishes, and c must become 1 there. */
+    const real t = 1.0f - c, k = select(fgr_real(c), fgr_real(1.0f), length <= 0.0f);
+    rotation3 m;
+    m.xx = t * u.x * u.x + k, m.xy = t * u.x * u.y - s * u.z, m.xz = t * u.x * u.z + s * u.y;
+    m.yx = t * u.x * u.y + s * u.z, m.yy = t * u.y * u.y + k, m.yz = t * u.y * u.z - s * u.x;
+    m.zx = t * u.x * u.z - s * u.y, m.zy = t * u.y * u.z + s * u.x, m.zz = t * u.z * u.z + k;
+    return m;
+}
+
+/* Applies rotation m to p. Isometry: exact stays exact. */
+inline vec3 op_rotate(vec3 p, rotation3 m) {
+    return v3(m.xx * p.x + m.xy * p.y + m.xz * p.z, m.yx * p.x + m.yy * p.y + m.yz * p.z,
+              m.zx * p.x + m.zy * p.y + m.zz * p.z);
+}
+
+/* p turned by `degrees` about `axis` in one call: rotation_about_axis + op_rotate. Inside a loop
+ * the compiler hoists the matrix out when axis and angle do not change (parameters). */
+inline vec3 rotate_about(vec3 p, vec3 axis, float degrees) {
+    return op_rotate(p, rotation_about_axis(axis, degrees));
+}
+#else
+/* Kernel API 1: the axis as a float3 of unit length. */
 typedef struct rotation3 {
     float3 row_x, row_y, row_z;
 } rotation3;
@@ -187,12 +231,12 @@ inline rotation3 rotation_about_axis(float3 axis, float degrees) {
     return m;
 }
 
-/* Applies rotation m to p. Isometry: exact stays exact. */
 inline vec3 op_rotate(vec3 p, rotation3 m) {
     return v3(m.row_x.x * p.x + m.row_x.y * p.y + m.row_x.z * p.z,
               m.row_y.x * p.x + m.row_y.y * p.y + m.row_y.z * p.z,
               m.row_z.x * p.x + m.row_z.y * p.y + m.row_z.z * p.z);
 }
+#endif
 
 /* Moves a shape so its origin sits at `offset`. Isometry: exact stays exact. */
 inline vec3 op_translate(vec3 p, vec3 offset) { return v3_sub(p, offset); }
