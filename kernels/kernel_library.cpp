@@ -11,6 +11,7 @@
 #include "fgr_fractals_cl.h"
 #include "fgr_geometry_cl.h"
 #include "fgr_ifs_cl.h"
+#include "fgr_iterate_cl.h"
 #include "fgr_march_cl.h"
 #include "fgr_math_cl.h"
 #include "fgr_math_check_cl.h"
@@ -37,6 +38,7 @@ std::span<const KernelFile> kernel_prelude() {
         KernelFile{"fgr_folds.cl", fgr_folds_cl},
         KernelFile{"fgr_colour.cl", fgr_colour_cl},
         KernelFile{"fgr_fractals.cl", fgr_fractals_cl},
+        KernelFile{"fgr_iterate.cl", fgr_iterate_cl},
     };
     return files;
 }

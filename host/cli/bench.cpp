@@ -62,6 +62,7 @@ void add_bench_command(CLI::App& app, BenchOptions& options) {
         ->check(CLI::Range(1, kMaxSamples));
     bench->add_option("-o,--output", options.output,
                       "write PREFIX.json and PREFIX.csv (default: bench-SCENE)");
+    add_kernel_source_option(bench, options.kernel_source);
     add_precision_option(bench, options.settings.precision,
                          "for the frames of the path finer than float resolves");
     add_device_options(bench, options.device, options.settings.packet_width);
@@ -75,7 +76,7 @@ int command_bench(BenchOptions& options) {
     }
     if (options.scene.empty()) throw UsageError("bench needs a SCENE (see `fgr list`)");
     const Discovery found = discover();
-    const Scene& scene = find_scene(found, options.scene);
+    const Scene scene = with_kernel_source(find_scene(found, options.scene), options.kernel_source);
     if (options.frames > 0) options.settings.frames = options.frames;
     try {
         bench_path(scene, options.settings.path);

@@ -40,6 +40,11 @@ struct RuntimeFailure : std::runtime_error {
 Discovery discover();
 // The scene with that id; throws UsageError naming the scenes there are.
 const Scene& find_scene(const Discovery& found, const std::string& id);
+// --kernel-source FILE.cl on `command`; with_kernel_source gives the scene with that file's text
+// as its source (the scene as it is when `file` is empty).
+void add_kernel_source_option(CLI::App* command, std::string& file);
+Scene with_kernel_source(Scene scene, const std::string& file);
+
 // Device `index` (-1: the default); throws UsageError for an index `fgr info` does not list.
 ComputeDevice open_requested_device(int index);
 // --device and --packet-width, for the commands that render.
@@ -98,6 +103,7 @@ struct RenderOptions {
     std::optional<float> time;
     int device = -1;
     std::optional<int> samples;  // per pixel, jittered; default 1 (shaded), 64 (path)
+    std::string kernel_source;   // OpenCL source instead of the scene's own; empty: its own
     int bit_depth = 8;     // 8: tone-mapped sRGB; 16: linear (PNG only)
     int packet_width = 0;  // 0: the device's preference
     bool all = false;      // every scene's default view into the directory `output`
@@ -140,6 +146,7 @@ struct BenchOptions {
     BenchSettings settings;
     int frames = 0;
     std::string output;  // prefix of the .json and .csv files
+    std::string kernel_source;  // OpenCL source to time instead of the scene's own; empty: its own
     int device = -1;
     ModeOptions mode;
     AccuracyOptions accuracy;

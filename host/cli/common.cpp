@@ -1,3 +1,5 @@
+#include <fstream>
+#include <sstream>
 #include <string>
 #include <vector>
 
@@ -26,6 +28,25 @@ const Scene& find_scene(const Discovery& found, const std::string& id) {
         if (scene.id == id) return scene;
     }
     throw UsageError(fmt::format("unknown scene '{}' (available: {})", id, scene_ids(found.scenes)));
+}
+
+void add_kernel_source_option(CLI::App* command, std::string& file) {
+    command->add_option("--kernel-source", file,
+                        "FILE.cl: the scene with this OpenCL source instead of its own (try or time "
+                        "a variant of its DE without rebuilding the plugin)");
+}
+
+Scene with_kernel_source(Scene scene, const std::string& file) {
+    if (file.empty()) return scene;
+    std::ifstream in(file, std::ios::binary);
+    std::ostringstream text;
+    text << in.rdbuf();
+    if (!in || text.str().empty()) {
+        throw UsageError(fmt::format("--kernel-source: cannot read {}", file));
+    }
+    scene.source = text.str();
+    scene.source_name = std::filesystem::absolute(file).string();
+    return scene;
 }
 
 ComputeDevice open_requested_device(int index) {

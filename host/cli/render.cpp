@@ -99,6 +99,7 @@ void check_render_options(const RenderOptions& options) {
         if (!options.assignments.empty() || options.camera || options.camera_path || options.time) {
             throw UsageError("--all renders each scene's default view: no --set, --camera or --time");
         }
+        if (!options.kernel_source.empty()) throw UsageError("--kernel-source is for one SCENE, not --all");
         return;
     }
     if (options.scene.empty()) throw UsageError("render needs a SCENE (see `fgr list`) or --all");
@@ -286,6 +287,7 @@ void add_render_command(CLI::App& app, RenderOptions& options) {
                          "when a pixel is finer than float resolves (deep zooms)");
     render->add_flag("--stats", options.stats,
                      "print steps per pixel, DE evaluations and rays that ran out of steps");
+    add_kernel_source_option(render, options.kernel_source);
     add_device_options(render, options.device, options.packet_width);
 }
 
@@ -293,7 +295,7 @@ int command_render(const RenderOptions& options) {
     check_render_options(options);
     if (options.all) return render_all(options);
     const Discovery found = discover();
-    const Scene& scene = find_scene(found, options.scene);
+    const Scene scene = with_kernel_source(find_scene(found, options.scene), options.kernel_source);
     FrameRequest request = default_request(scene, options);
     for (const auto& assignment : options.assignments) {
         set_param_from_text(scene, request.params, assignment);

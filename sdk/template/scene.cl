@@ -3,7 +3,12 @@
  * fgr evaluates many rays at once, so `real` is a float or a vector of floats and `vec3` holds
  * one of them per axis; write the maths once with the v3_* helpers and it runs on CPUs (16 rays
  * per work-item) and GPUs (one). The kernel library (sd_* primitives, op_* combinators, fold_*
- * folds, orbit traps and palettes) is available here; see fgr's SDK guide. */
+ * folds, orbit traps and palettes) is available here; see fgr's SDK guide. A fractal that
+ * iterates a step (KIFS, Mandelbox, Kleinian) is shortest as an orbit scene: FGR_ORBIT,
+ * FGR_ITERATE, FGR_DISTANCE ("Orbit scenes: the short way" in the guide). */
+
+/* The kernel library version this source is written for: fgr shows it that version's names. */
+#define FGR_KERNEL_API 2
 
 /* A lower bound on the distance from p to the surface: the ball of radius param_radius, pushed
  * in and out by sine bumps. op_displace_sine divides by the bumps' steepest slope, so the result
