@@ -176,21 +176,12 @@ typedef struct rotation3 {
     real xx, xy, xz, yx, yy, yz, zx, zy, zz; /* rows x, y, z */
 } rotation3;
 
-/* cos and sin of `degrees`. A pure function kept out of line, so that a loop calling
- * rotate_about with a fixed angle has it computed once: inlined, sincos's branches would keep the
- * compiler from moving it out of the loop, and trigonometry per iteration doubles a KIFS's cost. */
-__attribute__((const)) __attribute__((noinline)) float2 fgr_cos_sin_degrees(float degrees) {
-    float c = 1.0f;
-    const float s = sincos(radians(degrees), &c);
-    return (float2)(c, s);
-}
-
 inline rotation3 rotation_about_axis(vec3 axis, float degrees) {
     const real length = v3_length(axis);
     const real inverse = select(1.0f / length, fgr_real(0.0f), length <= 0.0f);
     const vec3 u = v3_scale(axis, inverse);
-    const float2 cos_sin = fgr_cos_sin_degrees(degrees);
-    const float c = cos_sin.x, s = cos_sin.y;
+    float c = 1.0f;
+    const float s = sincos(radians(degrees), &c);
     /* A zero axis has u = 0: every term below but c vanishes, and c must become 1 there. */
     const real t = 1.0f - c, k = select(fgr_real(c), fgr_real(1.0f), length <= 0.0f);
     rotation3 m;
@@ -206,8 +197,9 @@ inline vec3 op_rotate(vec3 p, rotation3 m) {
               m.zx * p.x + m.zy * p.y + m.zz * p.z);
 }
 
-/* p turned by `degrees` about `axis` in one call: rotation_about_axis + op_rotate. Inside a loop
- * the compiler hoists the matrix out when axis and angle do not change (parameters). */
+/* p turned by `degrees` about `axis` in one call: rotation_about_axis + op_rotate. It builds the
+ * matrix (trigonometry, a normalisation) at every call: in a loop, build it once before the loop
+ * with rotation_about_axis (in an orbit scene, between FGR_ORBIT and FGR_ITERATE). */
 inline vec3 rotate_about(vec3 p, vec3 axis, float degrees) {
     return op_rotate(p, rotation_about_axis(axis, degrees));
 }

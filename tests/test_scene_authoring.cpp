@@ -400,6 +400,39 @@ TEST(OrbitScenes, TheSdkExamplesRenderAsTheirHandWrittenPacketForms) {
     }
 }
 
+// The lines of an OpenCL source that hold code: comments removed, blank lines skipped, each line
+// stripped of surrounding blanks.
+std::vector<std::string> code_lines(const std::string& source) {
+    const std::string code = std::regex_replace(source, std::regex(R"(/\*[\s\S]*?\*/|//[^\n]*)"), "");
+    std::vector<std::string> lines;
+    std::istringstream in(code);
+    for (std::string line; std::getline(in, line);) {
+        const size_t first = line.find_first_not_of(" \t\r");
+        if (first == std::string::npos) continue;
+        lines.push_back(line.substr(first, line.find_last_not_of(" \t\r") - first + 1));
+    }
+    return lines;
+}
+
+// The SDK guide's orbit-scene examples are short (the issue's bound: 15 lines of kernel code),
+// and the guide shows each file's code as it is.
+TEST(OrbitScenes, TheGuidesExamplesAreAtMostFifteenLinesAndShownAsTheyAre) {
+    const std::filesystem::path sdk = std::filesystem::path(FGR_TEST_SOURCE_DIR) / "../sdk";
+    const std::string guide = read_file(sdk / "README.md");
+    for (const char* file : {"examples/icosahedral-kifs/icosahedral_kifs.cl",
+                             "examples/pseudo-kleinian/pseudo_kleinian.cl"}) {
+        const auto lines = code_lines(read_file(sdk / file));
+        EXPECT_LE(lines.size(), 15u) << file;
+        // The guide's code block holding the file's last line of code (its FGR_DISTANCE).
+        const size_t last = guide.find(lines.back());
+        ASSERT_NE(last, std::string::npos) << file << " is not in the guide";
+        const size_t block = guide.rfind("```c\n", last);
+        const size_t end = guide.find("```", last);
+        ASSERT_NE(block, std::string::npos);
+        EXPECT_EQ(code_lines(guide.substr(block + 5, end - block - 5)), lines) << file;
+    }
+}
+
 // An escape-time fractal in the contract: the power-8 Mandelbulb with its bailout, against the
 // library's hand-written mandelbulb_de, DE for DE at points inside, near and far from the set
 // (lanes escaping at different iterations in one packet).

@@ -15,15 +15,15 @@ static const fgr_param_desc params[] = {
 };
 
 static const fgr_camera cameras[] = {
-    FGR_CAMERA_Z_UP("front", 0.9f, -2.4f, 0.9f, 0.0f, 0.0f, 0.0f, 45.0f),
-    FGR_CAMERA_Z_UP("close", 0.3f, -1.1f, 0.7f, 0.2f, 0.0f, 0.5f, 50.0f),
+    FGR_CAMERA_Z_UP("front", 1.2f, -3.3f, 1.2f, 0.0f, 0.0f, 0.0f, 45.0f),
+    FGR_CAMERA_Z_UP("close", 0.4f, -1.5f, 0.9f, 0.2f, 0.0f, 0.5f, 50.0f),
 };
 
 static const fgr_keyframe orbit_keys[] = {
-    FGR_KEYFRAME_Z_UP(0.0f, 0.9f, -2.4f, 0.9f, 0.0f, 0.0f, 0.0f, 45.0f),
-    FGR_KEYFRAME_Z_UP(4.0f, 2.4f, 0.9f, 0.6f, 0.0f, 0.0f, 0.0f, 45.0f),
-    FGR_KEYFRAME_Z_UP(8.0f, -0.9f, 2.4f, 0.9f, 0.0f, 0.0f, 0.0f, 45.0f),
-    FGR_KEYFRAME_Z_UP(12.0f, 0.9f, -2.4f, 0.9f, 0.0f, 0.0f, 0.0f, 45.0f),
+    FGR_KEYFRAME_Z_UP(0.0f, 1.2f, -3.3f, 1.2f, 0.0f, 0.0f, 0.0f, 45.0f),
+    FGR_KEYFRAME_Z_UP(4.0f, 3.3f, 1.2f, 0.8f, 0.0f, 0.0f, 0.0f, 45.0f),
+    FGR_KEYFRAME_Z_UP(8.0f, -1.2f, 3.3f, 1.2f, 0.0f, 0.0f, 0.0f, 45.0f),
+    FGR_KEYFRAME_Z_UP(12.0f, 1.2f, -3.3f, 1.2f, 0.0f, 0.0f, 0.0f, 45.0f),
 };
 
 static const fgr_camera_path paths[] = {
