@@ -9,23 +9,13 @@
 #include "fgr/renderer.hpp"
 
 namespace fgr {
-namespace {
-
-std::string scene_ids(const std::vector<Scene>& scenes) {
-    std::string ids;
-    for (const auto& scene : scenes) ids += (ids.empty() ? "" : ", ") + scene.id;
-    return ids.empty() ? "none found" : ids;
-}
-
-}  // namespace
-
 Discovery discover() { return discover_scenes(plugin_search_path(executable_dir())); }
 
 const Scene& find_scene(const Discovery& found, const std::string& id) {
     for (const auto& scene : found.scenes) {
         if (scene.id == id) return scene;
     }
-    throw UsageError(fmt::format("unknown scene '{}' (available: {})", id, scene_ids(found.scenes)));
+    throw UsageError(unknown_scene_message(found, id));
 }
 
 ComputeDevice open_requested_device(int index) {

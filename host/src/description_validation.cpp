@@ -592,13 +592,15 @@ Scene copy_ifs_checked(const fgr_scene_desc& desc, Scene named) {
 
 // --- The whole description -----------------------------------------------------------------------
 
-Scene copy_checked(const fgr_scene_desc& desc) {
+// `declared_id` gets the scene id as soon as it is known valid, for the refusal to name it.
+Scene copy_checked(const fgr_scene_desc& desc, std::string& declared_id) {
     check_scene_header(desc);
     Scene scene;
     scene.id = bounded_string(desc.id, kMaxIdLength, "scene id");
     if (!is_identifier(scene.id, true)) {
         fail("scene id '{}' must match [a-z][a-z0-9_-]*", printable(scene.id));
     }
+    declared_id = scene.id;
     scene.name = bounded_string(desc.name, kMaxTextLength, "scene name");
     if (scene.name.empty()) fail("scene name is empty");
     scene.description = bounded_string(desc.description, kMaxTextLength, "scene description");
@@ -627,7 +629,9 @@ Scene copy_checked(const fgr_scene_desc& desc) {
     return scene;
 }
 
-LoadResult failure(std::string reason) { return LoadResult{std::nullopt, std::move(reason)}; }
+LoadResult failure(std::string reason, std::string declared_id) {
+    return LoadResult{std::nullopt, std::move(reason), std::move(declared_id)};
+}
 
 }  // namespace
 
@@ -651,13 +655,14 @@ bool is_scene_id(std::string_view id) { return is_identifier(id, true); }
 bool is_camera_name(std::string_view name) { return is_name(name); }
 
 LoadResult copy_scene_description(const fgr_scene_desc* desc) {
-    if (desc == nullptr) return failure("description is NULL");
+    if (desc == nullptr) return failure("description is NULL", {});
+    std::string declared_id;
     try {
-        return LoadResult{copy_checked(*desc), {}};
+        return LoadResult{copy_checked(*desc, declared_id), {}};
     } catch (const InvalidDescription& invalid) {
-        return failure(invalid.what());
+        return failure(invalid.what(), declared_id);
     } catch (const std::exception& error) {
-        return failure(fmt::format("could not copy description: {}", error.what()));
+        return failure(fmt::format("could not copy description: {}", error.what()), declared_id);
     }
 }
 

@@ -609,6 +609,10 @@ int run_viewer(const ViewerOptions& options) {
     if (found.scenes.empty()) {
         throw std::runtime_error("no scenes found (see `fgr list` for the folders searched)");
     }
+    const auto has_id = [&](const Scene& scene) { return scene.id == options.scene; };
+    if (!options.scene.empty() && std::none_of(found.scenes.begin(), found.scenes.end(), has_id)) {
+        throw UsageError(unknown_scene_message(found, options.scene));
+    }
     ViewerApp app(options, std::move(found.scenes));
     return app.run();
 }
