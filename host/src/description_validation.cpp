@@ -420,6 +420,14 @@ Light copy_light(const fgr_light& light, uint32_t index) {
 }
 
 std::vector<Light> copy_lights(const fgr_scene_desc& desc) {
+    // A scene is lit by its lights alone in the shaded mode: none, or a count over a NULL array
+    // (FGR_SCENE over an empty list, or a list forgotten), is refused saying what is missing.
+    if (desc.light_count == 0) fail("light count is 0: a scene needs at least one light");
+    if (desc.lights == nullptr) {
+        fail("light count is {} but the array is NULL: a scene needs at least one light (point "
+             "`lights` at an array of them)",
+             desc.light_count);
+    }
     check_count(desc.light_count, 1, kMaxLights, "light");
     const StructArray<fgr_light> array(desc.lights, desc.light_count, kV1LightSize, "light");
     std::vector<Light> lights;
