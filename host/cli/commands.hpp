@@ -22,6 +22,7 @@
 #include "fgr/precision.hpp"
 #include "fgr/render_mode.hpp"
 #include "fgr/scene.hpp"
+#include "fgr/view_override.hpp"
 #include "fgr/viewer/viewer.hpp"
 
 namespace fgr {
@@ -74,6 +75,13 @@ PathSettings chosen_path_settings(const ModeOptions& options, const Scene& scene
 PathSettings path_settings_from(const ModeOptions& options);
 EnvironmentChoice environment_choice_from(const ModeOptions& options);
 
+// --eye, --target, --up and --fov, for the commands that render (render, view, bench).
+void add_view_override_options(CLI::App* command, ViewOverrideText& text);
+// The options parsed (UsageError naming a malformed one).
+ViewOverride parsed_view_override(const ViewOverrideText& text);
+// `base` with the options' fields laid over it (UsageError when that view cannot be rendered).
+CameraView overridden_view(const CameraView& base, const ViewOverrideText& text);
+
 // Throws UsageError unless the directory `file` would be written into exists.
 void check_output_directory(const std::filesystem::path& file);
 // Writes `text` to `file` atomically; a failure is a RuntimeFailure.
@@ -95,6 +103,7 @@ struct RenderOptions {
     std::vector<std::string> assignments;
     std::optional<std::string> camera;
     std::optional<std::string> camera_path;
+    ViewOverrideText view_override;  // --eye, --target, --up, --fov over the camera
     std::optional<float> time;
     int device = -1;
     std::optional<int> samples;  // per pixel, jittered; default 1 (shaded), 64 (path)
@@ -119,6 +128,7 @@ struct ViewCommandOptions {
     ModeOptions mode;
     std::string preset;
     std::string camera_path_file;
+    ViewOverrideText view_override;  // the first scene's start view
     std::string replay;
     double exit_after = 0.0;
 };
@@ -142,6 +152,7 @@ struct BenchOptions {
     std::string output;  // prefix of the .json and .csv files
     int device = -1;
     ModeOptions mode;
+    ViewOverrideText view_override;  // a still view to bench instead of a camera path
     AccuracyOptions accuracy;
     CLI::App* accuracy_command = nullptr;
 };

@@ -165,6 +165,34 @@ PathSettings chosen_path_settings(const ModeOptions& options, const Scene& scene
     return settings;
 }
 
+void add_view_override_options(CLI::App* command, ViewOverrideText& text) {
+    const std::string group = "Viewpoint (over the scene's camera; no camera path file needed)";
+    command->add_option("--eye", text.eye, "camera position X,Y,Z (default: the camera's)")
+        ->group(group);
+    command->add_option("--target", text.target, "point looked at X,Y,Z (default: the camera's)")
+        ->group(group);
+    command->add_option("--up", text.up, "up direction X,Y,Z (default: the camera's)")
+        ->group(group);
+    command->add_option("--fov", text.fov, "horizontal field of view, degrees in (0, 180)")
+        ->group(group);
+}
+
+ViewOverride parsed_view_override(const ViewOverrideText& text) {
+    try {
+        return parse_view_override(text);
+    } catch (const std::invalid_argument& error) {
+        throw UsageError(error.what());
+    }
+}
+
+CameraView overridden_view(const CameraView& base, const ViewOverrideText& text) {
+    try {
+        return apply_view_override(base, parsed_view_override(text));
+    } catch (const std::invalid_argument& error) {
+        throw UsageError(error.what());
+    }
+}
+
 void check_output_directory(const std::filesystem::path& file) {
     const auto directory = file.has_parent_path() ? file.parent_path() : ".";
     if (std::error_code error; !std::filesystem::is_directory(directory, error)) {

@@ -125,6 +125,14 @@ void ViewerApp::prepare_first_scene() {
         scene_index_ = static_cast<int>(found - scenes_.begin());
     }
     SceneSession first = default_session(scene());
+    if (options_.start_view) {
+        try {
+            first.camera = FlyCamera::from_view(
+                apply_view_override(scene().cameras.front().view, *options_.start_view));
+        } catch (const std::invalid_argument& error) {
+            throw UsageError(error.what());
+        }
+    }
     for (const std::string& assignment : options_.assignments) {
         set_param_from_text(scene(), first.params, assignment);
     }
