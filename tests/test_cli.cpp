@@ -758,51 +758,23 @@ TEST_F(CliWithOwnCache, UnknownSceneNamesTheRefusedPluginAndWhy) {
     EXPECT_FALSE(fs::exists(out_png()));
 }
 
-// A scene whose plugin was refused at load is not just "unknown": every command that takes a scene
-// names the refused file and the reason (issue 16, item 7). liboops.so declares the id 'oops'
-// with a default out of range; no_id_given.so is refused before it gives an id, and is found by
-// its file name.
-TEST_F(CliWithOwnCache, UnknownSceneNamesTheRefusedPluginAndWhy) {
-    const fs::path refused = fs::path(FGR_TEST_FIXTURE_DIR) / "bad" / "refused";
-    ASSERT_TRUE(fs::exists(refused / "liboops.so")) << refused;
-    const std::string oops_refused = "fgr: error: unknown scene 'oops': plugin " +
-                                     (refused / "liboops.so").string() +
-                                     " was refused: parameter 'scale': default 3 outside [0.5, 2]";
-    const std::vector<std::vector<std::string>> commands = {
-        {"render", "oops", "-o", out_png().string(), "--width", "16", "--height", "12"},
-        {"bench", "oops", "--frames", "1"},
-        {"bench", "accuracy", "oops"},
-        {"view", "oops"},  // refused before a window would open
-    };
-    for (const std::vector<std::string>& args : commands) {
-        const RunResult result = run_with(args, refused);
-        SCOPED_TRACE(describe(args));
-        ASSERT_TRUE(result.exited) << result;
-        EXPECT_EQ(result.exit_code, 2) << result;
-        // The discovery warnings come first; the error is the last line.
-        std::string err = result.err;
-        if (!err.empty() && err.back() == '\n') err.pop_back();
-        EXPECT_EQ(err.substr(err.rfind('\n') + 1), oops_refused) << result;
+// Off a terminal, bench says how far each run is every quarter, none skipped: three frames per run
+// report 0, 1/3 and 2/3 done and then the end, which passes 75% and 100% at once (issue 16,
+// item 13).
+TEST_F(CliWithOwnCache, BenchProgressLinesNameEveryQuarterOfEveryRun) {
+    const RunResult result = run_with({"bench", "mandelbulb", "--frames", "3", "--runs", "2",
+                                       "--width", "16", "--height", "12", "-o",
+                                       (dir() / "bench").string()});
+    ASSERT_EQ(result.exit_code, 0) << result;
+    std::vector<std::string> progress;
+    std::istringstream lines(result.err);
+    for (std::string line; std::getline(lines, line);) {
+        if (line.starts_with("fgr: info: run ")) progress.push_back(line.substr(11));
     }
-
-    const RunResult nameless = run_with(
-        {"render", "no-id-given", "-o", out_png().string(), "--width", "16", "--height", "12"},
-        refused);
-    EXPECT_EQ(nameless.exit_code, 2) << nameless;
-    EXPECT_TRUE(contains(nameless.err, "unknown scene 'no-id-given': plugin " +
-                                           (refused / "no_id_given.so").string() +
-                                           " was refused: entry returned NULL"))
-        << nameless;
-
-    // An id no refused file can be: the scenes there are, and what was refused, on the one line.
-    const RunResult other = run_with(
-        {"render", "zzz", "-o", out_png().string(), "--width", "16", "--height", "12"}, refused);
-    EXPECT_EQ(other.exit_code, 2) << other;
-    EXPECT_TRUE(contains(other.err, "unknown scene 'zzz' (available: ")) << other;
-    EXPECT_TRUE(contains(other.err, (refused / "liboops.so").string() +
-                                        " (parameter 'scale': default 3 outside [0.5, 2])"))
-        << other;
-    EXPECT_FALSE(fs::exists(out_png()));
+    const std::vector<std::string> expected = {
+        "run 1/2: 0%", "run 1/2: 25%", "run 1/2: 50%", "run 1/2: 75%", "run 1/2: 100%",
+        "run 2/2: 0%", "run 2/2: 25%", "run 2/2: 50%", "run 2/2: 75%", "run 2/2: 100%"};
+    EXPECT_EQ(progress, expected) << result;
 }
 
 // A view typed as --eye/--target/--up/--fov is the view a camera path file with the same numbers

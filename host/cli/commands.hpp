@@ -89,7 +89,8 @@ void write_output(const std::filesystem::path& file, const std::string& text);
 
 // --- fgr list, fgr info --------------------------------------------------------------------------
 
-int command_list();
+// Every scene; with a scene id, that scene alone, each parameter with its description.
+int command_list(const std::string& scene_id);
 // With `math_check`, each device's math self-test verdict per precision and packet width.
 int command_info(bool math_check);
 
