@@ -639,6 +639,29 @@ TEST_F(CliTest, ListShowsMandelbulbParametersCamerasAndPaths) {
     }
 }
 
+// `fgr list SCENE` lists that scene alone with each parameter's description on the line under it,
+// built-in ones included; `fgr list` keeps one line a parameter (issue 16, item 13).
+TEST_F(CliTest, ListOfOneSceneDescribesEachParameter) {
+    const RunResult one = run({"list", "mandelbulb"});
+    ASSERT_EQ(one.exit_code, 0) << one;
+    EXPECT_EQ(one.out.rfind("mandelbulb  ", 0), 0u) << one.out;
+    const auto described = [&](const std::string& id, const std::string& description) {
+        const std::size_t line = one.out.find("\n    " + id + " ");
+        if (line == std::string::npos) return false;
+        const std::size_t next = one.out.find('\n', line + 1);
+        return one.out.compare(next, description.size() + 9, "\n        " + description) == 0;
+    };
+    EXPECT_TRUE(described("power", "exponent n of z -> z^n + c")) << one.out;
+    EXPECT_TRUE(described("normal_epsilon", "normal stencil size, in pixel footprints at the hit"))
+        << one.out;
+    const RunResult all = run({"list"});
+    ASSERT_EQ(all.exit_code, 0) << all;
+    EXPECT_EQ(all.out.find("exponent n of z -> z^n + c"), std::string::npos) << all.out;
+    const RunResult unknown = run({"list", "nosuchscene"});
+    EXPECT_EQ(unknown.exit_code, 2) << unknown;
+    expect_one_error_line(unknown);
+}
+
 TEST_F(CliTest, InfoListsADevice) {
     const RunResult result = run({"info"});
     ASSERT_TRUE(result.exited) << result;

@@ -90,7 +90,6 @@ int command_list(const std::string& scene_id) {
         if (i > 0) fmt::print("\n");
         print_scene(found.scenes[i], false);
     }
-    fmt::print("\n(`fgr list SCENE` describes each of a scene's parameters)\n");
     return 0;
 }
 
