@@ -860,7 +860,21 @@ TEST_F(CopyScene, RefusesUnknownEffectBit) {
 
 TEST_F(CopyScene, RefusesZeroLights) {
     built.desc.light_count = 0;
-    expect_refused("light count 0 outside [1, 16]");
+    expect_refused("light count is 0: a scene needs at least one light");
+}
+
+// A count over a NULL array says a light is missing, and the refusal carries the scene's id so
+// discovery's warning and `fgr render ID` can name the scene (issue 16, item 8).
+TEST_F(CopyScene, RefusesNullLightsSayingASceneNeedsOneAndNamingTheScene) {
+    built.desc.lights = nullptr;
+    built.desc.light_count = 8;
+    expect_refused("light count is 8 but the array is NULL: a scene needs at least one light");
+    EXPECT_EQ(copy_scene_description(&built.desc).declared_id, std::string(built.desc.id));
+}
+
+TEST_F(CopyScene, RefusalBeforeTheIdIsValidDeclaresNoId) {
+    built.desc.id = "Not An Id";
+    EXPECT_EQ(copy_scene_description(&built.desc).declared_id, "");
 }
 
 TEST_F(CopyScene, RefusesSeventeenLights) {

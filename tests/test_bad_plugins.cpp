@@ -108,7 +108,8 @@ const BrokenFixture kBrokenFixtures[] = {
     {"short_struct.so", "description struct too small (120 bytes)"},
     {"null_params.so", "parameter count is 1 but the array is NULL"},
     {"null_cameras.so", "camera count is 1 but the array is NULL"},
-    {"null_lights.so", "light count is 1 but the array is NULL"},
+    {"null_lights.so",
+     "light count is 1 but the array is NULL: a scene needs at least one light"},
     {"null_keyframes.so", "camera path 'orbit' keyframe count is 2 but the array is NULL"},
     {"wrapped_steps.so", "march settings: max_steps 4294967295 outside [1, 100000]"},
     {"negative_distance.so", "march settings: max_distance -5 must be finite and > 0"},
@@ -194,6 +195,24 @@ TEST(BadPlugin, DiscoveryNamesEachBrokenFileAndReasonAndLoadsTheGoodOne) {
         ASSERT_NE(line, warnings.end()) << "no warning for " << file;
         EXPECT_NE(line->find(broken.reason), std::string::npos) << *line;
     }
+}
+
+// A refusal after the description's id was read names the scene too (issue 16, item 8): the
+// warning for a NULL light list says which scene lacks its lights.
+TEST(BadPlugin, WarningNamesTheSceneWhoseLightsAreNull) {
+    LogCapture log;
+    const Discovery discovery = discover_scenes({kBadDir});
+    const fs::path file = kBadDir / "null_lights.so";
+    const SkippedPlugin* skipped = find_skipped(discovery, file);
+    ASSERT_NE(skipped, nullptr);
+    EXPECT_EQ(skipped->declared_id, "bad-folder-good");
+    const std::vector<std::string> warnings =
+        log.lines_starting("warning skipping plugin " + file.string() + ": ");
+    ASSERT_EQ(warnings.size(), 1u);
+    EXPECT_NE(warnings[0].find("scene 'bad-folder-good': light count is 1 but the array is NULL: "
+                               "a scene needs at least one light"),
+              std::string::npos)
+        << warnings[0];
 }
 
 TEST(BadPlugin, DuplicateIdInALaterFolderIsReportedAndThatFolderStillLoads) {

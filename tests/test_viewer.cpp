@@ -539,6 +539,25 @@ TEST_F(ViewerTest, ExitAfterEndsCleanlyWithFrameStatistics) {
     EXPECT_TRUE(run.screenshots.empty());
 }
 
+// --eye, --target and --fov set the view the viewer opens at (issue 16, item 12): with no input,
+// the camera it reports on exit stands where --eye put it and looks at --target.
+TEST_F(ViewerTest, EyeAndTargetSetTheStartView) {
+    const ViewerRun run = view("", {"mandelbulb", "--eye", "1.5,-2.5,0.5", "--target", "0,0,0.25",
+                                    "--fov", "40"},
+                               std::nullopt, 2);
+    ASSERT_EQ(run.result.exit_code, 0) << run.result;
+    const std::vector<double> position = stat_values(run.result.out, "camera_position");
+    const std::vector<double> forward = stat_values(run.result.out, "camera_forward");
+    ASSERT_EQ(position.size(), 3u) << run.result;
+    ASSERT_EQ(forward.size(), 3u) << run.result;
+    // Printed to 6 significant digits.
+    EXPECT_NEAR(position[0], 1.5, 1e-5);
+    EXPECT_NEAR(position[1], -2.5, 1e-5);
+    EXPECT_NEAR(position[2], 0.5, 1e-5);
+    const glm::dvec3 expected = glm::normalize(glm::dvec3(-1.5, 2.5, -0.25));
+    for (int i = 0; i < 3; ++i) EXPECT_NEAR(forward[static_cast<std::size_t>(i)], expected[i], 1e-5);
+}
+
 // Path mode refines a still view progressively past the shaded mode's sample cap (the viewer
 // runs with --samples 1): after 8 s standing still the last frame shown averages several samples
 // per pixel, all at full resolution.

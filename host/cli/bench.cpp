@@ -1,5 +1,6 @@
 // fgr bench: the benchmark protocol along a camera path (the accuracy sweep, `fgr bench accuracy`,
 // is in bench_accuracy.cpp).
+#include <algorithm>
 #include <cstdio>
 #include <filesystem>
 #include <string>
@@ -28,13 +29,33 @@ BenchProgress bench_progress(int runs) {
             if (done >= 1.0) std::fputc('\n', stderr);
             return;
         }
-        const int quarter = static_cast<int>(done * 4.0);
-        if (run != last_run || quarter != last_quarter) {
-            spdlog::info("run {}/{}: {:.0f}%", run + 1, runs, quarter * 25.0);
+        if (run != last_run) {
             last_run = run;
-            last_quarter = quarter;
+            last_quarter = -1;
+        }
+        // A line for every quarter passed, even when one frame jumps over a quarter (three
+        // frames report 0, 1/3, 2/3 and then the end, which passes both 75% and 100%).
+        const int quarter = std::clamp(static_cast<int>(done * 4.0), 0, 4);
+        while (last_quarter < quarter) {
+            ++last_quarter;
+            spdlog::info("run {}/{}: {}%", run + 1, runs, last_quarter * 25);
         }
     };
+}
+
+// The scene with, first among its paths, one that holds the view the options give over its
+// default camera (two equal keyframes a second apart): bench plays it like any path. `path_name`
+// is set to it.
+Scene with_still_path(const Scene& scene, const ViewOverrideText& view_override,
+                      std::string& path_name) {
+    const CameraView view = overridden_view(scene.cameras.front().view, view_override);
+    CameraPath still;
+    still.name = "command-line-view";
+    still.keyframes = {Keyframe{0.0f, view}, Keyframe{1.0f, view}};
+    Scene copy = scene;
+    copy.camera_paths.insert(copy.camera_paths.begin(), still);
+    path_name = still.name;
+    return copy;
 }
 
 }  // namespace
@@ -63,6 +84,7 @@ void add_bench_command(CLI::App& app, BenchOptions& options) {
     bench->add_option("-o,--output", options.output,
                       "write PREFIX.json and PREFIX.csv (default: bench-SCENE)");
     add_kernel_source_option(bench, options.kernel_source);
+    add_view_override_options(bench, options.view_override);
     add_precision_option(bench, options.settings.precision,
                          "for the frames of the path finer than float resolves");
     add_device_options(bench, options.device, options.settings.packet_width);
@@ -75,8 +97,18 @@ int command_bench(BenchOptions& options) {
         return command_bench_accuracy(options.accuracy, options.device);
     }
     if (options.scene.empty()) throw UsageError("bench needs a SCENE (see `fgr list`)");
+    if (!options.view_override.empty() && !options.settings.path.empty()) {
+        throw UsageError("--path plays a camera path, --eye, --target, --up and --fov hold a still "
+                         "view: give one or the other");
+    }
+    parsed_view_override(options.view_override);  // a malformed vector fails before any loading
     const Discovery found = discover();
-    const Scene scene = with_kernel_source(find_scene(found, options.scene), options.kernel_source);
+    const Scene& found_scene = find_scene(found, options.scene);
+    const Scene scene = with_kernel_source(
+        options.view_override.empty()
+            ? found_scene
+            : with_still_path(found_scene, options.view_override, options.settings.path),
+        options.kernel_source);
     if (options.frames > 0) options.settings.frames = options.frames;
     try {
         bench_path(scene, options.settings.path);

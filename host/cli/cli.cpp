@@ -37,7 +37,9 @@ int run_cli(int argc, char** argv) {
     app.require_subcommand(1);
     bool verbose = false;
     app.add_flag("-v,--verbose", verbose, "debug logging");
-    app.add_subcommand("list", "list the scenes found, with parameters, cameras and camera paths");
+    std::string list_scene;
+    app.add_subcommand("list", "list the scenes found, with parameters, cameras and camera paths")
+        ->add_option("scene", list_scene, "list this scene alone, describing each parameter");
     bool math_check = false;
     app.add_subcommand("info", "list OpenCL platforms and devices")
         ->add_flag("--math-check", math_check,
@@ -81,7 +83,7 @@ int run_cli(int argc, char** argv) {
     configure_logging(verbose);
     try {
         const std::string command = app.get_subcommands().front()->get_name();
-        if (command == "list") return command_list();
+        if (command == "list") return command_list(list_scene);
         if (command == "info") return command_info(math_check);
         if (command == "view") return command_view(view_options);
         if (command == "new-scene") return command_new_scene(new_scene_options);

@@ -22,6 +22,7 @@
 #include "fgr/precision.hpp"
 #include "fgr/render_mode.hpp"
 #include "fgr/scene.hpp"
+#include "fgr/view_override.hpp"
 #include "fgr/viewer/viewer.hpp"
 
 namespace fgr {
@@ -79,6 +80,13 @@ PathSettings chosen_path_settings(const ModeOptions& options, const Scene& scene
 PathSettings path_settings_from(const ModeOptions& options);
 EnvironmentChoice environment_choice_from(const ModeOptions& options);
 
+// --eye, --target, --up and --fov, for the commands that render (render, view, bench).
+void add_view_override_options(CLI::App* command, ViewOverrideText& text);
+// The options parsed (UsageError naming a malformed one).
+ViewOverride parsed_view_override(const ViewOverrideText& text);
+// `base` with the options' fields laid over it (UsageError when that view cannot be rendered).
+CameraView overridden_view(const CameraView& base, const ViewOverrideText& text);
+
 // Throws UsageError unless the directory `file` would be written into exists.
 void check_output_directory(const std::filesystem::path& file);
 // Writes `text` to `file` atomically; a failure is a RuntimeFailure.
@@ -86,7 +94,8 @@ void write_output(const std::filesystem::path& file, const std::string& text);
 
 // --- fgr list, fgr info --------------------------------------------------------------------------
 
-int command_list();
+// Every scene; with a scene id, that scene alone, each parameter with its description.
+int command_list(const std::string& scene_id);
 // With `math_check`, each device's math self-test verdict per precision and packet width.
 int command_info(bool math_check);
 
@@ -100,6 +109,7 @@ struct RenderOptions {
     std::vector<std::string> assignments;
     std::optional<std::string> camera;
     std::optional<std::string> camera_path;
+    ViewOverrideText view_override;  // --eye, --target, --up, --fov over the camera
     std::optional<float> time;
     int device = -1;
     std::optional<int> samples;  // per pixel, jittered; default 1 (shaded), 64 (path)
@@ -125,6 +135,7 @@ struct ViewCommandOptions {
     ModeOptions mode;
     std::string preset;
     std::string camera_path_file;
+    ViewOverrideText view_override;  // the first scene's start view
     std::string replay;
     double exit_after = 0.0;
 };
@@ -149,6 +160,7 @@ struct BenchOptions {
     std::string kernel_source;  // OpenCL source to time instead of the scene's own; empty: its own
     int device = -1;
     ModeOptions mode;
+    ViewOverrideText view_override;  // a still view to bench instead of a camera path
     AccuracyOptions accuracy;
     CLI::App* accuracy_command = nullptr;
 };

@@ -11,23 +11,13 @@
 #include "fgr/renderer.hpp"
 
 namespace fgr {
-namespace {
-
-std::string scene_ids(const std::vector<Scene>& scenes) {
-    std::string ids;
-    for (const auto& scene : scenes) ids += (ids.empty() ? "" : ", ") + scene.id;
-    return ids.empty() ? "none found" : ids;
-}
-
-}  // namespace
-
 Discovery discover() { return discover_scenes(plugin_search_path(executable_dir())); }
 
 const Scene& find_scene(const Discovery& found, const std::string& id) {
     for (const auto& scene : found.scenes) {
         if (scene.id == id) return scene;
     }
-    throw UsageError(fmt::format("unknown scene '{}' (available: {})", id, scene_ids(found.scenes)));
+    throw UsageError(unknown_scene_message(found, id));
 }
 
 void add_kernel_source_option(CLI::App* command, std::string& file) {
@@ -194,6 +184,34 @@ PathSettings chosen_path_settings(const ModeOptions& options, const Scene& scene
     }
     spdlog::info("environment: {}", settings.environment->description);
     return settings;
+}
+
+void add_view_override_options(CLI::App* command, ViewOverrideText& text) {
+    const std::string group = "Viewpoint (over the scene's camera; no camera path file needed)";
+    command->add_option("--eye", text.eye, "camera position X,Y,Z (default: the camera's)")
+        ->group(group);
+    command->add_option("--target", text.target, "point looked at X,Y,Z (default: the camera's)")
+        ->group(group);
+    command->add_option("--up", text.up, "up direction X,Y,Z (default: the camera's)")
+        ->group(group);
+    command->add_option("--fov", text.fov, "horizontal field of view, degrees in (0, 180)")
+        ->group(group);
+}
+
+ViewOverride parsed_view_override(const ViewOverrideText& text) {
+    try {
+        return parse_view_override(text);
+    } catch (const std::invalid_argument& error) {
+        throw UsageError(error.what());
+    }
+}
+
+CameraView overridden_view(const CameraView& base, const ViewOverrideText& text) {
+    try {
+        return apply_view_override(base, parsed_view_override(text));
+    } catch (const std::invalid_argument& error) {
+        throw UsageError(error.what());
+    }
 }
 
 void check_output_directory(const std::filesystem::path& file) {

@@ -1,4 +1,5 @@
-// fgr list: every scene found, with its parameters, cameras, camera paths and effects.
+// fgr list: every scene found, with its parameters, cameras, camera paths and effects; fgr list
+// SCENE: that scene, each parameter with its description.
 #include <string>
 
 #include <fmt/format.h>
@@ -31,7 +32,8 @@ std::string default_text(const ParamInfo& param) {
     return fmt::format("{}", value[0]);
 }
 
-void print_scene(const Scene& scene) {
+// Parameters are listed one line each; `described` puts each one's description under it.
+void print_scene(const Scene& scene, bool described) {
     fmt::print("{}  {} - {}\n", scene.id, scene.name, scene.description);
     if (scene.ifs) {
         // An IFS file, or a plugin that handed over maps (ABI 1.3).
@@ -49,6 +51,9 @@ void print_scene(const Scene& scene) {
         fmt::print("    {:<20} {:<7} {:<30} default {:<16} {} ({})\n", param.id,
                    param_type_name(param.type), range_text(param), default_text(param),
                    param.label, param.group);
+        if (described && !param.description.empty()) {
+            fmt::print("        {}\n", param.description);
+        }
     }
     std::string cameras;
     for (const auto& camera : scene.cameras) cameras += (cameras.empty() ? "" : ", ") + camera.name;
@@ -70,8 +75,12 @@ void print_scene(const Scene& scene) {
 
 }  // namespace
 
-int command_list() {
+int command_list(const std::string& scene_id) {
     const Discovery found = discover();
+    if (!scene_id.empty()) {
+        print_scene(find_scene(found, scene_id), true);
+        return 0;
+    }
     if (found.scenes.empty()) {
         fmt::print("no scenes found; searched:\n");
         for (const auto& dir : plugin_search_path(executable_dir())) fmt::print("  {}\n", dir.string());
@@ -79,7 +88,7 @@ int command_list() {
     }
     for (size_t i = 0; i < found.scenes.size(); ++i) {
         if (i > 0) fmt::print("\n");
-        print_scene(found.scenes[i]);
+        print_scene(found.scenes[i], false);
     }
     return 0;
 }

@@ -67,9 +67,9 @@ CameraView choose_view(const Scene& scene, const RenderOptions& options) {
             throw UsageError(fmt::format("scene '{}' has no camera '{}' (see `fgr list`)", scene.id,
                                          *options.camera));
         }
-        return camera->view;
+        return overridden_view(camera->view, options.view_override);
     }
-    return scene.cameras.front().view;
+    return overridden_view(scene.cameras.front().view, options.view_override);
 }
 
 void check_output_path(const std::filesystem::path& output) {
@@ -96,8 +96,10 @@ void check_render_options(const RenderOptions& options) {
     }
     if (options.all) {
         if (!options.scene.empty()) throw UsageError("give a SCENE or --all, not both");
-        if (!options.assignments.empty() || options.camera || options.camera_path || options.time) {
-            throw UsageError("--all renders each scene's default view: no --set, --camera or --time");
+        if (!options.assignments.empty() || options.camera || options.camera_path || options.time ||
+            !options.view_override.empty()) {
+            throw UsageError(
+                "--all renders each scene's default view: no --set, --camera, --eye... or --time");
         }
         if (!options.kernel_source.empty()) throw UsageError("--kernel-source is for one SCENE, not --all");
         return;
@@ -105,6 +107,11 @@ void check_render_options(const RenderOptions& options) {
     if (options.scene.empty()) throw UsageError("render needs a SCENE (see `fgr list`) or --all");
     if (options.time && !options.camera_path) throw UsageError("--time needs --camera-path");
     if (options.camera_path && !options.time) throw UsageError("--camera-path needs --time");
+    if (options.camera_path && !options.view_override.empty()) {
+        throw UsageError("--eye, --target, --up and --fov set a still view: not with --camera-path "
+                         "(they change --camera, or the scene's default camera)");
+    }
+    parsed_view_override(options.view_override);  // a malformed vector fails before any loading
     check_output_path(options.output);
     const bool exr = std::filesystem::path(options.output).extension() != ".png";
     if (!options.aovs.empty() && !exr) throw UsageError("--aov needs an .exr output");
@@ -266,6 +273,7 @@ void add_render_command(CLI::App& app, RenderOptions& options) {
                                     "camera path of the scene, or a .json file saved by `fgr view`");
     path->excludes(camera);
     render->add_option("--time", options.time, "time along the camera path, in seconds");
+    add_view_override_options(render, options.view_override);
     render->add_option("--spp", options.samples,
                        "samples per pixel, jittered and averaged: anti-aliasing, depth of field, "
                        "and the path tracer's estimate (default 1; 64 with --mode path); with "

@@ -55,6 +55,7 @@ void add_view_command(CLI::App& app, ViewCommandOptions& options) {
                      "change the first scene's effects, e.g. +shadows,-ambient_occlusion");
     view->add_option("--camera-path", options.camera_path_file,
                      "a .json camera path saved by the viewer, to play with P");
+    add_view_override_options(view, options.view_override);
     view->add_option("--output-dir", viewer.output_dir,
                      "where F12 screenshots and saved camera paths go (default: .)");
     view->add_option("--replay", options.replay, "feed timed input events from a file");
@@ -85,6 +86,9 @@ int command_view(ViewCommandOptions& options) {
             throw UsageError("--camera-path must name a .json file saved by the viewer");
         }
         viewer.camera_path_file = options.camera_path_file;
+    }
+    if (!options.view_override.empty()) {
+        viewer.start_view = parsed_view_override(options.view_override);
     }
     if (options.mode.mode) {
         try {

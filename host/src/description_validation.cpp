@@ -421,6 +421,14 @@ Light copy_light(const fgr_light& light, uint32_t index) {
 }
 
 std::vector<Light> copy_lights(const fgr_scene_desc& desc) {
+    // A scene is lit by its lights alone in the shaded mode: none, or a count over a NULL array
+    // (FGR_SCENE over an empty list, or a list forgotten), is refused saying what is missing.
+    if (desc.light_count == 0) fail("light count is 0: a scene needs at least one light");
+    if (desc.lights == nullptr) {
+        fail("light count is {} but the array is NULL: a scene needs at least one light (point "
+             "`lights` at an array of them)",
+             desc.light_count);
+    }
     check_count(desc.light_count, 1, kMaxLights, "light");
     const StructArray<fgr_light> array(desc.lights, desc.light_count, kV1LightSize, "light");
     std::vector<Light> lights;
@@ -593,13 +601,15 @@ Scene copy_ifs_checked(const fgr_scene_desc& desc, Scene named) {
 
 // --- The whole description -----------------------------------------------------------------------
 
-Scene copy_checked(const fgr_scene_desc& desc) {
+// `declared_id` gets the scene id as soon as it is known valid, for the refusal to name it.
+Scene copy_checked(const fgr_scene_desc& desc, std::string& declared_id) {
     check_scene_header(desc);
     Scene scene;
     scene.id = bounded_string(desc.id, kMaxIdLength, "scene id");
     if (!is_identifier(scene.id, true)) {
         fail("scene id '{}' must match [a-z][a-z0-9_-]*", printable(scene.id));
     }
+    declared_id = scene.id;
     scene.name = bounded_string(desc.name, kMaxTextLength, "scene name");
     if (scene.name.empty()) fail("scene name is empty");
     scene.description = bounded_string(desc.description, kMaxTextLength, "scene description");
@@ -629,7 +639,9 @@ Scene copy_checked(const fgr_scene_desc& desc) {
     return scene;
 }
 
-LoadResult failure(std::string reason) { return LoadResult{std::nullopt, std::move(reason)}; }
+LoadResult failure(std::string reason, std::string declared_id) {
+    return LoadResult{std::nullopt, std::move(reason), std::move(declared_id)};
+}
 
 }  // namespace
 
@@ -653,13 +665,14 @@ bool is_scene_id(std::string_view id) { return is_identifier(id, true); }
 bool is_camera_name(std::string_view name) { return is_name(name); }
 
 LoadResult copy_scene_description(const fgr_scene_desc* desc) {
-    if (desc == nullptr) return failure("description is NULL");
+    if (desc == nullptr) return failure("description is NULL", {});
+    std::string declared_id;
     try {
-        return LoadResult{copy_checked(*desc), {}};
+        return LoadResult{copy_checked(*desc, declared_id), {}};
     } catch (const InvalidDescription& invalid) {
-        return failure(invalid.what());
+        return failure(invalid.what(), declared_id);
     } catch (const std::exception& error) {
-        return failure(fmt::format("could not copy description: {}", error.what()));
+        return failure(fmt::format("could not copy description: {}", error.what()), declared_id);
     }
 }
 

@@ -73,7 +73,7 @@ public:
 private:
     void load(const fs::path& file) {
         LoadResult result = load_scene_file(file);
-        if (!result.scene) return skip(file, result.error);
+        if (!result.scene) return skip(file, result.error, result.declared_id);
         const auto [existing, inserted] = loaded_from_.emplace(result.scene->id, file);
         if (!inserted) {
             return skip(file, fmt::format("duplicate scene id '{}' (already loaded from {})",
@@ -83,9 +83,10 @@ private:
         discovery_.scenes.push_back(std::move(*result.scene));
     }
 
-    void skip(const fs::path& file, std::string reason) {
-        spdlog::warn("skipping plugin {}: {}", file.string(), reason);
-        discovery_.skipped.push_back({file, std::move(reason)});
+    void skip(const fs::path& file, std::string reason, std::string declared_id = {}) {
+        spdlog::warn("skipping plugin {}: {}{}", file.string(),
+                     declared_id.empty() ? "" : fmt::format("scene '{}': ", declared_id), reason);
+        discovery_.skipped.push_back({file, std::move(reason), std::move(declared_id)});
     }
 
     Discovery discovery_;
@@ -93,7 +94,69 @@ private:
     std::set<fs::path> scanned_directories_;
 };
 
+std::string scene_ids(const std::vector<Scene>& scenes) {
+    std::string ids;
+    for (const auto& scene : scenes) ids += (ids.empty() ? "" : ", ") + scene.id;
+    return ids.empty() ? "none found" : ids;
+}
+
+// The scene id a file name suggests: oops.so, liboops.so and oops.ifs.json give "oops"; '_' reads
+// as '-' (a CMake target liboops_scene.so for the scene 'oops-scene').
+std::string id_from_file_name(const fs::path& file) {
+    std::string name = file.filename().string();
+    for (const std::string_view suffix : {".ifs.json", ".so"}) {
+        if (name.ends_with(suffix)) {
+            name.erase(name.size() - suffix.size());
+            break;
+        }
+    }
+    if (name.starts_with("lib")) name.erase(0, 3);
+    std::replace(name.begin(), name.end(), '_', '-');
+    return name;
+}
+
+std::string dashed(std::string_view id) {
+    std::string text(id);
+    std::replace(text.begin(), text.end(), '_', '-');
+    return text;
+}
+
+// The refused file that was scene `id`: by the id its description declared, else by its name.
+const SkippedPlugin* refused_scene(const Discovery& found, std::string_view id) {
+    for (const SkippedPlugin& skipped : found.skipped) {
+        if (skipped.declared_id == id) return &skipped;
+    }
+    for (const SkippedPlugin& skipped : found.skipped) {
+        if (skipped.declared_id.empty() && id_from_file_name(skipped.file) == dashed(id)) {
+            return &skipped;
+        }
+    }
+    return nullptr;
+}
+
 }  // namespace
+
+std::string unknown_scene_message(const Discovery& found, std::string_view id) {
+    if (const SkippedPlugin* refused = refused_scene(found, id)) {
+        return fmt::format("unknown scene '{}': plugin {} was refused: {}", id,
+                           refused->file.string(), refused->reason);
+    }
+    std::string message =
+        fmt::format("unknown scene '{}' (available: {})", id, scene_ids(found.scenes));
+    if (!found.skipped.empty()) {
+        // One of them may be the scene under another name: say which files were refused and why.
+        constexpr std::size_t kShown = 3;
+        message += "; refused:";
+        for (std::size_t i = 0; i < std::min(found.skipped.size(), kShown); ++i) {
+            message += fmt::format("{} {} ({})", i == 0 ? "" : ",",
+                                   found.skipped[i].file.string(), found.skipped[i].reason);
+        }
+        if (found.skipped.size() > kShown) {
+            message += fmt::format(" and {} more", found.skipped.size() - kShown);
+        }
+    }
+    return message;
+}
 
 std::vector<fs::path> plugin_search_path(const fs::path& exe_dir) {
     std::vector<fs::path> directories;

@@ -17,6 +17,9 @@ namespace fgr {
 struct LoadResult {
     std::optional<Scene> scene;
     std::string error;
+    // On a refusal, the scene id the description declared if it got as far as a valid one (""
+    // otherwise): `fgr render ID` can then say why scene ID is missing.
+    std::string declared_id = {};
 };
 
 // Validates `desc` field by field (reading only fields its struct_size covers) and copies it into

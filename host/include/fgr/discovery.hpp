@@ -3,6 +3,7 @@
 
 #include <filesystem>
 #include <string>
+#include <string_view>
 #include <vector>
 
 #include "fgr/scene.hpp"
@@ -20,6 +21,7 @@ std::filesystem::path executable_dir();
 struct SkippedPlugin {
     std::filesystem::path file;
     std::string reason;
+    std::string declared_id = {};  // the scene id its description declared, if it got that far
 };
 
 struct Discovery {
@@ -31,5 +33,11 @@ struct Discovery {
 // by name within a directory; missing directories are ignored. Each skipped file gets one warning
 // log line naming the file and the reason.
 Discovery discover_scenes(const std::vector<std::filesystem::path>& directories);
+
+// The one-line error for a scene id that `found` lacks. When a refused file is that scene (its
+// description declared the id, or, refused before the id could be read, its file name is the id,
+// e.g. liboops.so or oops.ifs.json for 'oops'), the message names the file and why it was refused;
+// otherwise it lists the scenes there are and the files that were refused.
+std::string unknown_scene_message(const Discovery& found, std::string_view id);
 
 }  // namespace fgr

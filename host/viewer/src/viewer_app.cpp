@@ -125,6 +125,14 @@ void ViewerApp::prepare_first_scene() {
         scene_index_ = static_cast<int>(found - scenes_.begin());
     }
     SceneSession first = default_session(scene());
+    if (options_.start_view) {
+        try {
+            first.camera = FlyCamera::from_view(
+                apply_view_override(scene().cameras.front().view, *options_.start_view));
+        } catch (const std::invalid_argument& error) {
+            throw UsageError(error.what());
+        }
+    }
     for (const std::string& assignment : options_.assignments) {
         set_param_from_text(scene(), first.params, assignment);
     }
@@ -608,6 +616,10 @@ int run_viewer(const ViewerOptions& options) {
     Discovery found = discover_scenes(plugin_search_path(executable_dir()));
     if (found.scenes.empty()) {
         throw std::runtime_error("no scenes found (see `fgr list` for the folders searched)");
+    }
+    const auto has_id = [&](const Scene& scene) { return scene.id == options.scene; };
+    if (!options.scene.empty() && std::none_of(found.scenes.begin(), found.scenes.end(), has_id)) {
+        throw UsageError(unknown_scene_message(found, options.scene));
     }
     ViewerApp app(options, std::move(found.scenes));
     return app.run();

@@ -227,6 +227,9 @@ typedef struct fgr_scene_desc {
     const fgr_camera_path* camera_paths; /* may be NULL when the count is 0 */
     uint32_t camera_path_count;
 
+    /* At least one light (the shaded mode is lit by them alone): a count of 0, or a count over a
+     * NULL array, is refused naming the scene; scene_helpers.h's FGR_SCENE refuses an empty list,
+     * NULL or a pointer at compile time ("a scene needs at least one light"). */
     const fgr_light* lights; /* at least one */
     uint32_t light_count;    /* at most 16 */
 

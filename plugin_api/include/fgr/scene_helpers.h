@@ -86,6 +86,31 @@
 
 #define FGR_COUNT(array) ((uint32_t)(sizeof(array) / sizeof((array)[0])))
 
+/* The light count of FGR_SCENE, FGR_SCENE_WITH_MODE and FGR_IFS_SCENE: a scene needs at least one
+ * light, so an empty list, NULL or a pointer (whose size says nothing of a count) fails to compile
+ * with that message instead of a puzzling count (GNU C counts NULL as 8 "lights" of sizeof(void)).
+ * Dividing by sizeof(fgr_light), not by the first element's size, is what makes NULL and pointers
+ * count 0 here. */
+#ifdef __cplusplus
+template <size_t Bytes>
+constexpr uint32_t fgr_light_count_of_size() {
+    static_assert(Bytes / sizeof(fgr_light) > 0,
+                  "a scene needs at least one light: pass a non-empty static array of fgr_light "
+                  "(not NULL, not a pointer) as FGR_SCENE's lights");
+    return (uint32_t)(Bytes / sizeof(fgr_light));
+}
+#define FGR_LIGHT_COUNT(lights) fgr_light_count_of_size<sizeof(lights)>()
+#else
+#define FGR_LIGHT_COUNT(lights)                                                                  \
+    ((uint32_t)(sizeof(lights) / sizeof(fgr_light)) +                                            \
+     0u * (uint32_t)sizeof(struct {                                                              \
+         _Static_assert(sizeof(lights) / sizeof(fgr_light) > 0,                                  \
+                        "a scene needs at least one light: pass a non-empty static array of "    \
+                        "fgr_light (not NULL, not a pointer) as FGR_SCENE's lights");            \
+         int fgr_unused;                                                                         \
+     }))
+#endif
+
 /* March settings: at most `steps` DE evaluations per ray, rays stop beyond `distance`, hit when
  * DE < threshold * pixel footprint, `iterations` DE iterations by default, rays advance
  * step_factor * DE (1 for strict bounds, below 1 for estimated DEs). */
@@ -114,7 +139,8 @@ constexpr uint64_t fgr_source_length(const char (&)[N]) { return N; }
     {                                                                                             \
         FGR_HEADER(fgr_scene_desc), id, name, description, source, source_name, params,           \
             FGR_COUNT(params), cameras, FGR_COUNT(cameras), paths, FGR_COUNT(paths), lights,      \
-            FGR_COUNT(lights), effects, march, FGR_SOURCE_LENGTH(source), NULL, NULL, 0, 0, 0     \
+            FGR_LIGHT_COUNT(lights), effects, march, FGR_SOURCE_LENGTH(source), NULL, NULL, 0, 0, \
+            0                                                                                     \
     }
 
 /* The same, asking for a render mode by default: "shaded", "path" or "brute" (ABI 1.2: any mode
@@ -126,8 +152,8 @@ constexpr uint64_t fgr_source_length(const char (&)[N]) { return N; }
     {                                                                                             \
         FGR_HEADER(fgr_scene_desc), id, name, description, source, source_name, params,           \
             FGR_COUNT(params), cameras, FGR_COUNT(cameras), paths, FGR_COUNT(paths), lights,      \
-            FGR_COUNT(lights), effects, march, FGR_SOURCE_LENGTH(source), default_mode, NULL, 0,  \
-            0, 0                                                                                  \
+            FGR_LIGHT_COUNT(lights), effects, march, FGR_SOURCE_LENGTH(source), default_mode,     \
+            NULL, 0, 0, 0                                                                         \
     }
 
 /* An IFS map x -> scale x + (tx, ty, tz): a uniform scaling towards a point (ABI 1.3). */
@@ -144,8 +170,8 @@ constexpr uint64_t fgr_source_length(const char (&)[N]) { return N; }
                       lights, effects)                                                           \
     {                                                                                            \
         FGR_HEADER(fgr_scene_desc), id, name, description, NULL, NULL, NULL, 0, cameras,         \
-            FGR_COUNT(cameras), paths, FGR_COUNT(paths), lights, FGR_COUNT(lights), effects,     \
-            FGR_MARCH(1u, 100.0f, 1.0f, 1u, 1.0f), 0, NULL, maps, FGR_COUNT(maps),               \
+            FGR_COUNT(cameras), paths, FGR_COUNT(paths), lights, FGR_LIGHT_COUNT(lights),        \
+            effects, FGR_MARCH(1u, 100.0f, 1.0f, 1u, 1.0f), 0, NULL, maps, FGR_COUNT(maps),     \
             default_depth, max_depth                                                             \
     }
 

@@ -10,6 +10,7 @@
 #include "fgr/path_settings.hpp"
 #include "fgr/precision.hpp"
 #include "fgr/render_mode.hpp"
+#include "fgr/view_override.hpp"
 
 namespace fgr::viewer {
 
@@ -29,6 +30,7 @@ struct ViewerOptions {
     std::vector<std::string> assignments;   // --set id=value for the first scene
     std::string effect_changes;             // --effects for the first scene
     std::optional<std::filesystem::path> camera_path_file;  // load (and list) a recorded path
+    std::optional<ViewOverride> start_view;  // --eye, --target, --up, --fov: the first view
     std::filesystem::path output_dir = ".";  // screenshots and saved camera paths
     std::optional<std::filesystem::path> replay;  // scripted input (see replay.hpp)
     std::optional<double> exit_after_seconds;
