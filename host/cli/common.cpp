@@ -7,6 +7,7 @@
 #include "commands.hpp"
 #include "fgr/atomic_file.hpp"
 #include "fgr/renderer.hpp"
+#include "fgr/scene_source.hpp"
 
 namespace fgr {
 namespace {
@@ -26,6 +27,20 @@ const Scene& find_scene(const Discovery& found, const std::string& id) {
         if (scene.id == id) return scene;
     }
     throw UsageError(fmt::format("unknown scene '{}' (available: {})", id, scene_ids(found.scenes)));
+}
+
+Scene scene_as_used(const Scene& scene, bool dev) {
+    if (!dev) {
+        if (const std::string stale = stale_source_warning(scene); !stale.empty()) {
+            spdlog::warn("{}", stale);
+        }
+        return scene;
+    }
+    try {
+        return with_source_from_disk(scene);
+    } catch (const std::runtime_error& error) {
+        throw UsageError(error.what());
+    }
 }
 
 ComputeDevice open_requested_device(int index) {

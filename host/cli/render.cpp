@@ -96,6 +96,7 @@ void check_render_options(const RenderOptions& options) {
     }
     if (options.all) {
         if (!options.scene.empty()) throw UsageError("give a SCENE or --all, not both");
+        if (options.dev) throw UsageError("--dev is for one scene: give a SCENE, not --all");
         if (!options.assignments.empty() || options.camera || options.camera_path || options.time) {
             throw UsageError("--all renders each scene's default view: no --set, --camera or --time");
         }
@@ -236,7 +237,7 @@ int render_all(const RenderOptions& options) {
     const ComputeDevice device = open_requested_device(options.device);
     ProgramCache cache(ProgramCache::default_directory());
     for (size_t i = 0; i < found.scenes.size(); ++i) {
-        const Scene& scene = found.scenes[i];
+        const Scene scene = scene_as_used(found.scenes[i], false);
         fmt::print("scene {} ({}/{})\n", scene.id, i + 1, found.scenes.size());
         render_to_file(scene, default_request(scene, options), device, cache, options,
                        directory / (scene.id + ".png"));
@@ -286,6 +287,9 @@ void add_render_command(CLI::App& app, RenderOptions& options) {
                          "when a pixel is finer than float resolves (deep zooms)");
     render->add_flag("--stats", options.stats,
                      "print steps per pixel, DE evaluations and rays that ran out of steps");
+    render->add_flag("--dev", options.dev,
+                     "read the scene's .cl file from disk instead of the copy its plugin embeds "
+                     "(as `fgr view --dev`): try an edit without rebuilding the plugin");
     add_device_options(render, options.device, options.packet_width);
 }
 
@@ -293,7 +297,7 @@ int command_render(const RenderOptions& options) {
     check_render_options(options);
     if (options.all) return render_all(options);
     const Discovery found = discover();
-    const Scene& scene = find_scene(found, options.scene);
+    const Scene scene = scene_as_used(find_scene(found, options.scene), options.dev);
     FrameRequest request = default_request(scene, options);
     for (const auto& assignment : options.assignments) {
         set_param_from_text(scene, request.params, assignment);
