@@ -61,7 +61,8 @@ endfunction()
 # default) `fgr check` runs its numerical checks, failing the build with a report of what to fix.
 # A stamp file records success: a failed check runs again on the next build.
 option(FGR_CHECK_SCENE "run `fgr check` on each scene plugin after building it" ON)
-option(FGR_COMPILE_SCENE "compile each scene plugin's kernel after building it (`fgr check --compile`)" ON)
+option(FGR_COMPILE_SCENE
+    "compile each scene plugin's kernel after building it (`fgr check --compile`)" ON)
 function(_fgr_check_scene_plugin name cl_sources)
     if(NOT FGR_COMPILE_SCENE AND NOT FGR_CHECK_SCENE)
         return()

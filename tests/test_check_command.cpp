@@ -1,13 +1,13 @@
 // `fgr check`, `fgr render --dev` and the stale-plugin warning, run as a child process: a report
 // that names the fault and the fix, exit 1 on a failed check, compiler errors with the scene's
 // file and line, and a plugin whose .cl file changed after it was built said so in one line.
+#include <gtest/gtest.h>
+
 #include <chrono>
 #include <filesystem>
 #include <fstream>
 #include <string>
 #include <vector>
-
-#include <gtest/gtest.h>
 
 #include "child_process.hpp"
 
@@ -112,8 +112,8 @@ TEST_F(CheckCommandTest, AChangedSourceIsNoticedAndDevRendersIt) {
     const fs::path source = kFixtureDir / "stale" / "stale_scene.cl";
     const std::string embedded =
         "real scene_de(vec3 p, PARAMS) { return v3_length(p) - param_scale; }\n";
-    const std::vector<std::string> render = {"render", "fixture-stale", "-o", "out.png",
-                                             "--width", "64", "--height", "48"};
+    const std::vector<std::string> render = {"render", "fixture-stale", "-o", "out.png", "--width",
+                                             "64",     "--height",      "48"};
     const std::string warning =
         "stale_scene.cl changed after stale_scene.so was built: rebuild the plugin";
 
@@ -124,7 +124,8 @@ TEST_F(CheckCommandTest, AChangedSourceIsNoticedAndDevRendersIt) {
     const long full_hits = hits_of(same.out);
     ASSERT_GT(full_hits, 200) << same.out;
 
-    write_text(source, "real scene_de(vec3 p, PARAMS) { return v3_length(p) - 0.5f * param_scale; }\n");
+    write_text(source,
+               "real scene_de(vec3 p, PARAMS) { return v3_length(p) - 0.5f * param_scale; }\n");
     const RunResult stale = run(render, plugins);
     EXPECT_EQ(stale.exit_code, 0) << stale;
     EXPECT_TRUE(contains(stale.err, warning)) << stale.err;
@@ -149,9 +150,9 @@ TEST_F(CheckCommandTest, AChangedSourceIsNoticedAndDevRendersIt) {
 
 // --dev needs a recorded file to read: a scene that records only a name is refused, saying so.
 TEST_F(CheckCommandTest, DevWithoutARecordedSourceFileIsAUsageError) {
-    const RunResult result = run({"render", "fixture-good", "-o", "out.png", "--width", "16",
-                                  "--height", "16", "--dev"},
-                                 kFixtureDir);
+    const RunResult result =
+        run({"render", "fixture-good", "-o", "out.png", "--width", "16", "--height", "16", "--dev"},
+            kFixtureDir);
     EXPECT_EQ(result.exit_code, 2) << result;
     EXPECT_TRUE(contains(result.err, "records no .cl file")) << result.err;
 }

@@ -5,10 +5,10 @@
 // as `fgr check FILE` (SceneCheck.<file>, tests/CMakeLists.txt), with the tolerances argued in
 // host/src/scene_check.cpp. Here each check is shown to catch the fault it is for, on a small scene
 // broken in that one way, and to pass the same scene when it is right.
+#include <gtest/gtest.h>
+
 #include <cmath>
 #include <string>
-
-#include <gtest/gtest.h>
 
 #include "fgr/parameters.hpp"
 #include "fgr/plugin_loader.hpp"
@@ -27,8 +27,8 @@ ComputeDevice& device() {
 // A ball of radius 1 given by `de`, seen from 4 away by two cameras and along a camera path; its
 // march takes steps of `step_factor` times the DE.
 Scene ball(const std::string& de, float step_factor = 1.0f) {
-    Scene scene = test::inline_scene("real scene_de(vec3 p, PARAMS) { (void)fgr_params; " + de +
-                                     " }");
+    Scene scene =
+        test::inline_scene("real scene_de(vec3 p, PARAMS) { (void)fgr_params; " + de + " }");
     scene.params.clear();
     scene.march.step_factor = step_factor;
     add_builtin_params(scene);
@@ -75,7 +75,8 @@ TEST_F(SceneCheckTest, AnOverestimateIsMeasuredAndTheSafeStepFactorAdvised) {
     const SceneCheckReport report = check(ball(de));
     const CheckResult& safety = find_check(report, "march-safety");
     ASSERT_EQ(safety.status, CheckStatus::Failed) << failures(report);
-    EXPECT_NE(safety.detail.find("overestimates by up to 1.31x"), std::string::npos) << safety.detail;
+    EXPECT_NE(safety.detail.find("overestimates by up to 1.31x"), std::string::npos)
+        << safety.detail;
     EXPECT_NE(safety.advice.find("set step_factor <= 0.76 (now 1)"), std::string::npos)
         << safety.advice;
     const CheckResult& lipschitz = find_check(report, "lipschitz");

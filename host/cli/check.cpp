@@ -1,13 +1,13 @@
 // fgr check: the numerical checks of fgr/scene_check.hpp on one scene, given by id or as a plugin
 // file, with a report a scene's author can act on; --compile only builds the kernel (what the SDK
 // template's build runs, so a typo in the .cl fails `cmake --build` with its file and line).
+#include <fmt/format.h>
+
 #include <cstdio>
 #include <optional>
 #include <regex>
 #include <sstream>
 #include <string>
-
-#include <fmt/format.h>
 
 #include "commands.hpp"
 #include "fgr/program_cache.hpp"
@@ -67,9 +67,10 @@ int command_check(const CheckOptions& options) {
         built.emplace(device, cache, scene, options.packet_width);  // compiles the kernel
     } catch (const KernelBuildError& error) {
         std::fputs(conventional_build_log(error.build_log()).c_str(), stderr);
-        throw RuntimeFailure(fmt::format("the kernel of scene '{}' does not compile (errors above, "
-                                         "in {})",
-                                         scene.id, scene.source_name));
+        throw RuntimeFailure(
+            fmt::format("the kernel of scene '{}' does not compile (errors above, "
+                        "in {})",
+                        scene.id, scene.source_name));
     }
     SceneChecker& checker = *built;
     if (options.compile_only) {

@@ -4,15 +4,15 @@
 // every built scene; each check's comment says why its tolerance is what it is.
 #include "fgr/scene_check.hpp"
 
+#include <fmt/format.h>
+
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
+#include <glm/geometric.hpp>
 #include <limits>
 #include <map>
 #include <random>
-
-#include <fmt/format.h>
-#include <glm/geometric.hpp>
 
 #include "fgr/camera.hpp"
 #include "fgr/parameters.hpp"
@@ -20,7 +20,9 @@
 namespace fgr {
 namespace {
 
-std::string point_text(glm::vec3 p) { return fmt::format("({:.4g}, {:.4g}, {:.4g})", p.x, p.y, p.z); }
+std::string point_text(glm::vec3 p) {
+    return fmt::format("({:.4g}, {:.4g}, {:.4g})", p.x, p.y, p.z);
+}
 
 std::string value_text(float value) {
     if (std::isnan(value)) return "NaN";
@@ -101,8 +103,8 @@ std::vector<glm::vec3> sphere_directions(int count) {
     for (int i = 0; i < count; ++i) {
         const float z = 1.0f - 2.0f * (float(i) + 0.5f) / float(count);
         const float rho = std::sqrt(std::max(0.0f, 1.0f - z * z));
-        directions.emplace_back(rho * std::cos(golden * float(i)), rho * std::sin(golden * float(i)),
-                                z);
+        directions.emplace_back(rho * std::cos(golden * float(i)),
+                                rho * std::sin(golden * float(i)), z);
     }
     return directions;
 }
@@ -116,8 +118,8 @@ std::vector<glm::vec3> cap_directions(glm::vec3 axis, float angle, int count) {
     for (int i = 0; i < count; ++i) {
         const float polar = angle * std::sqrt((float(i) + 0.5f) / float(count));
         const float around = golden * float(i);
-        directions.push_back(std::cos(polar) * axis +
-                             std::sin(polar) * (std::cos(around) * side + std::sin(around) * other));
+        directions.push_back(std::cos(polar) * axis + std::sin(polar) * (std::cos(around) * side +
+                                                                         std::sin(around) * other));
     }
     return directions;
 }
@@ -201,8 +203,8 @@ PixelDifference pixel_difference(const Frame& a, const Frame& b) {
     for (size_t pixel = 0; pixel < a.depth.size(); ++pixel) {
         int worst = 0;
         for (size_t c = 0; c < 3; ++c) {
-            worst = std::max(worst, std::abs(int(a.image.rgb[3 * pixel + c]) -
-                                             int(b.image.rgb[3 * pixel + c])));
+            worst = std::max(
+                worst, std::abs(int(a.image.rgb[3 * pixel + c]) - int(b.image.rgb[3 * pixel + c])));
         }
         d.largest = std::max(d.largest, worst);
         if (worst > 1) {
@@ -223,8 +225,8 @@ bool SceneCheckReport::passed() const {
 
 const std::vector<std::string>& scene_check_names() {
     static const std::vector<std::string> names{
-        "hard-points",    "hard-cameras",     "parameter-extremes", "lipschitz",
-        "march-safety",   "packet-agreement", "normals-at-hits",    "relaxed-steps",
+        "hard-points",       "hard-cameras",     "parameter-extremes", "lipschitz",
+        "march-safety",      "packet-agreement", "normals-at-hits",    "relaxed-steps",
         "cameras-and-paths", "default-view"};
     return names;
 }
@@ -277,17 +279,16 @@ CheckResult SceneChecker::finite_at_hard_points() {
     const auto defaults = default_param_values(scene_);
     const CameraView& view = scene_.cameras.front().view;
     const std::vector<glm::vec3> points{
-        {0, 0, 0},      {-0.0f, -0.0f, -0.0f}, {1, 0, 0},           {0, 1, 0},
-        {0, 0, 1},      {0, 0, -1},            {1e6f, 0, 0},        {0, -1e6f, 0},
-        {0, 0, 1e6f},   {1e6f, 1e6f, 1e6f},    {-1e12f, 1e12f, 0},  {1e-30f, 0, 0},
-        view.position,  view.target};
+        {0, 0, 0},          {-0.0f, -0.0f, -0.0f}, {1, 0, 0},     {0, 1, 0},    {0, 0, 1},
+        {0, 0, -1},         {1e6f, 0, 0},          {0, -1e6f, 0}, {0, 0, 1e6f}, {1e6f, 1e6f, 1e6f},
+        {-1e12f, 1e12f, 0}, {1e-30f, 0, 0},        view.position, view.target};
     const auto distances = renderer_->probe_de(points, defaults);
     const auto normals = renderer_->probe_normals(points, defaults, 1e-4f);
     Problems problems;
     for (size_t i = 0; i < points.size(); ++i) {
         if (!std::isfinite(distances[i])) {
-            problems.add(fmt::format("DE is {} at {}", value_text(distances[i]),
-                                     point_text(points[i])));
+            problems.add(
+                fmt::format("DE is {} at {}", value_text(distances[i]), point_text(points[i])));
         }
         const glm::vec3& n = normals[i];
         if (!(std::isfinite(n.x) && std::isfinite(n.y) && std::isfinite(n.z))) {
@@ -318,7 +319,8 @@ CheckResult SceneChecker::finite_for_hard_cameras() {
     CameraView grazing = home;  // a narrow view along the silhouette
     const glm::vec3 side =
         glm::normalize(glm::cross(glm::vec3(home.target - home.position), home.up));
-    grazing.target = home.target + glm::dvec3(side) * glm::length(home.target - home.position) * 0.5;
+    grazing.target =
+        home.target + glm::dvec3(side) * glm::length(home.target - home.position) * 0.5;
     grazing.fov_degrees = 5.0f;
     expect_finite(render(grazing, defaults), "grazing view");
     CameraView far_away = home;
@@ -341,8 +343,8 @@ CheckResult SceneChecker::finite_at_parameter_extremes() {
             for (int c = 0; c < param_components(param.type); ++c) values[offsets[i] + c] = extreme;
             const std::string what = fmt::format("with {} = {:g}", param.id, extreme);
             ++settings;
-            const std::string pixel = first_non_finite(render(scene_.cameras.front().view, values,
-                                                              24, 16));
+            const std::string pixel =
+                first_non_finite(render(scene_.cameras.front().view, values, 24, 16));
             if (!pixel.empty()) problems.add(fmt::format("{} {} (default view)", pixel, what));
             if (!probe_de) continue;
             const std::vector<glm::vec3> origin{{0, 0, 0}, {0.5f, 0.5f, 0.5f}};
@@ -356,14 +358,15 @@ CheckResult SceneChecker::finite_at_parameter_extremes() {
         }
     }
     if (problems.any()) return fail(made, problems.summary(), kNanAdvice);
-    return pass(made, fmt::format("{} settings of {} parameters{}", settings,
-                                  scene_.params.size(), probe_de ? ", DE at 2 points each" : ""));
+    return pass(made, fmt::format("{} settings of {} parameters{}", settings, scene_.params.size(),
+                                  probe_de ? ", DE at 2 points each" : ""));
 }
 
 // Pairs of points around the default view, 1e-3 to 10^-0.5 of the camera's distance apart.
 // The march advances step_factor * DE, so that is what must not grow faster than the distance.
 CheckResult SceneChecker::lipschitz() {
-    const std::string name = "lipschitz", title = "DE is 1-Lipschitz (grows no faster than distance)";
+    const std::string name = "lipschitz",
+                      title = "DE is 1-Lipschitz (grows no faster than distance)";
     if (auto skipped = skip_without_de(name, title)) return *skipped;
     CheckResult made = result(name, title);
     const auto defaults = default_param_values(scene_);
@@ -388,17 +391,18 @@ CheckResult SceneChecker::lipschitz() {
     for (size_t i = 0; i < first.size(); ++i) {
         if (!std::isfinite(de_first[i]) || !std::isfinite(de_second[i])) {
             const bool first_bad = !std::isfinite(de_first[i]);
-            return fail(made,
-                        fmt::format("DE is {} at {}",
-                                    value_text(first_bad ? de_first[i] : de_second[i]),
-                                    point_text(first_bad ? first[i] : second[i])),
-                        kNanAdvice);
+            return fail(
+                made,
+                fmt::format("DE is {} at {}", value_text(first_bad ? de_first[i] : de_second[i]),
+                            point_text(first_bad ? first[i] : second[i])),
+                kNanAdvice);
         }
         // Inside the set a DE's value is not a distance (the march stops there): compare the
         // distances to the set, max(DE, 0).
         const float separation = glm::length(first[i] - second[i]);
         const float ratio = step_factor *
-            std::abs(std::max(de_first[i], 0.0f) - std::max(de_second[i], 0.0f)) / separation;
+                            std::abs(std::max(de_first[i], 0.0f) - std::max(de_second[i], 0.0f)) /
+                            separation;
         if (ratio > worst) {
             worst = ratio;
             worst_pair = i;
@@ -406,8 +410,8 @@ CheckResult SceneChecker::lipschitz() {
         // Float rounding of two DE values near |p| ~ radius allows a small absolute slack.
         violations += ratio > 1.02f + 2e-6f * radius / separation;
     }
-    const std::string measured =
-        fmt::format("largest step_factor * |dDE| / |dp| = {:.3f} over {} pairs", worst, first.size());
+    const std::string measured = fmt::format(
+        "largest step_factor * |dDE| / |dp| = {:.3f} over {} pairs", worst, first.size());
     if (violations > 0) {
         return fail(made,
                     fmt::format("{}: the DE changes up to {:.2f}x faster than distance near {} "
@@ -538,10 +542,10 @@ CheckResult SceneChecker::packet_agreement() {
     const Frame one = scalar.render(request);
     const Frame packets = renderer_->render(request);
     const PixelDifference d = pixel_difference(one, packets);
-    const std::string measured =
-        fmt::format("width 1 vs {}: largest difference {} levels, {} pixels over 1 level, {} "
-                    "hit in one and missed in the other",
-                    width, d.largest, d.over_one, d.hit_mismatch);
+    const std::string measured = fmt::format(
+        "width 1 vs {}: largest difference {} levels, {} pixels over 1 level, {} "
+        "hit in one and missed in the other",
+        width, d.largest, d.over_one, d.hit_mismatch);
     if (d.hit_mismatch > 0 || d.over_one > 0) {
         const long first = d.first_over_one;
         return fail(made,
@@ -591,8 +595,9 @@ CheckResult SceneChecker::normals_at_hits() {
         }
     }
     if (hits.size() <= 20u) {
-        return fail(made, fmt::format("only {} of {} pixels of the default view hit", hits.size(),
-                                      width * height),
+        return fail(made,
+                    fmt::format("only {} of {} pixels of the default view hit", hits.size(),
+                                width * height),
                     "point the default camera at the fractal");
     }
     // Each hit is probed in a packet of copies of itself, so a scene that skips an object for a
@@ -606,8 +611,8 @@ CheckResult SceneChecker::normals_at_hits() {
             return fail(made,
                         fmt::format("the DE at the hit {} (depth {:.4g}) is {}, over the hit "
                                     "footprint {:.3g}: the probe and the march disagree",
-                                    point_text(hits[i]), depths[i], value_text(distances[i * lanes]),
-                                    footprint * depths[i]),
+                                    point_text(hits[i]), depths[i],
+                                    value_text(distances[i * lanes]), footprint * depths[i]),
                         "the DE must depend only on the point and the parameters (no state kept "
                         "between calls, nothing read from other lanes)");
         }
@@ -617,11 +622,11 @@ CheckResult SceneChecker::normals_at_hits() {
         const glm::vec3& n = normals[i];
         const bool finite = std::isfinite(n.x) && std::isfinite(n.y) && std::isfinite(n.z);
         if (!finite || std::abs(glm::length(n) - 1.0f) > 1e-3f) {
-            return fail(made,
-                        fmt::format("the normal at the hit {} is ({}, {}, {})", point_text(hits[i]),
-                                    value_text(n.x), value_text(n.y), value_text(n.z)),
-                        std::string("the DE is not finite or is flat around the hit; ") +
-                            kNanAdvice);
+            return fail(
+                made,
+                fmt::format("the normal at the hit {} is ({}, {}, {})", point_text(hits[i]),
+                            value_text(n.x), value_text(n.y), value_text(n.z)),
+                std::string("the DE is not finite or is flat around the hit; ") + kNanAdvice);
         }
     }
     return pass(made, fmt::format("{} hits of a {}x{} view", hits.size(), width, height));
@@ -647,8 +652,8 @@ CheckResult SceneChecker::relaxed_steps() {
                         "max_steps=" + std::to_string(std::min(4 * max_steps, 4096)));
     const Frame cautious = render(view, cautious_params, 96, 72);
     // Hits are within hit_threshold * pixel_angle * t of the surface.
-    const float footprint = param_value(scene_, defaults, "hit_threshold") *
-                            pixel_angle(camera_basis(view), 96);
+    const float footprint =
+        param_value(scene_, defaults, "hit_threshold") * pixel_angle(camera_basis(view), 96);
     Problems problems;
     std::string measured;
     for (const char* relaxation : {"", "over_relaxation=1.5", "over_relaxation=1.95"}) {
@@ -668,14 +673,16 @@ CheckResult SceneChecker::relaxed_steps() {
         measured += fmt::format("{}{}: {} of {} pixels disagree, {} of {} depths differ",
                                 measured.empty() ? "" : "; ", what, disagree, pixels, deeper, both);
         if (double(disagree) > 0.005 * double(pixels)) {
-            problems.add(fmt::format("at {}, {} of {} pixels hit in one march and miss in the "
-                                     "other (0.5% allowed)",
-                                     what, disagree, pixels));
+            problems.add(
+                fmt::format("at {}, {} of {} pixels hit in one march and miss in the "
+                            "other (0.5% allowed)",
+                            what, disagree, pixels));
         }
         if (double(deeper) > 0.01 * double(both)) {
-            problems.add(fmt::format("at {}, {} of {} depths differ by over 4 pixel footprints "
-                                     "(1% allowed)",
-                                     what, deeper, both));
+            problems.add(
+                fmt::format("at {}, {} of {} depths differ by over 4 pixel footprints "
+                            "(1% allowed)",
+                            what, deeper, both));
         }
     }
     if (problems.any()) {

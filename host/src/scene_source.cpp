@@ -1,12 +1,12 @@
 // A plugin's embedded scene source against its recorded .cl file (fgr/scene_source.hpp).
 #include "fgr/scene_source.hpp"
 
+#include <fmt/format.h>
+
 #include <fstream>
 #include <sstream>
 #include <stdexcept>
 #include <system_error>
-
-#include <fmt/format.h>
 
 namespace fgr {
 
@@ -43,10 +43,11 @@ std::string stale_source_warning(const Scene& scene) {
         return "";
     }
     if (on_disk == scene.source) return "";  // saved again unchanged
-    return fmt::format("{} changed after {} was built: rebuild the plugin (and copy it again if "
-                       "you copied it), or use --dev to read {} from disk",
-                       file->filename().string(), scene.plugin_file.filename().string(),
-                       file->filename().string());
+    return fmt::format(
+        "{} changed after {} was built: rebuild the plugin (and copy it again if "
+        "you copied it), or use --dev to read {} from disk",
+        file->filename().string(), scene.plugin_file.filename().string(),
+        file->filename().string());
 }
 
 Scene with_source_from_disk(const Scene& scene) {

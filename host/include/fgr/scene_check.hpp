@@ -21,8 +21,8 @@ namespace fgr {
 enum class CheckStatus { Passed, Failed, Skipped };
 
 struct CheckResult {
-    std::string name;    // e.g. "march-safety": stable, for selecting and for tests
-    std::string title;   // what holds when it passes, e.g. "march steps never reach the surface"
+    std::string name;   // e.g. "march-safety": stable, for selecting and for tests
+    std::string title;  // what holds when it passes, e.g. "march steps never reach the surface"
     CheckStatus status = CheckStatus::Passed;
     std::string detail;  // what was measured; for a skipped check, why
     std::string advice;  // a failed check: what to change, e.g. "set step_factor <= 0.76"
