@@ -67,10 +67,10 @@ int command_check(const CheckOptions& options) {
         built.emplace(device, cache, scene, options.packet_width);  // compiles the kernel
     } catch (const KernelBuildError& error) {
         std::fputs(conventional_build_log(error.build_log()).c_str(), stderr);
-        throw RuntimeFailure(
-            fmt::format("the kernel of scene '{}' does not compile (errors above, "
-                        "in {})",
-                        scene.id, scene.source_name));
+        const std::string summary =
+            fmt::format("the kernel of scene '{}' does not compile (errors above, in {})", scene.id,
+                        scene.source_name);
+        throw RuntimeFailure(summary);
     }
     SceneChecker& checker = *built;
     if (options.compile_only) {
