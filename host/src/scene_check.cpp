@@ -469,10 +469,19 @@ CheckResult SceneChecker::march_safety() {
         }
     }
     if (centres.size() <= 100u) {
-        return fail(made,
-                    fmt::format("only {} points of the default view are outside the surface (at "
-                                "least 101 needed to judge)",
-                                centres.size()),
+        const long not_finite =
+            std::count_if(de.begin(), de.end(), [](float d) { return !std::isfinite(d); });
+        const std::string detail = fmt::format(
+            "only {} points of the default view are outside the surface (at least "
+            "101 needed to judge)",
+            centres.size());
+        if (not_finite > 0) {
+            return fail(made,
+                        fmt::format("{}: the DE is not finite at {} of {} points", detail,
+                                    not_finite, de.size()),
+                        kNanAdvice);
+        }
+        return fail(made, detail,
                     "the default camera should look at the fractal from outside it, with the "
                     "fractal filling part of the view; check the DE is positive outside");
     }
@@ -598,7 +607,8 @@ CheckResult SceneChecker::normals_at_hits() {
         return fail(made,
                     fmt::format("only {} of {} pixels of the default view hit", hits.size(),
                                 width * height),
-                    "point the default camera at the fractal");
+                    "point the default camera at the fractal (if the DE is NaN, see the "
+                    "hard-points check: no ray ever stops)");
     }
     // Each hit is probed in a packet of copies of itself, so a scene that skips an object for a
     // whole packet of far lanes takes the same shortcuts here as the march could.
