@@ -4,7 +4,9 @@
 # CL source is embedded as a C array in a generated header <stem>_cl.h, as
 #   static const char <stem>_cl[];       the OpenCL source, NUL-terminated
 #   static const char <stem>_cl_path[];  its absolute path, for `fgr view --dev` to watch
-# so the .so is self-contained. Used by fgr's own plugins (in its source tree) and by scenes
+# so the .so is self-contained. Built against an installed fgr, the build then runs `fgr check` on
+# the plugin (see _fgr_check_scene_plugin below: FGR_CHECK_SCENE, FGR_COMPILE_SCENE). Used by fgr's
+# own plugins (in its source tree) and by scenes
 # built against an installed fgr (find_package(fgr)); the .so goes to FGR_PLUGIN_OUTPUT_DIR when
 # that is set, else to the current binary directory.
 set(FGR_EMBED_SCRIPT ${CMAKE_CURRENT_LIST_DIR}/embed.cmake)
@@ -46,4 +48,43 @@ function(fgr_add_scene_plugin name)
     if(FGR_INSTALL_PLUGIN_DIR)  # fgr's own plugins install beside the fgr binary
         install(TARGETS ${name} LIBRARY DESTINATION ${FGR_INSTALL_PLUGIN_DIR})
     endif()
+    if(TARGET fgr_plugin_api)
+        # fgr's own plugins: checked by ctest (SceneCheck.*), not while building.
+        set_property(GLOBAL APPEND PROPERTY FGR_SCENE_PLUGINS ${name})
+    else()
+        _fgr_check_scene_plugin(${name} "${ARG_CL_SOURCES}")
+    endif()
+endfunction()
+
+# After a scene built against an installed fgr: `fgr check --compile` compiles its kernel, so a
+# typo in the .cl fails the build with the .cl's file and line, and (FGR_CHECK_SCENE, on by
+# default) `fgr check` runs its numerical checks, failing the build with a report of what to fix.
+# A stamp file records success: a failed check runs again on the next build.
+option(FGR_CHECK_SCENE "run `fgr check` on each scene plugin after building it" ON)
+option(FGR_COMPILE_SCENE
+    "compile each scene plugin's kernel after building it (`fgr check --compile`)" ON)
+function(_fgr_check_scene_plugin name cl_sources)
+    if(NOT FGR_COMPILE_SCENE AND NOT FGR_CHECK_SCENE)
+        return()
+    endif()
+    if(NOT fgr_EXECUTABLE OR NOT EXISTS "${fgr_EXECUTABLE}")
+        message(WARNING "fgr_add_scene_plugin(${name}): no fgr executable found (fgr_EXECUTABLE), "
+                        "so the scene is not checked while building")
+        return()
+    endif()
+    if(FGR_CHECK_SCENE)
+        set(check_args check)
+        set(what "Checking scene ${name} (fgr check; -DFGR_CHECK_SCENE=OFF skips)")
+    else()
+        set(check_args check --compile)
+        set(what "Compiling the kernel of scene ${name} (fgr check --compile)")
+    endif()
+    set(stamp ${CMAKE_CURRENT_BINARY_DIR}/${name}.checked)
+    add_custom_command(OUTPUT ${stamp}
+        COMMAND ${fgr_EXECUTABLE} ${check_args} $<TARGET_FILE:${name}>
+        COMMAND ${CMAKE_COMMAND} -E touch ${stamp}
+        DEPENDS ${name} ${cl_sources}
+        COMMENT "${what}"
+        VERBATIM)
+    add_custom_target(${name}_check ALL DEPENDS ${stamp})
 endfunction()

@@ -2,7 +2,8 @@
 # The new-user path, as a user would walk it (ctest runs it; so does CI):
 #   1. install fgr into a temporary prefix,
 #   2. `fgr new-scene` a scene outside any source tree and build it against that prefix only
-#      (with the template's warnings on, and none allowed),
+#      (with the template's warnings on, and none allowed; the build runs `fgr check` on it, and a
+#      typo in its .cl fails the build naming the .cl's file and line),
 #   3. drop the .so into a plugin folder (FGR_PLUGIN_PATH, then ~/.local/share/fgr/plugins),
 #   4. see it in `fgr list` and render it,
 #   5. do the same for every example in sdk/examples.
@@ -58,6 +59,27 @@ if grep -q "$source_dir" my-kifs/build/CMakeCache.txt; then
     fail "the scene's build refers to the engine's source tree"
 fi
 
+grep -q "Checking scene my-kifs" "$work/build.log" || { cat "$work/build.log"; fail "the build did not run fgr check"; }
+grep -q "my-kifs: all .* checks passed" "$work/build.log" || { cat "$work/build.log"; fail "fgr check did not pass the template"; }
+
+step "a typo in the .cl fails cmake --build with the .cl's file and line"
+cp my-kifs/my_kifs.cl "$work/my_kifs.cl.good"
+typo_line=$(( $(wc -l < my-kifs/my_kifs.cl) + 2 ))
+printf '\nreal typo_here(vec3 p) { return undeclared_name; }\n' >> my-kifs/my_kifs.cl
+if cmake --build my-kifs/build > "$work/typo.log" 2>&1; then
+    cat "$work/typo.log"; fail "a .cl with a typo built"
+fi
+grep -q "my_kifs.cl:$typo_line:" "$work/typo.log" || { cat "$work/typo.log"; fail "the build error does not name my_kifs.cl:$typo_line"; }
+step "the same with -DFGR_CHECK_SCENE=OFF (the kernel is still compiled), then fixed: builds again"
+cmake -S my-kifs -B my-kifs/build -DFGR_CHECK_SCENE=OFF > /dev/null
+if cmake --build my-kifs/build > "$work/typo2.log" 2>&1; then
+    cat "$work/typo2.log"; fail "a .cl with a typo built with FGR_CHECK_SCENE=OFF"
+fi
+grep -q "my_kifs.cl:$typo_line:" "$work/typo2.log" || { cat "$work/typo2.log"; fail "no my_kifs.cl:$typo_line with FGR_CHECK_SCENE=OFF"; }
+cp "$work/my_kifs.cl.good" my-kifs/my_kifs.cl
+cmake -S my-kifs -B my-kifs/build -DFGR_CHECK_SCENE=ON > /dev/null
+cmake --build my-kifs/build > "$work/build2.log" 2>&1 || { cat "$work/build2.log"; fail "the fixed .cl does not build"; }
+
 step "drop it into FGR_PLUGIN_PATH: listed and rendered"
 mkdir -p plugins && cp my-kifs/build/my-kifs.so plugins/
 FGR_PLUGIN_PATH=$work/plugins "$fgr" list > "$work/list2.txt"
@@ -79,6 +101,7 @@ for example in "$source_dir"/sdk/examples/*/; do
         { cat "$work/$name.log"; fail "configure $name"; }
     cmake --build "$work/$name/build" >> "$work/$name.log" 2>&1 || { cat "$work/$name.log"; fail "build $name"; }
     ! grep -q "warning:" "$work/$name.log" || { cat "$work/$name.log"; fail "$name builds with warnings"; }
+    grep -q "$name: all .* checks passed" "$work/$name.log" || { cat "$work/$name.log"; fail "fgr check did not pass $name"; }
     mkdir -p "$work/examples" && cp "$work/$name"/build/*.so "$work/examples/"
     FGR_PLUGIN_PATH=$work/examples "$fgr" render "$name" -o "$name.png" --width 96 --height 72 > "$work/$name.txt"
     hits=$(awk '/^hits /{print $2}' "$work/$name.txt")

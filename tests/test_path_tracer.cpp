@@ -506,7 +506,7 @@ TEST_F(PathTracer, EveryPacketWidthRendersTheSameImage) {
     }
 }
 
-// The stability suite's hard camera placements (tests/test_scene_stability.cpp) beside a scene's
+// The stability suite's hard camera placements (`fgr check`, host/src/scene_check.cpp) beside a scene's
 // own cameras: at the origin (inside most fractals), a centre ray through the origin, a narrow
 // view grazing the silhouette, and a camera 1000 times farther out.
 std::vector<std::pair<std::string, CameraView>> hard_views(const Scene& scene) {

@@ -12,6 +12,7 @@
 #include <thread>
 #include <cmath>
 #include <cstdio>
+#include <chrono>
 #include <filesystem>
 #include <fstream>
 #include <map>
@@ -515,6 +516,35 @@ TEST_F(ViewerTest, DevModeReloadsAnEditedSourceAndKeepsTheLastOneThatCompiles) {
     // The compiler's message names the edited file and the line of the typo.
     EXPECT_NE(run.result.err.find("dev_scene.cl:2:"), std::string::npos) << run.result;
     EXPECT_NE(run.result.err.find("typo_radius"), std::string::npos) << run.result;
+}
+
+// A plugin whose recorded .cl file was edited after it was built: the viewer shows the embedded
+// source and says so in one line; with --dev it starts from the file on disk (a ball of half the
+// radius: a different picture) and says nothing.
+TEST_F(ViewerTest, AChangedSourceIsWarnedAboutAndDevStartsFromTheFile) {
+    const fs::path fixtures = FGR_TEST_FIXTURE_DIR;
+    const fs::path plugins = dir() / "plugins";
+    fs::create_directory(plugins);
+    fs::copy_file(fixtures / "stale_view" / "stale_view.so", plugins / "stale_view.so");
+    const auto now = fs::file_time_type::clock::now();
+    fs::last_write_time(plugins / "stale_view.so", now - std::chrono::hours(1));
+    std::ofstream(fixtures / "stale_view" / "stale_view.cl")
+        << "real scene_de(vec3 p, PARAMS) { return v3_length(p) - 0.5f * param_scale; }\n";
+    const std::string script = "0 wait_idle\n0 key F12\n0.2 quit\n";
+    const ViewerRun embedded = view(script, {"fixture-stale-view"}, plugins);
+    ASSERT_EQ(embedded.result.exit_code, 0) << embedded.result;
+    EXPECT_NE(embedded.result.err.find("stale_view.cl changed after stale_view.so was built"),
+              std::string::npos)
+        << embedded.result;
+    ASSERT_EQ(embedded.screenshots.size(), 1u) << embedded.result;
+    const Image8 embedded_image = read_png(embedded.screenshots[0]);
+    fs::remove(embedded.screenshots[0]);  // the next run's screenshot is then the only one
+    const ViewerRun dev = view(script, {"fixture-stale-view", "--dev"}, plugins);
+    ASSERT_EQ(dev.result.exit_code, 0) << dev.result;
+    EXPECT_EQ(dev.result.err.find("changed after"), std::string::npos) << dev.result;
+    ASSERT_EQ(dev.screenshots.size(), 1u) << dev.result;
+    EXPECT_GT(mean_abs_difference(embedded_image, read_png(dev.screenshots[0])), 5.0)
+        << "--dev did not start from the edited file";
 }
 
 TEST_F(ViewerTest, ExitAfterEndsCleanlyWithFrameStatistics) {

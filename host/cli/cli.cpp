@@ -49,6 +49,8 @@ int run_cli(int argc, char** argv) {
     add_render_command(app, render_options);
     ViewCommandOptions view_options;
     add_view_command(app, view_options);
+    CheckOptions check_options;
+    add_check_command(app, check_options);
     NewSceneOptions new_scene_options;
     add_new_scene_command(app, new_scene_options);
     BenchOptions bench_options;
@@ -60,16 +62,16 @@ int run_cli(int argc, char** argv) {
     if (argc < 2) {
         std::fputs(app.help().c_str(), stdout);
         return report_error(
-            "no command given (commands: list, info, render, view, new-scene, bench, cache, "
-            "environment)",
+            "no command given (commands: list, info, render, view, check, new-scene, bench, "
+            "cache, environment)",
             kExitUsage);
     }
     if (const std::string first = argv[1]; !first.empty() && first.front() != '-' &&
         first != "list" && first != "info" && first != "render" && first != "view" &&
-        first != "new-scene" && first != "bench" && first != "cache" &&
+        first != "check" && first != "new-scene" && first != "bench" && first != "cache" &&
         first != "environment") {
         return report_error(fmt::format("unknown command '{}' (commands: list, info, render, "
-                                        "view, new-scene, bench, cache, environment)",
+                                        "view, check, new-scene, bench, cache, environment)",
                                         first),
                             kExitUsage);
     }
@@ -86,6 +88,7 @@ int run_cli(int argc, char** argv) {
         if (command == "list") return command_list(list_scene);
         if (command == "info") return command_info(math_check);
         if (command == "view") return command_view(view_options);
+        if (command == "check") return command_check(check_options);
         if (command == "new-scene") return command_new_scene(new_scene_options);
         if (command == "bench") return command_bench(bench_options);
         if (command == "cache") return command_cache(cache_options);

@@ -1,6 +1,6 @@
 #pragma once
 // The `fgr` executable's commands, one file each (list.cpp, info.cpp, render.cpp, view.cpp,
-// bench.cpp, bench_accuracy.cpp, new_scene.cpp, cache.cpp), and what they share (common.cpp).
+// check.cpp, bench.cpp, bench_accuracy.cpp, new_scene.cpp, cache.cpp), and what they share (common.cpp).
 // run_cli (cli.cpp) registers each command's options with CLI11 and runs the one given. A command
 // returns the exit code, throws UsageError for bad input (exit 2) and anything else for failures
 // while running (exit 1).
@@ -89,6 +89,11 @@ CameraView overridden_view(const CameraView& base, const ViewOverrideText& text)
 
 // Throws UsageError unless the directory `file` would be written into exists.
 void check_output_directory(const std::filesystem::path& file);
+// The scene as a command uses it: with --dev (`dev`), its source read from its recorded .cl file
+// (UsageError when it records none); without, as loaded, after a warning when that file changed
+// after the plugin was built (fgr/scene_source.hpp).
+Scene scene_as_used(const Scene& scene, bool dev);
+
 // Writes `text` to `file` atomically; a failure is a RuntimeFailure.
 void write_output(const std::filesystem::path& file, const std::string& text);
 
@@ -123,6 +128,7 @@ struct RenderOptions {
     ModeOptions mode;
     std::optional<double> time_limit;  // seconds: stop adding samples after this long
     std::string aovs;                  // "albedo,normal,depth,alpha": EXR layers beside the image
+    bool dev = false;  // read the scene's .cl file from disk, not the plugin's embedded copy
 };
 
 void add_render_command(CLI::App& app, RenderOptions& options);
@@ -170,6 +176,21 @@ void add_bench_command(CLI::App& app, BenchOptions& options);
 void add_bench_accuracy_command(CLI::App& bench, BenchOptions& options);
 int command_bench(BenchOptions& options);
 int command_bench_accuracy(const AccuracyOptions& options, int device_index);
+
+// --- fgr check ------------------------------------------------------------------------------------
+
+struct CheckOptions {
+    std::string scene;  // an id, or a plugin file
+    bool compile_only = false;
+    std::optional<std::string> only;  // one check, by name (scene_check_names)
+    bool dev = false;
+    int device = -1;
+    int packet_width = 0;  // 0: the device's preference
+};
+
+void add_check_command(CLI::App& app, CheckOptions& options);
+// Exit 0 when every check passed (or, with --compile, the kernel compiled), 1 otherwise.
+int command_check(const CheckOptions& options);
 
 // --- fgr new-scene -------------------------------------------------------------------------------
 

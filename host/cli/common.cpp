@@ -1,5 +1,3 @@
-#include <fstream>
-#include <sstream>
 #include <string>
 #include <vector>
 
@@ -9,6 +7,7 @@
 #include "commands.hpp"
 #include "fgr/atomic_file.hpp"
 #include "fgr/renderer.hpp"
+#include "fgr/scene_source.hpp"
 
 namespace fgr {
 Discovery discover() { return discover_scenes(plugin_search_path(executable_dir())); }
@@ -28,13 +27,12 @@ void add_kernel_source_option(CLI::App* command, std::string& file) {
 
 Scene with_kernel_source(Scene scene, const std::string& file) {
     if (file.empty()) return scene;
-    std::ifstream in(file, std::ios::binary);
-    std::ostringstream text;
-    text << in.rdbuf();
-    if (!in || text.str().empty()) {
-        throw UsageError(fmt::format("--kernel-source: cannot read {}", file));
+    try {
+        scene.source = read_source_file(file);
+    } catch (const std::runtime_error& error) {
+        throw UsageError(fmt::format("--kernel-source: {}", error.what()));
     }
-    scene.source = text.str();
+    if (scene.source.empty()) throw UsageError(fmt::format("--kernel-source: {} is empty", file));
     scene.source_name = std::filesystem::absolute(file).string();
     return scene;
 }

@@ -96,6 +96,7 @@ void check_render_options(const RenderOptions& options) {
     }
     if (options.all) {
         if (!options.scene.empty()) throw UsageError("give a SCENE or --all, not both");
+        if (options.dev) throw UsageError("--dev is for one scene: give a SCENE, not --all");
         if (!options.assignments.empty() || options.camera || options.camera_path || options.time ||
             !options.view_override.empty()) {
             throw UsageError(
@@ -105,6 +106,9 @@ void check_render_options(const RenderOptions& options) {
         return;
     }
     if (options.scene.empty()) throw UsageError("render needs a SCENE (see `fgr list`) or --all");
+    if (options.dev && !options.kernel_source.empty()) {
+        throw UsageError("--dev reads the scene's own .cl file, --kernel-source another: give one");
+    }
     if (options.time && !options.camera_path) throw UsageError("--time needs --camera-path");
     if (options.camera_path && !options.time) throw UsageError("--camera-path needs --time");
     if (options.camera_path && !options.view_override.empty()) {
@@ -244,7 +248,7 @@ int render_all(const RenderOptions& options) {
     const ComputeDevice device = open_requested_device(options.device);
     ProgramCache cache(ProgramCache::default_directory());
     for (size_t i = 0; i < found.scenes.size(); ++i) {
-        const Scene& scene = found.scenes[i];
+        const Scene scene = scene_as_used(found.scenes[i], false);
         fmt::print("scene {} ({}/{})\n", scene.id, i + 1, found.scenes.size());
         render_to_file(scene, default_request(scene, options), device, cache, options,
                        directory / (scene.id + ".png"));
@@ -296,6 +300,9 @@ void add_render_command(CLI::App& app, RenderOptions& options) {
     render->add_flag("--stats", options.stats,
                      "print steps per pixel, DE evaluations and rays that ran out of steps");
     add_kernel_source_option(render, options.kernel_source);
+    render->add_flag("--dev", options.dev,
+                     "read the scene's .cl file from disk instead of the copy its plugin embeds "
+                     "(as `fgr view --dev`): try an edit without rebuilding the plugin");
     add_device_options(render, options.device, options.packet_width);
 }
 
@@ -303,7 +310,8 @@ int command_render(const RenderOptions& options) {
     check_render_options(options);
     if (options.all) return render_all(options);
     const Discovery found = discover();
-    const Scene scene = with_kernel_source(find_scene(found, options.scene), options.kernel_source);
+    const Scene scene = with_kernel_source(scene_as_used(find_scene(found, options.scene), options.dev),
+                                           options.kernel_source);
     FrameRequest request = default_request(scene, options);
     for (const auto& assignment : options.assignments) {
         set_param_from_text(scene, request.params, assignment);

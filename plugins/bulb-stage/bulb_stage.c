@@ -58,7 +58,7 @@ static const fgr_scene_desc scene = {
     .light_count = FGR_COUNT(lights),
     .effects = FGR_EFFECT_SOFT_SHADOWS | FGR_EFFECT_AMBIENT_OCCLUSION,
     /* The bulb's DE is an estimate: rays advance 0.75 of it, so the march never steps into
-     * the set (tests/test_scene_stability.cpp samples the bound). */
+     * the set (`fgr check bulb-stage` samples the bound). */
     .march = FGR_MARCH(384u, 40.0f, 1.0f, 10u, 0.75f),
     .source_length = FGR_SOURCE_LENGTH(bulb_stage_cl),
     .default_mode = "path",

@@ -54,7 +54,7 @@ static const fgr_light lights[] = {
 };
 
 /* The analytic DE 0.5 r log(r) / dr is an estimate: sampled, its gradient reaches about 1.24, so
- * rays advance 0.8 DE and never step into the surface (tests/test_scene_stability.cpp). The
+ * rays advance 0.8 DE and never step into the surface (`fgr check mandelbulb`). The
  * reference comparison (bench/compare_reference.sh) sets step_factor=1, the reference's rule. */
 #define MANDELBULB_STEP_FACTOR 0.8f
 

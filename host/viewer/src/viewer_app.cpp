@@ -11,6 +11,7 @@
 
 #include "fgr/camera.hpp"
 #include "fgr/discovery.hpp"
+#include "fgr/scene_source.hpp"
 #include "fgr/kernel_assembly.hpp"
 #include "fgr/parameters.hpp"
 #include "fgr/precision.hpp"
@@ -620,6 +621,14 @@ int run_viewer(const ViewerOptions& options) {
     const auto has_id = [&](const Scene& scene) { return scene.id == options.scene; };
     if (!options.scene.empty() && std::none_of(found.scenes.begin(), found.scenes.end(), has_id)) {
         throw UsageError(unknown_scene_message(found, options.scene));
+    }
+    for (Scene& scene : found.scenes) {
+        // --dev starts from the .cl files as they are on disk, not as the plugins embed them.
+        if (options.dev && recorded_source_file(scene)) {
+            scene = with_source_from_disk(scene);
+        } else if (const std::string stale = stale_source_warning(scene); !stale.empty()) {
+            spdlog::warn("{}", stale);
+        }
     }
     ViewerApp app(options, std::move(found.scenes));
     return app.run();

@@ -3,8 +3,8 @@
 #include "viewer_app.hpp"
 
 #include <algorithm>
-#include <fstream>
-#include <sstream>
+#include <stdexcept>
+#include <string>
 
 #include <fmt/format.h>
 #include <spdlog/spdlog.h>
@@ -12,6 +12,7 @@
 #include "fgr/discovery.hpp"
 #include "fgr/parameters.hpp"
 #include "fgr/scene_file.hpp"
+#include "fgr/scene_source.hpp"
 
 namespace fgr::viewer {
 namespace {
@@ -92,18 +93,18 @@ void ViewerApp::reload_plugin(const std::filesystem::path& file) {
 }
 
 void ViewerApp::reload_source(const std::filesystem::path& file) {
-    std::ifstream in(file, std::ios::binary);
-    std::ostringstream text;
-    text << in.rdbuf();
-    if (!in && !in.eof()) {
-        add_message(fmt::format("cannot read {}", file.string()));
+    std::string text;
+    try {
+        text = read_source_file(file);
+    } catch (const std::runtime_error& error) {
+        add_message(error.what());
         ++watched_changes_handled_;
         return;
     }
     for (size_t i = 0; i < scenes_.size(); ++i) {
         if (scenes_[i]->source_name != file.string()) continue;
         Scene edited = *scenes_[i];
-        edited.source = text.str();
+        edited.source = text;
         const uint64_t effects =
             sessions_.count(int(i)) ? sessions_.at(int(i)).effects : edited.effects;
         spdlog::info("{} changed: building the new '{}'", file.string(), edited.id);

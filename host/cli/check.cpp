@@ -1,0 +1,85 @@
+// fgr check: the numerical checks of fgr/scene_check.hpp on one scene, given by id or as a plugin
+// file, with a report a scene's author can act on; --compile only builds the kernel (what the SDK
+// template's build runs, so a typo in the .cl fails `cmake --build` with its file and line).
+#include <fmt/format.h>
+
+#include <cstdio>
+#include <optional>
+#include <regex>
+#include <sstream>
+#include <string>
+
+#include "commands.hpp"
+#include "fgr/program_cache.hpp"
+#include "fgr/scene_check.hpp"
+#include "fgr/scene_file.hpp"
+
+namespace fgr {
+namespace {
+
+// A scene argument that names a file rather than an id: a path, or a scene file's name.
+bool names_a_file(const std::string& argument) {
+    return argument.find('/') != std::string::npos || is_scene_file_name(argument);
+}
+
+Scene load_checked_scene(const std::string& argument) {
+    if (!names_a_file(argument)) return find_scene(discover(), argument);
+    LoadResult loaded = load_scene_file(argument);
+    if (!loaded.scene) throw UsageError(fmt::format("{}: {}", argument, loaded.error));
+    return std::move(*loaded.scene);
+}
+
+// The build log with PoCL's "error: FILE:LINE:COL: message" lines turned into the
+// "FILE:LINE:COL: error: message" form that compilers print and IDEs and build tools parse.
+std::string conventional_build_log(const std::string& log) {
+    static const std::regex pocl_line(R"(^(error|warning|note): (\S+:\d+:\d+): (.*)$)");
+    std::istringstream lines(log);
+    std::string line, out;
+    while (std::getline(lines, line)) {
+        out += std::regex_replace(line, pocl_line, "$2: $1: $3") + "\n";
+    }
+    return out;
+}
+
+}  // namespace
+
+void add_check_command(CLI::App& app, CheckOptions& options) {
+    CLI::App* check = app.add_subcommand(
+        "check", "check a scene's distance estimator and views, and say what to fix");
+    check->add_option("scene", options.scene, "scene id (see `fgr list`) or plugin file (.so)")
+        ->required();
+    check->add_flag("--compile", options.compile_only,
+                    "only compile the scene's kernel: errors name the .cl file and line");
+    std::vector<std::string> names = scene_check_names();
+    check->add_option("--only", options.only, "run one check")->check(CLI::IsMember(names));
+    check->add_flag("--dev", options.dev,
+                    "read the scene's .cl file from disk instead of the copy the plugin embeds");
+    add_device_options(check, options.device, options.packet_width);
+}
+
+int command_check(const CheckOptions& options) {
+    const Scene loaded = load_checked_scene(options.scene);
+    const Scene scene = scene_as_used(loaded, options.dev);
+    const ComputeDevice device = open_requested_device(options.device);
+    ProgramCache cache(ProgramCache::default_directory());
+    std::optional<SceneChecker> built;
+    try {
+        built.emplace(device, cache, scene, options.packet_width);  // compiles the kernel
+    } catch (const KernelBuildError& error) {
+        std::fputs(conventional_build_log(error.build_log()).c_str(), stderr);
+        const std::string summary =
+            fmt::format("the kernel of scene '{}' does not compile (errors above, in {})", scene.id,
+                        scene.source_name);
+        throw RuntimeFailure(summary);
+    }
+    SceneChecker& checker = *built;
+    if (options.compile_only) {
+        fmt::print("{}: the kernel compiles ({})\n", scene.id, scene.source_name);
+        return 0;
+    }
+    const SceneCheckReport report = checker.run_all(options.only);
+    fmt::print("{}", format_check_report(report));
+    return report.passed() ? 0 : kExitFailure;
+}
+
+}  // namespace fgr
