@@ -37,6 +37,20 @@ Scene with_kernel_source(Scene scene, const std::string& file) {
     return scene;
 }
 
+Scene scene_as_used(const Scene& scene, bool dev) {
+    if (!dev) {
+        if (const std::string stale = stale_source_warning(scene); !stale.empty()) {
+            spdlog::warn("{}", stale);
+        }
+        return scene;
+    }
+    try {
+        return with_source_from_disk(scene);
+    } catch (const std::runtime_error& error) {
+        throw UsageError(error.what());
+    }
+}
+
 ComputeDevice open_requested_device(int index) {
     if (index >= static_cast<int>(list_devices().size())) {
         throw UsageError(fmt::format("no OpenCL device {} (see `fgr info`)", index));
