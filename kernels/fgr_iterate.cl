@@ -8,9 +8,9 @@
  *     #define FGR_KERNEL_API 2
  *     #define FGR_SCENE_HAS_COLOUR                 (colour by orbit trap: FGR_COLOUR_PARAMS)
  *
- *     FGR_ORBIT(param_iterations, FGR_NO_BAILOUT)   (once per point: in scope vec3 c, the point)
+ *     FGR_ORBIT(min(param_iterations, 30), FGR_NO_BAILOUT)   (once per point; in scope: vec3 c)
  *         const rotation3 turn = rotation_about_axis(param_axis, param_angle);
- *     FGR_ITERATE                                   (each step: also vec3 z, real dr, int i)
+ *     FGR_ITERATE                                           (each step; also vec3 z, real dr, int i)
  *         z = fold_icosahedral(z);
  *         z = op_rotate(z, turn);
  *         z = scale_about(z, param_scale, icosahedron_vertex());

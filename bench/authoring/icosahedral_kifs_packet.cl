@@ -11,7 +11,7 @@ inline real kifs_iterate(vec3 p, PARAMS, int record, orbit_trap* trap) {
     const vec3 shift = v3_scale(icosahedron_vertex(), scale - 1.0f);
     vec3 z = p;
     float dr = 1.0f;
-    for (int i = 0; i < param_iterations; ++i) {
+    for (int i = 0; i < min(param_iterations, 30); ++i) {
         for (int k = 0; k < 5; ++k) {
             z.x = fabs(z.x);
             z.y = fabs(z.y);

@@ -7,7 +7,7 @@
 /* Knighty's "thingy": the surface |rxy z| = thickness, its distance roughly (|rxy z| - t) / |z|. */
 inline real thingy(vec3 z, float thickness) {
     const real rxy = sqrt(z.x * z.x + z.y * z.y);
-    return 0.5f * (fabs(rxy * z.z) - thickness) / sqrt(v3_length2(z) + thickness);
+    return 0.5f * (fabs(rxy * z.z) - thickness) / sqrt(v3_length2(z) + thickness + 1e-20f);
 }
 
 FGR_ORBIT(param_iterations, FGR_NO_BAILOUT)
