@@ -4,6 +4,7 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <cstdint>
 #include <filesystem>
@@ -53,7 +54,8 @@ struct SmallScene {
     const fgr_camera cameras[1] = {
         FGR_CAMERA_Z_UP("front", 0.0f, -0.3f, 0.15f, 0.0f, 0.0f, 0.03f, 50.0f)};
     const fgr_camera_path paths[1] = {};
-    const fgr_light lights[1] = {FGR_DIRECTIONAL_LIGHT(0.3f, -0.5f, 1.0f, 1.0f, 1.0f, 1.0f, 1.0f)};
+    // Intensity 0: the image is the ambient term alone, which the occlusion scales.
+    const fgr_light lights[1] = {FGR_DIRECTIONAL_LIGHT(0.3f, -0.5f, 1.0f, 1.0f, 1.0f, 1.0f, 0.0f)};
     std::vector<fgr_builtin_default> defaults;
     fgr_scene_desc desc{};
 };
@@ -73,7 +75,15 @@ Frame render(const Scene& scene, const std::vector<float>& params) {
 double mean_byte(const Frame& frame) {
     double sum = 0.0;
     for (const uint8_t value : frame.image.rgb) sum += value;
-    return sum / double(frame.image.rgb.size());
+    return sum / double(std::max<std::size_t>(frame.image.rgb.size(), 1));
+}
+
+double mean_abs_difference(const Frame& a, const Frame& b) {
+    double sum = 0.0;
+    for (std::size_t i = 0; i < a.image.rgb.size() && i < b.image.rgb.size(); ++i) {
+        sum += std::abs(double(a.image.rgb[i]) - double(b.image.rgb[i]));
+    }
+    return sum / double(std::max<std::size_t>(a.image.rgb.size(), 1));
 }
 
 TEST(SceneTuning, ASceneAoRadiusDefaultIsTheOneItRendersWith) {
@@ -90,12 +100,16 @@ TEST(SceneTuning, ASceneAoRadiusDefaultIsTheOneItRendersWith) {
     std::vector<float> set_by_hand = default_param_values(plain);
     set_param_from_text(plain, set_by_hand, "ao_radius=0.01");
     EXPECT_EQ(with_scene_default.image.rgb, render(plain, set_by_hand).image.rgb);
-    // ... and not as fgr's global default, which darkens the small scene: the floor round the
-    // ball is occluded over twice the ball's size. (Measured: mean byte about 20% lower.)
+    // ... and not as fgr's global default, whose probes reach twice the ball's size and darken
+    // the floor round it: the same geometry, darker (the light has intensity 0, so the image is
+    // the occluded ambient term alone; measured: mean byte 41.6 against 52.2, a mean difference
+    // of 10.6 per byte; 8 and 5 leave room for other devices' rounding).
     const Frame with_global_default = render(plain, default_param_values(plain));
     EXPECT_GT(with_scene_default.hits, 64 * 48 / 2);
     EXPECT_EQ(with_global_default.hits, with_scene_default.hits) << "the same geometry";
-    EXPECT_LT(mean_byte(with_global_default), 0.9 * mean_byte(with_scene_default));
+    EXPECT_GT(mean_abs_difference(with_global_default, with_scene_default), 8.0);
+    EXPECT_LT(mean_byte(with_global_default), mean_byte(with_scene_default) - 5.0)
+        << "fgr's ao_radius darkens the small scene";
 }
 
 TEST(SceneTuning, ScaleMovesTheDistanceLikeDefaultsAndNothingElse) {
