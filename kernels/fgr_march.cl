@@ -22,7 +22,9 @@
  * the larger of |DE| and FGR_ESCAPE_STEP of max_distance (or the footprint, further out), and
  * from the first point where it is positive they march on as rays leaving a surface
  * (march_rays_departing): a hit counts only where the DE falls, so the surface the camera sits on
- * never stops them. The camera sees out of what it is in, as if it were cut away at the eye. */
+ * never stops them. With a signed DE the camera sees out of the solid it is in, as if it were cut
+ * away at the eye; in a fractal's solid interior, where the DE is tiny but positive (the
+ * Mandelbox's round the origin), the rays meet the solid within a few steps. */
 
 /* A ray starting on the surface steps at least this fraction of max_distance while it is in it:
  * enough to move a float eye several units from the origin, too little to skip a visible feature. */
