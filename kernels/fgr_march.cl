@@ -13,7 +13,22 @@
  * one, both shrunk by the hit footprint, must overlap; where they leave a gap the step may have
  * jumped over the surface or a sub-pixel feature, so the ray goes back and takes the plain step
  * instead, judging nothing at the rejected point. At w = 1 this is plain sphere tracing,
- * operation for operation. */
+ * operation for operation.
+ *
+ * A camera on the surface: where the DE at the eye is 0 or less (the eye on the surface, like the
+ * Mandelbox's camera at the origin, its fixed point, or inside a solid with a signed DE), the hit
+ * footprint there is 0 and steps of DE never move the ray, so every ray would spend max_steps at
+ * the eye. Such rays march out instead: while the DE is <= 0 they ignore the surface and step by
+ * the larger of |DE| and FGR_ESCAPE_STEP of max_distance (or the footprint, further out), and
+ * from the first point where it is positive they march on as rays leaving a surface
+ * (march_rays_departing): a hit counts only where the DE falls, so the surface the camera sits on
+ * never stops them. With a signed DE the camera sees out of the solid it is in, as if it were cut
+ * away at the eye; in a fractal's solid interior, where the DE is tiny but positive (the
+ * Mandelbox's round the origin), the rays meet the solid within a few steps. */
+
+/* A ray starting on the surface steps at least this fraction of max_distance while it is in it:
+ * enough to move a float eye several units from the origin, too little to skip a visible feature. */
+#define FGR_ESCAPE_STEP 1e-5f
 
 typedef struct march_result {
     real t;     /* distance along the ray of the last evaluated point */
@@ -83,9 +98,22 @@ inline march_result march_rays_core(vec3 origin, vec3 dir, mask active, real tra
     real last_dist = fgr_real(INFINITY);
     mask stretched = (mask)(0);
     const bool relaxing = limits.relaxation > 1.0f;
+    /* Lanes that started on or in the surface (the eye's DE <= 0, see the top of the file):
+     * `escaping` while their DE is still <= 0, `leaving` from then on (every lane of a departing
+     * march). */
+    mask escaping = (mask)(0);
+    mask leaving = departing ? FGR_TRUE : (mask)(0);
+    int any_leaving = departing;
     for (int step = 0; step < limits.max_steps; ++step) {
         if (!fgr_any(active)) break;
-        real dist = scene_de(v3_mad(origin, dir, result.t), PARAMS_PASS);
+        const real t_here = result.t;
+        real dist = scene_de(v3_mad(origin, dir, t_here), PARAMS_PASS);
+        if (step == 0) {
+            /* Only at the eye itself: no distance covered before, so no footprint there. */
+            escaping = active & (dist <= 0.0f) & (travelled <= 0.0f);
+            leaving |= escaping;
+            any_leaving |= fgr_any(escaping);
+        }
         /* A relaxed march first checks the stretched step that led here. */
         real radius = fgr_real(0.0f), shrink = fgr_real(0.0f);
         mask overshot = (mask)(0);
@@ -95,14 +123,23 @@ inline march_result march_rays_core(vec3 origin, vec3 dir, mask active, real tra
             overshot = stretched & active & (radius + last_radius - shrink < last_step);
         }
 #ifdef FGR_EFFECT_GLOW
-        result.closest = select(result.closest, fmin(result.closest, dist), active & !overshot);
+        /* Not the surface a ray starting in it is still leaving. */
+        result.closest = select(result.closest, fmin(result.closest, dist),
+                                active & !overshot & !(escaping & (dist <= 0.0f)));
 #endif
         mask now_hit = active & !overshot & (dist < (result.t + travelled) * limits.footprint);
+        if (any_leaving) {
+            escaping &= dist <= 0.0f;
+            now_hit &= !escaping;
+        }
         if (departing) {
             /* A ray leaving a surface may start within the footprint of a wall beside it (in a
              * crevice): only a surface it approaches (the DE falling) stops it. */
             now_hit &= dist < last_dist;
             last_dist = select(last_dist, dist, active & !overshot);
+        } else if (any_leaving) {
+            now_hit &= (dist < last_dist) | !leaving;
+            last_dist = select(last_dist, dist, leaving & active & !overshot);
         }
         result.hit |= now_hit;
         active &= !now_hit;
@@ -129,6 +166,17 @@ inline march_result march_rays_core(vec3 origin, vec3 dir, mask active, real tra
             result.t = select(result.t, result.t + next_step, active);
         } else {
             result.t = select(result.t, mad(dist, limits.step_factor, result.t), active);
+        }
+        if (any_leaving && fgr_any(escaping & active)) {
+            /* Still in the surface: out by |DE|, or at least the escape step, never relaxed. */
+            real escape = fmax(fabs(dist) * limits.step_factor,
+                               fmax(t_here * limits.footprint,
+                                    fgr_real(FGR_ESCAPE_STEP * limits.max_distance)));
+            mask in_surface = escaping & active;
+            result.t = select(result.t, t_here + escape, in_surface);
+            last_step = select(last_step, fgr_real(0.0f), in_surface);
+            last_radius = select(last_radius, fgr_real(0.0f), in_surface);
+            stretched &= !in_surface;
         }
         fgr_count_if(result.steps, active | now_hit);
         active &= result.t <= reach;

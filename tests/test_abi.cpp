@@ -4,6 +4,7 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <cstddef>
 #include <limits>
@@ -97,7 +98,7 @@ TEST(AbiLayout, MarchSettings) {
 }
 
 TEST(AbiLayout, SceneDesc) {
-    PIN_SIZE(fgr_scene_desc, 192);
+    PIN_SIZE(fgr_scene_desc, 216);
     PIN_OFFSET(fgr_scene_desc, id, 8);
     PIN_OFFSET(fgr_scene_desc, name, 16);
     PIN_OFFSET(fgr_scene_desc, description, 24);
@@ -122,6 +123,11 @@ TEST(AbiLayout, SceneDesc) {
     PIN_OFFSET(fgr_scene_desc, ifs_map_count, 176);
     PIN_OFFSET(fgr_scene_desc, ifs_default_depth, 180);
     PIN_OFFSET(fgr_scene_desc, ifs_max_depth, 184);
+    // ABI 1.4: the scene's built-in defaults, colour modes and scale (the end padded to 8).
+    PIN_OFFSET(fgr_scene_desc, builtin_defaults, 192);
+    PIN_OFFSET(fgr_scene_desc, builtin_default_count, 200);
+    PIN_OFFSET(fgr_scene_desc, colour_modes, 204);
+    PIN_OFFSET(fgr_scene_desc, scale, 208);
     static_assert(alignof(fgr_scene_desc) == 8, "an appended field must not raise the alignment");
 }
 
@@ -132,6 +138,15 @@ TEST(AbiLayout, IfsMap) {
     PIN_OFFSET(fgr_ifs_map, matrix, 8);
     PIN_OFFSET(fgr_ifs_map, colour, 56);
     static_assert(alignof(fgr_ifs_map) == 4);
+}
+
+// ABI 1.4.
+TEST(AbiLayout, BuiltinDefault) {
+    PIN_SIZE(fgr_builtin_default, 32);
+    PIN_OFFSET(fgr_builtin_default, header, 0);
+    PIN_OFFSET(fgr_builtin_default, id, 8);
+    PIN_OFFSET(fgr_builtin_default, value, 16);
+    static_assert(alignof(fgr_builtin_default) == 8);
 }
 
 TEST(AbiVersion, PackingMacros) {
@@ -199,7 +214,11 @@ struct SceneBuilder {
                 nullptr,
                 0,
                 0,
-                0};
+                0,
+                nullptr,
+                0,
+                0,
+                0.0f};
         // clang-format on
     }
     SceneBuilder(const SceneBuilder&) = delete;
@@ -938,6 +957,87 @@ TEST_F(CopyScene, ZeroStepFactorMeansFullSteps) {
 TEST_F(CopyScene, RefusesTooSmallMarchStruct) {
     built.desc.march.header.struct_size = 8;
     expect_refused("march settings struct too small");
+}
+
+// --- ABI 1.4: the scene's own built-in defaults, colour modes and scale ---------------------------
+
+class CopyTunedScene : public CopyScene {
+protected:
+    void give(std::vector<fgr_builtin_default> given) {
+        defaults = std::move(given);
+        built.desc.builtin_defaults = defaults.data();
+        built.desc.builtin_default_count = static_cast<uint32_t>(defaults.size());
+    }
+    // The enum parameter `colouring` (orbit|normal|flat, default 1) as the scene's colour_mode.
+    void name_colour_mode() { built.params[1].id = "colour_mode"; }
+
+    std::vector<fgr_builtin_default> defaults;
+};
+
+TEST_F(CopyTunedScene, AcceptsBuiltinDefaultsInRange) {
+    give({FGR_BUILTIN_DEFAULT("ao_radius", 0.002f),
+          FGR_BUILTIN_COLOUR_DEFAULT("fog_colour", 0.9f, 0.8f, 0.7f),
+          FGR_BUILTIN_DEFAULT("tone_map", 1.0f)});
+    const Scene scene = expect_accepted();
+    EXPECT_FLOAT_EQ(scene.find_param("ao_radius")->default_value[0], 0.002f);
+    EXPECT_EQ(scene.find_param("fog_colour")->default_value,
+              (std::array<float, 3>{0.9f, 0.8f, 0.7f}));
+    EXPECT_FLOAT_EQ(scene.find_param("tone_map")->default_value[0], 1.0f);
+    EXPECT_TRUE(scene.find_param("tone_map")->scene_default);
+    EXPECT_FALSE(scene.find_param("exposure")->scene_default);
+}
+
+TEST_F(CopyTunedScene, RefusesBadBuiltinDefaultsNamingTheParameter) {
+    give({FGR_BUILTIN_DEFAULT("ao_radius", 500.0f)});
+    expect_refused("built-in parameter 'ao_radius': scene default 500 outside [1e-09, 100]");
+    give({FGR_BUILTIN_DEFAULT("glow_radius", kNaN)});
+    expect_refused("built-in parameter 'glow_radius': scene default not finite");
+    give({FGR_BUILTIN_COLOUR_DEFAULT("fog_colour", 0.5f, 1.5f, 0.5f)});
+    expect_refused("built-in parameter 'fog_colour': scene default 1.5 outside [0, 1]");
+    give({FGR_BUILTIN_DEFAULT("reflection_bounces", 2.5f)});
+    expect_refused("built-in parameter 'reflection_bounces': scene default 2.5 is not a whole");
+    give({FGR_BUILTIN_DEFAULT("ao_radus", 0.01f)});
+    expect_refused("built-in default 0: 'ao_radus' is not a built-in parameter");
+    give({FGR_BUILTIN_DEFAULT("power", 4.0f)});  // the scene's own: set it in its params
+    expect_refused("built-in default 0: 'power' is not a built-in parameter");
+    give({FGR_BUILTIN_DEFAULT("max_steps", 64.0f)});
+    expect_refused("built-in parameter 'max_steps': its default comes from the march settings");
+    give({FGR_BUILTIN_DEFAULT("ao_radius", 0.01f), FGR_BUILTIN_DEFAULT("ao_radius", 0.02f)});
+    expect_refused("built-in parameter 'ao_radius': default given twice");
+    give({FGR_BUILTIN_DEFAULT(nullptr, 0.01f)});
+    expect_refused("built-in default 0 id is NULL");
+}
+
+TEST_F(CopyTunedScene, RefusesAScaleOutOfRange) {
+    for (const float scale : {-1.0f, 1e-7f, 2e6f, kNaN}) {
+        built.desc.scale = scale;
+        expect_refused("scale ");
+    }
+    built.desc.scale = 0.0f;
+    EXPECT_FLOAT_EQ(expect_accepted().scale, 1.0f) << "0 means 1";
+}
+
+TEST_F(CopyTunedScene, OffersTheColourModesItNames) {
+    name_colour_mode();
+    built.desc.colour_modes = 0b011;
+    const Scene scene = expect_accepted();
+    EXPECT_EQ(scene.find_param("colour_mode")->offered, (std::vector<bool>{true, true, false}));
+    EXPECT_EQ(offered_choices_text(*scene.find_param("colour_mode")), "orbit|normal");
+    built.desc.colour_modes = 0;
+    EXPECT_TRUE(expect_accepted().find_param("colour_mode")->offered.empty()) << "0 means all";
+}
+
+TEST_F(CopyTunedScene, RefusesBadColourModes) {
+    built.desc.colour_modes = FGR_COLOUR_MODE_POINT;
+    expect_refused("colour_modes 0x1 given, but the scene has no colour_mode enum parameter");
+    name_colour_mode();
+    built.desc.colour_modes = 0b101;  // leaves out the default, 1 ("normal")
+    expect_refused("parameter 'colour_mode': default 'normal' is not among the colour modes offered "
+                   "(orbit|flat)");
+    built.desc.colour_modes = FGR_COLOUR_MODE_ITERATIONS;  // bit 3: the enum has three choices
+    expect_refused("colour_modes 0x8: parameter 'colour_mode' has only 3 choices");
+    built.desc.colour_modes = 0x10;
+    expect_refused("colour_modes 0x10: unknown bits 0x10");
 }
 
 }  // namespace

@@ -6,7 +6,9 @@
 // source's length, and tests/fixtures/frozen_v1_2 for 1.2 (tests/abi_v1_2): the render mode a scene
 // asks for and the angular radius of a directional light's disc. Plugins built against 1.0 and 1.1
 // get 1.2's defaults. tests/fixtures/frozen_v1_3 (tests/abi_v1_3) is an IFS scene: maps instead of
-// a source; older plugins' descriptions end before the maps.
+// a source; older plugins' descriptions end before the maps. tests/fixtures/frozen_v1_4
+// (tests/abi_v1_4) gives its own defaults for built-in parameters, the colour modes it offers and
+// a length scale; older plugins get fgr's defaults, all colour modes and scale 1.
 
 #include <dlfcn.h>
 #include <gtest/gtest.h>
@@ -37,6 +39,7 @@
 #include "fixtures/frozen_v1_1/frozen_layout_v1_1.h"
 #include "fixtures/frozen_v1_2/frozen_layout_v1_2.h"
 #include "fixtures/frozen_v1_3/frozen_layout_v1_3.h"
+#include "fixtures/frozen_v1_4/frozen_layout_v1_4.h"
 #include "fgr/ifs.hpp"
 
 namespace fgr {
@@ -56,6 +59,9 @@ const fs::path kFrozenV1_2Header = fs::path(FGR_TEST_SOURCE_DIR) / "abi_v1_2" / 
 const fs::path kFrozenV1_3Plugin =
     fs::path(FGR_TEST_FIXTURE_DIR) / "frozen_v1_3" / "frozen_v1_3.so";
 const fs::path kFrozenV1_3Header = fs::path(FGR_TEST_SOURCE_DIR) / "abi_v1_3" / "fgr" / "plugin.h";
+const fs::path kFrozenV1_4Plugin =
+    fs::path(FGR_TEST_FIXTURE_DIR) / "frozen_v1_4" / "frozen_v1_4.so";
+const fs::path kFrozenV1_4Header = fs::path(FGR_TEST_SOURCE_DIR) / "abi_v1_4" / "fgr" / "plugin.h";
 
 // FNV-1a (64 bit) of tests/abi_v1/fgr/plugin.h as committed. Never update it: see
 // FrozenHeaderNeverChanges.
@@ -66,6 +72,8 @@ constexpr uint64_t kFrozenV1_1HeaderHash = 0x5f1aab15c211936u;
 constexpr uint64_t kFrozenV1_2HeaderHash = 0x2c4886571464b29au;
 // The same of tests/abi_v1_3/fgr/plugin.h.
 constexpr uint64_t kFrozenV1_3HeaderHash = 0x813ebe43a6b91a8au;
+// The same of tests/abi_v1_4/fgr/plugin.h.
+constexpr uint64_t kFrozenV1_4HeaderHash = 0xc1cffbc5c5d2f5dbu;
 
 // How many rows ABI 1.0 has in each list of frozen_layout.h: a row dropped from a list would
 // otherwise quietly stop being checked.
@@ -84,6 +92,11 @@ constexpr std::size_t kV1_2ConstantCount = kV1_1ConstantCount;
 constexpr std::size_t kV1_3StructCount = kV1_2StructCount + 1;
 constexpr std::size_t kV1_3FieldCount = kV1_2FieldCount + 3 + 4;
 constexpr std::size_t kV1_3ConstantCount = kV1_2ConstantCount;
+// ABI 1.4 added a struct, fgr_builtin_default (three fields), four fields of fgr_scene_desc, and
+// the four colour mode flags with their union.
+constexpr std::size_t kV1_4StructCount = kV1_3StructCount + 1;
+constexpr std::size_t kV1_4FieldCount = kV1_3FieldCount + 3 + 4;
+constexpr std::size_t kV1_4ConstantCount = kV1_3ConstantCount + 5;
 
 Scene load_frozen_scene() {
     LoadResult loaded = load_scene_plugin(kFrozenPlugin);
@@ -302,6 +315,13 @@ const std::vector<fgr_frozen_field_row> kCurrentV1_3Fields = {
 const std::vector<fgr_frozen_constant_row> kCurrentV1_3Constants = {
     FGR_FROZEN_V1_3_CONSTANTS(CURRENT_CONSTANT_ROW)};
 
+const std::vector<fgr_frozen_struct_row> kCurrentV1_4Structs = {
+    FGR_FROZEN_V1_4_STRUCTS(CURRENT_STRUCT_ROW)};
+const std::vector<fgr_frozen_field_row> kCurrentV1_4Fields = {
+    FGR_FROZEN_V1_4_FIELDS(CURRENT_FIELD_ROW)};
+const std::vector<fgr_frozen_constant_row> kCurrentV1_4Constants = {
+    FGR_FROZEN_V1_4_CONSTANTS(CURRENT_CONSTANT_ROW)};
+
 // The frozen plugin's table against the current header's rows for the same lists: nothing moved,
 // shrank, changed alignment or value. Then its description's header is what FGR_HEADER gave it:
 // the frozen struct size and `version`.
@@ -384,6 +404,12 @@ TEST(AbiFreeze, CurrentHeaderKeepsTheV1_3Layout) {
                        kV1_3StructCount, kV1_3FieldCount, kV1_3ConstantCount);
 }
 
+TEST(AbiFreeze, CurrentHeaderKeepsTheV1_4Layout) {
+    expect_layout_kept(kFrozenV1_4Plugin, FGR_FROZEN_V1_4_LAYOUT_SYMBOL, 0x00010004u,
+                       kCurrentV1_4Structs, kCurrentV1_4Fields, kCurrentV1_4Constants,
+                       kV1_4StructCount, kV1_4FieldCount, kV1_4ConstantCount);
+}
+
 // The 1.1 plugin's source has no NUL: its source_length says where it ends, and the bytes after
 // it ("NOT-SRC!") are not part of it.
 TEST(AbiFreeze, FrozenV1_1PluginLoadsItsSourceByLengthAndRenders) {
@@ -445,6 +471,60 @@ TEST(AbiFreeze, FrozenV1_3PluginLoadsItsMapsAndRenders) {
     expect_vec3(scene.ifs->maps[1].colour, {0.2f, 0.8f, 0.3f}, "map 1 colour");
 
     EXPECT_GT(default_view_hits(scene), 0);
+}
+
+// The 1.4 plugin gives ao_radius and fog_colour defaults of its own, offers the colour modes point
+// and axes only, and has scale 0.5: the other distance-like built-ins' defaults follow it.
+TEST(AbiFreeze, FrozenV1_4PluginLoadsItsDefaultsColourModesAndScale) {
+    LoadResult loaded = load_scene_plugin(kFrozenV1_4Plugin);
+    ASSERT_TRUE(loaded.scene) << kFrozenV1_4Plugin << ": " << loaded.error;
+    const Scene& scene = *loaded.scene;
+    EXPECT_EQ(scene.id, "frozen-v1-4");
+    EXPECT_FLOAT_EQ(scene.scale, 0.5f);
+    const ParamInfo* ao_radius = scene.find_param("ao_radius");
+    const ParamInfo* fog_colour = scene.find_param("fog_colour");
+    const ParamInfo* glow_radius = scene.find_param("glow_radius");
+    const ParamInfo* fog_density = scene.find_param("fog_density");
+    const ParamInfo* colour_mode = scene.find_param("colour_mode");
+    ASSERT_TRUE(ao_radius && fog_colour && glow_radius && fog_density && colour_mode);
+    EXPECT_FLOAT_EQ(ao_radius->default_value[0], 0.02f);
+    EXPECT_TRUE(ao_radius->scene_default);
+    expect_vec3({fog_colour->default_value[0], fog_colour->default_value[1],
+                 fog_colour->default_value[2]},
+                {0.8f, 0.7f, 0.6f}, "fog_colour");
+    EXPECT_TRUE(fog_colour->scene_default);
+    // Scale 0.5: glow_radius 0.05 * 0.5, fog_density 0.15 / 0.5.
+    EXPECT_FLOAT_EQ(glow_radius->default_value[0], 0.025f);
+    EXPECT_FLOAT_EQ(fog_density->default_value[0], 0.3f);
+    EXPECT_FALSE(glow_radius->scene_default);
+    EXPECT_EQ(colour_mode->offered, (std::vector<bool>{true, false, true, false}));
+    EXPECT_EQ(offered_choices_text(*colour_mode), "point|axes");
+
+    EXPECT_GT(default_view_hits(scene), 0);
+}
+
+// Plugins built before 1.4 keep fgr's defaults for every built-in, offer every colour mode and
+// have scale 1; what follows their smaller descriptions is not read as 1.4 fields.
+TEST(AbiFreeze, OlderPluginsGetTheV1_4Defaults) {
+    Scene unit;
+    add_builtin_params(unit);
+    for (const fs::path& plugin :
+         {kFrozenPlugin, kFrozenV1_1Plugin, kFrozenV1_2Plugin, kFrozenV1_3Plugin}) {
+        LoadResult loaded = load_scene_plugin(plugin);
+        ASSERT_TRUE(loaded.scene) << plugin << ": " << loaded.error;
+        EXPECT_EQ(loaded.scene->scale, 1.0f) << plugin;
+        for (const char* id : {"ao_radius", "glow_radius", "fog_density", "fog_colour",
+                               "absorption", "aperture", "exposure"}) {
+            const ParamInfo* param = loaded.scene->find_param(id);
+            ASSERT_NE(param, nullptr) << plugin << " " << id;
+            EXPECT_EQ(param->default_value, unit.find_param(id)->default_value)
+                << plugin << " " << id;
+            EXPECT_FALSE(param->scene_default) << plugin << " " << id;
+        }
+        for (const ParamInfo& param : loaded.scene->params) {
+            EXPECT_TRUE(param.offered.empty()) << plugin << " " << param.id;
+        }
+    }
 }
 
 // Plugins built before 1.2 ask for no mode and have point-like lights. The 1.0 plugin's first light
@@ -519,6 +599,15 @@ std::string hex(uint64_t value) {
     std::ostringstream out;
     out << "0x" << std::hex << value;
     return out.str();
+}
+
+TEST(AbiFreeze, FrozenV1_4HeaderNeverChanges) {
+    ASSERT_TRUE(fs::is_regular_file(kFrozenV1_4Header)) << kFrozenV1_4Header << " is missing";
+    const uint64_t hash = fnv1a64(test::read_file(kFrozenV1_4Header));
+    EXPECT_EQ(hash, kFrozenV1_4HeaderHash)
+        << kFrozenV1_4Header << " has changed (FNV-1a " << hex(hash) << ", frozen "
+        << hex(kFrozenV1_4HeaderHash) << "). It is the ABI 1.4 header exactly as released and "
+        << "must never change: restore it from git.";
 }
 
 TEST(AbiFreeze, FrozenV1_3HeaderNeverChanges) {

@@ -112,6 +112,7 @@ struct RenderOptions {
     int width = 640;
     int height = 480;
     std::vector<std::string> assignments;
+    std::optional<std::string> colour;  // --colour: the scene's colour_mode, by name
     std::optional<std::string> camera;
     std::optional<std::string> camera_path;
     ViewOverrideText view_override;  // --eye, --target, --up, --fov over the camera

@@ -14,15 +14,12 @@ namespace {
 
 std::string range_text(const ParamInfo& param) {
     if (param.type == ParamType::Bool) return "true|false";
-    if (!param.choices.empty()) {
-        std::string names;
-        for (const auto& choice : param.choices) names += (names.empty() ? "" : "|") + choice;
-        return names;
-    }
+    // Only the choices the scene offers (ABI 1.4 colour_modes).
+    if (!param.choices.empty()) return offered_choices_text(param);
     return fmt::format("[{}, {}]", param.min_value, param.max_value);
 }
 
-std::string default_text(const ParamInfo& param) {
+std::string value_text(const ParamInfo& param) {
     const auto& value = param.default_value;
     if (param_components(param.type) == 3) return fmt::format("{},{},{}", value[0], value[1], value[2]);
     if (!param.choices.empty()) {
@@ -30,6 +27,11 @@ std::string default_text(const ParamInfo& param) {
     }
     if (param.type == ParamType::Bool) return value[0] != 0.0f ? "true" : "false";
     return fmt::format("{}", value[0]);
+}
+
+// A built-in's default the scene gave (ABI 1.4) says so.
+std::string default_text(const ParamInfo& param) {
+    return param.scene_default ? value_text(param) + " (scene's)" : value_text(param);
 }
 
 // Parameters are listed one line each; `described` puts each one's description under it.
@@ -45,6 +47,11 @@ void print_scene(const Scene& scene, bool described) {
                    scene.ifs->bounds.radius);
     } else {
         fmt::print("  plugin: {}\n", scene.plugin_file.string());
+    }
+    if (scene.scale != 1.0f) {
+        fmt::print("  scale: {} (the default ao_radius, glow_radius, aperture, fog_density and "
+                   "absorption follow it)\n",
+                   scene.scale);
     }
     fmt::print("  parameters:\n");
     for (const auto& param : scene.params) {

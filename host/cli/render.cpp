@@ -97,10 +97,10 @@ void check_render_options(const RenderOptions& options) {
     if (options.all) {
         if (!options.scene.empty()) throw UsageError("give a SCENE or --all, not both");
         if (options.dev) throw UsageError("--dev is for one scene: give a SCENE, not --all");
-        if (!options.assignments.empty() || options.camera || options.camera_path || options.time ||
-            !options.view_override.empty()) {
-            throw UsageError(
-                "--all renders each scene's default view: no --set, --camera, --eye... or --time");
+        if (!options.assignments.empty() || options.colour || options.camera ||
+            options.camera_path || options.time || !options.view_override.empty()) {
+            throw UsageError("--all renders each scene's default view: no --set, --colour, "
+                             "--camera, --eye... or --time");
         }
         if (!options.kernel_source.empty()) throw UsageError("--kernel-source is for one SCENE, not --all");
         return;
@@ -272,6 +272,9 @@ void add_render_command(CLI::App& app, RenderOptions& options) {
         ->check(CLI::Range(1, kMaxImageSide));
     render->add_option("--set", options.assignments, "set a parameter: id=value (repeatable)")
         ->allow_extra_args(false);
+    render->add_option("--colour", options.colour,
+                       "colour mode: point, planes, axes or iterations, those the scene offers "
+                       "(see `fgr list`); the same as --set colour_mode=MODE");
     auto* camera = render->add_option("--camera", options.camera, "named camera of the scene");
     auto* path = render->add_option("--camera-path", options.camera_path,
                                     "camera path of the scene, or a .json file saved by `fgr view`");
@@ -315,6 +318,14 @@ int command_render(const RenderOptions& options) {
     FrameRequest request = default_request(scene, options);
     for (const auto& assignment : options.assignments) {
         set_param_from_text(scene, request.params, assignment);
+    }
+    if (options.colour) {
+        if (scene.find_param("colour_mode") == nullptr) {
+            throw UsageError(fmt::format(
+                "scene '{}' has no colour modes (no colour_mode parameter; see `fgr list`)",
+                scene.id));
+        }
+        set_param_from_text(scene, request.params, "colour_mode=" + *options.colour);
     }
     request.view = choose_view(scene, options);
     const ComputeDevice device = open_requested_device(options.device);

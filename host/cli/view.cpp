@@ -51,6 +51,11 @@ void add_view_command(CLI::App& app, ViewCommandOptions& options) {
         ->check(CLI::Range(1, 1024));
     view->add_option("--set", viewer.assignments, "set a parameter of the first scene: id=value")
         ->allow_extra_args(false);
+    view->add_option_function<std::string>(
+        "--colour",
+        [&viewer](const std::string& mode) { viewer.assignments.push_back("colour_mode=" + mode); },
+        "colour mode of the first scene (point, planes, axes, iterations: those it offers, see "
+        "`fgr list`); the same as --set colour_mode=MODE");
     view->add_option("--effects", viewer.effect_changes,
                      "change the first scene's effects, e.g. +shadows,-ambient_occlusion");
     view->add_option("--camera-path", options.camera_path_file,

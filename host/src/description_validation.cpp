@@ -56,6 +56,12 @@ constexpr std::size_t kV1_3SceneDescSize =
     offsetof(fgr_scene_desc, ifs_max_depth) + sizeof(fgr_scene_desc::ifs_max_depth);
 constexpr std::size_t kV1_3IfsMapSize =
     offsetof(fgr_ifs_map, colour) + sizeof(fgr_ifs_map::colour);
+// ABI 1.4 appended built-in defaults, colour modes and the length scale to the scene description;
+// fgr_builtin_default came with it.
+constexpr std::size_t kV1_4SceneDescSize =
+    offsetof(fgr_scene_desc, scale) + sizeof(fgr_scene_desc::scale);
+constexpr std::size_t kV1_4BuiltinDefaultSize =
+    offsetof(fgr_builtin_default, value) + sizeof(fgr_builtin_default::value);
 
 constexpr std::size_t kMaxIdLength = 63;
 constexpr std::size_t kMaxSourceBytes = 4u << 20;
@@ -73,6 +79,9 @@ constexpr uint32_t kMaxKeyframes = 10000;
 constexpr uint32_t kMaxMarchSteps = 100000;
 constexpr uint32_t kMaxDeIterations = 1000;
 constexpr float kMaxAngularRadiusDegrees = 45.0f;
+constexpr uint32_t kMaxBuiltinDefaults = 64;
+constexpr float kMinScale = 1e-6f;
+constexpr float kMaxScale = 1e6f;
 
 // --- Failure reporting ---------------------------------------------------------------------------
 
@@ -522,6 +531,106 @@ RenderMode copy_default_mode(const fgr_scene_desc& desc) {
          render_mode_choices());
 }
 
+// --- The scene's own defaults, colour modes and scale (ABI 1.4) ---------------------------------
+
+bool covers_v1_4(const fgr_scene_desc& desc) {
+    return desc.header.struct_size >= kV1_4SceneDescSize;
+}
+
+// The length scale: 0 (and every older plugin) means 1.
+float copy_scale(const fgr_scene_desc& desc) {
+    if (!covers_v1_4(desc) || desc.scale == 0.0f) return 1.0f;
+    if (!(desc.scale >= kMinScale && desc.scale <= kMaxScale)) {
+        fail("scale {} outside [{}, {}] (0 means 1)", desc.scale, kMinScale, kMaxScale);
+    }
+    return desc.scale;
+}
+
+ParamInfo& builtin_named(Scene& scene, const std::string& id, uint32_t index) {
+    for (ParamInfo& param : scene.params) {
+        if (param.builtin && param.id == id) return param;
+    }
+    fail("built-in default {}: '{}' is not a built-in parameter (`fgr list` shows them)", index,
+         printable(id));
+}
+
+// One scene-given default, checked as a plugin parameter's default is: finite, in range, whole
+// for ints, 0 or 1 for bools.
+void set_builtin_default(ParamInfo& param, const float (&value)[3]) {
+    const int components = param_components(param.type);
+    if (!all_finite(value, static_cast<std::size_t>(components))) {
+        fail("built-in parameter '{}': scene default not finite", param.id);
+    }
+    for (int c = 0; c < components; ++c) {
+        const float component = value[c];
+        if (component < param.min_value || component > param.max_value) {
+            fail("built-in parameter '{}': scene default {} outside [{}, {}]", param.id, component,
+                 param.min_value, param.max_value);
+        }
+        if (param.type != ParamType::Float && param.type != ParamType::Vec3 &&
+            param.type != ParamType::Colour && !is_integral(component)) {
+            fail("built-in parameter '{}': scene default {} is not a whole number", param.id,
+                 component);
+        }
+    }
+    for (int c = 0; c < 3; ++c) param.default_value[c] = c < components ? value[c] : 0.0f;
+    param.scene_default = true;
+}
+
+void copy_builtin_defaults(const fgr_scene_desc& desc, Scene& scene) {
+    if (!covers_v1_4(desc) || desc.builtin_default_count == 0) return;
+    check_count(desc.builtin_default_count, 0, kMaxBuiltinDefaults, "built-in default");
+    const StructArray<fgr_builtin_default> array(desc.builtin_defaults, desc.builtin_default_count,
+                                                 kV1_4BuiltinDefaultSize, "built-in default");
+    std::set<std::string> seen;
+    for (uint32_t i = 0; i < array.size(); ++i) {
+        const std::string id =
+            bounded_string(array[i].id, kMaxIdLength, fmt::format("built-in default {} id", i));
+        if (is_march_builtin_id(id)) {
+            fail("built-in parameter '{}': its default comes from the march settings, not "
+                 "builtin_defaults", id);
+        }
+        ParamInfo& param = builtin_named(scene, id, i);
+        if (!seen.insert(id).second) fail("built-in parameter '{}': default given twice", id);
+        set_builtin_default(param, array[i].value);
+    }
+}
+
+// The values of the `colour_mode` enum the scene offers: bit i is choice i; 0 means all.
+void copy_colour_modes(const fgr_scene_desc& desc, Scene& scene) {
+    if (!covers_v1_4(desc) || desc.colour_modes == 0) return;
+    const uint32_t modes = desc.colour_modes;
+    if (const uint32_t unknown = modes & ~uint32_t{FGR_COLOUR_MODES_ALL_V1_4}) {
+        fail("colour_modes {:#x}: unknown bits {:#x}", modes, unknown);
+    }
+    auto param = std::find_if(scene.params.begin(), scene.params.end(), [](const ParamInfo& p) {
+        return !p.builtin && p.id == "colour_mode";
+    });
+    if (param == scene.params.end() || param->choices.empty()) {
+        fail("colour_modes {:#x} given, but the scene has no colour_mode enum parameter "
+             "(FGR_COLOUR_PARAMS)", modes);
+    }
+    if ((modes >> param->choices.size()) != 0) {
+        fail("colour_modes {:#x}: parameter 'colour_mode' has only {} choices", modes,
+             param->choices.size());
+    }
+    param->offered.assign(param->choices.size(), false);
+    for (std::size_t i = 0; i < param->choices.size(); ++i) param->offered[i] = (modes >> i) & 1u;
+    const auto default_index = static_cast<std::size_t>(param->default_value[0] - param->min_value);
+    if (!choice_offered(*param, default_index)) {
+        fail("parameter 'colour_mode': default '{}' is not among the colour modes offered ({})",
+             param->choices[default_index], offered_choices_text(*param));
+    }
+}
+
+// Everything ABI 1.4 added, applied to a scene that has its built-in parameters: the scale first
+// (it moves defaults), then the scene's own defaults over it, then the colour modes.
+void copy_v1_4_fields(const fgr_scene_desc& desc, Scene& scene) {
+    set_scene_scale(scene, copy_scale(desc));
+    copy_builtin_defaults(desc, scene);
+    copy_colour_modes(desc, scene);
+}
+
 // --- IFS scenes (ABI 1.3) ------------------------------------------------------------------------
 
 // Whether the plugin hands over IFS maps: only when its struct has the fields.
@@ -596,6 +705,7 @@ Scene copy_ifs_checked(const fgr_scene_desc& desc, Scene named) {
     Scene scene = ifs_scene_to_scene(ifs, std::filesystem::path());
     scene.effects = effects;
     scene.default_mode = mode;
+    copy_v1_4_fields(desc, scene);
     return scene;
 }
 
@@ -636,6 +746,7 @@ Scene copy_checked(const fgr_scene_desc& desc, std::string& declared_id) {
     }
     add_builtin_params(scene);
     check_builtin_defaults(scene);
+    copy_v1_4_fields(desc, scene);
     return scene;
 }
 

@@ -74,6 +74,17 @@ std::vector<std::string_view> split_components(std::string_view text) {
     return parts;
 }
 
+// An enum value the scene does not offer (ABI 1.4 colour_modes): refused in one line, naming
+// what it offers.
+void check_offered(const Scene& scene, const ParamInfo& param, float value) {
+    const auto index = static_cast<std::size_t>(value - param.min_value);
+    if (param.choices.empty() || index >= param.choices.size() || choice_offered(param, index)) {
+        return;
+    }
+    throw UsageError(fmt::format("scene '{}' does not offer {} '{}' (it offers {})", scene.id,
+                                 param.id, param.choices[index], offered_choices_text(param)));
+}
+
 }  // namespace
 
 std::vector<int> param_offsets(const Scene& scene) {
@@ -111,7 +122,11 @@ void set_param_from_text(const Scene& scene, std::vector<float>& values,
         float* slot = values.data() + offsets[i];
         switch (param.type) {
             case ParamType::Float: slot[0] = parse_number(param, text); break;
-            case ParamType::Int: slot[0] = parse_int(param, text); break;
+            case ParamType::Int:
+                slot[0] = parse_int(param, text);
+                check_range(param, slot[0]);
+                check_offered(scene, param, slot[0]);
+                break;
             case ParamType::Bool: slot[0] = parse_bool(param, text); break;
             case ParamType::Vec3:
             case ParamType::Colour: {
@@ -154,6 +169,11 @@ std::vector<float> carry_param_values(const Scene& from, const std::vector<float
             edited |= values.at(old_offset + c) != old->default_value[static_cast<size_t>(c)];
         }
         if (!edited) continue;  // untouched: the new version's default
+        if (!param.choices.empty()) {
+            // An enum value the new version no longer offers falls back to its default.
+            const float value = std::clamp(values.at(old_offset), param.min_value, param.max_value);
+            if (!choice_offered(param, static_cast<std::size_t>(value - param.min_value))) continue;
+        }
         for (int c = 0; c < components; ++c) {
             carried[static_cast<size_t>(to_offsets[i] + c)] =
                 std::clamp(values.at(old_offset + c), param.min_value, param.max_value);

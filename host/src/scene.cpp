@@ -81,6 +81,18 @@ ParamInfo colour_param(std::string id, std::string label, glm::vec3 value, std::
     return param;
 }
 
+// The distance-like built-ins whose defaults follow the scene's length scale (Scene::scale):
+// lengths scale with it, rates per unit length inversely. Their add_effect_params defaults are
+// those of a scene of scale 1.
+struct ScaledBuiltin {
+    std::string_view id;
+    bool per_length;  // a rate per unit length (fog_density, absorption): divided by the scale
+};
+constexpr ScaledBuiltin kScaledBuiltins[] = {
+    {"ao_radius", false}, {"glow_radius", false}, {"aperture", false},
+    {"fog_density", true}, {"absorption", true},
+};
+
 // Distance from the default camera to what it looks at: where depth of field focuses by default.
 float default_focus_distance(const Scene& scene) {
     if (scene.cameras.empty()) return 1.0f;
@@ -218,6 +230,18 @@ void add_brute_force_params(Scene& scene) {
 
 }  // namespace
 
+bool choice_offered(const ParamInfo& param, std::size_t index) {
+    return param.offered.empty() || (index < param.offered.size() && param.offered[index]);
+}
+
+std::string offered_choices_text(const ParamInfo& param) {
+    std::string names;
+    for (std::size_t i = 0; i < param.choices.size(); ++i) {
+        if (choice_offered(param, i)) names += (names.empty() ? "" : "|") + param.choices[i];
+    }
+    return names;
+}
+
 bool Scene::inside_only() const { return declares_inside_only(source); }
 
 bool Scene::has_distance_estimator() const { return ifs == nullptr && !inside_only(); }
@@ -244,6 +268,29 @@ bool is_builtin_param_id(std::string_view id) {
     Scene probe;
     add_builtin_params(probe);
     return probe.find_param(std::string(id)) != nullptr;
+}
+
+bool is_march_builtin_id(std::string_view id) {
+    for (const std::string_view march : {"max_steps", "max_distance", "hit_threshold", "iterations",
+                                         "step_factor"}) {
+        if (id == march) return true;
+    }
+    return false;
+}
+
+void set_scene_scale(Scene& scene, float scale) {
+    scene.scale = scale;
+    Scene unit;
+    add_effect_params(unit);
+    for (const ScaledBuiltin& scaled : kScaledBuiltins) {
+        const ParamInfo* unit_param = unit.find_param(std::string(scaled.id));
+        auto param = std::find_if(scene.params.begin(), scene.params.end(),
+                                  [&](const ParamInfo& p) { return p.builtin && p.id == scaled.id; });
+        if (unit_param == nullptr || param == scene.params.end()) continue;
+        const float unit_default = unit_param->default_value[0];
+        const float value = scaled.per_length ? unit_default / scale : unit_default * scale;
+        param->default_value[0] = std::clamp(value, param->min_value, param->max_value);
+    }
 }
 
 void add_builtin_params(Scene& scene) {

@@ -56,7 +56,7 @@ static const fgr_light lights[] = {
     FGR_DIRECTIONAL_LIGHT(-0.3f, 0.9f, -0.2f, 0.45f, 0.55f, 0.85f, 0.4f),
 };
 
-static const fgr_scene_desc scene = FGR_SCENE(
+static const fgr_scene_desc scene = FGR_SCENE_TUNED(
     "menger", "Menger sponge",
     "kaleidoscopic IFS of cube folds, with scale, offset and twist",
     menger_cl, "menger.cl", params, cameras, paths, lights,
@@ -64,6 +64,8 @@ static const fgr_scene_desc scene = FGR_SCENE(
     /* Level-6 cubes (3^-6 of the sponge) are about a pixel wide at 640 pixels from the corner
      * view; flat faces need few steps, tunnels seen edge-on need more. The DE is a strict bound,
      * so rays take full steps (step factor 1). */
-    FGR_MARCH(192u, 16.0f, 1.0f, 6u, 1.0f));
+    FGR_MARCH(192u, 16.0f, 1.0f, 6u, 1.0f),
+    /* A KIFS: every point reaches the last iteration, so "iterations" would be one flat colour. */
+    NULL, NULL, 0, FGR_COLOUR_MODES_NO_ITERATIONS, 0.0f);
 
 FGR_PLUGIN_EXPORT const fgr_scene_desc* fgr_scene_entry(void) { return &scene; }

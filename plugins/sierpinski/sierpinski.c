@@ -58,13 +58,15 @@ static const fgr_light lights[] = {
     FGR_DIRECTIONAL_LIGHT(-0.5f, 0.85f, -0.1f, 0.45f, 0.55f, 0.85f, 0.4f),
 };
 
-static const fgr_scene_desc scene = FGR_SCENE(
+static const fgr_scene_desc scene = FGR_SCENE_TUNED(
     "sierpinski", "Sierpinski tetrahedron",
     "kaleidoscopic IFS of tetrahedral folds, with scale, offset and twist",
     sierpinski_cl, "sierpinski.cl", params, cameras, paths, lights,
     FGR_EFFECT_AMBIENT_OCCLUSION | FGR_EFFECT_SHADOWS,
     /* 2^-10 tetrahedra are about a pixel wide at 640 pixels from the front view. The DE is a
      * strict bound, so rays take full steps (step factor 1). */
-    FGR_MARCH(192u, 16.0f, 1.0f, 10u, 1.0f));
+    FGR_MARCH(192u, 16.0f, 1.0f, 10u, 1.0f),
+    /* A KIFS: every point reaches the last iteration, so "iterations" would be one flat colour. */
+    NULL, NULL, 0, FGR_COLOUR_MODES_NO_ITERATIONS, 0.0f);
 
 FGR_PLUGIN_EXPORT const fgr_scene_desc* fgr_scene_entry(void) { return &scene; }

@@ -31,7 +31,16 @@ struct ParamInfo {
     std::array<float, 3> default_value{};
     std::vector<std::string> choices{};  // Int only: names of min..max, empty when not an enum
     bool builtin = false;              // a quality knob the host adds to every scene
+    bool scene_default = false;        // builtin whose default the scene gave (ABI 1.4)
+    // Enums only: which choices the scene offers (ABI 1.4 colour_modes), empty when all are. A
+    // value not offered is refused and not listed, but keeps its number (the kernel's).
+    std::vector<bool> offered{};
 };
+
+// Whether an enum parameter offers its choice `index` (every choice when `offered` is empty).
+bool choice_offered(const ParamInfo& param, std::size_t index);
+// The offered choices' names, "a|b|c".
+std::string offered_choices_text(const ParamInfo& param);
 
 // Floats a parameter occupies in the kernel's parameter buffer.
 int param_components(ParamType type);
@@ -97,6 +106,9 @@ struct Scene {
     uint64_t effects = 0;
     MarchSettings march;
     RenderMode default_mode = RenderMode::Shaded;  // what the scene asks for (ABI 1.2)
+    // The scene's length scale (ABI 1.4): the distance-like built-ins' defaults follow it (see
+    // set_scene_scale). 1 unless the scene gives one.
+    float scale = 1.0f;
     // The maps of a scene read from an IFS file (fgr/ifs.hpp); null for distance-estimated scenes.
     std::shared_ptr<const IfsScene> ifs;
 
@@ -114,6 +126,15 @@ struct Scene {
 // Appends the built-in quality parameters (max_steps, max_distance, hit_threshold, iterations,
 // step_factor) with defaults from the scene's march settings.
 void add_builtin_params(Scene& scene);
+
+// Sets the scene's length scale and with it the defaults of the distance-like built-ins
+// (ao_radius, glow_radius and aperture scale with it, the per-length rates fog_density and
+// absorption inversely), each clamped to its range. Call after add_builtin_params and before any
+// scene-given default replaces one of them.
+void set_scene_scale(Scene& scene, float scale);
+
+// The built-ins whose defaults are the scene's march settings: a scene gives them there.
+bool is_march_builtin_id(std::string_view id);
 
 // Whether `id` names one of those built-in parameters (a scene may not declare it).
 bool is_builtin_param_id(std::string_view id);

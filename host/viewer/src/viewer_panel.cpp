@@ -223,6 +223,8 @@ bool edit_param(const ParamInfo& param, float* value) {
                 int index = std::clamp(current - low, 0, int(param.choices.size()) - 1);
                 if (ImGui::BeginCombo(label, param.choices[size_t(index)].c_str())) {
                     for (size_t i = 0; i < param.choices.size(); ++i) {
+                        // Only what the scene offers (ABI 1.4 colour_modes).
+                        if (!choice_offered(param, i)) continue;
                         if (ImGui::Selectable(param.choices[i].c_str(), int(i) == index)) {
                             index = static_cast<int>(i);
                             changed = true;
@@ -252,7 +254,8 @@ bool edit_param(const ParamInfo& param, float* value) {
             break;
     }
     if (ImGui::IsItemHovered() && !param.description.empty()) {
-        ImGui::SetTooltip("%s: %s", param.id.c_str(), param.description.c_str());
+        ImGui::SetTooltip("%s: %s%s", param.id.c_str(), param.description.c_str(),
+                          param.scene_default ? " (the scene gives its own default)" : "");
     }
     return changed;
 }

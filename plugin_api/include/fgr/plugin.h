@@ -1,5 +1,5 @@
 /*
- * fgr scene plugin ABI, version 1 (minor 3: see FGR_ABI_VERSION_MINOR and plugin_api/ABI.md).
+ * fgr scene plugin ABI, version 1 (minor 4: see FGR_ABI_VERSION_MINOR and plugin_api/ABI.md).
  *
  * A scene plugin is a shared library that exports exactly one symbol, FGR_SCENE_ENTRY_SYMBOL
  * ("fgr_scene_entry"), a function returning a pointer to a constant fgr_scene_desc. Everything the
@@ -40,7 +40,7 @@ extern "C" {
 #endif
 
 #define FGR_ABI_VERSION_MAJOR 1u
-#define FGR_ABI_VERSION_MINOR 3u
+#define FGR_ABI_VERSION_MINOR 4u
 /* Packed as (major << 16) | minor. */
 #define FGR_ABI_VERSION ((FGR_ABI_VERSION_MAJOR << 16) | FGR_ABI_VERSION_MINOR)
 #define FGR_ABI_MAJOR(version) ((uint32_t)(version) >> 16)
@@ -192,10 +192,37 @@ typedef struct fgr_ifs_map {
 } fgr_ifs_map;
 
 /* ---------------------------------------------------------------------------------------------
+ * Defaults for built-in parameters (ABI 1.4). The host gives every scene the same built-in
+ * parameters (the effect knobs such as ao_radius, glow_radius, fog_colour, fog_density, exposure:
+ * `fgr list` shows them all); a scene may give some of them its own default. The value is in the
+ * parameter's own units, as `--set` takes it, and must lie in its range. The march settings'
+ * knobs (max_steps, max_distance, hit_threshold, iterations, step_factor) keep their defaults in
+ * fgr_scene_desc::march and may not be given here.
+ */
+typedef struct fgr_builtin_default {
+    fgr_struct_header header;
+    const char* id; /* a built-in parameter's id, e.g. "ao_radius"; at most once per scene */
+    float value[3]; /* [0] for scalars; all three for colours */
+} fgr_builtin_default;
+
+/* The orbit-trap colour modes of kernels/fgr_colour.cl, as values of a scene's `colour_mode`
+ * parameter (FGR_COLOUR_PARAMS in fgr/scene_helpers.h): bit i stands for value i (ABI 1.4). */
+typedef enum fgr_colour_mode_flag {
+    FGR_COLOUR_MODE_POINT = 1u << 0,     /* distance of the orbit to the origin */
+    FGR_COLOUR_MODE_PLANES = 1u << 1,    /* ... to the coordinate planes */
+    FGR_COLOUR_MODE_AXES = 1u << 2,      /* ... to the coordinate axes */
+    FGR_COLOUR_MODE_ITERATIONS = 1u << 3 /* iterations before escape (flat for KIFS scenes) */
+} fgr_colour_mode_flag;
+#define FGR_COLOUR_MODES_ALL_V1_4                                                \
+    (FGR_COLOUR_MODE_POINT | FGR_COLOUR_MODE_PLANES | FGR_COLOUR_MODE_AXES | \
+     FGR_COLOUR_MODE_ITERATIONS)
+
+/* ---------------------------------------------------------------------------------------------
  * The scene. Fields after `march` were appended in later minor versions (see each one's comment):
  * the source's length (1.1), the render mode the scene asks for by default (`default_mode`, 1.2)
- * and IFS maps instead of a distance estimator (`ifs_maps`, 1.3). fgr_march_settings can therefore no longer grow: new march settings go into the scene
- * itself.
+ * IFS maps instead of a distance estimator (`ifs_maps`, 1.3), and the scene's own defaults for
+ * built-in parameters, its length scale and the colour modes it offers (1.4).
+ * fgr_march_settings can therefore no longer grow: new march settings go into the scene itself.
  *
  * OpenCL source contract (see sdk/README.md): the source defines
  *     real scene_de(vec3 p, PARAMS)
@@ -266,6 +293,25 @@ typedef struct fgr_scene_desc {
      * gives max(12, d) as the maximum, a maximum m alone gives min(6, m) as the default. */
     uint32_t ifs_default_depth;
     uint32_t ifs_max_depth;
+
+    /* ABI 1.4. The scene's own defaults for built-in parameters (see fgr_builtin_default), each
+     * checked against the parameter's range: a bad one refuses the plugin, naming the parameter.
+     * builtin_default_count 0, and every plugin built against 1.0 to 1.3, mean none. */
+    const fgr_builtin_default* builtin_defaults; /* [0 .. builtin_default_count), at most 64 */
+    uint32_t builtin_default_count;
+    /* ABI 1.4. The values of the scene's `colour_mode` parameter it offers, an OR of
+     * fgr_colour_mode_flag (bit i: value i); the others are refused (`--set colour_mode=...`) and
+     * not listed. Non-zero only with a `colour_mode` enum parameter whose default it offers.
+     * 0, and every older plugin, mean every value. A KIFS scene, whose points all reach the
+     * last iteration, leaves out FGR_COLOUR_MODE_ITERATIONS. */
+    uint32_t colour_modes;
+    /* ABI 1.4. The scene's length scale: about the radius of what the default camera frames. The
+     * defaults of the distance-like built-in parameters are fractions (or, for rates per unit
+     * length, multiples) of it: ao_radius 0.1 scale, glow_radius 0.05 scale, aperture 0.05 scale,
+     * fog_density 0.15 / scale, absorption 1 / scale (each clamped to its range). Values are
+     * still in scene units. Finite, in [1e-6, 1e6]; 0, and every older plugin, mean 1, the scale
+     * the built-in defaults were tuned for. A builtin_defaults entry overrides the scaled value. */
+    float scale;
 } fgr_scene_desc;
 
 /* The entry point. Must return the same pointer every call, or NULL on failure. */

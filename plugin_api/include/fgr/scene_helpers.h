@@ -57,6 +57,11 @@
             0.0f, 1.0f, {r, g, b}, NULL, "tint multiplying the palette"                         \
     }
 
+/* The colour modes of a KIFS scene (ABI 1.4 colour_modes): all but "iterations", which is one
+ * flat colour when every point reaches the last iteration. */
+#define FGR_COLOUR_MODES_NO_ITERATIONS \
+    (FGR_COLOUR_MODE_POINT | FGR_COLOUR_MODE_PLANES | FGR_COLOUR_MODE_AXES)
+
 /* A camera looking from (px, py, pz) at (tx, ty, tz) with +z up; fov is horizontal, degrees. */
 #define FGR_CAMERA_Z_UP(name, px, py, pz, tx, ty, tz, fov) \
     { FGR_HEADER(fgr_camera), name, {px, py, pz}, {tx, ty, tz}, {0.0f, 0.0f, 1.0f}, fov }
@@ -139,21 +144,45 @@ constexpr uint64_t fgr_source_length(const char (&)[N]) { return N; }
     {                                                                                             \
         FGR_HEADER(fgr_scene_desc), id, name, description, source, source_name, params,           \
             FGR_COUNT(params), cameras, FGR_COUNT(cameras), paths, FGR_COUNT(paths), lights,      \
-            FGR_LIGHT_COUNT(lights), effects, march, FGR_SOURCE_LENGTH(source), NULL, NULL, 0, 0, \
-            0                                                                                     \
+            FGR_LIGHT_COUNT(lights), effects, march, FGR_SOURCE_LENGTH(source), NULL, NULL, 0, 0,\
+            0, NULL, 0, 0, 0.0f                                                               \
     }
 
 /* The same, asking for a render mode by default: "shaded", "path" or "brute" (ABI 1.2: any mode
- * the host has; an inside-only source renders brute whatever it asks, "path" is refused). (Not written with
- * FGR_SCENE's help: `march` is usually FGR_MARCH(...), whose commas would split the arguments of a
- * macro it is passed on to.) */
+ * the host has; an inside-only source renders brute whatever it asks, "path" is refused). (Not
+ * written with FGR_SCENE's help: `march` is usually FGR_MARCH(...), whose commas would split the
+ * arguments of a macro it is passed on to.) */
 #define FGR_SCENE_WITH_MODE(id, name, description, source, source_name, params, cameras, paths,  \
                             lights, effects, march, default_mode)                                 \
     {                                                                                             \
         FGR_HEADER(fgr_scene_desc), id, name, description, source, source_name, params,           \
             FGR_COUNT(params), cameras, FGR_COUNT(cameras), paths, FGR_COUNT(paths), lights,      \
-            FGR_LIGHT_COUNT(lights), effects, march, FGR_SOURCE_LENGTH(source), default_mode,     \
-            NULL, 0, 0, 0                                                                         \
+            FGR_LIGHT_COUNT(lights), effects, march, FGR_SOURCE_LENGTH(source), default_mode, \
+            NULL, 0, 0, 0, NULL, 0, 0, 0.0f                                                   \
+    }
+
+/* A built-in parameter's own default in this scene (ABI 1.4), e.g.
+ * FGR_BUILTIN_DEFAULT("ao_radius", 0.002f): in the parameter's units and range. */
+#define FGR_BUILTIN_DEFAULT(id, value) \
+    { FGR_HEADER(fgr_builtin_default), id, {value, 0.0f, 0.0f} }
+
+/* The same for a colour built-in, e.g.
+ * FGR_BUILTIN_COLOUR_DEFAULT("fog_colour", 0.8f, 0.8f, 0.9f). */
+#define FGR_BUILTIN_COLOUR_DEFAULT(id, r, g, b) \
+    { FGR_HEADER(fgr_builtin_default), id, {r, g, b} }
+
+/* A scene tuned beyond fgr's defaults (ABI 1.4): FGR_SCENE_WITH_MODE's fields (default_mode may
+ * be NULL), then the scene's defaults for built-in parameters as a pointer and a count (an array
+ * of FGR_BUILTIN_DEFAULT and FGR_COUNT(array), or NULL and 0), the colour modes it offers (an OR
+ * of FGR_COLOUR_MODE_*, 0 for all) and its length scale (0 for 1; see fgr_scene_desc::scale). */
+#define FGR_SCENE_TUNED(id, name, description, source, source_name, params, cameras, paths,      \
+                        lights, effects, march, default_mode, builtin_defaults,                  \
+                        builtin_default_count, colour_modes, scale)                              \
+    {                                                                                             \
+        FGR_HEADER(fgr_scene_desc), id, name, description, source, source_name, params,           \
+            FGR_COUNT(params), cameras, FGR_COUNT(cameras), paths, FGR_COUNT(paths), lights,      \
+            FGR_LIGHT_COUNT(lights), effects, march, FGR_SOURCE_LENGTH(source), default_mode, \
+            NULL, 0, 0, 0, builtin_defaults, builtin_default_count, colour_modes, scale       \
     }
 
 /* An IFS map x -> scale x + (tx, ty, tz): a uniform scaling towards a point (ABI 1.3). */
@@ -172,7 +201,7 @@ constexpr uint64_t fgr_source_length(const char (&)[N]) { return N; }
         FGR_HEADER(fgr_scene_desc), id, name, description, NULL, NULL, NULL, 0, cameras,         \
             FGR_COUNT(cameras), paths, FGR_COUNT(paths), lights, FGR_LIGHT_COUNT(lights),        \
             effects, FGR_MARCH(1u, 100.0f, 1.0f, 1u, 1.0f), 0, NULL, maps, FGR_COUNT(maps),     \
-            default_depth, max_depth                                                             \
+            default_depth, max_depth, NULL, 0, 0, 0.0f                                           \
     }
 
 #endif /* FGR_SCENE_HELPERS_H */
