@@ -35,12 +35,14 @@ static const fgr_light lights[] = {
     FGR_DIRECTIONAL_LIGHT(-0.7f, 0.5f, -0.2f, 0.35f, 0.5f, 0.9f, 0.4f),
 };
 
-static const fgr_scene_desc scene = FGR_SCENE(
+static const fgr_scene_desc scene = FGR_SCENE_TUNED(
     "icosahedral-kifs", "Icosahedral KIFS",
     "icosahedra of icosahedra, turned per level: the SDK guide's iterate-function example",
     icosahedral_kifs_cl, icosahedral_kifs_cl_path, params, cameras, paths, lights,
     FGR_EFFECT_SOFT_SHADOWS | FGR_EFFECT_AMBIENT_OCCLUSION,
     /* A strict bound: full steps. */
-    FGR_MARCH(200u, 12.0f, 1.0f, 9u, 1.0f));
+    FGR_MARCH(200u, 12.0f, 1.0f, 9u, 1.0f),
+    /* No bailout: every point runs every iteration, so "iterations" would be one flat colour. */
+    NULL, NULL, 0, FGR_COLOUR_MODES_NO_ITERATIONS, 0.0f);
 
 FGR_PLUGIN_EXPORT const fgr_scene_desc* fgr_scene_entry(void) { return &scene; }

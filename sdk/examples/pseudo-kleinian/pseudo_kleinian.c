@@ -35,7 +35,7 @@ static const fgr_light lights[] = {
     FGR_DIRECTIONAL_LIGHT(-0.5f, 0.6f, 0.3f, 0.4f, 0.55f, 0.9f, 0.45f),
 };
 
-static const fgr_scene_desc scene = FGR_SCENE(
+static const fgr_scene_desc scene = FGR_SCENE_TUNED(
     "pseudo-kleinian", "Pseudo-Kleinian",
     "Knighty's pseudo-Kleinian: box folds and sphere inversions; the SDK guide's second "
     "iterate-function example",
@@ -45,6 +45,8 @@ static const fgr_scene_desc scene = FGR_SCENE(
     FGR_EFFECT_AMBIENT_OCCLUSION | FGR_EFFECT_FOG,
     /* Full steps: with Knighty's factor 0.5 the distance grows at most 0.57 times as fast as the
      * point moves (fgr check's Lipschitz and march-safety measurements), a bound. */
-    FGR_MARCH(300u, 8.0f, 1.0f, 8u, 1.0f));
+    FGR_MARCH(300u, 8.0f, 1.0f, 8u, 1.0f),
+    /* No bailout: every point runs every iteration, so "iterations" would be one flat colour. */
+    NULL, NULL, 0, FGR_COLOUR_MODES_NO_ITERATIONS, 0.0f);
 
 FGR_PLUGIN_EXPORT const fgr_scene_desc* fgr_scene_entry(void) { return &scene; }
