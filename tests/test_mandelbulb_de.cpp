@@ -12,6 +12,7 @@
 #include "fgr/program_cache.hpp"
 #include "fgr/renderer.hpp"
 #include "mandelbulb_reference.hpp"
+#include "random_points.hpp"
 #include "test_scenes.hpp"
 
 namespace fgr {
@@ -59,13 +60,7 @@ protected:
 ComputeDevice* MandelbulbDe::device_ = nullptr;
 Scene* MandelbulbDe::scene_ = nullptr;
 
-std::vector<glm::vec3> random_points(int count, float extent, unsigned seed) {
-    std::mt19937 rng(seed);
-    std::uniform_real_distribution<float> coordinate(-extent, extent);
-    std::vector<glm::vec3> points;
-    for (int i = 0; i < count; ++i) points.emplace_back(coordinate(rng), coordinate(rng), coordinate(rng));
-    return points;
-}
+using test::random_points;
 
 TEST_P(MandelbulbDe, MatchesTheTrigonometricFormulas) {
     const auto points = random_points(4000, 1.4f, 7);

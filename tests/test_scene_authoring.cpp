@@ -7,8 +7,6 @@
 #include <array>
 #include <cmath>
 #include <filesystem>
-#include <fstream>
-#include <random>
 #include <regex>
 #include <sstream>
 #include <string>
@@ -19,12 +17,14 @@
 #include <glm/vec3.hpp>
 #include <gtest/gtest.h>
 
+#include "child_process.hpp"
 #include "fgr/kernel_api.hpp"
 #include "fgr/kernel_library.hpp"
 #include "fgr/parameters.hpp"
 #include "fgr/plugin_loader.hpp"
 #include "fgr/program_cache.hpp"
 #include "fgr/renderer.hpp"
+#include "random_points.hpp"
 #include "test_scenes.hpp"
 
 namespace fgr {
@@ -37,13 +37,7 @@ ComputeDevice& device() {
     return opened;
 }
 
-std::string read_file(const std::filesystem::path& file) {
-    std::ifstream in(file, std::ios::binary);
-    std::ostringstream text;
-    text << in.rdbuf();
-    if (!in && !in.eof()) throw std::runtime_error("cannot read " + file.string());
-    return text.str();
-}
+using test::read_file;
 
 // An SDK example as this build made it (tests/fixtures/sdk_examples).
 Scene sdk_example(const std::string& id) {
@@ -113,6 +107,7 @@ TEST(KernelApi, AFrozenVersionOneSceneKeepsCompilingAndRendersAsBefore) {
     Scene frozen = example;
     frozen.source = read_file(std::filesystem::path(FGR_TEST_SOURCE_DIR) /
                               "fixtures/kernel_api_v1/octahedral_kifs_v1.cl");
+    ASSERT_FALSE(frozen.source.empty());
     ASSERT_EQ(declared_kernel_api(frozen.source), 1);
     for (const int width : kWidths) {
         const Frame original = render_small(example, width);
@@ -243,13 +238,7 @@ private:
     Renderer renderer_;
 };
 
-std::vector<glm::vec3> random_points(int count, float extent, unsigned seed) {
-    std::mt19937 rng(seed);
-    std::uniform_real_distribution<float> coordinate(-extent, extent);
-    std::vector<glm::vec3> points;
-    for (int i = 0; i < count; ++i) points.emplace_back(coordinate(rng), coordinate(rng), coordinate(rng));
-    return points;
-}
+using test::random_points;
 
 // All sign combinations of the cyclic permutations of (a, b, c), duplicates removed.
 std::vector<glm::vec3> cyclic_sign_permutations(float a, float b, float c) {

@@ -20,6 +20,7 @@
 #include "fgr/plugin_loader.hpp"
 #include "fgr/program_cache.hpp"
 #include "fgr/renderer.hpp"
+#include "random_points.hpp"
 #include "test_scenes.hpp"
 
 namespace fgr {
@@ -51,13 +52,7 @@ std::vector<std::vector<float>> kernel_de(const std::string& body,
     return results;
 }
 
-std::vector<glm::vec3> random_points(int count, float extent, unsigned seed) {
-    std::mt19937 rng(seed);
-    std::uniform_real_distribution<float> coordinate(-extent, extent);
-    std::vector<glm::vec3> points;
-    for (int i = 0; i < count; ++i) points.emplace_back(coordinate(rng), coordinate(rng), coordinate(rng));
-    return points;
-}
+using test::random_points;
 
 dvec3 to_double(glm::vec3 p) { return dvec3(p); }
 
