@@ -517,6 +517,31 @@ TEST_F(CliTest, SameRenderTwiceHitsSamePixels) {
     EXPECT_EQ(line_value(first.out, "hits"), line_value(second.out, "hits"));
 }
 
+// --kernel-source swaps the scene's OpenCL source (here the Mandelbulb's for a small ball, in the
+// scene's own view): the render follows the file, and a file that is not there is a usage error.
+TEST_F(CliTest, KernelSourceRendersTheSceneWithTheGivenSource) {
+    const fs::path ball = dir() / "ball.cl";
+    std::ofstream(ball) << "real scene_de(vec3 p, PARAMS) { (void)fgr_params; "
+                           "return v3_length(p) - 0.2f; }\n";
+    const std::vector<std::string> args{"render",  "mandelbulb", "-o",       out_png().string(),
+                                        "--width", "32",         "--height", "24"};
+    const RunResult own = run(args);
+    std::vector<std::string> with_ball = args;
+    with_ball.insert(with_ball.end(), {"--kernel-source", ball.string()});
+    const RunResult swapped = run(with_ball);
+    ASSERT_EQ(own.exit_code, 0) << own;
+    ASSERT_EQ(swapped.exit_code, 0) << swapped;
+    // The bulb fills about half the view; a ball of radius 0.2 seen from ~3 units a few percent.
+    const long own_hits = std::stol(line_value(own.out, "hits").value());
+    const long ball_hits = std::stol(line_value(swapped.out, "hits").value());
+    EXPECT_LT(ball_hits * 4, own_hits);
+    EXPECT_GT(ball_hits, 0);
+    with_ball.back() = (dir() / "missing.cl").string();
+    const RunResult missing = run(with_ball);
+    EXPECT_EQ(missing.exit_code, 2) << missing;
+    EXPECT_NE(missing.err.find("--kernel-source: cannot read"), std::string::npos) << missing;
+}
+
 struct ValidRender {
     const char* name;
     std::vector<std::string> extra;

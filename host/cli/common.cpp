@@ -28,12 +28,11 @@ void add_kernel_source_option(CLI::App* command, std::string& file) {
 Scene with_kernel_source(Scene scene, const std::string& file) {
     if (file.empty()) return scene;
     try {
-        scene.source = read_source_file(file);
+        scene = with_source_file(scene, std::filesystem::absolute(file));
     } catch (const std::runtime_error& error) {
         throw UsageError(fmt::format("--kernel-source: {}", error.what()));
     }
     if (scene.source.empty()) throw UsageError(fmt::format("--kernel-source: {} is empty", file));
-    scene.source_name = std::filesystem::absolute(file).string();
     return scene;
 }
 

@@ -58,8 +58,13 @@ Scene with_source_from_disk(const Scene& scene) {
             "built with fgr_add_scene_plugin record their .cl file's absolute path)",
             scene.id, scene.source_name));
     }
+    return with_source_file(scene, *file);
+}
+
+Scene with_source_file(const Scene& scene, const std::filesystem::path& file) {
     Scene edited = scene;
-    edited.source = read_source_file(*file);
+    edited.source = read_source_file(file);
+    edited.source_name = file.string();
     return edited;
 }
 

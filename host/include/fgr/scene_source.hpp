@@ -23,6 +23,10 @@ std::string stale_source_warning(const Scene& scene);
 // The whole of a source file; throws std::runtime_error naming it when it cannot be read.
 std::string read_source_file(const std::filesystem::path& file);
 
+// The scene with its source read from `file`, which becomes its source name (so build messages
+// name it); throws std::runtime_error naming the file when it cannot be read.
+Scene with_source_file(const Scene& scene, const std::filesystem::path& file);
+
 // The scene with its source read afresh from its recorded .cl file (--dev); throws
 // std::runtime_error when the scene records no file that exists, naming what it records.
 Scene with_source_from_disk(const Scene& scene);
