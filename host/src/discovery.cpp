@@ -100,6 +100,13 @@ std::string scene_ids(const std::vector<Scene>& scenes) {
     return ids.empty() ? "none found" : ids;
 }
 
+// `id` with its underscores read as dashes.
+std::string dashed(std::string_view id) {
+    std::string text(id);
+    std::replace(text.begin(), text.end(), '_', '-');
+    return text;
+}
+
 // The scene id a file name suggests: oops.so, liboops.so and oops.ifs.json give "oops"; '_' reads
 // as '-' (a CMake target liboops_scene.so for the scene 'oops-scene').
 std::string id_from_file_name(const fs::path& file) {
@@ -111,14 +118,7 @@ std::string id_from_file_name(const fs::path& file) {
         }
     }
     if (name.starts_with("lib")) name.erase(0, 3);
-    std::replace(name.begin(), name.end(), '_', '-');
-    return name;
-}
-
-std::string dashed(std::string_view id) {
-    std::string text(id);
-    std::replace(text.begin(), text.end(), '_', '-');
-    return text;
+    return dashed(name);
 }
 
 // The refused file that was scene `id`: by the id its description declared, else by its name.
