@@ -26,7 +26,7 @@ packages=(
     cmake ninja-build g++ pkg-config
     ocl-icd-opencl-dev opencl-headers opencl-clhpp-headers pocl-opencl-icd clinfo
     libspdlog-dev libfmt-dev libglm-dev libpng-dev libcli11-dev libgtest-dev nlohmann-json3-dev
-    libopenexr-dev libstb-dev
+    libopenexr-dev libstb-dev libtiff-dev zlib1g-dev
     libsdl2-dev libimgui-dev libgl-dev libgl1-mesa-dri
     xvfb xauth gnuplot-nox
 )

@@ -46,8 +46,15 @@ typedef struct camera_frame {
     float4 up;
     float tan_half_fov;
     float pixel_angle; /* 2 * tan_half_fov / width: one pixel's angular footprint */
-    int width;
+    int width;  /* of the whole image: directions and footprints follow it */
     int height;
+    /* The rectangle of the image this launch renders (tiled stills render the image a region at
+     * a time): tiles and planes cover the region, pixel coordinates stay the whole image's, so
+     * every pixel gets exactly the ray, samples and random numbers of an untiled render. */
+    int region_x;
+    int region_y;
+    int region_width;
+    int region_height;
 } camera_frame;
 
 inline vec3 splat_float4(float4 v) { return v3_splat(v.x, v.y, v.z); }
@@ -116,16 +123,22 @@ inline camera_ray camera_ray_through(camera_frame camera, real px, real py, came
 
 /* The pixels of one tile, one per lane. */
 typedef struct tile_pixels {
-    real px, py;  /* each lane's pixel */
-    mask inside;  /* lanes past the image edge (partial tiles) start inactive and cost no steps */
+    real px, py;  /* each lane's pixel, in the whole image */
+    mask inside;  /* lanes past the region's edge (partial tiles) start inactive and cost no steps */
 } tile_pixels;
+
+/* Tiles across the region. */
+inline int region_tiles_x(camera_frame camera) {
+    return (camera.region_width + FGR_TILE_W - 1) / FGR_TILE_W;
+}
 
 inline tile_pixels pixels_of_tile(int tile, camera_frame camera) {
     tile_pixels pixels;
-    const int tiles_x = (camera.width + FGR_TILE_W - 1) / FGR_TILE_W;
-    pixels.px = (float)((tile % tiles_x) * FGR_TILE_W) + FGR_LANE_X;
-    pixels.py = (float)((tile / tiles_x) * FGR_TILE_H) + FGR_LANE_Y;
-    pixels.inside = (pixels.px < (float)camera.width) & (pixels.py < (float)camera.height);
+    const int tiles_x = region_tiles_x(camera);
+    pixels.px = (float)(camera.region_x + (tile % tiles_x) * FGR_TILE_W) + FGR_LANE_X;
+    pixels.py = (float)(camera.region_y + (tile / tiles_x) * FGR_TILE_H) + FGR_LANE_Y;
+    pixels.inside = (pixels.px < (float)(camera.region_x + camera.region_width)) &
+                    (pixels.py < (float)(camera.region_y + camera.region_height));
     return pixels;
 }
 

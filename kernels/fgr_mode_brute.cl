@@ -165,20 +165,30 @@ __kernel void fgr_render(FGR_RENDER_ARGS, __global float* state) {
  * step), not a continuation of this one. At 640 pixels across a 45 degree view this only rejects
  * surfaces seen within about 1.5 degrees of grazing. */
 #define FGR_BRUTE_DISCONTINUITY 0.05f
+/* The farthest any pixel's screen-space shading reads from it, in pixels: the occlusion disc's
+ * and the glow's radius are capped here (only images over 1024 pixels wide reach the occlusion
+ * cap, over 12288 the glow's), so a tile of a gigapixel still needs this much padding and no
+ * more. Mirrored by kBruteMaxReach in host/src/modes/brute_mode.hpp. */
+#define FGR_BRUTE_MAX_REACH 256
 /* Samples of the screen-space occlusion's disc, and the glow's. */
 #define FGR_SSAO_SAMPLES 16
 /* Ambient light: higher than the shaded mode's, since occlusion here darkens everything. */
 #define FGR_BRUTE_AMBIENT 0.12f
 
-/* The depth of pixel (x, y) in `state`, -1 off the image or where the ray has no hit. */
+/* The depth of pixel (x, y) in `state`, -1 off the region or where the ray has no hit. Off the
+ * image that is the truth; off a tiled render's region but on the image it is not, which is why
+ * tiles are rendered with FGR_BRUTE_MAX_REACH pixels of padding and cropped. */
 inline real brute_depth_at(__global const float* state, index_lanes x, index_lanes y,
                            camera_frame camera) {
-    const index_lanes on_image = (x >= 0) & (x < camera.width) & (y >= 0) & (y < camera.height);
-    const index_lanes cx = clamp(x, 0, camera.width - 1), cy = clamp(y, 0, camera.height - 1);
-    const int tiles_x = (camera.width + FGR_TILE_W - 1) / FGR_TILE_W;
-    const index_lanes index = ((cy / FGR_TILE_H) * tiles_x + cx / FGR_TILE_W) * FGR_WIDTH +
+    const index_lanes lx = x - camera.region_x, ly = y - camera.region_y;
+    const index_lanes on_region = (lx >= 0) & (lx < camera.region_width) & (ly >= 0) &
+                                  (ly < camera.region_height);
+    const index_lanes cx = clamp(lx, 0, camera.region_width - 1);
+    const index_lanes cy = clamp(ly, 0, camera.region_height - 1);
+    const index_lanes index = ((cy / FGR_TILE_H) * region_tiles_x(camera) + cx / FGR_TILE_W) *
+                                  FGR_WIDTH +
                               (cy % FGR_TILE_H) * FGR_TILE_W + cx % FGR_TILE_W;
-    return select(fgr_real(-1.0f), fgr_gather(state, index), index_truth(on_image));
+    return select(fgr_real(-1.0f), fgr_gather(state, index), index_truth(on_region));
 }
 
 inline vec3 brute_world_point(camera_frame camera, vec3 eye, index_lanes x, index_lanes y,
@@ -246,7 +256,8 @@ inline real brute_occlusion(__global const float* state, camera_frame camera, ve
                             vec3 centre, vec3 n, mask hit, PARAMS) {
     const float radius = param_ao_radius;
     const real pixels =
-        clamp(radius / (depth * camera.pixel_angle), 1.0f, 0.25f * (float)camera.width);
+        clamp(radius / (depth * camera.pixel_angle), 1.0f,
+              fmin(0.25f * (float)camera.width, (float)FGR_BRUTE_MAX_REACH));
     const real spin = brute_spin(px, py);
     real occluded = fgr_real(0.0f);
     for (int k = 0; k < FGR_SSAO_SAMPLES; ++k) {
@@ -341,7 +352,8 @@ inline vec3 brute_lighting(vec3 eye, vec3 dir, real depth, vec3 p, vec3 n, vec3 
 inline vec3 brute_glow(vec3 colour, __global const float* state, camera_frame camera,
                        index_lanes x, index_lanes y, real px, real py, mask missed, PARAMS) {
     if (!fgr_any(missed)) return colour;
-    const real pixels = fgr_real(fmax(3.0f, (float)camera.width / 48.0f));
+    const real pixels =
+        fgr_real(fmin(fmax(3.0f, (float)camera.width / 48.0f), (float)FGR_BRUTE_MAX_REACH));
     const real spin = brute_spin(px, py);
     real near_hits = fgr_real(0.0f);
     for (int k = 0; k < FGR_SSAO_SAMPLES; ++k) {

@@ -130,6 +130,8 @@ struct RenderOptions {
     std::optional<double> time_limit;  // seconds: stop adding samples after this long
     std::string aovs;                  // "albedo,normal,depth,alpha": EXR layers beside the image
     bool dev = false;  // read the scene's .cl file from disk, not the plugin's embedded copy
+    std::optional<int> tile_size;  // render in tiles of about this side (also implied by size)
+    bool resume = false;           // continue an interrupted tiled render from its tile store
 };
 
 void add_render_command(CLI::App& app, RenderOptions& options);

@@ -16,7 +16,10 @@
 #include "fgr/program_cache.hpp"
 #include "fgr/renderer.hpp"
 #include "fgr/still_image.hpp"
+#include "fgr/streaming_image.hpp"
+#include "fgr/tiled_still.hpp"
 #include "fgr/view_validation.hpp"
+#include "tiled_render.hpp"
 
 namespace fgr {
 namespace {
@@ -73,11 +76,10 @@ CameraView choose_view(const Scene& scene, const RenderOptions& options) {
 }
 
 void check_output_path(const std::filesystem::path& output) {
-    std::string extension = output.extension().string();
-    std::transform(extension.begin(), extension.end(), extension.begin(),
-                   [](unsigned char c) { return static_cast<char>(std::tolower(c)); });
-    if (extension != ".png" && extension != ".exr") {
-        throw UsageError(fmt::format("output '{}' must be a .png or .exr file", output.string()));
+    try {
+        image_format_of(output);
+    } catch (const std::invalid_argument& error) {
+        throw UsageError(error.what());
     }
     const auto directory = output.has_parent_path() ? output.parent_path() : ".";
     std::error_code error;
@@ -117,9 +119,10 @@ void check_render_options(const RenderOptions& options) {
     }
     parsed_view_override(options.view_override);  // a malformed vector fails before any loading
     check_output_path(options.output);
-    const bool exr = std::filesystem::path(options.output).extension() != ".png";
+    const bool exr = image_format_of(options.output) == ImageFormat::Exr;
     if (!options.aovs.empty() && !exr) throw UsageError("--aov needs an .exr output");
-    if (exr && options.bit_depth != 8) throw UsageError("--bit-depth is for PNG output");
+    if (exr && options.bit_depth != 8) throw UsageError("--bit-depth is for PNG and TIFF output");
+    if (tiled_render_wanted(options)) check_tiled_options(options);
     try {
         parse_aovs(options.aovs);
     } catch (const std::invalid_argument& error) {
@@ -127,11 +130,9 @@ void check_render_options(const RenderOptions& options) {
     }
 }
 
-// Renders `request` (render_still: the kernel, float or double), writes the PNG, prints the
-// figures.
-void render_to_file(const Scene& scene, const FrameRequest& request, const ComputeDevice& device,
-                    ProgramCache& cache, const RenderOptions& options,
-                    const std::filesystem::path& output) {
+}  // namespace
+
+StillSettings still_settings(const Scene& scene, const RenderOptions& options) {
     StillSettings settings;
     settings.packet_width = options.packet_width;
     settings.effects = apply_effect_changes(scene.effects, options.effect_changes);
@@ -149,6 +150,11 @@ void render_to_file(const Scene& scene, const FrameRequest& request, const Compu
                          effect_names(ignored));
         }
     }
+    return settings;
+}
+
+FrameRequest request_for_mode(const Scene& scene, const FrameRequest& request,
+                              const RenderOptions& options, const StillSettings& settings) {
     FrameRequest reported = request;
     if (!options.samples && settings.mode == RenderMode::Path) reported.samples = kPathSamples;
     if (!options.samples && settings.mode == RenderMode::Brute) reported.samples = kBrutePasses;
@@ -159,6 +165,19 @@ void render_to_file(const Scene& scene, const FrameRequest& request, const Compu
                          "energy (the image is biased)", reported.path.radiance_clamp);
         }
     }
+    return reported;
+}
+
+namespace {
+
+// Renders `request` (render_still: the kernel, float or double), writes the PNG, prints the
+// figures.
+void render_to_file(const Scene& scene, const FrameRequest& request, const ComputeDevice& device,
+                    ProgramCache& cache, const RenderOptions& options,
+                    const std::filesystem::path& output) {
+    const StillSettings settings = still_settings(scene, options);
+    const Aovs aovs = parse_aovs(options.aovs);
+    FrameRequest reported = request_for_mode(scene, request, options, settings);
     if (options.time_limit) {
         const auto until = std::chrono::steady_clock::now() +
                            std::chrono::duration_cast<std::chrono::steady_clock::duration>(
@@ -260,16 +279,25 @@ int render_all(const RenderOptions& options) {
 
 void add_render_command(CLI::App& app, RenderOptions& options) {
     CLI::App* render = app.add_subcommand(
-        "render", "render one image of a scene to a PNG or EXR file, or every scene's default view");
+        "render",
+        "render one image of a scene to a PNG, EXR or TIFF file, or every scene's default view");
     render->add_option("scene", options.scene, "scene id (see `fgr list`)");
     render->add_flag("--all", options.all, "render every scene's default view into the directory -o");
     render->add_option("-o,--output", options.output,
-                       "output .png (tone-mapped) or .exr (linear) file; a directory with --all")
+                       "output .png or .tif (tone-mapped) or .exr (linear) file; a directory with --all")
         ->required();
-    render->add_option("--width", options.width, "image width in pixels")
-        ->check(CLI::Range(1, kMaxImageSide));
+    render->add_option("--width", options.width,
+                       "image width in pixels (over 16384, or over 16 Mpx in all, renders in tiles)")
+        ->check(CLI::Range(1, kMaxTiledImageSide));
     render->add_option("--height", options.height, "image height in pixels")
-        ->check(CLI::Range(1, kMaxImageSide));
+        ->check(CLI::Range(1, kMaxTiledImageSide));
+    render->add_option("--tile-size", options.tile_size,
+                       "render in tiles of about this many pixels a side, streaming the file a "
+                       "band of rows at a time (default for large images: 512)")
+        ->check(CLI::Range(16, 8192));
+    render->add_flag("--resume", options.resume,
+                     "continue an interrupted tiled render from the tiles it finished (kept in "
+                     "OUTPUT.fgr-tiles)");
     render->add_option("--set", options.assignments, "set a parameter: id=value (repeatable)")
         ->allow_extra_args(false);
     render->add_option("--colour", options.colour,
@@ -330,6 +358,7 @@ int command_render(const RenderOptions& options) {
     request.view = choose_view(scene, options);
     const ComputeDevice device = open_requested_device(options.device);
     ProgramCache cache(ProgramCache::default_directory());
+    if (tiled_render_wanted(options)) return render_tiled(scene, request, device, cache, options);
     render_to_file(scene, request, device, cache, options, options.output);
     return 0;
 }

@@ -42,6 +42,22 @@ struct TemporaryFile {
 
 }  // namespace
 
+PendingFile::PendingFile(fs::path target)
+    : target_(std::move(target)), temporary_(temporary_path_for(target_)) {}
+
+PendingFile::~PendingFile() {
+    if (committed_) return;
+    std::error_code ignored;
+    fs::remove(temporary_, ignored);
+}
+
+void PendingFile::commit() {
+    std::error_code error;
+    fs::rename(temporary_, target_, error);
+    if (error) throw std::runtime_error("cannot write '" + target_.string() + "': " + error.message());
+    committed_ = true;
+}
+
 std::string replace_file_atomically(
     const fs::path& target, const std::function<std::string(const fs::path&)>& write_temporary) {
     if (!target.has_filename()) return "not a file name";

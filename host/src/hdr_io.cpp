@@ -20,7 +20,6 @@
 #include <functional>
 #include <limits>
 #include <memory>
-#include <mutex>
 #include <optional>
 #include <set>
 #include <stdexcept>
@@ -410,12 +409,10 @@ void check_exr_header(const fs::path& path, const std::vector<unsigned char>& by
     }
 }
 
+// Set before every read: a tiled still's EXR writer raises the image size limit for itself.
 void limit_openexr_allocations() {
-    static std::once_flag once;
-    std::call_once(once, [] {
-        Imf::Header::setMaxImageSize(kMaxHdrImageSide, kMaxHdrImageSide);
-        Imf::Header::setMaxTileSize(kMaxExrTileSide, kMaxExrTileSide);
-    });
+    Imf::Header::setMaxImageSize(kMaxHdrImageSide, kMaxHdrImageSide);
+    Imf::Header::setMaxTileSize(kMaxExrTileSide, kMaxExrTileSide);
 }
 
 HdrImage read_openexr(const fs::path& path, const std::vector<unsigned char>& bytes) {

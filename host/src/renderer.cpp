@@ -22,7 +22,7 @@
 namespace fgr {
 namespace {
 
-// Mirrors `camera_frame` in kernels/fgr_render.cl (float4 members keep both layouts equal).
+// Mirrors `camera_frame` in kernels/fgr_camera.cl (float4 members keep both layouts equal).
 struct CameraFrame {
     cl_float4 eye;      // xyz: float(eye), w: x of float(eye - xyz)
     cl_float4 forward;  // w: y of float(eye - eye.xyz)
@@ -32,14 +32,18 @@ struct CameraFrame {
     cl_float pixel_angle;
     cl_int width;
     cl_int height;
+    cl_int region_x;
+    cl_int region_y;
+    cl_int region_width;
+    cl_int region_height;
 };
-static_assert(sizeof(CameraFrame) == 80, "must match camera_frame in fgr_render.cl");
+static_assert(sizeof(CameraFrame) == 96, "must match camera_frame in fgr_camera.cl");
 
 cl_float4 to_float4(glm::vec3 v, float w = 0.0f) { return {{v.x, v.y, v.z, w}}; }
 
 // The eye goes as a hi/lo split of its double value: hi the nearest float, lo the rest rounded to
 // float (in the w components); double lanes add them, float lanes use hi alone.
-CameraFrame camera_frame(const CameraView& view, int width, int height) {
+CameraFrame camera_frame(const CameraView& view, int width, int height, PixelRegion region) {
     const CameraBasis basis = camera_basis(view);
     const glm::vec3 eye_hi(basis.eye);
     const glm::vec3 eye_lo(basis.eye - glm::dvec3(eye_hi));
@@ -50,14 +54,37 @@ CameraFrame camera_frame(const CameraView& view, int width, int height) {
             basis.tan_half_fov,
             pixel_angle(basis, width),
             width,
-            height};
+            height,
+            region.x,
+            region.y,
+            region.width,
+            region.height};
+}
+
+void check_size(const FrameRequest& request) {
+    if (request.region.whole()) {
+        if (request.width < 1 || request.height < 1 || request.width > kMaxImageSide ||
+            request.height > kMaxImageSide) {
+            throw std::invalid_argument("image size must be between 1x1 and 16384x16384");
+        }
+        return;
+    }
+    if (request.width < 1 || request.height < 1 || request.width > kMaxTiledImageSide ||
+        request.height > kMaxTiledImageSide) {
+        throw std::invalid_argument(fmt::format(
+            "tiled image size must be between 1x1 and {0}x{0}", kMaxTiledImageSide));
+    }
+    const PixelRegion& r = request.region;
+    if (r.width < 1 || r.height < 1 || r.width > kMaxImageSide || r.height > kMaxImageSide ||
+        r.x < 0 || r.y < 0 || r.x > request.width - r.width || r.y > request.height - r.height) {
+        throw std::invalid_argument(fmt::format(
+            "region {}x{} at ({}, {}) is not inside the {}x{} image (or a side exceeds 16384)",
+            r.width, r.height, r.x, r.y, request.width, request.height));
+    }
 }
 
 void check_request(const Scene& scene, const FrameRequest& request) {
-    if (request.width < 1 || request.height < 1 || request.width > kMaxImageSide ||
-        request.height > kMaxImageSide) {
-        throw std::invalid_argument("image size must be between 1x1 and 16384x16384");
-    }
+    check_size(request);
     if (request.samples < 1 || request.samples > kMaxSamples) {
         throw std::invalid_argument("samples per pixel must be between 1 and 4096");
     }
@@ -187,6 +214,11 @@ uint8_t encode_srgb(float linear) {
     return srgb_table()[static_cast<size_t>(linear * 4096.0f + 0.5f)];
 }
 
+PixelRegion rendered_region(const FrameRequest& request) {
+    if (!request.region.whole()) return request.region;
+    return {0, 0, request.width, request.height};
+}
+
 TileLayout tile_layout(int packet_width, int width, int height) {
     const int tile_w = packet_width == 1 ? 1 : packet_width == 4 ? 2 : 4;
     const int tile_h = packet_width / tile_w;
@@ -255,7 +287,8 @@ bool Renderer::launch_tiles(cl::Kernel& kernel, int tiles, int group,
 
 Frame Renderer::render(const FrameRequest& request) {
     check_request(scene_, request);
-    const TileLayout layout = tile_layout(switches_.packet_width, request.width, request.height);
+    const PixelRegion region = rendered_region(request);
+    const TileLayout layout = tile_layout(switches_.packet_width, region.width, region.height);
     const int plane = layout.plane_size();
     const auto start = std::chrono::steady_clock::now();
 
@@ -263,7 +296,7 @@ Frame Renderer::render(const FrameRequest& request) {
     const int plane_count = kCommonPlanes + mode_->extra_planes(switches_);
     cl::Buffer planes(device_.context, CL_MEM_READ_WRITE, sizeof(float) * plane_count * plane);
     const int tiles = layout.tiles_x * layout.tiles_y;
-    const CameraFrame camera = camera_frame(request.view, request.width, request.height);
+    const CameraFrame camera = camera_frame(request.view, request.width, request.height, region);
     cl::Kernel* resolve = mode_->resolve_kernel();
     for (cl::Kernel* kernel : {&render_kernel_, resolve}) {
         if (kernel == nullptr) continue;
@@ -306,14 +339,14 @@ Frame Renderer::render(const FrameRequest& request) {
 
     Frame frame;
     frame.double_precision = switches_.double_precision;
-    frame.depth.resize(static_cast<size_t>(request.width) * request.height);
+    frame.depth.resize(static_cast<size_t>(region.pixels()));
     frame.linear.resize(frame.depth.size() * 3);
     frame.samples = done;
     const float average = mode_->sums_samples() ? 1.0f / static_cast<float>(done) : 1.0f;
-    for (int y = 0; y < request.height; ++y) {
-        for (int x = 0; x < request.width; ++x) {
+    for (int y = 0; y < region.height; ++y) {
+        for (int x = 0; x < region.width; ++x) {
             const size_t source = layout.index(x, y);
-            const size_t pixel = static_cast<size_t>(y) * request.width + x;
+            const size_t pixel = static_cast<size_t>(y) * region.width + x;
             for (int c = 0; c < 3; ++c) {
                 const float value = host[c * plane + source] * average;
                 frame.linear[pixel * 3 + c] = value;
@@ -322,7 +355,7 @@ Frame Renderer::render(const FrameRequest& request) {
             frame.hits += frame.depth[pixel] >= 0.0f;
         }
     }
-    frame.image = display_image(scene_, request.params, frame.linear, request.width, request.height);
+    frame.image = display_image(scene_, request.params, frame.linear, region.width, region.height);
     mode_->read_back(host, layout, request, done, frame);
     frame.render_ms = elapsed_ms(start);
     return frame;

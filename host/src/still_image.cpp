@@ -19,17 +19,20 @@
 
 namespace fgr {
 
-Frame render_still(const Scene& scene, const FrameRequest& request, const ComputeDevice& device,
-                   ProgramCache& cache, const StillSettings& settings) {
+KernelSwitches still_switches(const ComputeDevice& device, const StillSettings& settings) {
+    return {settings.packet_width ? settings.packet_width : preferred_packet_width(device.info),
+            settings.effects, settings.stats, false, settings.mode};
+}
+
+Renderer& choose_still_renderer(PrecisionRenderers& renderers, const Scene& scene,
+                                const FrameRequest& request, const ComputeDevice& device,
+                                const StillSettings& settings) {
     // Before any kernel is built for it (Renderer::render would refuse it too).
     if (const std::string problem = computed_view_problem(request.view); !problem.empty()) {
         throw std::invalid_argument("cannot render this view: " + problem);
     }
     check_supported_effects(scene, settings.effects);
-    const KernelSwitches in_float{
-        settings.packet_width ? settings.packet_width : preferred_packet_width(device.info),
-        settings.effects, settings.stats, false, settings.mode};
-    PrecisionRenderers renderers(device, cache, scene, in_float);
+    const KernelSwitches in_float = still_switches(device, settings);
     const auto build = [&](bool double_precision) -> Renderer& {
         if (Renderer* built = renderers.built(double_precision)) return *built;
         const KernelSwitches switches = with_precision(in_float, double_precision);
@@ -52,7 +55,13 @@ Frame render_still(const Scene& scene, const FrameRequest& request, const Comput
     if (in_double && settings.precision == Precision::Auto) {
         spdlog::info("a pixel of this view is finer than float resolves: rendering in double");
     }
-    Frame frame = build(in_double).render(request);
+    return build(in_double);
+}
+
+Frame render_still(const Scene& scene, const FrameRequest& request, const ComputeDevice& device,
+                   ProgramCache& cache, const StillSettings& settings) {
+    PrecisionRenderers renderers(device, cache, scene, still_switches(device, settings));
+    Frame frame = choose_still_renderer(renderers, scene, request, device, settings).render(request);
     // A pixel the kernel could not compute must not reach a file as if it were an image.
     if (const long broken = non_finite_pixels(frame); broken > 0) {
         throw std::runtime_error(fmt::format(

@@ -21,6 +21,28 @@ std::string replace_file_atomically(
 // the reason.
 std::string close_durably(std::FILE*& file);
 
+// A file written over time (a streamed image) under a temporary name beside `target`: commit()
+// renames it into place; destroying it uncommitted (an error, Ctrl-C) removes the temporary, so
+// `target` never holds a partial file.
+class PendingFile {
+public:
+    explicit PendingFile(std::filesystem::path target);
+    ~PendingFile();
+    PendingFile(const PendingFile&) = delete;
+    PendingFile& operator=(const PendingFile&) = delete;
+
+    const std::filesystem::path& temporary() const { return temporary_; }
+    const std::filesystem::path& target() const { return target_; }
+    // Renames the (closed, flushed) temporary over the target; throws std::runtime_error
+    // ("cannot write '<target>': <reason>").
+    void commit();
+
+private:
+    std::filesystem::path target_;
+    std::filesystem::path temporary_;
+    bool committed_ = false;
+};
+
 // Writes `contents` (bytes as they are: text or binary) to `target` atomically and durably
 // (fsync'd before the rename). Throws std::runtime_error
 // ("cannot write '<target>': <reason>").

@@ -21,8 +21,18 @@ namespace fgr {
 
 class ModeKernel;
 
+// A rectangle of an image, in pixels from its top-left corner.
+struct PixelRegion {
+    int x = 0;
+    int y = 0;
+    int width = 0;  // 0 (with height 0): the whole image
+    int height = 0;
+    bool whole() const { return width == 0 && height == 0; }
+    long pixels() const { return long(width) * long(height); }
+};
+
 struct FrameRequest {
-    int width = 640;
+    int width = 640;  // of the whole image: directions, footprints and random numbers follow it
     int height = 480;
     CameraView view;
     std::vector<float> params;  // laid out as default_param_values(scene)
@@ -41,6 +51,10 @@ struct FrameRequest {
     // Polled after each finished sample, when set: returning true ends the render there with the
     // samples done so far (Frame::samples), e.g. at a time budget.
     std::function<bool()> enough{};
+    // The part of the image to render (tiled stills); the frame then holds only it, each pixel
+    // exactly as an untiled render of the whole image gives it. Its sides are at most
+    // kMaxImageSide; the whole image's at most kMaxTiledImageSide.
+    PixelRegion region{};
 };
 
 // The primary rays' work, from sample 0 of a render built with KernelSwitches::stats.
@@ -84,7 +98,7 @@ struct IfsLevels {
 };
 
 struct Frame {
-    Image8 image;               // sRGB, gamma-encoded
+    Image8 image;               // sRGB, gamma-encoded; the region's size when one was asked for
     std::vector<float> linear;  // row-major linear RGB, averaged over samples, before exposure
     std::vector<float> depth;   // row-major distance along the ray; -1 where the ray missed
                                 // (written by sample 0 only: all -1 when first_sample > 0)
@@ -106,8 +120,15 @@ struct Frame {
     std::optional<double> inside_tests_per_pixel;
 };
 
-// Image sizes fgr accepts; larger would not fit device buffers on small machines.
+// Sides of what one launch renders (an image, or a region of a tiled one); larger would not fit
+// device buffers on small machines.
 constexpr int kMaxImageSide = 16384;
+// Sides of a tiled image, rendered a region at a time: 2^20 pixels (a terapixel), far past any
+// print, and small enough that every pixel index fits 40 bits and a row's bytes a size_t.
+constexpr int kMaxTiledImageSide = 1 << 20;
+
+// The region `request` renders: its own, or the whole image.
+PixelRegion rendered_region(const FrameRequest& request);
 
 // Throws std::invalid_argument, naming the scene and what it can do, when `scene` cannot render
 // in `mode`: inside-only scenes render only in the brute mode, which IFS scenes cannot.

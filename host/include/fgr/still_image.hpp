@@ -41,6 +41,16 @@ struct Aovs {
 // naming an unknown layer.
 Aovs parse_aovs(std::string_view list);
 
+// The kernel switches a still renders with, in float (the precision is chosen per view).
+KernelSwitches still_switches(const ComputeDevice& device, const StillSettings& settings);
+
+// The renderer of `renderers` (made with still_switches) in the precision `settings` and the
+// view call for (as render_still chooses it), built now if need be, logging what it builds.
+// Throws as render_still does for a view or effects it cannot render.
+Renderer& choose_still_renderer(PrecisionRenderers& renderers, const Scene& scene,
+                                const FrameRequest& request, const ComputeDevice& device,
+                                const StillSettings& settings);
+
 // Builds the scene's kernel (logging what it builds and how long it took) and renders `request`.
 // Float or double as PrecisionChooser decides for the view (Auto: auto_wants_double, with the DE
 // at the camera from the float kernel when the target alone does not call for double). Throws

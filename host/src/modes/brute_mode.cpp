@@ -20,13 +20,14 @@ int BruteMode::extra_planes(const KernelSwitches& switches) const {
 
 void BruteMode::bind(cl::Kernel& kernel, const FrameRequest& request, const TileLayout& layout) {
     const int floats = layout.plane_size();
-    const bool same_image = floats == state_floats_ && request.width == state_width_ &&
-                            request.height == state_height_;
+    const PixelRegion region = rendered_region(request);
+    const bool same_image = floats == state_floats_ && region.width == state_width_ &&
+                            region.height == state_height_;
     if (!same_image) {
         state_ = cl::Buffer(device_.context, CL_MEM_READ_WRITE, sizeof(float) * floats);
         state_floats_ = floats;
-        state_width_ = request.width;
-        state_height_ = request.height;
+        state_width_ = region.width;
+        state_height_ = region.height;
         // A continued render (first sample > 0) of a new size has nothing to continue from.
         device_.queue.enqueueFillBuffer(state_, -1.0f, 0, sizeof(float) * floats);
     }
@@ -37,8 +38,8 @@ void BruteMode::bind(cl::Kernel& kernel, const FrameRequest& request, const Tile
 }
 
 void BruteMode::read_back(const std::vector<float>& planes, const TileLayout& layout,
-                          const FrameRequest& request, int, Frame& frame) const {
-    const int width = request.width, height = request.height;
+                          const FrameRequest&, int, Frame& frame) const {
+    const int width = frame.image.width, height = frame.image.height;  // the region's
     frame.albedo = planes_in_rows(planes, layout, kCommonPlanes, 3, width, height);
     frame.normal = planes_in_rows(planes, layout, kCommonPlanes + 3, 3, width, height);
     const size_t plane = static_cast<size_t>(layout.plane_size());
@@ -50,7 +51,7 @@ void BruteMode::read_back(const std::vector<float>& planes, const TileLayout& la
             tests += planes[stats_plane * plane + static_cast<size_t>(layout.index(x, y))];
         }
     }
-    frame.inside_tests_per_pixel = tests / (double(request.width) * double(request.height));
+    frame.inside_tests_per_pixel = tests / (double(width) * double(height));
 }
 
 }  // namespace fgr

@@ -170,8 +170,8 @@ void PathMode::bind(cl::Kernel& kernel, const FrameRequest& request, const TileL
 }
 
 void PathMode::read_back(const std::vector<float>& planes, const TileLayout& layout,
-                         const FrameRequest& request, int samples, Frame& frame) const {
-    const int width = request.width, height = request.height;
+                         const FrameRequest&, int samples, Frame& frame) const {
+    const int width = frame.image.width, height = frame.image.height;  // the region's
     const float average = 1.0f / static_cast<float>(std::max(samples, 1));
     frame.albedo = planes_in_rows(planes, layout, kCommonPlanes, 3, width, height, average);
     frame.normal = planes_in_rows(planes, layout, kCommonPlanes + 3, 3, width, height, average);

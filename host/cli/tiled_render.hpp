@@ -1,0 +1,31 @@
+#pragma once
+// fgr render in tiles: what makes a render tiled, and the tiled render itself (the progress
+// line, Ctrl-C, --resume), on top of fgr/tiled_still.hpp.
+
+#include "commands.hpp"
+#include "fgr/program_cache.hpp"
+#include "fgr/renderer.hpp"
+#include "fgr/still_image.hpp"
+
+namespace fgr {
+
+// The still settings (mode, effects, precision) `options` ask for in `scene` (render.cpp).
+StillSettings still_settings(const Scene& scene, const RenderOptions& options);
+// `request` with what the mode adds: its default samples, the path tracer's settings.
+FrameRequest request_for_mode(const Scene& scene, const FrameRequest& request,
+                              const RenderOptions& options, const StillSettings& settings);
+
+// Images over this many pixels render in tiles unless told otherwise; so do TIFF files, and any
+// render given --tile-size or --resume.
+constexpr long kTiledFromPixels = 4096L * 4096L;
+
+bool tiled_render_wanted(const RenderOptions& options);
+
+// Options a tiled render cannot honour: UsageError naming them.
+void check_tiled_options(const RenderOptions& options);
+
+// Renders in tiles to options.output; returns the exit code (130 when Ctrl-C stopped it).
+int render_tiled(const Scene& scene, const FrameRequest& request, const ComputeDevice& device,
+                 ProgramCache& cache, const RenderOptions& options);
+
+}  // namespace fgr

@@ -1,0 +1,40 @@
+#pragma once
+// A progress line for long work on stderr: "tiles 37/120 (31%) | 12.3 Mrays/s | ETA 1m23s",
+// redrawn in place on a terminal at most a few times a second, and as a plain line about every
+// tenth of the way (or half minute) when stderr is a file or a pipe, so logs stay readable.
+
+#include <chrono>
+#include <cstdio>
+#include <string>
+
+namespace fgr {
+
+// "45s", "3m05s", "2h07m".
+std::string format_duration(double seconds);
+
+// "950 k", "12.3 M", "1.20 G": a rate's number with an SI prefix.
+std::string format_rate(double per_second);
+
+class ProgressLine {
+public:
+    explicit ProgressLine(std::string unit, std::FILE* out = stderr);
+    ~ProgressLine();
+    ProgressLine(const ProgressLine&) = delete;
+    ProgressLine& operator=(const ProgressLine&) = delete;
+
+    // `done` of `total` units after `seconds`, with a detail such as a rate; the ETA follows
+    // from the pace of the units done by this run (`fresh` of them, the others resumed).
+    void update(long done, long total, long fresh, double seconds, const std::string& detail);
+    // Ends the line (on a terminal) after the last update.
+    void finish();
+
+private:
+    std::string unit_;
+    std::FILE* out_;
+    bool terminal_;
+    bool open_ = false;  // a line is drawn and not ended
+    std::chrono::steady_clock::time_point last_draw_{};
+    long last_tenth_ = -1;
+};
+
+}  // namespace fgr

@@ -1,0 +1,101 @@
+#pragma once
+// Stills of any size (up to kMaxTiledImageSide a side), rendered a tile at a time and streamed
+// to a PNG, EXR or TIFF file a band of rows at a time, so memory is bounded by the band, not the
+// image.
+//
+// The image is cut into bands of whole rows, each band into tiles. A tile is a region of the
+// whole image (FrameRequest::region), so each pixel gets exactly the ray, samples and random
+// numbers of an untiled render; a mode whose shading reads neighbouring pixels (the brute-force
+// mode's screen-space normals, occlusion and glow) renders each tile with the padding it reads
+// (region_padding) and keeps the inside. A finished band is encoded into the output's samples,
+// kept compressed in a tile store beside the output (what --resume continues from) and written
+// to the file; the store goes once the file is complete. Interrupted renders keep the store and
+// leave no file at the output path.
+
+#include <cstdint>
+#include <filesystem>
+#include <functional>
+#include <string>
+
+#include "fgr/renderer.hpp"
+#include "fgr/still_image.hpp"
+#include "fgr/streaming_image.hpp"
+
+namespace fgr {
+
+// What the output file holds.
+struct TiledOutput {
+    std::filesystem::path path;
+    ImageFormat format = ImageFormat::Png;
+    int bit_depth = 8;    // PNG and TIFF: 8 (tone-mapped sRGB) or 16 (linear, exposure only)
+    bool alpha = false;   // PNG and TIFF: an alpha channel of coverage
+    Aovs aovs{};          // EXR: layers beside R, G, B
+    float exposure = 1.0f;  // for 16-bit linear output
+};
+
+// The channels a row of `output` holds, in order.
+RowLayout output_row_layout(const TiledOutput& output);
+
+// How a tiled render cuts its image.
+struct TilePlan {
+    int width = 0;
+    int height = 0;
+    int band_rows = 0;    // rows per band (the last may have fewer)
+    int tile_width = 0;   // columns per tile (the last of a band may have fewer)
+    int padding = 0;      // pixels rendered around each tile for neighbour-reading shading
+    int bands() const { return (height + band_rows - 1) / band_rows; }
+    int tiles_per_band() const { return (width + tile_width - 1) / tile_width; }
+    long tiles() const { return long(bands()) * tiles_per_band(); }
+};
+
+// Default tile side, and the most memory a band of encoded rows may take.
+constexpr int kDefaultTileSize = 512;
+constexpr size_t kBandBudgetBytes = size_t{16} << 20;
+
+// Bands of `tile_size` rows unless a band of encoded rows (pixel_bytes each) would pass
+// kBandBudgetBytes, then fewer (a multiple of 4, at least 4); tiles of about tile_size^2 pixels.
+// Throws std::invalid_argument for a tile size that is not a multiple of 4 in [16, 8192].
+TilePlan plan_tiles(int width, int height, int tile_size, size_t pixel_bytes, int padding);
+
+// Pixels a tile of `mode` must be rendered with around it so that its own pixels come out as in
+// an untiled render: what the mode's shading reads of neighbouring pixels (0: nothing).
+int region_padding(RenderMode mode);
+
+struct TiledProgress {
+    long tiles_done = 0;      // including those taken from an earlier run
+    long tiles_total = 0;
+    long tiles_resumed = 0;   // taken from the tile store, not rendered now
+    double seconds = 0.0;     // since this run started
+    double rays_per_second = 0.0;  // camera rays (pixels x samples) rendered by this run
+};
+
+struct TiledSettings {
+    int tile_size = kDefaultTileSize;
+    bool resume = false;  // continue from the tile store of an earlier, interrupted run
+    // Polled between tiles (and within them): true stops the render, keeping the tile store.
+    std::function<bool()> interrupted{};
+    std::function<void(const TiledProgress&)> on_progress{};
+};
+
+struct TiledResult {
+    bool interrupted = false;  // stopped by TiledSettings::interrupted: no file was written
+    long tiles = 0;
+    long tiles_resumed = 0;
+    long hits = 0;             // pixels whose camera ray met the surface (rendered now)
+    int samples = 0;           // per pixel
+    double render_ms = 0.0;    // rendering, encoding and writing, this run
+    TilePlan plan;
+    std::filesystem::path store;  // the tile store (kept when interrupted)
+};
+
+// The tile store of `output`: a directory beside it.
+std::filesystem::path tile_store_path(const std::filesystem::path& output);
+
+// Renders `request` (the whole image: request.region must be whole) with `renderer` in tiles and
+// streams it to `output`. Throws std::invalid_argument for a plan or output that cannot be,
+// std::runtime_error for a file that cannot be written, non-finite pixels, or a tile store that
+// exists but is not resumable (another render's, or without --resume: named, with what to do).
+TiledResult render_tiled_still(Renderer& renderer, const FrameRequest& request,
+                               const TiledOutput& output, const TiledSettings& settings);
+
+}  // namespace fgr
