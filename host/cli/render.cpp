@@ -19,9 +19,7 @@
 #include "fgr/view_validation.hpp"
 
 namespace fgr {
-namespace {
 
-// A camera path given by name (one of the scene's) or as a JSON file the viewer saved.
 CameraPath find_camera_path(const Scene& scene, const std::string& argument) {
     if (looks_like_camera_path_file(argument)) {
         CameraPathFile file;
@@ -43,6 +41,8 @@ CameraPath find_camera_path(const Scene& scene, const std::string& argument) {
     }
     return *path;
 }
+
+namespace {
 
 CameraView choose_view(const Scene& scene, const RenderOptions& options) {
     if (options.camera_path) {
@@ -89,12 +89,12 @@ void check_output_path(const std::filesystem::path& output) {
 
 // Checks that do not need a scene: option combinations and the output location.
 void check_render_options(const RenderOptions& options) {
-    try {
-        apply_effect_changes(0, options.effect_changes);
-    } catch (const std::invalid_argument& error) {
-        throw UsageError(error.what());
-    }
     if (options.all) {
+        try {
+            apply_effect_changes(0, options.effect_changes);
+        } catch (const std::invalid_argument& error) {
+            throw UsageError(error.what());
+        }
         if (!options.scene.empty()) throw UsageError("give a SCENE or --all, not both");
         if (options.dev) throw UsageError("--dev is for one scene: give a SCENE, not --all");
         if (!options.assignments.empty() || options.colour || options.camera ||
@@ -106,9 +106,7 @@ void check_render_options(const RenderOptions& options) {
         return;
     }
     if (options.scene.empty()) throw UsageError("render needs a SCENE (see `fgr list`) or --all");
-    if (options.dev && !options.kernel_source.empty()) {
-        throw UsageError("--dev reads the scene's own .cl file, --kernel-source another: give one");
-    }
+    check_frame_options(options);
     if (options.time && !options.camera_path) throw UsageError("--time needs --camera-path");
     if (options.camera_path && !options.time) throw UsageError("--camera-path needs --time");
     if (options.camera_path && !options.view_override.empty()) {
@@ -120,18 +118,49 @@ void check_render_options(const RenderOptions& options) {
     const bool exr = std::filesystem::path(options.output).extension() != ".png";
     if (!options.aovs.empty() && !exr) throw UsageError("--aov needs an .exr output");
     if (exr && options.bit_depth != 8) throw UsageError("--bit-depth is for PNG output");
+}
+
+FrameRequest default_request(const Scene& scene, const RenderOptions& options) {
+    FrameRequest request;
+    request.width = options.width;
+    request.height = options.height;
+    request.view = scene.cameras.front().view;
+    request.params = default_param_values(scene);
+    request.samples = options.samples.value_or(1);
+    return request;
+}
+
+}  // namespace
+
+void check_frame_options(const RenderOptions& options) {
     try {
+        apply_effect_changes(0, options.effect_changes);
         parse_aovs(options.aovs);
     } catch (const std::invalid_argument& error) {
         throw UsageError(error.what());
     }
+    if (options.dev && !options.kernel_source.empty()) {
+        throw UsageError("--dev reads the scene's own .cl file, --kernel-source another: give one");
+    }
 }
 
-// Renders `request` (render_still: the kernel, float or double), writes the PNG, prints the
-// figures.
-void render_to_file(const Scene& scene, const FrameRequest& request, const ComputeDevice& device,
-                    ProgramCache& cache, const RenderOptions& options,
-                    const std::filesystem::path& output) {
+FrameRequest scene_request(const Scene& scene, const RenderOptions& options) {
+    FrameRequest request = default_request(scene, options);
+    for (const auto& assignment : options.assignments) {
+        set_param_from_text(scene, request.params, assignment);
+    }
+    if (options.colour) {
+        if (scene.find_param("colour_mode") == nullptr) {
+            throw UsageError(fmt::format(
+                "scene '{}' has no colour modes (no colour_mode parameter; see `fgr list`)",
+                scene.id));
+        }
+        set_param_from_text(scene, request.params, "colour_mode=" + *options.colour);
+    }
+    return request;
+}
+
+StillJob still_job(const Scene& scene, const FrameRequest& request, const RenderOptions& options) {
     StillSettings settings;
     settings.packet_width = options.packet_width;
     settings.effects = apply_effect_changes(scene.effects, options.effect_changes);
@@ -159,6 +188,20 @@ void render_to_file(const Scene& scene, const FrameRequest& request, const Compu
                          "energy (the image is biased)", reported.path.radiance_clamp);
         }
     }
+    return StillJob{settings, reported, aovs};
+}
+
+namespace {
+
+// Renders `request` (render_still: the kernel, float or double), writes the PNG, prints the
+// figures.
+void render_to_file(const Scene& scene, const FrameRequest& request, const ComputeDevice& device,
+                    ProgramCache& cache, const RenderOptions& options,
+                    const std::filesystem::path& output) {
+    StillJob job = still_job(scene, request, options);
+    const StillSettings& settings = job.settings;
+    const Aovs& aovs = job.aovs;
+    FrameRequest& reported = job.request;
     if (options.time_limit) {
         const auto until = std::chrono::steady_clock::now() +
                            std::chrono::duration_cast<std::chrono::steady_clock::duration>(
@@ -226,16 +269,6 @@ void render_to_file(const Scene& scene, const FrameRequest& request, const Compu
     fmt::print("wrote {} ({}x{})\n", output.string(), frame.image.width, frame.image.height);
 }
 
-FrameRequest default_request(const Scene& scene, const RenderOptions& options) {
-    FrameRequest request;
-    request.width = options.width;
-    request.height = options.height;
-    request.view = scene.cameras.front().view;
-    request.params = default_param_values(scene);
-    request.samples = options.samples.value_or(1);
-    return request;
-}
-
 int render_all(const RenderOptions& options) {
     const std::filesystem::path directory = options.output;
     std::error_code error;
@@ -258,6 +291,39 @@ int render_all(const RenderOptions& options) {
 
 }  // namespace
 
+void add_frame_options(CLI::App* command, RenderOptions& options) {
+    command->add_option("--width", options.width, "image width in pixels")
+        ->check(CLI::Range(1, kMaxImageSide));
+    command->add_option("--height", options.height, "image height in pixels")
+        ->check(CLI::Range(1, kMaxImageSide));
+    command->add_option("--set", options.assignments, "set a parameter: id=value (repeatable)")
+        ->allow_extra_args(false);
+    command->add_option("--colour", options.colour,
+                        "colour mode: point, planes, axes or iterations, those the scene offers "
+                        "(see `fgr list`); the same as --set colour_mode=MODE");
+    command->add_option("--spp", options.samples,
+                        "samples per pixel, jittered and averaged: anti-aliasing, depth of field, "
+                        "and the path tracer's estimate (default 1; 64 with --mode path); with "
+                        "--mode brute, passes of sampling along each ray (default 16)")
+        ->check(CLI::Range(1, kMaxSamples));
+    command->add_option("--bit-depth", options.bit_depth,
+                        "8: tone-mapped sRGB PNG (default); 16: linear 16-bit PNG (exposure only)")
+        ->check(CLI::IsMember({8, 16}));
+    command->add_option("--aov", options.aovs,
+                        "EXR layers beside the linear image: albedo,normal,depth,alpha "
+                        "(albedo and normal need --mode path or brute)");
+    add_mode_options(command, options.mode);
+    command->add_option("--effects", options.effect_changes,
+                        "change the scene's effects, e.g. +shadows,-ambient_occlusion");
+    add_precision_option(command, options.precision,
+                         "when a pixel is finer than float resolves (deep zooms)");
+    add_kernel_source_option(command, options.kernel_source);
+    command->add_flag("--dev", options.dev,
+                      "read the scene's .cl file from disk instead of the copy its plugin embeds "
+                      "(as `fgr view --dev`): try an edit without rebuilding the plugin");
+    add_device_options(command, options.device, options.packet_width);
+}
+
 void add_render_command(CLI::App& app, RenderOptions& options) {
     CLI::App* render = app.add_subcommand(
         "render", "render one image of a scene to a PNG or EXR file, or every scene's default view");
@@ -266,47 +332,18 @@ void add_render_command(CLI::App& app, RenderOptions& options) {
     render->add_option("-o,--output", options.output,
                        "output .png (tone-mapped) or .exr (linear) file; a directory with --all")
         ->required();
-    render->add_option("--width", options.width, "image width in pixels")
-        ->check(CLI::Range(1, kMaxImageSide));
-    render->add_option("--height", options.height, "image height in pixels")
-        ->check(CLI::Range(1, kMaxImageSide));
-    render->add_option("--set", options.assignments, "set a parameter: id=value (repeatable)")
-        ->allow_extra_args(false);
-    render->add_option("--colour", options.colour,
-                       "colour mode: point, planes, axes or iterations, those the scene offers "
-                       "(see `fgr list`); the same as --set colour_mode=MODE");
     auto* camera = render->add_option("--camera", options.camera, "named camera of the scene");
     auto* path = render->add_option("--camera-path", options.camera_path,
                                     "camera path of the scene, or a .json file saved by `fgr view`");
     path->excludes(camera);
     render->add_option("--time", options.time, "time along the camera path, in seconds");
     add_view_override_options(render, options.view_override);
-    render->add_option("--spp", options.samples,
-                       "samples per pixel, jittered and averaged: anti-aliasing, depth of field, "
-                       "and the path tracer's estimate (default 1; 64 with --mode path); with "
-                       "--mode brute, passes of sampling along each ray (default 16)")
-        ->check(CLI::Range(1, kMaxSamples));
     render->add_option("--time-limit", options.time_limit,
                        "stop adding samples after this many seconds and write what is done")
         ->check(CLI::PositiveNumber);
-    render->add_option("--bit-depth", options.bit_depth,
-                       "8: tone-mapped sRGB PNG (default); 16: linear 16-bit PNG (exposure only)")
-        ->check(CLI::IsMember({8, 16}));
-    render->add_option("--aov", options.aovs,
-                       "EXR layers beside the linear image: albedo,normal,depth,alpha "
-                       "(albedo and normal need --mode path or brute)");
-    add_mode_options(render, options.mode);
-    render->add_option("--effects", options.effect_changes,
-                       "change the scene's effects, e.g. +shadows,-ambient_occlusion");
-    add_precision_option(render, options.precision,
-                         "when a pixel is finer than float resolves (deep zooms)");
     render->add_flag("--stats", options.stats,
                      "print steps per pixel, DE evaluations and rays that ran out of steps");
-    add_kernel_source_option(render, options.kernel_source);
-    render->add_flag("--dev", options.dev,
-                     "read the scene's .cl file from disk instead of the copy its plugin embeds "
-                     "(as `fgr view --dev`): try an edit without rebuilding the plugin");
-    add_device_options(render, options.device, options.packet_width);
+    add_frame_options(render, options);
 }
 
 int command_render(const RenderOptions& options) {
@@ -315,18 +352,7 @@ int command_render(const RenderOptions& options) {
     const Discovery found = discover();
     const Scene scene = with_kernel_source(scene_as_used(find_scene(found, options.scene), options.dev),
                                            options.kernel_source);
-    FrameRequest request = default_request(scene, options);
-    for (const auto& assignment : options.assignments) {
-        set_param_from_text(scene, request.params, assignment);
-    }
-    if (options.colour) {
-        if (scene.find_param("colour_mode") == nullptr) {
-            throw UsageError(fmt::format(
-                "scene '{}' has no colour modes (no colour_mode parameter; see `fgr list`)",
-                scene.id));
-        }
-        set_param_from_text(scene, request.params, "colour_mode=" + *options.colour);
-    }
+    FrameRequest request = scene_request(scene, options);
     request.view = choose_view(scene, options);
     const ComputeDevice device = open_requested_device(options.device);
     ProgramCache cache(ProgramCache::default_directory());

@@ -26,9 +26,7 @@ Frame render_still(const Scene& scene, const FrameRequest& request, const Comput
         throw std::invalid_argument("cannot render this view: " + problem);
     }
     check_supported_effects(scene, settings.effects);
-    const KernelSwitches in_float{
-        settings.packet_width ? settings.packet_width : preferred_packet_width(device.info),
-        settings.effects, settings.stats, false, settings.mode};
+    const KernelSwitches in_float = still_switches(device, settings);
     PrecisionRenderers renderers(device, cache, scene, in_float);
     const auto build = [&](bool double_precision) -> Renderer& {
         if (Renderer* built = renderers.built(double_precision)) return *built;
@@ -53,13 +51,23 @@ Frame render_still(const Scene& scene, const FrameRequest& request, const Comput
         spdlog::info("a pixel of this view is finer than float resolves: rendering in double");
     }
     Frame frame = build(in_double).render(request);
+    check_finite_frame(scene, frame);
+    return frame;
+}
+
+KernelSwitches still_switches(const ComputeDevice& device, const StillSettings& settings) {
+    return KernelSwitches{
+        settings.packet_width ? settings.packet_width : preferred_packet_width(device.info),
+        settings.effects, settings.stats, false, settings.mode};
+}
+
+void check_finite_frame(const Scene& scene, const Frame& frame) {
     // A pixel the kernel could not compute must not reach a file as if it were an image.
     if (const long broken = non_finite_pixels(frame); broken > 0) {
         throw std::runtime_error(fmt::format(
             "rendering '{}' gave non-finite colour or depth at {} of {} pixels", scene.id, broken,
             frame.depth.size()));
     }
-    return frame;
 }
 
 long non_finite_pixels(const Frame& frame) {
