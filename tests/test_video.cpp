@@ -373,6 +373,8 @@ const BadVideo kBadVideos[] = {
     {"NoOutput", {"--camera-path", "orbit"}, "-o"},
     {"NoCameraPath", {"-o", "v.mp4"}, "camera-path"},
     {"AovWithoutExrFrames", {"--camera-path", "orbit", "-o", "v.mp4", "--aov", "depth"}, "exr"},
+    {"CrfOutOfRange", {"--camera-path", "orbit", "-o", "v.mp4", "--crf", "52"}, "52"},
+    {"CrfForACodecWithout", {"--camera-path", "orbit", "-o", "v.gif", "--crf", "10"}, "gif"},
     {"FramesNotADirectory", {"--camera-path", "orbit", "--frames", "/dev/null"}, "directory"},
 };
 

@@ -247,6 +247,10 @@ VideoEncoder::VideoEncoder(const std::filesystem::path& output, VideoSettings se
     if (container_name == "mp4" || container_name == "mov") {
         av_dict_set(&options, "movflags", "+faststart", 0);
     }
+    // Animations loop forever, as on a web page (FFmpeg's WebP muxer plays once by default).
+    if (container_name == "webp" || container_name == "gif" || container_name == "apng") {
+        av_dict_set(&options, container_name == "apng" ? "plays" : "loop", "0", 0);
+    }
     const int header = avformat_write_header(state.format, &options);
     av_dict_free(&options);
     check_av(header, "writing the video header");
