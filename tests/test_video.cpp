@@ -32,8 +32,8 @@ namespace fgr {
 namespace {
 namespace fs = std::filesystem;
 
-using test::RunResult;
 using test::run_fgr;
+using test::RunResult;
 
 constexpr int kWidth = 64;
 constexpr int kHeight = 48;
@@ -94,7 +94,8 @@ TEST(VideoTiming, RefusesFpsDurationAndStartOffThePath) {
 // --- The encoder's file -------------------------------------------------------------------------
 
 Image8 grey_image(int width, int height, uint8_t level) {
-    return Image8{width, height, std::vector<uint8_t>(static_cast<size_t>(width) * height * 3, level)};
+    return Image8{width, height,
+                  std::vector<uint8_t>(static_cast<size_t>(width) * height * 3, level)};
 }
 
 TEST(VideoEncoder, LeavesNoFileUnlessFinished) {
@@ -103,11 +104,12 @@ TEST(VideoEncoder, LeavesNoFileUnlessFinished) {
     {
         VideoEncoder encoder(output, VideoSettings{"", kWidth, kHeight, 10.0, {}});
         encoder.add_frame(grey_image(kWidth, kHeight, 128));
-        EXPECT_EQ(directory_listing(dir.path()).size(), 1u) << "the temporary exists while encoding";
+        EXPECT_EQ(directory_listing(dir.path()).size(), 1u)
+            << "the temporary exists while encoding";
         EXPECT_FALSE(fs::exists(output)) << "the output appears only at finish()";
     }
-    EXPECT_TRUE(directory_listing(dir.path()).empty()) << "left behind: "
-                                                       << directory_listing(dir.path()).front();
+    EXPECT_TRUE(directory_listing(dir.path()).empty())
+        << "left behind: " << directory_listing(dir.path()).front();
 }
 
 TEST(VideoEncoder, DefaultsToH264ForMp4AndRefusesOddSizesForYuv420) {
@@ -164,8 +166,9 @@ DecodedVideo decode_video(const fs::path& file) {
     AVFrame* frame = av_frame_alloc();
     const auto take_frames = [&] {
         while (avcodec_receive_frame(context.get(), frame) >= 0) {
-            Image8 image{frame->width, frame->height,
-                         std::vector<uint8_t>(static_cast<size_t>(frame->width) * frame->height * 3)};
+            Image8 image{
+                frame->width, frame->height,
+                std::vector<uint8_t>(static_cast<size_t>(frame->width) * frame->height * 3)};
             SwsContext* scaler = sws_getContext(
                 frame->width, frame->height, static_cast<AVPixelFormat>(frame->format),
                 frame->width, frame->height, AV_PIX_FMT_RGB24,
@@ -207,16 +210,16 @@ Image8 through_yuv420(const Image8& image) {
     yuv->width = image.width;
     yuv->height = image.height;
     av_frame_get_buffer(yuv, 0);
-    SwsContext* to_yuv = sws_getContext(image.width, image.height, AV_PIX_FMT_RGB24, image.width,
-                                        image.height, AV_PIX_FMT_YUV420P, flags, nullptr, nullptr,
-                                        nullptr);
+    SwsContext* to_yuv =
+        sws_getContext(image.width, image.height, AV_PIX_FMT_RGB24, image.width, image.height,
+                       AV_PIX_FMT_YUV420P, flags, nullptr, nullptr, nullptr);
     sws_setColorspaceDetails(to_yuv, bt709, 1, bt709, 0, 0, 1 << 16, 1 << 16);
     const uint8_t* source[1] = {image.rgb.data()};
     const int stride[1] = {3 * image.width};
     sws_scale(to_yuv, source, stride, 0, image.height, yuv->data, yuv->linesize);
-    SwsContext* to_rgb = sws_getContext(image.width, image.height, AV_PIX_FMT_YUV420P, image.width,
-                                        image.height, AV_PIX_FMT_RGB24, flags, nullptr, nullptr,
-                                        nullptr);
+    SwsContext* to_rgb =
+        sws_getContext(image.width, image.height, AV_PIX_FMT_YUV420P, image.width, image.height,
+                       AV_PIX_FMT_RGB24, flags, nullptr, nullptr, nullptr);
     sws_setColorspaceDetails(to_rgb, bt709, 0, bt709, 1, 0, 1 << 16, 1 << 16);
     Image8 back{image.width, image.height, std::vector<uint8_t>(image.rgb.size())};
     uint8_t* destination[1] = {back.rgb.data()};
@@ -260,9 +263,17 @@ protected:
     // `fgr render --camera-path orbit --time t` with `extra` options, read back.
     Image8 single_render(float time, const std::vector<std::string>& extra) {
         const fs::path still = dir_.path() / "still.png";
-        std::vector<std::string> args{"render", "mandelbulb", "--camera-path", "orbit", "--time",
-                                      fmt::format("{:.9g}", time), "-o", still.string(),
-                                      "--width", std::to_string(kWidth), "--height",
+        std::vector<std::string> args{"render",
+                                      "mandelbulb",
+                                      "--camera-path",
+                                      "orbit",
+                                      "--time",
+                                      fmt::format("{:.9g}", time),
+                                      "-o",
+                                      still.string(),
+                                      "--width",
+                                      std::to_string(kWidth),
+                                      "--height",
                                       std::to_string(kHeight)};
         args.insert(args.end(), extra.begin(), extra.end());
         const RunResult result = run(args);
@@ -273,8 +284,9 @@ protected:
     }
 
     std::vector<std::string> video_args(const std::vector<std::string>& extra) const {
-        std::vector<std::string> args{"video", "mandelbulb", "--camera-path", "orbit", "--width",
-                                      std::to_string(kWidth), "--height", std::to_string(kHeight)};
+        std::vector<std::string> args{
+            "video",   "mandelbulb",           "--camera-path", "orbit",
+            "--width", std::to_string(kWidth), "--height",      std::to_string(kHeight)};
         args.insert(args.end(), extra.begin(), extra.end());
         return args;
     }
@@ -291,8 +303,8 @@ private:
 // 44-46 dB at CRF 10); the test is about the frames being the right ones, through a lossy codec.
 TEST_F(VideoCommandTest, Mp4FramesMatchSingleRendersAndTheContainerHasTheirCountAndDuration) {
     const fs::path video = dir() / "orbit.mp4";
-    const RunResult result =
-        run(video_args({"-o", video.string(), "--fps", "4", "--duration", "1", "--spp", "2", "--crf", "10"}));
+    const RunResult result = run(video_args(
+        {"-o", video.string(), "--fps", "4", "--duration", "1", "--spp", "2", "--crf", "10"}));
     ASSERT_EQ(result.exit_code, 0) << result;
     EXPECT_NE(result.err.find("frame 4/4"), std::string::npos) << "no progress line: " << result;
     EXPECT_EQ(directory_listing(dir()), std::vector<std::string>{"orbit.mp4"});
@@ -317,8 +329,8 @@ TEST_F(VideoCommandTest, Mp4FramesMatchSingleRendersAndTheContainerHasTheirCount
 TEST_F(VideoCommandTest, PngFramesEqualSingleRendersExactly) {
     const fs::path frames = dir() / "frames";
     const std::vector<std::string> settings{"--spp", "3", "--set", "power=7"};
-    std::vector<std::string> args = video_args({"--frames", frames.string(), "--fps", "2",
-                                                "--start", "1", "--duration", "1.5"});
+    std::vector<std::string> args = video_args(
+        {"--frames", frames.string(), "--fps", "2", "--start", "1", "--duration", "1.5"});
     args.insert(args.end(), settings.begin(), settings.end());
     const RunResult result = run(args);
     ASSERT_EQ(result.exit_code, 0) << result;
@@ -368,7 +380,8 @@ const BadVideo kBadVideos[] = {
     {"UnknownCameraPath", {"--camera-path", "nosuchpath", "-o", "v.mp4"}, "nosuchpath"},
     {"ZeroFps", {"--camera-path", "orbit", "-o", "v.mp4", "--fps", "0"}, "fps"},
     {"NegativeFps", {"--camera-path", "orbit", "-o", "v.mp4", "--fps", "-24"}, "fps"},
-    {"DurationPastThePath", {"--camera-path", "orbit", "-o", "v.mp4", "--duration", "11"},
+    {"DurationPastThePath",
+     {"--camera-path", "orbit", "-o", "v.mp4", "--duration", "11"},
      "duration"},
     {"NoOutput", {"--camera-path", "orbit"}, "-o"},
     {"NoCameraPath", {"-o", "v.mp4"}, "camera-path"},
@@ -392,7 +405,8 @@ TEST_P(VideoBadInput, FailsWithOneErrorLineAndWritesNothing) {
     EXPECT_EQ(err.find('\n'), std::string::npos) << "more than one line: " << result;
     EXPECT_NE(err.find(GetParam().mention), std::string::npos)
         << "should mention '" << GetParam().mention << "': " << result;
-    EXPECT_TRUE(directory_listing(dir()).empty()) << "left behind: " << directory_listing(dir()).front();
+    EXPECT_TRUE(directory_listing(dir()).empty())
+        << "left behind: " << directory_listing(dir()).front();
 }
 
 INSTANTIATE_TEST_SUITE_P(Video, VideoBadInput, ::testing::ValuesIn(kBadVideos),

@@ -65,13 +65,15 @@ void check_video_options(const VideoOptions& options) {
     if (options.frame.bit_depth != 8 && (exr_frames || options.frames_directory.empty())) {
         throw UsageError("--bit-depth is for PNG frames (--frames DIR); a video is 8-bit");
     }
-    if (!(options.fps > 0.0)) throw UsageError(fmt::format("--fps must be positive (got {})", options.fps));
+    if (!(options.fps > 0.0)) {
+        throw UsageError(fmt::format("--fps must be positive (got {})", options.fps));
+    }
     if (!options.output.empty()) {
         check_writable_directory_of(options.output);
         try {
-            check_video_settings(options.output, VideoSettings{options.codec, options.frame.width,
-                                                               options.frame.height, options.fps,
-                                                               options.crf});
+            check_video_settings(options.output,
+                                 VideoSettings{options.codec, options.frame.width,
+                                               options.frame.height, options.fps, options.crf});
         } catch (const std::invalid_argument& error) {
             throw UsageError(error.what());
         }
@@ -86,7 +88,7 @@ void check_video_options(const VideoOptions& options) {
         }
         // An existing directory is written into, a new one created (in a writable directory).
         check_writable_directory_of(std::filesystem::is_directory(directory) ? directory / "frame"
-                                                                              : directory);
+                                                                             : directory);
     }
 }
 
@@ -115,15 +117,17 @@ void add_video_command(CLI::App& app, VideoOptions& options) {
     CLI::App* video = app.add_subcommand(
         "video", "render a camera path into a video file (.mp4 ...) and/or a PNG/EXR sequence");
     video->add_option("scene", options.frame.scene, "scene id (see `fgr list`)")->required();
-    video->add_option("--camera-path", options.frame.camera_path,
-                      "camera path of the scene, or a .json file saved by `fgr view`")
+    video
+        ->add_option("--camera-path", options.frame.camera_path,
+                     "camera path of the scene, or a .json file saved by `fgr view`")
         ->required();
     video->add_option("-o,--output", options.output,
                       "video file: .mp4/.mkv/.mov (H.264), .webm (VP9), .gif, .webp, .apng");
     video->add_option("--frames", options.frames_directory,
                       "also (or instead) write each frame as DIR/frame_00000.png ...");
-    video->add_option("--frames-format", options.frames_format,
-                      "png (tone-mapped, as `fgr render -o x.png`) or exr (linear, with --aov)")
+    video
+        ->add_option("--frames-format", options.frames_format,
+                     "png (tone-mapped, as `fgr render -o x.png`) or exr (linear, with --aov)")
         ->check(CLI::IsMember({"png", "exr"}));
     video->add_option("--fps", options.fps, "frames per second (default 30)");
     video->add_option("--start", options.start,
@@ -142,9 +146,9 @@ int command_video(const VideoOptions& options) {
     check_video_options(options);
     const RenderOptions& frame_options = options.frame;
     const Discovery found = discover();
-    const Scene scene = with_kernel_source(
-        scene_as_used(find_scene(found, frame_options.scene), frame_options.dev),
-        frame_options.kernel_source);
+    const Scene scene =
+        with_kernel_source(scene_as_used(find_scene(found, frame_options.scene), frame_options.dev),
+                           frame_options.kernel_source);
     const CameraPath path = find_camera_path(scene, *frame_options.camera_path);
     VideoTiming timing;
     try {
@@ -157,15 +161,14 @@ int command_video(const VideoOptions& options) {
     const ComputeDevice device = open_requested_device(frame_options.device);
     ProgramCache cache(ProgramCache::default_directory());
     VideoFrameRenderer renderer(scene, device, cache, job.settings);
-    const bool in_double =
-        renderer.choose_precision(views, job.request.width, job.request.params);
+    const bool in_double = renderer.choose_precision(views, job.request.width, job.request.params);
 
     InterruptGuard interrupt_guard;
     std::optional<VideoEncoder> encoder;
     if (!options.output.empty()) {
-        encoder.emplace(options.output, VideoSettings{options.codec, job.request.width,
-                                                      job.request.height, options.fps,
-                                                      options.crf});
+        encoder.emplace(options.output,
+                        VideoSettings{options.codec, job.request.width, job.request.height,
+                                      options.fps, options.crf});
     }
     if (!options.frames_directory.empty()) {
         std::error_code error;
@@ -175,8 +178,8 @@ int command_video(const VideoOptions& options) {
                                              options.frames_directory, error.message()));
         }
     }
-    spdlog::info("{} frames at {:g} fps: path time {:g} to {:g} s, {}{}", views.size(),
-                 timing.fps, timing.start, timing.frame_time(timing.frame_count() - 1),
+    spdlog::info("{} frames at {:g} fps: path time {:g} to {:g} s, {}{}", views.size(), timing.fps,
+                 timing.start, timing.frame_time(timing.frame_count() - 1),
                  in_double ? "double" : "float",
                  encoder ? ", encoding " + encoder->description() : "");
     const float exposure = param_value(scene, job.request.params, "exposure");

@@ -19,9 +19,10 @@ public:
 
     // Float or double for every frame: as settings.precision says, and for Auto, double when the
     // auto rule (PrecisionChooser, as render_still applies it to one view) wants double for any
-    // of `views` at `width` pixels (the DE at each camera with `params`): a video never switches precision mid-way (no visible jump in
-    // detail) and no frame is rendered coarser than its still would be. Builds the chosen kernel
-    // (and, for Auto, the float kernel the rule reads the DE from). Returns true for double.
+    // of `views` at `width` pixels (the DE at each camera with `params`): a video never switches
+    // precision mid-way (no visible jump in detail) and no frame is rendered coarser than its still
+    // would be. Builds the chosen kernel (and, for Auto, the float kernel the rule reads the DE
+    // from). Returns true for double.
     bool choose_precision(const std::vector<CameraView>& views, int width,
                           const std::vector<float>& params);
 

@@ -27,8 +27,8 @@ void log_to_spdlog(void* context, int level, const char* format, va_list argumen
     if (level > av_log_get_level()) return;
     std::array<char, 1024> line{};
     int print_prefix = 1;
-    av_log_format_line2(context, level, format, arguments, line.data(), static_cast<int>(line.size()),
-                        &print_prefix);
+    av_log_format_line2(context, level, format, arguments, line.data(),
+                        static_cast<int>(line.size()), &print_prefix);
     std::string text = line.data();
     while (!text.empty() && (text.back() == '\n' || text.back() == '\r')) text.pop_back();
     if (!text.empty()) spdlog::debug("ffmpeg: {}", text);
@@ -55,9 +55,9 @@ void check_av(int code, const std::string& what) {
 const AVOutputFormat* container_for(const std::filesystem::path& output) {
     const AVOutputFormat* format = av_guess_format(nullptr, output.string().c_str(), nullptr);
     if (!format) {
-        throw std::invalid_argument(fmt::format(
-            "no video container for '{}' (use .mp4, .mkv, .webm, .gif, .webp or .apng)",
-            output.filename().string()));
+        throw std::invalid_argument(
+            fmt::format("no video container for '{}' (use .mp4, .mkv, .webm, .gif, .webp or .apng)",
+                        output.filename().string()));
     }
     return format;
 }
@@ -140,12 +140,14 @@ void check_video_settings(const std::filesystem::path& output, const VideoSettin
                                                 container->name, container->long_name));
     }
     check_size(codec, pixel_format_for(codec), settings.width, settings.height);
-    const bool has_crf = name == "libx264" || name == "libx265" || name == "libvpx-vp9" ||
-                         name == "libaom-av1";
+    const bool has_crf =
+        name == "libx264" || name == "libx265" || name == "libvpx-vp9" || name == "libaom-av1";
     const int most = name == "libx264" || name == "libx265" ? 51 : 63;
     if (settings.crf && !has_crf) {
-        throw std::invalid_argument(fmt::format("--crf is for libx264, libx265, libvpx-vp9 and "
-                                                "libaom-av1, not {}", name));
+        throw std::invalid_argument(
+            fmt::format("--crf is for libx264, libx265, libvpx-vp9 and "
+                        "libaom-av1, not {}",
+                        name));
     }
     if (settings.crf && (*settings.crf < 0 || *settings.crf > most)) {
         throw std::invalid_argument(
@@ -231,10 +233,9 @@ VideoEncoder::VideoEncoder(const std::filesystem::path& output, VideoSettings se
     state.frame->width = settings.width;
     state.frame->height = settings.height;
     check_av(av_frame_get_buffer(state.frame, 0), "allocating a video frame");
-    state.scaler = sws_getContext(settings.width, settings.height, AV_PIX_FMT_RGB24,
-                                  settings.width, settings.height, pixels,
-                                  SWS_BICUBIC | SWS_ACCURATE_RND | SWS_FULL_CHR_H_INT, nullptr,
-                                  nullptr, nullptr);
+    state.scaler = sws_getContext(
+        settings.width, settings.height, AV_PIX_FMT_RGB24, settings.width, settings.height, pixels,
+        SWS_BICUBIC | SWS_ACCURATE_RND | SWS_FULL_CHR_H_INT, nullptr, nullptr, nullptr);
     if (!state.scaler) throw std::runtime_error("cannot convert RGB to the codec's pixel format");
     const int* bt709 = sws_getCoefficients(SWS_CS_ITU709);
     sws_setColorspaceDetails(state.scaler, bt709, 1, bt709, 0, 0, 1 << 16, 1 << 16);

@@ -37,17 +37,16 @@ bool VideoFrameRenderer::choose_precision(const std::vector<CameraView>& views, 
                              [](const std::string& warning) { spdlog::warn("{}", warning); });
     in_double_ = false;
     for (const CameraView& view : views) {
-        const auto distance = [&] {
-            return surface_distance(build(false), view, params);
-        };
+        const auto distance = [&] { return surface_distance(build(false), view, params); };
         if (chooser.in_double(settings_.precision, view, width, distance)) {
             in_double_ = true;
             break;
         }
     }
     if (in_double_ && settings_.precision == Precision::Auto) {
-        spdlog::info("a pixel of some frame is finer than float resolves: the whole video renders "
-                     "in double");
+        spdlog::info(
+            "a pixel of some frame is finer than float resolves: the whole video renders "
+            "in double");
     }
     build(in_double_);
     return in_double_;

@@ -31,8 +31,8 @@ VideoTiming video_timing(const CameraPath& path, double fps, std::optional<doubl
     }
     timing.duration = duration.value_or(last - timing.start);
     if (!(timing.duration > 0.0) || !std::isfinite(timing.duration)) {
-        throw std::invalid_argument(
-            fmt::format("--duration must be a positive number of seconds (got {})", timing.duration));
+        throw std::invalid_argument(fmt::format(
+            "--duration must be a positive number of seconds (got {})", timing.duration));
     }
     // The last frame's time must lie on the path, as `fgr render --time` would take it.
     const float last_frame = timing.frame_time(timing.frame_count() - 1);
