@@ -47,6 +47,8 @@ int run_cli(int argc, char** argv) {
                    "precision and packet width");
     RenderOptions render_options;
     add_render_command(app, render_options);
+    VideoOptions video_options;
+    add_video_command(app, video_options);
     ViewCommandOptions view_options;
     add_view_command(app, view_options);
     CheckOptions check_options;
@@ -62,16 +64,17 @@ int run_cli(int argc, char** argv) {
     if (argc < 2) {
         std::fputs(app.help().c_str(), stdout);
         return report_error(
-            "no command given (commands: list, info, render, view, check, new-scene, bench, "
-            "cache, environment)",
+            "no command given (commands: list, info, render, video, view, check, new-scene, "
+            "bench, cache, environment)",
             kExitUsage);
     }
     if (const std::string first = argv[1]; !first.empty() && first.front() != '-' &&
-        first != "list" && first != "info" && first != "render" && first != "view" &&
+        first != "list" && first != "info" && first != "render" && first != "video" &&
+        first != "view" &&
         first != "check" && first != "new-scene" && first != "bench" && first != "cache" &&
         first != "environment") {
         return report_error(fmt::format("unknown command '{}' (commands: list, info, render, "
-                                        "view, check, new-scene, bench, cache, environment)",
+                                        "video, view, check, new-scene, bench, cache, environment)",
                                         first),
                             kExitUsage);
     }
@@ -87,6 +90,7 @@ int run_cli(int argc, char** argv) {
         const std::string command = app.get_subcommands().front()->get_name();
         if (command == "list") return command_list(list_scene);
         if (command == "info") return command_info(math_check);
+        if (command == "video") return command_video(video_options);
         if (command == "view") return command_view(view_options);
         if (command == "check") return command_check(check_options);
         if (command == "new-scene") return command_new_scene(new_scene_options);

@@ -1,7 +1,7 @@
 #pragma once
-// The `fgr` command line: list, info, render, view, new-scene, bench, cache. Returns the process
-// exit code: 0 on success, 2 for bad command-line input, 1 for failures while running. Errors are
-// one line on stderr starting with "fgr: error: ".
+// The `fgr` command line: list, info, render, video, view, new-scene, bench, cache. Returns the
+// process exit code: 0 on success, 2 for bad command-line input, 1 for failures while running.
+// Errors are one line on stderr starting with "fgr: error: ".
 
 namespace fgr {
 

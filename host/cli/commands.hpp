@@ -1,6 +1,7 @@
 #pragma once
-// The `fgr` executable's commands, one file each (list.cpp, info.cpp, render.cpp, view.cpp,
-// check.cpp, bench.cpp, bench_accuracy.cpp, new_scene.cpp, cache.cpp), and what they share (common.cpp).
+// The `fgr` executable's commands, one file each (list.cpp, info.cpp, render.cpp, video.cpp,
+// view.cpp, check.cpp, bench.cpp, bench_accuracy.cpp, new_scene.cpp, cache.cpp), and what they
+// share (common.cpp).
 // run_cli (cli.cpp) registers each command's options with CLI11 and runs the one given. A command
 // returns the exit code, throws UsageError for bad input (exit 2) and anything else for failures
 // while running (exit 1).
@@ -22,6 +23,7 @@
 #include "fgr/precision.hpp"
 #include "fgr/render_mode.hpp"
 #include "fgr/scene.hpp"
+#include "fgr/still_image.hpp"
 #include "fgr/view_override.hpp"
 #include "fgr/viewer/viewer.hpp"
 
@@ -136,6 +138,45 @@ struct RenderOptions {
 
 void add_render_command(CLI::App& app, RenderOptions& options);
 int command_render(const RenderOptions& options);
+
+// What `fgr render` and `fgr video` share, so a video frame is the still of the same options:
+// the options that say how a frame is rendered (size, --set, --colour, --spp, --bit-depth, --aov,
+// --mode and the path tracer's, --effects, --precision, --kernel-source, --dev, --device);
+// (--width and --height up to max_side: a still renders in tiles past kMaxImageSide)
+void add_frame_options(CLI::App* command, RenderOptions& options, int max_side = kMaxImageSide);
+// their checks that need no scene (UsageError);
+void check_frame_options(const RenderOptions& options);
+// the request with the scene's defaults, --set and --colour applied (the scene's default view);
+FrameRequest scene_request(const Scene& scene, const RenderOptions& options);
+// and the settings, samples and path settings render_still gets for `request`.
+struct StillJob {
+    StillSettings settings;
+    FrameRequest request;
+    Aovs aovs;
+};
+StillJob still_job(const Scene& scene, const FrameRequest& request, const RenderOptions& options);
+// A camera path given by name (one of the scene's) or as a JSON file the viewer saved
+// (UsageError when there is no such path or the file cannot be read).
+CameraPath find_camera_path(const Scene& scene, const std::string& argument);
+
+// --- fgr video -----------------------------------------------------------------------------------
+
+struct VideoOptions {
+    // Scene, --camera-path and how each frame renders, as `fgr render` takes them (output, time,
+    // camera and view overrides unused).
+    RenderOptions frame;
+    std::string output;            // .mp4, .mkv, .webm, .gif, .webp, .apng; "" with --frames alone
+    std::string frames_directory;  // frame_00000.png ...; "" for none
+    std::string frames_format = "png";  // png or exr
+    double fps = 30.0;
+    std::optional<double> start;     // path time of the first frame (default: first keyframe)
+    std::optional<double> duration;  // seconds of path time (default: to the last keyframe)
+    std::string codec;               // FFmpeg encoder name; "": the container's default
+    std::optional<int> crf;          // constant quality (x264, x265, VP9, AV1); default: the codec's
+};
+
+void add_video_command(CLI::App& app, VideoOptions& options);
+int command_video(const VideoOptions& options);
 
 // --- fgr view ------------------------------------------------------------------------------------
 

@@ -22,9 +22,7 @@
 #include "tiled_render.hpp"
 
 namespace fgr {
-namespace {
 
-// A camera path given by name (one of the scene's) or as a JSON file the viewer saved.
 CameraPath find_camera_path(const Scene& scene, const std::string& argument) {
     if (looks_like_camera_path_file(argument)) {
         CameraPathFile file;
@@ -46,6 +44,8 @@ CameraPath find_camera_path(const Scene& scene, const std::string& argument) {
     }
     return *path;
 }
+
+namespace {
 
 CameraView choose_view(const Scene& scene, const RenderOptions& options) {
     if (options.camera_path) {
@@ -91,12 +91,12 @@ void check_output_path(const std::filesystem::path& output) {
 
 // Checks that do not need a scene: option combinations and the output location.
 void check_render_options(const RenderOptions& options) {
-    try {
-        apply_effect_changes(0, options.effect_changes);
-    } catch (const std::invalid_argument& error) {
-        throw UsageError(error.what());
-    }
     if (options.all) {
+        try {
+            apply_effect_changes(0, options.effect_changes);
+        } catch (const std::invalid_argument& error) {
+            throw UsageError(error.what());
+        }
         if (!options.scene.empty()) throw UsageError("give a SCENE or --all, not both");
         if (options.dev) throw UsageError("--dev is for one scene: give a SCENE, not --all");
         if (!options.assignments.empty() || options.colour || options.camera ||
@@ -108,9 +108,7 @@ void check_render_options(const RenderOptions& options) {
         return;
     }
     if (options.scene.empty()) throw UsageError("render needs a SCENE (see `fgr list`) or --all");
-    if (options.dev && !options.kernel_source.empty()) {
-        throw UsageError("--dev reads the scene's own .cl file, --kernel-source another: give one");
-    }
+    check_frame_options(options);
     if (options.time && !options.camera_path) throw UsageError("--time needs --camera-path");
     if (options.camera_path && !options.time) throw UsageError("--camera-path needs --time");
     if (options.camera_path && !options.view_override.empty()) {
@@ -123,16 +121,49 @@ void check_render_options(const RenderOptions& options) {
     if (!options.aovs.empty() && !exr) throw UsageError("--aov needs an .exr output");
     if (exr && options.bit_depth != 8) throw UsageError("--bit-depth is for PNG and TIFF output");
     if (tiled_render_wanted(options)) check_tiled_options(options);
-    try {
-        parse_aovs(options.aovs);
-    } catch (const std::invalid_argument& error) {
-        throw UsageError(error.what());
-    }
+}
+
+FrameRequest default_request(const Scene& scene, const RenderOptions& options) {
+    FrameRequest request;
+    request.width = options.width;
+    request.height = options.height;
+    request.view = scene.cameras.front().view;
+    request.params = default_param_values(scene);
+    request.samples = options.samples.value_or(1);
+    return request;
 }
 
 }  // namespace
 
-StillSettings still_settings(const Scene& scene, const RenderOptions& options) {
+void check_frame_options(const RenderOptions& options) {
+    try {
+        apply_effect_changes(0, options.effect_changes);
+        parse_aovs(options.aovs);
+    } catch (const std::invalid_argument& error) {
+        throw UsageError(error.what());
+    }
+    if (options.dev && !options.kernel_source.empty()) {
+        throw UsageError("--dev reads the scene's own .cl file, --kernel-source another: give one");
+    }
+}
+
+FrameRequest scene_request(const Scene& scene, const RenderOptions& options) {
+    FrameRequest request = default_request(scene, options);
+    for (const auto& assignment : options.assignments) {
+        set_param_from_text(scene, request.params, assignment);
+    }
+    if (options.colour) {
+        if (scene.find_param("colour_mode") == nullptr) {
+            throw UsageError(fmt::format(
+                "scene '{}' has no colour modes (no colour_mode parameter; see `fgr list`)",
+                scene.id));
+        }
+        set_param_from_text(scene, request.params, "colour_mode=" + *options.colour);
+    }
+    return request;
+}
+
+StillJob still_job(const Scene& scene, const FrameRequest& request, const RenderOptions& options) {
     StillSettings settings;
     settings.packet_width = options.packet_width;
     settings.effects = apply_effect_changes(scene.effects, options.effect_changes);
@@ -150,11 +181,6 @@ StillSettings still_settings(const Scene& scene, const RenderOptions& options) {
                          effect_names(ignored));
         }
     }
-    return settings;
-}
-
-FrameRequest request_for_mode(const Scene& scene, const FrameRequest& request,
-                              const RenderOptions& options, const StillSettings& settings) {
     FrameRequest reported = request;
     if (!options.samples && settings.mode == RenderMode::Path) reported.samples = kPathSamples;
     if (!options.samples && settings.mode == RenderMode::Brute) reported.samples = kBrutePasses;
@@ -165,7 +191,7 @@ FrameRequest request_for_mode(const Scene& scene, const FrameRequest& request,
                          "energy (the image is biased)", reported.path.radiance_clamp);
         }
     }
-    return reported;
+    return StillJob{settings, reported, aovs};
 }
 
 namespace {
@@ -175,9 +201,10 @@ namespace {
 void render_to_file(const Scene& scene, const FrameRequest& request, const ComputeDevice& device,
                     ProgramCache& cache, const RenderOptions& options,
                     const std::filesystem::path& output) {
-    const StillSettings settings = still_settings(scene, options);
-    const Aovs aovs = parse_aovs(options.aovs);
-    FrameRequest reported = request_for_mode(scene, request, options, settings);
+    StillJob job = still_job(scene, request, options);
+    const StillSettings& settings = job.settings;
+    const Aovs& aovs = job.aovs;
+    FrameRequest& reported = job.request;
     if (options.time_limit) {
         const auto until = std::chrono::steady_clock::now() +
                            std::chrono::duration_cast<std::chrono::steady_clock::duration>(
@@ -245,16 +272,6 @@ void render_to_file(const Scene& scene, const FrameRequest& request, const Compu
     fmt::print("wrote {} ({}x{})\n", output.string(), frame.image.width, frame.image.height);
 }
 
-FrameRequest default_request(const Scene& scene, const RenderOptions& options) {
-    FrameRequest request;
-    request.width = options.width;
-    request.height = options.height;
-    request.view = scene.cameras.front().view;
-    request.params = default_param_values(scene);
-    request.samples = options.samples.value_or(1);
-    return request;
-}
-
 int render_all(const RenderOptions& options) {
     const std::filesystem::path directory = options.output;
     std::error_code error;
@@ -277,6 +294,41 @@ int render_all(const RenderOptions& options) {
 
 }  // namespace
 
+void add_frame_options(CLI::App* command, RenderOptions& options, int max_side) {
+    const std::string tiled =
+        max_side > kMaxImageSide ? " (over 16384 a side or 16 Mpx in all: rendered in tiles)" : "";
+    command->add_option("--width", options.width, "image width in pixels" + tiled)
+        ->check(CLI::Range(1, max_side));
+    command->add_option("--height", options.height, "image height in pixels")
+        ->check(CLI::Range(1, max_side));
+    command->add_option("--set", options.assignments, "set a parameter: id=value (repeatable)")
+        ->allow_extra_args(false);
+    command->add_option("--colour", options.colour,
+                        "colour mode: point, planes, axes or iterations, those the scene offers "
+                        "(see `fgr list`); the same as --set colour_mode=MODE");
+    command->add_option("--spp", options.samples,
+                        "samples per pixel, jittered and averaged: anti-aliasing, depth of field, "
+                        "and the path tracer's estimate (default 1; 64 with --mode path); with "
+                        "--mode brute, passes of sampling along each ray (default 16)")
+        ->check(CLI::Range(1, kMaxSamples));
+    command->add_option("--bit-depth", options.bit_depth,
+                        "8: tone-mapped sRGB PNG (default); 16: linear 16-bit PNG (exposure only)")
+        ->check(CLI::IsMember({8, 16}));
+    command->add_option("--aov", options.aovs,
+                        "EXR layers beside the linear image: albedo,normal,depth,alpha "
+                        "(albedo and normal need --mode path or brute)");
+    add_mode_options(command, options.mode);
+    command->add_option("--effects", options.effect_changes,
+                        "change the scene's effects, e.g. +shadows,-ambient_occlusion");
+    add_precision_option(command, options.precision,
+                         "when a pixel is finer than float resolves (deep zooms)");
+    add_kernel_source_option(command, options.kernel_source);
+    command->add_flag("--dev", options.dev,
+                      "read the scene's .cl file from disk instead of the copy its plugin embeds "
+                      "(as `fgr view --dev`): try an edit without rebuilding the plugin");
+    add_device_options(command, options.device, options.packet_width);
+}
+
 void add_render_command(CLI::App& app, RenderOptions& options) {
     CLI::App* render = app.add_subcommand(
         "render",
@@ -286,55 +338,25 @@ void add_render_command(CLI::App& app, RenderOptions& options) {
     render->add_option("-o,--output", options.output,
                        "output .png or .tif (tone-mapped) or .exr (linear) file; a directory with --all")
         ->required();
-    render->add_option("--width", options.width,
-                       "image width in pixels (over 16384, or over 16 Mpx in all, renders in tiles)")
-        ->check(CLI::Range(1, kMaxTiledImageSide));
-    render->add_option("--height", options.height, "image height in pixels")
-        ->check(CLI::Range(1, kMaxTiledImageSide));
     render->add_option("--tile-size", options.tile_size,
                        "render in tiles of about this many pixels a side, streaming the file a "
-                       "band of rows at a time (default for large images: 512)")
+                       "band of rows at a time (default for images over 16 Mpx: 512)")
         ->check(CLI::Range(16, 8192));
     render->add_flag("--resume", options.resume,
                      "continue an interrupted tiled render from the tiles it finished (kept in "
                      "OUTPUT.fgr-tiles)");
-    render->add_option("--set", options.assignments, "set a parameter: id=value (repeatable)")
-        ->allow_extra_args(false);
-    render->add_option("--colour", options.colour,
-                       "colour mode: point, planes, axes or iterations, those the scene offers "
-                       "(see `fgr list`); the same as --set colour_mode=MODE");
     auto* camera = render->add_option("--camera", options.camera, "named camera of the scene");
     auto* path = render->add_option("--camera-path", options.camera_path,
                                     "camera path of the scene, or a .json file saved by `fgr view`");
     path->excludes(camera);
     render->add_option("--time", options.time, "time along the camera path, in seconds");
     add_view_override_options(render, options.view_override);
-    render->add_option("--spp", options.samples,
-                       "samples per pixel, jittered and averaged: anti-aliasing, depth of field, "
-                       "and the path tracer's estimate (default 1; 64 with --mode path); with "
-                       "--mode brute, passes of sampling along each ray (default 16)")
-        ->check(CLI::Range(1, kMaxSamples));
     render->add_option("--time-limit", options.time_limit,
                        "stop adding samples after this many seconds and write what is done")
         ->check(CLI::PositiveNumber);
-    render->add_option("--bit-depth", options.bit_depth,
-                       "8: tone-mapped sRGB PNG (default); 16: linear 16-bit PNG (exposure only)")
-        ->check(CLI::IsMember({8, 16}));
-    render->add_option("--aov", options.aovs,
-                       "EXR layers beside the linear image: albedo,normal,depth,alpha "
-                       "(albedo and normal need --mode path or brute)");
-    add_mode_options(render, options.mode);
-    render->add_option("--effects", options.effect_changes,
-                       "change the scene's effects, e.g. +shadows,-ambient_occlusion");
-    add_precision_option(render, options.precision,
-                         "when a pixel is finer than float resolves (deep zooms)");
     render->add_flag("--stats", options.stats,
                      "print steps per pixel, DE evaluations and rays that ran out of steps");
-    add_kernel_source_option(render, options.kernel_source);
-    render->add_flag("--dev", options.dev,
-                     "read the scene's .cl file from disk instead of the copy its plugin embeds "
-                     "(as `fgr view --dev`): try an edit without rebuilding the plugin");
-    add_device_options(render, options.device, options.packet_width);
+    add_frame_options(render, options, kMaxTiledImageSide);
 }
 
 int command_render(const RenderOptions& options) {
@@ -343,18 +365,7 @@ int command_render(const RenderOptions& options) {
     const Discovery found = discover();
     const Scene scene = with_kernel_source(scene_as_used(find_scene(found, options.scene), options.dev),
                                            options.kernel_source);
-    FrameRequest request = default_request(scene, options);
-    for (const auto& assignment : options.assignments) {
-        set_param_from_text(scene, request.params, assignment);
-    }
-    if (options.colour) {
-        if (scene.find_param("colour_mode") == nullptr) {
-            throw UsageError(fmt::format(
-                "scene '{}' has no colour modes (no colour_mode parameter; see `fgr list`)",
-                scene.id));
-        }
-        set_param_from_text(scene, request.params, "colour_mode=" + *options.colour);
-    }
+    FrameRequest request = scene_request(scene, options);
     request.view = choose_view(scene, options);
     const ComputeDevice device = open_requested_device(options.device);
     ProgramCache cache(ProgramCache::default_directory());

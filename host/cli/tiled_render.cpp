@@ -75,8 +75,9 @@ void check_tiled_options(const RenderOptions& options) {
 
 int render_tiled(const Scene& scene, const FrameRequest& request, const ComputeDevice& device,
                  ProgramCache& cache, const RenderOptions& options) {
-    const StillSettings settings = still_settings(scene, options);
-    const FrameRequest whole = request_for_mode(scene, request, options, settings);
+    const StillJob job = still_job(scene, request, options);
+    const StillSettings& settings = job.settings;
+    const FrameRequest& whole = job.request;
     PrecisionRenderers renderers(device, cache, scene, still_switches(device, settings));
     Renderer& renderer = choose_still_renderer(renderers, scene, whole, device, settings);
 
@@ -84,7 +85,7 @@ int render_tiled(const Scene& scene, const FrameRequest& request, const ComputeD
     output.path = options.output;
     output.format = image_format_of(output.path);
     output.bit_depth = options.bit_depth;
-    output.aovs = parse_aovs(options.aovs);
+    output.aovs = job.aovs;
     output.exposure = param_value(scene, whole.params, "exposure");
 
     InterruptCatcher catcher;

@@ -9,12 +9,6 @@
 
 namespace fgr {
 
-// The still settings (mode, effects, precision) `options` ask for in `scene` (render.cpp).
-StillSettings still_settings(const Scene& scene, const RenderOptions& options);
-// `request` with what the mode adds: its default samples, the path tracer's settings.
-FrameRequest request_for_mode(const Scene& scene, const FrameRequest& request,
-                              const RenderOptions& options, const StillSettings& settings);
-
 // Images over this many pixels render in tiles unless told otherwise; so do TIFF files, and any
 // render given --tile-size or --resume.
 constexpr long kTiledFromPixels = 4096L * 4096L;

@@ -62,13 +62,17 @@ Frame render_still(const Scene& scene, const FrameRequest& request, const Comput
                    ProgramCache& cache, const StillSettings& settings) {
     PrecisionRenderers renderers(device, cache, scene, still_switches(device, settings));
     Frame frame = choose_still_renderer(renderers, scene, request, device, settings).render(request);
+    check_finite_frame(scene, frame);
+    return frame;
+}
+
+void check_finite_frame(const Scene& scene, const Frame& frame) {
     // A pixel the kernel could not compute must not reach a file as if it were an image.
     if (const long broken = non_finite_pixels(frame); broken > 0) {
         throw std::runtime_error(fmt::format(
             "rendering '{}' gave non-finite colour or depth at {} of {} pixels", scene.id, broken,
             frame.depth.size()));
     }
-    return frame;
 }
 
 long non_finite_pixels(const Frame& frame) {

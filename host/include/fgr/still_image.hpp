@@ -62,6 +62,8 @@ Frame render_still(const Scene& scene, const FrameRequest& request, const Comput
 
 // Pixels of `frame` whose linear colour or depth is NaN or infinite.
 long non_finite_pixels(const Frame& frame);
+// Throws std::runtime_error naming `scene` when `frame` has non-finite pixels (render_still's check).
+void check_finite_frame(const Scene& scene, const Frame& frame);
 
 // Writes `frame` by the file's extension. PNG: bit_depth 8, the tone-mapped sRGB image; 16, its
 // linear colour times `exposure` in a linear 16-bit PNG. EXR: the linear colour as rendered
