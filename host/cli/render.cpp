@@ -94,6 +94,7 @@ void check_render_options(const RenderOptions& options) {
     } catch (const std::invalid_argument& error) {
         throw UsageError(error.what());
     }
+    chosen_projection(options.projection);  // bad values fail before anything is loaded
     if (options.all) {
         if (!options.scene.empty()) throw UsageError("give a SCENE or --all, not both");
         if (options.dev) throw UsageError("--dev is for one scene: give a SCENE, not --all");
@@ -233,6 +234,7 @@ FrameRequest default_request(const Scene& scene, const RenderOptions& options) {
     request.view = scene.cameras.front().view;
     request.params = default_param_values(scene);
     request.samples = options.samples.value_or(1);
+    request.projection = chosen_projection(options.projection);
     return request;
 }
 
@@ -281,6 +283,7 @@ void add_render_command(CLI::App& app, RenderOptions& options) {
     path->excludes(camera);
     render->add_option("--time", options.time, "time along the camera path, in seconds");
     add_view_override_options(render, options.view_override);
+    add_projection_options(render, options.projection);
     render->add_option("--spp", options.samples,
                        "samples per pixel, jittered and averaged: anti-aliasing, depth of field, "
                        "and the path tracer's estimate (default 1; 64 with --mode path); with "

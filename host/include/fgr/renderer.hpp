@@ -15,6 +15,7 @@
 #include "fgr/path_settings.hpp"
 #include "fgr/opencl_device.hpp"
 #include "fgr/program_cache.hpp"
+#include "fgr/projection.hpp"
 #include "fgr/scene.hpp"
 
 namespace fgr {
@@ -41,6 +42,8 @@ struct FrameRequest {
     // Polled after each finished sample, when set: returning true ends the render there with the
     // samples done so far (Frame::samples), e.g. at a time budget.
     std::function<bool()> enough{};
+    // How pixels map to rays: pinhole, panoramas, stereo pairs (fgr/projection.hpp).
+    Projection projection{};
 };
 
 // The primary rays' work, from sample 0 of a render built with KernelSwitches::stats.
