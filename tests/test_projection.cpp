@@ -41,7 +41,7 @@ Scene balls_scene(const std::vector<Ball>& balls) {
     std::string de = "real scene_de(vec3 p, PARAMS) {\n    (void)fgr_params;\n    real d = 1e30f;\n";
     for (const Ball& ball : balls) {
         de += fmt::format(
-            "    d = fmin(d, v3_length(v3_sub(p, v3_splat({:.9g}f, {:.9g}f, {:.9g}f))) - {:.9g}f);\n",
+            "    d = fmin(d, v3_length(v3_sub(p, v3_splat({:.9e}f, {:.9e}f, {:.9e}f))) - {:.9e}f);\n",
             ball.centre.x, ball.centre.y, ball.centre.z, ball.radius);
     }
     return test::inline_scene(de + "    return d;\n}\n");
@@ -250,7 +250,12 @@ TEST_P(ProjectionTest, StereoEyesDifferByTheExpectedParallax) {
             // elongation to within a tenth of a pixel; the rest is quantisation.
             EXPECT_NEAR(left.x - right_x, expected, 0.5)
                 << projection_name(kind) << " depth " << c.depth;
-            EXPECT_NEAR(left.y, right_y, 0.25) << projection_name(kind) << " depth " << c.depth;
+            // Pixel centres (shaded, brute) leave only the discs' quantisation, the same in both
+            // eyes; the path tracer's one jittered sample per pixel moves each eye's edge pixels
+            // at random, about 0.1 pixel rms per centroid.
+            const double vertical_tolerance = GetParam() == RenderMode::Path ? 0.45 : 0.25;
+            EXPECT_NEAR(left.y, right_y, vertical_tolerance)
+                << projection_name(kind) << " depth " << c.depth;
             // And each eye sees it where its own off-axis pinhole puts it.
             const double left_x = 0.5 * eye_width + f * (c.right + 0.5 * separation) / c.depth -
                                   f * 0.5 * separation / convergence;
