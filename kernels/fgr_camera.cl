@@ -38,16 +38,31 @@
  * host keeps the eye in double and sends it split, eye = hi + lo: hi (eye.xyz) is the nearest
  * float, lo the float nearest the rest, carried in the otherwise unused w components
  * (eye.w, forward.w, right.w). Double lanes see the eye to about 2^-48 of its size, so a deep
- * zoom's eye can move by less than float's step. */
+ * zoom's eye can move by less than float's step.
+ *
+ * The projection (host/include/fgr/projection.hpp describes each layout) maps pixels to rays:
+ * pinhole, equirectangular (the whole sphere), equidistant fisheye, or a stereo pair of
+ * off-axis pinholes side by side or top/bottom. */
+#define FGR_PROJECTION_PINHOLE 0
+#define FGR_PROJECTION_EQUIRECTANGULAR 1
+#define FGR_PROJECTION_FISHEYE 2
+#define FGR_PROJECTION_STEREO_SBS 3
+#define FGR_PROJECTION_STEREO_TB 4
+
 typedef struct camera_frame {
     float4 eye;
     float4 forward;
     float4 right;
     float4 up;
     float tan_half_fov;
-    float pixel_angle; /* 2 * tan_half_fov / width: one pixel's angular footprint */
-    int width;  /* of the whole image: directions and footprints follow it */
+    float pixel_angle; /* one pixel's angular footprint, as the projection gives it (host's
+                        * pixel_angle in projection.cpp): pinhole 2 tan_half_fov / width */
+    int width; /* of the whole image: directions and footprints follow it */
     int height;
+    int projection;         /* FGR_PROJECTION_* */
+    float fisheye_half_fov; /* radians from the axis at the image circle's rim */
+    float eye_separation;   /* stereo: world distance between the eyes */
+    float convergence;      /* stereo: distance of the zero-parallax plane */
     /* The rectangle of the image this launch renders (tiled stills render the image a region at
      * a time): tiles and planes cover the region, pixel coordinates stay the whole image's, so
      * every pixel gets exactly the ray, samples and random numbers of an untiled render. */
@@ -70,15 +85,120 @@ inline vec3 camera_eye(camera_frame camera) {
 #endif
 }
 
-/* Direction (unit length along `forward`, not normalised) through the point (s.pixel_x,
- * s.pixel_y) of pixel (px, py): jittered in the pixel for anti-aliasing. */
+/* A point of the image within the view it belongs to: a stereo pair's eye, or the whole image.
+ * The eye is chosen by the pixel (px, py), the point is the sample s within it. */
+typedef struct camera_view_point {
+    real x, y;           /* in the view's pixels */
+    float width, height; /* the view's size in pixels */
+    real eye_side;       /* -1 left eye, +1 right eye, 0 a single view */
+} camera_view_point;
+
+inline camera_view_point camera_view_point_of(camera_frame camera, real px, real py,
+                                              camera_sample s) {
+    camera_view_point point;
+    point.x = px + s.pixel_x;
+    point.y = py + s.pixel_y;
+    point.width = (float)camera.width;
+    point.height = (float)camera.height;
+    point.eye_side = fgr_real(0.0f);
+    if (camera.projection == FGR_PROJECTION_STEREO_SBS) {
+        point.width *= 0.5f;
+        const mask right_eye = px >= point.width;
+        point.x -= select(fgr_real(0.0f), fgr_real(point.width), right_eye);
+        point.eye_side = select(fgr_real(-1.0f), fgr_real(1.0f), right_eye);
+    } else if (camera.projection == FGR_PROJECTION_STEREO_TB) {
+        point.height *= 0.5f;
+        const mask right_eye = py >= point.height;
+        point.y -= select(fgr_real(0.0f), fgr_real(point.height), right_eye);
+        point.eye_side = select(fgr_real(-1.0f), fgr_real(1.0f), right_eye);
+    }
+    return point;
+}
+
+/* The fisheye's point in units of the image circle's radius, from its centre (y up). */
+inline void fisheye_offset(camera_view_point point, real* dx, real* dy) {
+    const float radius = 0.5f * fmin(point.width, point.height);
+    *dx = (point.x - 0.5f * point.width) / radius;
+    *dy = (0.5f * point.height - point.y) / radius;
+}
+
+/* Whether pixel (px, py) shows anything: all do but those outside a fisheye's image circle,
+ * which start inactive and cost no march. */
+inline mask camera_covers(camera_frame camera, real px, real py) {
+    if (camera.projection != FGR_PROJECTION_FISHEYE) return (mask)(FGR_TRUE);
+    camera_sample centre;
+    centre.pixel_x = centre.pixel_y = fgr_real(0.5f);
+    centre.lens_x = centre.lens_y = fgr_real(0.0f);
+    real dx, dy;
+    fisheye_offset(camera_view_point_of(camera, px, py, centre), &dx, &dy);
+    return dx * dx + dy * dy <= 1.0f;
+}
+
+/* Direction through the point (s.pixel_x, s.pixel_y) of pixel (px, py): jittered in the pixel
+ * for anti-aliasing. A pinhole's (and each stereo eye's) has unit length along `forward`, not
+ * normalised, so depth of field finds its focus plane along it; the panoramas' are unit (their
+ * focus is a sphere). */
 inline vec3 primary_direction(camera_frame camera, real px, real py, camera_sample s) {
-    const float aspect = (float)camera.height / (float)camera.width;
-    const real u = (2.0f * (px + s.pixel_x) / (float)camera.width - 1.0f) * camera.tan_half_fov;
-    const real v = (1.0f - 2.0f * (py + s.pixel_y) / (float)camera.height) * camera.tan_half_fov *
-                   aspect;
-    return v3_add(splat_float4(camera.forward), v3_add(v3_scale(splat_float4(camera.right), u),
-                                                       v3_scale(splat_float4(camera.up), v)));
+    const camera_view_point point = camera_view_point_of(camera, px, py, s);
+    const vec3 forward = splat_float4(camera.forward);
+    const vec3 right = splat_float4(camera.right);
+    const vec3 up = splat_float4(camera.up);
+    if (camera.projection == FGR_PROJECTION_EQUIRECTANGULAR) {
+        const real longitude = (2.0f * point.x / point.width - 1.0f) * M_PI_F;
+        const real latitude = (1.0f - 2.0f * point.y / point.height) * M_PI_2_F;
+        const real across = fgr_cos(latitude);
+        return v3_add(v3_scale(up, fgr_sin(latitude)),
+                      v3_add(v3_scale(right, across * fgr_sin(longitude)),
+                             v3_scale(forward, across * fgr_cos(longitude))));
+    }
+    if (camera.projection == FGR_PROJECTION_FISHEYE) {
+        /* Equidistant: the angle from the axis is proportional to the radius. */
+        real dx, dy;
+        fisheye_offset(point, &dx, &dy);
+        const real r = sqrt(dx * dx + dy * dy);
+        const real theta = fmin(r, 1.0f) * camera.fisheye_half_fov;
+        /* sin(theta) / r, tending to the half fov at the centre. */
+        const real across = select(fgr_sin(theta) / fmax(r, 1e-7f),
+                                   fgr_real(camera.fisheye_half_fov), r < 1e-7f);
+        return v3_add(v3_scale(forward, fgr_cos(theta)),
+                      v3_add(v3_scale(right, across * dx), v3_scale(up, across * dy)));
+    }
+    /* Pinhole, and each stereo eye: an off-axis frustum, shifted so its centre line crosses the
+     * view's axis at the convergence distance (eye_side is 0 for a single view). */
+    const real shift = -point.eye_side * (0.5f * camera.eye_separation / camera.convergence);
+    const real u = (2.0f * point.x / point.width - 1.0f) * camera.tan_half_fov + shift;
+    const real v = (1.0f - 2.0f * point.y / point.height) * camera.tan_half_fov *
+                   (point.height / point.width);
+    return v3_add(forward, v3_add(v3_scale(right, u), v3_scale(up, v)));
+}
+
+/* Where the rays of pixel (px, py) start: the eye, or for a stereo pair the pixel's eye, half the
+ * separation to its side. */
+inline vec3 camera_origin(camera_frame camera, real px, real py) {
+    const vec3 eye = camera_eye(camera);
+    if (camera.projection != FGR_PROJECTION_STEREO_SBS &&
+        camera.projection != FGR_PROJECTION_STEREO_TB) {
+        return eye;
+    }
+    camera_sample centre;
+    centre.pixel_x = centre.pixel_y = fgr_real(0.5f);
+    centre.lens_x = centre.lens_y = fgr_real(0.0f);
+    const real side = camera_view_point_of(camera, px, py, centre).eye_side;
+    return v3_mad(eye, splat_float4(camera.right), side * (0.5f * camera.eye_separation));
+}
+
+/* Whether pixels (ax, ay) and (bx, by) belong to the same view (a stereo pair's eye): screen-space
+ * neighbours across the seam between the eyes are not neighbours in the world. */
+inline mask camera_same_view(camera_frame camera, real ax, real ay, real bx, real by) {
+    if (camera.projection == FGR_PROJECTION_STEREO_SBS) {
+        const float middle = 0.5f * (float)camera.width;
+        return (ax >= middle) == (bx >= middle);
+    }
+    if (camera.projection == FGR_PROJECTION_STEREO_TB) {
+        const float middle = 0.5f * (float)camera.height;
+        return (ay >= middle) == (by >= middle);
+    }
+    return (mask)(FGR_TRUE);
 }
 
 /* A primary ray: from the eye (or a point on the lens) through the pixel. */
@@ -95,11 +215,12 @@ inline camera_ray camera_ray_through(camera_frame camera, real px, real py, came
     (void)fgr_params;
     const vec3 through_pixel = primary_direction(camera, px, py, s);
     camera_ray ray;
-    ray.origin = camera_eye(camera);
+    ray.origin = camera_origin(camera, px, py);
     ray.dir = v3_normalize(through_pixel);
 #ifdef FGR_EFFECT_DEPTH_OF_FIELD
-    /* through_pixel has unit length along `forward`, so the focus plane is at
-     * eye + through_pixel * focus_distance. */
+    /* A pinhole's through_pixel has unit length along `forward`, so the focus plane is at
+     * eye + through_pixel * focus_distance; a panorama's is unit, focusing on a sphere. The lens
+     * lies across the view's axis, so a panorama's sideways rays blur less. */
     const vec3 focus = v3_mad(ray.origin, through_pixel, fgr_real(param_focus_distance));
     ray.origin = v3_add(ray.origin,
                         v3_add(v3_scale(splat_float4(camera.right), s.lens_x * param_aperture),
@@ -124,7 +245,8 @@ inline camera_ray camera_ray_through(camera_frame camera, real px, real py, came
 /* The pixels of one tile, one per lane. */
 typedef struct tile_pixels {
     real px, py;  /* each lane's pixel, in the whole image */
-    mask inside;  /* lanes past the region's edge (partial tiles) start inactive and cost no steps */
+    mask inside;  /* lanes past the region's edge (partial tiles) or outside a fisheye's image
+                   * circle start inactive and cost no steps */
 } tile_pixels;
 
 /* Tiles across the region. */
@@ -138,7 +260,8 @@ inline tile_pixels pixels_of_tile(int tile, camera_frame camera) {
     pixels.px = (float)(camera.region_x + (tile % tiles_x) * FGR_TILE_W) + FGR_LANE_X;
     pixels.py = (float)(camera.region_y + (tile / tiles_x) * FGR_TILE_H) + FGR_LANE_Y;
     pixels.inside = (pixels.px < (float)(camera.region_x + camera.region_width)) &
-                    (pixels.py < (float)(camera.region_y + camera.region_height));
+                    (pixels.py < (float)(camera.region_y + camera.region_height)) &
+                    camera_covers(camera, pixels.px, pixels.py);
     return pixels;
 }
 

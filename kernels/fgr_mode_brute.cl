@@ -144,7 +144,7 @@ __kernel void fgr_render(FGR_RENDER_ARGS, __global float* state) {
     const int tile = get_global_id(0);
     if (tile >= tile_count) return;
     const tile_pixels pixels = pixels_of_tile(tile, camera);
-    const vec3 eye = camera_eye(camera);
+    const vec3 eye = camera_origin(camera, pixels.px, pixels.py);
     const vec3 dir = brute_pixel_direction(camera, pixels.px, pixels.py);
     const real previous = sample == 0 ? fgr_real(-1.0f) : fgr_load(tile, state);
     mask tests = (mask)(0);
@@ -175,11 +175,12 @@ __kernel void fgr_render(FGR_RENDER_ARGS, __global float* state) {
 /* Ambient light: higher than the shaded mode's, since occlusion here darkens everything. */
 #define FGR_BRUTE_AMBIENT 0.12f
 
-/* The depth of pixel (x, y) in `state`, -1 off the region or where the ray has no hit. Off the
- * image that is the truth; off a tiled render's region but on the image it is not, which is why
- * tiles are rendered with FGR_BRUTE_MAX_REACH pixels of padding and cropped. */
+/* The depth of pixel (x, y) in `state`, -1 off the region, in another view than pixel
+ * (from_x, from_y) (a stereo pair's other eye), or where the ray has no hit. Off the image that
+ * is the truth; off a tiled render's region but on the image it is not, which is why tiles are
+ * rendered with FGR_BRUTE_MAX_REACH pixels of padding and cropped. */
 inline real brute_depth_at(__global const float* state, index_lanes x, index_lanes y,
-                           camera_frame camera) {
+                           index_lanes from_x, index_lanes from_y, camera_frame camera) {
     const index_lanes lx = x - camera.region_x, ly = y - camera.region_y;
     const index_lanes on_region = (lx >= 0) & (lx < camera.region_width) & (ly >= 0) &
                                   (ly < camera.region_height);
@@ -188,7 +189,9 @@ inline real brute_depth_at(__global const float* state, index_lanes x, index_lan
     const index_lanes index = ((cy / FGR_TILE_H) * region_tiles_x(camera) + cx / FGR_TILE_W) *
                                   FGR_WIDTH +
                               (cy % FGR_TILE_H) * FGR_TILE_W + cx % FGR_TILE_W;
-    return select(fgr_real(-1.0f), fgr_gather(state, index), index_truth(on_region));
+    const mask same_view = camera_same_view(camera, convert_real(x), convert_real(y),
+                                            convert_real(from_x), convert_real(from_y));
+    return select(fgr_real(-1.0f), fgr_gather(state, index), index_truth(on_region) & same_view);
 }
 
 inline vec3 brute_world_point(camera_frame camera, vec3 eye, index_lanes x, index_lanes y,
@@ -203,8 +206,8 @@ inline vec3 brute_world_point(camera_frame camera, vec3 eye, index_lanes x, inde
 inline vec3 brute_tangent(__global const float* state, camera_frame camera, vec3 eye,
                           index_lanes x, index_lanes y, real depth, vec3 centre, int dx, int dy,
                           mask* valid) {
-    const real before = brute_depth_at(state, x - dx, y - dy, camera);
-    const real after = brute_depth_at(state, x + dx, y + dy, camera);
+    const real before = brute_depth_at(state, x - dx, y - dy, x, y, camera);
+    const real after = brute_depth_at(state, x + dx, y + dy, x, y, camera);
     const mask has_before = before >= 0.0f, has_after = after >= 0.0f;
     const real jump_before = fabs(depth - before), jump_after = fabs(after - depth);
     const mask use_after = has_after & (!has_before | (jump_after <= jump_before));
@@ -265,7 +268,7 @@ inline real brute_occlusion(__global const float* state, camera_frame camera, ve
         brute_disc_point(k, pixels, spin, &ox, &oy);
         const index_lanes sx = x + convert_index_lanes(rint(ox));
         const index_lanes sy = y + convert_index_lanes(rint(oy));
-        const real sample_depth = brute_depth_at(state, sx, sy, camera);
+        const real sample_depth = brute_depth_at(state, sx, sy, x, y, camera);
         const vec3 v = v3_sub(brute_world_point(camera, eye, sx, sy, sample_depth), centre);
         const real distance = v3_length(v);
         const real rise = v3_dot(n, v) / fmax(distance, FGR_MIN_LENGTH) - 0.1f;
@@ -360,7 +363,7 @@ inline vec3 brute_glow(vec3 colour, __global const float* state, camera_frame ca
         real ox, oy;
         brute_disc_point(k, pixels, spin, &ox, &oy);
         const real d = brute_depth_at(state, x + convert_index_lanes(rint(ox)),
-                                      y + convert_index_lanes(rint(oy)), camera);
+                                      y + convert_index_lanes(rint(oy)), x, y, camera);
         near_hits += select(fgr_real(0.0f), fgr_real(1.0f), d >= 0.0f);
     }
     const real amount =
@@ -379,7 +382,7 @@ __kernel void fgr_brute_shade(FGR_RENDER_ARGS, __global const float* state,
     const tile_pixels pixels = pixels_of_tile(tile, camera);
     const real px = pixels.px, py = pixels.py;
     const index_lanes x = convert_index_lanes(px), y = convert_index_lanes(py);
-    const vec3 eye = camera_eye(camera);
+    const vec3 eye = camera_origin(camera, px, py); /* neighbours in its view share it */
     const vec3 dir = brute_pixel_direction(camera, px, py);
     const real depth = fgr_load(tile, state);
     const mask hit = pixels.inside & (depth >= 0.0f);
@@ -407,6 +410,8 @@ __kernel void fgr_brute_shade(FGR_RENDER_ARGS, __global const float* state,
 #ifdef FGR_EFFECT_FOG
     colour = apply_fog(colour, depth, hit, param_max_distance, PARAMS_PASS);
 #endif
+    /* Pixels the projection does not cover (outside a fisheye's circle) are black. */
+    colour = v3_select(v3_splat(0.0f, 0.0f, 0.0f), colour, pixels.inside);
     fgr_store(colour.x, tile, planes);
     fgr_store(colour.y, tile, planes + plane_size);
     fgr_store(colour.z, tile, planes + 2 * plane_size);

@@ -59,6 +59,8 @@ __kernel void fgr_render(FGR_RENDER_ARGS, __constant const float* lights, int li
 #ifdef FGR_EFFECT_FOG
     colour = apply_fog(colour, hit.t, hit.hit, limits.max_distance, PARAMS_PASS);
 #endif
+    /* Pixels the projection does not cover (outside a fisheye's circle) are black. */
+    colour = v3_select(v3_splat(0.0f, 0.0f, 0.0f), colour, inside);
     accumulate_plane(colour.x, sample, tile, planes);
     accumulate_plane(colour.y, sample, tile, planes + plane_size);
     accumulate_plane(colour.z, sample, tile, planes + 2 * plane_size);

@@ -657,5 +657,37 @@ TEST(ViewerWithoutDisplay, FailsWithOneLineAndExitCodeOne) {
     EXPECT_NE(run.err.find("fgr: error: cannot open a window"), std::string::npos) << run;
 }
 
+// --projection reaches the viewer's frames: the F12 screenshot of a stereo pair (eye separation
+// and convergence left to follow the view) and of a panorama are the images `fgr render` gives
+// for the viewer's own view with the same projection, within a level per pixel.
+TEST_F(ViewerTest, ProjectionFromTheCommandLineShapesTheViewersFrames) {
+    for (const std::vector<std::string>& projection :
+         {std::vector<std::string>{"--stereo", "sbs"},
+          std::vector<std::string>{"--projection", "panorama"}}) {
+        SCOPED_TRACE(projection.back());
+        for (const fs::path& old : fs::directory_iterator(dir())) fs::remove_all(old);
+        const ViewerRun run = view(
+            std::string("0 wait_idle\n0 key F12\n") + kSaveViewAsPath + "0.2 quit\n", projection);
+        ASSERT_EQ(run.result.exit_code, 0) << run.result;
+        ASSERT_EQ(run.screenshots.size(), 1u) << run.result;
+        const fs::path path = saved_path(dir());
+        ASSERT_FALSE(path.empty()) << run.result;
+        std::vector<std::string> args = {"render", "mandelbulb", "--camera-path", path.string(),
+                                         "--time", "0", "--width", std::to_string(kWidth),
+                                         "--height", std::to_string(kHeight), "-o",
+                                         "reference.png"};
+        args.insert(args.end(), projection.begin(), projection.end());
+        const test::RunResult rendered = test::run_fgr(args, dir());
+        ASSERT_EQ(rendered.exit_code, 0) << rendered;
+        const Image8 reference = read_png(dir() / "reference.png");
+        EXPECT_EQ(pixels_over_one_level(read_png(run.screenshots[0]), reference), 0);
+        // And it is not the pinhole's image.
+        args.resize(args.size() - projection.size());
+        args.back() = "pinhole.png";
+        ASSERT_EQ(test::run_fgr(args, dir()).exit_code, 0);
+        EXPECT_GT(pixels_over_one_level(read_png(dir() / "pinhole.png"), reference), 1000);
+    }
+}
+
 }  // namespace
 }  // namespace fgr

@@ -21,6 +21,7 @@
 #include "fgr/parameters.hpp"
 #include "fgr/path_settings.hpp"
 #include "fgr/precision.hpp"
+#include "fgr/projection.hpp"
 #include "fgr/render_mode.hpp"
 #include "fgr/scene.hpp"
 #include "fgr/still_image.hpp"
@@ -89,6 +90,19 @@ ViewOverride parsed_view_override(const ViewOverrideText& text);
 // `base` with the options' fields laid over it (UsageError when that view cannot be rendered).
 CameraView overridden_view(const CameraView& base, const ViewOverrideText& text);
 
+// --projection, --stereo, --fisheye-fov, --eye-separation, --convergence (render and view).
+struct ProjectionOptions {
+    std::optional<std::string> projection;  // a name or alias (fgr/projection.hpp)
+    std::optional<std::string> stereo;      // sbs or tb: the same as --projection stereo-sbs/tb
+    std::optional<float> fisheye_fov;       // degrees in (0, 360]
+    std::optional<double> eye_separation;   // world units >= 0
+    std::optional<double> convergence;      // world units > 0
+};
+void add_projection_options(CLI::App* command, ProjectionOptions& options);
+// The projection the options ask for (UsageError, one line, for a bad name, a value out of range
+// or a setting the chosen projection does not use).
+Projection chosen_projection(const ProjectionOptions& options);
+
 // Throws UsageError unless the directory `file` would be written into exists.
 void check_output_directory(const std::filesystem::path& file);
 // The scene as a command uses it: with --dev (`dev`), its source read from its recorded .cl file
@@ -134,6 +148,7 @@ struct RenderOptions {
     bool dev = false;  // read the scene's .cl file from disk, not the plugin's embedded copy
     std::optional<int> tile_size;  // render in tiles of about this side (also implied by size)
     bool resume = false;           // continue an interrupted tiled render from its tile store
+    ProjectionOptions projection;
 };
 
 void add_render_command(CLI::App& app, RenderOptions& options);
@@ -188,6 +203,7 @@ struct ViewCommandOptions {
     ViewOverrideText view_override;  // the first scene's start view
     std::string replay;
     double exit_after = 0.0;
+    ProjectionOptions projection;  // the viewer's starting projection
 };
 
 void add_view_command(CLI::App& app, ViewCommandOptions& options);

@@ -209,6 +209,62 @@ void add_view_override_options(CLI::App* command, ViewOverrideText& text) {
         ->group(group);
 }
 
+void add_projection_options(CLI::App* command, ProjectionOptions& options) {
+    const std::string group = "Projection (panoramas, fisheye, stereo pairs)";
+    command->add_option("--projection", options.projection,
+                        "pinhole (default), equirectangular (alias panorama: the whole sphere, "
+                        "best at 2:1), fisheye (equidistant), stereo-sbs or stereo-tb (a stereo "
+                        "pair side by side, left eye left, or top/bottom, left eye on top)")
+        ->group(group);
+    command->add_option("--stereo", options.stereo,
+                        "sbs or tb: a stereo pair, the same as --projection stereo-sbs/stereo-tb")
+        ->group(group);
+    command->add_option("--fisheye-fov", options.fisheye_fov,
+                        "fisheye field of view across the image circle, degrees in (0, 360] "
+                        "(default 180)")
+        ->group(group);
+    command->add_option("--eye-separation", options.eye_separation,
+                        "stereo: distance between the eyes, >= 0 (default: 1/30 of the distance "
+                        "to the target)")
+        ->group(group);
+    command->add_option("--convergence", options.convergence,
+                        "stereo: distance to the zero-parallax plane, > 0 (default: the distance "
+                        "to the target)")
+        ->group(group);
+}
+
+Projection chosen_projection(const ProjectionOptions& options) {
+    Projection projection;
+    try {
+        if (options.projection && options.stereo) {
+            throw std::invalid_argument("give --projection or --stereo, not both");
+        }
+        if (options.projection) projection.kind = parse_projection_kind(*options.projection);
+        if (options.stereo) {
+            if (*options.stereo != "sbs" && *options.stereo != "tb") {
+                throw std::invalid_argument(
+                    fmt::format("unknown --stereo '{}': expected sbs or tb", *options.stereo));
+            }
+            projection.kind = *options.stereo == "sbs" ? ProjectionKind::StereoSideBySide
+                                                       : ProjectionKind::StereoTopBottom;
+        }
+        if (options.fisheye_fov) projection.fisheye_fov_degrees = *options.fisheye_fov;
+        projection.eye_separation = options.eye_separation;
+        projection.convergence = options.convergence;
+        check_projection(projection);
+        if (options.fisheye_fov && projection.kind != ProjectionKind::Fisheye) {
+            throw std::invalid_argument("--fisheye-fov needs --projection fisheye");
+        }
+        if ((options.eye_separation || options.convergence) && !is_stereo(projection.kind)) {
+            throw std::invalid_argument(
+                "--eye-separation and --convergence need a stereo projection (--stereo sbs|tb)");
+        }
+    } catch (const std::invalid_argument& error) {
+        throw UsageError(error.what());
+    }
+    return projection;
+}
+
 ViewOverride parsed_view_override(const ViewOverrideText& text) {
     try {
         return parse_view_override(text);

@@ -91,6 +91,7 @@ void check_output_path(const std::filesystem::path& output) {
 
 // Checks that do not need a scene: option combinations and the output location.
 void check_render_options(const RenderOptions& options) {
+    chosen_projection(options.projection);  // bad values fail before anything is loaded
     if (options.all) {
         try {
             apply_effect_changes(0, options.effect_changes);
@@ -130,12 +131,14 @@ FrameRequest default_request(const Scene& scene, const RenderOptions& options) {
     request.view = scene.cameras.front().view;
     request.params = default_param_values(scene);
     request.samples = options.samples.value_or(1);
+    request.projection = chosen_projection(options.projection);
     return request;
 }
 
 }  // namespace
 
 void check_frame_options(const RenderOptions& options) {
+    chosen_projection(options.projection);
     try {
         apply_effect_changes(0, options.effect_changes);
         parse_aovs(options.aovs);
@@ -327,6 +330,7 @@ void add_frame_options(CLI::App* command, RenderOptions& options, int max_side) 
                       "read the scene's .cl file from disk instead of the copy its plugin embeds "
                       "(as `fgr view --dev`): try an edit without rebuilding the plugin");
     add_device_options(command, options.device, options.packet_width);
+    add_projection_options(command, options.projection);
 }
 
 void add_render_command(CLI::App& app, RenderOptions& options) {

@@ -61,6 +61,7 @@ void add_view_command(CLI::App& app, ViewCommandOptions& options) {
     view->add_option("--camera-path", options.camera_path_file,
                      "a .json camera path saved by the viewer, to play with P");
     add_view_override_options(view, options.view_override);
+    add_projection_options(view, options.projection);
     view->add_option("--output-dir", viewer.output_dir,
                      "where F12 screenshots and saved camera paths go (default: .)");
     view->add_option("--replay", options.replay, "feed timed input events from a file");
@@ -92,6 +93,7 @@ int command_view(ViewCommandOptions& options) {
         }
         viewer.camera_path_file = options.camera_path_file;
     }
+    viewer.projection = chosen_projection(options.projection);
     if (!options.view_override.empty()) {
         viewer.start_view = parsed_view_override(options.view_override);
     }

@@ -16,6 +16,7 @@
 #include "fgr/camera.hpp"
 #include "fgr/math_check.hpp"
 #include "fgr/parameters.hpp"
+#include "fgr/projection.hpp"
 #include "fgr/view_validation.hpp"
 #include "modes/mode_kernel.hpp"
 
@@ -32,19 +33,25 @@ struct CameraFrame {
     cl_float pixel_angle;
     cl_int width;
     cl_int height;
+    cl_int projection;  // ProjectionKind
+    cl_float fisheye_half_fov;
+    cl_float eye_separation;
+    cl_float convergence;
     cl_int region_x;
     cl_int region_y;
     cl_int region_width;
     cl_int region_height;
 };
-static_assert(sizeof(CameraFrame) == 96, "must match camera_frame in fgr_camera.cl");
+static_assert(sizeof(CameraFrame) == 112, "must match camera_frame in fgr_camera.cl");
 
 cl_float4 to_float4(glm::vec3 v, float w = 0.0f) { return {{v.x, v.y, v.z, w}}; }
 
 // The eye goes as a hi/lo split of its double value: hi the nearest float, lo the rest rounded to
 // float (in the w components); double lanes add them, float lanes use hi alone.
-CameraFrame camera_frame(const CameraView& view, int width, int height, PixelRegion region) {
-    const CameraBasis basis = camera_basis(view);
+CameraFrame camera_frame(const CameraView& view, const Projection& projection, int width,
+                         int height, PixelRegion region) {
+    const CameraModel model = camera_model(view, projection);
+    const CameraBasis& basis = model.basis;
     const glm::vec3 eye_hi(basis.eye);
     const glm::vec3 eye_lo(basis.eye - glm::dvec3(eye_hi));
     return {to_float4(eye_hi, eye_lo.x),
@@ -52,9 +59,13 @@ CameraFrame camera_frame(const CameraView& view, int width, int height, PixelReg
             to_float4(basis.right, eye_lo.z),
             to_float4(basis.up),
             basis.tan_half_fov,
-            pixel_angle(basis, width),
+            pixel_angle(model, width, height),
             width,
             height,
+            static_cast<cl_int>(model.kind),
+            model.fisheye_half_fov,
+            model.eye_separation,
+            model.convergence,
             region.x,
             region.y,
             region.width,
@@ -98,6 +109,7 @@ void check_request(const Scene& scene, const FrameRequest& request) {
     if (const std::string problem = computed_view_problem(request.view); !problem.empty()) {
         throw std::invalid_argument("cannot render this view: " + problem);
     }
+    check_projection(request.projection);
 }
 
 // 4096 steps over [0, 1] keep every 8-bit output code reachable.
@@ -296,7 +308,8 @@ Frame Renderer::render(const FrameRequest& request) {
     const int plane_count = kCommonPlanes + mode_->extra_planes(switches_);
     cl::Buffer planes(device_.context, CL_MEM_READ_WRITE, sizeof(float) * plane_count * plane);
     const int tiles = layout.tiles_x * layout.tiles_y;
-    const CameraFrame camera = camera_frame(request.view, request.width, request.height, region);
+    const CameraFrame camera = camera_frame(request.view, request.projection, request.width,
+                                            request.height, region);
     cl::Kernel* resolve = mode_->resolve_kernel();
     for (cl::Kernel* kernel : {&render_kernel_, resolve}) {
         if (kernel == nullptr) continue;

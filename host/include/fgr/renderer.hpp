@@ -15,6 +15,7 @@
 #include "fgr/path_settings.hpp"
 #include "fgr/opencl_device.hpp"
 #include "fgr/program_cache.hpp"
+#include "fgr/projection.hpp"
 #include "fgr/scene.hpp"
 
 namespace fgr {
@@ -51,6 +52,8 @@ struct FrameRequest {
     // Polled after each finished sample, when set: returning true ends the render there with the
     // samples done so far (Frame::samples), e.g. at a time budget.
     std::function<bool()> enough{};
+    // How pixels map to rays: pinhole, panoramas, stereo pairs (fgr/projection.hpp).
+    Projection projection{};
     // The part of the image to render (tiled stills); the frame then holds only it, each pixel
     // exactly as an untiled render of the whole image gives it. Its sides are at most
     // kMaxImageSide; the whole image's at most kMaxTiledImageSide.

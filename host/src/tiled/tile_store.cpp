@@ -13,6 +13,7 @@
 
 #include "fgr/atomic_file.hpp"
 #include "fgr/kernel_assembly.hpp"
+#include "fgr/projection.hpp"
 
 namespace fgr {
 namespace {
@@ -59,6 +60,13 @@ std::string view_text(const CameraView& view) {
                        view.fov_degrees);
 }
 
+std::string projection_text(const Projection& projection) {
+    return fmt::format("{} fisheye {:.9g} separation {} convergence {}",
+                       projection_name(projection.kind), projection.fisheye_fov_degrees,
+                       projection.eye_separation ? fmt::format("{:.17g}", *projection.eye_separation) : "auto",
+                       projection.convergence ? fmt::format("{:.17g}", *projection.convergence) : "auto");
+}
+
 std::string path_text(const PathSettings& path) {
     std::string text = fmt::format("bounces {} roulette {} clamp {:.9g} light {} mis {} "
                                    "importance {} lights {} stratified {} seed {}",
@@ -93,6 +101,7 @@ nlohmann::json render_identity(const Renderer& renderer, const FrameRequest& req
         {"kernel", fingerprint(program.source + "\n" + program.options)},
         {"size", fmt::format("{}x{}", request.width, request.height)},
         {"view", view_text(request.view)},
+        {"projection", projection_text(request.projection)},
         {"parameters", params},
         {"samples", request.samples},
         {"path tracing", path_text(request.path)},

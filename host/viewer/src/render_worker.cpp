@@ -17,6 +17,7 @@ FrameRequest frame_request(const ViewState& state, int width, int height) {
     request.width = width;
     request.height = height;
     request.view = state.view;
+    request.projection = state.projection;
     request.params = state.params;
     request.path = state.path;
     return request;

@@ -41,7 +41,8 @@ bool same_image_inputs(const ViewState& a, const ViewState& b) {
     return a.scene == b.scene && a.effects == b.effects && a.width == b.width &&
            a.height == b.height && a.view.position == b.view.position &&
            a.view.target == b.view.target && a.view.up == b.view.up &&
-           a.view.fov_degrees == b.view.fov_degrees && a.params == b.params &&
+           a.view.fov_degrees == b.view.fov_degrees && a.projection == b.projection &&
+           a.params == b.params &&
            a.precision == b.precision && a.mode == b.mode &&
            a.path.environment == b.path.environment && a.path.max_bounces == b.path.max_bounces &&
            a.path.roulette_depth == b.path.roulette_depth &&
@@ -85,6 +86,7 @@ ViewerApp::ViewerApp(const ViewerOptions& options, std::vector<Scene> scenes)
     quality_.sample_cap = options.sample_cap;
     precision_ = options.precision;
     mode_ = options.mode;
+    projection_ = options.projection;
     path_ = options.path;
     environment_ = options.environment;
     fullscreen_ = options.fullscreen;
@@ -436,6 +438,7 @@ void ViewerApp::submit_view() {
     state.scene = scenes_[static_cast<size_t>(scene_index_)];
     state.effects = session().effects;
     state.view = session().camera.to_view();
+    state.projection = projection_;
     state.params = session().params;
     state.precision = precision_;
     state.mode = current_mode();

@@ -207,6 +207,7 @@ private:
     void draw_quality_section();
     void draw_precision_combo();
     void draw_mode_section();
+    void draw_projection_section();
     bool draw_environment_controls();
     void draw_messages();
     void draw_help();
@@ -251,6 +252,7 @@ private:
     Precision precision_ = Precision::Auto;
     // The render mode chosen in the panel (or by --mode); unset: each scene's own.
     std::optional<RenderMode> mode_;
+    Projection projection_;  // the panel's projection (or --projection's)
     PathSettings path_;  // path mode's settings; the environment is prepared per scene
     EnvironmentChoice environment_;
     // The environment prepared for each scene (the sky's sun follows the scene's key light),

@@ -3,6 +3,7 @@
 #include "viewer_app.hpp"
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 
 #include <fmt/format.h>
@@ -12,6 +13,7 @@
 #include "fgr/parameters.hpp"
 #include "fgr/plugin.h"
 #include "fgr/precision.hpp"
+#include "fgr/projection.hpp"
 #include "fgr/render_mode.hpp"
 
 namespace fgr::viewer {
@@ -133,6 +135,7 @@ void ViewerApp::draw_panel() {
     ImGui::PushItemWidth(-150);
     draw_scene_section();
     draw_camera_section();
+    draw_projection_section();
     draw_params_section();
     draw_effects_section();
     draw_mode_section();
@@ -200,6 +203,55 @@ void ViewerApp::draw_camera_section() {
     if (ImGui::Button("Clear")) current.recorded.keyframes.clear();
     ImGui::SliderFloat("keyframe spacing", &keyframe_interval_, 0.25f, 10.0f, "%.2f s");
     if (ImGui::Button("Screenshot (F12)")) take_screenshot();
+}
+
+namespace {
+
+// A distance that is either automatic (unset: `automatic` follows the view) or the user's own,
+// dragged on a logarithmic scale from its last value; at least `minimum`.
+void draw_optional_distance(const char* label, std::optional<double>* value, double automatic,
+                            double minimum) {
+    bool automatic_on = !value->has_value();
+    if (ImGui::Checkbox(fmt::format("auto {}", label).c_str(), &automatic_on)) {
+        *value = automatic_on ? std::nullopt : std::optional<double>(automatic);
+    }
+    if (automatic_on) {
+        ImGui::TextDisabled("%s %.3g (follows the target distance)", label, automatic);
+        return;
+    }
+    auto shown = static_cast<float>(**value);
+    const auto low = static_cast<float>(std::max(minimum, 1e-4 * automatic));
+    if (ImGui::SliderFloat(label, &shown, low, static_cast<float>(std::max(automatic, 1e-30) * 10.0),
+                           "%.4g", ImGuiSliderFlags_Logarithmic)) {
+        *value = std::max(double(shown), minimum);
+    }
+}
+
+}  // namespace
+
+void ViewerApp::draw_projection_section() {
+    if (!ImGui::CollapsingHeader("Projection", ImGuiTreeNodeFlags_DefaultOpen)) return;
+    constexpr std::array kKinds{ProjectionKind::Pinhole, ProjectionKind::Equirectangular,
+                                ProjectionKind::Fisheye, ProjectionKind::StereoSideBySide,
+                                ProjectionKind::StereoTopBottom};
+    if (ImGui::BeginCombo("projection", projection_name(projection_.kind))) {
+        for (const ProjectionKind kind : kKinds) {
+            if (ImGui::Selectable(projection_name(kind), kind == projection_.kind)) {
+                projection_.kind = kind;
+            }
+        }
+        ImGui::EndCombo();
+    }
+    if (projection_.kind == ProjectionKind::Fisheye) {
+        ImGui::SliderFloat("fisheye fov", &projection_.fisheye_fov_degrees, 10.0f, 360.0f,
+                           "%.0f deg");
+    }
+    if (!is_stereo(projection_.kind)) return;
+    // Unset values follow the view: 1/30 of the distance to the target, converging there.
+    const double distance = session().camera.target_distance;
+    draw_optional_distance("eye separation", &projection_.eye_separation,
+                           distance * kDefaultSeparationFraction, 0.0);
+    draw_optional_distance("convergence", &projection_.convergence, distance, 1e-6 * distance);
 }
 
 namespace {

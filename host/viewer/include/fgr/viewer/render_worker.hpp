@@ -39,6 +39,7 @@ struct ViewState {
     std::shared_ptr<const Scene> scene;
     uint64_t effects = 0;
     CameraView view;
+    Projection projection;
     std::vector<float> params;
     int width = 1;   // full resolution
     int height = 1;

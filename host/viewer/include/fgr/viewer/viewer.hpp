@@ -9,6 +9,7 @@
 
 #include "fgr/path_settings.hpp"
 #include "fgr/precision.hpp"
+#include "fgr/projection.hpp"
 #include "fgr/render_mode.hpp"
 #include "fgr/view_override.hpp"
 
@@ -31,6 +32,7 @@ struct ViewerOptions {
     std::string effect_changes;             // --effects for the first scene
     std::optional<std::filesystem::path> camera_path_file;  // load (and list) a recorded path
     std::optional<ViewOverride> start_view;  // --eye, --target, --up, --fov: the first view
+    Projection projection;  // --projection and its settings; the panel changes it
     std::filesystem::path output_dir = ".";  // screenshots and saved camera paths
     std::optional<std::filesystem::path> replay;  // scripted input (see replay.hpp)
     std::optional<double> exit_after_seconds;
