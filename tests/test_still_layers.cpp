@@ -373,8 +373,8 @@ std::vector<float> exr_channel(const fs::path& file, const char* name) {
 // Through the CLI, a ball swapped into a scene (--kernel-source) and seen from a known place: the
 // EXR's A is 1 on the ball, 0 off it and fractional at its edge, its depth the analytic one (+Inf
 // where missed), its normal and albedo the ball's, its colour premultiplied (0 where A is 0); the
-// PNG with --alpha has the same coverage in 8 and 16 bits, the plain image's colour where covered
-// and black where not. The shaded mode's layers, once refused, are there.
+// PNG with --alpha has the same coverage in 8 and 16 bits, the EXR's colour over its coverage
+// (straight), the plain image's colour where fully covered and black where not covered. The shaded mode's layers, once refused, are there.
 TEST(StillLayersCli, ExrAndPngCarryCoverageAndTheBallsLayers) {
     test::TempDir dir("fgr_layers");
     const fs::path ball_source = dir.path() / "ball.cl";
@@ -386,7 +386,7 @@ TEST(StillLayersCli, ExrAndPngCarryCoverageAndTheBallsLayers) {
                                         "0,0,1",      "--fov",       "60",
                                         "--width",    std::to_string(kWidth), "--height",
                                         std::to_string(kHeight), "--spp", "8",
-                                        "--set", "tone_map=clamp"};
+                                        "--set", "tone_map=clamp", "--set", "exposure=1"};
     const auto render = [&](const std::string& file, std::vector<std::string> extra) {
         std::vector<std::string> all = args;
         all.insert(all.end(), {"-o", (dir.path() / file).string()});
@@ -420,6 +420,13 @@ TEST(StillLayersCli, ExrAndPngCarryCoverageAndTheBallsLayers) {
             EXPECT_EQ(rgba.samples[i * 4 + 3], std::lround(a[i] * 255.0f)) << x << "," << y;
             EXPECT_EQ(rgba16.samples[i * 4 + 3], std::lround(a[i] * 65535.0f)) << x << "," << y;
             fractional += a[i] > 0.0f && a[i] < 1.0f;
+            if (a[i] > 0.0f) {
+                // Straight in the PNG, premultiplied in the EXR: the PNG's colour is the EXR's
+                // over its coverage (exposure 1, clamped; rounding to the file's steps).
+                const float straight = std::min(r[i] / a[i], 1.0f);
+                EXPECT_NEAR(rgba16.samples[i * 4], straight * 65535.0f, 1.5f) << x << "," << y;
+                EXPECT_NEAR(rgba.samples[i * 4], encode_srgb(straight), 1.0f) << x << "," << y;
+            }
             if (a[i] == 0.0f) {
                 EXPECT_EQ(r[i], 0.0f);
                 for (int k = 0; k < 3; ++k) EXPECT_EQ(rgba.samples[i * 4 + k], 0);
