@@ -241,7 +241,9 @@ TEST_F(ImageIo16, AlphaMakesAnRgbaFileWithTheSamplesAsGiven) {
     ASSERT_EQ(read8.bit_depth, 8);
     ASSERT_EQ(read8.samples.size(), 24u);
     for (std::size_t i = 0; i < 6; ++i) {
-        for (std::size_t c = 0; c < 3; ++c) EXPECT_EQ(read8.samples[i * 4 + c], image8.rgb[i * 3 + c]);
+        for (std::size_t c = 0; c < 3; ++c) {
+            EXPECT_EQ(read8.samples[i * 4 + c], image8.rgb[i * 3 + c]);
+        }
         EXPECT_EQ(read8.samples[i * 4 + 3], image8.alpha[i]);
     }
     EXPECT_EQ(read_png(file8).rgb, image8.rgb);

@@ -46,8 +46,8 @@ struct Ball {
 
     // Distance along the ray through image point (px, py) to the ball; -1 where it misses.
     double distance(double px, double py) const {
-        const glm::dvec3 d(primary_ray_direction(basis, kWidth, kHeight, float(px - 0.5),
-                                                 float(py - 0.5)));
+        const glm::dvec3 d(
+            primary_ray_direction(basis, kWidth, kHeight, float(px - 0.5), float(py - 0.5)));
         const glm::dvec3 o = basis.eye;
         const double b = glm::dot(o, d), c = glm::dot(o, o) - radius * radius;
         const double discriminant = b * b - c;
@@ -56,8 +56,8 @@ struct Ball {
     // How far the ray through (px, py) passes from the ball's surface, in radians as seen from
     // the eye: > 0 outside, < 0 inside the silhouette.
     double angle_outside(double px, double py) const {
-        const glm::dvec3 d(primary_ray_direction(basis, kWidth, kHeight, float(px - 0.5),
-                                                 float(py - 0.5)));
+        const glm::dvec3 d(
+            primary_ray_direction(basis, kWidth, kHeight, float(px - 0.5), float(py - 0.5)));
         const glm::dvec3 to_centre = -basis.eye;
         const double centre_angle =
             std::acos(std::clamp(glm::dot(d, glm::normalize(to_centre)), -1.0, 1.0));
@@ -65,8 +65,8 @@ struct Ball {
     }
     // The ball's normal where the ray through (px, py) meets it (which it must).
     glm::dvec3 normal(double px, double py) const {
-        const glm::dvec3 d(primary_ray_direction(basis, kWidth, kHeight, float(px - 0.5),
-                                                 float(py - 0.5)));
+        const glm::dvec3 d(
+            primary_ray_direction(basis, kWidth, kHeight, float(px - 0.5), float(py - 0.5)));
         return glm::normalize(basis.eye + d * distance(px, py));
     }
 };
@@ -129,7 +129,8 @@ IfsScene ifs_ball() {
     ifs.bounds = {glm::dvec3(0.0), std::sqrt(3.0)};
     ifs.default_depth = 0;
     ifs.max_depth = 4;
-    ifs.cameras.push_back({"default", CameraView{{0.0, -6.0, 0.0}, {0.0, 0.0, 0.0}, {0, 0, 1}, 60}});
+    ifs.cameras.push_back(
+        {"default", CameraView{{0.0, -6.0, 0.0}, {0.0, 0.0, 0.0}, {0, 0, 1}, 60}});
     ifs.lights.push_back(Light{});
     return ifs;
 }
@@ -248,7 +249,8 @@ TEST_P(StillLayersTest, EveryLayerMatchesTheAnalyticBall) {
                     }
                     break;
                 }
-                case Coverage::Edge: break;
+                case Coverage::Edge:
+                    break;
             }
         }
     }
@@ -305,7 +307,8 @@ TEST_P(StillLayersTest, TheSwitchLeavesTheImageUnchanged) {
 
 INSTANTIATE_TEST_SUITE_P(Modes, StillLayersTest,
                          ::testing::Values(LayerCase{"ShadedDe", RenderMode::Shaded, false, 16},
-                                           LayerCase{"ShadedDeOneSample", RenderMode::Shaded, false, 1},
+                                           LayerCase{"ShadedDeOneSample", RenderMode::Shaded, false,
+                                                     1},
                                            LayerCase{"PathDe", RenderMode::Path, false, 8},
                                            LayerCase{"BruteDe", RenderMode::Brute, false, 4},
                                            LayerCase{"ShadedIfs", RenderMode::Shaded, true, 16},
@@ -335,8 +338,8 @@ TEST(StillLayers, RgbaRowsHoldTheStraightColourAndCoverage) {
     const Frame frame = four_pixels();
     std::vector<uint16_t> rgba(16);
     rgba16_linear_rows(frame, 1.0f, whole_frame(frame), rgba);
-    const std::vector<uint16_t> expected{32768, 16384, 8192,  65535, 26214, 13107, 6554, 32768,
-                                         0,     0,     0,     0,     65535, 32768, 0,    65535};
+    const std::vector<uint16_t> expected{32768, 16384, 8192, 65535, 26214, 13107, 6554, 32768,
+                                         0,     0,     0,    0,     65535, 32768, 0,    65535};
     EXPECT_EQ(rgba, expected);
     std::vector<uint8_t> rgba8(16);
     rgba8_rows(frame, DisplayTransform{1.0f, ToneMap::Clamp}, whole_frame(frame), rgba8);
@@ -345,8 +348,8 @@ TEST(StillLayers, RgbaRowsHoldTheStraightColourAndCoverage) {
     EXPECT_EQ(rgba8[7], 128);
     EXPECT_EQ(std::vector<uint8_t>(rgba8.begin() + 8, rgba8.begin() + 12),
               std::vector<uint8_t>(4, 0));
-    const std::vector<ExrLayer> layers = exr_layers(frame, Aovs{false, false, true, true},
-                                                    whole_frame(frame));
+    const std::vector<ExrLayer> layers =
+        exr_layers(frame, Aovs{false, false, true, true}, whole_frame(frame));
     ASSERT_EQ(layers.size(), 3u);
     EXPECT_EQ(layers[0].values, frame.foreground);  // premultiplied
     EXPECT_EQ(layers[1].values[2], std::numeric_limits<float>::infinity());
@@ -374,19 +377,35 @@ std::vector<float> exr_channel(const fs::path& file, const char* name) {
 // EXR's A is 1 on the ball, 0 off it and fractional at its edge, its depth the analytic one (+Inf
 // where missed), its normal and albedo the ball's, its colour premultiplied (0 where A is 0); the
 // PNG with --alpha has the same coverage in 8 and 16 bits, the EXR's colour over its coverage
-// (straight), the plain image's colour where fully covered and black where not covered. The shaded mode's layers, once refused, are there.
+// (straight), the plain image's colour where fully covered and black where not covered. The shaded
+// mode's layers, once refused, are there.
 TEST(StillLayersCli, ExrAndPngCarryCoverageAndTheBallsLayers) {
     test::TempDir dir("fgr_layers");
     const fs::path ball_source = dir.path() / "ball.cl";
     std::ofstream(ball_source) << "real scene_de(vec3 p, PARAMS) { (void)fgr_params; "
                                   "return v3_length(p) - 1.5f; }\n";
-    const std::vector<std::string> args{"render",     "mandelbulb",  "--kernel-source",
-                                        ball_source.string(), "--eye", "0,-6,0",
-                                        "--target",   "0,0,0",       "--up",
-                                        "0,0,1",      "--fov",       "60",
-                                        "--width",    std::to_string(kWidth), "--height",
-                                        std::to_string(kHeight), "--spp", "8",
-                                        "--set", "tone_map=clamp", "--set", "exposure=1"};
+    const std::vector<std::string> args{"render",
+                                        "mandelbulb",
+                                        "--kernel-source",
+                                        ball_source.string(),
+                                        "--eye",
+                                        "0,-6,0",
+                                        "--target",
+                                        "0,0,0",
+                                        "--up",
+                                        "0,0,1",
+                                        "--fov",
+                                        "60",
+                                        "--width",
+                                        std::to_string(kWidth),
+                                        "--height",
+                                        std::to_string(kHeight),
+                                        "--spp",
+                                        "8",
+                                        "--set",
+                                        "tone_map=clamp",
+                                        "--set",
+                                        "exposure=1"};
     const auto render = [&](const std::string& file, std::vector<std::string> extra) {
         std::vector<std::string> all = args;
         all.insert(all.end(), {"-o", (dir.path() / file).string()});
@@ -433,7 +452,8 @@ TEST(StillLayersCli, ExrAndPngCarryCoverageAndTheBallsLayers) {
             }
             if (a[i] == 1.0f) {
                 EXPECT_EQ(r[i], plain_r[i]);
-                for (int k = 0; k < 3; ++k) EXPECT_EQ(rgba.samples[i * 4 + k], plain.rgb[i * 3 + k]);
+                for (int k = 0; k < 3; ++k)
+                    EXPECT_EQ(rgba.samples[i * 4 + k], plain.rgb[i * 3 + k]);
             }
             const Coverage coverage = classify(ball, x, y);
             if (coverage == Coverage::Outside) {

@@ -21,8 +21,8 @@ size_t frame_pixels(const Frame& frame) {
 void require_layer(const Frame& frame, const std::vector<float>& values, size_t per_pixel,
                    const char* layer) {
     if (values.size() != frame_pixels(frame) * per_pixel) {
-        throw std::invalid_argument(fmt::format(
-            "the frame has no {} layer: render it with KernelSwitches::aovs", layer));
+        throw std::invalid_argument(
+            fmt::format("the frame has no {} layer: render it with KernelSwitches::aovs", layer));
     }
 }
 
@@ -96,8 +96,7 @@ void rgba8_rows(const Frame& frame, const DisplayTransform& display, RowBand ban
     }
 }
 
-void rgba16_linear_rows(const Frame& frame, float exposure, RowBand band,
-                        std::span<uint16_t> out) {
+void rgba16_linear_rows(const Frame& frame, float exposure, RowBand band, std::span<uint16_t> out) {
     require_layer(frame, frame.alpha, 1, "alpha");
     require_layer(frame, frame.foreground, 3, "foreground");
     require_band(frame, band, out.size(), 4);
@@ -121,9 +120,13 @@ std::vector<ExrLayer> exr_layers(const Frame& frame, const Aovs& aovs, RowBand b
     if (aovs.normal) require_layer(frame, frame.normal, 3, "normal");
     // Premultiplied, as EXR has it: the foreground is the colour times its coverage already.
     std::vector<ExrLayer> layers{
-        {"", {"R", "G", "B"}, band_values(frame, aovs.alpha ? frame.foreground : frame.linear, 3, band)}};
-    if (aovs.albedo) layers.push_back({"albedo", {"R", "G", "B"}, band_values(frame, frame.albedo, 3, band)});
-    if (aovs.normal) layers.push_back({"normal", {"X", "Y", "Z"}, band_values(frame, frame.normal, 3, band)});
+        {"",
+         {"R", "G", "B"},
+         band_values(frame, aovs.alpha ? frame.foreground : frame.linear, 3, band)}};
+    if (aovs.albedo)
+        layers.push_back({"albedo", {"R", "G", "B"}, band_values(frame, frame.albedo, 3, band)});
+    if (aovs.normal)
+        layers.push_back({"normal", {"X", "Y", "Z"}, band_values(frame, frame.normal, 3, band)});
     if (aovs.depth) {
         ExrLayer depth{"depth", {"Z"}, band_values(frame, frame.depth, 1, band)};
         for (float& z : depth.values) {

@@ -61,8 +61,7 @@ void rgba8_rows(const Frame& frame, const DisplayTransform& display, RowBand ban
 
 // 16-bit linear RGBA (4 samples a pixel) for a 16-bit PNG with alpha: the straight colour times
 // `exposure`, clamped to [0, 1], and alpha, each times 65535.
-void rgba16_linear_rows(const Frame& frame, float exposure, RowBand band,
-                        std::span<uint16_t> out);
+void rgba16_linear_rows(const Frame& frame, float exposure, RowBand band, std::span<uint16_t> out);
 
 // The EXR layers of the band: R, G, B (the linear colour as rendered; the premultiplied
 // foreground when aovs.alpha), then albedo.R/G/B, normal.X/Y/Z, depth.Z and A as `aovs` asks.
