@@ -20,7 +20,15 @@
  * Planes: 0-2 radiance (summed over samples), 3 depth of the first hit (sample 0), then the
  * auxiliary outputs summed over samples: 4-6 albedo of the first hit, 7-9 its normal, 10 alpha
  * (1 where the camera ray met the surface); with FGR_STATS 11 the DE evaluations each lane took
- * part in and 12 those its packet made (for lane utilisation), summed over samples. */
+ * part in and 12 those its packet made (for lane utilisation), summed over samples; with
+ * FGR_AOVS (a still that writes alpha) then the radiance of the samples whose camera ray met the
+ * surface (3 planes, FGR_PATH_FOREGROUND_PLANE): the foreground without the environment seen
+ * past it, for straight or premultiplied alpha. */
+#ifdef FGR_STATS
+#define FGR_PATH_FOREGROUND_PLANE 13
+#else
+#define FGR_PATH_FOREGROUND_PLANE 11
+#endif
 
 /* A light as the path tracer reads it: type (FGR_LIGHT_POINT or directional), the unit direction
  * towards a directional light or a point light's position, radiance (directional: of its disc;
@@ -383,5 +391,12 @@ __kernel void fgr_render(FGR_RENDER_ARGS, __constant const float* lights, path_s
 #ifdef FGR_STATS
     accumulate_plane(convert_real(lane_steps), sample, tile, planes + 11 * plane_size);
     accumulate_plane(fgr_real((float)packet_steps), sample, tile, planes + 12 * plane_size);
+#endif
+#ifdef FGR_AOVS
+    /* alpha is 1 or 0 for one sample: the whole radiance of a sample whose camera ray hit. */
+    __global float* foreground = planes + FGR_PATH_FOREGROUND_PLANE * plane_size;
+    accumulate_plane(radiance.x * alpha, sample, tile, foreground);
+    accumulate_plane(radiance.y * alpha, sample, tile, foreground + plane_size);
+    accumulate_plane(radiance.z * alpha, sample, tile, foreground + 2 * plane_size);
 #endif
 }

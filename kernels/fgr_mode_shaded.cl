@@ -5,14 +5,43 @@
  * Arguments: those every mode takes (planes .. PARAMS, see fgr_camera.cl), then the scene's
  * lights (FGR_LIGHT_FLOATS floats each, see fgr_shade.cl) and their count. */
 
+#ifdef FGR_STATS
+#define FGR_SHADED_STATS_PLANES 4
+#else
+#define FGR_SHADED_STATS_PLANES 0
+#endif
 #ifdef FGR_GEOMETRY_IFS
 /* IFS scenes also write the level of the node each pixel hit (-1: missed), after the stats
  * planes: how deep the footprint and the depth slider let the image go. */
-#ifdef FGR_STATS
-#define FGR_IFS_LEVEL_PLANE 8
+#define FGR_IFS_LEVEL_PLANE (4 + FGR_SHADED_STATS_PLANES)
+#define FGR_SHADED_AOV_PLANE (FGR_IFS_LEVEL_PLANE + 1)
 #else
-#define FGR_IFS_LEVEL_PLANE 4
+#define FGR_SHADED_AOV_PLANE (4 + FGR_SHADED_STATS_PLANES)
 #endif
+
+#ifdef FGR_AOVS
+/* With FGR_AOVS (a still that writes alpha or layers), from FGR_SHADED_AOV_PLANE on, summed over
+ * samples like the colour: the first hit's albedo (3 planes) and shading normal (3), coverage
+ * (1 for a sample whose camera ray met the surface), and the colour of those samples alone (3:
+ * the foreground without the background, for straight or premultiplied alpha). Zero for a sample
+ * that missed, as in the path mode. */
+inline void store_aovs(vec3 albedo, vec3 normal, mask hit, vec3 colour, int sample, int tile,
+                       __global float* planes, int plane_size) {
+    const vec3 none = v3_splat(0.0f, 0.0f, 0.0f);
+    const vec3 foreground = v3_select(none, colour, hit);
+    const real coverage = select(fgr_real(0.0f), fgr_real(1.0f), hit);
+    __global float* aov = planes + FGR_SHADED_AOV_PLANE * plane_size;
+    accumulate_plane(albedo.x, sample, tile, aov);
+    accumulate_plane(albedo.y, sample, tile, aov + plane_size);
+    accumulate_plane(albedo.z, sample, tile, aov + 2 * plane_size);
+    accumulate_plane(normal.x, sample, tile, aov + 3 * plane_size);
+    accumulate_plane(normal.y, sample, tile, aov + 4 * plane_size);
+    accumulate_plane(normal.z, sample, tile, aov + 5 * plane_size);
+    accumulate_plane(coverage, sample, tile, aov + 6 * plane_size);
+    accumulate_plane(foreground.x, sample, tile, aov + 7 * plane_size);
+    accumulate_plane(foreground.y, sample, tile, aov + 8 * plane_size);
+    accumulate_plane(foreground.z, sample, tile, aov + 9 * plane_size);
+}
 #endif
 
 /* Renders sample `sample` of every pixel of the tile. Sample 0 writes the planes; later samples
@@ -35,11 +64,19 @@ __kernel void fgr_render(FGR_RENDER_ARGS, __constant const float* lights, int li
     vec3 colour = background(dir);
     real depth = fgr_real(-1.0f);
     mask secondary_steps = (mask)(0); /* shadow, reflection and refraction rays' DE evaluations */
+#ifdef FGR_AOVS
+    vec3 first_albedo = v3_splat(0.0f, 0.0f, 0.0f), first_normal = first_albedo;
+#endif
     if (fgr_any(hit.hit)) {
         vec3 p = v3_mad(eye, dir, hit.t);
         real eps = fmax(hit.t * camera.pixel_angle * param_normal_epsilon, FGR_MIN_LENGTH);
         vec3 n = surface_normal(hit, p, eps, PARAMS_PASS);
-        vec3 lit = shade_surface(p, n, surface_albedo(hit, p, PARAMS_PASS), dir, eps, hit.steps,
+        const vec3 hit_albedo = surface_albedo(hit, p, PARAMS_PASS);
+#ifdef FGR_AOVS
+        first_albedo = v3_select(first_albedo, hit_albedo, hit.hit);
+        first_normal = v3_select(first_normal, n, hit.hit);
+#endif
+        vec3 lit = shade_surface(p, n, hit_albedo, dir, eps, hit.steps,
                                  hit.t, hit.hit, 1, limits, lights, light_count,
                                  &secondary_steps, PARAMS_PASS);
 #ifdef FGR_EFFECT_REFRACTION
@@ -65,6 +102,9 @@ __kernel void fgr_render(FGR_RENDER_ARGS, __constant const float* lights, int li
     accumulate_plane(colour.y, sample, tile, planes + plane_size);
     accumulate_plane(colour.z, sample, tile, planes + 2 * plane_size);
     if (sample == 0) fgr_store(depth, tile, planes + 3 * plane_size);
+#ifdef FGR_AOVS
+    store_aovs(first_albedo, first_normal, hit.hit, colour, sample, tile, planes, plane_size);
+#endif
 #ifdef FGR_GEOMETRY_IFS
     if (sample == 0) {
         fgr_store(convert_real(hit.leaf_depth), tile, planes + FGR_IFS_LEVEL_PLANE * plane_size);

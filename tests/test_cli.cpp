@@ -274,7 +274,6 @@ const std::vector<BadInput> kBadInputs = {
     {"NegativeClamp", render_args({"--mode", "path", "--clamp", "-1"}), 2, {"clamp"}},
     {"AovWithPng", render_args({"--aov", "albedo"}), 2, {"aov", ".exr"}},
     {"UnknownAov", render_args({"--aov", "velocity"}), 2, {"velocity"}, "out.exr"},
-    {"AlbedoAovInShadedMode", render_args({"--aov", "albedo"}), 2, {"path"}, "out.exr"},
     {"ZeroTimeLimit", render_args({"--time-limit", "0"}), 2, {"time-limit"}},
     {"EnvironmentCommandBadOutput", {"environment", "studio", "-o", "studio.png"}, 2, {".hdr"}},
     {"EnvironmentCommandUnknownKind", {"environment", "disco", "-o", "x.hdr"}, 2, {"disco"}},

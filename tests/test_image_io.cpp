@@ -228,5 +228,38 @@ TEST_F(ImageIo16, InvalidImageLeavesTheTargetUntouched) {
     EXPECT_EQ(file_bytes(file), before);
 }
 
+// With alpha the file is RGBA and keeps every sample as given (straight alpha: the colour is not
+// multiplied by it), in 8 and 16 bits; read_png drops the alpha; an alpha of the wrong size is
+// refused before anything is written.
+TEST_F(ImageIo16, AlphaMakesAnRgbaFileWithTheSamplesAsGiven) {
+    const fs::path file8 = directory_ / "rgba8.png", file16 = directory_ / "rgba16.png";
+    Image8 image8 = gradient(3, 2);
+    image8.alpha = {0, 1, 128, 254, 255, 7};
+    write_png(file8, image8);
+    const PngSamples read8 = read_png_samples(file8);
+    ASSERT_EQ(read8.channels, 4);
+    ASSERT_EQ(read8.bit_depth, 8);
+    ASSERT_EQ(read8.samples.size(), 24u);
+    for (std::size_t i = 0; i < 6; ++i) {
+        for (std::size_t c = 0; c < 3; ++c) {
+            EXPECT_EQ(read8.samples[i * 4 + c], image8.rgb[i * 3 + c]);
+        }
+        EXPECT_EQ(read8.samples[i * 4 + 3], image8.alpha[i]);
+    }
+    EXPECT_EQ(read_png(file8).rgb, image8.rgb);
+
+    Image16 image16{2, 1, {1, 256, 65535, 40000, 0, 3}, {65535, 12345}};
+    write_png16_linear(file16, image16);
+    const PngSamples read16 = read_png_samples(file16);
+    ASSERT_EQ(read16.channels, 4);
+    ASSERT_EQ(read16.bit_depth, 16);
+    EXPECT_EQ(read16.samples,
+              (std::vector<uint16_t>{1, 256, 65535, 65535, 40000, 0, 3, 12345}));
+
+    image8.alpha.pop_back();
+    EXPECT_THROW(write_png(directory_ / "short.png", image8), std::invalid_argument);
+    EXPECT_FALSE(fs::exists(directory_ / "short.png"));
+}
+
 }  // namespace
 }  // namespace fgr

@@ -28,6 +28,7 @@
 #include "fgr/parameters.hpp"
 #include "fgr/program_cache.hpp"
 #include "fgr/renderer.hpp"
+#include "fgr/still_layers.hpp"
 #include "fgr/tiled_still.hpp"
 #include "test_scenes.hpp"
 
@@ -47,10 +48,11 @@ protected:
         delete device_;
     }
 
+    // With the layers' planes (KernelSwitches::aovs): alpha, albedo and normal in every mode.
     static std::unique_ptr<Renderer> renderer(const Scene& scene, RenderMode mode) {
-        return std::make_unique<Renderer>(
-            *device_, *cache_, scene,
-            KernelSwitches{preferred_packet_width(device_->info), scene.effects, false, false, mode});
+        return std::make_unique<Renderer>(*device_, *cache_, scene,
+                                          KernelSwitches{preferred_packet_width(device_->info),
+                                                         scene.effects, false, false, mode, true});
     }
 
     static FrameRequest request(const Scene& scene, int width, int height, int samples) {
@@ -134,15 +136,12 @@ TiledOutput exr_output(const fs::path& path, Aovs aovs) {
     return output;
 }
 
-// Renders `whole` untiled and tiled (tile side `tile`) into an EXR with every layer the mode has
-// and requires every channel of every pixel to be the same float.
+// Renders `whole` untiled and tiled (tile side `tile`) into an EXR with every layer and requires
+// every channel of every pixel to be the same float as the frame's.
 void expect_tiled_equals_untiled(Renderer& renderer, const FrameRequest& whole, int tile,
-                                 const fs::path& file, bool surface_layers) {
+                                 const fs::path& file) {
     const Frame frame = renderer.render(whole);
-    Aovs aovs;
-    aovs.depth = true;
-    aovs.alpha = true;
-    aovs.albedo = aovs.normal = surface_layers;
+    const Aovs aovs{true, true, true, true};
     TiledSettings settings;
     settings.tile_size = tile;
     const TiledResult result = render_tiled_still(renderer, whole, exr_output(file, aovs), settings);
@@ -150,18 +149,20 @@ void expect_tiled_equals_untiled(Renderer& renderer, const FrameRequest& whole, 
     ASSERT_GT(result.tiles, 4) << "the image must span several tiles";
     EXPECT_EQ(result.hits, frame.hits);
     int width = 0, height = 0;
-    const auto channels = read_exr_channels(
-        file, {"R", "G", "B", "depth.Z", "A"}, &width, &height);
+    const auto read = read_exr_channels(
+        file, {"R", "G", "B", "albedo.R", "albedo.G", "albedo.B", "normal.X", "normal.Y",
+               "normal.Z", "depth.Z", "A"},
+        &width, &height);
     ASSERT_EQ(width, whole.width);
     ASSERT_EQ(height, whole.height);
-    for (int c = 0; c < 3; ++c) {
-        EXPECT_EQ(differing(frame.linear, 3, c, channels[size_t(c)]), 0) << "channel " << c;
-    }
-    EXPECT_EQ(differing(frame.depth, 1, 0, channels[3]), 0) << "depth";
-    if (surface_layers) {
-        const auto normal = read_exr_channels(file, {"normal.X", "normal.Y", "normal.Z"}, &width, &height);
-        for (int c = 0; c < 3; ++c) {
-            EXPECT_EQ(differing(frame.normal, 3, c, normal[size_t(c)]), 0) << "normal " << c;
+    // With alpha the colour is the premultiplied foreground (fgr/still_layers.hpp).
+    const std::vector<std::pair<const std::vector<float>*, int>> planes{
+        {&frame.foreground, 3}, {&frame.albedo, 3}, {&frame.normal, 3}, {&frame.depth, 1},
+        {&frame.alpha, 1}};
+    size_t channel = 0;
+    for (const auto& [plane, count] : planes) {
+        for (int c = 0; c < count; ++c, ++channel) {
+            EXPECT_EQ(differing(*plane, count, c, read[channel]), 0) << "channel " << channel;
         }
     }
 }
@@ -171,14 +172,13 @@ TEST_F(TiledStillTest, TiledEqualsUntiledPerPixelInTheShadedMode) {
     auto built = renderer(scene, RenderMode::Shaded);
     // 2 samples: the jittered second sample must follow the pixel, not the tile.
     expect_tiled_equals_untiled(*built, request(scene, 150, 110, 2), 32,
-                                temp_.path() / "shaded.exr", false);
+                                temp_.path() / "shaded.exr");
 }
 
 TEST_F(TiledStillTest, TiledEqualsUntiledPerPixelInThePathMode) {
     const Scene scene = test::built_scene("mandelbulb.so");
     auto built = renderer(scene, RenderMode::Path);
-    expect_tiled_equals_untiled(*built, request(scene, 120, 90, 3), 32, temp_.path() / "path.exr",
-                                true);
+    expect_tiled_equals_untiled(*built, request(scene, 120, 90, 3), 32, temp_.path() / "path.exr");
 }
 
 TEST_F(TiledStillTest, TiledEqualsUntiledPerPixelForAnIfsScene) {
@@ -186,7 +186,7 @@ TEST_F(TiledStillTest, TiledEqualsUntiledPerPixelForAnIfsScene) {
         read_ifs_file(fs::path(FGR_TEST_PLUGIN_DIR) / "sierpinski.ifs.json"), "sierpinski.ifs.json");
     auto built = renderer(scene, RenderMode::Shaded);
     expect_tiled_equals_untiled(*built, request(scene, 130, 100, 1), 32,
-                                temp_.path() / "ifs.exr", false);
+                                temp_.path() / "ifs.exr");
 }
 
 // The brute mode shades from neighbouring pixels' depths up to 256 pixels away: tiles in the
@@ -197,7 +197,7 @@ TEST_F(TiledStillTest, TiledEqualsUntiledPerPixelInTheBruteModeAcrossSeams) {
     auto built = renderer(scene, RenderMode::Brute);
     FrameRequest whole = request(scene, 720, 64, 2);
     whole.view.fov_degrees = 70.0f;
-    expect_tiled_equals_untiled(*built, whole, 64, temp_.path() / "brute.exr", true);
+    expect_tiled_equals_untiled(*built, whole, 64, temp_.path() / "brute.exr");
 }
 
 TEST_F(TiledStillTest, StreamedPngTiffAndExrReadBackAsTheFrame) {
@@ -210,6 +210,7 @@ TEST_F(TiledStillTest, StreamedPngTiffAndExrReadBackAsTheFrame) {
 
     TiledOutput png;
     png.path = temp_.path() / "still.png";
+    png.display = display_transform(scene, whole.params);
     render_tiled_still(*built, whole, png, settings);
     const Image8 read = read_png(png.path);
     ASSERT_EQ(read.width, 600);
@@ -227,12 +228,9 @@ TEST_F(TiledStillTest, StreamedPngTiffAndExrReadBackAsTheFrame) {
     ASSERT_EQ(height, 400);
     ASSERT_EQ(channels, 4);
     ASSERT_EQ(bits, 8);
-    long wrong = 0;
-    for (size_t i = 0; i < frame.depth.size(); ++i) {
-        for (int c = 0; c < 3; ++c) wrong += samples[i * 4 + size_t(c)] != frame.image.rgb[i * 3 + size_t(c)];
-        wrong += samples[i * 4 + 3] != (frame.depth[i] >= 0.0f ? 255 : 0);
-    }
-    EXPECT_EQ(wrong, 0);
+    std::vector<uint8_t> rgba(frame.depth.size() * 4);
+    rgba8_rows(frame, tiff.display, whole_frame(frame), rgba);
+    EXPECT_EQ(std::vector<uint16_t>(rgba.begin(), rgba.end()), samples);
 
     TiledOutput linear = tiff;
     linear.path = temp_.path() / "linear.tif";
@@ -242,7 +240,7 @@ TEST_F(TiledStillTest, StreamedPngTiffAndExrReadBackAsTheFrame) {
     const std::vector<uint16_t> deep = read_tiff(linear.path, &width, &height, &channels, &bits);
     ASSERT_EQ(bits, 16);
     ASSERT_EQ(channels, 3);
-    const Image16 expected = linear_image16(frame, 1.0f);
+    const Image16 expected = linear_image16(frame, png.display.exposure);
     EXPECT_EQ(deep, expected.rgb);
 
     const fs::path exr = temp_.path() / "still.exr";

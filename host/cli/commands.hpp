@@ -145,6 +145,7 @@ struct RenderOptions {
     ModeOptions mode;
     std::optional<double> time_limit;  // seconds: stop adding samples after this long
     std::string aovs;                  // "albedo,normal,depth,alpha": EXR layers beside the image
+    bool alpha = false;  // coverage as alpha: RGBA PNG (straight), EXR A (premultiplied colour)
     bool dev = false;  // read the scene's .cl file from disk, not the plugin's embedded copy
     std::optional<int> tile_size;  // render in tiles of about this side (also implied by size)
     bool resume = false;           // continue an interrupted tiled render from its tile store

@@ -174,10 +174,8 @@ StillJob still_job(const Scene& scene, const FrameRequest& request, const Render
     settings.precision = options.precision;
     settings.mode = chosen_mode(options.mode, scene);
     const Aovs aovs = parse_aovs(options.aovs);
-    if ((aovs.albedo || aovs.normal) && settings.mode == RenderMode::Shaded) {
-        throw UsageError(
-            "--aov albedo and normal come from the path and brute modes: add --mode path or brute");
-    }
+    // Every mode renders every layer; the kernel writes alpha and layers only when asked.
+    settings.aovs = options.alpha || aovs.need_aov_planes();
     if (settings.mode == RenderMode::Brute) {
         if (const uint64_t ignored = settings.effects & ~kBruteModeEffects) {
             spdlog::info("the brute mode shades in screen space and ignores {}",
@@ -267,8 +265,9 @@ void render_to_file(const Scene& scene, const FrameRequest& request, const Compu
                    double(stats.secondary_de_evaluations) / double(stats.pixels));
     }
     try {
-        write_still(output, frame, options.bit_depth,
-                    param_value(scene, request.params, "exposure"), aovs);
+        write_still(output, frame,
+                    StillOutput{options.bit_depth, display_transform(scene, request.params),
+                                options.alpha, aovs});
     } catch (const std::runtime_error& error) {
         throw RuntimeFailure(error.what());
     }
@@ -318,8 +317,11 @@ void add_frame_options(CLI::App* command, RenderOptions& options, int max_side) 
                         "8: tone-mapped sRGB PNG (default); 16: linear 16-bit PNG (exposure only)")
         ->check(CLI::IsMember({8, 16}));
     command->add_option("--aov", options.aovs,
-                        "EXR layers beside the linear image: albedo,normal,depth,alpha "
-                        "(albedo and normal need --mode path or brute)");
+                        "EXR layers beside the linear image, in every mode: albedo,normal,depth,"
+                        "alpha (alpha: as --alpha)");
+    command->add_flag("--alpha", options.alpha,
+                      "coverage as alpha with the background removed: an RGBA PNG (straight "
+                      "alpha), or an EXR's A channel (colour premultiplied)");
     add_mode_options(command, options.mode);
     command->add_option("--effects", options.effect_changes,
                         "change the scene's effects, e.g. +shadows,-ambient_occlusion");

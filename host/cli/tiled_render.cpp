@@ -11,6 +11,7 @@
 #include "fgr/parameters.hpp"
 #include "fgr/precision.hpp"
 #include "fgr/progress.hpp"
+#include "fgr/still_layers.hpp"
 #include "fgr/streaming_image.hpp"
 #include "fgr/tiled_still.hpp"
 
@@ -86,7 +87,9 @@ int render_tiled(const Scene& scene, const FrameRequest& request, const ComputeD
     output.format = image_format_of(output.path);
     output.bit_depth = options.bit_depth;
     output.aovs = job.aovs;
-    output.exposure = param_value(scene, whole.params, "exposure");
+    output.alpha = options.alpha;
+    if (output.format == ImageFormat::Exr) output.aovs.alpha = output.aovs.alpha || options.alpha;
+    output.display = display_transform(scene, whole.params);
 
     InterruptCatcher catcher;
     ProgressLine progress("tiles");

@@ -182,7 +182,6 @@ int command_video(const VideoOptions& options) {
                  timing.start, timing.frame_time(timing.frame_count() - 1),
                  in_double ? "double" : "float",
                  encoder ? ", encoding " + encoder->description() : "");
-    const float exposure = param_value(scene, job.request.params, "exposure");
     job.request.cancel = [] { return interrupted != 0; };
     VideoProgress progress(static_cast<int>(views.size()));
     for (size_t i = 0; i < views.size(); ++i) {
@@ -196,7 +195,9 @@ int command_video(const VideoOptions& options) {
         if (!options.frames_directory.empty()) {
             try {
                 write_still(frame_file(options, static_cast<int>(i)), frame,
-                            frame_options.bit_depth, exposure, job.aovs);
+                            StillOutput{frame_options.bit_depth,
+                                        display_transform(scene, job.request.params),
+                                        frame_options.alpha, job.aovs});
             } catch (const std::runtime_error& error) {
                 throw RuntimeFailure(error.what());
             }

@@ -87,10 +87,13 @@ struct PngPixels {
     int width = 0;
     int height = 0;
     int bit_depth = 8;
+    int channels = 3;               // 4: RGBA
     bool linear = false;            // gAMA 1.0 instead of sRGB
-    std::vector<uint8_t> storage;   // 16-bit samples, big-endian as PNG stores them
+    std::vector<uint8_t> storage;   // interleaved RGBA, or 16-bit samples big-endian as PNG has
     const uint8_t* bytes = nullptr;
-    std::size_t row_bytes() const { return std::size_t(width) * 3 * std::size_t(bit_depth / 8); }
+    std::size_t row_bytes() const {
+        return std::size_t(width) * std::size_t(channels) * std::size_t(bit_depth / 8);
+    }
 };
 
 template <typename Image>
@@ -108,11 +111,36 @@ void validate_image(const fs::path& path, const Image& image) {
             std::to_string(image.height) + " image needs " + std::to_string(expected) +
             " samples, has " + std::to_string(image.rgb.size()));
     }
+    if (!image.alpha.empty() && image.alpha.size() != expected / 3) {
+        throw std::invalid_argument("cannot write " + quoted(path) + ": alpha needs " +
+                                    std::to_string(expected / 3) + " samples, has " +
+                                    std::to_string(image.alpha.size()));
+    }
+}
+
+// The image's samples in file order: RGB or RGBA interleaved, 16-bit ones as big-endian bytes.
+template <typename Image>
+std::vector<uint8_t> file_samples(const Image& image) {
+    constexpr bool wide = sizeof(image.rgb[0]) == 2;
+    const bool with_alpha = !image.alpha.empty();
+    const std::size_t pixels = image.rgb.size() / 3;
+    std::vector<uint8_t> bytes;
+    bytes.reserve(pixels * (with_alpha ? 4 : 3) * (wide ? 2 : 1));
+    const auto put = [&](auto sample) {
+        if constexpr (wide) bytes.push_back(static_cast<uint8_t>(sample >> 8));
+        bytes.push_back(static_cast<uint8_t>(sample & 0xff));
+    };
+    for (std::size_t i = 0; i < pixels; ++i) {
+        for (std::size_t c = 0; c < 3; ++c) put(image.rgb[i * 3 + c]);
+        if (with_alpha) put(image.alpha[i]);
+    }
+    return bytes;
 }
 
 void write_rows(png_structp png, png_infop info, const PngPixels& image) {
     png_set_IHDR(png, info, static_cast<png_uint_32>(image.width),
-                 static_cast<png_uint_32>(image.height), image.bit_depth, PNG_COLOR_TYPE_RGB,
+                 static_cast<png_uint_32>(image.height), image.bit_depth,
+                 image.channels == 4 ? PNG_COLOR_TYPE_RGB_ALPHA : PNG_COLOR_TYPE_RGB,
                  PNG_INTERLACE_NONE, PNG_COMPRESSION_TYPE_DEFAULT, PNG_FILTER_TYPE_DEFAULT);
     if (image.linear) {
         png_set_gAMA(png, info, 1.0);
@@ -198,6 +226,40 @@ bool decode(PngReader& reader, Image8& image, std::vector<png_bytep>& rows) {
     return true;
 }
 
+void read_samples(png_structp png, png_infop info, PngSamples& image,
+                  std::vector<uint8_t>& bytes, std::vector<png_bytep>& rows) {
+    png_read_info(png, info);
+    const int type = png_get_color_type(png, info);
+    if (type != PNG_COLOR_TYPE_RGB && type != PNG_COLOR_TYPE_RGB_ALPHA) {
+        png_error(png, "not an RGB or RGBA PNG");
+    }
+    png_set_interlace_handling(png);
+    png_read_update_info(png, info);
+    image.width = static_cast<int>(png_get_image_width(png, info));
+    image.height = static_cast<int>(png_get_image_height(png, info));
+    image.channels = type == PNG_COLOR_TYPE_RGB_ALPHA ? 4 : 3;
+    image.bit_depth = png_get_bit_depth(png, info);
+    if (std::size_t(image.width) * std::size_t(image.height) > kMaxReadPixels) {
+        png_error(png, "image too large");
+    }
+    const std::size_t stride = png_get_rowbytes(png, info);
+    bytes.resize(stride * std::size_t(image.height));
+    rows.resize(std::size_t(image.height));
+    for (std::size_t y = 0; y < rows.size(); ++y) rows[y] = bytes.data() + y * stride;
+    png_read_image(png, rows.data());
+    png_read_end(png, nullptr);
+}
+
+// False (message in reader.error) when libpng failed; see encode() for why it has no locals.
+bool decode_samples(PngReader& reader, PngSamples& image, std::vector<uint8_t>& bytes,
+                    std::vector<png_bytep>& rows) {
+    if (setjmp(png_jmpbuf(reader.png))) {
+        return false;
+    }
+    read_samples(reader.png, reader.info, image, bytes, rows);
+    return true;
+}
+
 bool has_png_signature(std::FILE* file) {
     png_byte signature[kPngSignatureBytes];
     return std::fread(signature, 1, sizeof signature, file) == sizeof signature &&
@@ -220,7 +282,13 @@ void write_png(const fs::path& path, const Image8& image) {
     PngPixels pixels;
     pixels.width = image.width;
     pixels.height = image.height;
-    pixels.bytes = image.rgb.data();
+    if (image.alpha.empty()) {
+        pixels.bytes = image.rgb.data();
+    } else {
+        pixels.channels = 4;
+        pixels.storage = file_samples(image);
+        pixels.bytes = pixels.storage.data();
+    }
     write_pixels_atomically(path, pixels);
 }
 
@@ -231,11 +299,8 @@ void write_png16_linear(const fs::path& path, const Image16& image) {
     pixels.height = image.height;
     pixels.bit_depth = 16;
     pixels.linear = true;
-    pixels.storage.reserve(image.rgb.size() * 2);
-    for (uint16_t sample : image.rgb) {
-        pixels.storage.push_back(static_cast<uint8_t>(sample >> 8));
-        pixels.storage.push_back(static_cast<uint8_t>(sample & 0xff));
-    }
+    pixels.channels = image.alpha.empty() ? 3 : 4;
+    pixels.storage = file_samples(image);
     pixels.bytes = pixels.storage.data();
     write_pixels_atomically(path, pixels);
 }
@@ -261,6 +326,37 @@ Image8 read_png(const fs::path& path) {
     std::vector<png_bytep> rows;
     if (!decode(reader, image, rows)) {
         fail_read(path, reader.error.message);
+    }
+    return image;
+}
+
+PngSamples read_png_samples(const fs::path& path) {
+    PngReader reader;
+    reader.file = std::fopen(path.c_str(), "rb");
+    if (reader.file == nullptr) {
+        fail_read(path, errno_message(errno));
+    }
+    if (!has_png_signature(reader.file)) {
+        fail_read(path, "not a PNG file");
+    }
+    reader.png = png_create_read_struct(PNG_LIBPNG_VER_STRING, &reader.error, record_png_error,
+                                        ignore_png_warning);
+    if (reader.png == nullptr || (reader.info = png_create_info_struct(reader.png)) == nullptr) {
+        fail_read(path, "out of memory");
+    }
+    png_init_io(reader.png, reader.file);
+    png_set_sig_bytes(reader.png, static_cast<int>(kPngSignatureBytes));
+    PngSamples image;
+    std::vector<uint8_t> bytes;
+    std::vector<png_bytep> rows;
+    if (!decode_samples(reader, image, bytes, rows)) {
+        fail_read(path, reader.error.message);
+    }
+    const bool wide = image.bit_depth == 16;
+    image.samples.resize(bytes.size() / (wide ? 2 : 1));
+    for (std::size_t i = 0; i < image.samples.size(); ++i) {
+        image.samples[i] = wide ? static_cast<uint16_t>(bytes[2 * i] << 8 | bytes[2 * i + 1])
+                                : bytes[i];
     }
     return image;
 }

@@ -76,6 +76,7 @@ std::string switch_options(const KernelSwitches& switches) {
     }
     if (switches.stats) options += " -DFGR_STATS";
     if (switches.double_precision) options += " -DFGR_DOUBLE";
+    if (switches.aovs) options += " -DFGR_AOVS";
     // A plain literal (`z * 2.0`) is a double in OpenCL C, which a float packet refuses ("scalar
     // operand type has greater rank"), while a double build takes it: a scene could work on one
     // device and not another. In float builds literals are made single precision, so scenes

@@ -248,7 +248,7 @@ Renderer::Renderer(const ComputeDevice& device, ProgramCache& cache, const Scene
     render_kernel_ = cl::Kernel(program_, "fgr_render");
     probe_kernel_ = cl::Kernel(program_, "fgr_probe_de");
     normal_kernel_ = cl::Kernel(program_, "fgr_probe_normal");
-    mode_ = make_mode_kernel(switches_.mode, device, program_, scene);
+    mode_ = make_mode_kernel(switches_, device, program_, scene);
     warm_up();
 }
 

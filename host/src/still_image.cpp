@@ -21,7 +21,7 @@ namespace fgr {
 
 KernelSwitches still_switches(const ComputeDevice& device, const StillSettings& settings) {
     return {settings.packet_width ? settings.packet_width : preferred_packet_width(device.info),
-            settings.effects, settings.stats, false, settings.mode};
+            settings.effects, settings.stats, false, settings.mode, settings.aovs};
 }
 
 Renderer& choose_still_renderer(PrecisionRenderers& renderers, const Scene& scene,
@@ -118,45 +118,53 @@ std::string lower_extension(const std::filesystem::path& path) {
     return extension;
 }
 
-void write_exr_still(const std::filesystem::path& path, const Frame& frame, const Aovs& aovs) {
+// The frame's linear colour, or with alpha the straight foreground, as a PNG's pixels.
+void write_png_still(const std::filesystem::path& path, const Frame& frame,
+                     const StillOutput& output) {
     const int width = frame.image.width, height = frame.image.height;
     const size_t pixels = static_cast<size_t>(width) * static_cast<size_t>(height);
-    std::vector<ExrLayer> layers{{"", {"R", "G", "B"}, frame.linear}};
-    if ((aovs.albedo && frame.albedo.size() != pixels * 3) ||
-        (aovs.normal && frame.normal.size() != pixels * 3)) {
-        throw std::invalid_argument("albedo and normal layers come from --mode path only");
-    }
-    if (aovs.albedo) layers.push_back({"albedo", {"R", "G", "B"}, frame.albedo});
-    if (aovs.normal) layers.push_back({"normal", {"X", "Y", "Z"}, frame.normal});
-    if (aovs.depth) {
-        ExrLayer depth{"depth", {"Z"}, frame.depth};
-        for (float& z : depth.values) {
-            if (z < 0.0f) z = std::numeric_limits<float>::infinity();
+    if (!output.alpha) {
+        if (output.bit_depth == 16) {
+            write_png16_linear(path, linear_image16(frame, output.display.exposure));
+        } else {
+            write_png(path, frame.image);
         }
-        layers.push_back(std::move(depth));
+        return;
     }
-    if (aovs.alpha) {
-        // Path mode averages coverage over its samples; a shaded frame has its hits.
-        std::vector<float> alpha = frame.alpha;
-        if (alpha.size() != pixels) {
-            alpha.resize(pixels);
-            for (size_t i = 0; i < pixels; ++i) alpha[i] = frame.depth[i] >= 0.0f ? 1.0f : 0.0f;
+    const auto split = [pixels](const auto& rgba, auto& image) {
+        image.rgb.resize(pixels * 3);
+        image.alpha.resize(pixels);
+        for (size_t i = 0; i < pixels; ++i) {
+            for (size_t c = 0; c < 3; ++c) image.rgb[i * 3 + c] = rgba[i * 4 + c];
+            image.alpha[i] = rgba[i * 4 + 3];
         }
-        layers.push_back({"", {"A"}, std::move(alpha)});
+    };
+    if (output.bit_depth == 16) {
+        std::vector<uint16_t> rgba(pixels * 4);
+        rgba16_linear_rows(frame, output.display.exposure, whole_frame(frame), rgba);
+        Image16 image{width, height, {}, {}};
+        split(rgba, image);
+        write_png16_linear(path, image);
+    } else {
+        std::vector<uint8_t> rgba(pixels * 4);
+        rgba8_rows(frame, output.display, whole_frame(frame), rgba);
+        Image8 image{width, height, {}, {}};
+        split(rgba, image);
+        write_png(path, image);
     }
-    write_exr(path, width, height, layers);
 }
 
 }  // namespace
 
-void write_still(const std::filesystem::path& path, const Frame& frame, int bit_depth,
-                 float exposure, const Aovs& aovs) {
+void write_still(const std::filesystem::path& path, const Frame& frame,
+                 const StillOutput& output) {
     if (lower_extension(path) == ".exr") {
-        write_exr_still(path, frame, aovs);
-    } else if (bit_depth == 16) {
-        write_png16_linear(path, linear_image16(frame, exposure));
+        Aovs aovs = output.aovs;
+        aovs.alpha = aovs.alpha || output.alpha;
+        write_exr(path, frame.image.width, frame.image.height,
+                  exr_layers(frame, aovs, whole_frame(frame)));
     } else {
-        write_png(path, frame.image);
+        write_png_still(path, frame, output);
     }
 }
 

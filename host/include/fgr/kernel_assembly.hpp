@@ -20,6 +20,10 @@ struct KernelSwitches {
     bool stats = false;    // also record each pixel's march steps and whether it ran out of them
     bool double_precision = false;  // march and shade in double (needs cl_khr_fp64)
     RenderMode mode = RenderMode::Shaded;  // which entry point (kernels/fgr_mode_<name>.cl)
+    // Also write what a still's alpha and layers need (Frame::albedo, normal, alpha, foreground)
+    // where the mode does not always write it: the shaded mode's layers, the path mode's
+    // foreground. Off, the kernel is exactly the plain one.
+    bool aovs = false;
 };
 
 struct AssembledProgram {

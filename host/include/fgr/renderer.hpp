@@ -111,12 +111,18 @@ struct Frame {
     bool double_precision = false;  // rendered with double lanes (KernelSwitches)
     std::optional<MarchStats> stats;  // when the renderer was built with stats
     int samples = 0;            // per pixel in this frame (fewer than asked when `enough` said so)
-    // Render modes "path" and "brute": the first hit's albedo and shading normal (row-major
-    // RGB / XYZ) and, path only, coverage (1 where the camera ray met the surface), averaged
-    // over the samples, for compositing and denoising (EXR layers).
+    // The first hit's albedo and shading normal (row-major RGB / XYZ), coverage (the fraction of
+    // the samples whose camera ray met the surface) and the foreground (linear RGB of those
+    // samples alone, summed and divided by all samples: the colour without the background,
+    // premultiplied by coverage), for compositing and denoising (alpha and EXR layers). Albedo
+    // and normal are averages over all samples too, misses counting as zero. Filled by the path
+    // and brute modes always (brute: albedo, normal) and in every mode when the renderer was
+    // built with KernelSwitches::aovs; empty otherwise. The brute mode samples each pixel's
+    // centre only, so its coverage is 0 or 1.
     std::vector<float> albedo;
     std::vector<float> normal;
     std::vector<float> alpha;
+    std::vector<float> foreground;
     std::optional<LaneStats> lane_stats;  // path mode built with stats
     std::optional<IfsLevels> ifs_levels;  // IFS scenes in the shaded mode
     // Render mode "brute" built with stats: inside tests per pixel, all passes of this frame.

@@ -13,6 +13,7 @@
 #include "fgr/render_mode.hpp"
 #include "fgr/renderer.hpp"
 #include "fgr/scene.hpp"
+#include "fgr/still_layers.hpp"
 
 namespace fgr {
 
@@ -22,20 +23,13 @@ struct StillSettings {
     bool stats = false;     // count the primary rays' work (Frame::stats)
     Precision precision = Precision::Auto;
     RenderMode mode = RenderMode::Shaded;
+    bool aovs = false;      // also render alpha, albedo and normal (KernelSwitches::aovs)
 };
 
 // Samples per pixel a path-traced still takes unless told otherwise.
 constexpr int kPathSamples = 64;
 // Passes a brute-force still takes unless told otherwise.
 constexpr int kBrutePasses = 16;
-
-// Auxiliary layers an EXR still carries beside its linear image.
-struct Aovs {
-    bool albedo = false;  // the first hit's albedo (path mode)
-    bool normal = false;  // the first hit's shading normal (path mode)
-    bool depth = false;   // distance along the camera ray; +Inf where it missed
-    bool alpha = false;   // coverage: 1 where the camera ray met the surface
-};
 
 // "albedo,normal,depth,alpha" (any subset, any order; "" for none). Throws std::invalid_argument
 // naming an unknown layer.
@@ -65,12 +59,20 @@ long non_finite_pixels(const Frame& frame);
 // Throws std::runtime_error naming `scene` when `frame` has non-finite pixels (render_still's check).
 void check_finite_frame(const Scene& scene, const Frame& frame);
 
+// How a still is written (see still_layers.hpp for what alpha does to the colour).
+struct StillOutput {
+    int bit_depth = 8;         // PNG: 8, tone-mapped sRGB; 16, linear colour times the exposure
+    DisplayTransform display;  // the 8-bit image's (its exposure also scales the 16-bit one)
+    bool alpha = false;        // PNG: RGBA, straight alpha; EXR: A, premultiplied colour
+    Aovs aovs;                 // EXR layers beside the colour
+};
+
 // Writes `frame` by the file's extension. PNG: bit_depth 8, the tone-mapped sRGB image; 16, its
-// linear colour times `exposure` in a linear 16-bit PNG. EXR: the linear colour as rendered
-// (scene-referred: no exposure, no tone mapping) in 32-bit float channels R, G, B, plus the
-// layers `aovs` asks for (albedo.R/G/B, normal.X/Y/Z, depth.Z, A). Atomic; throws
-// std::runtime_error (and std::invalid_argument for a layer the frame does not have).
-void write_still(const std::filesystem::path& path, const Frame& frame, int bit_depth,
-                 float exposure, const Aovs& aovs = {});
+// linear colour times the exposure in a linear 16-bit PNG; RGBA with output.alpha. EXR: the
+// linear colour as rendered (scene-referred: no exposure, no tone mapping) in 32-bit float
+// channels R, G, B, plus the layers output.aovs asks for (albedo.R/G/B, normal.X/Y/Z, depth.Z,
+// A; A also with output.alpha). Atomic; throws std::runtime_error (and std::invalid_argument for
+// a layer the frame does not have: alpha, albedo and normal need StillSettings::aovs).
+void write_still(const std::filesystem::path& path, const Frame& frame, const StillOutput& output);
 
 }  // namespace fgr

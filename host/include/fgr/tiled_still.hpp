@@ -19,6 +19,7 @@
 
 #include "fgr/renderer.hpp"
 #include "fgr/still_image.hpp"
+#include "fgr/still_layers.hpp"
 #include "fgr/streaming_image.hpp"
 
 namespace fgr {
@@ -28,9 +29,9 @@ struct TiledOutput {
     std::filesystem::path path;
     ImageFormat format = ImageFormat::Png;
     int bit_depth = 8;    // PNG and TIFF: 8 (tone-mapped sRGB) or 16 (linear, exposure only)
-    bool alpha = false;   // PNG and TIFF: an alpha channel of coverage
+    bool alpha = false;   // PNG and TIFF: straight alpha of coverage (EXR: aovs.alpha)
     Aovs aovs{};          // EXR: layers beside R, G, B
-    float exposure = 1.0f;  // for 16-bit linear output
+    DisplayTransform display{};  // exposure and tone map (8-bit); exposure (16-bit linear)
 };
 
 // The channels a row of `output` holds, in order.

@@ -2,11 +2,14 @@
 
 namespace fgr {
 
-BruteMode::BruteMode(const ComputeDevice& device, const cl::Program& program, const Scene& scene)
+BruteMode::BruteMode(const ComputeDevice& device, const cl::Program& program, const Scene& scene,
+                     const KernelSwitches& switches)
     : device_(device),
       shade_kernel_(program, "fgr_brute_shade"),
       lights_(upload_floats(device, scene_light_values(scene))),
-      light_count_(static_cast<cl_int>(scene.lights.size())) {}
+      light_count_(static_cast<cl_int>(scene.lights.size())),
+      stats_(switches.stats),
+      aovs_(switches.aovs) {}
 
 namespace {
 
@@ -42,9 +45,23 @@ void BruteMode::read_back(const std::vector<float>& planes, const TileLayout& la
     const int width = frame.image.width, height = frame.image.height;  // the region's
     frame.albedo = planes_in_rows(planes, layout, kCommonPlanes, 3, width, height);
     frame.normal = planes_in_rows(planes, layout, kCommonPlanes + 3, 3, width, height);
+    if (aovs_) {
+        // Every pass samples the pixel's centre: it is covered or not, and its colour is the
+        // surface's where covered.
+        const size_t pixels = frame.depth.size();
+        frame.alpha.resize(pixels);
+        frame.foreground.resize(pixels * 3);
+        for (size_t i = 0; i < pixels; ++i) {
+            const bool covered = frame.depth[i] >= 0.0f;
+            frame.alpha[i] = covered ? 1.0f : 0.0f;
+            for (size_t c = 0; c < 3; ++c) {
+                frame.foreground[i * 3 + c] = covered ? frame.linear[i * 3 + c] : 0.0f;
+            }
+        }
+    }
     const size_t plane = static_cast<size_t>(layout.plane_size());
     const size_t stats_plane = kCommonPlanes + kSurfacePlanes;
-    if (planes.size() < plane * (stats_plane + 1)) return;
+    if (!stats_) return;
     double tests = 0.0;
     for (int y = 0; y < height; ++y) {
         for (int x = 0; x < width; ++x) {

@@ -13,7 +13,8 @@ namespace fgr {
 // tests (plane 10).
 class BruteMode final : public ModeKernel {
 public:
-    BruteMode(const ComputeDevice& device, const cl::Program& program, const Scene& scene);
+    BruteMode(const ComputeDevice& device, const cl::Program& program, const Scene& scene,
+              const KernelSwitches& switches);
     int extra_planes(const KernelSwitches& switches) const override;
     void bind(cl::Kernel& kernel, const FrameRequest& request, const TileLayout& layout) override;
     cl::Kernel* resolve_kernel() override { return &shade_kernel_; }
@@ -26,6 +27,8 @@ private:
     cl::Kernel shade_kernel_;
     cl::Buffer lights_;
     cl_int light_count_;
+    bool stats_;  // KernelSwitches::stats: the inside tests' plane
+    bool aovs_;   // KernelSwitches::aovs: coverage and foreground, from the depth on the host
     cl::Buffer state_;      // each pixel's best depth, tile-major; -1: no hit yet
     int state_floats_ = 0;  // its size
     int state_width_ = 0, state_height_ = 0;

@@ -59,7 +59,9 @@ cl::Buffer upload_floats(const ComputeDevice& device, const std::vector<float>& 
 // directions normalised, colour, intensity).
 std::vector<float> scene_light_values(const Scene& scene);
 
-std::unique_ptr<ModeKernel> make_mode_kernel(RenderMode mode, const ComputeDevice& device,
+// The module for switches.mode, for a program built with `switches`.
+std::unique_ptr<ModeKernel> make_mode_kernel(const KernelSwitches& switches,
+                                             const ComputeDevice& device,
                                              const cl::Program& program, const Scene& scene);
 
 }  // namespace fgr

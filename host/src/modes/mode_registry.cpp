@@ -47,12 +47,14 @@ std::vector<float> scene_light_values(const Scene& scene) {
     return values;
 }
 
-std::unique_ptr<ModeKernel> make_mode_kernel(RenderMode mode, const ComputeDevice& device,
+std::unique_ptr<ModeKernel> make_mode_kernel(const KernelSwitches& switches,
+                                             const ComputeDevice& device,
                                              const cl::Program& program, const Scene& scene) {
-    switch (mode) {
-        case RenderMode::Shaded: return std::make_unique<ShadedMode>(device, scene);
-        case RenderMode::Path: return std::make_unique<PathMode>(device, scene);
-        case RenderMode::Brute: return std::make_unique<BruteMode>(device, program, scene);
+    switch (switches.mode) {
+        case RenderMode::Shaded: return std::make_unique<ShadedMode>(device, scene, switches);
+        case RenderMode::Path: return std::make_unique<PathMode>(device, scene, switches);
+        case RenderMode::Brute:
+            return std::make_unique<BruteMode>(device, program, scene, switches);
     }
     throw std::invalid_argument("unknown render mode");
 }

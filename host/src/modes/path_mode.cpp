@@ -12,6 +12,7 @@ namespace {
 constexpr int kPathLightFloats = 10;  // FGR_PATH_LIGHT_FLOATS in fgr_mode_path.cl
 constexpr int kAuxiliaryPlanes = 7;   // albedo (3), normal (3), alpha
 constexpr int kStatsPlanes = 2;       // lane and packet DE evaluations
+constexpr int kForegroundPlanes = 3;  // with aovs: radiance of the samples that hit
 
 // Mirrors `path_settings` in kernels/fgr_mode_path.cl.
 struct PathSettingsArgument {
@@ -121,11 +122,12 @@ LightList light_list(const Scene& scene, const PreparedEnvironment& environment,
 
 }  // namespace
 
-PathMode::PathMode(const ComputeDevice& device, const Scene& scene)
-    : device_(device), scene_(scene) {}
+PathMode::PathMode(const ComputeDevice& device, const Scene& scene, const KernelSwitches& switches)
+    : device_(device), scene_(scene), stats_(switches.stats), aovs_(switches.aovs) {}
 
 int PathMode::extra_planes(const KernelSwitches& switches) const {
-    return kAuxiliaryPlanes + (switches.stats ? kStatsPlanes : 0);
+    return kAuxiliaryPlanes + (switches.stats ? kStatsPlanes : 0) +
+           (switches.aovs ? kForegroundPlanes : 0);
 }
 
 void PathMode::prepare(const PathSettings& settings) {
@@ -176,13 +178,18 @@ void PathMode::read_back(const std::vector<float>& planes, const TileLayout& lay
     frame.albedo = planes_in_rows(planes, layout, kCommonPlanes, 3, width, height, average);
     frame.normal = planes_in_rows(planes, layout, kCommonPlanes + 3, 3, width, height, average);
     frame.alpha = planes_in_rows(planes, layout, kCommonPlanes + 6, 1, width, height, average);
+    const int stats_plane = kCommonPlanes + kAuxiliaryPlanes;
+    if (aovs_) {
+        const int first = stats_plane + (stats_ ? kStatsPlanes : 0);
+        frame.foreground = planes_in_rows(planes, layout, first, 3, width, height, average);
+    }
     const size_t plane = static_cast<size_t>(layout.plane_size());
-    if (planes.size() < plane * (kCommonPlanes + kAuxiliaryPlanes + kStatsPlanes)) return;
+    if (!stats_) return;
     // Sum the lanes' evaluations over every pixel; a packet's count is the same in all of its
     // lanes, so it is taken once per tile (from its first lane).
     LaneStats stats;
     stats.packet_width = layout.packet_width;
-    const size_t lanes = plane * (kCommonPlanes + kAuxiliaryPlanes);
+    const size_t lanes = plane * static_cast<size_t>(stats_plane);
     const size_t packets = lanes + plane;
     for (int y = 0; y < height; ++y) {
         for (int x = 0; x < width; ++x) {

@@ -11,7 +11,7 @@ namespace fgr {
 // first hit's depth, albedo, normal and coverage, and with stats its lanes' work.
 class PathMode final : public ModeKernel {
 public:
-    PathMode(const ComputeDevice& device, const Scene& scene);
+    PathMode(const ComputeDevice& device, const Scene& scene, const KernelSwitches& switches);
     int extra_planes(const KernelSwitches& switches) const override;
     void bind(cl::Kernel& kernel, const FrameRequest& request, const TileLayout& layout) override;
     void read_back(const std::vector<float>& planes, const TileLayout& layout,
@@ -23,6 +23,8 @@ private:
 
     const ComputeDevice& device_;
     const Scene& scene_;
+    bool stats_;  // KernelSwitches::stats: kStatsPlanes after the auxiliary ones
+    bool aovs_;   // KernelSwitches::aovs: the foreground's three planes after those
     std::shared_ptr<const PreparedEnvironment> default_environment_;  // the sky, made once
     std::shared_ptr<const PreparedEnvironment> bound_environment_;
     bool bound_scene_lights_ = true;

@@ -1,10 +1,17 @@
 // Render mode "shaded" (kernels/fgr_mode_shaded.cl): its arguments are the scene's lights; with
 // stats it writes each pixel's march steps (nodes visited in IFS scenes), whether they ran out,
-// its secondary rays' DE evaluations and its IFS heap's high-water mark (planes 4 to 7).
+// its secondary rays' DE evaluations and its IFS heap's high-water mark (planes 4 to 7), IFS
+// scenes then the level each pixel's hit reached, and with aovs then the layers (albedo, normal,
+// coverage, foreground; FGR_SHADED_AOV_PLANE).
 #include "modes/shaded_mode.hpp"
+
+#include <algorithm>
 
 namespace fgr {
 namespace {
+
+constexpr int kStatsPlanes = 4;
+constexpr int kAovPlanes = 10;  // albedo (3), normal (3), coverage, foreground (3)
 
 // Sums the stats planes (4: steps, 5: ran out of steps, 6: secondary rays' DE evaluations) over
 // the image's pixels; depth (plane 3) says which pixels hit and so had their normal estimated.
@@ -56,14 +63,19 @@ IfsLevels hit_levels(const std::vector<float>& planes, const TileLayout& layout,
 
 }  // namespace
 
-ShadedMode::ShadedMode(const ComputeDevice& device, const Scene& scene)
+ShadedMode::ShadedMode(const ComputeDevice& device, const Scene& scene,
+                       const KernelSwitches& switches)
     : lights_(upload_floats(device, scene_light_values(scene))),
       light_count_(static_cast<cl_int>(scene.lights.size())),
-      ifs_(scene.ifs != nullptr) {}
+      ifs_(scene.ifs != nullptr),
+      stats_(switches.stats),
+      aovs_(switches.aovs) {}
 
 int ShadedMode::extra_planes(const KernelSwitches& switches) const {
-    // With stats: steps, out of steps, secondary rays' steps, IFS heap; IFS scenes: their level.
-    return (switches.stats ? 4 : 0) + (ifs_ ? 1 : 0);
+    // With stats: steps, out of steps, secondary rays' steps, IFS heap; IFS scenes: their level;
+    // with aovs: the layers.
+    return (switches.stats ? kStatsPlanes : 0) + (ifs_ ? 1 : 0) +
+           (switches.aovs ? kAovPlanes : 0);
 }
 
 void ShadedMode::bind(cl::Kernel& kernel, const FrameRequest&, const TileLayout&) {
@@ -72,14 +84,21 @@ void ShadedMode::bind(cl::Kernel& kernel, const FrameRequest&, const TileLayout&
 }
 
 void ShadedMode::read_back(const std::vector<float>& planes, const TileLayout& layout,
-                           const FrameRequest& request, int, Frame& frame) const {
+                           const FrameRequest& request, int samples, Frame& frame) const {
+    const int width = request.width, height = request.height;
+    const int level_plane = kCommonPlanes + (stats_ ? kStatsPlanes : 0);
+    if (aovs_) {
+        const int first = level_plane + (ifs_ ? 1 : 0);
+        const float average = 1.0f / static_cast<float>(std::max(samples, 1));
+        frame.albedo = planes_in_rows(planes, layout, first, 3, width, height, average);
+        frame.normal = planes_in_rows(planes, layout, first + 3, 3, width, height, average);
+        frame.alpha = planes_in_rows(planes, layout, first + 6, 1, width, height, average);
+        frame.foreground = planes_in_rows(planes, layout, first + 7, 3, width, height, average);
+    }
     // Stats and levels come from sample 0 (a request starting later has none).
     if (request.first_sample > 0) return;
-    const int width = frame.image.width, height = frame.image.height;
-    const size_t plane = static_cast<size_t>(layout.plane_size());
-    const bool stats = planes.size() >= plane * (ifs_ ? 9 : 8);
-    if (stats) frame.stats = march_stats(planes, layout, width, height);
-    if (ifs_) frame.ifs_levels = hit_levels(planes, layout, stats ? 8 : 4, width, height);
+    if (stats_) frame.stats = march_stats(planes, layout, width, height);
+    if (ifs_) frame.ifs_levels = hit_levels(planes, layout, level_plane, width, height);
 }
 
 }  // namespace fgr

@@ -107,8 +107,9 @@ nlohmann::json render_identity(const Renderer& renderer, const FrameRequest& req
         {"path tracing", path_text(request.path)},
         {"tiles", fmt::format("{} rows a band, {} columns a tile, {} padding", plan.band_rows,
                               plan.tile_width, plan.padding)},
-        {"output", fmt::format("{} {} {}-bit exposure {:.9g}", format_name(output.format),
-                               channels, 8 * sample_bytes(layout.type), output.exposure)},
+        {"output", fmt::format("{} {} {}-bit exposure {:.9g} tone map {}",
+                               format_name(output.format), channels, 8 * sample_bytes(layout.type),
+                               output.display.exposure, static_cast<int>(output.display.tone_map))},
     };
 }
 

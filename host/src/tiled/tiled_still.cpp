@@ -14,6 +14,7 @@
 #include <spdlog/spdlog.h>
 
 #include "fgr/kernel_assembly.hpp"
+#include "fgr/still_layers.hpp"
 #include "tiled/tile_store.hpp"
 
 namespace fgr {
@@ -25,72 +26,62 @@ constexpr int kBruteMaxReach = 256;
 
 int round_down_to_4(long value) { return static_cast<int>(value / 4 * 4); }
 
-// Coverage of pixel i: the mode's averaged coverage where it has one, else whether sample 0 hit.
-float coverage(const Frame& frame, size_t i) {
-    if (frame.alpha.size() == frame.depth.size()) return frame.alpha[i];
-    return frame.depth[i] >= 0.0f ? 1.0f : 0.0f;
-}
-
 uint16_t to_u16(float value) {
     const float clamped = value > 0.0f ? std::min(value, 1.0f) : 0.0f;  // NaN to 0
     return static_cast<uint16_t>(std::lround(clamped * 65535.0f));
 }
 
-// Writes channel values of one pixel through `put(value_index, float or integer)`.
-struct PixelEncoder {
-    const Frame& frame;
-    const TiledOutput& output;
-    const RowLayout& layout;
+// Encodes rows of a rendered (padded) tile into the output's interleaved samples, through the
+// conversions whole-image stills use (fgr/still_layers.hpp), so a tiled file holds what an
+// untiled one would.
+class RowEncoder {
+public:
+    RowEncoder(const Frame& frame, const TiledOutput& output, const RowLayout& layout)
+        : frame_(frame), output_(output), layout_(layout) {}
 
-    void require(const std::vector<float>& plane, size_t pixels, const char* name) const {
-        if (plane.size() != pixels * 3) {
-            throw std::invalid_argument(fmt::format(
-                "the {} layer comes from --mode path or brute (this frame has none)", name));
+    // Pixels first_x .. first_x + count - 1 of the frame's row y into `out`.
+    void encode(int y, int first_x, int count, uint8_t* out) {
+        const size_t width = size_t(frame_.image.width);
+        const size_t pixel_bytes = layout_.pixel_bytes();
+        const size_t row_pixel = size_t(y) * width;
+        const RowBand row{y, 1};
+        if (layout_.type == SampleType::F32) {
+            const std::vector<ExrLayer> layers = exr_layers(frame_, output_.aovs, row);
+            for (int x = 0; x < count; ++x) {
+                float* pixel = reinterpret_cast<float*>(out + size_t(x) * pixel_bytes);
+                for (const ExrLayer& layer : layers) {
+                    const size_t n = layer.channels.size();
+                    for (size_t c = 0; c < n; ++c) *pixel++ = layer.values[size_t(first_x + x) * n + c];
+                }
+            }
+            return;
         }
-    }
-
-    // Encodes the frame's pixel i into `out` (layout.pixel_bytes() bytes).
-    void encode(size_t i, uint8_t* out) const {
-        const float* rgb = &frame.linear[i * 3];
-        switch (layout.type) {
-            case SampleType::U8: {
-                std::memcpy(out, &frame.image.rgb[i * 3], 3);
-                if (output.alpha) out[3] = encode_srgb_free(coverage(frame, i));
-                return;
-            }
-            case SampleType::U16: {
-                uint16_t samples[4];
-                for (int c = 0; c < 3; ++c) samples[c] = to_u16(rgb[c] * output.exposure);
-                samples[3] = to_u16(coverage(frame, i));
-                std::memcpy(out, samples, layout.pixel_bytes());
-                return;
-            }
-            case SampleType::F32: {
-                float values[11];
-                int n = 0;
-                for (int c = 0; c < 3; ++c) values[n++] = rgb[c];
-                if (output.aovs.alpha) values[n++] = coverage(frame, i);
-                if (output.aovs.albedo) {
-                    for (int c = 0; c < 3; ++c) values[n++] = frame.albedo[i * 3 + c];
-                }
-                if (output.aovs.normal) {
-                    for (int c = 0; c < 3; ++c) values[n++] = frame.normal[i * 3 + c];
-                }
-                if (output.aovs.depth) {
-                    const float z = frame.depth[i];
-                    values[n++] = z < 0.0f ? std::numeric_limits<float>::infinity() : z;
-                }
-                std::memcpy(out, values, sizeof(float) * size_t(n));
-                return;
+        const bool alpha = layout_.channels.size() == 4;
+        if (layout_.type == SampleType::U8 && !alpha) {
+            std::memcpy(out, &frame_.image.rgb[(row_pixel + size_t(first_x)) * 3], size_t(count) * 3);
+        } else if (layout_.type == SampleType::U8) {
+            scratch8_.resize(width * 4);
+            rgba8_rows(frame_, output_.display, row, scratch8_);
+            std::memcpy(out, &scratch8_[size_t(first_x) * 4], size_t(count) * 4);
+        } else if (alpha) {
+            scratch16_.resize(width * 4);
+            rgba16_linear_rows(frame_, output_.display.exposure, row, scratch16_);
+            std::memcpy(out, &scratch16_[size_t(first_x) * 4], size_t(count) * 8);
+        } else {
+            uint16_t* samples = reinterpret_cast<uint16_t*>(out);
+            const float* linear = &frame_.linear[(row_pixel + size_t(first_x)) * 3];
+            for (size_t i = 0; i < size_t(count) * 3; ++i) {
+                samples[i] = to_u16(linear[i] * output_.display.exposure);  // as linear_image16
             }
         }
     }
 
-    // Alpha at 8 bits is linear coverage, not an sRGB value.
-    static uint8_t encode_srgb_free(float value) {
-        const float clamped = value > 0.0f ? std::min(value, 1.0f) : 0.0f;
-        return static_cast<uint8_t>(std::lround(clamped * 255.0f));
-    }
+private:
+    const Frame& frame_;
+    const TiledOutput& output_;
+    const RowLayout& layout_;
+    std::vector<uint8_t> scratch8_;
+    std::vector<uint16_t> scratch16_;
 };
 
 struct Rect {
@@ -122,10 +113,7 @@ long render_tile(Renderer& renderer, const FrameRequest& request, const TilePlan
             "rendering '{}' gave non-finite colour or depth at {} pixels of the tile at ({}, {})",
             renderer.scene().id, broken, tile.x, tile.y));
     }
-    const PixelEncoder encoder{frame, output, layout};
-    const size_t frame_pixels = frame.depth.size();
-    if (output.aovs.albedo) encoder.require(frame.albedo, frame_pixels, "albedo");
-    if (output.aovs.normal) encoder.require(frame.normal, frame_pixels, "normal");
+    RowEncoder encoder(frame, output, layout);
     const size_t pixel_bytes = layout.pixel_bytes();
     const size_t band_stride = pixel_bytes * size_t(plan.width);
     long hits = 0;
@@ -133,10 +121,9 @@ long render_tile(Renderer& renderer, const FrameRequest& request, const TilePlan
         const int fy = tile.y - region.y + y;
         uint8_t* row = band.data() + size_t(tile.y - band_y + y) * band_stride +
                        size_t(tile.x) * pixel_bytes;
+        encoder.encode(fy, tile.x - region.x, tile.width, row);
         for (int x = 0; x < tile.width; ++x) {
-            const size_t i = size_t(fy) * size_t(region.width) + size_t(tile.x - region.x + x);
-            encoder.encode(i, row + size_t(x) * pixel_bytes);
-            hits += frame.depth[i] >= 0.0f;
+            hits += frame.depth[size_t(fy) * size_t(region.width) + size_t(tile.x - region.x + x)] >= 0.0f;
         }
     }
     return hits;
@@ -157,11 +144,12 @@ RowLayout output_row_layout(const TiledOutput& output) {
         return layout;
     }
     layout.type = SampleType::F32;
+    // In the order exr_layers gives them.
     layout.channels = {"R", "G", "B"};
-    if (output.aovs.alpha) layout.channels.push_back("A");
     if (output.aovs.albedo) layout.channels.insert(layout.channels.end(), {"albedo.R", "albedo.G", "albedo.B"});
     if (output.aovs.normal) layout.channels.insert(layout.channels.end(), {"normal.X", "normal.Y", "normal.Z"});
     if (output.aovs.depth) layout.channels.push_back("depth.Z");
+    if (output.aovs.alpha) layout.channels.push_back("A");
     return layout;
 }
 
