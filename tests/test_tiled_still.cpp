@@ -413,6 +413,10 @@ TEST(TiledStillCli, CtrlCLeavesNoFileAndResumeFinishesTheSameImage) {
     const test::RunResult stopped = test::run_child("/usr/bin/timeout", interrupted, options);
     if (stopped.exit_code == 0) GTEST_SKIP() << "finished before the signal";
     EXPECT_FALSE(fs::exists(temp.path() / "out.png"));
+    for (const auto& entry : fs::directory_iterator(temp.path())) {
+        const std::string name = entry.path().filename().string();
+        EXPECT_TRUE(name == "whole.png" || name == "out.png.fgr-tiles") << "left behind: " << name;
+    }
     // Caught (not killed before the handler was in place): exit 130, the store kept, said so.
     if (stopped.err.find("interrupted:") != std::string::npos) {
         EXPECT_EQ(stopped.exit_code, 130) << stopped;

@@ -85,7 +85,7 @@ void ShadedMode::bind(cl::Kernel& kernel, const FrameRequest&, const TileLayout&
 
 void ShadedMode::read_back(const std::vector<float>& planes, const TileLayout& layout,
                            const FrameRequest& request, int samples, Frame& frame) const {
-    const int width = request.width, height = request.height;
+    const int width = frame.image.width, height = frame.image.height;  // the region's
     const int level_plane = kCommonPlanes + (stats_ ? kStatsPlanes : 0);
     if (aovs_) {
         const int first = level_plane + (ifs_ ? 1 : 0);
