@@ -230,7 +230,7 @@ const std::vector<BadInput> kBadInputs = {
     {"ZeroWidth", sized_render_args({"--width", "0", "--height", "12"}), 2, {"width"}},
     {"ZeroHeight", sized_render_args({"--width", "16", "--height", "0"}), 2, {"height"}},
     {"NegativeWidth", sized_render_args({"--width", "-5", "--height", "12"}), 2, {}},
-    {"AbsurdWidth", sized_render_args({"--width", "100000", "--height", "12"}), 2, {"width"}},
+    {"AbsurdWidth", sized_render_args({"--width", "2000000", "--height", "12"}), 2, {"width"}},
     {"NonNumericWidth", sized_render_args({"--width", "abc", "--height", "12"}), 2, {"width"}},
     {"UnknownCamera", render_args({"--camera", "nosuchcam"}), 2, {"nosuchcam"}},
     {"UnknownCameraPath",

@@ -27,6 +27,7 @@
 #include "fgr/kernel_assembly.hpp"
 #include "fgr/parameters.hpp"
 #include "fgr/program_cache.hpp"
+#include "fgr/projection.hpp"
 #include "fgr/renderer.hpp"
 #include "fgr/still_layers.hpp"
 #include "fgr/tiled_still.hpp"
@@ -198,6 +199,25 @@ TEST_F(TiledStillTest, TiledEqualsUntiledPerPixelInTheBruteModeAcrossSeams) {
     FrameRequest whole = request(scene, 720, 64, 2);
     whole.view.fov_degrees = 70.0f;
     expect_tiled_equals_untiled(*built, whole, 64, temp_.path() / "brute.exr");
+}
+
+// Projections map the whole image's pixels to rays: a panorama's and a fisheye's tiles, and a
+// stereo pair's in the brute mode (whose shading must not read across the eyes' seam), equal the
+// untiled image.
+TEST_F(TiledStillTest, TiledEqualsUntiledPerPixelUnderEveryProjection) {
+    const Scene scene = test::built_scene("menger.so");
+    auto shaded = renderer(scene, RenderMode::Shaded);
+    FrameRequest panorama = request(scene, 160, 80, 2);
+    panorama.projection.kind = ProjectionKind::Equirectangular;
+    expect_tiled_equals_untiled(*shaded, panorama, 32, temp_.path() / "panorama.exr");
+    FrameRequest fisheye = request(scene, 120, 100, 1);
+    fisheye.projection.kind = ProjectionKind::Fisheye;
+    fisheye.projection.fisheye_fov_degrees = 220.0f;
+    expect_tiled_equals_untiled(*shaded, fisheye, 32, temp_.path() / "fisheye.exr");
+    auto brute = renderer(scene, RenderMode::Brute);
+    FrameRequest stereo = request(scene, 720, 48, 1);
+    stereo.projection.kind = ProjectionKind::StereoSideBySide;
+    expect_tiled_equals_untiled(*brute, stereo, 64, temp_.path() / "stereo.exr");
 }
 
 TEST_F(TiledStillTest, StreamedPngTiffAndExrReadBackAsTheFrame) {

@@ -4,6 +4,8 @@
 
 #include <png.h>
 
+#include "png_errors.hpp"
+
 #include <cerrno>
 #include <csetjmp>
 #include <cstddef>
@@ -35,20 +37,6 @@ std::string quoted(const fs::path& path) { return "'" + path.string() + "'"; }
 
 std::string errno_message(int error) { return std::generic_category().message(error); }
 
-// libpng reports an error by calling a handler that must not return. Ours keeps the message for
-// the exception thrown once control is back in C++ code, then jumps to the setjmp point.
-struct PngErrorSink {
-    char message[256] = "libpng error";
-};
-
-[[noreturn]] void record_png_error(png_structp png, png_const_charp message) {
-    auto* sink = static_cast<PngErrorSink*>(png_get_error_ptr(png));
-    std::snprintf(sink->message, sizeof sink->message, "%s", message);
-    png_longjmp(png, 1);
-}
-
-// Warnings concern recoverable oddities (e.g. unknown chunks); a library must not print them.
-void ignore_png_warning(png_structp, png_const_charp) {}
 
 // The handles of one encode or decode. They live in the caller of the function that calls setjmp,
 // so a longjmp never skips their destructors and never leaves them indeterminate.

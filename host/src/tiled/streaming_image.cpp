@@ -21,6 +21,7 @@
 #include <utility>
 
 #include "fgr/atomic_file.hpp"
+#include "png_errors.hpp"
 
 namespace fgr {
 namespace {
@@ -47,17 +48,6 @@ void check_rgb_layout(const fs::path& path, const RowLayout& layout, const char*
 
 // --- PNG -----------------------------------------------------------------------------------
 
-struct PngErrorSink {
-    char message[256] = "libpng error";
-};
-
-[[noreturn]] void record_png_error(png_structp png, png_const_charp message) {
-    auto* sink = static_cast<PngErrorSink*>(png_get_error_ptr(png));
-    std::snprintf(sink->message, sizeof sink->message, "%s", message);
-    png_longjmp(png, 1);
-}
-
-void ignore_png_warning(png_structp, png_const_charp) {}
 
 // libpng's handles and the file, released however the writer ends (also when its constructor
 // throws, which runs no destructor of the writer itself).

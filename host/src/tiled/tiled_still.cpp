@@ -6,7 +6,6 @@
 #include <chrono>
 #include <cmath>
 #include <cstring>
-#include <limits>
 #include <stdexcept>
 #include <vector>
 
@@ -96,8 +95,6 @@ Rect padded(const Rect& tile, int padding, int width, int height) {
     return {x0, y0, x1 - x0, y1 - y0};
 }
 
-long non_finite(const Frame& frame) { return non_finite_pixels(frame); }
-
 // Renders one tile and encodes its own pixels into the band's rows (row stride `band_stride`,
 // the tile's first column at tile.x). Returns the hits among its own pixels.
 long render_tile(Renderer& renderer, const FrameRequest& request, const TilePlan& plan,
@@ -108,7 +105,7 @@ long render_tile(Renderer& renderer, const FrameRequest& request, const TilePlan
     part.region = {region.x, region.y, region.width, region.height};
     const Frame frame = renderer.render(part);
     if (frame.cancelled) return -1;
-    if (const long broken = non_finite(frame); broken > 0) {
+    if (const long broken = non_finite_pixels(frame); broken > 0) {
         throw std::runtime_error(fmt::format(
             "rendering '{}' gave non-finite colour or depth at {} pixels of the tile at ({}, {})",
             renderer.scene().id, broken, tile.x, tile.y));
@@ -194,9 +191,10 @@ TiledResult render_tiled_still(Renderer& renderer, const FrameRequest& request,
     result.samples = request.samples;
     result.store = tile_store_path(output.path);
 
+    // The file first: if it cannot be written, no tile store is made either.
+    auto writer = open_streaming_image(output.path, output.format, plan.width, plan.height, layout);
     TileStore store(result.store, render_identity(renderer, request, output, layout, plan),
                     settings.resume, output.path);
-    auto writer = open_streaming_image(output.path, output.format, plan.width, plan.height, layout);
 
     const auto start = std::chrono::steady_clock::now();
     const size_t band_stride = layout.pixel_bytes() * size_t(plan.width);
