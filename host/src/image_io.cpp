@@ -263,6 +263,24 @@ void write_pixels_atomically(const fs::path& path, const PngPixels& image) {
     }
 }
 
+// Opens PATH for decoding into READER: the file, its signature, libpng's structs.
+void open_png_reader(PngReader& reader, const fs::path& path) {
+    reader.file = std::fopen(path.c_str(), "rb");
+    if (reader.file == nullptr) {
+        fail_read(path, errno_message(errno));
+    }
+    if (!has_png_signature(reader.file)) {
+        fail_read(path, "not a PNG file");
+    }
+    reader.png = png_create_read_struct(PNG_LIBPNG_VER_STRING, &reader.error, record_png_error,
+                                        ignore_png_warning);
+    if (reader.png == nullptr || (reader.info = png_create_info_struct(reader.png)) == nullptr) {
+        fail_read(path, "out of memory");
+    }
+    png_init_io(reader.png, reader.file);
+    png_set_sig_bytes(reader.png, static_cast<int>(kPngSignatureBytes));
+}
+
 }  // namespace
 
 void write_png(const fs::path& path, const Image8& image) {
@@ -295,20 +313,7 @@ void write_png16_linear(const fs::path& path, const Image16& image) {
 
 Image8 read_png(const fs::path& path) {
     PngReader reader;
-    reader.file = std::fopen(path.c_str(), "rb");
-    if (reader.file == nullptr) {
-        fail_read(path, errno_message(errno));
-    }
-    if (!has_png_signature(reader.file)) {
-        fail_read(path, "not a PNG file");
-    }
-    reader.png = png_create_read_struct(PNG_LIBPNG_VER_STRING, &reader.error, record_png_error,
-                                        ignore_png_warning);
-    if (reader.png == nullptr || (reader.info = png_create_info_struct(reader.png)) == nullptr) {
-        fail_read(path, "out of memory");
-    }
-    png_init_io(reader.png, reader.file);
-    png_set_sig_bytes(reader.png, static_cast<int>(kPngSignatureBytes));
+    open_png_reader(reader, path);
 
     Image8 image;
     std::vector<png_bytep> rows;
@@ -320,20 +325,7 @@ Image8 read_png(const fs::path& path) {
 
 PngSamples read_png_samples(const fs::path& path) {
     PngReader reader;
-    reader.file = std::fopen(path.c_str(), "rb");
-    if (reader.file == nullptr) {
-        fail_read(path, errno_message(errno));
-    }
-    if (!has_png_signature(reader.file)) {
-        fail_read(path, "not a PNG file");
-    }
-    reader.png = png_create_read_struct(PNG_LIBPNG_VER_STRING, &reader.error, record_png_error,
-                                        ignore_png_warning);
-    if (reader.png == nullptr || (reader.info = png_create_info_struct(reader.png)) == nullptr) {
-        fail_read(path, "out of memory");
-    }
-    png_init_io(reader.png, reader.file);
-    png_set_sig_bytes(reader.png, static_cast<int>(kPngSignatureBytes));
+    open_png_reader(reader, path);
     PngSamples image;
     std::vector<uint8_t> bytes;
     std::vector<png_bytep> rows;
