@@ -80,8 +80,13 @@ void straight_colour(const Frame& frame, size_t pixel, float rgb[3]) {
     for (size_t c = 0; c < 3; ++c) rgb[c] = frame.foreground[pixel * 3 + c] * unpremultiply;
 }
 
-void rgba8_rows(const Frame& frame, const DisplayTransform& display, RowBand band,
-                std::span<uint8_t> out) {
+namespace {
+
+// RGBA of the band with straight alpha: each straight colour channel through `encode_colour`,
+// coverage through `encode_alpha`. Throws for a frame without alpha or an `out` of another size.
+template <typename Sample, typename EncodeColour, typename EncodeAlpha>
+void straight_rgba_rows(const Frame& frame, RowBand band, std::span<Sample> out,
+                        EncodeColour encode_colour, EncodeAlpha encode_alpha) {
     require_layer(frame, frame.alpha, 1, "alpha");
     require_layer(frame, frame.foreground, 3, "foreground");
     require_band(frame, band, out.size(), 4);
@@ -89,24 +94,23 @@ void rgba8_rows(const Frame& frame, const DisplayTransform& display, RowBand ban
     for (size_t i = 0; i < out.size() / 4; ++i) {
         float rgb[3];
         straight_colour(frame, first + i, rgb);
-        for (size_t c = 0; c < 3; ++c) {
-            out[i * 4 + c] = encode_srgb(tone_map(rgb[c] * display.exposure, display.tone_map));
-        }
-        out[i * 4 + 3] = to_unorm8(frame.alpha[first + i]);
+        for (size_t c = 0; c < 3; ++c) out[i * 4 + c] = encode_colour(rgb[c]);
+        out[i * 4 + 3] = encode_alpha(frame.alpha[first + i]);
     }
 }
 
+}  // namespace
+
+void rgba8_rows(const Frame& frame, const DisplayTransform& display, RowBand band,
+                std::span<uint8_t> out) {
+    straight_rgba_rows(frame, band, out, [&](float linear) {
+        return encode_srgb(tone_map(linear * display.exposure, display.tone_map));
+    }, to_unorm8);
+}
+
 void rgba16_linear_rows(const Frame& frame, float exposure, RowBand band, std::span<uint16_t> out) {
-    require_layer(frame, frame.alpha, 1, "alpha");
-    require_layer(frame, frame.foreground, 3, "foreground");
-    require_band(frame, band, out.size(), 4);
-    const size_t first = first_pixel(frame, band);
-    for (size_t i = 0; i < out.size() / 4; ++i) {
-        float rgb[3];
-        straight_colour(frame, first + i, rgb);
-        for (size_t c = 0; c < 3; ++c) out[i * 4 + c] = to_unorm16(rgb[c] * exposure);
-        out[i * 4 + 3] = to_unorm16(frame.alpha[first + i]);
-    }
+    straight_rgba_rows(frame, band, out, [&](float linear) { return to_unorm16(linear * exposure); },
+                       to_unorm16);
 }
 
 std::vector<ExrLayer> exr_layers(const Frame& frame, const Aovs& aovs, RowBand band) {
