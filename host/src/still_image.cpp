@@ -24,6 +24,20 @@ KernelSwitches still_switches(const ComputeDevice& device, const StillSettings& 
             settings.effects, settings.stats, false, settings.mode, settings.aovs};
 }
 
+Renderer& build_still_renderer(PrecisionRenderers& renderers, const Scene& scene,
+                               const ComputeDevice& device, const StillSettings& settings,
+                               bool double_precision) {
+    if (Renderer* built = renderers.built(double_precision)) return *built;
+    const KernelSwitches switches =
+        with_precision(still_switches(device, settings), double_precision);
+    spdlog::info("building '{}' for {} ({} mode, {} rays per work-item, {}, effects: {})", scene.id,
+                 device.info.name, render_mode_name(switches.mode), switches.packet_width,
+                 double_precision ? "double" : "float", effect_names(switches.effects));
+    Renderer& built = renderers.get(double_precision);
+    spdlog::info("kernel ready in {:.0f} ms", built.build_report().build_ms);
+    return built;
+}
+
 Renderer& choose_still_renderer(PrecisionRenderers& renderers, const Scene& scene,
                                 const FrameRequest& request, const ComputeDevice& device,
                                 const StillSettings& settings) {
@@ -32,17 +46,8 @@ Renderer& choose_still_renderer(PrecisionRenderers& renderers, const Scene& scen
         throw std::invalid_argument("cannot render this view: " + problem);
     }
     check_supported_effects(scene, settings.effects);
-    const KernelSwitches in_float = still_switches(device, settings);
     const auto build = [&](bool double_precision) -> Renderer& {
-        if (Renderer* built = renderers.built(double_precision)) return *built;
-        const KernelSwitches switches = with_precision(in_float, double_precision);
-        spdlog::info("building '{}' for {} ({} mode, {} rays per work-item, {}, effects: {})",
-                     scene.id, device.info.name, render_mode_name(switches.mode),
-                     switches.packet_width, double_precision ? "double" : "float",
-                     effect_names(switches.effects));
-        Renderer& built = renderers.get(double_precision);
-        spdlog::info("kernel ready in {:.0f} ms", built.build_report().build_ms);
-        return built;
+        return build_still_renderer(renderers, scene, device, settings, double_precision);
     };
     PrecisionChooser chooser(device.info,
                              [](const std::string& warning) { spdlog::warn("{}", warning); });

@@ -38,6 +38,12 @@ Aovs parse_aovs(std::string_view list);
 // The kernel switches a still renders with, in float (the precision is chosen per view).
 KernelSwitches still_switches(const ComputeDevice& device, const StillSettings& settings);
 
+// The renderer of `renderers` (made with still_switches) in `double_precision`, built now if it
+// was not yet, logging what it builds and how long that took.
+Renderer& build_still_renderer(PrecisionRenderers& renderers, const Scene& scene,
+                               const ComputeDevice& device, const StillSettings& settings,
+                               bool double_precision);
+
 // The renderer of `renderers` (made with still_switches) in the precision `settings` and the
 // view call for (as render_still chooses it), built now if need be, logging what it builds.
 // Throws as render_still does for a view or effects it cannot render.

@@ -19,16 +19,7 @@ VideoFrameRenderer::VideoFrameRenderer(const Scene& scene, const ComputeDevice& 
 }
 
 Renderer& VideoFrameRenderer::build(bool double_precision) {
-    if (Renderer* built = renderers_.built(double_precision)) return *built;
-    const KernelSwitches switches =
-        with_precision(still_switches(device_, settings_), double_precision);
-    spdlog::info("building '{}' for {} ({} mode, {} rays per work-item, {}, effects: {})",
-                 scene_.id, device_.info.name, render_mode_name(switches.mode),
-                 switches.packet_width, double_precision ? "double" : "float",
-                 effect_names(switches.effects));
-    Renderer& built = renderers_.get(double_precision);
-    spdlog::info("kernel ready in {:.0f} ms", built.build_report().build_ms);
-    return built;
+    return build_still_renderer(renderers_, scene_, device_, settings_, double_precision);
 }
 
 bool VideoFrameRenderer::choose_precision(const std::vector<CameraView>& views, int width,
