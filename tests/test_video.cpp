@@ -306,7 +306,7 @@ TEST_F(VideoCommandTest, Mp4FramesMatchSingleRendersAndTheContainerHasTheirCount
     const RunResult result = run(video_args(
         {"-o", video.string(), "--fps", "4", "--duration", "1", "--spp", "2", "--crf", "10"}));
     ASSERT_EQ(result.exit_code, 0) << result;
-    EXPECT_NE(result.err.find("frame 4/4"), std::string::npos) << "no progress line: " << result;
+    EXPECT_NE(result.err.find("frames 4/4"), std::string::npos) << "no progress line: " << result;
     EXPECT_EQ(directory_listing(dir()), std::vector<std::string>{"orbit.mp4"});
 
     const DecodedVideo decoded = decode_video(video);

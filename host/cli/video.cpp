@@ -2,6 +2,7 @@
 // libraries) into a video file, and/or written as a PNG or EXR frame sequence. Frame i is
 // `fgr render --camera-path P --time t` at t = start + i / fps with the same options.
 #include <atomic>
+#include <chrono>
 #include <csignal>
 #include <filesystem>
 #include <optional>
@@ -15,9 +16,9 @@
 #include "commands.hpp"
 #include "fgr/camera.hpp"
 #include "fgr/program_cache.hpp"
+#include "fgr/progress.hpp"
 #include "fgr/video_encoder.hpp"
 #include "fgr/video_frames.hpp"
-#include "fgr/video_progress.hpp"
 #include "fgr/video_timing.hpp"
 #include "fgr/view_validation.hpp"
 
@@ -183,7 +184,9 @@ int command_video(const VideoOptions& options) {
                  in_double ? "double" : "float",
                  encoder ? ", encoding " + encoder->description() : "");
     job.request.cancel = [] { return interrupted != 0; };
-    VideoProgress progress(static_cast<int>(views.size()));
+    ProgressLine progress("frames");
+    const long total_frames = static_cast<long>(views.size());
+    const auto started = std::chrono::steady_clock::now();
     for (size_t i = 0; i < views.size(); ++i) {
         job.request.view = views[i];
         const Frame frame = renderer.render(job.request);
@@ -202,7 +205,11 @@ int command_video(const VideoOptions& options) {
                 throw RuntimeFailure(error.what());
             }
         }
-        progress.frame_done(static_cast<int>(i + 1));
+        const long done = static_cast<long>(i + 1);
+        const double seconds =
+            std::chrono::duration<double>(std::chrono::steady_clock::now() - started).count();
+        progress.update(done, total_frames, done, seconds,
+                        fmt::format("{:.2f} fps", seconds > 0.0 ? double(done) / seconds : 0.0));
     }
     progress.finish();
     if (encoder) {
