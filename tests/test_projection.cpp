@@ -14,6 +14,7 @@
 #include <gtest/gtest.h>
 
 #include "child_process.hpp"
+#include "device_suite.hpp"
 #include "fgr/parameters.hpp"
 #include "fgr/program_cache.hpp"
 #include "fgr/projection.hpp"
@@ -78,11 +79,8 @@ Centroid hit_centroid(const Frame& frame, int width, int x0, int y0, int x1, int
     return c;
 }
 
-class ProjectionTest : public ::testing::TestWithParam<RenderMode> {
+class ProjectionTest : public test::DeviceSuite<::testing::TestWithParam<RenderMode>> {
 protected:
-    static void SetUpTestSuite() { device_ = new ComputeDevice(open_device(-1)); }
-    static void TearDownTestSuite() { delete device_; }
-
     Frame render(const Scene& scene, const Projection& projection, int width, int height,
                  RenderMode mode, const std::vector<std::string>& assignments = {},
                  bool stats = false) {
@@ -95,14 +93,10 @@ protected:
         KernelSwitches switches{preferred_packet_width(device_->info), scene.effects};
         switches.mode = mode;
         switches.stats = stats;
-        Renderer renderer(*device_, cache_, scene, switches);
+        Renderer renderer(*device_, *cache_, scene, switches);
         return renderer.render(request);
     }
-
-    static ComputeDevice* device_;
-    ProgramCache cache_{std::filesystem::path()};
 };
-ComputeDevice* ProjectionTest::device_ = nullptr;
 
 // Equirectangular: longitude -180..180 degrees across the width (0 at the centre, to the right
 // positive), latitude 90..-90 down the height. A 2:1 image of 1 degree per pixel.

@@ -21,6 +21,7 @@
 #include <glm/trigonometric.hpp>
 
 #include "child_process.hpp"
+#include "device_suite.hpp"
 #include "fgr/camera.hpp"
 #include "fgr/ifs.hpp"
 #include "fgr/image_io.hpp"
@@ -135,28 +136,14 @@ IfsScene ifs_ball() {
     return ifs;
 }
 
-class StillLayersTest : public ::testing::TestWithParam<LayerCase> {
+class StillLayersTest : public test::DeviceSuite<::testing::TestWithParam<LayerCase>> {
 protected:
-    static void SetUpTestSuite() {
-        device_ = new ComputeDevice(open_device(-1));
-        cache_ = new ProgramCache(fs::path());  // memory only: hermetic
-    }
-    static void TearDownTestSuite() {
-        delete cache_;
-        delete device_;
-    }
-
     static Renderer renderer(const Scene& scene, RenderMode mode, bool aovs) {
         KernelSwitches switches{preferred_packet_width(device_->info), 0, false, false, mode};
         switches.aovs = aovs;
         return Renderer(*device_, *cache_, scene, switches);
     }
-
-    static ComputeDevice* device_;
-    static ProgramCache* cache_;
 };
-ComputeDevice* StillLayersTest::device_ = nullptr;
-ProgramCache* StillLayersTest::cache_ = nullptr;
 
 struct BallScene {
     Scene scene;

@@ -22,6 +22,7 @@
 #include <vector>
 
 #include "child_process.hpp"
+#include "device_suite.hpp"
 #include "fgr/ifs.hpp"
 #include "fgr/image_io.hpp"
 #include "fgr/kernel_assembly.hpp"
@@ -38,17 +39,8 @@ namespace {
 
 namespace fs = std::filesystem;
 
-class TiledStillTest : public ::testing::Test {
+class TiledStillTest : public test::DeviceSuite<> {
 protected:
-    static void SetUpTestSuite() {
-        device_ = new ComputeDevice(open_device(-1));
-        cache_ = new ProgramCache(fs::path());  // memory only: hermetic
-    }
-    static void TearDownTestSuite() {
-        delete cache_;
-        delete device_;
-    }
-
     // With the layers' planes (KernelSwitches::aovs): alpha, albedo and normal in every mode.
     static std::unique_ptr<Renderer> renderer(const Scene& scene, RenderMode mode) {
         return std::make_unique<Renderer>(*device_, *cache_, scene,
@@ -62,13 +54,8 @@ protected:
         return result;
     }
 
-    static ComputeDevice* device_;
-    static ProgramCache* cache_;
     test::TempDir temp_{"fgr_tiled"};
 };
-
-ComputeDevice* TiledStillTest::device_ = nullptr;
-ProgramCache* TiledStillTest::cache_ = nullptr;
 
 // The named float channels of an EXR file, each as rows of width floats.
 std::vector<std::vector<float>> read_exr_channels(const fs::path& path,

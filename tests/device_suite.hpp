@@ -1,0 +1,33 @@
+#pragma once
+// A test suite's OpenCL device and memory-only kernel cache (hermetic: nothing on disk), opened
+// once for the suite's tests and closed after them. Derive a fixture from DeviceSuite<> (or
+// DeviceSuite<::testing::TestWithParam<P>>) and use device_ and cache_.
+
+#include <gtest/gtest.h>
+
+#include <filesystem>
+
+#include "fgr/opencl_device.hpp"
+#include "fgr/program_cache.hpp"
+
+namespace fgr::test {
+
+template <typename Base = ::testing::Test>
+class DeviceSuite : public Base {
+protected:
+    static void SetUpTestSuite() {
+        device_ = new ComputeDevice(open_device(-1));
+        cache_ = new ProgramCache(std::filesystem::path());
+    }
+    static void TearDownTestSuite() {
+        delete cache_;
+        delete device_;
+        cache_ = nullptr;
+        device_ = nullptr;
+    }
+
+    static inline ComputeDevice* device_ = nullptr;
+    static inline ProgramCache* cache_ = nullptr;
+};
+
+}  // namespace fgr::test
