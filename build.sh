@@ -73,7 +73,11 @@ case "$command" in
         install_missing_packages
         # Instrumented throughout (FGR_SANITIZE); the runtimes' options and the third-party
         # suppressions are in sanitizers/. A report ends the test's process with exit code 86.
-        build "$sanitize_build_dir" -DFGR_SANITIZE=ON -DFGR_WERROR=ON
+        # The drivers' caches are the plain build's where it has one (./build.sh test, CI): PoCL's
+        # kernels do not depend on the sanitizers, so none is compiled twice (tests/CMakeLists.txt).
+        driver_cache=()
+        [[ -d $build_dir/test-cache ]] && driver_cache=(-DFGR_TEST_DRIVER_CACHE="$build_dir/test-cache")
+        build "$sanitize_build_dir" -DFGR_SANITIZE=ON -DFGR_WERROR=ON "${driver_cache[@]}"
         # A failed test runs once more: LeakSanitizer's own tracer now and then crashes while it
         # stops a process's threads at exit (PoCL keeps a pool of them), "LeakSanitizer has
         # encountered a fatal error" with no report. A real report fails both runs.
