@@ -16,6 +16,7 @@
 #include <string>
 #include <vector>
 
+#include "device_suite.hpp"
 #include "fgr/camera.hpp"
 #include "fgr/parameters.hpp"
 #include "fgr/plugin.h"
@@ -32,17 +33,8 @@ constexpr int kHeight = 64;
 // Ambient term of fgr_shade.cl (FGR_AMBIENT) times the default albedo's green (0.72).
 constexpr float kAmbientGreen = 0.06f * 0.72f;
 
-class EffectTest : public ::testing::Test {
+class EffectTest : public test::DeviceSuite<> {
 protected:
-    static void SetUpTestSuite() {
-        device_ = new ComputeDevice(open_device(-1));
-        cache_ = new ProgramCache(std::filesystem::path());
-    }
-    static void TearDownTestSuite() {
-        delete cache_;
-        delete device_;
-    }
-
     // One program per (scene, effects), built once per run thanks to the shared memory cache.
     static std::unique_ptr<Renderer> renderer(const Scene& scene, uint64_t effects) {
         return std::make_unique<Renderer>(
@@ -64,11 +56,7 @@ protected:
         return result;
     }
 
-    static ComputeDevice* device_;
-    static ProgramCache* cache_;
 };
-ComputeDevice* EffectTest::device_ = nullptr;
-ProgramCache* EffectTest::cache_ = nullptr;
 
 glm::vec3 pixel_rgb(const Frame& frame, int pixel) {
     return {frame.linear[pixel * 3], frame.linear[pixel * 3 + 1], frame.linear[pixel * 3 + 2]};

@@ -17,6 +17,7 @@
 #include <glm/geometric.hpp>
 #include <gtest/gtest.h>
 
+#include "device_suite.hpp"
 #include "fgr/environment.hpp"
 #include "fgr/opencl_device.hpp"
 #include "fgr/program_cache.hpp"
@@ -115,17 +116,8 @@ struct Evaluated {
     std::vector<double> pdf;
 };
 
-class EnvironmentTest : public ::testing::Test {
+class EnvironmentTest : public test::DeviceSuite<> {
 protected:
-    static void SetUpTestSuite() {
-        device_ = new ComputeDevice(open_device(-1));
-        cache_ = new ProgramCache(std::filesystem::path());
-    }
-    static void TearDownTestSuite() {
-        delete cache_;
-        delete device_;
-    }
-
     static std::vector<Variant> variants() {
         std::vector<Variant> list;
         for (bool double_precision : {false, true}) {
@@ -222,11 +214,7 @@ protected:
         return result;
     }
 
-    static ComputeDevice* device_;
-    static ProgramCache* cache_;
 };
-ComputeDevice* EnvironmentTest::device_ = nullptr;
-ProgramCache* EnvironmentTest::cache_ = nullptr;
 
 std::vector<float> uniforms(std::mt19937& random, size_t count) {
     std::uniform_real_distribution<float> uniform(0.0f, 1.0f);

@@ -20,6 +20,7 @@
 #include <fmt/format.h>
 #include <gtest/gtest.h>
 
+#include "device_suite.hpp"
 #include "fgr/opencl_device.hpp"
 #include "fgr/precision.hpp"
 #include "fgr/program_cache.hpp"
@@ -101,17 +102,8 @@ struct Build {
     }
 };
 
-class SamplerTest : public ::testing::Test {
+class SamplerTest : public test::DeviceSuite<> {
 protected:
-    static void SetUpTestSuite() {
-        device_ = new ComputeDevice(open_device(-1));
-        cache_ = new ProgramCache(std::filesystem::path());
-    }
-    static void TearDownTestSuite() {
-        delete cache_;
-        delete device_;
-    }
-
     // Every packet width, in float and (where the device has it) double. Double lanes come in
     // packets of 4 or more (kMinDoublePacketWidth, precision.hpp: the library's scalar double
     // build is ambiguous between float and double built-ins), so double starts at 4.
@@ -183,11 +175,7 @@ protected:
         return result;
     }
 
-    static ComputeDevice* device_;
-    static ProgramCache* cache_;
 };
-ComputeDevice* SamplerTest::device_ = nullptr;
-ProgramCache* SamplerTest::cache_ = nullptr;
 
 // Which of the 2^bits equal intervals of [0, 1) holds u.
 int interval(double u, int bits) { return int(std::floor(std::ldexp(u, bits))); }
