@@ -15,7 +15,11 @@
 #include <cstdint>
 #include <filesystem>
 #include <functional>
+#include <map>
+#include <memory>
+#include <optional>
 #include <string>
+#include <vector>
 
 #include "fgr/renderer.hpp"
 #include "fgr/still_image.hpp"
@@ -91,6 +95,83 @@ struct TiledResult {
 
 // The tile store of `output`: a directory beside it.
 std::filesystem::path tile_store_path(const std::filesystem::path& output);
+
+// A tile's own pixels encoded as the output's samples: its rows (tile width x pixel bytes each),
+// top to bottom, and how many of them hit the surface.
+struct EncodedTile {
+    std::vector<uint8_t> rows;
+    long hits = 0;
+};
+
+// The rendering half of a tiled still: the plan, and any tile of it rendered and encoded. Tiles
+// are numbered band by band, left to right (0 .. plan().tiles() - 1), so a caller may hand them
+// to other processes (fgr render under MPI) and place the results with a TiledFile.
+class TiledRender {
+public:
+    // Throws std::invalid_argument for a request that is not of the whole image or a tile size
+    // plan_tiles refuses.
+    TiledRender(Renderer& renderer, const FrameRequest& request, const TiledOutput& output,
+                int tile_size);
+    const TilePlan& plan() const { return plan_; }
+    const RowLayout& layout() const { return layout_; }
+    const FrameRequest& request() const { return request_; }
+    Renderer& renderer() const { return renderer_; }
+    // Tile `index` rendered and encoded; nullopt when request.cancel stopped it. Throws
+    // std::runtime_error for non-finite pixels.
+    std::optional<EncodedTile> render(long index) const;
+
+private:
+    Renderer& renderer_;
+    FrameRequest request_;
+    const TiledOutput& output_;
+    RowLayout layout_;
+    TilePlan plan_;
+};
+
+class TileStore;
+
+// The writing half: the output file and the tile store beside it. Tiles arrive in any order;
+// each band is written (and kept in the store) as soon as it and every band above it are
+// complete, so memory holds only the bands still open.
+class TiledFile {
+public:
+    // Opens the output (std::runtime_error when it cannot be written) and the tile store
+    // (resumed with `resume`; refused as TileStore says).
+    TiledFile(const TiledRender& render, const TiledOutput& output, bool resume);
+    ~TiledFile();
+    TiledFile(const TiledFile&) = delete;
+    TiledFile& operator=(const TiledFile&) = delete;
+    // The tiles still to render, in order: those of the bands the store does not hold.
+    const std::vector<long>& tiles_to_render() const { return to_render_; }
+    long tiles_resumed() const { return plan_.tiles() - long(to_render_.size()); }
+    long hits() const { return hits_; }  // of the bands written so far
+    // Places tile `index`, then writes every band completed in order.
+    void add(long index, const EncodedTile& tile);
+    // After the last tile: completes the file and removes the store (std::runtime_error when a
+    // band is still missing).
+    void finish();
+    const std::filesystem::path& store_path() const { return store_path_; }
+
+private:
+    struct OpenBand {
+        std::vector<uint8_t> rows;
+        int tiles_left = 0;
+        long hits = 0;
+    };
+    int band_rows(int band) const;
+    void write_ready_bands();
+
+    TilePlan plan_;
+    size_t pixel_bytes_;
+    std::filesystem::path store_path_;
+    std::unique_ptr<StreamingImageWriter> writer_;
+    std::unique_ptr<TileStore> store_;
+    std::vector<bool> band_in_store_;
+    std::vector<long> to_render_;
+    std::map<int, OpenBand> open_;
+    int next_band_ = 0;  // the first band not yet written
+    long hits_ = 0;
+};
 
 // Renders `request` (the whole image: request.region must be whole) with `renderer` in tiles and
 // streams it to `output`. Throws std::invalid_argument for a plan or output that cannot be,

@@ -95,35 +95,12 @@ Rect padded(const Rect& tile, int padding, int width, int height) {
     return {x0, y0, x1 - x0, y1 - y0};
 }
 
-// Renders one tile and encodes its own pixels into the band's rows (row stride `band_stride`,
-// the tile's first column at tile.x). Returns the hits among its own pixels.
-long render_tile(Renderer& renderer, const FrameRequest& request, const TilePlan& plan,
-                 const Rect& tile, int band_y, const TiledOutput& output, const RowLayout& layout,
-                 std::vector<uint8_t>& band) {
-    const Rect region = padded(tile, plan.padding, plan.width, plan.height);
-    FrameRequest part = request;
-    part.region = {region.x, region.y, region.width, region.height};
-    const Frame frame = renderer.render(part);
-    if (frame.cancelled) return -1;
-    if (const long broken = non_finite_pixels(frame); broken > 0) {
-        throw std::runtime_error(fmt::format(
-            "rendering '{}' gave non-finite colour or depth at {} pixels of the tile at ({}, {})",
-            renderer.scene().id, broken, tile.x, tile.y));
-    }
-    RowEncoder encoder(frame, output, layout);
-    const size_t pixel_bytes = layout.pixel_bytes();
-    const size_t band_stride = pixel_bytes * size_t(plan.width);
-    long hits = 0;
-    for (int y = 0; y < tile.height; ++y) {
-        const int fy = tile.y - region.y + y;
-        uint8_t* row = band.data() + size_t(tile.y - band_y + y) * band_stride +
-                       size_t(tile.x) * pixel_bytes;
-        encoder.encode(fy, tile.x - region.x, tile.width, row);
-        for (int x = 0; x < tile.width; ++x) {
-            hits += frame.depth[size_t(fy) * size_t(region.width) + size_t(tile.x - region.x + x)] >= 0.0f;
-        }
-    }
-    return hits;
+// The tile `index` of `plan` (band by band, left to right), in image pixels.
+Rect tile_rect(const TilePlan& plan, long index) {
+    const int band = static_cast<int>(index / plan.tiles_per_band());
+    const int x = static_cast<int>(index % plan.tiles_per_band()) * plan.tile_width;
+    const int y = band * plan.band_rows;
+    return {x, y, std::min(plan.tile_width, plan.width - x), std::min(plan.band_rows, plan.height - y)};
 }
 
 double seconds_since(std::chrono::steady_clock::time_point start) {
@@ -179,73 +156,166 @@ std::filesystem::path tile_store_path(const std::filesystem::path& output) {
     return output.parent_path() / (output.filename().string() + ".fgr-tiles");
 }
 
+TiledRender::TiledRender(Renderer& renderer, const FrameRequest& request,
+                         const TiledOutput& output, int tile_size)
+    : renderer_(renderer), request_(request), output_(output), layout_(output_row_layout(output)) {
+    if (!request.region.whole()) throw std::invalid_argument("a tiled still renders the whole image");
+    plan_ = plan_tiles(request.width, request.height, tile_size, layout_.pixel_bytes(),
+                       region_padding(renderer.switches().mode));
+}
+
+std::optional<EncodedTile> TiledRender::render(long index) const {
+    const Rect tile = tile_rect(plan_, index);
+    const Rect region = padded(tile, plan_.padding, plan_.width, plan_.height);
+    FrameRequest part = request_;
+    part.region = {region.x, region.y, region.width, region.height};
+    const Frame frame = renderer_.render(part);
+    if (frame.cancelled) return std::nullopt;
+    if (const long broken = non_finite_pixels(frame); broken > 0) {
+        throw std::runtime_error(fmt::format(
+            "rendering '{}' gave non-finite colour or depth at {} pixels of the tile at ({}, {})",
+            renderer_.scene().id, broken, tile.x, tile.y));
+    }
+    RowEncoder encoder(frame, output_, layout_);
+    const size_t row_bytes = layout_.pixel_bytes() * size_t(tile.width);
+    EncodedTile encoded;
+    encoded.rows.resize(row_bytes * size_t(tile.height));
+    for (int y = 0; y < tile.height; ++y) {
+        const int fy = tile.y - region.y + y;
+        encoder.encode(fy, tile.x - region.x, tile.width, encoded.rows.data() + size_t(y) * row_bytes);
+        for (int x = 0; x < tile.width; ++x) {
+            encoded.hits += frame.depth[size_t(fy) * size_t(region.width) + size_t(tile.x - region.x + x)] >= 0.0f;
+        }
+    }
+    return encoded;
+}
+
+TiledFile::TiledFile(const TiledRender& render, const TiledOutput& output, bool resume)
+    : plan_(render.plan()),
+      pixel_bytes_(render.layout().pixel_bytes()),
+      store_path_(tile_store_path(output.path)) {
+    // The file first: if it cannot be written, no tile store is made either.
+    writer_ = open_streaming_image(output.path, output.format, plan_.width, plan_.height, render.layout());
+    store_ = std::make_unique<TileStore>(
+        store_path_, render_identity(render.renderer(), render.request(), output, render.layout(), plan_),
+        resume, output.path);
+    band_in_store_.assign(size_t(plan_.bands()), false);
+    std::vector<uint8_t> scratch;
+    for (int b = 0; b < plan_.bands(); ++b) {
+        if (resume) {
+            scratch.resize(pixel_bytes_ * size_t(plan_.width) * size_t(band_rows(b)));
+            band_in_store_[size_t(b)] = store_->load_band(b, scratch).has_value();
+        }
+        if (band_in_store_[size_t(b)]) continue;
+        for (int t = 0; t < plan_.tiles_per_band(); ++t) {
+            to_render_.push_back(long(b) * plan_.tiles_per_band() + t);
+        }
+    }
+    write_ready_bands();  // bands at the top that the store already holds
+}
+
+TiledFile::~TiledFile() = default;
+
+int TiledFile::band_rows(int band) const {
+    return std::min(plan_.band_rows, plan_.height - band * plan_.band_rows);
+}
+
+void TiledFile::add(long index, const EncodedTile& tile) {
+    const int band = static_cast<int>(index / plan_.tiles_per_band());
+    const Rect rect = tile_rect(plan_, index);
+    const size_t row_bytes = pixel_bytes_ * size_t(rect.width);
+    if (band < next_band_ || band_in_store_[size_t(band)] || tile.rows.size() != row_bytes * size_t(rect.height)) {
+        throw std::logic_error(fmt::format("tile {} does not belong in the open bands", index));
+    }
+    auto [it, opened] = open_.try_emplace(band);
+    OpenBand& open = it->second;
+    if (opened) {
+        open.rows.resize(pixel_bytes_ * size_t(plan_.width) * size_t(rect.height));
+        open.tiles_left = plan_.tiles_per_band();
+    }
+    const size_t band_stride = pixel_bytes_ * size_t(plan_.width);
+    for (int y = 0; y < rect.height; ++y) {
+        std::memcpy(open.rows.data() + size_t(y) * band_stride + size_t(rect.x) * pixel_bytes_,
+                    tile.rows.data() + size_t(y) * row_bytes, row_bytes);
+    }
+    open.hits += tile.hits;
+    --open.tiles_left;
+    write_ready_bands();
+}
+
+void TiledFile::write_ready_bands() {
+    std::vector<uint8_t> kept;
+    while (next_band_ < plan_.bands()) {
+        const int b = next_band_;
+        if (band_in_store_[size_t(b)]) {
+            kept.resize(pixel_bytes_ * size_t(plan_.width) * size_t(band_rows(b)));
+            const std::optional<long> hits = store_->load_band(b, kept);
+            if (!hits) throw std::runtime_error(fmt::format("band {} of the tile store vanished", b));
+            hits_ += *hits;
+            writer_->write_rows(kept.data(), band_rows(b));
+        } else {
+            const auto it = open_.find(b);
+            if (it == open_.end() || it->second.tiles_left > 0) return;
+            store_->save_band(b, it->second.rows, it->second.hits);
+            hits_ += it->second.hits;
+            writer_->write_rows(it->second.rows.data(), band_rows(b));
+            open_.erase(it);
+        }
+        ++next_band_;
+    }
+}
+
+void TiledFile::finish() {
+    if (next_band_ < plan_.bands()) {
+        throw std::logic_error(fmt::format("band {} of {} was never completed", next_band_, plan_.bands()));
+    }
+    writer_->finish();
+    store_->remove();
+}
+
 TiledResult render_tiled_still(Renderer& renderer, const FrameRequest& request,
                                const TiledOutput& output, const TiledSettings& settings) {
-    if (!request.region.whole()) throw std::invalid_argument("a tiled still renders the whole image");
-    const RowLayout layout = output_row_layout(output);
-    TiledResult result;
-    result.plan = plan_tiles(request.width, request.height, settings.tile_size,
-                             layout.pixel_bytes(), region_padding(renderer.switches().mode));
-    const TilePlan& plan = result.plan;
-    result.tiles = plan.tiles();
-    result.samples = request.samples;
-    result.store = tile_store_path(output.path);
-
-    // The file first: if it cannot be written, no tile store is made either.
-    auto writer = open_streaming_image(output.path, output.format, plan.width, plan.height, layout);
-    TileStore store(result.store, render_identity(renderer, request, output, layout, plan),
-                    settings.resume, output.path);
-
-    const auto start = std::chrono::steady_clock::now();
-    const size_t band_stride = layout.pixel_bytes() * size_t(plan.width);
-    std::vector<uint8_t> band;
-    TiledProgress progress;
-    progress.tiles_total = plan.tiles();
-    long rays = 0;
     FrameRequest tile_request = request;
     tile_request.cancel = settings.interrupted;
+    const TiledRender render(renderer, tile_request, output, settings.tile_size);
+    TiledFile file(render, output, settings.resume);
+    TiledResult result;
+    result.plan = render.plan();
+    result.tiles = render.plan().tiles();
+    result.tiles_resumed = file.tiles_resumed();
+    result.samples = request.samples;
+    result.store = file.store_path();
+
+    const auto start = std::chrono::steady_clock::now();
+    TiledProgress progress;
+    progress.tiles_total = result.tiles;
+    progress.tiles_resumed = result.tiles_resumed;
+    progress.tiles_done = result.tiles_resumed;
+    long rays = 0;
     const auto report = [&] {
         progress.seconds = seconds_since(start);
         progress.rays_per_second = progress.seconds > 0.0 ? double(rays) / progress.seconds : 0.0;
         if (settings.on_progress) settings.on_progress(progress);
     };
-    for (int b = 0; b < plan.bands(); ++b) {
-        const int band_y = b * plan.band_rows;
-        const int rows = std::min(plan.band_rows, plan.height - band_y);
-        band.resize(band_stride * size_t(rows));
-        if (std::optional<long> kept_hits = store.load_band(b, band)) {
-            result.hits += *kept_hits;
-            result.tiles_resumed += plan.tiles_per_band();
-            progress.tiles_resumed = result.tiles_resumed;
-            progress.tiles_done += plan.tiles_per_band();
-            report();
-        } else {
-            long band_hits = 0;
-            for (int t = 0; t < plan.tiles_per_band(); ++t) {
-                if (settings.interrupted && settings.interrupted()) {
-                    result.interrupted = true;
-                    return result;
-                }
-                const int x = t * plan.tile_width;
-                const Rect tile{x, band_y, std::min(plan.tile_width, plan.width - x), rows};
-                const long hits =
-                    render_tile(renderer, tile_request, plan, tile, band_y, output, layout, band);
-                if (hits < 0) {
-                    result.interrupted = true;
-                    return result;
-                }
-                band_hits += hits;
-                rays += long(tile.width) * tile.height * request.samples;
-                ++progress.tiles_done;
-                report();
-            }
-            store.save_band(b, band, band_hits);
-            result.hits += band_hits;
+    if (result.tiles_resumed > 0) report();
+    for (long index : file.tiles_to_render()) {
+        if (settings.interrupted && settings.interrupted()) {
+            result.interrupted = true;
+            return result;
         }
-        writer->write_rows(band.data(), rows);
+        const std::optional<EncodedTile> tile = render.render(index);
+        if (!tile) {
+            result.interrupted = true;
+            return result;
+        }
+        file.add(index, *tile);
+        const Rect rect = tile_rect(render.plan(), index);
+        rays += long(rect.width) * rect.height * request.samples;
+        ++progress.tiles_done;
+        report();
     }
-    writer->finish();
-    store.remove();
+    file.finish();
+    result.hits = file.hits();
     result.render_ms = seconds_since(start) * 1000.0;
     return result;
 }
