@@ -12,27 +12,51 @@
 #include <spdlog/spdlog.h>
 
 #include "commands.hpp"
+#include "fgr/distributed/cluster.hpp"
 #include "fgr/program_cache.hpp"
 
 namespace fgr {
 namespace {
 
-void configure_logging(bool verbose) {
+// Under MPI, rank 0 speaks for the job: the other ranks log warnings only, named by rank.
+void configure_logging(bool verbose, const Cluster& cluster) {
     auto logger = spdlog::stderr_color_mt("fgr");
-    logger->set_pattern("fgr: %^%l%$: %v");
+    if (cluster.coordinator()) {
+        logger->set_pattern("fgr: %^%l%$: %v");
+    } else {
+        logger->set_pattern(fmt::format("fgr ({}): %^%l%$: %v", cluster.name()));
+    }
     spdlog::set_default_logger(logger);
-    spdlog::set_level(verbose ? spdlog::level::debug : spdlog::level::info);
+    const auto level = verbose ? spdlog::level::debug : spdlog::level::info;
+    spdlog::set_level(cluster.coordinator() ? level : std::max(level, spdlog::level::warn));
 }
 
 int report_error(const std::string& message, int code) {
+    Cluster& cluster = Cluster::current();
     // Errors are one line: keep only the first line of messages that carry more.
-    std::fprintf(stderr, "fgr: error: %s\n", message.substr(0, message.find('\n')).c_str());
+    const std::string line = message.substr(0, message.find('\n'));
+    if (!cluster.coordinator()) {
+        // Rank 0 prints it, naming this rank; every rank printing the same error would bury it.
+        cluster.report_failure(line);
+        return code;
+    }
+    // No rank is left waiting for rank 0, however it ended.
+    cluster.dismiss_workers();
+    std::fprintf(stderr, "fgr: error: %s\n", line.c_str());
     return code;
 }
+
+// The commands that share one render between MPI ranks.
+bool runs_across_ranks(const std::string& command) { return command == "render" || command == "video"; }
 
 }  // namespace
 
 int run_cli(int argc, char** argv) {
+    const Cluster& cluster = Cluster::current();
+    if (!cluster.unavailable().empty()) {
+        if (cluster.coordinator()) std::fprintf(stderr, "fgr: error: %s\n", cluster.unavailable().c_str());
+        return kExitFailure;
+    }
     CLI::App app{"fgr: real-time ray marching of 3D fractals"};
     app.require_subcommand(1);
     bool verbose = false;
@@ -85,9 +109,8 @@ int run_cli(int argc, char** argv) {
     } catch (const CLI::ParseError& error) {
         return report_error(error.what(), kExitUsage);
     }
-    configure_logging(verbose);
-    try {
-        const std::string command = app.get_subcommands().front()->get_name();
+    configure_logging(verbose, cluster);
+    const auto run_command = [&](const std::string& command) {
         if (command == "list") return command_list(list_scene);
         if (command == "info") return command_info(math_check);
         if (command == "video") return command_video(video_options);
@@ -98,10 +121,24 @@ int run_cli(int argc, char** argv) {
         if (command == "cache") return command_cache(cache_options);
         if (command == "environment") return command_environment(environment_options);
         return command_render(render_options);
+    };
+    try {
+        const std::string command = app.get_subcommands().front()->get_name();
+        if (!cluster.alone() && !runs_across_ranks(command)) {
+            throw UsageError(fmt::format("only `fgr render` and `fgr video` run across MPI ranks: "
+                                         "run `fgr {}` without mpirun", command));
+        }
+        const int code = run_command(command);
+        if (cluster.coordinator()) {
+            if (const std::string failure = Cluster::current().dismiss_workers(); !failure.empty()) {
+                return report_error(failure, kExitFailure);
+            }
+        }
+        return code;
     } catch (const UsageError& error) {
         return report_error(error.what(), kExitUsage);
     } catch (const KernelBuildError& error) {
-        std::fprintf(stderr, "%s\n", error.build_log().c_str());
+        if (cluster.coordinator()) std::fprintf(stderr, "%s\n", error.build_log().c_str());
         return report_error(error.what(), kExitFailure);
     } catch (const std::exception& error) {
         return report_error(error.what(), kExitFailure);

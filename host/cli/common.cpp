@@ -5,6 +5,7 @@
 #include <spdlog/spdlog.h>
 
 #include "commands.hpp"
+#include "fgr/distributed/cluster.hpp"
 #include "fgr/atomic_file.hpp"
 #include "fgr/renderer.hpp"
 #include "fgr/scene_source.hpp"
@@ -51,8 +52,23 @@ Scene scene_as_used(const Scene& scene, bool dev) {
 }
 
 ComputeDevice open_requested_device(int index) {
-    if (index >= static_cast<int>(list_devices().size())) {
+    const std::vector<DeviceInfo> devices = list_devices();
+    if (index >= static_cast<int>(devices.size())) {
         throw UsageError(fmt::format("no OpenCL device {} (see `fgr info`)", index));
+    }
+    const Cluster& cluster = Cluster::current();
+    if (index < 0 && !cluster.alone()) {
+        // One device a rank where a node has several of the default's kind (GPUs, say): the
+        // ranks on a node take them in turn by their local rank.
+        std::vector<int> candidates;
+        const bool any_gpu = std::any_of(devices.begin(), devices.end(), [](const DeviceInfo& d) { return d.is_gpu; });
+        for (const DeviceInfo& device : devices) {
+            if (device.is_gpu == any_gpu) candidates.push_back(device.index);
+        }
+        if (!candidates.empty()) {
+            index = candidates[size_t(cluster.local_rank()) % candidates.size()];
+            spdlog::debug("{} renders on OpenCL device {}", cluster.name(), index);
+        }
     }
     return open_device(index);
 }

@@ -1,3 +1,8 @@
 #include "cli.hpp"
+#include "fgr/distributed/cluster.hpp"
 
-int main(int argc, char** argv) { return fgr::run_cli(argc, argv); }
+int main(int argc, char** argv) {
+    // Joins the MPI job when mpirun started fgr on several ranks (fgr/distributed/cluster.hpp).
+    fgr::ClusterSession session(&argc, &argv);
+    return fgr::run_cli(argc, argv);
+}

@@ -3,6 +3,9 @@
 #include <cctype>
 #include <chrono>
 #include <filesystem>
+#include <functional>
+#include <map>
+#include <numeric>
 #include <string>
 
 #include <fmt/format.h>
@@ -11,6 +14,10 @@
 #include "commands.hpp"
 #include "fgr/camera.hpp"
 #include "fgr/camera_path_file.hpp"
+#include "fgr/distributed/cluster.hpp"
+#include "fgr/distributed/frame_wire.hpp"
+#include "fgr/distributed/task_farm.hpp"
+#include "fgr/frame_merge.hpp"
 #include "fgr/ifs.hpp"
 #include "fgr/kernel_assembly.hpp"
 #include "fgr/program_cache.hpp"
@@ -93,6 +100,9 @@ void check_output_path(const std::filesystem::path& output) {
 void check_render_options(const RenderOptions& options) {
     chosen_projection(options.projection);  // bad values fail before anything is loaded
     if (options.all) {
+        if (!Cluster::current().alone()) {
+            throw UsageError("--all renders the scenes one after another: run it without mpirun");
+        }
         try {
             apply_effect_changes(0, options.effect_changes);
         } catch (const std::invalid_argument& error) {
@@ -197,34 +207,23 @@ StillJob still_job(const Scene& scene, const FrameRequest& request, const Render
 
 namespace {
 
-// Renders `request` (render_still: the kernel, float or double), writes the PNG, prints the
-// figures.
-void render_to_file(const Scene& scene, const FrameRequest& request, const ComputeDevice& device,
-                    ProgramCache& cache, const RenderOptions& options,
-                    const std::filesystem::path& output) {
-    StillJob job = still_job(scene, request, options);
-    const StillSettings& settings = job.settings;
-    const Aovs& aovs = job.aovs;
-    FrameRequest& reported = job.request;
-    if (options.time_limit) {
-        const auto until = std::chrono::steady_clock::now() +
-                           std::chrono::duration_cast<std::chrono::steady_clock::duration>(
-                               std::chrono::duration<double>(*options.time_limit));
-        reported.enough = [until] { return std::chrono::steady_clock::now() >= until; };
-    }
-    if (reported.samples >= 8) {
-        // Long multi-sample renders say how far they are, about every tenth of the way.
-        reported.on_sample = [step = std::max(1, reported.samples / 10)](int done, int total) {
-            if (done % step == 0 || done == total) spdlog::info("sample {}/{}", done, total);
-        };
-    }
-    const Frame frame = render_still(scene, reported, device, cache, settings);
+// FrameRequest::enough for --time-limit: true once `seconds` have passed from now.
+std::function<bool()> deadline_after(double seconds) {
+    const auto until = std::chrono::steady_clock::now() +
+                       std::chrono::duration_cast<std::chrono::steady_clock::duration>(
+                           std::chrono::duration<double>(seconds));
+    return [until] { return std::chrono::steady_clock::now() >= until; };
+}
+
+// Prints the figures of a rendered still and writes it to `output`.
+void report_and_write(const Scene& scene, const FrameRequest& request, const RenderOptions& options,
+                      const Aovs& aovs, const Frame& frame, const std::filesystem::path& output) {
     fmt::print("render_ms {:.1f}\n", frame.render_ms);
     fmt::print("hits {}\n", frame.hits);
     fmt::print("samples_per_pixel {}\n", frame.samples);
-    if (frame.samples < reported.samples) {
+    if (options.time_limit && frame.samples < request.samples * Cluster::current().size()) {
         spdlog::info("--time-limit {:g} s reached after {} of {} samples per pixel",
-                     *options.time_limit, frame.samples, reported.samples);
+                     *options.time_limit, frame.samples, request.samples * Cluster::current().size());
     }
     fmt::print("samples_per_second {:.0f}\n",
                double(frame.samples) * request.width * request.height /
@@ -272,6 +271,77 @@ void render_to_file(const Scene& scene, const FrameRequest& request, const Compu
         throw RuntimeFailure(error.what());
     }
     fmt::print("wrote {} ({}x{})\n", output.string(), frame.image.width, frame.image.height);
+}
+
+// Renders `request` (render_still: the kernel, float or double), writes the file, prints the
+// figures.
+void render_to_file(const Scene& scene, const FrameRequest& request, const ComputeDevice& device,
+                    ProgramCache& cache, const RenderOptions& options,
+                    const std::filesystem::path& output) {
+    StillJob job = still_job(scene, request, options);
+    FrameRequest& reported = job.request;
+    if (options.time_limit) reported.enough = deadline_after(*options.time_limit);
+    if (reported.samples >= 8) {
+        // Long multi-sample renders say how far they are, about every tenth of the way.
+        reported.on_sample = [step = std::max(1, reported.samples / 10)](int done, int total) {
+            if (done % step == 0 || done == total) spdlog::info("sample {}/{}", done, total);
+        };
+    }
+    const Frame frame = render_still(scene, reported, device, cache, job.settings);
+    report_and_write(scene, reported, options, job.aovs, frame, output);
+}
+
+// A path-traced still under MPI: every rank renders the whole image with a seed of its own (the
+// job's --seed plus the task number), and rank 0 adds the frames up in task order with their
+// sample counts: N ranks give N times the samples, the same estimator as one long render, and the
+// same image run to run.
+int render_samples_across_ranks(Cluster& cluster, const Scene& scene, const FrameRequest& request,
+                                const ComputeDevice& device, ProgramCache& cache,
+                                const RenderOptions& options) {
+    const StillJob job = still_job(scene, request, options);
+    std::vector<int64_t> seeds(size_t(cluster.size()));
+    std::iota(seeds.begin(), seeds.end(), 0);
+    const TaskWork work = [&](int64_t task) {
+        FrameRequest part = job.request;
+        part.path.seed = job.request.path.seed + static_cast<uint32_t>(task);
+        if (options.time_limit) part.enough = deadline_after(*options.time_limit);
+        return frame_to_bytes(render_still(scene, part, device, cache, job.settings));
+    };
+    Frame merged;
+    std::map<int64_t, Frame> early;  // frames that came before one of a lower task
+    int64_t next = 0;
+    const auto started = std::chrono::steady_clock::now();
+    const ResultSink add = [&](int64_t task, std::vector<uint8_t>&& bytes) {
+        early.emplace(task, frame_from_bytes(bytes));
+        for (auto it = early.find(next); it != early.end(); it = early.find(++next)) {
+            add_samples(merged, it->second);
+            early.erase(it);
+        }
+    };
+    run_farm(cluster, seeds, work, add);
+    if (!cluster.coordinator()) return 0;
+    merged.render_ms = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - started).count();
+    merged.image = display_image(scene, request.params, merged.linear, merged.image.width, merged.image.height);
+    fmt::print("mpi_ranks {} (seeds {} to {})\n", cluster.size(), job.request.path.seed,
+               job.request.path.seed + uint32_t(cluster.size() - 1));
+    report_and_write(scene, job.request, options, job.aovs, merged, options.output);
+    fmt::print("mpi_traffic {} messages, {} bytes\n", cluster.traffic().messages, cluster.traffic().bytes);
+    return 0;
+}
+
+// `fgr render` under mpirun: path-traced stills by seeds, everything else in tiles.
+int render_across_ranks(Cluster& cluster, const Scene& scene, const FrameRequest& request,
+                        const ComputeDevice& device, ProgramCache& cache,
+                        const RenderOptions& options) {
+    if (chosen_mode(options.mode, scene) == RenderMode::Path && !tiled_render_wanted(options)) {
+        if (options.stats) throw UsageError("--stats is for renders of one process (without mpirun)");
+        return render_samples_across_ranks(cluster, scene, request, device, cache, options);
+    }
+    if (options.stats || options.time_limit) {
+        throw UsageError("under mpirun a shaded or brute-force still is shared out in tiles: no "
+                         "--stats or --time-limit (those are for one process, or --mode path)");
+    }
+    return render_tiled(scene, request, device, cache, options);
 }
 
 int render_all(const RenderOptions& options) {
@@ -375,6 +445,9 @@ int command_render(const RenderOptions& options) {
     request.view = choose_view(scene, options);
     const ComputeDevice device = open_requested_device(options.device);
     ProgramCache cache(ProgramCache::default_directory());
+    if (Cluster& cluster = Cluster::current(); !cluster.alone()) {
+        return render_across_ranks(cluster, scene, request, device, cache, options);
+    }
     if (tiled_render_wanted(options)) return render_tiled(scene, request, device, cache, options);
     render_to_file(scene, request, device, cache, options, options.output);
     return 0;

@@ -2,12 +2,19 @@
 
 #include <sys/resource.h>
 
+#include <algorithm>
+#include <chrono>
+#include <cmath>
 #include <csignal>
 #include <filesystem>
+#include <optional>
 
 #include <fmt/format.h>
 #include <spdlog/spdlog.h>
 
+#include "fgr/distributed/cluster.hpp"
+#include "fgr/distributed/frame_wire.hpp"
+#include "fgr/distributed/task_farm.hpp"
 #include "fgr/parameters.hpp"
 #include "fgr/precision.hpp"
 #include "fgr/progress.hpp"
@@ -74,8 +81,93 @@ void check_tiled_options(const RenderOptions& options) {
     }
 }
 
+namespace {
+
+// Under MPI the tiles are the unit of work: small enough for about eight a rank, so that a slow
+// tile does not leave the others idle at the end, and no larger than a single process's.
+int tile_size_for(const RenderOptions& options, int ranks) {
+    if (options.tile_size) return *options.tile_size;
+    if (ranks == 1) return kDefaultTileSize;
+    const double side = std::sqrt(double(options.width) * double(options.height) / (8.0 * ranks));
+    return std::clamp(static_cast<int>(side) / 4 * 4, 64, kDefaultTileSize);
+}
+
+// Rank 0 (or the one process): hands the tiles out (fgr/distributed/task_farm.hpp), places them
+// as they come back and streams the file, with a progress line.
+int write_tiles(Cluster& cluster, const TiledRender& render, const TaskWork& work,
+                const TiledOutput& output, const RenderOptions& options) {
+    std::optional<TiledFile> file;
+    try {
+        file.emplace(render, output, options.resume);
+    } catch (const std::invalid_argument& error) {
+        throw UsageError(error.what());
+    } catch (const std::runtime_error& error) {
+        throw RuntimeFailure(error.what());
+    }
+    const TilePlan& plan = render.plan();
+    const long resumed = file->tiles_resumed();
+    ProgressLine progress("tiles");
+    const auto start = std::chrono::steady_clock::now();
+    long done = resumed, rays = 0;
+    const ResultSink place = [&](int64_t index, std::vector<uint8_t>&& bytes) {
+        file->add(index, tile_from_bytes(bytes));
+        const long band = index / plan.tiles_per_band();
+        const long columns = std::min<long>(plan.tile_width, plan.width - index % plan.tiles_per_band() * plan.tile_width);
+        rays += columns * std::min<long>(plan.band_rows, plan.height - band * plan.band_rows) *
+                render.request().samples;
+        ++done;
+        const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+        progress.update(done, plan.tiles(), done - resumed, seconds,
+                        format_rate(seconds > 0.0 ? double(rays) / seconds : 0.0) + "rays/s");
+    };
+    FarmSettings farm;
+    farm.interrupted = [] { return InterruptCatcher::caught(); };
+    std::vector<int64_t> tiles(file->tiles_to_render().begin(), file->tiles_to_render().end());
+    bool finished = false;
+    try {
+        finished = run_farm(cluster, tiles, work, place, farm);
+        if (finished) file->finish();
+    } catch (const std::runtime_error& error) {
+        // Ctrl-C reaches every rank: a tile abandoned for it is no failure of that rank.
+        progress.finish();
+        if (!InterruptCatcher::caught()) {
+            if (file->keep_store_if_useful()) {
+                spdlog::info("the finished bands are kept in '{}' for --resume",
+                             file->store_path().string());
+            }
+            throw RuntimeFailure(error.what());
+        }
+    }
+    progress.finish();
+    if (!finished || InterruptCatcher::caught()) {
+        const std::filesystem::path store = file->store_path();
+        file.reset();  // removes the unfinished file, keeps the store
+        spdlog::error("interrupted: nothing written to '{}'; the finished bands are kept in '{}': "
+                      "run the same command with --resume to continue",
+                      options.output, store.string());
+        return 130;
+    }
+    const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+    fmt::print("render_ms {:.1f}\n", seconds * 1000.0);
+    fmt::print("hits {}\n", file->hits());
+    fmt::print("samples_per_pixel {}\n", render.request().samples);
+    fmt::print("tiles {} ({} from an earlier run; {} rows a band, {} columns a tile, {} padding)\n",
+               plan.tiles(), resumed, plan.band_rows, plan.tile_width, plan.padding);
+    if (!cluster.alone()) {
+        fmt::print("mpi_ranks {}\n", cluster.size());
+        fmt::print("mpi_traffic {} messages, {} bytes\n", cluster.traffic().messages,
+                   cluster.traffic().bytes);
+    }
+    fmt::print("peak_memory_mib {:.1f}\n", peak_memory_mib());
+    fmt::print("wrote {} ({}x{})\n", options.output, plan.width, plan.height);
+    return 0;
+}
+
+}  // namespace
+
 int render_tiled(const Scene& scene, const FrameRequest& request, const ComputeDevice& device,
                  ProgramCache& cache, const RenderOptions& options) {
+    Cluster& cluster = Cluster::current();
     const StillJob job = still_job(scene, request, options);
     const StillSettings& settings = job.settings;
     const FrameRequest& whole = job.request;
@@ -92,40 +184,25 @@ int render_tiled(const Scene& scene, const FrameRequest& request, const ComputeD
     output.display = display_transform(scene, whole.params);
 
     InterruptCatcher catcher;
-    ProgressLine progress("tiles");
-    TiledSettings tiled;
-    tiled.tile_size = options.tile_size.value_or(kDefaultTileSize);
-    tiled.resume = options.resume;
-    tiled.interrupted = [] { return InterruptCatcher::caught(); };
-    tiled.on_progress = [&](const TiledProgress& p) {
-        progress.update(p.tiles_done, p.tiles_total, p.tiles_done - p.tiles_resumed, p.seconds,
-                        format_rate(p.rays_per_second) + "rays/s");
+    FrameRequest tile_request = whole;
+    tile_request.cancel = [] { return InterruptCatcher::caught(); };
+    const TiledRender render = [&] {
+        try {
+            return TiledRender(renderer, tile_request, output, tile_size_for(options, cluster.size()));
+        } catch (const std::invalid_argument& error) {
+            throw UsageError(error.what());
+        }
+    }();
+    const TaskWork work = [&](int64_t index) {
+        std::optional<EncodedTile> tile = render.render(index);
+        if (!tile) throw RuntimeFailure("interrupted");
+        return tile_to_bytes(*tile);
     };
-    TiledResult result;
-    try {
-        result = render_tiled_still(renderer, whole, output, tiled);
-    } catch (const std::invalid_argument& error) {
-        throw UsageError(error.what());
-    } catch (const std::runtime_error& error) {
-        progress.finish();
-        throw RuntimeFailure(error.what());
+    if (!cluster.coordinator()) {
+        run_farm(cluster, {}, work, {});
+        return 0;
     }
-    progress.finish();
-    if (result.interrupted) {
-        spdlog::error("interrupted: nothing written to '{}'; the finished bands are kept in '{}': "
-                      "run the same command with --resume to continue",
-                      options.output, result.store.string());
-        return 130;
-    }
-    fmt::print("render_ms {:.1f}\n", result.render_ms);
-    fmt::print("hits {}\n", result.hits);
-    fmt::print("samples_per_pixel {}\n", result.samples);
-    fmt::print("tiles {} ({} from an earlier run; {} rows a band, {} columns a tile, {} padding)\n",
-               result.tiles, result.tiles_resumed, result.plan.band_rows, result.plan.tile_width,
-               result.plan.padding);
-    fmt::print("peak_memory_mib {:.1f}\n", peak_memory_mib());
-    fmt::print("wrote {} ({}x{})\n", options.output, whole.width, whole.height);
-    return 0;
+    return write_tiles(cluster, render, work, output, options);
 }
 
 }  // namespace fgr

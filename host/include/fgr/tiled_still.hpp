@@ -151,6 +151,9 @@ public:
     // band is still missing).
     void finish();
     const std::filesystem::path& store_path() const { return store_path_; }
+    // After a failure: removes the tile store when it holds no band (nothing to resume from);
+    // returns whether it is kept.
+    bool keep_store_if_useful();
 
 private:
     struct OpenBand {

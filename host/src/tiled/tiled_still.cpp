@@ -273,6 +273,12 @@ void TiledFile::finish() {
     store_->remove();
 }
 
+bool TiledFile::keep_store_if_useful() {
+    if (store_->bands_kept() > 0) return true;
+    store_->remove();
+    return false;
+}
+
 TiledResult render_tiled_still(Renderer& renderer, const FrameRequest& request,
                                const TiledOutput& output, const TiledSettings& settings) {
     FrameRequest tile_request = request;

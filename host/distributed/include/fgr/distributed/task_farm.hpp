@@ -1,0 +1,41 @@
+#pragma once
+// Work shared out over the ranks of a Cluster, as a farm: rank 0 hands tasks out in order to
+// whichever rank asks next (so a slow rank or a slow task holds no one else up) and gathers the
+// results; every other rank pulls a task, renders it, sends the result and pulls the next. Rank 0
+// renders too, on a second thread, while its main thread schedules and writes.
+
+#include <cstdint>
+#include <functional>
+#include <stdexcept>
+#include <vector>
+
+#include "fgr/distributed/cluster.hpp"
+
+namespace fgr {
+
+// Renders task `task` into bytes (on any rank); may throw, which ends the job.
+using TaskWork = std::function<std::vector<uint8_t>(int64_t task)>;
+// Rank 0: takes the result of `task`, in the order results arrive (not task order).
+using ResultSink = std::function<void(int64_t task, std::vector<uint8_t>&& result)>;
+
+struct FarmSettings {
+    // At most this many tasks handed out beyond the oldest unfinished one: bounds what rank 0
+    // keeps while it waits for a slow task (0: four per rank).
+    int window = 0;
+    // Rank 0: polled; true stops handing out tasks (the farm then returns interrupted).
+    std::function<bool()> interrupted{};
+};
+
+// Thrown on rank 0 when a worker failed; the message names the rank and its host.
+struct RankFailure : std::runtime_error {
+    using std::runtime_error::runtime_error;
+};
+
+// Runs `tasks` (ids, handed out in this order) over every rank of `cluster`. Rank 0 returns when
+// every result went to `sink` (true) or `interrupted` stopped it (false); workers return when
+// rank 0 has no more tasks for them. Throws RankFailure (rank 0) for a failed worker; whatever
+// `work` or `sink` throws propagates on the rank it was thrown on.
+bool run_farm(Cluster& cluster, const std::vector<int64_t>& tasks, const TaskWork& work,
+              const ResultSink& sink, const FarmSettings& settings = {});
+
+}  // namespace fgr
