@@ -5,6 +5,8 @@
 #include <chrono>
 #include <csignal>
 #include <filesystem>
+#include <map>
+#include <numeric>
 #include <optional>
 #include <string>
 #include <vector>
@@ -15,6 +17,9 @@
 
 #include "commands.hpp"
 #include "fgr/camera.hpp"
+#include "fgr/distributed/cluster.hpp"
+#include "fgr/distributed/frame_wire.hpp"
+#include "fgr/distributed/task_farm.hpp"
 #include "fgr/program_cache.hpp"
 #include "fgr/progress.hpp"
 #include "fgr/video_encoder.hpp"
@@ -165,6 +170,25 @@ int command_video(const VideoOptions& options) {
     const bool in_double = renderer.choose_precision(views, job.request.width, job.request.params);
 
     InterruptGuard interrupt_guard;
+    job.request.cancel = [] { return interrupted != 0; };
+    const bool keep_planes = !options.frames_directory.empty();
+    // Any rank renders any frame (fgr/distributed/task_farm.hpp); what travels is what rank 0
+    // writes: the display image, and the planes too when it writes frame files.
+    const TaskWork work = [&](int64_t index) {
+        FrameRequest request = job.request;
+        request.view = views[size_t(index)];
+        Frame frame = renderer.render(request);
+        if (interrupted) throw RuntimeFailure("interrupted: no video written");
+        if (keep_planes) return frame_to_bytes(frame);
+        Frame image_only;
+        image_only.image = std::move(frame.image);
+        return frame_to_bytes(image_only);
+    };
+    Cluster& cluster = Cluster::current();
+    if (!cluster.coordinator()) {
+        run_farm(cluster, {}, work, {});
+        return 0;
+    }
     std::optional<VideoEncoder> encoder;
     if (!options.output.empty()) {
         encoder.emplace(options.output,
@@ -179,25 +203,21 @@ int command_video(const VideoOptions& options) {
                                              options.frames_directory, error.message()));
         }
     }
-    spdlog::info("{} frames at {:g} fps: path time {:g} to {:g} s, {}{}", views.size(), timing.fps,
+    spdlog::info("{} frames at {:g} fps: path time {:g} to {:g} s, {}{}{}", views.size(), timing.fps,
                  timing.start, timing.frame_time(timing.frame_count() - 1),
                  in_double ? "double" : "float",
-                 encoder ? ", encoding " + encoder->description() : "");
-    job.request.cancel = [] { return interrupted != 0; };
+                 encoder ? ", encoding " + encoder->description() : "",
+                 cluster.alone() ? "" : fmt::format(", over {} MPI ranks", cluster.size()));
     ProgressLine progress("frames");
     const long total_frames = static_cast<long>(views.size());
     const auto started = std::chrono::steady_clock::now();
-    for (size_t i = 0; i < views.size(); ++i) {
-        job.request.view = views[i];
-        const Frame frame = renderer.render(job.request);
-        if (interrupted) {
-            progress.finish();
-            throw RuntimeFailure("interrupted: no video written");
-        }
+    std::map<int64_t, Frame> early;  // frames that came before one of a lower number
+    int64_t next = 0;
+    const auto write_frame = [&](const Frame& frame, int64_t index) {
         if (encoder) encoder->add_frame(frame.image);
         if (!options.frames_directory.empty()) {
             try {
-                write_still(frame_file(options, static_cast<int>(i)), frame,
+                write_still(frame_file(options, static_cast<int>(index)), frame,
                             StillOutput{frame_options.bit_depth,
                                         display_transform(scene, job.request.params),
                                         frame_options.alpha, job.aovs});
@@ -205,11 +225,34 @@ int command_video(const VideoOptions& options) {
                 throw RuntimeFailure(error.what());
             }
         }
-        const long done = static_cast<long>(i + 1);
+    };
+    // Frames go into the file in order, whichever rank finished first.
+    const ResultSink in_order = [&](int64_t index, std::vector<uint8_t>&& bytes) {
+        early.emplace(index, frame_from_bytes(bytes));
+        for (auto it = early.find(next); it != early.end(); it = early.find(++next)) {
+            write_frame(it->second, it->first);
+            early.erase(it);
+        }
         const double seconds =
             std::chrono::duration<double>(std::chrono::steady_clock::now() - started).count();
-        progress.update(done, total_frames, done, seconds,
-                        fmt::format("{:.2f} fps", seconds > 0.0 ? double(done) / seconds : 0.0));
+        progress.update(next, total_frames, next, seconds,
+                        fmt::format("{:.2f} fps", seconds > 0.0 ? double(next) / seconds : 0.0));
+    };
+    std::vector<int64_t> frames(views.size());
+    std::iota(frames.begin(), frames.end(), 0);
+    FarmSettings farm;
+    farm.interrupted = [] { return interrupted != 0; };
+    bool finished = false;
+    try {
+        finished = run_farm(cluster, frames, work, in_order, farm);
+    } catch (const std::runtime_error&) {
+        progress.finish();
+        if (interrupted) throw RuntimeFailure("interrupted: no video written");
+        throw;
+    }
+    if (!finished) {
+        progress.finish();
+        throw RuntimeFailure("interrupted: no video written");
     }
     progress.finish();
     if (encoder) {
@@ -219,6 +262,11 @@ int command_video(const VideoOptions& options) {
     }
     if (!options.frames_directory.empty()) {
         fmt::print("wrote {} frames to {}\n", views.size(), options.frames_directory);
+    }
+    if (!cluster.alone()) {
+        fmt::print("mpi_ranks {}\n", cluster.size());
+        fmt::print("mpi_traffic {} messages, {} bytes\n", cluster.traffic().messages,
+                   cluster.traffic().bytes);
     }
     return 0;
 }
