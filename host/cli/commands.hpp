@@ -17,6 +17,8 @@
 #include "fgr/accuracy.hpp"
 #include "fgr/bench.hpp"
 #include "fgr/discovery.hpp"
+#include "fgr/distributed/cluster.hpp"
+#include "fgr/distributed/task_farm.hpp"
 #include "fgr/opencl_device.hpp"
 #include "fgr/parameters.hpp"
 #include "fgr/path_settings.hpp"
@@ -102,6 +104,10 @@ void add_projection_options(CLI::App* command, ProjectionOptions& options);
 // The projection the options ask for (UsageError, one line, for a bad name, a value out of range
 // or a setting the chosen projection does not use).
 Projection chosen_projection(const ProjectionOptions& options);
+
+// Under MPI, rank 0's figures of a distributed command: ranks, the tasks each rendered, and the
+// messages and bytes rank 0 exchanged.
+void print_mpi_figures(const Cluster& cluster, const FarmOutcome& outcome);
 
 // Throws UsageError unless the directory `file` would be written into exists.
 void check_output_directory(const std::filesystem::path& file);

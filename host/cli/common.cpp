@@ -1,3 +1,4 @@
+#include <algorithm>
 #include <string>
 #include <vector>
 
@@ -5,8 +6,8 @@
 #include <spdlog/spdlog.h>
 
 #include "commands.hpp"
-#include "fgr/distributed/cluster.hpp"
 #include "fgr/atomic_file.hpp"
+#include "fgr/distributed/cluster.hpp"
 #include "fgr/renderer.hpp"
 #include "fgr/scene_source.hpp"
 
@@ -71,6 +72,13 @@ ComputeDevice open_requested_device(int index) {
         }
     }
     return open_device(index);
+}
+
+void print_mpi_figures(const Cluster& cluster, const FarmOutcome& outcome) {
+    fmt::print("mpi_ranks {}\n", cluster.size());
+    fmt::print("mpi_tasks_by_rank {}\n", tasks_by_rank_text(outcome));
+    fmt::print("mpi_traffic {} messages, {} bytes\n", cluster.traffic().messages,
+               cluster.traffic().bytes);
 }
 
 void add_device_options(CLI::App* command, int& device, int& packet_width) {

@@ -318,14 +318,14 @@ int render_samples_across_ranks(Cluster& cluster, const Scene& scene, const Fram
             early.erase(it);
         }
     };
-    run_farm(cluster, seeds, work, add);
+    const FarmOutcome outcome = run_farm(cluster, seeds, work, add);
     if (!cluster.coordinator()) return 0;
     merged.render_ms = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - started).count();
     merged.image = display_image(scene, request.params, merged.linear, merged.image.width, merged.image.height);
-    fmt::print("mpi_ranks {} (seeds {} to {})\n", cluster.size(), job.request.path.seed,
+    fmt::print("seeds {} to {} (one a rank)\n", job.request.path.seed,
                job.request.path.seed + uint32_t(cluster.size() - 1));
     report_and_write(scene, job.request, options, job.aovs, merged, options.output);
-    fmt::print("mpi_traffic {} messages, {} bytes\n", cluster.traffic().messages, cluster.traffic().bytes);
+    print_mpi_figures(cluster, outcome);
     return 0;
 }
 

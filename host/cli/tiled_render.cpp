@@ -123,10 +123,10 @@ int write_tiles(Cluster& cluster, const TiledRender& render, const TaskWork& wor
     FarmSettings farm;
     farm.interrupted = [] { return InterruptCatcher::caught(); };
     std::vector<int64_t> tiles(file->tiles_to_render().begin(), file->tiles_to_render().end());
-    bool finished = false;
+    FarmOutcome outcome;
     try {
-        finished = run_farm(cluster, tiles, work, place, farm);
-        if (finished) file->finish();
+        outcome = run_farm(cluster, tiles, work, place, farm);
+        if (outcome.finished) file->finish();
     } catch (const std::runtime_error& error) {
         // Ctrl-C reaches every rank: a tile abandoned for it is no failure of that rank.
         progress.finish();
@@ -139,7 +139,7 @@ int write_tiles(Cluster& cluster, const TiledRender& render, const TaskWork& wor
         }
     }
     progress.finish();
-    if (!finished || InterruptCatcher::caught()) {
+    if (!outcome.finished || InterruptCatcher::caught()) {
         const std::filesystem::path store = file->store_path();
         file.reset();  // removes the unfinished file, keeps the store
         spdlog::error("interrupted: nothing written to '{}'; the finished bands are kept in '{}': "
@@ -153,11 +153,7 @@ int write_tiles(Cluster& cluster, const TiledRender& render, const TaskWork& wor
     fmt::print("samples_per_pixel {}\n", render.request().samples);
     fmt::print("tiles {} ({} from an earlier run; {} rows a band, {} columns a tile, {} padding)\n",
                plan.tiles(), resumed, plan.band_rows, plan.tile_width, plan.padding);
-    if (!cluster.alone()) {
-        fmt::print("mpi_ranks {}\n", cluster.size());
-        fmt::print("mpi_traffic {} messages, {} bytes\n", cluster.traffic().messages,
-                   cluster.traffic().bytes);
-    }
+    if (!cluster.alone()) print_mpi_figures(cluster, outcome);
     fmt::print("peak_memory_mib {:.1f}\n", peak_memory_mib());
     fmt::print("wrote {} ({}x{})\n", options.output, plan.width, plan.height);
     return 0;

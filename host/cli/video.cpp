@@ -242,15 +242,15 @@ int command_video(const VideoOptions& options) {
     std::iota(frames.begin(), frames.end(), 0);
     FarmSettings farm;
     farm.interrupted = [] { return interrupted != 0; };
-    bool finished = false;
+    FarmOutcome outcome;
     try {
-        finished = run_farm(cluster, frames, work, in_order, farm);
+        outcome = run_farm(cluster, frames, work, in_order, farm);
     } catch (const std::runtime_error&) {
         progress.finish();
         if (interrupted) throw RuntimeFailure("interrupted: no video written");
         throw;
     }
-    if (!finished) {
+    if (!outcome.finished) {
         progress.finish();
         throw RuntimeFailure("interrupted: no video written");
     }
@@ -263,11 +263,7 @@ int command_video(const VideoOptions& options) {
     if (!options.frames_directory.empty()) {
         fmt::print("wrote {} frames to {}\n", views.size(), options.frames_directory);
     }
-    if (!cluster.alone()) {
-        fmt::print("mpi_ranks {}\n", cluster.size());
-        fmt::print("mpi_traffic {} messages, {} bytes\n", cluster.traffic().messages,
-                   cluster.traffic().bytes);
-    }
+    if (!cluster.alone()) print_mpi_figures(cluster, outcome);
     return 0;
 }
 

@@ -1,6 +1,8 @@
 #include "fgr/distributed/task_farm.hpp"
 
 #include <chrono>
+#include <cstdlib>
+#include <string_view>
 #include <condition_variable>
 #include <deque>
 #include <exception>
@@ -129,8 +131,11 @@ private:
     size_t next_ = 0, oldest_ = 0, back_ = 0;
 };
 
-bool run_coordinator(Cluster& cluster, const std::vector<int64_t>& tasks, const TaskWork& work,
-                     const ResultSink& sink, const FarmSettings& settings) {
+FarmOutcome run_coordinator(Cluster& cluster, const std::vector<int64_t>& tasks,
+                            const TaskWork& work, const ResultSink& sink,
+                            const FarmSettings& settings) {
+    FarmOutcome outcome;
+    outcome.tasks_by_rank.assign(size_t(cluster.size()), 0);
     const int window = settings.window > 0 ? settings.window : 4 * cluster.size();
     Schedule schedule(tasks, window);
     std::deque<int> waiting;  // workers that asked while the window was full
@@ -153,7 +158,7 @@ bool run_coordinator(Cluster& cluster, const std::vector<int64_t>& tasks, const 
     };
     LocalWorker local(work);
     while (!schedule.all_back()) {
-        if (settings.interrupted && settings.interrupted()) return false;
+        if (settings.interrupted && settings.interrupted()) return outcome;
         bool busy = false;
         while (std::optional<Message> message = cluster.try_receive()) {
             busy = true;
@@ -161,6 +166,7 @@ bool run_coordinator(Cluster& cluster, const std::vector<int64_t>& tasks, const 
                 case MessageKind::Ready: serve(message->from); break;
                 case MessageKind::Result:
                     schedule.returned(message->task);
+                    ++outcome.tasks_by_rank[size_t(message->from)];
                     sink(message->task, std::move(message->payload));
                     serve_waiting();
                     serve(message->from);
@@ -175,10 +181,11 @@ bool run_coordinator(Cluster& cluster, const std::vector<int64_t>& tasks, const 
         if (auto finished = local.take_finished()) {
             busy = true;
             schedule.returned(finished->first);
+            ++outcome.tasks_by_rank[0];
             sink(finished->first, std::move(finished->second));
             serve_waiting();
         }
-        if (local.idle()) {
+        if (settings.coordinator_renders && local.idle()) {
             if (const std::optional<int64_t> task = schedule.hand_out()) {
                 local.assign(*task);
                 busy = true;
@@ -188,26 +195,44 @@ bool run_coordinator(Cluster& cluster, const std::vector<int64_t>& tasks, const 
     }
     // Workers still waiting for a task learn there is none.
     for (int rank : waiting) cluster.send(rank, MessageKind::Done, -1);
-    return true;
+    outcome.finished = true;
+    return outcome;
 }
 
-bool run_alone(const std::vector<int64_t>& tasks, const TaskWork& work, const ResultSink& sink,
-               const FarmSettings& settings) {
+FarmOutcome run_alone(const std::vector<int64_t>& tasks, const TaskWork& work,
+                      const ResultSink& sink, const FarmSettings& settings) {
+    FarmOutcome outcome;
+    outcome.tasks_by_rank = {0};
     for (int64_t task : tasks) {
-        if (settings.interrupted && settings.interrupted()) return false;
+        if (settings.interrupted && settings.interrupted()) return outcome;
         sink(task, work(task));
+        ++outcome.tasks_by_rank[0];
     }
-    return true;
+    outcome.finished = true;
+    return outcome;
 }
 
 }  // namespace
 
-bool run_farm(Cluster& cluster, const std::vector<int64_t>& tasks, const TaskWork& work,
-              const ResultSink& sink, const FarmSettings& settings) {
+bool FarmSettings::coordinator_renders_by_default() {
+    const char* value = std::getenv("FGR_MPI_RANK0_RENDERS");
+    return !(value && std::string_view(value) == "0");
+}
+
+std::string tasks_by_rank_text(const FarmOutcome& outcome) {
+    std::string text;
+    for (size_t rank = 0; rank < outcome.tasks_by_rank.size(); ++rank) {
+        text += fmt::format("{}{}:{}", text.empty() ? "" : " ", rank, outcome.tasks_by_rank[rank]);
+    }
+    return text;
+}
+
+FarmOutcome run_farm(Cluster& cluster, const std::vector<int64_t>& tasks, const TaskWork& work,
+                     const ResultSink& sink, const FarmSettings& settings) {
     if (cluster.alone()) return run_alone(tasks, work, sink, settings);
     if (!cluster.coordinator()) {
         run_worker(cluster, work);
-        return true;
+        return {true, {}};
     }
     return run_coordinator(cluster, tasks, work, sink, settings);
 }

@@ -7,6 +7,7 @@
 #include <cstdint>
 #include <functional>
 #include <stdexcept>
+#include <string>
 #include <vector>
 
 #include "fgr/distributed/cluster.hpp"
@@ -24,7 +25,22 @@ struct FarmSettings {
     int window = 0;
     // Rank 0: polled; true stops handing out tasks (the farm then returns interrupted).
     std::function<bool()> interrupted{};
+    // Rank 0 renders tasks too, besides scheduling and writing. The environment variable
+    // FGR_MPI_RANK0_RENDERS=0 turns that off: for a rank 0 on a node of its own, or to see that
+    // the workers alone give the same result (the tests).
+    bool coordinator_renders = coordinator_renders_by_default();
+
+    static bool coordinator_renders_by_default();
 };
+
+// What a farm did (rank 0's view).
+struct FarmOutcome {
+    bool finished = false;                // every result went to the sink (not interrupted)
+    std::vector<long> tasks_by_rank;      // results each rank delivered
+};
+
+// "0:7 1:6 2:7": the tasks each rank rendered, for the figures a command prints.
+std::string tasks_by_rank_text(const FarmOutcome& outcome);
 
 // Thrown on rank 0 when a worker failed; the message names the rank and its host.
 struct RankFailure : std::runtime_error {
@@ -32,10 +48,10 @@ struct RankFailure : std::runtime_error {
 };
 
 // Runs `tasks` (ids, handed out in this order) over every rank of `cluster`. Rank 0 returns when
-// every result went to `sink` (true) or `interrupted` stopped it (false); workers return when
-// rank 0 has no more tasks for them. Throws RankFailure (rank 0) for a failed worker; whatever
+// every result went to `sink` (finished) or `interrupted` stopped it; workers return when rank 0
+// has no more tasks for them. Throws RankFailure (rank 0) for a failed worker; whatever
 // `work` or `sink` throws propagates on the rank it was thrown on.
-bool run_farm(Cluster& cluster, const std::vector<int64_t>& tasks, const TaskWork& work,
+FarmOutcome run_farm(Cluster& cluster, const std::vector<int64_t>& tasks, const TaskWork& work,
               const ResultSink& sink, const FarmSettings& settings = {});
 
 }  // namespace fgr
