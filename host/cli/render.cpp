@@ -4,7 +4,6 @@
 #include <chrono>
 #include <filesystem>
 #include <functional>
-#include <map>
 #include <numeric>
 #include <string>
 
@@ -308,15 +307,12 @@ int render_samples_across_ranks(Cluster& cluster, const Scene& scene, const Fram
         return frame_to_bytes(render_still(scene, part, device, cache, job.settings));
     };
     Frame merged;
-    std::map<int64_t, Frame> early;  // frames that came before one of a lower task
-    int64_t next = 0;
     const auto started = std::chrono::steady_clock::now();
+    InTaskOrder in_seed_order([&](int64_t, std::vector<uint8_t>&& bytes) {
+        add_samples(merged, frame_from_bytes(bytes));
+    });
     const ResultSink add = [&](int64_t task, std::vector<uint8_t>&& bytes) {
-        early.emplace(task, frame_from_bytes(bytes));
-        for (auto it = early.find(next); it != early.end(); it = early.find(++next)) {
-            add_samples(merged, it->second);
-            early.erase(it);
-        }
+        in_seed_order.add(task, std::move(bytes));
     };
     const FarmOutcome outcome = run_farm(cluster, seeds, work, add);
     if (!cluster.coordinator()) return 0;

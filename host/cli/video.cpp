@@ -5,7 +5,6 @@
 #include <chrono>
 #include <csignal>
 #include <filesystem>
-#include <map>
 #include <numeric>
 #include <optional>
 #include <string>
@@ -211,8 +210,6 @@ int command_video(const VideoOptions& options) {
     ProgressLine progress("frames");
     const long total_frames = static_cast<long>(views.size());
     const auto started = std::chrono::steady_clock::now();
-    std::map<int64_t, Frame> early;  // frames that came before one of a lower number
-    int64_t next = 0;
     const auto write_frame = [&](const Frame& frame, int64_t index) {
         if (encoder) encoder->add_frame(frame.image);
         if (!options.frames_directory.empty()) {
@@ -227,16 +224,16 @@ int command_video(const VideoOptions& options) {
         }
     };
     // Frames go into the file in order, whichever rank finished first.
-    const ResultSink in_order = [&](int64_t index, std::vector<uint8_t>&& bytes) {
-        early.emplace(index, frame_from_bytes(bytes));
-        for (auto it = early.find(next); it != early.end(); it = early.find(++next)) {
-            write_frame(it->second, it->first);
-            early.erase(it);
-        }
+    InTaskOrder in_order([&](int64_t index, std::vector<uint8_t>&& bytes) {
+        write_frame(frame_from_bytes(bytes), index);
+        const long done = static_cast<long>(index + 1);
         const double seconds =
             std::chrono::duration<double>(std::chrono::steady_clock::now() - started).count();
-        progress.update(next, total_frames, next, seconds,
-                        fmt::format("{:.2f} fps", seconds > 0.0 ? double(next) / seconds : 0.0));
+        progress.update(done, total_frames, done, seconds,
+                        fmt::format("{:.2f} fps", seconds > 0.0 ? double(done) / seconds : 0.0));
+    });
+    const ResultSink collect = [&](int64_t index, std::vector<uint8_t>&& bytes) {
+        in_order.add(index, std::move(bytes));
     };
     std::vector<int64_t> frames(views.size());
     std::iota(frames.begin(), frames.end(), 0);
@@ -244,7 +241,7 @@ int command_video(const VideoOptions& options) {
     farm.interrupted = [] { return interrupted != 0; };
     FarmOutcome outcome;
     try {
-        outcome = run_farm(cluster, frames, work, in_order, farm);
+        outcome = run_farm(cluster, frames, work, collect, farm);
     } catch (const std::runtime_error&) {
         progress.finish();
         if (interrupted) throw RuntimeFailure("interrupted: no video written");

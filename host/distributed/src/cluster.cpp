@@ -69,6 +69,7 @@ Cluster& Cluster::join(int* argc, char*** argv) {
     cluster.host_ = membership.host;
     cluster.unavailable_ = membership.unavailable;
     cluster.finished_.assign(size_t(cluster.size_), false);
+    cluster.owed_reply_.assign(size_t(cluster.size_), false);
     return cluster;
 }
 
@@ -83,7 +84,10 @@ void Cluster::send(int to, MessageKind kind, int64_t task, std::span<const uint8
     transport_->send(to, bytes);
     traffic_.messages += 1;
     traffic_.bytes += long(bytes.size());
-    if (coordinator() && kind == MessageKind::Done) finished_[size_t(to)] = true;
+    if (coordinator()) {
+        owed_reply_[size_t(to)] = false;
+        if (kind == MessageKind::Done) finished_[size_t(to)] = true;
+    }
 }
 
 std::optional<Message> Cluster::try_receive(int from) {
@@ -104,7 +108,12 @@ std::optional<Message> Cluster::try_receive(int from) {
     message.payload.assign(bytes.begin() + sizeof header, bytes.end());
     traffic_.messages += 1;
     traffic_.bytes += long(bytes.size());
-    if (coordinator() && message.kind == MessageKind::Failure) finished_[size_t(sender)] = true;
+    if (coordinator()) {
+        if (message.kind == MessageKind::Failure) finished_[size_t(sender)] = true;
+        // A worker that asked waits for the answer; if rank 0 fails before giving it,
+        // dismiss_workers does.
+        owed_reply_[size_t(sender)] = message.kind == MessageKind::Ready || message.kind == MessageKind::Result;
+    }
     return message;
 }
 
@@ -130,6 +139,9 @@ std::string Cluster::dismiss_workers() {
         }
         return false;
     };
+    for (int r = 1; r < size_; ++r) {
+        if (worker_active(r) && owed_reply_[size_t(r)]) send(r, MessageKind::Done, -1);
+    }
     while (any_active()) {
         const Message message = receive();
         if (message.kind == MessageKind::Failure) {

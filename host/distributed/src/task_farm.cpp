@@ -219,6 +219,16 @@ bool FarmSettings::coordinator_renders_by_default() {
     return !(value && std::string_view(value) == "0");
 }
 
+void InTaskOrder::add(int64_t task, std::vector<uint8_t>&& result) {
+    if (task < expected_ || !early_.emplace(task, std::move(result)).second) {
+        throw std::logic_error(fmt::format("task {} arrived twice", task));
+    }
+    for (auto it = early_.find(expected_); it != early_.end(); it = early_.find(++expected_)) {
+        next_(it->first, std::move(it->second));
+        early_.erase(it);
+    }
+}
+
 std::string tasks_by_rank_text(const FarmOutcome& outcome) {
     std::string text;
     for (size_t rank = 0; rank < outcome.tasks_by_rank.size(); ++rank) {

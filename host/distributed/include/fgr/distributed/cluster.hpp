@@ -91,7 +91,8 @@ private:
     int size_ = 1;
     int local_rank_ = 0;
     std::string host_;
-    std::vector<bool> finished_;  // rank 0: per worker
+    std::vector<bool> finished_;    // rank 0: per worker
+    std::vector<bool> owed_reply_;  // rank 0: the worker asked and waits for an answer
     bool failure_reported_ = false;
     Traffic traffic_;
     std::string unavailable_;

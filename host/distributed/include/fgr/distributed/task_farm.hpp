@@ -6,6 +6,7 @@
 
 #include <cstdint>
 #include <functional>
+#include <map>
 #include <stdexcept>
 #include <string>
 #include <vector>
@@ -37,6 +38,21 @@ struct FarmSettings {
 struct FarmOutcome {
     bool finished = false;                // every result went to the sink (not interrupted)
     std::vector<long> tasks_by_rank;      // results each rank delivered
+};
+
+// Results that arrive in any order handed on in task order (first, first + 1, ...): frames into
+// a video, seeds into a sum that must come out the same run to run. Holds the early ones.
+class InTaskOrder {
+public:
+    explicit InTaskOrder(ResultSink next, int64_t first = 0) : next_(std::move(next)), expected_(first) {}
+    void add(int64_t task, std::vector<uint8_t>&& result);
+    int64_t delivered_up_to() const { return expected_; }  // the next task to hand on
+    size_t held() const { return early_.size(); }
+
+private:
+    ResultSink next_;
+    std::map<int64_t, std::vector<uint8_t>> early_;
+    int64_t expected_;
 };
 
 // "0:7 1:6 2:7": the tasks each rank rendered, for the figures a command prints.
