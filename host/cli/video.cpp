@@ -6,7 +6,9 @@
 #include <csignal>
 #include <filesystem>
 #include <optional>
+#include <regex>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include <fmt/format.h>
@@ -52,6 +54,33 @@ void check_writable_directory_of(const std::filesystem::path& file) {
     }
 }
 
+// The frames "A:B" names, first and last (0-based, inclusive); UsageError unless 0 <= A <= B.
+std::pair<int, int> parse_frame_range(const std::string& text) {
+    const std::regex form(R"((\d{1,9}):(\d{1,9}))");
+    std::smatch match;
+    if (!std::regex_match(text, match, form)) {
+        throw UsageError(fmt::format("--frame-range '{}' must be A:B, the first and last frame "
+                                     "(0-based), e.g. 0:99", text));
+    }
+    const int first = std::stoi(match[1]), last = std::stoi(match[2]);
+    if (first > last) {
+        throw UsageError(fmt::format("--frame-range {}: the first frame comes after the last", text));
+    }
+    return {first, last};
+}
+
+// The frames to render: all, or --frame-range's (UsageError past the video's last frame).
+std::pair<int, int> frames_to_render(const VideoOptions& options, int frame_count) {
+    if (!options.frame_range) return {0, frame_count - 1};
+    const auto [first, last] = parse_frame_range(*options.frame_range);
+    if (last >= frame_count) {
+        throw UsageError(fmt::format("--frame-range {} goes past the last frame: this video has "
+                                     "{} frames, 0:{}", *options.frame_range, frame_count,
+                                     frame_count - 1));
+    }
+    return {first, last};
+}
+
 // Checks that need no scene: outputs, formats, codec and size, so bad input fails before any
 // kernel is built or file written.
 void check_video_options(const VideoOptions& options) {
@@ -80,6 +109,14 @@ void check_video_options(const VideoOptions& options) {
         }
     } else if (!options.codec.empty() || options.crf) {
         throw UsageError("--codec and --crf are for a video file (-o)");
+    }
+    if (options.frame_range) {
+        if (options.frames_directory.empty() || !options.output.empty()) {
+            throw UsageError("--frame-range renders some frames of a sequence: give --frames DIR "
+                             "and no -o (encode the whole directory with fgr merge --frames DIR "
+                             "-o FILE)");
+        }
+        parse_frame_range(*options.frame_range);  // a malformed range fails before any loading
     }
     if (!options.frames_directory.empty()) {
         const std::filesystem::path directory = options.frames_directory;
@@ -140,6 +177,10 @@ void add_video_command(CLI::App& app, VideoOptions& options) {
     video->add_option("--crf", options.crf,
                       "constant quality: lower is better and bigger (libx264 default 18, 0 "
                       "lossless; libvpx-vp9 default 24)");
+    video->add_option("--frame-range", options.frame_range,
+                      "A:B: render only frames A..B (0-based, inclusive) into --frames DIR, "
+                      "numbered as in the whole video (share a video out to machines, then "
+                      "fgr merge --frames DIR -o FILE)");
     add_frame_options(video, options.frame);
 }
 
@@ -158,10 +199,12 @@ int command_video(const VideoOptions& options) {
         throw UsageError(error.what());
     }
     const std::vector<CameraView> views = frame_views(path, timing);
+    const auto [first_frame, last_frame] = frames_to_render(options, timing.frame_count());
     StillJob job = still_job(scene, scene_request(scene, frame_options), frame_options);
     const ComputeDevice device = open_requested_device(frame_options.device);
     ProgramCache cache(ProgramCache::default_directory());
     VideoFrameRenderer renderer(scene, device, cache, job.settings);
+    // From every view of the video, so a frame range renders its frames as the whole video does.
     const bool in_double = renderer.choose_precision(views, job.request.width, job.request.params);
 
     InterruptGuard interrupt_guard;
@@ -183,11 +226,15 @@ int command_video(const VideoOptions& options) {
                  timing.start, timing.frame_time(timing.frame_count() - 1),
                  in_double ? "double" : "float",
                  encoder ? ", encoding " + encoder->description() : "");
+    const long total_frames = last_frame - first_frame + 1;
+    if (options.frame_range) {
+        spdlog::info("rendering frames {} to {} ({} of {})", first_frame, last_frame, total_frames,
+                     views.size());
+    }
     job.request.cancel = [] { return interrupted != 0; };
     ProgressLine progress("frames");
-    const long total_frames = static_cast<long>(views.size());
     const auto started = std::chrono::steady_clock::now();
-    for (size_t i = 0; i < views.size(); ++i) {
+    for (size_t i = size_t(first_frame); i <= size_t(last_frame); ++i) {
         job.request.view = views[i];
         const Frame frame = renderer.render(job.request);
         if (interrupted) {
@@ -205,7 +252,7 @@ int command_video(const VideoOptions& options) {
                 throw RuntimeFailure(error.what());
             }
         }
-        const long done = static_cast<long>(i + 1);
+        const long done = static_cast<long>(i) - first_frame + 1;
         const double seconds =
             std::chrono::duration<double>(std::chrono::steady_clock::now() - started).count();
         progress.update(done, total_frames, done, seconds,
@@ -218,7 +265,8 @@ int command_video(const VideoOptions& options) {
                    job.request.width, job.request.height, timing.fps, encoder->description());
     }
     if (!options.frames_directory.empty()) {
-        fmt::print("wrote {} frames to {}\n", views.size(), options.frames_directory);
+        fmt::print("wrote {} frames ({} to {}) to {}\n", total_frames, first_frame, last_frame,
+                   options.frames_directory);
     }
     return 0;
 }
