@@ -298,7 +298,29 @@ TEST_F(RenderPartsCli, FrameRangesRenderThoseFramesAndMergeIntoAVideo) {
     EXPECT_FALSE(fs::exists(dir() / "sizes.mp4"));
 }
 
-// --- The library: merging in bands that cut across parts --------------------------------------
+// --- The library ---------------------------------------------------------------------------------
+
+// Tile I of N is rows floor((I-1)*H/N) .. floor(I*H/N)-1: the tiles of any split are adjacent and
+// cover the image; 1/1 is all of it.
+TEST(TileRegion, TilesOfASplitAreAdjacentAndCoverTheImage) {
+    for (int count : {1, 2, 3, 7, 64}) {
+        int next_row = 0;
+        for (int index = 1; index <= count; ++index) {
+            const PixelRegion tile = tile_region(96, 64, index, count);
+            EXPECT_EQ(tile.x, 0);
+            EXPECT_EQ(tile.width, 96);
+            EXPECT_EQ(tile.y, next_row) << index << "/" << count;
+            EXPECT_EQ(tile.y + tile.height, index * 64 / count) << index << "/" << count;
+            next_row = tile.y + tile.height;
+        }
+        EXPECT_EQ(next_row, 64);
+    }
+    EXPECT_THROW(tile_region(96, 64, 0, 3), std::invalid_argument);
+    EXPECT_THROW(tile_region(96, 64, 4, 3), std::invalid_argument);
+    EXPECT_THROW(tile_region(96, 64, 1, 65), std::invalid_argument);  // a tile of no rows
+}
+
+// Merging in bands that cut across parts.
 
 class RenderPartsTest : public test::DeviceSuite<> {
 protected:

@@ -256,7 +256,8 @@ PartInfo read_part_info(const fs::path& path) {
     if (display.min != Imath::V2i(0, 0) || display.max != Imath::V2i(info.width - 1, info.height - 1) ||
         data.min != Imath::V2i(r.x, r.y) ||
         data.max != Imath::V2i(r.x + r.width - 1, r.y + r.height - 1) || r.width < 1 ||
-        r.height < 1 || info.samples < 1) {
+        r.height < 1 || r.x < 0 || r.y < 0 || r.x + r.width > info.width ||
+        r.y + r.height > info.height || info.samples < 1) {
         not_a_part(path, "its windows do not match its fgr.part header");
     }
     for (const std::string& channel : part_channels(info.layers)) {
