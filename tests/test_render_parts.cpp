@@ -241,6 +241,15 @@ TEST_F(RenderPartsCli, PartsThatDoNotMakeOneImageAreRefusedByName) {
         }
         EXPECT_EQ(directory_listing(dir()), inputs) << what << " wrote something";
     }
+    // Layers the parts were rendered without.
+    for (const std::vector<std::string>& args :
+         {std::vector<std::string>{"top.exr", "bottom.exr", "-o", "out.png", "--alpha"},
+          std::vector<std::string>{"top.exr", "bottom.exr", "-o", "out.exr", "--aov", "normal"}}) {
+        const test::RunResult result = merge(args);
+        EXPECT_EQ(result.exit_code, 2) << result;
+        EXPECT_NE(result.err.find("--alpha or --aov"), std::string::npos) << result;
+        EXPECT_EQ(directory_listing(dir()), inputs) << test::describe("fgr merge", args) << " wrote something";
+    }
     // A part is an EXR, and a tile is I of N.
     for (const std::vector<std::string>& args :
          {std::vector<std::string>{"render", "mandelbulb", "--part", "-o", "p.png"},
