@@ -113,7 +113,8 @@ TEST_F(RenderPartsCli, ThreeTilesMergeIntoExactlyTheWholeRender) {
     const std::vector<std::string> settings{"--spp", "2"};
     for (int i = 1; i <= 3; ++i) {
         auto args = settings;
-        args.insert(args.end(), {"--tile", fmt::format("{}/3", i), "-o", fmt::format("t{}.exr", i)});
+        args.insert(args.end(),
+                    {"--tile", fmt::format("{}/3", i), "-o", fmt::format("t{}.exr", i)});
         render(args);
     }
     auto whole_png = settings, whole_exr = settings;
@@ -130,7 +131,8 @@ TEST_F(RenderPartsCli, ThreeTilesMergeIntoExactlyTheWholeRender) {
     EXPECT_TRUE(test::read_file(dir() / "merged.png") == test::read_file(dir() / "whole.png"))
         << "the merged PNG's bytes differ from the whole render's";
 
-    const test::RunResult exr = merge({"t1.exr", "t2.exr", "t3.exr", "-o", "merged.exr", "--aov", "depth"});
+    const test::RunResult exr =
+        merge({"t1.exr", "t2.exr", "t3.exr", "-o", "merged.exr", "--aov", "depth"});
     ASSERT_EQ(exr.exit_code, 0) << exr;
     const std::vector<std::string> channels{"R", "G", "B", "depth.Z"};
     const auto merged = read_exr_channels(dir() / "merged.exr", channels);
@@ -148,7 +150,8 @@ TEST_F(RenderPartsCli, BruteModeTilesMergeIntoTheWholeRender) {
     const std::vector<std::string> settings{"--mode", "brute", "--spp", "2"};
     for (int i = 1; i <= 3; ++i) {
         auto args = settings;
-        args.insert(args.end(), {"--tile", fmt::format("{}/3", i), "-o", fmt::format("t{}.exr", i)});
+        args.insert(args.end(),
+                    {"--tile", fmt::format("{}/3", i), "-o", fmt::format("t{}.exr", i)});
         render(args);
     }
     auto whole = settings;
@@ -178,7 +181,8 @@ TEST_F(RenderPartsCli, SeedPartsMergeIntoTheSampleWeightedMean) {
 
     const std::vector<std::string> rgb{"R", "G", "B"};
     std::vector<std::vector<std::vector<float>>> parts;
-    for (int seed : {1, 2, 3, 4}) parts.push_back(read_exr_channels(dir() / fmt::format("s{}.exr", seed), rgb));
+    for (int seed : {1, 2, 3, 4})
+        parts.push_back(read_exr_channels(dir() / fmt::format("s{}.exr", seed), rgb));
     const auto merged_equal = read_exr_channels(dir() / "equal.exr", rgb);
     const auto merged_weighted = read_exr_channels(dir() / "weighted.exr", rgb);
     // add_samples rounds to float after each part: a few float roundings of values near 1, so
@@ -198,7 +202,8 @@ TEST_F(RenderPartsCli, SeedPartsMergeIntoTheSampleWeightedMean) {
     }
     EXPECT_EQ(wrong_equal, 0);
     EXPECT_EQ(wrong_weighted, 0);
-    EXPECT_GT(noisy, long(merged_equal[0].size()) / 4) << "different seeds must give different noise";
+    EXPECT_GT(noisy, long(merged_equal[0].size()) / 4)
+        << "different seeds must give different noise";
 }
 
 // Parts that do not make one image: a one-line error naming the files, exit 2, nothing written.
@@ -208,7 +213,8 @@ TEST_F(RenderPartsCli, PartsThatDoNotMakeOneImageAreRefusedByName) {
     render({"--tile", "2/2", "-o", "bright.exr", "--set", "exposure=2"}, "mandelbulb");
     render({"--tile", "2/2", "-o", "bottom_spp2.exr", "--spp", "2"}, "mandelbulb");
     render({"--tile", "2/3", "-o", "middle.exr"}, "mandelbulb");
-    render({"--mode", "path", "--spp", "1", "--seed", "5", "--part", "-o", "seed5.exr"}, "mandelbulb");
+    render({"--mode", "path", "--spp", "1", "--seed", "5", "--part", "-o", "seed5.exr"},
+           "mandelbulb");
     fs::copy_file(dir() / "seed5.exr", dir() / "seed5_again.exr");
     fs::copy_file(dir() / "top.exr", dir() / "top_again.exr");
     const std::vector<std::string> inputs = directory_listing(dir());
@@ -236,8 +242,8 @@ TEST_F(RenderPartsCli, PartsThatDoNotMakeOneImageAreRefusedByName) {
         const std::string err = result.err.substr(0, result.err.find_last_not_of('\n') + 1);
         EXPECT_EQ(err.find('\n'), std::string::npos) << "one line: " << result.err;
         for (const std::string& mention : refusal.mentions) {
-            EXPECT_NE(err.find(mention), std::string::npos) << what << " must name " << mention
-                                                            << ": " << err;
+            EXPECT_NE(err.find(mention), std::string::npos)
+                << what << " must name " << mention << ": " << err;
         }
         EXPECT_EQ(directory_listing(dir()), inputs) << what << " wrote something";
     }
@@ -248,16 +254,19 @@ TEST_F(RenderPartsCli, PartsThatDoNotMakeOneImageAreRefusedByName) {
         const test::RunResult result = merge(args);
         EXPECT_EQ(result.exit_code, 2) << result;
         EXPECT_NE(result.err.find("--alpha or --aov"), std::string::npos) << result;
-        EXPECT_EQ(directory_listing(dir()), inputs) << test::describe("fgr merge", args) << " wrote something";
+        EXPECT_EQ(directory_listing(dir()), inputs)
+            << test::describe("fgr merge", args) << " wrote something";
     }
     // A part is an EXR, and a tile is I of N.
     for (const std::vector<std::string>& args :
          {std::vector<std::string>{"render", "mandelbulb", "--part", "-o", "p.png"},
           std::vector<std::string>{"render", "mandelbulb", "--tile", "3/2", "-o", "p.exr"},
-          std::vector<std::string>{"render", "mandelbulb", "--tile", "1/1000", "--height", "64", "-o", "p.exr"}}) {
+          std::vector<std::string>{"render", "mandelbulb", "--tile", "1/1000", "--height", "64",
+                                   "-o", "p.exr"}}) {
         const test::RunResult result = run(args);
         EXPECT_EQ(result.exit_code, 2) << result;
-        EXPECT_EQ(directory_listing(dir()), inputs) << test::describe("fgr", args) << " wrote something";
+        EXPECT_EQ(directory_listing(dir()), inputs)
+            << test::describe("fgr", args) << " wrote something";
     }
 }
 
@@ -265,9 +274,9 @@ TEST_F(RenderPartsCli, PartsThatDoNotMakeOneImageAreRefusedByName) {
 // frames are the whole run's, byte for byte, and only they are written; the directory then
 // encodes into a video of every frame, and a gap or a frame of another size is refused.
 TEST_F(RenderPartsCli, FrameRangesRenderThoseFramesAndMergeIntoAVideo) {
-    const std::vector<std::string> video{"video",  "mandelbulb", "--camera-path", "orbit",
-                                         "--width", "48",        "--height",      "32",
-                                         "--fps",   "6",         "--duration",    "1"};
+    const std::vector<std::string> video{"video",   "mandelbulb", "--camera-path", "orbit",
+                                         "--width", "48",         "--height",      "32",
+                                         "--fps",   "6",          "--duration",    "1"};
     auto whole = video;
     whole.insert(whole.end(), {"--frames", "all"});
     ASSERT_EQ(run(whole).exit_code, 0);
@@ -365,13 +374,15 @@ TEST_F(RenderPartsTest, BandsAcrossTileSeamsMergeIntoTheUntiledFrame) {
     const size_t row_bytes = size_t(whole.width) * (11 * 4 + 2 * 14 * 4 + 3);
     const MergeResult result = merge_parts(plan, output, 4 * row_bytes);
     EXPECT_EQ(result.band_rows, 4);
-    const auto read = read_exr_channels(output.path, {"R", "G", "B", "albedo.R", "albedo.G",
-                                                      "albedo.B", "normal.X", "normal.Y",
-                                                      "normal.Z", "depth.Z", "A"});
+    const auto read =
+        read_exr_channels(output.path, {"R", "G", "B", "albedo.R", "albedo.G", "albedo.B",
+                                        "normal.X", "normal.Y", "normal.Z", "depth.Z", "A"});
     // With alpha the colour is the premultiplied foreground (fgr/still_layers.hpp).
-    const std::vector<std::pair<const std::vector<float>*, int>> planes{
-        {&frame.foreground, 3}, {&frame.albedo, 3}, {&frame.normal, 3}, {&frame.depth, 1},
-        {&frame.alpha, 1}};
+    const std::vector<std::pair<const std::vector<float>*, int>> planes{{&frame.foreground, 3},
+                                                                        {&frame.albedo, 3},
+                                                                        {&frame.normal, 3},
+                                                                        {&frame.depth, 1},
+                                                                        {&frame.alpha, 1}};
     size_t channel = 0;
     for (const auto& [plane, count] : planes) {
         for (int c = 0; c < count; ++c, ++channel) {

@@ -112,8 +112,10 @@ std::vector<fs::path> numbered_frames(const fs::path& directory) {
         if (std::regex_match(file, match, name)) found[std::stol(match[1])] = entry.path();
     }
     if (found.empty()) {
-        throw UsageError(fmt::format("no frame_00000.png ... in '{}' (fgr video --frames DIR "
-                                     "writes them)", directory.string()));
+        throw UsageError(
+            fmt::format("no frame_00000.png ... in '{}' (fgr video --frames DIR "
+                        "writes them)",
+                        directory.string()));
     }
     std::vector<fs::path> frames;
     for (long number = 0; number <= found.rbegin()->first; ++number) {
@@ -142,11 +144,13 @@ int merge_frames_into_video(const MergeOptions& options) {
     if (options.bit_depth != 8 || options.alpha || !options.aovs.empty()) {
         throw UsageError("--bit-depth, --alpha and --aov are for merging parts, not frames");
     }
-    if (!(options.fps > 0.0)) throw UsageError(fmt::format("--fps must be positive (got {})", options.fps));
+    if (!(options.fps > 0.0))
+        throw UsageError(fmt::format("--fps must be positive (got {})", options.fps));
     check_output_directory(options.output);
     const std::vector<fs::path> frames = numbered_frames(options.frames_directory);
     const Image8 first = read_frame(frames.front());
-    const VideoSettings settings{options.codec, first.width, first.height, options.fps, options.crf};
+    const VideoSettings settings{options.codec, first.width, first.height, options.fps,
+                                 options.crf};
     try {
         check_video_settings(options.output, settings);
     } catch (const std::invalid_argument& error) {
@@ -158,10 +162,11 @@ int merge_frames_into_video(const MergeOptions& options) {
         for (size_t i = 1; i < frames.size(); ++i) {
             const Image8 image = read_frame(frames[i]);
             if (image.width != first.width || image.height != first.height) {
-                throw UsageError(fmt::format("'{}' is {}x{} but '{}' is {}x{}: the frames of a "
-                                             "video must have one size", frames[i].string(),
-                                             image.width, image.height, frames.front().string(),
-                                             first.width, first.height));
+                throw UsageError(
+                    fmt::format("'{}' is {}x{} but '{}' is {}x{}: the frames of a "
+                                "video must have one size",
+                                frames[i].string(), image.width, image.height,
+                                frames.front().string(), first.width, first.height));
             }
             encoder.add_frame(image);
         }
@@ -185,16 +190,19 @@ int merge_frames_into_video(const MergeOptions& options) {
 
 void add_merge_command(CLI::App& app, MergeOptions& options) {
     CLI::App* merge = app.add_subcommand(
-        "merge", "join parts rendered apart (fgr render --part/--tile) into one image, or a "
-                 "frame directory (fgr video --frames) into a video");
+        "merge",
+        "join parts rendered apart (fgr render --part/--tile) into one image, or a "
+        "frame directory (fgr video --frames) into a video");
     merge->add_option("parts", options.parts,
                       "part files (.exr) of one image: tiles (--tile I/N) and/or seeds (--seed S)");
-    merge->add_option("-o,--output", options.output,
-                      "merged image (.png, .tif, .exr, as fgr render writes them), or a video "
-                      "(.mp4 ...) with --frames")
+    merge
+        ->add_option("-o,--output", options.output,
+                     "merged image (.png, .tif, .exr, as fgr render writes them), or a video "
+                     "(.mp4 ...) with --frames")
         ->required();
-    merge->add_option("--bit-depth", options.bit_depth,
-                      "8: tone-mapped sRGB PNG/TIFF (default); 16: linear 16-bit (exposure only)")
+    merge
+        ->add_option("--bit-depth", options.bit_depth,
+                     "8: tone-mapped sRGB PNG/TIFF (default); 16: linear 16-bit (exposure only)")
         ->check(CLI::IsMember({8, 16}));
     merge->add_flag("--alpha", options.alpha,
                     "coverage as alpha (the parts need their layers: render them with --alpha)");
@@ -212,8 +220,9 @@ void add_merge_command(CLI::App& app, MergeOptions& options) {
 int command_merge(const MergeOptions& options) {
     if (!options.frames_directory.empty()) return merge_frames_into_video(options);
     if (options.parts.empty()) {
-        throw UsageError("merge needs PARTS (.exr files of fgr render --part or --tile) or "
-                         "--frames DIR");
+        throw UsageError(
+            "merge needs PARTS (.exr files of fgr render --part or --tile) or "
+            "--frames DIR");
     }
     return merge_parts_into_image(options);
 }

@@ -106,7 +106,9 @@ void check_render_options(const RenderOptions& options) {
                              "--camera, --eye... or --time");
         }
         if (!options.kernel_source.empty()) throw UsageError("--kernel-source is for one SCENE, not --all");
-        if (part_render_wanted(options)) throw UsageError("--part and --tile are for one SCENE, not --all");
+        if (part_render_wanted(options)) {
+            throw UsageError("--part and --tile are for one SCENE, not --all");
+        }
         return;
     }
     if (options.scene.empty()) throw UsageError("render needs a SCENE (see `fgr list`) or --all");
@@ -386,7 +388,9 @@ int command_render(const RenderOptions& options) {
     request.view = choose_view(scene, options);
     const ComputeDevice device = open_requested_device(options.device);
     ProgramCache cache(ProgramCache::default_directory());
-    if (part_render_wanted(options)) return render_part_file(scene, request, device, cache, options);
+    if (part_render_wanted(options)) {
+        return render_part_file(scene, request, device, cache, options);
+    }
     if (tiled_render_wanted(options)) return render_tiled(scene, request, device, cache, options);
     render_to_file(scene, request, device, cache, options, options.output);
     return 0;

@@ -184,12 +184,12 @@ int render_part_file(const Scene& scene, const FrameRequest& request, const Comp
     settings.tile_size = options.tile_size.value_or(kDefaultTileSize);
     settings.interrupted = [] { return InterruptCatcher::caught(); };
     const auto start = std::chrono::steady_clock::now();
-    const std::string rows = fmt::format("rows {}..{}", rendered_region(part).y,
-                                         rendered_region(part).y + rendered_region(part).height - 1);
+    const PixelRegion rendered = rendered_region(part);
+    const std::string rows =
+        fmt::format("rows {}..{}", rendered.y, rendered.y + rendered.height - 1);
     settings.on_progress = [&](long done, long total) {
-        progress.update(done, total, done,
-                        std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count(),
-                        rows);
+        const std::chrono::duration<double> seconds = std::chrono::steady_clock::now() - start;
+        progress.update(done, total, done, seconds.count(), rows);
     };
     PartResult result;
     try {

@@ -64,7 +64,8 @@ std::pair<int, int> parse_frame_range(const std::string& text) {
     }
     const int first = std::stoi(match[1]), last = std::stoi(match[2]);
     if (first > last) {
-        throw UsageError(fmt::format("--frame-range {}: the first frame comes after the last", text));
+        throw UsageError(
+            fmt::format("--frame-range {}: the first frame comes after the last", text));
     }
     return {first, last};
 }

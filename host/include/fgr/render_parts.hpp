@@ -43,9 +43,9 @@ struct PartSettings {
 
 struct PartResult {
     bool interrupted = false;
-    PixelRegion region;      // of the whole image
-    long hits = 0;           // pixels of the region whose camera ray met the surface
-    int samples = 0;         // per pixel
+    PixelRegion region;  // of the whole image
+    long hits = 0;       // pixels of the region whose camera ray met the surface
+    int samples = 0;     // per pixel
     long launches = 0;
     double render_ms = 0.0;  // rendering and writing
 };
@@ -64,7 +64,8 @@ PartResult render_part(Renderer& renderer, const FrameRequest& request,
 struct PartInfo {
     std::filesystem::path path;
     std::vector<std::pair<std::string, std::string>> identity;  // in image_identity's order
-    int width = 0;  // the whole image
+    // The whole image.
+    int width = 0;
     int height = 0;
     PixelRegion region;
     int samples = 0;  // per pixel

@@ -81,7 +81,8 @@ std::string part_header(const Renderer& renderer, const FrameRequest& request,
 void require_plane(const Frame& frame, const std::vector<float>& plane, size_t per_pixel,
                    const char* name) {
     if (plane.size() != frame.linear.size() / 3 * per_pixel) {
-        throw std::runtime_error(fmt::format("the renderer gave no {} plane for a part with layers", name));
+        throw std::runtime_error(
+            fmt::format("the renderer gave no {} plane for a part with layers", name));
     }
 }
 
@@ -107,8 +108,10 @@ std::string lower_extension(const fs::path& path) {
 }
 
 [[noreturn]] void not_a_part(const fs::path& path, const std::string& why) {
-    throw std::runtime_error(fmt::format("'{}' is not an fgr part ({}): parts are written by "
-                                         "fgr render --part or --tile", path.string(), why));
+    throw std::runtime_error(
+        fmt::format("'{}' is not an fgr part ({}): parts are written by "
+                    "fgr render --part or --tile",
+                    path.string(), why));
 }
 
 }  // namespace
@@ -116,18 +119,18 @@ std::string lower_extension(const fs::path& path) {
 std::vector<std::string> part_channels(bool layers) {
     std::vector<std::string> channels{"R", "G", "B", "depth.Z"};
     if (layers) {
-        channels.insert(channels.end(), {"albedo.R", "albedo.G", "albedo.B", "normal.X", "normal.Y",
-                                         "normal.Z", "alpha.A", "foreground.R", "foreground.G",
-                                         "foreground.B"});
+        channels.insert(channels.end(),
+                        {"albedo.R", "albedo.G", "albedo.B", "normal.X", "normal.Y", "normal.Z",
+                         "alpha.A", "foreground.R", "foreground.G", "foreground.B"});
     }
     return channels;
 }
 
 PixelRegion tile_region(int width, int height, int index, int count) {
     if (count < 1 || count > height || index < 1 || index > count) {
-        throw std::invalid_argument(fmt::format(
-            "--tile {}/{} must be I/N with 1 <= I <= N <= the image height ({})", index, count,
-            height));
+        throw std::invalid_argument(
+            fmt::format("--tile {}/{} must be I/N with 1 <= I <= N <= the image height ({})", index,
+                        count, height));
     }
     const int first = static_cast<int>(long(index - 1) * height / count);
     const int end = static_cast<int>(long(index) * height / count);
@@ -156,7 +159,10 @@ PartResult render_part(Renderer& renderer, const FrameRequest& request,
     // to reach the packet grid.
     const TilePlan plan = plan_tiles(region.width, region.height, settings.tile_size,
                                      layout.pixel_bytes(), padding + kPacketAlignment);
-    ExrPlacement placement{request.width, request.height, region.x, region.y,
+    ExrPlacement placement{request.width,
+                           request.height,
+                           region.x,
+                           region.y,
                            {{kPartAttribute, part_header(renderer, request, display, region)}}};
     auto writer = open_streaming_image(path, ImageFormat::Exr, region.width, region.height, layout,
                                        placement);
@@ -176,9 +182,11 @@ PartResult render_part(Renderer& renderer, const FrameRequest& request,
                 return result;  // the writer, destroyed unfinished, removes its temporary
             }
             const int x = region.x + t * plan.tile_width;
-            const Rect tile{x, band_y, std::min(plan.tile_width, region.x + region.width - x), rows};
-            const Rect rendered = aligned_to_packets(
-                padded(tile, padding, request.width, request.height), request.width, request.height);
+            const Rect tile{x, band_y, std::min(plan.tile_width, region.x + region.width - x),
+                            rows};
+            const Rect rendered =
+                aligned_to_packets(padded(tile, padding, request.width, request.height),
+                                   request.width, request.height);
             launch.region = {rendered.x, rendered.y, rendered.width, rendered.height};
             const Frame frame = renderer.render(launch);
             if (frame.cancelled) {
@@ -188,7 +196,8 @@ PartResult render_part(Renderer& renderer, const FrameRequest& request,
             if (const long broken = non_finite_pixels(frame); broken > 0) {
                 throw std::runtime_error(fmt::format(
                     "rendering '{}' gave non-finite colour or depth at {} pixels of the launch "
-                    "at ({}, {})", renderer.scene().id, broken, tile.x, tile.y));
+                    "at ({}, {})",
+                    renderer.scene().id, broken, tile.x, tile.y));
             }
             if (layers) {
                 require_plane(frame, frame.albedo, 3, "albedo");
@@ -199,7 +208,8 @@ PartResult render_part(Renderer& renderer, const FrameRequest& request,
             for (int y = 0; y < tile.height; ++y) {
                 const size_t source_row = size_t(tile.y - rendered.y + y) * size_t(rendered.width);
                 float* out = &band[(size_t(tile.y - band_y + y) * size_t(region.width) +
-                                    size_t(tile.x - region.x)) * floats];
+                                    size_t(tile.x - region.x)) *
+                                   floats];
                 for (int column = 0; column < tile.width; ++column) {
                     const size_t i = source_row + size_t(tile.x - rendered.x + column);
                     out = put_pixel(frame, i, layers, out);
@@ -253,7 +263,8 @@ PartInfo read_part_info(const fs::path& path) {
     }
     const Imath::Box2i data = header.dataWindow(), display = header.displayWindow();
     const PixelRegion& r = info.region;
-    if (display.min != Imath::V2i(0, 0) || display.max != Imath::V2i(info.width - 1, info.height - 1) ||
+    if (display.min != Imath::V2i(0, 0) ||
+        display.max != Imath::V2i(info.width - 1, info.height - 1) ||
         data.min != Imath::V2i(r.x, r.y) ||
         data.max != Imath::V2i(r.x + r.width - 1, r.y + r.height - 1) || r.width < 1 ||
         r.height < 1 || r.x < 0 || r.y < 0 || r.x + r.width > info.width ||
@@ -273,7 +284,8 @@ PartReader::PartReader(const PartInfo& info) : info_(info) {
     try {
         file_ = std::make_unique<Imf::InputFile>(info.path.c_str());
     } catch (const std::exception& error) {
-        throw std::runtime_error(fmt::format("cannot read '{}': {}", info.path.string(), error.what()));
+        throw std::runtime_error(
+            fmt::format("cannot read '{}': {}", info.path.string(), error.what()));
     }
 }
 
@@ -318,7 +330,8 @@ Frame PartReader::read_rows(int first_row, int rows) {
         file_->setFrameBuffer(buffer);
         file_->readPixels(first_row, first_row + rows - 1);
     } catch (const std::exception& error) {
-        throw std::runtime_error(fmt::format("cannot read '{}': {}", info_.path.string(), error.what()));
+        throw std::runtime_error(
+            fmt::format("cannot read '{}': {}", info_.path.string(), error.what()));
     }
     return frame;
 }

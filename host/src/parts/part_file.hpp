@@ -12,7 +12,6 @@
 #include "fgr/render_parts.hpp"
 #include "fgr/renderer.hpp"
 
-
 namespace fgr {
 
 // The channels of a part, in the order rendering interleaves them: R, G, B, depth.Z, then with

@@ -81,10 +81,10 @@ void check_same_render(const std::vector<PartInfo>& parts) {
         std::string mine, theirs;
         const std::string field = first_difference(parts[0], parts[i], &mine, &theirs);
         if (!field.empty()) {
-            throw std::invalid_argument(fmt::format(
-                "'{}' and '{}' are not parts of one image: they differ in {} ({})",
-                parts[0].path.string(), parts[i].path.string(), field,
-                difference_text(mine, theirs)));
+            throw std::invalid_argument(
+                fmt::format("'{}' and '{}' are not parts of one image: they differ in {} ({})",
+                            parts[0].path.string(), parts[i].path.string(), field,
+                            difference_text(mine, theirs)));
         }
     }
 }
@@ -107,7 +107,8 @@ std::vector<PartGroup> group_by_region(const std::vector<PartInfo>& parts) {
             }
             throw std::invalid_argument(fmt::format(
                 "{} and '{}' are the same samples (seed {}): give each part of a region its own "
-                "--seed", named(parts[other]), parts[i].path.string(), parts[i].seed));
+                "--seed",
+                named(parts[other]), parts[i].path.string(), parts[i].seed));
         }
         group.parts.push_back(i);
         group.samples += parts[i].samples;
@@ -161,8 +162,8 @@ void check_coverage(const MergePlan& plan) {
         }
         if (missing_from >= 0) {
             throw std::invalid_argument(fmt::format(
-                "no part covers {}rows {}..{} of the {}x{} image: a part is missing", partly ? "all of " : "",
-                missing_from, y0 - 1, plan.width, plan.height));
+                "no part covers {}rows {}..{} of the {}x{} image: a part is missing",
+                partly ? "all of " : "", missing_from, y0 - 1, plan.width, plan.height));
         }
     }
     if (missing_from >= 0) {
@@ -195,11 +196,13 @@ Image8 display_of(const Frame& frame, const DisplayTransform& display) {
 
 void check_layers(const MergePlan& plan, const TiledOutput& output) {
     if (plan.layers) return;
-    const bool needs = output.alpha || output.aovs.alpha || output.aovs.albedo || output.aovs.normal;
+    const bool needs =
+        output.alpha || output.aovs.alpha || output.aovs.albedo || output.aovs.normal;
     if (needs) {
         throw std::invalid_argument(fmt::format(
             "{} needs the layers' planes, which the parts lack: render them with --alpha or "
-            "--aov albedo,normal,alpha", output.alpha || output.aovs.alpha ? "alpha" : "--aov"));
+            "--aov albedo,normal,alpha",
+            output.alpha || output.aovs.alpha ? "alpha" : "--aov"));
     }
 }
 
@@ -255,8 +258,9 @@ MergeResult merge_parts(const MergePlan& plan, TiledOutput output, size_t band_b
             merged.image = display_of(merged, plan.display);
             RowEncoder encoder(merged, output, layout);
             for (int y = y0; y < y1; ++y) {
-                encoder.encode(y - y0, 0, region.width,
-                               band.data() + size_t(y - band_y) * stride + size_t(region.x) * pixel_bytes);
+                encoder.encode(
+                    y - y0, 0, region.width,
+                    band.data() + size_t(y - band_y) * stride + size_t(region.x) * pixel_bytes);
             }
             if (y1 == region.y + region.height) {
                 for (size_t p : group.parts) readers[p].reset();  // done with these files

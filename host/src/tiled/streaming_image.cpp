@@ -154,10 +154,9 @@ public:
         Imf::Header::setMaxImageSize(1 << 20, 1 << 20);
         const Imath::Box2i data(Imath::V2i(placement.x, placement.y),
                                 Imath::V2i(placement.x + width - 1, placement.y + height - 1));
+        const Imath::V2i last(placement.image_width - 1, placement.image_height - 1);
         const Imath::Box2i display =
-            placement.placed() ? Imath::Box2i(Imath::V2i(0, 0), Imath::V2i(placement.image_width - 1,
-                                                                          placement.image_height - 1))
-                               : data;
+            placement.placed() ? Imath::Box2i(Imath::V2i(0, 0), last) : data;
         Imf::Header header(display, data);
         header.compression() = Imf::ZIP_COMPRESSION;
         for (const auto& [name, value] : placement.attributes) {
@@ -177,7 +176,8 @@ public:
         const size_t pixel = layout_.pixel_bytes();
         const size_t row = pixel * size_t(width_);
         const int first = file_->currentScanLine();
-        const Imath::Box2i band(Imath::V2i(x_, first), Imath::V2i(x_ + width_ - 1, first + count - 1));
+        const Imath::Box2i band(Imath::V2i(x_, first),
+                                Imath::V2i(x_ + width_ - 1, first + count - 1));
         Imf::FrameBuffer frame;
         for (size_t c = 0; c < layout_.channels.size(); ++c) {
             frame.insert(layout_.channels[c],
