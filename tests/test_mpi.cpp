@@ -190,12 +190,22 @@ TEST_F(MpiTest, APathTracedStillOverThreeRanksHasTheirSamplesAdded) {
     EXPECT_EQ(test::read_file(dir() / "again.exr"), test::read_file(dir() / "three.exr"));
 
     // The same estimator as the three seeds rendered apart and averaged: rank r took seed 10 + r.
+    // They are rendered as parts (fgr render --part), which fgr merge sums the way the ranks'
+    // frames are summed: the farm's file and the merged one hold the same floats.
     std::vector<HdrImage> seeds;
+    std::vector<std::string> merge = {"merge"};
     for (int seed : {10, 11, 12}) {
         const std::string name = "seed" + std::to_string(seed) + ".exr";
-        ASSERT_EQ(test::run_fgr(path_args(4, seed, name), dir()).exit_code, 0);
+        std::vector<std::string> part = path_args(4, seed, name);
+        part.push_back("--part");
+        ASSERT_EQ(test::run_fgr(part, dir()).exit_code, 0);
         seeds.push_back(read_hdr_image(dir() / name));
+        merge.push_back(name);
     }
+    merge.insert(merge.end(), {"-o", "merged.exr"});
+    const test::RunResult merged = test::run_fgr(merge, dir());
+    ASSERT_EQ(merged.exit_code, 0) << merged;
+    EXPECT_EQ(read_hdr_image(dir() / "merged.exr").rgb, three.rgb);
     ASSERT_EQ(three.rgb.size(), seeds[0].rgb.size());
     long off = 0;
     for (size_t i = 0; i < three.rgb.size(); ++i) {

@@ -73,6 +73,8 @@ int run_cli(int argc, char** argv) {
     add_render_command(app, render_options);
     VideoOptions video_options;
     add_video_command(app, video_options);
+    MergeOptions merge_options;
+    add_merge_command(app, merge_options);
     ViewCommandOptions view_options;
     add_view_command(app, view_options);
     CheckOptions check_options;
@@ -88,17 +90,18 @@ int run_cli(int argc, char** argv) {
     if (argc < 2) {
         std::fputs(app.help().c_str(), stdout);
         return report_error(
-            "no command given (commands: list, info, render, video, view, check, new-scene, "
-            "bench, cache, environment)",
+            "no command given (commands: list, info, render, video, merge, view, check, "
+            "new-scene, bench, cache, environment)",
             kExitUsage);
     }
     if (const std::string first = argv[1]; !first.empty() && first.front() != '-' &&
         first != "list" && first != "info" && first != "render" && first != "video" &&
-        first != "view" &&
+        first != "merge" && first != "view" &&
         first != "check" && first != "new-scene" && first != "bench" && first != "cache" &&
         first != "environment") {
         return report_error(fmt::format("unknown command '{}' (commands: list, info, render, "
-                                        "video, view, check, new-scene, bench, cache, environment)",
+                                        "video, merge, view, check, new-scene, bench, cache, "
+                                        "environment)",
                                         first),
                             kExitUsage);
     }
@@ -114,6 +117,7 @@ int run_cli(int argc, char** argv) {
         if (command == "list") return command_list(list_scene);
         if (command == "info") return command_info(math_check);
         if (command == "video") return command_video(video_options);
+        if (command == "merge") return command_merge(merge_options);
         if (command == "view") return command_view(view_options);
         if (command == "check") return command_check(check_options);
         if (command == "new-scene") return command_new_scene(new_scene_options);

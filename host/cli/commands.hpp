@@ -1,7 +1,7 @@
 #pragma once
 // The `fgr` executable's commands, one file each (list.cpp, info.cpp, render.cpp, video.cpp,
-// view.cpp, check.cpp, bench.cpp, bench_accuracy.cpp, new_scene.cpp, cache.cpp), and what they
-// share (common.cpp).
+// merge.cpp, view.cpp, check.cpp, bench.cpp, bench_accuracy.cpp, new_scene.cpp, cache.cpp), and
+// what they share (common.cpp).
 // run_cli (cli.cpp) registers each command's options with CLI11 and runs the one given. A command
 // returns the exit code, throws UsageError for bad input (exit 2) and anything else for failures
 // while running (exit 1).
@@ -156,6 +156,8 @@ struct RenderOptions {
     std::optional<int> tile_size;  // render in tiles of about this side (also implied by size)
     bool resume = false;           // continue an interrupted tiled render from its tile store
     ProjectionOptions projection;
+    bool part = false;                // write a part for `fgr merge` (fgr/render_parts.hpp)
+    std::optional<std::string> tile;  // "I/N": the part is rows of tile I of N (implies --part)
 };
 
 void add_render_command(CLI::App& app, RenderOptions& options);
@@ -195,10 +197,28 @@ struct VideoOptions {
     std::optional<double> duration;  // seconds of path time (default: to the last keyframe)
     std::string codec;               // FFmpeg encoder name; "": the container's default
     std::optional<int> crf;          // constant quality (x264, x265, VP9, AV1); default: the codec's
+    std::optional<std::string> frame_range;  // "A:B": render frames A..B only (0-based, inclusive)
 };
 
 void add_video_command(CLI::App& app, VideoOptions& options);
 int command_video(const VideoOptions& options);
+
+// --- fgr merge -----------------------------------------------------------------------------------
+
+struct MergeOptions {
+    std::vector<std::string> parts;  // part files (fgr render --part, --tile)
+    std::string output;              // .png, .tif, .exr; or a video file with --frames
+    int bit_depth = 8;
+    bool alpha = false;
+    std::string aovs;
+    std::string frames_directory;  // frame_00000.png ... to encode into a video
+    double fps = 30.0;
+    std::string codec;
+    std::optional<int> crf;
+};
+
+void add_merge_command(CLI::App& app, MergeOptions& options);
+int command_merge(const MergeOptions& options);
 
 // --- fgr view ------------------------------------------------------------------------------------
 

@@ -115,6 +115,9 @@ void check_render_options(const RenderOptions& options) {
                              "--camera, --eye... or --time");
         }
         if (!options.kernel_source.empty()) throw UsageError("--kernel-source is for one SCENE, not --all");
+        if (part_render_wanted(options)) {
+            throw UsageError("--part and --tile are for one SCENE, not --all");
+        }
         return;
     }
     if (options.scene.empty()) throw UsageError("render needs a SCENE (see `fgr list`) or --all");
@@ -127,10 +130,13 @@ void check_render_options(const RenderOptions& options) {
     }
     parsed_view_override(options.view_override);  // a malformed vector fails before any loading
     check_output_path(options.output);
+    if (part_render_wanted(options)) {
+        check_part_options(options);
+    }
     const bool exr = image_format_of(options.output) == ImageFormat::Exr;
     if (!options.aovs.empty() && !exr) throw UsageError("--aov needs an .exr output");
     if (exr && options.bit_depth != 8) throw UsageError("--bit-depth is for PNG and TIFF output");
-    if (tiled_render_wanted(options)) check_tiled_options(options);
+    if (!part_render_wanted(options) && tiled_render_wanted(options)) check_tiled_options(options);
 }
 
 FrameRequest default_request(const Scene& scene, const RenderOptions& options) {
@@ -423,6 +429,13 @@ void add_render_command(CLI::App& app, RenderOptions& options) {
     path->excludes(camera);
     render->add_option("--time", options.time, "time along the camera path, in seconds");
     add_view_override_options(render, options.view_override);
+    render->add_flag("--part", options.part,
+                     "write a part for `fgr merge`: an .exr of the raw planes, recording the "
+                     "render, its rows, samples and --seed (render parts on many machines, merge "
+                     "them into one image)");
+    render->add_option("--tile", options.tile,
+                       "I/N: render rows floor((I-1)*H/N) .. floor(I*H/N)-1 of the image as a part "
+                       "(implies --part); `fgr merge` joins the N tiles");
     render->add_option("--time-limit", options.time_limit,
                        "stop adding samples after this many seconds and write what is done")
         ->check(CLI::PositiveNumber);
@@ -441,6 +454,13 @@ int command_render(const RenderOptions& options) {
     request.view = choose_view(scene, options);
     const ComputeDevice device = open_requested_device(options.device);
     ProgramCache cache(ProgramCache::default_directory());
+    if (part_render_wanted(options)) {
+        if (!Cluster::current().alone()) {
+            throw UsageError("--part and --tile make one part a process, for a scheduler: run "
+                             "them without mpirun");
+        }
+        return render_part_file(scene, request, device, cache, options);
+    }
     if (Cluster& cluster = Cluster::current(); !cluster.alone()) {
         return render_across_ranks(cluster, scene, request, device, cache, options);
     }

@@ -8,6 +8,8 @@
 #include <csignal>
 #include <filesystem>
 #include <optional>
+#include <regex>
+#include <utility>
 
 #include <fmt/format.h>
 #include <spdlog/spdlog.h>
@@ -18,6 +20,7 @@
 #include "fgr/parameters.hpp"
 #include "fgr/precision.hpp"
 #include "fgr/progress.hpp"
+#include "fgr/render_parts.hpp"
 #include "fgr/still_layers.hpp"
 #include "fgr/streaming_image.hpp"
 #include "fgr/tiled_still.hpp"
@@ -58,6 +61,22 @@ double peak_memory_mib() {
     rusage usage{};
     getrusage(RUSAGE_SELF, &usage);
     return double(usage.ru_maxrss) / 1024.0;  // kilobytes on Linux
+}
+
+// --tile I/N as (I, N); UsageError when it is not two numbers with a slash between.
+std::pair<int, int> part_tile(const RenderOptions& options) {
+    const std::string& text = *options.tile;
+    const std::regex form(R"((\d{1,9})/(\d{1,9}))");
+    std::smatch match;
+    if (!std::regex_match(text, match, form)) {
+        throw UsageError(fmt::format("--tile '{}' must be I/N, e.g. 3/16: tile I of N", text));
+    }
+    const int index = std::stoi(match[1]), count = std::stoi(match[2]);
+    if (index < 1 || index > count || count > options.height) {
+        throw UsageError(fmt::format("--tile {} must be I/N with 1 <= I <= N <= the image height "
+                                     "({})", text, options.height));
+    }
+    return {index, count};
 }
 
 }  // namespace
@@ -199,6 +218,77 @@ int render_tiled(const Scene& scene, const FrameRequest& request, const ComputeD
         return 0;
     }
     return write_tiles(cluster, render, work, output, options);
+}
+
+bool part_render_wanted(const RenderOptions& options) { return options.part || options.tile; }
+
+void check_part_options(const RenderOptions& options) {
+    if (image_format_of(options.output) != ImageFormat::Exr) {
+        throw UsageError(fmt::format("a part is an OpenEXR file: give -o NAME.exr (got '{}')",
+                                     options.output));
+    }
+    if (options.resume) throw UsageError("--resume is for tiled stills, not parts: rerun the part");
+    if (options.stats) throw UsageError("--stats is for untiled renders, not parts");
+    if (options.time_limit) {
+        throw UsageError("parts take the same samples everywhere: give --spp, not --time-limit");
+    }
+    if (options.tile) part_tile(options);  // a malformed I/N fails before anything is loaded
+}
+
+int render_part_file(const Scene& scene, const FrameRequest& request, const ComputeDevice& device,
+                     ProgramCache& cache, const RenderOptions& options) {
+    const StillJob job = still_job(scene, request, options);
+    PrecisionRenderers renderers(device, cache, scene, still_switches(device, job.settings));
+    Renderer& renderer = choose_still_renderer(renderers, scene, job.request, device, job.settings);
+    FrameRequest part = job.request;
+    if (options.tile) {
+        const auto [index, count] = part_tile(options);
+        try {
+            part.region = tile_region(part.width, part.height, index, count);
+        } catch (const std::invalid_argument& error) {
+            throw UsageError(error.what());
+        }
+    }
+
+    InterruptCatcher catcher;
+    ProgressLine progress("launches");
+    PartSettings settings;
+    settings.tile_size = options.tile_size.value_or(kDefaultTileSize);
+    settings.interrupted = [] { return InterruptCatcher::caught(); };
+    const auto start = std::chrono::steady_clock::now();
+    const PixelRegion rendered = rendered_region(part);
+    const std::string rows =
+        fmt::format("rows {}..{}", rendered.y, rendered.y + rendered.height - 1);
+    settings.on_progress = [&](long done, long total) {
+        const std::chrono::duration<double> seconds = std::chrono::steady_clock::now() - start;
+        progress.update(done, total, done, seconds.count(), rows);
+    };
+    PartResult result;
+    try {
+        result = render_part(renderer, part, display_transform(scene, part.params), options.output,
+                             settings);
+    } catch (const std::invalid_argument& error) {
+        throw UsageError(error.what());
+    } catch (const std::runtime_error& error) {
+        progress.finish();
+        throw RuntimeFailure(error.what());
+    }
+    progress.finish();
+    if (result.interrupted) {
+        spdlog::error("interrupted: nothing written to '{}'", options.output);
+        return 130;
+    }
+    const PixelRegion& region = result.region;
+    fmt::print("render_ms {:.1f}\n", result.render_ms);
+    fmt::print("hits {}\n", result.hits);
+    fmt::print("samples_per_pixel {}\n", result.samples);
+    fmt::print("seed {}\n", part.path.seed);
+    fmt::print("part rows {}..{} of {}x{}{}\n", region.y, region.y + region.height - 1, part.width,
+               part.height, options.tile ? " (tile " + *options.tile + ")" : "");
+    fmt::print("peak_memory_mib {:.1f}\n", peak_memory_mib());
+    fmt::print("wrote {} ({}x{} of {}x{})\n", options.output, region.width, region.height,
+               part.width, part.height);
+    return 0;
 }
 
 }  // namespace fgr

@@ -22,4 +22,12 @@ void check_tiled_options(const RenderOptions& options);
 int render_tiled(const Scene& scene, const FrameRequest& request, const ComputeDevice& device,
                  ProgramCache& cache, const RenderOptions& options);
 
+// A part for `fgr merge` (--part, --tile I/N): whether one was asked for, the options it cannot
+// honour (UsageError naming them), and the render (rows of tile I of N, or the whole image, in
+// bands streamed to the .exr part); returns the exit code (130 when Ctrl-C stopped it).
+bool part_render_wanted(const RenderOptions& options);
+void check_part_options(const RenderOptions& options);
+int render_part_file(const Scene& scene, const FrameRequest& request, const ComputeDevice& device,
+                     ProgramCache& cache, const RenderOptions& options);
+
 }  // namespace fgr

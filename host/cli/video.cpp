@@ -7,7 +7,9 @@
 #include <filesystem>
 #include <numeric>
 #include <optional>
+#include <regex>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include <fmt/format.h>
@@ -56,6 +58,34 @@ void check_writable_directory_of(const std::filesystem::path& file) {
     }
 }
 
+// The frames "A:B" names, first and last (0-based, inclusive); UsageError unless 0 <= A <= B.
+std::pair<int, int> parse_frame_range(const std::string& text) {
+    const std::regex form(R"((\d{1,9}):(\d{1,9}))");
+    std::smatch match;
+    if (!std::regex_match(text, match, form)) {
+        throw UsageError(fmt::format("--frame-range '{}' must be A:B, the first and last frame "
+                                     "(0-based), e.g. 0:99", text));
+    }
+    const int first = std::stoi(match[1]), last = std::stoi(match[2]);
+    if (first > last) {
+        throw UsageError(
+            fmt::format("--frame-range {}: the first frame comes after the last", text));
+    }
+    return {first, last};
+}
+
+// The frames to render: all, or --frame-range's (UsageError past the video's last frame).
+std::pair<int, int> frames_to_render(const VideoOptions& options, int frame_count) {
+    if (!options.frame_range) return {0, frame_count - 1};
+    const auto [first, last] = parse_frame_range(*options.frame_range);
+    if (last >= frame_count) {
+        throw UsageError(fmt::format("--frame-range {} goes past the last frame: this video has "
+                                     "{} frames, 0:{}", *options.frame_range, frame_count,
+                                     frame_count - 1));
+    }
+    return {first, last};
+}
+
 // Checks that need no scene: outputs, formats, codec and size, so bad input fails before any
 // kernel is built or file written.
 void check_video_options(const VideoOptions& options) {
@@ -84,6 +114,14 @@ void check_video_options(const VideoOptions& options) {
         }
     } else if (!options.codec.empty() || options.crf) {
         throw UsageError("--codec and --crf are for a video file (-o)");
+    }
+    if (options.frame_range) {
+        if (options.frames_directory.empty() || !options.output.empty()) {
+            throw UsageError("--frame-range renders some frames of a sequence: give --frames DIR "
+                             "and no -o (encode the whole directory with fgr merge --frames DIR "
+                             "-o FILE)");
+        }
+        parse_frame_range(*options.frame_range);  // a malformed range fails before any loading
     }
     if (!options.frames_directory.empty()) {
         const std::filesystem::path directory = options.frames_directory;
@@ -144,6 +182,10 @@ void add_video_command(CLI::App& app, VideoOptions& options) {
     video->add_option("--crf", options.crf,
                       "constant quality: lower is better and bigger (libx264 default 18, 0 "
                       "lossless; libvpx-vp9 default 24)");
+    video->add_option("--frame-range", options.frame_range,
+                      "A:B: render only frames A..B (0-based, inclusive) into --frames DIR, "
+                      "numbered as in the whole video (share a video out to machines, then "
+                      "fgr merge --frames DIR -o FILE)");
     add_frame_options(video, options.frame);
 }
 
@@ -162,10 +204,12 @@ int command_video(const VideoOptions& options) {
         throw UsageError(error.what());
     }
     const std::vector<CameraView> views = frame_views(path, timing);
+    const auto [first_frame, last_frame] = frames_to_render(options, timing.frame_count());
     StillJob job = still_job(scene, scene_request(scene, frame_options), frame_options);
     const ComputeDevice device = open_requested_device(frame_options.device);
     ProgramCache cache(ProgramCache::default_directory());
     VideoFrameRenderer renderer(scene, device, cache, job.settings);
+    // From every view of the video, so a frame range renders its frames as the whole video does.
     const bool in_double = renderer.choose_precision(views, job.request.width, job.request.params);
 
     InterruptGuard interrupt_guard;
@@ -207,8 +251,12 @@ int command_video(const VideoOptions& options) {
                  in_double ? "double" : "float",
                  encoder ? ", encoding " + encoder->description() : "",
                  cluster.alone() ? "" : fmt::format(", over {} MPI ranks", cluster.size()));
+    const long total_frames = last_frame - first_frame + 1;
+    if (options.frame_range) {
+        spdlog::info("rendering frames {} to {} ({} of {})", first_frame, last_frame, total_frames,
+                     views.size());
+    }
     ProgressLine progress("frames");
-    const long total_frames = static_cast<long>(views.size());
     const auto started = std::chrono::steady_clock::now();
     const auto write_frame = [&](const Frame& frame, int64_t index) {
         if (encoder) encoder->add_frame(frame.image);
@@ -226,17 +274,17 @@ int command_video(const VideoOptions& options) {
     // Frames go into the file in order, whichever rank finished first.
     InTaskOrder in_order([&](int64_t index, std::vector<uint8_t>&& bytes) {
         write_frame(frame_from_bytes(bytes), index);
-        const long done = static_cast<long>(index + 1);
+        const long done = static_cast<long>(index) - first_frame + 1;
         const double seconds =
             std::chrono::duration<double>(std::chrono::steady_clock::now() - started).count();
         progress.update(done, total_frames, done, seconds,
                         fmt::format("{:.2f} fps", seconds > 0.0 ? double(done) / seconds : 0.0));
-    });
+    }, first_frame);
     const ResultSink collect = [&](int64_t index, std::vector<uint8_t>&& bytes) {
         in_order.add(index, std::move(bytes));
     };
-    std::vector<int64_t> frames(views.size());
-    std::iota(frames.begin(), frames.end(), 0);
+    std::vector<int64_t> frames(static_cast<size_t>(total_frames));
+    std::iota(frames.begin(), frames.end(), int64_t(first_frame));
     FarmSettings farm;
     farm.interrupted = [] { return interrupted != 0; };
     FarmOutcome outcome;
@@ -258,7 +306,8 @@ int command_video(const VideoOptions& options) {
                    job.request.width, job.request.height, timing.fps, encoder->description());
     }
     if (!options.frames_directory.empty()) {
-        fmt::print("wrote {} frames to {}\n", views.size(), options.frames_directory);
+        fmt::print("wrote {} frames ({} to {}) to {}\n", total_frames, first_frame, last_frame,
+                   options.frames_directory);
     }
     if (!cluster.alone()) print_mpi_figures(cluster, outcome);
     return 0;

@@ -10,6 +10,7 @@
 #include <filesystem>
 #include <memory>
 #include <string>
+#include <utility>
 #include <vector>
 
 namespace fgr {
@@ -42,11 +43,26 @@ public:
     virtual void finish() = 0;
 };
 
-// Opens a writer for a width x height image at `path` in `format`. Throws std::invalid_argument
-// for a layout the format cannot hold and std::runtime_error ("cannot write '<path>': <reason>")
-// when the file cannot be created or written.
+// What an EXR file may say beyond its pixels: that its rows are a rectangle of a larger image
+// (OpenEXR's display window is the whole image, its data window the rows written), and text
+// attributes for its header (fgr's part files, fgr/render_parts.hpp).
+struct ExrPlacement {
+    int image_width = 0;   // the whole image; 0: the rows written are the whole image
+    int image_height = 0;
+    int x = 0;             // the written rectangle's top-left corner in the whole image
+    int y = 0;
+    std::vector<std::pair<std::string, std::string>> attributes;  // name, value
+    bool placed() const { return image_width > 0; }
+};
+
+// Opens a writer for a width x height image at `path` in `format` (an EXR with `placement`: a
+// width x height rectangle of a larger image). Throws std::invalid_argument for a layout the
+// format cannot hold, or a placement that is not an EXR's or not inside its image, and
+// std::runtime_error ("cannot write '<path>': <reason>") when the file cannot be created or
+// written.
 std::unique_ptr<StreamingImageWriter> open_streaming_image(const std::filesystem::path& path,
                                                            ImageFormat format, int width,
-                                                           int height, const RowLayout& layout);
+                                                           int height, const RowLayout& layout,
+                                                           const ExrPlacement& placement = {});
 
 }  // namespace fgr

@@ -9,6 +9,7 @@
 #include <ImfFrameBuffer.h>
 #include <ImfHeader.h>
 #include <ImfOutputFile.h>
+#include <ImfStringAttribute.h>
 
 #include <algorithm>
 #include <cctype>
@@ -140,8 +141,9 @@ private:
 
 class ExrStream final : public StreamingImageWriter {
 public:
-    ExrStream(const fs::path& path, int width, int height, const RowLayout& layout)
-        : pending_(path), width_(width), layout_(layout) {
+    ExrStream(const fs::path& path, int width, int height, const RowLayout& layout,
+              const ExrPlacement& placement)
+        : pending_(path), width_(width), x_(placement.x), layout_(layout) {
         if (layout.type != SampleType::F32) {
             throw std::invalid_argument("cannot write '" + path.string() +
                                         "': EXR output holds 32-bit float channels");
@@ -150,8 +152,16 @@ public:
         // untrusted files; a tiled still may be larger, so the limit is the tiled one here (and
         // every read sets its own again first).
         Imf::Header::setMaxImageSize(1 << 20, 1 << 20);
-        Imf::Header header(width, height);
+        const Imath::Box2i data(Imath::V2i(placement.x, placement.y),
+                                Imath::V2i(placement.x + width - 1, placement.y + height - 1));
+        const Imath::V2i last(placement.image_width - 1, placement.image_height - 1);
+        const Imath::Box2i display =
+            placement.placed() ? Imath::Box2i(Imath::V2i(0, 0), last) : data;
+        Imf::Header header(display, data);
         header.compression() = Imf::ZIP_COMPRESSION;
+        for (const auto& [name, value] : placement.attributes) {
+            header.insert(name, Imf::StringAttribute(value));
+        }
         for (const std::string& name : layout.channels) {
             header.channels().insert(name, Imf::Channel(Imf::FLOAT));
         }
@@ -166,7 +176,8 @@ public:
         const size_t pixel = layout_.pixel_bytes();
         const size_t row = pixel * size_t(width_);
         const int first = file_->currentScanLine();
-        const Imath::Box2i band(Imath::V2i(0, first), Imath::V2i(width_ - 1, first + count - 1));
+        const Imath::Box2i band(Imath::V2i(x_, first),
+                                Imath::V2i(x_ + width_ - 1, first + count - 1));
         Imf::FrameBuffer frame;
         for (size_t c = 0; c < layout_.channels.size(); ++c) {
             frame.insert(layout_.channels[c],
@@ -192,6 +203,7 @@ public:
 private:
     PendingFile pending_;
     int width_;
+    int x_;  // the data window's first column
     RowLayout layout_;
     std::unique_ptr<Imf::OutputFile> file_;
 };
@@ -299,14 +311,26 @@ ImageFormat image_format_of(const fs::path& path) {
 
 std::unique_ptr<StreamingImageWriter> open_streaming_image(const fs::path& path,
                                                            ImageFormat format, int width,
-                                                           int height, const RowLayout& layout) {
+                                                           int height, const RowLayout& layout,
+                                                           const ExrPlacement& placement) {
     if (width < 1 || height < 1) {
         throw std::invalid_argument("cannot write '" + path.string() + "': image is " +
                                     std::to_string(width) + "x" + std::to_string(height));
     }
+    if ((placement.placed() || !placement.attributes.empty()) && format != ImageFormat::Exr) {
+        throw std::invalid_argument("cannot write '" + path.string() +
+                                    "': only an EXR file holds a part of an image");
+    }
+    if (placement.placed() &&
+        (placement.x < 0 || placement.y < 0 || placement.x + width > placement.image_width ||
+         placement.y + height > placement.image_height)) {
+        throw std::invalid_argument("cannot write '" + path.string() + "': its rectangle lies "
+                                    "outside the image");
+    }
     switch (format) {
         case ImageFormat::Png: return std::make_unique<PngStream>(path, width, height, layout);
-        case ImageFormat::Exr: return std::make_unique<ExrStream>(path, width, height, layout);
+        case ImageFormat::Exr:
+            return std::make_unique<ExrStream>(path, width, height, layout, placement);
         case ImageFormat::Tiff: return std::make_unique<TiffStream>(path, width, height, layout);
     }
     throw std::invalid_argument("unknown image format");

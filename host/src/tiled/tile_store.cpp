@@ -12,8 +12,7 @@
 #include <spdlog/spdlog.h>
 
 #include "fgr/atomic_file.hpp"
-#include "fgr/kernel_assembly.hpp"
-#include "fgr/projection.hpp"
+#include "parts/render_identity.hpp"
 
 namespace fgr {
 namespace {
@@ -33,16 +32,6 @@ struct BandHeader {
     int64_t hits;
 };
 
-// FNV-1a: a stable fingerprint of the kernel source (std::hash may differ between builds).
-std::string fingerprint(const std::string& text) {
-    uint64_t hash = 14695981039346656037ull;
-    for (unsigned char c : text) {
-        hash ^= c;
-        hash *= 1099511628211ull;
-    }
-    return fmt::format("{:016x}", hash);
-}
-
 std::string format_name(ImageFormat format) {
     switch (format) {
         case ImageFormat::Png: return "png";
@@ -50,35 +39,6 @@ std::string format_name(ImageFormat format) {
         case ImageFormat::Tiff: return "tiff";
     }
     return "?";
-}
-
-std::string view_text(const CameraView& view) {
-    return fmt::format("eye {:.17g} {:.17g} {:.17g} target {:.17g} {:.17g} {:.17g} up {:.9g} "
-                       "{:.9g} {:.9g} fov {:.9g}",
-                       view.position.x, view.position.y, view.position.z, view.target.x,
-                       view.target.y, view.target.z, view.up.x, view.up.y, view.up.z,
-                       view.fov_degrees);
-}
-
-std::string projection_text(const Projection& projection) {
-    return fmt::format("{} fisheye {:.9g} separation {} convergence {}",
-                       projection_name(projection.kind), projection.fisheye_fov_degrees,
-                       projection.eye_separation ? fmt::format("{:.17g}", *projection.eye_separation) : "auto",
-                       projection.convergence ? fmt::format("{:.17g}", *projection.convergence) : "auto");
-}
-
-std::string path_text(const PathSettings& path) {
-    std::string text = fmt::format("bounces {} roulette {} clamp {:.9g} light {} mis {} "
-                                   "importance {} lights {} stratified {} seed {}",
-                                   path.max_bounces, path.roulette_depth, path.radiance_clamp,
-                                   path.light_sampling, path.mis, path.environment_importance,
-                                   path.scene_lights, path.stratified, path.seed);
-    if (path.environment) {
-        text += fmt::format(" environment '{}' rotation {:.9g} intensity {:.9g}",
-                            path.environment->description, path.environment->rotation_degrees,
-                            path.environment->intensity);
-    }
-    return text;
 }
 
 std::string read_file(const fs::path& path) {
@@ -91,26 +51,21 @@ std::string read_file(const fs::path& path) {
 nlohmann::json render_identity(const Renderer& renderer, const FrameRequest& request,
                                const TiledOutput& output, const RowLayout& layout,
                                const TilePlan& plan) {
-    const AssembledProgram program = assemble_program(renderer.scene(), renderer.switches());
-    std::string params;
-    for (float value : request.params) params += fmt::format("{}{:.9g}", params.empty() ? "" : " ", value);
+    nlohmann::json identity;
+    for (const auto& [key, value] : image_identity(renderer, request, output.display)) {
+        identity[key] = value;
+    }
     std::string channels;
     for (const std::string& name : layout.channels) channels += (channels.empty() ? "" : ",") + name;
-    return {
-        {"scene", renderer.scene().id},
-        {"kernel", fingerprint(program.source + "\n" + program.options)},
-        {"size", fmt::format("{}x{}", request.width, request.height)},
-        {"view", view_text(request.view)},
-        {"projection", projection_text(request.projection)},
-        {"parameters", params},
-        {"samples", request.samples},
-        {"path tracing", path_text(request.path)},
-        {"tiles", fmt::format("{} rows a band, {} columns a tile, {} padding", plan.band_rows,
-                              plan.tile_width, plan.padding)},
-        {"output", fmt::format("{} {} {}-bit exposure {:.9g} tone map {}",
-                               format_name(output.format), channels, 8 * sample_bytes(layout.type),
-                               output.display.exposure, static_cast<int>(output.display.tone_map))},
-    };
+    identity["samples"] = request.samples;
+    identity["seed"] = request.path.seed;
+    identity["tiles"] = fmt::format("{} rows a band, {} columns a tile, {} padding", plan.band_rows,
+                                    plan.tile_width, plan.padding);
+    identity["output"] = fmt::format("{} {} {}-bit exposure {:.9g} tone map {}",
+                                     format_name(output.format), channels,
+                                     8 * sample_bytes(layout.type), output.display.exposure,
+                                     static_cast<int>(output.display.tone_map));
+    return identity;
 }
 
 TileStore::TileStore(fs::path directory, nlohmann::json identity, bool resume,
