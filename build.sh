@@ -22,13 +22,15 @@ jobs=$(nproc)
 # Debian packages fgr needs to build and test: compiler and build tools, OpenCL (PoCL runs it on
 # the CPU), the libraries named in the README, and for the viewer SDL2, Dear ImGui and OpenGL
 # (Mesa's software rasteriser under the virtual X server the viewer tests run in), FFmpeg's
-# libraries for `fgr video`.
+# libraries for `fgr video`, and Open MPI (optional to build fgr; with it, `mpirun -np N fgr render`
+# shares a render between ranks, and CI tests that).
 packages=(
     cmake ninja-build g++ pkg-config
     ocl-icd-opencl-dev opencl-headers opencl-clhpp-headers pocl-opencl-icd clinfo
     libspdlog-dev libfmt-dev libglm-dev libpng-dev libcli11-dev libgtest-dev nlohmann-json3-dev
     libopenexr-dev libstb-dev libtiff-dev zlib1g-dev
     libavcodec-dev libavformat-dev libavutil-dev libswscale-dev
+    libopenmpi-dev openmpi-bin
     libsdl2-dev libimgui-dev libgl-dev libgl1-mesa-dri
     xvfb xauth gnuplot-nox
 )
