@@ -66,6 +66,10 @@ TilePlan plan_tiles(int width, int height, int tile_size, size_t pixel_bytes, in
 // an untiled render: what the mode's shading reads of neighbouring pixels (0: nothing).
 int region_padding(RenderMode mode);
 
+// `tile` and `padding` pixels around it, within a width x height image: the region such a tile is
+// rendered over.
+PixelRegion padded_region(const PixelRegion& tile, int padding, int width, int height);
+
 struct TiledProgress {
     long tiles_done = 0;      // including those taken from an earlier run
     long tiles_total = 0;

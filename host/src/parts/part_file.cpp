@@ -31,17 +31,7 @@ constexpr int kMaxPartSide = kMaxTiledImageSide;
 // Packets cover up to 4x4 pixels (fgr::tile_layout).
 constexpr int kPacketAlignment = 4;
 
-struct Rect {
-    int x = 0, y = 0, width = 0, height = 0;
-};
-
-// The region a launch renders: `tile` and `padding` pixels around it, within the image.
-Rect padded(const Rect& tile, int padding, int width, int height) {
-    const int x0 = std::max(0, tile.x - padding), y0 = std::max(0, tile.y - padding);
-    const int x1 = std::min(width, tile.x + tile.width + padding);
-    const int y1 = std::min(height, tile.y + tile.height + padding);
-    return {x0, y0, x1 - x0, y1 - y0};
-}
+using Rect = PixelRegion;
 
 // `rect` grown to start and end on multiples of 4 pixels (or the image's edge). A launch groups
 // its pixels into packets of up to 4x4 from its corner (tile_layout), and a pixel's result may
@@ -185,7 +175,7 @@ PartResult render_part(Renderer& renderer, const FrameRequest& request,
             const Rect tile{x, band_y, std::min(plan.tile_width, region.x + region.width - x),
                             rows};
             const Rect rendered =
-                aligned_to_packets(padded(tile, padding, request.width, request.height),
+                aligned_to_packets(padded_region(tile, padding, request.width, request.height),
                                    request.width, request.height);
             launch.region = {rendered.x, rendered.y, rendered.width, rendered.height};
             const Frame frame = renderer.render(launch);

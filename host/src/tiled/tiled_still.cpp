@@ -26,17 +26,7 @@ constexpr int kBruteMaxReach = 256;
 
 int round_down_to_4(long value) { return static_cast<int>(value / 4 * 4); }
 
-struct Rect {
-    int x = 0, y = 0, width = 0, height = 0;
-};
-
-// The region a tile is rendered over: the tile and `padding` pixels around it, within the image.
-Rect padded(const Rect& tile, int padding, int width, int height) {
-    const int x0 = std::max(0, tile.x - padding), y0 = std::max(0, tile.y - padding);
-    const int x1 = std::min(width, tile.x + tile.width + padding);
-    const int y1 = std::min(height, tile.y + tile.height + padding);
-    return {x0, y0, x1 - x0, y1 - y0};
-}
+using Rect = PixelRegion;
 
 // The tile `index` of `plan` (band by band, left to right), in image pixels.
 Rect tile_rect(const TilePlan& plan, long index) {
@@ -93,6 +83,13 @@ TilePlan plan_tiles(int width, int height, int tile_size, size_t pixel_bytes, in
     return plan;
 }
 
+PixelRegion padded_region(const PixelRegion& tile, int padding, int width, int height) {
+    const int x0 = std::max(0, tile.x - padding), y0 = std::max(0, tile.y - padding);
+    const int x1 = std::min(width, tile.x + tile.width + padding);
+    const int y1 = std::min(height, tile.y + tile.height + padding);
+    return {x0, y0, x1 - x0, y1 - y0};
+}
+
 int region_padding(RenderMode mode) { return mode == RenderMode::Brute ? kBruteMaxReach : 0; }
 
 std::filesystem::path tile_store_path(const std::filesystem::path& output) {
@@ -109,7 +106,7 @@ TiledRender::TiledRender(Renderer& renderer, const FrameRequest& request,
 
 std::optional<EncodedTile> TiledRender::render(long index) const {
     const Rect tile = tile_rect(plan_, index);
-    const Rect region = padded(tile, plan_.padding, plan_.width, plan_.height);
+    const Rect region = padded_region(tile, plan_.padding, plan_.width, plan_.height);
     FrameRequest part = request_;
     part.region = {region.x, region.y, region.width, region.height};
     const Frame frame = renderer_.render(part);
