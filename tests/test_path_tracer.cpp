@@ -536,34 +536,37 @@ std::vector<std::pair<std::string, CameraView>> hard_views(const Scene& scene) {
 // cameras and the hard placements, in float and double: path tracing gives finite, non-negative
 // radiance in every pixel (no NaN from a degenerate normal, a zero pdf or a grazing sample), with
 // the default sky and its sun.
-TEST(PathTracerScenes, EveryBuiltSceneRendersFinitePixels) {
+// One precision a test, so that ctest runs the two side by side (the longest single test here).
+void expect_every_scene_finite(bool double_precision) {
     static ComputeDevice device = open_device(-1);
     ProgramCache cache{std::filesystem::path()};
     for (const Scene& scene : test::all_scenes()) {
         // An inside-only scene has no DE to path trace: it renders only by brute force.
         if (scene.inside_only()) continue;
-        for (bool double_precision : {false, true}) {
-            KernelSwitches switches;
-            switches.packet_width = 16;
-            switches.mode = RenderMode::Path;
-            switches.double_precision = double_precision;
-            Renderer renderer(device, cache, scene, switches);
-            for (const auto& [name, view] : hard_views(scene)) {
-                FrameRequest request;
-                request.width = 24;
-                request.height = 16;
-                request.view = view;
-                request.params = default_param_values(scene);
-                request.samples = 2;
-                const Frame frame = renderer.render(request);
-                long broken = 0;
-                for (float value : frame.linear) broken += !std::isfinite(value) || value < 0.0f;
-                EXPECT_EQ(broken, 0) << scene.id << " " << name
-                                     << (double_precision ? " double" : " float");
-            }
+        KernelSwitches switches;
+        switches.packet_width = 16;
+        switches.mode = RenderMode::Path;
+        switches.double_precision = double_precision;
+        Renderer renderer(device, cache, scene, switches);
+        for (const auto& [name, view] : hard_views(scene)) {
+            FrameRequest request;
+            request.width = 24;
+            request.height = 16;
+            request.view = view;
+            request.params = default_param_values(scene);
+            request.samples = 2;
+            const Frame frame = renderer.render(request);
+            long broken = 0;
+            for (float value : frame.linear) broken += !std::isfinite(value) || value < 0.0f;
+            EXPECT_EQ(broken, 0) << scene.id << " " << name
+                                 << (double_precision ? " double" : " float");
         }
     }
 }
+
+TEST(PathTracerScenes, EveryBuiltSceneRendersFinitePixelsInFloat) { expect_every_scene_finite(false); }
+
+TEST(PathTracerScenes, EveryBuiltSceneRendersFinitePixelsInDouble) { expect_every_scene_finite(true); }
 
 }  // namespace
 }  // namespace fgr

@@ -1,6 +1,7 @@
 #pragma once
 // fgr render in tiles: what makes a render tiled, and the tiled render itself (the progress
-// line, Ctrl-C, --resume), on top of fgr/tiled_still.hpp.
+// line, Ctrl-C, --resume), on top of fgr/tiled_still.hpp. Under mpirun the tiles are shared out
+// over the ranks (fgr/distributed/task_farm.hpp) and rank 0 writes the file.
 
 #include "commands.hpp"
 #include "fgr/program_cache.hpp"
