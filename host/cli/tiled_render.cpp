@@ -130,10 +130,7 @@ int write_tiles(Cluster& cluster, const TiledRender& render, const TaskWork& wor
     long done = resumed, rays = 0;
     const ResultSink place = [&](int64_t index, std::vector<uint8_t>&& bytes) {
         file->add(index, tile_from_bytes(bytes));
-        const long band = index / plan.tiles_per_band();
-        const long columns = std::min<long>(plan.tile_width, plan.width - index % plan.tiles_per_band() * plan.tile_width);
-        rays += columns * std::min<long>(plan.band_rows, plan.height - band * plan.band_rows) *
-                render.request().samples;
+        rays += plan.tile(index).pixels() * render.request().samples;
         ++done;
         const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
         progress.update(done, plan.tiles(), done - resumed, seconds,

@@ -12,6 +12,7 @@
 // to the file; the store goes once the file is complete. Interrupted renders keep the store and
 // leave no file at the output path.
 
+#include <algorithm>
 #include <cstdint>
 #include <filesystem>
 #include <functional>
@@ -51,6 +52,13 @@ struct TilePlan {
     int bands() const { return (height + band_rows - 1) / band_rows; }
     int tiles_per_band() const { return (width + tile_width - 1) / tile_width; }
     long tiles() const { return long(bands()) * tiles_per_band(); }
+    // Tile `index` (band by band, left to right) in image pixels.
+    PixelRegion tile(long index) const {
+        const int band = static_cast<int>(index / tiles_per_band());
+        const int x = static_cast<int>(index % tiles_per_band()) * tile_width;
+        const int y = band * band_rows;
+        return {x, y, std::min(tile_width, width - x), std::min(band_rows, height - y)};
+    }
 };
 
 // Default tile side, and the most memory a band of encoded rows may take.

@@ -28,14 +28,6 @@ int round_down_to_4(long value) { return static_cast<int>(value / 4 * 4); }
 
 using Rect = PixelRegion;
 
-// The tile `index` of `plan` (band by band, left to right), in image pixels.
-Rect tile_rect(const TilePlan& plan, long index) {
-    const int band = static_cast<int>(index / plan.tiles_per_band());
-    const int x = static_cast<int>(index % plan.tiles_per_band()) * plan.tile_width;
-    const int y = band * plan.band_rows;
-    return {x, y, std::min(plan.tile_width, plan.width - x), std::min(plan.band_rows, plan.height - y)};
-}
-
 double seconds_since(std::chrono::steady_clock::time_point start) {
     return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
 }
@@ -105,7 +97,7 @@ TiledRender::TiledRender(Renderer& renderer, const FrameRequest& request,
 }
 
 std::optional<EncodedTile> TiledRender::render(long index) const {
-    const Rect tile = tile_rect(plan_, index);
+    const Rect tile = plan_.tile(index);
     const Rect region = padded_region(tile, plan_.padding, plan_.width, plan_.height);
     FrameRequest part = request_;
     part.region = {region.x, region.y, region.width, region.height};
@@ -162,7 +154,7 @@ int TiledFile::band_rows(int band) const {
 
 void TiledFile::add(long index, const EncodedTile& tile) {
     const int band = static_cast<int>(index / plan_.tiles_per_band());
-    const Rect rect = tile_rect(plan_, index);
+    const Rect rect = plan_.tile(index);
     const size_t row_bytes = pixel_bytes_ * size_t(rect.width);
     if (band < next_band_ || band_in_store_[size_t(band)] || tile.rows.size() != row_bytes * size_t(rect.height)) {
         throw std::logic_error(fmt::format("tile {} does not belong in the open bands", index));
@@ -255,7 +247,7 @@ TiledResult render_tiled_still(Renderer& renderer, const FrameRequest& request,
             return result;
         }
         file.add(index, *tile);
-        const Rect rect = tile_rect(render.plan(), index);
+        const Rect rect = render.plan().tile(index);
         rays += long(rect.width) * rect.height * request.samples;
         ++progress.tiles_done;
         report();
