@@ -76,14 +76,19 @@ march_result ifs_trace_rays(vec3 origin, vec3 dir, mask active, real travelled, 
                             march_limits limits, int any_hit, PARAMS);
 #endif
 
-inline march_result march_rays_core(vec3 origin, vec3 dir, mask active, real travelled,
-                                    real reach, march_limits limits, int departing, PARAMS) {
+inline march_result march_rays_core(vec3 origin, vec3 dir, mask active, real start,
+                                    real travelled, real reach, march_limits limits,
+                                    int departing, PARAMS) {
 #ifdef FGR_GEOMETRY_IFS
     (void)departing; /* an exact hit ahead of the origin never is the surface the ray leaves */
+    (void)start;     /* the prepass never runs for IFS scenes */
     return ifs_trace_rays(origin, dir, active, travelled, reach, limits, 0, PARAMS_PASS);
 #else
     march_result result;
-    result.t = fgr_real(0.0f);
+    /* A start past the eye comes from the cone prepass (fgr_prepass.cl): the space before it is
+     * clear, and a lane starting past its reach has nothing to march. */
+    result.t = start;
+    active &= start <= reach;
     result.hit = (mask)(0);
     result.steps = (mask)(0);
 #ifdef FGR_EFFECT_GLOW
@@ -110,7 +115,7 @@ inline march_result march_rays_core(vec3 origin, vec3 dir, mask active, real tra
         real dist = scene_de(v3_mad(origin, dir, t_here), PARAMS_PASS);
         if (step == 0) {
             /* Only at the eye itself: no distance covered before, so no footprint there. */
-            escaping = active & (dist <= 0.0f) & (travelled <= 0.0f);
+            escaping = active & (dist <= 0.0f) & (travelled <= 0.0f) & (t_here <= 0.0f);
             leaving |= escaping;
             any_leaving |= fgr_any(escaping);
         }
@@ -187,7 +192,8 @@ inline march_result march_rays_core(vec3 origin, vec3 dir, mask active, real tra
 
 inline march_result march_rays_within(vec3 origin, vec3 dir, mask active, real travelled,
                                       real reach, march_limits limits, PARAMS) {
-    return march_rays_core(origin, dir, active, travelled, reach, limits, 0, PARAMS_PASS);
+    return march_rays_core(origin, dir, active, fgr_real(0.0f), travelled, reach, limits, 0,
+                           PARAMS_PASS);
 }
 
 /* march_rays_within for a ray leaving a surface point (the path tracer's bounces and shadow rays,
@@ -195,7 +201,8 @@ inline march_result march_rays_within(vec3 origin, vec3 dir, mask active, real t
  * a wall the ray starts beside and moves away from never stops it. */
 inline march_result march_rays_departing(vec3 origin, vec3 dir, mask active, real travelled,
                                          real reach, march_limits limits, PARAMS) {
-    return march_rays_core(origin, dir, active, travelled, reach, limits, 1, PARAMS_PASS);
+    return march_rays_core(origin, dir, active, fgr_real(0.0f), travelled, reach, limits, 1,
+                           PARAMS_PASS);
 }
 
 /* Whether anything blocks the ray before `reach` (shadow rays): march_rays_within, except that
@@ -206,7 +213,8 @@ inline march_result march_rays_occluded(vec3 origin, vec3 dir, mask active, real
     (void)departing;
     return ifs_trace_rays(origin, dir, active, travelled, reach, limits, 1, PARAMS_PASS);
 #else
-    return march_rays_core(origin, dir, active, travelled, reach, limits, departing, PARAMS_PASS);
+    return march_rays_core(origin, dir, active, fgr_real(0.0f), travelled, reach, limits,
+                           departing, PARAMS_PASS);
 #endif
 }
 
@@ -218,6 +226,14 @@ inline march_result march_rays_after(vec3 origin, vec3 dir, mask active, real tr
 
 inline march_result march_rays(vec3 origin, vec3 dir, mask active, march_limits limits, PARAMS) {
     return march_rays_after(origin, dir, active, fgr_real(0.0f), limits, PARAMS_PASS);
+}
+
+/* A camera ray's march from `start` along it (the cone prepass's distance for its block, see
+ * fgr_prepass.cl; 0 starts at the eye). */
+inline march_result march_camera_rays(vec3 origin, vec3 dir, mask active, real start,
+                                      march_limits limits, PARAMS) {
+    return march_rays_core(origin, dir, active, start, fgr_real(0.0f),
+                           fgr_real(limits.max_distance), limits, 0, PARAMS_PASS);
 }
 
 /* Surface normal from the DE's gradient, with the four-tap tetrahedron stencil (four DE

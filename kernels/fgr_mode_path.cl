@@ -271,7 +271,9 @@ __kernel void fgr_render(FGR_RENDER_ARGS, __constant const float* lights, path_s
 
     for (int bounce = 0; fgr_any(active); ++bounce) {
         const march_result hit =
-            bounce == 0 ? march_rays(origin, dir, active, limits, PARAMS_PASS)
+            bounce == 0 ? march_camera_rays(origin, dir, active,
+                                            march_start_of(march_starts, pixels, camera),
+                                            limits, PARAMS_PASS)
                         : march_rays_departing(origin, dir, active, seen_at,
                                                fgr_real(limits.max_distance), limits, PARAMS_PASS);
 #ifdef FGR_STATS

@@ -59,7 +59,9 @@ __kernel void fgr_render(FGR_RENDER_ARGS, __constant const float* lights, int li
     const vec3 eye = ray.origin, dir = ray.dir;
 
     const march_limits limits = scene_march_limits(camera.pixel_angle, PARAMS_PASS);
-    march_result hit = march_rays(eye, dir, inside, limits, PARAMS_PASS);
+    march_result hit = march_camera_rays(eye, dir, inside,
+                                         march_start_of(march_starts, pixels, camera), limits,
+                                         PARAMS_PASS);
 
     vec3 colour = background(dir);
     real depth = fgr_real(-1.0f);

@@ -19,6 +19,7 @@
 #include "fgr_mode_brute_cl.h"
 #include "fgr_mode_path_cl.h"
 #include "fgr_mode_shaded_cl.h"
+#include "fgr_prepass_cl.h"
 #include "fgr_probe_cl.h"
 #include "fgr_sampler_cl.h"
 #include "fgr_sdf_cl.h"
@@ -51,6 +52,7 @@ std::span<const KernelFile> kernel_postlude() {
         KernelFile{"fgr_shade.cl", fgr_shade_cl},
         KernelFile{"fgr_effects.cl", fgr_effects_cl},
         KernelFile{"fgr_camera.cl", fgr_camera_cl},
+        KernelFile{"fgr_prepass.cl", fgr_prepass_cl},
         KernelFile{"fgr_probe.cl", fgr_probe_cl},
     };
     return files;

@@ -57,6 +57,8 @@ ComputeDevice open_requested_device(int index);
 void add_device_options(CLI::App* command, int& device, int& packet_width);
 // --precision, for the commands that render; `auto_means` ends its help text.
 void add_precision_option(CLI::App* command, Precision& precision, const std::string& auto_means);
+// --prepass on|off (the cone-marched depth prepass; on by default).
+void add_prepass_option(CLI::App* command, bool& prepass);
 // --mode and the path tracer's options, shared by render, view and bench.
 struct ModeOptions {
     std::optional<std::string> mode;  // default: the scene's (Scene::default_mode)
@@ -158,6 +160,7 @@ struct RenderOptions {
     ProjectionOptions projection;
     bool part = false;                // write a part for `fgr merge` (fgr/render_parts.hpp)
     std::optional<std::string> tile;  // "I/N": the part is rows of tile I of N (implies --part)
+    bool prepass = true;  // --prepass on|off: the cone-marched depth prepass (FrameRequest)
 };
 
 void add_render_command(CLI::App& app, RenderOptions& options);

@@ -147,6 +147,7 @@ FrameRequest default_request(const Scene& scene, const RenderOptions& options) {
     request.params = default_param_values(scene);
     request.samples = options.samples.value_or(1);
     request.projection = chosen_projection(options.projection);
+    request.prepass.enabled = options.prepass;
     return request;
 }
 
@@ -259,8 +260,18 @@ void report_and_write(const Scene& scene, const FrameRequest& request, const Ren
     } else if (frame.stats) {
         const MarchStats& stats = *frame.stats;
         fmt::print("steps_per_pixel {:.2f} (max {})\n", stats.mean_steps, stats.max_steps);
-        fmt::print("de_evaluations {} ({:.2f} per pixel: primary march and normals)\n",
+        fmt::print("de_evaluations {} ({:.2f} per pixel: cone prepass, primary march and "
+                   "normals)\n",
                    stats.de_evaluations, double(stats.de_evaluations) / double(stats.pixels));
+        fmt::print("prepass_de_evaluations {} ({:.3f} per pixel)\n", stats.prepass_de_evaluations,
+                   double(stats.prepass_de_evaluations) / double(stats.pixels));
+        if (stats.packet_steps > 0) {
+            fmt::print("primary_lane_utilisation {:.1f}% ({} lane steps in {} packet steps of {} "
+                       "lanes)\n",
+                       100.0 * double(stats.lane_steps) /
+                           (double(stats.packet_steps) * stats.packet_width),
+                       stats.lane_steps, stats.packet_steps, stats.packet_width);
+        }
         fmt::print("out_of_steps {:.3f}% ({} of {} pixels)\n", stats.out_of_steps_percent(),
                    stats.out_of_steps, stats.pixels);
         fmt::print("secondary_de_evaluations {} ({:.2f} per pixel: shadow, reflection and "
@@ -395,6 +406,7 @@ void add_frame_options(CLI::App* command, RenderOptions& options, int max_side) 
                       "coverage as alpha with the background removed: an RGBA PNG (straight "
                       "alpha), or an EXR's A channel (colour premultiplied)");
     add_mode_options(command, options.mode);
+    add_prepass_option(command, options.prepass);
     command->add_option("--effects", options.effect_changes,
                         "change the scene's effects, e.g. +shadows,-ambient_occlusion");
     add_precision_option(command, options.precision,

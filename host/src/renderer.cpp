@@ -19,58 +19,11 @@
 #include "fgr/projection.hpp"
 #include "fgr/view_validation.hpp"
 #include "modes/mode_kernel.hpp"
+#include "camera_frame.hpp"
+#include "prepass/cone_prepass.hpp"
 
 namespace fgr {
 namespace {
-
-// Mirrors `camera_frame` in kernels/fgr_camera.cl (float4 members keep both layouts equal).
-struct CameraFrame {
-    cl_float4 eye;      // xyz: float(eye), w: x of float(eye - xyz)
-    cl_float4 forward;  // w: y of float(eye - eye.xyz)
-    cl_float4 right;    // w: z of float(eye - eye.xyz)
-    cl_float4 up;
-    cl_float tan_half_fov;
-    cl_float pixel_angle;
-    cl_int width;
-    cl_int height;
-    cl_int projection;  // ProjectionKind
-    cl_float fisheye_half_fov;
-    cl_float eye_separation;
-    cl_float convergence;
-    cl_int region_x;
-    cl_int region_y;
-    cl_int region_width;
-    cl_int region_height;
-};
-static_assert(sizeof(CameraFrame) == 112, "must match camera_frame in fgr_camera.cl");
-
-cl_float4 to_float4(glm::vec3 v, float w = 0.0f) { return {{v.x, v.y, v.z, w}}; }
-
-// The eye goes as a hi/lo split of its double value: hi the nearest float, lo the rest rounded to
-// float (in the w components); double lanes add them, float lanes use hi alone.
-CameraFrame camera_frame(const CameraView& view, const Projection& projection, int width,
-                         int height, PixelRegion region) {
-    const CameraModel model = camera_model(view, projection);
-    const CameraBasis& basis = model.basis;
-    const glm::vec3 eye_hi(basis.eye);
-    const glm::vec3 eye_lo(basis.eye - glm::dvec3(eye_hi));
-    return {to_float4(eye_hi, eye_lo.x),
-            to_float4(basis.forward, eye_lo.y),
-            to_float4(basis.right, eye_lo.z),
-            to_float4(basis.up),
-            basis.tan_half_fov,
-            pixel_angle(model, width, height),
-            width,
-            height,
-            static_cast<cl_int>(model.kind),
-            model.fisheye_half_fov,
-            model.eye_separation,
-            model.convergence,
-            region.x,
-            region.y,
-            region.width,
-            region.height};
-}
 
 void check_size(const FrameRequest& request) {
     if (request.region.whole()) {
@@ -249,6 +202,7 @@ Renderer::Renderer(const ComputeDevice& device, ProgramCache& cache, const Scene
     probe_kernel_ = cl::Kernel(program_, "fgr_probe_de");
     normal_kernel_ = cl::Kernel(program_, "fgr_probe_normal");
     mode_ = make_mode_kernel(switches_, device, program_, scene);
+    prepass_ = std::make_unique<ConePrepass>(device, program_, scene, switches_);
     warm_up();
 }
 
@@ -310,6 +264,8 @@ Frame Renderer::render(const FrameRequest& request) {
     const int tiles = layout.tiles_x * layout.tiles_y;
     const CameraFrame camera = camera_frame(request.view, request.projection, request.width,
                                             request.height, region);
+    const int group = work_group_size(device_);
+    const cl::Buffer starts = prepass_->starts(request, camera, params, group);
     cl::Kernel* resolve = mode_->resolve_kernel();
     for (cl::Kernel* kernel : {&render_kernel_, resolve}) {
         if (kernel == nullptr) continue;
@@ -318,9 +274,9 @@ Frame Renderer::render(const FrameRequest& request) {
         kernel->setArg(2, tiles);
         kernel->setArg(3, camera);
         kernel->setArg(5, params);
+        kernel->setArg(kMarchStartsArgument, starts);
     }
     mode_->bind(render_kernel_, request, layout);
-    const int group = work_group_size(device_);
     // Samples accumulate in the planes, one launch each, in order (in-order queue). Sample 0
     // overwrites them; a request starting later starts from zeroed planes instead.
     if (request.first_sample > 0) {
@@ -370,6 +326,10 @@ Frame Renderer::render(const FrameRequest& request) {
     }
     frame.image = display_image(scene_, request.params, frame.linear, region.width, region.height);
     mode_->read_back(host, layout, request, done, frame);
+    if (frame.stats) {
+        frame.stats->prepass_de_evaluations = prepass_->evaluations(starts, camera);
+        frame.stats->de_evaluations += frame.stats->prepass_de_evaluations;
+    }
     frame.render_ms = elapsed_ms(start);
     return frame;
 }

@@ -21,6 +21,7 @@
 namespace fgr {
 
 class ModeKernel;
+class ConePrepass;
 
 // A rectangle of an image, in pixels from its top-left corner.
 struct PixelRegion {
@@ -30,6 +31,15 @@ struct PixelRegion {
     int height = 0;
     bool whole() const { return width == 0 && height == 0; }
     long pixels() const { return long(width) * long(height); }
+};
+
+// The cone-marched depth prepass (kernels/fgr_prepass.cl): camera rays start where a cone
+// marched for their 8x8 block of pixels came near the surface instead of at the eye. On by
+// default wherever it applies (see ConePrepass::applies); `cone_scale` below 1 narrows the cones
+// below what their blocks need, which is unsafe and only there for tests to show they catch it.
+struct PrepassSettings {
+    bool enabled = true;
+    float cone_scale = 1.0f;
 };
 
 struct FrameRequest {
@@ -58,6 +68,7 @@ struct FrameRequest {
     // exactly as an untiled render of the whole image gives it. Its sides are at most
     // kMaxImageSide; the whole image's at most kMaxTiledImageSide.
     PixelRegion region{};
+    PrepassSettings prepass{};
 };
 
 // The primary rays' work, from sample 0 of a render built with KernelSwitches::stats.
@@ -65,7 +76,15 @@ struct MarchStats {
     long pixels = 0;
     double mean_steps = 0.0;  // DE evaluations of the primary march per pixel
     int max_steps = 0;        // the most any pixel took
-    long de_evaluations = 0;  // march steps plus the normal's four DE taps at every hit
+    // march steps plus the normal's four DE taps at every hit, and the cone prepass's
+    long de_evaluations = 0;
+    long prepass_de_evaluations = 0;  // the cone prepass's alone (0: it did not run)
+    // Lane utilisation of the primary march: the steps the lanes needed (lane_steps, summed over
+    // pixels) against those their packets took (packet_steps, each packet's longest lane, summed
+    // over packets; every one costs packet_width lanes).
+    long lane_steps = 0;
+    long packet_steps = 0;
+    int packet_width = 1;
     long out_of_steps = 0;    // rays that used max_steps without hitting or leaving the scene
     // Shaded mode: DE evaluations of shadow, reflection and refraction rays, summed over the
     // lanes that took part, and the part of them spent for pixels whose camera ray missed
@@ -199,6 +218,7 @@ private:
     cl::Kernel probe_kernel_;
     cl::Kernel normal_kernel_;
     std::unique_ptr<ModeKernel> mode_;  // the render mode's own arguments and planes
+    std::unique_ptr<ConePrepass> prepass_;  // where camera rays start
 };
 
 // Linear RGB planes (tile-major, as the kernel stores them) to an sRGB image in rows.

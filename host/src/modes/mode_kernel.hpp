@@ -1,5 +1,5 @@
 #pragma once
-// What a render mode's host module does for Renderer: the kernel's own arguments (after the six
+// What a render mode's host module does for Renderer: the kernel's own arguments (after the seven
 // every mode takes, see FGR_RENDER_ARGS in kernels/fgr_camera.cl) and the planes it writes beyond
 // colour and depth. One implementation per mode, in this folder; mode_registry.cpp makes them.
 
@@ -13,8 +13,11 @@
 
 namespace fgr {
 
-// Index of a mode's first own argument of fgr_render.
-constexpr int kFirstModeArgument = 6;
+// Index of a mode's first own argument of fgr_render (after FGR_RENDER_ARGS).
+constexpr int kFirstModeArgument = 7;
+
+// Index of fgr_render's `march_starts` (the cone prepass's distances, see FGR_RENDER_ARGS).
+constexpr int kMarchStartsArgument = 6;
 
 // The planes every mode writes: r, g, b (summed over samples) and depth (sample 0).
 constexpr int kCommonPlanes = 4;

@@ -39,6 +39,17 @@ MarchStats march_stats(const std::vector<float>& planes, const TileLayout& layou
         }
     }
     stats.mean_steps = stats.pixels ? double(steps) / double(stats.pixels) : 0.0;
+    // A packet's march costs its longest lane's steps in every lane (padding lanes, past the
+    // image's edge, take none).
+    for (int tile = 0; tile < layout.tiles_x * layout.tiles_y; ++tile) {
+        float longest = 0.0f;
+        for (int lane = 0; lane < layout.packet_width; ++lane) {
+            longest = std::max(longest, planes[4 * plane + tile * layout.packet_width + lane]);
+        }
+        stats.packet_steps += static_cast<long>(longest);
+    }
+    stats.lane_steps = steps;
+    stats.packet_width = layout.packet_width;
     return stats;
 }
 
