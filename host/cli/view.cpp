@@ -60,6 +60,9 @@ void add_view_command(CLI::App& app, ViewCommandOptions& options) {
                      "change the first scene's effects, e.g. +shadows,-ambient_occlusion");
     view->add_option("--camera-path", options.camera_path_file,
                      "a .json camera path saved by the viewer, to play with P");
+    view->add_option("--path", viewer.path_name,
+                     "the first scene's camera path P plays (default: its first; `fgr list` "
+                     "shows them), e.g. --path dive");
     add_view_override_options(view, options.view_override);
     add_projection_options(view, options.projection);
     view->add_option("--output-dir", viewer.output_dir,

@@ -145,6 +145,21 @@ void ViewerApp::prepare_first_scene() {
         throw UsageError(error.what());
     }
     sessions_[scene_index_] = std::move(first);
+    if (!options_.path_name.empty()) select_path(options_.path_name);
+}
+
+void ViewerApp::select_path(const std::string& name) {
+    const std::vector<CameraPath> paths = playable_paths();
+    std::string names;
+    for (size_t i = 0; i < paths.size(); ++i) {
+        if (paths[i].name == name) {
+            session().path_index = static_cast<int>(i);
+            return;
+        }
+        names += (names.empty() ? "" : ", ") + paths[i].name;
+    }
+    throw UsageError(fmt::format("scene '{}' has no camera path '{}' (its paths: {})", scene().id,
+                                 name, names.empty() ? "none" : names));
 }
 
 void ViewerApp::open_window() {

@@ -214,6 +214,8 @@ private:
     void draw_build_error();
 
     std::vector<CameraPath> playable_paths() const;
+    // Selects the current scene's playable path `name` for P (UsageError naming the paths).
+    void select_path(const std::string& name);
     const Scene& scene() const { return *scenes_[static_cast<size_t>(scene_index_)]; }
     SceneSession& session() { return sessions_.at(scene_index_); }
     const SceneSession& session() const { return sessions_.at(scene_index_); }

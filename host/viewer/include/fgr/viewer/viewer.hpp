@@ -31,6 +31,7 @@ struct ViewerOptions {
     std::vector<std::string> assignments;   // --set id=value for the first scene
     std::string effect_changes;             // --effects for the first scene
     std::optional<std::filesystem::path> camera_path_file;  // load (and list) a recorded path
+    std::string path_name;  // --path: the first scene's path P plays (default: its first)
     std::optional<ViewOverride> start_view;  // --eye, --target, --up, --fov: the first view
     Projection projection;  // --projection and its settings; the panel changes it
     std::filesystem::path output_dir = ".";  // screenshots and saved camera paths
