@@ -231,7 +231,7 @@ inline camera_ray camera_ray_through(camera_frame camera, real px, real py, came
 }
 
 /* The arguments every render mode's entry point `fgr_render` starts with, in this order (the host
- * sets them in host/src/renderer.cpp; a mode's own arguments follow from index 7):
+ * sets them in host/src/renderer.cpp; a mode's own arguments follow from index 9):
  *   planes      the output: plane p of the image at planes + p * plane_size, tile-major
  *   plane_size  floats per plane (whole tiles)
  *   tile_count  tiles in the image; the global size is rounded up past it
@@ -239,10 +239,13 @@ inline camera_ray camera_ray_through(camera_frame camera, real px, real py, came
  *   sample      which sample of each pixel this launch renders (0, 1, 2, ...)
  *   PARAMS      the scene's parameter buffer
  *   march_starts where each tile's camera rays start (the cone prepass, fgr_prepass.cl; zeros
- *               where it did not run): march_start_of */
+ *               where it did not run): march_start_of
+ *   march_hints, has_hints  reprojected start hints, a plane laid out as the image's (when
+ *               has_hints is set): march_start_with_hint */
 #define FGR_RENDER_ARGS                                                                        \
     __global float *planes, int plane_size, int tile_count, camera_frame camera, int sample, \
-        PARAMS, __global const float *march_starts
+        PARAMS, __global const float *march_starts, __global const float *march_hints,        \
+        int has_hints
 
 /* The pixels of one tile, one per lane. */
 typedef struct tile_pixels {

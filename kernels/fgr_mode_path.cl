@@ -269,15 +269,20 @@ __kernel void fgr_render(FGR_RENDER_ARGS, __constant const float* lights, path_s
     int packet_steps = 0;
 #endif
 
+    real camera_start = march_start_of(march_starts, pixels, camera);
+    mask hint_evaluations = (mask)(0); /* counted with the stats */
+    if (has_hints) {
+        camera_start = march_start_with_hint(camera_start, fgr_load(tile, march_hints), origin,
+                                             dir, active, limits, &hint_evaluations, PARAMS_PASS);
+    }
     for (int bounce = 0; fgr_any(active); ++bounce) {
         const march_result hit =
-            bounce == 0 ? march_camera_rays(origin, dir, active,
-                                            march_start_of(march_starts, pixels, camera),
-                                            limits, PARAMS_PASS)
+            bounce == 0 ? march_camera_rays(origin, dir, active, camera_start, limits,
+                                            PARAMS_PASS)
                         : march_rays_departing(origin, dir, active, seen_at,
                                                fgr_real(limits.max_distance), limits, PARAMS_PASS);
 #ifdef FGR_STATS
-        lane_steps += hit.steps;
+        lane_steps += hit.steps + (bounce == 0 ? hint_evaluations : (mask)(0));
         packet_steps += lanes_max(hit.steps);
 #endif
         const mask escaped = active & !hit.hit;

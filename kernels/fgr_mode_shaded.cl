@@ -59,9 +59,14 @@ __kernel void fgr_render(FGR_RENDER_ARGS, __constant const float* lights, int li
     const vec3 eye = ray.origin, dir = ray.dir;
 
     const march_limits limits = scene_march_limits(camera.pixel_angle, PARAMS_PASS);
-    march_result hit = march_camera_rays(eye, dir, inside,
-                                         march_start_of(march_starts, pixels, camera), limits,
-                                         PARAMS_PASS);
+    real start = march_start_of(march_starts, pixels, camera);
+    mask hint_evaluations = (mask)(0);
+    if (has_hints) {
+        start = march_start_with_hint(start, fgr_load(tile, march_hints), eye, dir, inside, limits,
+                                      &hint_evaluations, PARAMS_PASS);
+    }
+    march_result hit = march_camera_rays(eye, dir, inside, start, limits, PARAMS_PASS);
+    hit.steps += hint_evaluations;
 
     vec3 colour = background(dir);
     real depth = fgr_real(-1.0f);

@@ -81,6 +81,23 @@ inline real march_start_of(__global const float* starts, tile_pixels pixels,
 #endif
 }
 
+/* Where camera rays start given a reprojected hint (fgr/reprojection.hpp: the viewer's previous
+ * frame's depths seen from the new view, less a margin; 0 for none): at the hint, for the lanes
+ * whose hint lies past `start` and where the DE there is more than twice the hit footprint
+ * (outside the surface, and not where the march would stop at once), at `start` elsewhere. A
+ * hint is not proof that the way to it is clear, as the cone is: fgr/reprojection.hpp keeps
+ * hints away from holes and depth edges, where a surface the previous frame did not see may
+ * come into view, and the viewer uses them only for previews while the camera moves. Costs one
+ * DE evaluation per packet with a hint, counted in *evaluations. */
+inline real march_start_with_hint(real start, real hint, vec3 origin, vec3 dir, mask active,
+                                  march_limits limits, mask* evaluations, PARAMS) {
+    const mask hinted = active & (hint > start) & (hint < limits.max_distance);
+    if (!fgr_any(hinted)) return start;
+    const real dist = scene_de(v3_mad(origin, dir, hint), PARAMS_PASS);
+    fgr_count_if(*evaluations, hinted);
+    return select(start, hint, hinted & (dist > 2.0f * limits.footprint * hint));
+}
+
 /* The unit direction through the point (pixel_x, pixel_y) in [0, 1]^2 of pixel (px, py): a
  * stereo pair's eye follows the pixel, as in primary_direction. */
 inline vec3 prepass_direction(camera_frame camera, real px, real py, real pixel_x,

@@ -266,6 +266,8 @@ Frame Renderer::render(const FrameRequest& request) {
                                             request.height, region);
     const int group = work_group_size(device_);
     const cl::Buffer starts = prepass_->starts(request, camera, params, group);
+    int has_hints = 0;
+    const cl::Buffer hints = prepass_->hints(request, layout, &has_hints);
     cl::Kernel* resolve = mode_->resolve_kernel();
     for (cl::Kernel* kernel : {&render_kernel_, resolve}) {
         if (kernel == nullptr) continue;
@@ -275,6 +277,8 @@ Frame Renderer::render(const FrameRequest& request) {
         kernel->setArg(3, camera);
         kernel->setArg(5, params);
         kernel->setArg(kMarchStartsArgument, starts);
+        kernel->setArg(kMarchHintsArgument, hints);
+        kernel->setArg(kHasHintsArgument, has_hints);
     }
     mode_->bind(render_kernel_, request, layout);
     // Samples accumulate in the planes, one launch each, in order (in-order queue). Sample 0

@@ -69,6 +69,10 @@ struct FrameRequest {
     // kMaxImageSide; the whole image's at most kMaxTiledImageSide.
     PixelRegion region{};
     PrepassSettings prepass{};
+    // Per pixel of the region, row-major: how far each camera ray may start, reprojected from an
+    // earlier frame (fgr/reprojection.hpp; 0: no hint), taken where the prepass applies and the
+    // DE at the hinted point is clear of the surface. Empty: none.
+    std::vector<float> start_hints{};
 };
 
 // The primary rays' work, from sample 0 of a render built with KernelSwitches::stats.

@@ -1,5 +1,5 @@
 #pragma once
-// What a render mode's host module does for Renderer: the kernel's own arguments (after the seven
+// What a render mode's host module does for Renderer: the kernel's own arguments (after the nine
 // every mode takes, see FGR_RENDER_ARGS in kernels/fgr_camera.cl) and the planes it writes beyond
 // colour and depth. One implementation per mode, in this folder; mode_registry.cpp makes them.
 
@@ -14,10 +14,13 @@
 namespace fgr {
 
 // Index of a mode's first own argument of fgr_render (after FGR_RENDER_ARGS).
-constexpr int kFirstModeArgument = 7;
+constexpr int kFirstModeArgument = 9;
 
-// Index of fgr_render's `march_starts` (the cone prepass's distances, see FGR_RENDER_ARGS).
+// Indices of fgr_render's `march_starts` (the cone prepass's distances), `march_hints` and
+// `has_hints` (reprojected start hints), see FGR_RENDER_ARGS.
 constexpr int kMarchStartsArgument = 6;
+constexpr int kMarchHintsArgument = 7;
+constexpr int kHasHintsArgument = 8;
 
 // The planes every mode writes: r, g, b (summed over samples) and depth (sample 0).
 constexpr int kCommonPlanes = 4;

@@ -64,6 +64,26 @@ cl::Buffer ConePrepass::starts(const FrameRequest& request, const CameraFrame& c
     return buffer;
 }
 
+cl::Buffer ConePrepass::hints(const FrameRequest& request, const TileLayout& layout,
+                              int* has_hints) const {
+    const PixelRegion region = rendered_region(request);
+    const bool usable = available_ && request.prepass.enabled &&
+                        request.start_hints.size() == static_cast<size_t>(region.pixels());
+    *has_hints = usable ? 1 : 0;
+    if (!usable) {
+        return cl::Buffer(device_.context, CL_MEM_READ_ONLY, sizeof(float));
+    }
+    std::vector<float> plane(static_cast<size_t>(layout.plane_size()), 0.0f);
+    for (int y = 0; y < region.height; ++y) {
+        for (int x = 0; x < region.width; ++x) {
+            plane[static_cast<size_t>(layout.index(x, y))] =
+                request.start_hints[static_cast<size_t>(y) * region.width + x];
+        }
+    }
+    return cl::Buffer(device_.context, CL_MEM_READ_ONLY | CL_MEM_COPY_HOST_PTR,
+                      sizeof(float) * plane.size(), plane.data());
+}
+
 long ConePrepass::evaluations(const cl::Buffer& starts, const CameraFrame& camera) const {
     if (!ran_) return 0;
     const int blocks = block_count(camera);

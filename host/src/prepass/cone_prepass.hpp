@@ -33,6 +33,10 @@ public:
     cl::Buffer starts(const FrameRequest& request, const CameraFrame& camera,
                       const cl::Buffer& params, int group);
 
+    // The request's start hints laid out as the image's planes (`layout`), and whether there are
+    // any the kernel may take (has_hints); a one-float buffer when not.
+    cl::Buffer hints(const FrameRequest& request, const TileLayout& layout, int* has_hints) const;
+
     // DE evaluations of the last frame's cones, read back from its buffer (0 when none ran).
     long evaluations(const cl::Buffer& starts, const CameraFrame& camera) const;
 

@@ -305,7 +305,11 @@ void RenderWorker::render_preview(Renderer& renderer, const ViewState& state, fl
     const int height = scaled_size(state.height, scale);
     // Previews are short by design and never cancelled: while the view keeps changing, every
     // one of them would be.
-    Frame frame = renderer.render(frame_request(state, width, height));
+    FrameRequest request = frame_request(state, width, height);
+    request.start_hints = preview_start_hints(renderer, state, width, height);
+    Frame frame = renderer.render(request);
+    last_preview_ = LastPreview{state.scene, &renderer, state.params,
+                                DepthView{state.view, state.projection, width, height, frame.depth}};
     {
         std::lock_guard lock(mutex_);
         quality_.record_frame(int64_t{width} * height, frame.render_ms);
@@ -315,6 +319,17 @@ void RenderWorker::render_preview(Renderer& renderer, const ViewState& state, fl
     publish({std::move(frame.image), scale, 1, frame.render_ms,
              samples_per_second(width, height, frame.render_ms),
              renderer.switches().double_precision, state.generation});
+}
+
+std::vector<float> RenderWorker::preview_start_hints(const Renderer& renderer,
+                                                     const ViewState& state, int width,
+                                                     int height) const {
+    if (!last_preview_ || last_preview_->scene != state.scene ||
+        last_preview_->renderer != &renderer || last_preview_->params != state.params) {
+        return {};
+    }
+    return reproject_start_hints(last_preview_->depths, state.view, state.projection, width,
+                                 height);
 }
 
 void RenderWorker::refine(Renderer& renderer, const ViewState& state, int sample) {

@@ -28,6 +28,7 @@
 #include "fgr/program_cache.hpp"
 #include "fgr/render_mode.hpp"
 #include "fgr/renderer.hpp"
+#include "fgr/reprojection.hpp"
 #include "fgr/scene.hpp"
 #include "fgr/viewer/adaptive_quality.hpp"
 
@@ -168,6 +169,10 @@ private:
     void reload(const ReloadRequest& request);
     void render_pass(Renderer& renderer, const ViewState& state);
     void render_preview(Renderer& renderer, const ViewState& state, float scale);
+    // Start hints for a preview of `state` at width x height from the last preview's depths
+    // (empty when the renderer or the parameters changed since: the surface may have moved).
+    std::vector<float> preview_start_hints(const Renderer& renderer, const ViewState& state,
+                                           int width, int height) const;
     void refine(Renderer& renderer, const ViewState& state, int sample);
     void take_screenshot(const ScreenshotRequest& request);
     void probe_camera(Renderer& renderer, const ViewState& state);
@@ -192,6 +197,15 @@ private:
     int accumulated_samples_ = 0;
     int ifs_depth_reached_ = -1;  // of the last frame that reported it (sample 0 or a preview)
     std::vector<float> accumulation_;  // sum of linear RGB over the samples
+    // The last preview's depths and what they were rendered with: the next preview starts its
+    // rays from them, reprojected (fgr/reprojection.hpp), when only the camera moved.
+    struct LastPreview {
+        std::shared_ptr<const Scene> scene;  // held: no reloaded scene can take its address
+        const Renderer* renderer = nullptr;
+        std::vector<float> params;
+        DepthView depths;
+    };
+    std::optional<LastPreview> last_preview_;
     const Renderer* probed_renderer_ = nullptr;  // renderers live as long as the worker
     glm::dvec3 probed_position_{NAN};
     std::vector<float> probed_params_;
