@@ -24,6 +24,9 @@ namespace {
 constexpr double kSettleSeconds = 0.15;
 // The window thread's pace: input and the panel stay smooth without taking a core from rendering.
 constexpr double kUiFrameSeconds = 1.0 / 60.0;
+
+// The longest the window goes without being drawn (the status line's frame time and messages).
+constexpr double kMaxUndrawnSeconds = 0.1;
 constexpr float kLookRadiansPerPixel = 0.0035f;
 constexpr float kShiftSpeedUp = 4.0f;
 constexpr float kWheelSpeedStep = 1.25f;
@@ -207,7 +210,11 @@ int ViewerApp::run() {
         receive_frame();
         for (std::string& message : worker_->take_messages()) add_message(std::move(message));
         poll_sources();
-        draw_ui();
+        if (redraws_pending_ > 0 || seconds_since(last_draw_) >= kMaxUndrawnSeconds) {
+            draw_ui();
+            redraws_pending_ = std::max(redraws_pending_ - 1, 0);
+            last_draw_ = std::chrono::steady_clock::now();
+        }
         if (options_.exit_after_seconds && seconds_since(start_) >= *options_.exit_after_seconds) {
             quit_ = true;
         }
@@ -232,6 +239,7 @@ void ViewerApp::pump_events() {
     while (SDL_PollEvent(&event)) {
         ImGui_ImplSDL2_ProcessEvent(&event);
         handle_event(event);
+        redraws_pending_ = 2;  // ImGui settles a change over two frames
     }
 }
 
@@ -480,6 +488,7 @@ void ViewerApp::receive_frame() {
     std::optional<DisplayFrame> frame = worker_->take_frame();
     if (!frame) return;
     texture_->upload(frame->image);
+    redraws_pending_ = std::max(redraws_pending_, 1);
     render_stats_.add(frame->render_ms);
     if (frame->scale < 1.0f) {
         ++preview_frames_;
@@ -515,6 +524,7 @@ bool ViewerApp::view_idle() const {
 void ViewerApp::add_message(std::string message) {
     messages_.push_back(std::move(message));
     while (messages_.size() > kMessagesKept) messages_.pop_front();
+    redraws_pending_ = std::max(redraws_pending_, 1);
 }
 
 void ViewerApp::switch_scene(int index) {

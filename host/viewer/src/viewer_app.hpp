@@ -287,6 +287,13 @@ private:
     FrameStats render_stats_;
     FrameStats ui_stats_;
     int frames_shown_ = 0;
+    // The window is drawn again only when something may have changed it (an input event, a new
+    // frame: redraws_pending_ counts the draws still owed, ImGui settling over two) and at least
+    // every kMaxUndrawnSeconds for the status line: redrawing an unchanged window 60 times a
+    // second costs a software rasteriser (Xvfb, a laptop without a GPU driver) the CPU time the
+    // render thread needs.
+    int redraws_pending_ = 2;
+    std::chrono::steady_clock::time_point last_draw_{};
     int preview_frames_ = 0;  // shown at reduced resolution
     double preview_scale_sum_ = 0.0;
 };
