@@ -208,17 +208,6 @@ inline light_sample sample_light(vec3 p, real u_pick, real u1, real u2,
     return s;
 }
 
-/* The largest value among the lanes (FGR_STATS only: a packet's DE calls are its longest lane's). */
-inline int lanes_max(mask values) {
-#if FGR_WIDTH == 1
-    return (int)values;
-#else
-    int largest = 0;
-    for (int i = 0; i < FGR_WIDTH; ++i) largest = max(largest, (int)values[i]);
-    return largest;
-#endif
-}
-
 __kernel void fgr_render(FGR_RENDER_ARGS, __constant const float* lights, path_settings settings,
                          ENVIRONMENT) {
     const int tile = get_global_id(0);
@@ -283,7 +272,7 @@ __kernel void fgr_render(FGR_RENDER_ARGS, __constant const float* lights, path_s
                                                fgr_real(limits.max_distance), limits, PARAMS_PASS);
 #ifdef FGR_STATS
         lane_steps += hit.steps + (bounce == 0 ? hint_evaluations : (mask)(0));
-        packet_steps += lanes_max(hit.steps);
+        packet_steps += fgr_lanes_max(hit.steps);
 #endif
         const mask escaped = active & !hit.hit;
         if (fgr_any(escaped)) {
@@ -344,7 +333,7 @@ __kernel void fgr_render(FGR_RENDER_ARGS, __constant const float* lights, path_s
                     leave, light.dir, lit, path_length, light.reach, limits, 1, PARAMS_PASS);
 #ifdef FGR_STATS
                 lane_steps += shadow.steps;
-                packet_steps += lanes_max(shadow.steps);
+                packet_steps += fgr_lanes_max(shadow.steps);
 #endif
                 lit &= !shadow.hit;
                 const mask delta_light = light.pdf <= 0.0f;

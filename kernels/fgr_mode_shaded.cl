@@ -70,7 +70,8 @@ __kernel void fgr_render(FGR_RENDER_ARGS, __constant const float* lights, int li
 
     vec3 colour = background(dir);
     real depth = fgr_real(-1.0f);
-    mask secondary_steps = (mask)(0); /* shadow, reflection and refraction rays' DE evaluations */
+    /* Shadow, reflection and refraction rays' DE evaluations: per lane, per packet. */
+    mask secondary_steps[2] = {(mask)(0), (mask)(0)};
 #ifdef FGR_AOVS
     vec3 first_albedo = v3_splat(0.0f, 0.0f, 0.0f), first_normal = first_albedo;
 #endif
@@ -85,14 +86,14 @@ __kernel void fgr_render(FGR_RENDER_ARGS, __constant const float* lights, int li
 #endif
         vec3 lit = shade_surface(p, n, hit_albedo, dir, eps, hit.steps,
                                  hit.t, hit.hit, 1, limits, lights, light_count,
-                                 &secondary_steps, PARAMS_PASS);
+                                 secondary_steps, PARAMS_PASS);
 #ifdef FGR_EFFECT_REFRACTION
         lit = add_refraction(lit, p, n, dir, eps, hit.t, hit.hit, limits, lights, light_count,
-                             &secondary_steps, PARAMS_PASS);
+                             secondary_steps, PARAMS_PASS);
 #endif
 #ifdef FGR_EFFECT_REFLECTIONS
         lit = add_reflection(lit, p, n, dir, eps, hit.t, hit.hit, limits, lights, light_count,
-                             &secondary_steps, PARAMS_PASS);
+                             secondary_steps, PARAMS_PASS);
 #endif
         colour = v3_select(colour, lit, hit.hit);
         depth = select(depth, hit.t, hit.hit);
@@ -128,14 +129,14 @@ __kernel void fgr_render(FGR_RENDER_ARGS, __constant const float* lights, int li
         fgr_store(convert_real(hit.heap_peak), tile, planes + 7 * plane_size);
 #else
         const int step_cap = limits.max_steps;
-        fgr_store(fgr_real(0.0f), tile, planes + 7 * plane_size);
+        fgr_store(convert_real(secondary_steps[1]), tile, planes + 7 * plane_size);
 #endif
         mask exhausted = inside & !hit.hit & (hit.steps >= step_cap) &
                          (hit.t <= limits.max_distance);
         fgr_store(convert_real(hit.steps), tile, planes + 4 * plane_size);
         fgr_store(select(fgr_real(0.0f), fgr_real(1.0f), exhausted), tile,
                   planes + 5 * plane_size);
-        fgr_store(convert_real(secondary_steps), tile, planes + 6 * plane_size);
+        fgr_store(convert_real(secondary_steps[0]), tile, planes + 6 * plane_size);
     }
 #endif
 }

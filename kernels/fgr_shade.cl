@@ -42,9 +42,24 @@ inline vec3 light_direction(__constant const float* light, vec3 p, float max_dis
     return v; /* the host normalised directional vectors */
 }
 
-/* Secondary rays (shadow, reflection, refraction) add the DE evaluations each lane took part in
- * to a per-lane counter, which `fgr render --stats` reports (plane 6 of the shaded mode). */
-#define fgr_count_work(counter, steps) (*(counter) += (steps))
+/* The largest value among the lanes. */
+inline int fgr_lanes_max(mask values) {
+#if FGR_WIDTH == 1
+    return (int)values;
+#else
+    int largest = 0;
+    for (int i = 0; i < FGR_WIDTH; ++i) largest = max(largest, (int)values[i]);
+    return largest;
+#endif
+}
+
+/* Secondary rays (shadow, reflection, refraction) count their work in counter[0], the DE
+ * evaluations each lane took part in, and counter[1], the packet's DE evaluations (every lane
+ * holds the count: one march's is its longest lane's), which `fgr render --stats` reports
+ * (planes 6 and 7 of the shaded mode) as their lane utilisation. Without stats the counts are
+ * never stored and the compiler drops them. */
+#define fgr_count_work(counter, steps) \
+    ((counter)[0] += (steps), (counter)[1] += (mask)(fgr_lanes_max(steps)))
 
 #ifdef FGR_EFFECT_SAMPLED_OCCLUSION
 /* Ambient occlusion from five DE probes along the normal at distances h = r/5 .. r (r is the
@@ -97,7 +112,8 @@ inline real light_visibility(vec3 p, vec3 to_light, mask lit, real travelled, re
     for (int step = 0; step < limits.max_steps; ++step) {
         if (!fgr_any(active)) break;
         real dist = scene_de(v3_mad(p, to_light, t), PARAMS_PASS);
-        fgr_count_if(*work, active);
+        fgr_count_if(work[0], active);
+        work[1] += (mask)(1);
         mask blocked = active & (dist < (t + travelled) * limits.footprint);
         /* Closest approach between this sample and the previous one (the two DE spheres'
          * intersection), not just at the samples: without it, long steps leave bands. */
@@ -116,8 +132,15 @@ inline real light_visibility(vec3 p, vec3 to_light, mask lit, real travelled, re
         active &= !blocked & (visibility > 0.002f);
         /* Capped steps sample the penumbra of thin occluders the shadow ray passes. The cap is a
          * quarter of the distance covered plus 2% of the primary ray's length: lengths of the
-         * view, so the penumbra looks the same at any scale. */
-        t = select(t, t + fmin(dist * limits.step_factor, 0.25f * t + 0.02f * travelled), active);
+         * view, so the penumbra looks the same at any scale. A step needs no cap where nothing
+         * along it can dim the light further: over a step s <= step_factor * dist the DE stays
+         * above dist - s, so the penumbra k (dist - s) / (t + s) stays at or above the
+         * visibility so far when k (1 - step_factor) dist >= visibility (t + step_factor dist).
+         * A shadow ray leaving the scene then strides out instead of growing a quarter a step. */
+        const real stride = dist * limits.step_factor;
+        const mask clear = param_shadow_sharpness * (dist - stride) >= visibility * (t + stride);
+        t = select(t, t + select(fmin(stride, 0.25f * t + 0.02f * travelled), stride, clear),
+                   active);
         active &= t <= reach;
     }
     visibility = clamp(visibility, 0.0f, 1.0f);

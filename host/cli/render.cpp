@@ -272,6 +272,12 @@ void report_and_write(const Scene& scene, const FrameRequest& request, const Ren
                            (double(stats.packet_steps) * stats.packet_width),
                        stats.lane_steps, stats.packet_steps, stats.packet_width);
         }
+        if (stats.secondary_packet_steps > 0) {
+            fmt::print("secondary_lane_utilisation {:.1f}% ({} lane steps in {} packet steps)\n",
+                       100.0 * double(stats.secondary_de_evaluations) /
+                           (double(stats.secondary_packet_steps) * stats.packet_width),
+                       stats.secondary_de_evaluations, stats.secondary_packet_steps);
+        }
         fmt::print("out_of_steps {:.3f}% ({} of {} pixels)\n", stats.out_of_steps_percent(),
                    stats.out_of_steps, stats.pixels);
         fmt::print("secondary_de_evaluations {} ({:.2f} per pixel: shadow, reflection and "

@@ -89,6 +89,9 @@ struct MarchStats {
     long lane_steps = 0;
     long packet_steps = 0;
     int packet_width = 1;
+    // The same for the secondary rays (shadow, reflection, refraction) of DE scenes: their lane
+    // steps are secondary_de_evaluations.
+    long secondary_packet_steps = 0;
     long out_of_steps = 0;    // rays that used max_steps without hitting or leaving the scene
     // Shaded mode: DE evaluations of shadow, reflection and refraction rays, summed over the
     // lanes that took part, and the part of them spent for pixels whose camera ray missed

@@ -13,10 +13,11 @@ namespace {
 constexpr int kStatsPlanes = 4;
 constexpr int kAovPlanes = 10;  // albedo (3), normal (3), coverage, foreground (3)
 
-// Sums the stats planes (4: steps, 5: ran out of steps, 6: secondary rays' DE evaluations) over
-// the image's pixels; depth (plane 3) says which pixels hit and so had their normal estimated.
+// Sums the stats planes (4: steps, 5: ran out of steps, 6: secondary rays' DE evaluations per
+// lane, 7: IFS scenes' heap peak, or DE scenes' secondary DE evaluations per packet) over the
+// image's pixels; depth (plane 3) says which pixels hit and so had their normal estimated.
 MarchStats march_stats(const std::vector<float>& planes, const TileLayout& layout, int width,
-                       int height) {
+                       int height, bool ifs) {
     const size_t plane = static_cast<size_t>(layout.plane_size());
     MarchStats stats;
     long steps = 0;
@@ -32,9 +33,11 @@ MarchStats march_stats(const std::vector<float>& planes, const TileLayout& layou
             const long secondary = static_cast<long>(planes[6 * plane + i]);
             stats.secondary_de_evaluations += secondary;
             if (!hit) stats.secondary_de_evaluations_missed += secondary;
-            const int heap = static_cast<int>(planes[7 * plane + i]);  // -1: overflowed
-            stats.heap_peak = std::max(stats.heap_peak, heap);
-            stats.heap_overflows += heap < 0;
+            if (ifs) {
+                const int heap = static_cast<int>(planes[7 * plane + i]);  // -1: overflowed
+                stats.heap_peak = std::max(stats.heap_peak, heap);
+                stats.heap_overflows += heap < 0;
+            }
             ++stats.pixels;
         }
     }
@@ -47,6 +50,11 @@ MarchStats march_stats(const std::vector<float>& planes, const TileLayout& layou
             longest = std::max(longest, planes[4 * plane + tile * layout.packet_width + lane]);
         }
         stats.packet_steps += static_cast<long>(longest);
+        // DE scenes: plane 7 holds the packet's secondary DE evaluations in every lane.
+        if (!ifs) {
+            stats.secondary_packet_steps +=
+                static_cast<long>(planes[7 * plane + tile * layout.packet_width]);
+        }
     }
     stats.lane_steps = steps;
     stats.packet_width = layout.packet_width;
@@ -108,7 +116,7 @@ void ShadedMode::read_back(const std::vector<float>& planes, const TileLayout& l
     }
     // Stats and levels come from sample 0 (a request starting later has none).
     if (request.first_sample > 0) return;
-    if (stats_) frame.stats = march_stats(planes, layout, width, height);
+    if (stats_) frame.stats = march_stats(planes, layout, width, height, ifs_);
     if (ifs_) frame.ifs_levels = hit_levels(planes, layout, level_plane, width, height);
 }
 
