@@ -334,8 +334,8 @@ inline vec3 brute_lighting(vec3 eye, vec3 dir, real depth, vec3 p, vec3 n, vec3 
         const vec3 l = light_direction(light, p, param_max_distance, &falloff, &reach);
         const real diffuse = fmax(v3_dot(n, l), 0.0f);
         const vec3 half_vector = v3_normalize(v3_add(l, to_eye));
-        const real specular = FGR_SPECULAR * fgr_pow(fmax(v3_dot(n, half_vector), 0.0f),
-                                                     fgr_real(FGR_SHININESS));
+        const real specular = FGR_SPECULAR * fgr_pown(fmax(v3_dot(n, half_vector), 0.0f),
+                                                      FGR_SHININESS);
         real strength = light[7] * falloff * select(fgr_real(0.0f), fgr_real(1.0f), diffuse > 0.0f);
 #if defined(FGR_EFFECT_SHADOWS) || defined(FGR_EFFECT_SOFT_SHADOWS)
         strength *= brute_visibility(eye, dir, depth, l, reach, hit & (diffuse > 0.0f), target, px,

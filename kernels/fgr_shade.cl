@@ -6,7 +6,7 @@
 #define FGR_LIGHT_POINT 1
 #define FGR_AMBIENT 0.06f
 #define FGR_SPECULAR 0.35f
-#define FGR_SHININESS 32.0f
+#define FGR_SHININESS 32 /* an integer: fgr_pown, five multiplications */
 
 #ifndef FGR_SCENE_HAS_COLOUR
 /* Default albedo for scenes that do not colour themselves: a neutral warm grey. */
@@ -197,8 +197,8 @@ inline vec3 shade_surface(vec3 p, vec3 n, vec3 albedo, vec3 view_dir, real eps, 
         vec3 l = light_direction(light, p, limits.max_distance, &falloff, &reach);
         real diffuse = fmax(v3_dot(n, l), 0.0f);
         vec3 half_vector = v3_normalize(v3_add(l, to_eye));
-        real specular = FGR_SPECULAR * fgr_pow(fmax(v3_dot(n, half_vector), 0.0f),
-                                                 fgr_real(FGR_SHININESS));
+        real specular = FGR_SPECULAR * fgr_pown(fmax(v3_dot(n, half_vector), 0.0f),
+                                                  FGR_SHININESS);
         real strength = light[7] * falloff * select(fgr_real(0.0f), fgr_real(1.0f), diffuse > 0.0f);
 #if defined(FGR_EFFECT_SHADOWS) || defined(FGR_EFFECT_SOFT_SHADOWS)
         if (with_shadows) {

@@ -71,6 +71,7 @@ typedef FGR_LANE_TYPE(FGR_LANES(int, long)) mask;
 typedef FGR_LANE_TYPE(FGR_LANES(uint, ulong)) ulanes;
 #define convert_ulanes FGR_LANE_TYPE(FGR_LANES(convert_uint, convert_ulong))
 #define convert_real FGR_LANE_TYPE(FGR_LANES(convert_float, convert_double))
+#define convert_mask FGR_LANE_TYPE(FGR_LANES(convert_int, convert_long))
 #define convert_float_lanes FGR_LANE_TYPE(convert_float)
 
 /* What the precision in use can resolve near coordinates of order 1 (a few ulps there): the
