@@ -50,8 +50,8 @@ inline real fgr_cos(real x) {
  * nearest even multiple j of pi/4, subtracted in three parts of pi/4 (Cody and Waite) so the
  * remainder keeps its precision, then the minimax polynomial for sin or cos on [-pi/4, pi/4]
  * that octant j asks for; within 2 ulps of libm for |x| < 8192 (the math self-test holds every
- * width to 4). Beyond that the reduction loses bits (about |x| * 6e-8 absolute), past 1e9 and at
- * Inf or NaN the result is NaN. PoCL's float16 built-ins are right, but a call to one anywhere
+ * width to 4). Beyond that the reduction loses bits (about |x| * 6e-8 absolute); see the end
+ * for |x| past 1e9, Inf and NaN. PoCL's float16 built-ins are right, but a call to one anywhere
  * in a DE, even on a branch never taken, made the benchmark scene's frames 25% slower. */
 inline real fgr_sin_cos_float(real x, int want_cos) {
     const real ax = fabs(x);
@@ -70,7 +70,10 @@ inline real fgr_sin_cos_float(real x, int want_cos) {
     const real value = select(sin_r, cos_r, (turn == 2) | (turn == 6));
     real of_ax = select(value, -value, turn >= 4);
     if (!want_cos) of_ax = select(of_ax, -of_ax, signbit(x)); /* odd; sin(-0) is -0 */
-    return select(of_ax, fgr_real(NAN), !(ax < 1e9f));
+    /* Past 1e9 float's spacing exceeds 64 and an angle means nothing: a finite answer (sin 0,
+     * cos 1) keeps DEs finite at the stability checks' far points. Inf and NaN give NaN. */
+    const real far_value = fgr_real(want_cos ? 1.0f : 0.0f);
+    return select(select(of_ax, far_value, !(ax < 1e9f)), fgr_real(NAN), isinf(x) | isnan(x));
 }
 inline real fgr_sin(real x) { return fgr_sin_cos_float(x, 0); }
 inline real fgr_cos(real x) { return fgr_sin_cos_float(x, 1); }

@@ -390,7 +390,10 @@ TEST_F(PathTracer, ASmallSunConvergesWithLightSamplingAndMis) {
     PathSettings bsdf_only = base;
     bsdf_only.light_sampling = false;
     bsdf_only.seed = 3;
-    const Estimate without_nee = estimate(render(kSphere, bsdf_only, 64));
+    // BSDF samples find the small sun rarely and then bring a large value: at 64 samples the
+    // pixels' means are so skewed that their standard error understates the error (one
+    // realisation landed 3.4 standard errors low). 256 samples tame the skew.
+    const Estimate without_nee = estimate(render(kSphere, bsdf_only, 256));
     expect_within(without_nee, with_all.mean, with_all.standard_error, "BSDF sampling alone");
     const double noise_with_all = noise_variance(kSphere, base, 16);
     const double noise_without_nee = noise_variance(kSphere, bsdf_only, 16);

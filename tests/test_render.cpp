@@ -281,9 +281,14 @@ TEST_F(RenderTest, MarchStatsCountStepsAndRaysThatRanOutOfSteps) {
     EXPECT_GT(stats.mean_steps, 2.0);
     EXPECT_LE(stats.max_steps, int(param_value(*mandelbulb_, request.params, "max_steps")));
     EXPECT_NEAR(double(stats.de_evaluations),
-                stats.mean_steps * double(stats.pixels) + 4.0 * double(counted.hits), 0.5);
+                stats.mean_steps * double(stats.pixels) + 4.0 * double(counted.hits) +
+                    double(stats.prepass_de_evaluations),
+                0.5);
+    EXPECT_GT(stats.prepass_de_evaluations, 0);
     EXPECT_EQ(stats.out_of_steps, 0) << "the default view resolves every ray";
 
+    // From the eye (without the cone prepass, which would carry rays most of the way there).
+    request.prepass.enabled = false;
     set_param_from_text(*mandelbulb_, request.params, "max_steps=12");
     const Frame starved = counting.render(request);
     ASSERT_TRUE(starved.stats.has_value());
