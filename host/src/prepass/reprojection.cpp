@@ -36,6 +36,11 @@ std::vector<float> splat_previous_hits(const DepthView& previous, const CameraMo
             const double u = glm::dot(local, glm::dvec3(basis.right)) / ahead / tan_x;
             const double v = glm::dot(local, glm::dvec3(basis.up)) / ahead / tan_y;
             const double px = (u + 1.0) * 0.5 * width, py = (1.0 - v) * 0.5 * height;
+            // Off the new image (and far off it: no int conversion of a huge coordinate).
+            if (!(px > -cover - 1.0 && px < width + cover + 1.0 && py > -cover - 1.0 &&
+                  py < height + cover + 1.0)) {
+                continue;
+            }
             const auto distance = static_cast<float>(glm::length(local));
             const int x0 = static_cast<int>(std::floor(px - 0.5 * cover));
             const int y0 = static_cast<int>(std::floor(py - 0.5 * cover));
