@@ -100,10 +100,10 @@ protected:
 
     // The scene's default view and mode rendered without and with the prepass.
     Pair render_pair(const Scene& scene, FrameRequest request, float cone_scale = 1.0f,
-                     RenderMode mode = RenderMode::Shaded) {
+                     RenderMode mode = RenderMode::Shaded, int packet_width = 16) {
         // With layers: the normals compare() needs.
         Renderer renderer(*device_, *cache_, scene,
-                          KernelSwitches{16, scene.effects, false, false, mode, true});
+                          KernelSwitches{packet_width, scene.effects, false, false, mode, true});
         Pair pair;
         request.prepass.enabled = false;
         pair.plain = renderer.render(request);
@@ -166,6 +166,21 @@ TEST_F(PrepassViews, EveryProjectionAgrees) {
         EXPECT_LE(agreement.hit_mismatch_fraction(), kMaxHitDisagreement);
         EXPECT_LE(agreement.depth_outlier_fraction(), kMaxDepthDisagreement);
         EXPECT_GT(agreement.both_hit, agreement.pixels / 50);
+    }
+}
+
+// Every packet width runs the prepass (one cone per lane; width 1 is the layout GPUs get, run
+// here so it cannot rot) and starts its rays from it alike.
+TEST_F(PrepassViews, EveryPacketWidthAgrees) {
+    const Scene& scene = scene_named("mandelbulb");
+    for (int width : {1, 4, 8}) {
+        const FrameRequest request = default_request(scene);
+        const Pair pair = render_pair(scene, request, 1.0f, RenderMode::Shaded, width);
+        const Agreement agreement = compare(pair.plain, pair.started, request, pair.footprint);
+        SCOPED_TRACE(fmt::format("{} rays per work-item: {}", width, agreement.describe()));
+        EXPECT_LE(agreement.hit_mismatch_fraction(), kMaxHitDisagreement);
+        EXPECT_LE(agreement.depth_outlier_fraction(), kMaxDepthDisagreement);
+        EXPECT_GT(agreement.both_hit, agreement.pixels / 20);
     }
 }
 
