@@ -128,6 +128,13 @@ protected:
         return request;
     }
 
+    // The hit footprint per unit distance: the scene's hit_threshold times the pixel angle.
+    static float footprint_of(const Scene& scene, const FrameRequest& request) {
+        return param_value(scene, request.params, "hit_threshold") *
+               pixel_angle(camera_model(request.view, request.projection), request.width,
+                           request.height);
+    }
+
     struct Counts {
         long pixels = 0, hit_mismatches = 0, both_hit = 0, depth_outliers = 0;
     };
@@ -167,10 +174,7 @@ TEST_F(ReprojectionRender, HintedPreviewsFindWhatThePlainMarchFinds) {
                       previous.depth},
             request.view, request.projection, request.width, request.height);
         const Frame hinted = renderer.render(request);
-        const float footprint =
-            param_value(scene, request.params, "hit_threshold") *
-            pixel_angle(camera_model(request.view, request.projection), request.width,
-                        request.height);
+        const float footprint = footprint_of(scene, request);
         const Counts counts = compare(plain, hinted, footprint);
         SCOPED_TRACE(fmt::format("t = {}: {} of {} hit in one only, {} of {} depths apart",
                                  time, counts.hit_mismatches, counts.pixels,
@@ -199,10 +203,7 @@ TEST_F(ReprojectionRender, HintsFromTheWrongViewAreCaught) {
     request.start_hints = previous.depth;
     for (float& hint : request.start_hints) hint = std::max(hint, 0.0f);
     const Frame hinted = renderer.render(request);
-    const float footprint =
-        param_value(scene, request.params, "hit_threshold") *
-        pixel_angle(camera_model(request.view, request.projection), request.width,
-                    request.height);
+    const float footprint = footprint_of(scene, request);
     const Counts counts = compare(plain, hinted, footprint);
     EXPECT_TRUE(counts.hit_mismatches > counts.pixels / 500 ||
                 counts.depth_outliers > counts.both_hit / 100)
@@ -223,10 +224,7 @@ TEST_F(ReprojectionRender, HintsInsideTheSurfaceAreRefused) {
     request.start_hints = plain.depth;
     for (float& hint : request.start_hints) hint = hint > 0.0f ? hint * 1.03f : 0.0f;
     const Frame hinted = renderer.render(request);
-    const float footprint =
-        param_value(scene, request.params, "hit_threshold") *
-        pixel_angle(camera_model(request.view, request.projection), request.width,
-                    request.height);
+    const float footprint = footprint_of(scene, request);
     const Counts counts = compare(plain, hinted, footprint);
     EXPECT_LE(counts.hit_mismatches, counts.pixels / 1000);
     EXPECT_LE(counts.depth_outliers, counts.both_hit / 50)
