@@ -130,6 +130,7 @@ void write_rows(png_structp png, png_infop info, const PngPixels& image) {
                  static_cast<png_uint_32>(image.height), image.bit_depth,
                  image.channels == 4 ? PNG_COLOR_TYPE_RGB_ALPHA : PNG_COLOR_TYPE_RGB,
                  PNG_INTERLACE_NONE, PNG_COMPRESSION_TYPE_DEFAULT, PNG_FILTER_TYPE_DEFAULT);
+    use_png_compression(png);
     if (image.linear) {
         png_set_gAMA(png, info, 1.0);
     } else {

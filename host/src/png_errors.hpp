@@ -1,6 +1,6 @@
 #pragma once
 // libpng's error and warning handlers as fgr's PNG readers and writers use them (image_io.cpp,
-// tiled/streaming_image.cpp).
+// tiled/streaming_image.cpp), and the compression both writers use.
 
 #include <png.h>
 
@@ -22,5 +22,10 @@ struct PngErrorSink {
 
 // Warnings concern recoverable oddities (e.g. unknown chunks); a library must not print them.
 inline void ignore_png_warning(png_structp, png_const_charp) {}
+
+// zlib level 3 instead of libpng's 6: fgr's canonical 640x480 Mandelbulb render compresses in
+// 12.5 ms instead of 20 (zlib alone, on its filtered rows) for a file 2.4% larger, which a whole
+// `fgr render` of that size (about 160 ms) notices and a gigapixel still's writer more so.
+inline void use_png_compression(png_structp png) { png_set_compression_level(png, 3); }
 
 }  // namespace fgr

@@ -106,6 +106,7 @@ private:
                      static_cast<png_uint_32>(height), linear ? 16 : 8,
                      alpha ? PNG_COLOR_TYPE_RGB_ALPHA : PNG_COLOR_TYPE_RGB, PNG_INTERLACE_NONE,
                      PNG_COMPRESSION_TYPE_DEFAULT, PNG_FILTER_TYPE_DEFAULT);
+        use_png_compression(h_.png);
         if (linear) {
             png_set_gAMA(h_.png, h_.info, 1.0);
         } else {
