@@ -8,6 +8,7 @@
 // cannot open its device ends the job at once with one message naming it, nothing written.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <filesystem>
 #include <map>
@@ -17,6 +18,7 @@
 #include <vector>
 
 #include "child_process.hpp"
+#include "video_decoding.hpp"
 #include "fgr/distributed/frame_wire.hpp"
 #include "fgr/distributed/task_farm.hpp"
 #include "fgr/hdr_io.hpp"
@@ -259,8 +261,23 @@ TEST_F(MpiTest, AVideoOverThreeRanksHasEveryFrameOnceInOrder) {
             << entry.path().filename();
     }
     EXPECT_EQ(files, 8);
-    // x264 is deterministic: the same frames in the same order give the same file.
-    EXPECT_EQ(test::read_file(dir() / "three.mp4"), test::read_file(dir() / "one.mp4"));
+    // The videos hold those frames in that order. Not byte for byte: x264 here encodes the same
+    // YUV frames into different packets from run to run, one thread or many (measured), so each
+    // decoded frame of the shared video is compared with the one-process video's: the same
+    // picture up to coding noise (35-40 dB apart here, where the next frame is 11-17 dB away).
+    const test::DecodedVideo one = test::decode_video(dir() / "one.mp4");
+    const test::DecodedVideo three = test::decode_video(dir() / "three.mp4");
+    ASSERT_EQ(one.frames.size(), 8u);
+    ASSERT_EQ(three.frames.size(), one.frames.size());
+    for (size_t i = 0; i < one.frames.size(); ++i) {
+        double squared = 0.0;
+        const std::vector<uint8_t>& a = one.frames[i].rgb;
+        const std::vector<uint8_t>& b = three.frames[i].rgb;
+        ASSERT_EQ(a.size(), b.size());
+        for (size_t k = 0; k < a.size(); ++k) squared += (double(a[k]) - b[k]) * (double(a[k]) - b[k]);
+        const double psnr = 10.0 * std::log10(255.0 * 255.0 * double(a.size()) / std::max(squared, 1e-9));
+        EXPECT_GT(psnr, 25.0) << "frame " << i;
+    }
 }
 
 TEST_F(MpiTest, ARankThatFailsEndsTheJobWithOneMessageNamingIt) {

@@ -1,9 +1,8 @@
 #include "fgr/video_encoder.hpp"
 
 #include <array>
-#include <cctype>
 #include <cstdarg>
-#include <cstring>
+#include <cctype>
 #include <stdexcept>
 #include <system_error>
 
@@ -234,11 +233,6 @@ VideoEncoder::VideoEncoder(const std::filesystem::path& output, VideoSettings se
     state.frame->width = settings.width;
     state.frame->height = settings.height;
     check_av(av_frame_get_buffer(state.frame, 0), "allocating a video frame");
-    // Zeroed, padding included: the encoder may read past the picture's edge into the rows'
-    // alignment padding, and garbage there made the same frames encode differently per run.
-    for (int plane = 0; plane < AV_NUM_DATA_POINTERS && state.frame->buf[plane]; ++plane) {
-        std::memset(state.frame->buf[plane]->data, 0, state.frame->buf[plane]->size);
-    }
     state.scaler = sws_getContext(
         settings.width, settings.height, AV_PIX_FMT_RGB24, settings.width, settings.height, pixels,
         SWS_BICUBIC | SWS_ACCURATE_RND | SWS_FULL_CHR_H_INT, nullptr, nullptr, nullptr);
