@@ -258,12 +258,10 @@ __kernel void fgr_render(FGR_RENDER_ARGS, __constant const float* lights, path_s
     int packet_steps = 0;
 #endif
 
-    real camera_start = march_start_of(march_starts, pixels, camera);
     mask hint_evaluations = (mask)(0); /* counted with the stats */
-    if (has_hints) {
-        camera_start = march_start_with_hint(camera_start, fgr_load(tile, march_hints), origin,
-                                             dir, active, limits, &hint_evaluations, PARAMS_PASS);
-    }
+    const real camera_start =
+        camera_ray_start(march_starts, march_hints, has_hints, tile, pixels, camera, origin, dir,
+                         active, limits, &hint_evaluations, PARAMS_PASS);
     for (int bounce = 0; fgr_any(active); ++bounce) {
         const march_result hit =
             bounce == 0 ? march_camera_rays(origin, dir, active, camera_start, limits,

@@ -59,12 +59,9 @@ __kernel void fgr_render(FGR_RENDER_ARGS, __constant const float* lights, int li
     const vec3 eye = ray.origin, dir = ray.dir;
 
     const march_limits limits = scene_march_limits(camera.pixel_angle, PARAMS_PASS);
-    real start = march_start_of(march_starts, pixels, camera);
     mask hint_evaluations = (mask)(0);
-    if (has_hints) {
-        start = march_start_with_hint(start, fgr_load(tile, march_hints), eye, dir, inside, limits,
-                                      &hint_evaluations, PARAMS_PASS);
-    }
+    const real start = camera_ray_start(march_starts, march_hints, has_hints, tile, pixels, camera,
+                                        eye, dir, inside, limits, &hint_evaluations, PARAMS_PASS);
     march_result hit = march_camera_rays(eye, dir, inside, start, limits, PARAMS_PASS);
     hit.steps += hint_evaluations;
 

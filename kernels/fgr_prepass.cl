@@ -98,6 +98,19 @@ inline real march_start_with_hint(real start, real hint, vec3 origin, vec3 dir, 
     return select(start, hint, hinted & (dist > 2.0f * limits.footprint * hint));
 }
 
+/* Where the camera rays of tile `tile` start: their block's prepass distance, moved on by the
+ * reprojected hints where the render has them (has_hints). The hint's DE evaluation is added to
+ * *evaluations. Every DE mode's entry point starts its camera rays here. */
+inline real camera_ray_start(__global const float* march_starts,
+                             __global const float* march_hints, int has_hints, int tile,
+                             tile_pixels pixels, camera_frame camera, vec3 origin, vec3 dir,
+                             mask active, march_limits limits, mask* evaluations, PARAMS) {
+    const real start = march_start_of(march_starts, pixels, camera);
+    if (!has_hints) return start;
+    return march_start_with_hint(start, fgr_load(tile, march_hints), origin, dir, active, limits,
+                                 evaluations, PARAMS_PASS);
+}
+
 /* The unit direction through the point (pixel_x, pixel_y) in [0, 1]^2 of pixel (px, py): a
  * stereo pair's eye follows the pixel, as in primary_direction. */
 inline vec3 prepass_direction(camera_frame camera, real px, real py, real pixel_x,

@@ -35,8 +35,9 @@ struct PixelRegion {
 
 // The cone-marched depth prepass (kernels/fgr_prepass.cl): camera rays start where a cone
 // marched for their 8x8 block of pixels came near the surface instead of at the eye. On by
-// default wherever it applies (see ConePrepass::applies); `cone_scale` below 1 narrows the cones
-// below what their blocks need, which is unsafe and only there for tests to show they catch it.
+// default wherever it applies (prepass_applies in host/src/prepass/cone_prepass.hpp);
+// `cone_scale` below 1 narrows the cones below what their blocks need, which is unsafe and only
+// there for tests to show they catch it.
 struct PrepassSettings {
     bool enabled = true;
     float cone_scale = 1.0f;
