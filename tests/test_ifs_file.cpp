@@ -493,13 +493,23 @@ TEST(IfsFile, ReadingNamesTheFile) {
     } catch (const IfsError& error) {
         EXPECT_EQ(std::string(error.what()).rfind(missing.string() + ": ", 0), 0u) << error.what();
     }
+    // One byte over the limit is refused for its size; a file of exactly the limit is read (and
+    // refused only for not being JSON). The file is read in chunks, so both sit on chunk edges.
     const fs::path big = dir.path() / "big.ifs.json";
-    write_text(big, std::string(kIfsMaxFileBytes + 10, ' '));
+    write_text(big, std::string(kIfsMaxFileBytes + 1, ' '));
     try {
         (void)read_ifs_file(big);
         FAIL() << "read an oversized file";
     } catch (const IfsError& error) {
         EXPECT_NE(std::string(error.what()).find("larger than"), std::string::npos) << error.what();
+    }
+    const fs::path limit = dir.path() / "limit.ifs.json";
+    write_text(limit, std::string(kIfsMaxFileBytes, ' '));
+    try {
+        (void)read_ifs_file(limit);
+        FAIL() << "parsed a file of spaces";
+    } catch (const IfsError& error) {
+        EXPECT_EQ(std::string(error.what()).find("larger than"), std::string::npos) << error.what();
     }
 }
 

@@ -694,11 +694,16 @@ IfsScene read_ifs_file(const std::filesystem::path& file) {
     std::ifstream in(file, std::ios::binary);
     if (!in) throw IfsError(file.string() + ": cannot open the file");
     std::string text;
-    // Reads one byte past the limit at most, so a huge file is refused without reading it all.
-    text.resize(kIfsMaxFileBytes + 1);
-    in.read(text.data(), static_cast<std::streamsize>(text.size()));
+    // Reads one byte past the limit at most, so a huge file is refused without reading it all;
+    // in chunks, so a small file costs a small buffer (a buffer of the limit, zeroed, was most
+    // of the time discovery took).
+    std::array<char, 64 * 1024> chunk;
+    while (in && text.size() <= kIfsMaxFileBytes) {
+        const std::size_t wanted = std::min(chunk.size(), kIfsMaxFileBytes + 1 - text.size());
+        in.read(chunk.data(), static_cast<std::streamsize>(wanted));
+        text.append(chunk.data(), static_cast<std::size_t>(in.gcount()));
+    }
     if (in.bad()) throw IfsError(file.string() + ": cannot read the file");
-    text.resize(static_cast<std::size_t>(in.gcount()));
     if (text.size() > kIfsMaxFileBytes) {
         throw IfsError(fmt::format("{}: larger than the {} bytes an IFS file may have",
                                    file.string(), kIfsMaxFileBytes));
