@@ -12,6 +12,7 @@
 #include "fgr/camera_path_file.hpp"
 #include "fgr/hdr_io.hpp"
 #include "fgr/kernel_assembly.hpp"
+#include "fgr/modules.hpp"
 #include "fgr/renderer.hpp"
 
 namespace fgr {
@@ -124,7 +125,11 @@ int command_view(ViewCommandOptions& options) {
         throw UsageError(fmt::format("--output-dir '{}' is not a directory",
                                      viewer.output_dir.string()));
     }
-    return viewer::run_viewer(viewer);
+    // The viewer module (fgr/viewer/viewer.hpp), loaded now that a window is wanted.
+    const auto& module = module_table<viewer::ViewerModule>(
+        viewer::kViewerModuleName, viewer::kViewerModuleEntry, viewer::kViewerModuleVersion,
+        "the viewer");
+    return module.run(viewer);
 }
 
 }  // namespace fgr

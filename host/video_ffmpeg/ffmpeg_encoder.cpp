@@ -1,4 +1,6 @@
-#include "fgr/video_encoder.hpp"
+// FFmpeg's side of `fgr video` and `fgr merge`'s videos: the module fgr loads on first use (see
+// host/src/video/video_backend.hpp for why it is not linked in).
+#include "video_backend.hpp"
 
 #include <array>
 #include <cstdarg>
@@ -119,9 +121,7 @@ void set_quality(AVCodecContext* context, const std::string& name, std::optional
     }
 }
 
-}  // namespace
-
-std::string default_video_codec(const std::filesystem::path& output) {
+std::string default_codec(const std::filesystem::path& output) {
     const std::string container = container_for(output)->name;
     if (container == "webm") return "libvpx-vp9";
     if (container == "gif") return "gif";
@@ -131,9 +131,9 @@ std::string default_video_codec(const std::filesystem::path& output) {
     return avcodec_find_encoder_by_name("libx264") ? "libx264" : "mpeg4";
 }
 
-void check_video_settings(const std::filesystem::path& output, const VideoSettings& settings) {
+void check_settings(const std::filesystem::path& output, const VideoSettings& settings) {
     const AVOutputFormat* container = container_for(output);
-    const std::string name = settings.codec.empty() ? default_video_codec(output) : settings.codec;
+    const std::string name = settings.codec.empty() ? default_codec(output) : settings.codec;
     const AVCodec* codec = encoder_named(name);
     if (avformat_query_codec(container, codec->id, FF_COMPLIANCE_NORMAL) != 1) {
         throw std::invalid_argument(fmt::format("codec {} cannot go into a .{} file ({})", name,
@@ -155,16 +155,21 @@ void check_video_settings(const std::filesystem::path& output, const VideoSettin
     }
 }
 
-struct VideoEncoder::State {
+}  // namespace
+
+namespace video_backend {
+
+struct Encoder {
     AVFormatContext* format = nullptr;
     AVCodecContext* codec = nullptr;
     AVStream* stream = nullptr;
     SwsContext* scaler = nullptr;
     AVFrame* frame = nullptr;
     AVPacket* packet = nullptr;
-    bool header_written = false;
+    long frames = 0;
+    std::string output;  // for error messages
 
-    ~State() {
+    ~Encoder() {
         av_packet_free(&packet);
         av_frame_free(&frame);
         sws_freeContext(scaler);
@@ -188,20 +193,20 @@ struct VideoEncoder::State {
     }
 };
 
-VideoEncoder::VideoEncoder(const std::filesystem::path& output, VideoSettings settings)
-    : state_(std::make_unique<State>()), output_(output) {
+namespace {
+
+void open_encoder(Encoder& state, const std::filesystem::path& output,
+                  const std::filesystem::path& temporary, const VideoSettings& settings,
+                  std::string& description) {
     route_ffmpeg_log();
-    check_video_settings(output, settings);
-    if (settings.codec.empty()) settings.codec = default_video_codec(output);
+    check_settings(output, settings);
     const AVOutputFormat* container = container_for(output);
     const AVCodec* codec = encoder_named(settings.codec);
     const AVPixelFormat pixels = pixel_format_for(codec);
-    // Beside the output (same file system, so the rename is atomic), hidden, named after it.
-    temporary_ = output.parent_path() / fmt::format(".{}.partial", output.filename().string());
+    state.output = output.string();
 
-    State& state = *state_;
     check_av(avformat_alloc_output_context2(&state.format, container, nullptr,
-                                            temporary_.string().c_str()),
+                                            temporary.string().c_str()),
              "opening the video container");
     state.codec = avcodec_alloc_context3(codec);
     state.codec->width = settings.width;
@@ -215,9 +220,9 @@ VideoEncoder::VideoEncoder(const std::filesystem::path& output, VideoSettings se
     state.codec->color_trc = AVCOL_TRC_IEC61966_2_1;
     state.codec->color_range = AVCOL_RANGE_MPEG;
     if (container->flags & AVFMT_GLOBALHEADER) state.codec->flags |= AV_CODEC_FLAG_GLOBAL_HEADER;
-    description_ = fmt::format("{} ({}", settings.codec, av_get_pix_fmt_name(pixels));
-    set_quality(state.codec, settings.codec, settings.crf, description_);
-    description_ += ")";
+    description = fmt::format("{} ({}", settings.codec, av_get_pix_fmt_name(pixels));
+    set_quality(state.codec, settings.codec, settings.crf, description);
+    description += ")";
     check_av(avcodec_open2(state.codec, codec, nullptr), "opening codec " + settings.codec);
 
     state.stream = avformat_new_stream(state.format, nullptr);
@@ -240,7 +245,7 @@ VideoEncoder::VideoEncoder(const std::filesystem::path& output, VideoSettings se
     const int* bt709 = sws_getCoefficients(SWS_CS_ITU709);
     sws_setColorspaceDetails(state.scaler, bt709, 1, bt709, 0, 0, 1 << 16, 1 << 16);
 
-    check_av(avio_open(&state.format->pb, temporary_.string().c_str(), AVIO_FLAG_WRITE),
+    check_av(avio_open(&state.format->pb, temporary.string().c_str(), AVIO_FLAG_WRITE),
              fmt::format("cannot write '{}'", output.string()));
     AVDictionary* options = nullptr;
     // MP4/MOV: the index at the front, so a browser plays the file while it downloads.
@@ -255,18 +260,17 @@ VideoEncoder::VideoEncoder(const std::filesystem::path& output, VideoSettings se
     const int header = avformat_write_header(state.format, &options);
     av_dict_free(&options);
     check_av(header, "writing the video header");
-    state.header_written = true;
 }
 
-VideoEncoder::~VideoEncoder() {
-    if (finished_) return;
-    state_.reset();  // closes the temporary first
-    std::error_code ignored;
-    std::filesystem::remove(temporary_, ignored);
+Encoder* open(const std::filesystem::path& output, const std::filesystem::path& temporary,
+              const VideoSettings& settings, std::string* description) {
+    auto encoder = std::make_unique<Encoder>();
+    open_encoder(*encoder, output, temporary, settings, *description);
+    return encoder.release();
 }
 
-void VideoEncoder::add_frame(const Image8& image) {
-    State& state = *state_;
+void add_frame(Encoder* encoder, const Image8& image) {
+    Encoder& state = *encoder;
     if (image.width != state.codec->width || image.height != state.codec->height) {
         throw std::runtime_error(fmt::format("a {}x{} frame in a {}x{} video", image.width,
                                              image.height, state.codec->width,
@@ -277,24 +281,28 @@ void VideoEncoder::add_frame(const Image8& image) {
     const int source_stride[1] = {3 * image.width};
     sws_scale(state.scaler, source, source_stride, 0, image.height, state.frame->data,
               state.frame->linesize);
-    state.frame->pts = frames_++;
+    state.frame->pts = state.frames++;
     check_av(avcodec_send_frame(state.codec, state.frame), "encoding a video frame");
     state.drain();
 }
 
-void VideoEncoder::finish() {
-    State& state = *state_;
+void finish(Encoder* encoder) {
+    Encoder& state = *encoder;
     check_av(avcodec_send_frame(state.codec, nullptr), "flushing the video encoder");
     state.drain();
     check_av(av_write_trailer(state.format), "writing the video trailer");
-    check_av(avio_closep(&state.format->pb), fmt::format("cannot write '{}'", output_.string()));
-    std::error_code error;
-    std::filesystem::rename(temporary_, output_, error);
-    if (error) {
-        throw std::runtime_error(
-            fmt::format("cannot write '{}': {}", output_.string(), error.message()));
-    }
-    finished_ = true;
+    check_av(avio_closep(&state.format->pb), fmt::format("cannot write '{}'", state.output));
 }
 
+void close(Encoder* encoder) { delete encoder; }
+
+const Table table = {kVersion, default_codec, check_settings, open, add_frame, finish, close};
+
+}  // namespace
+}  // namespace video_backend
 }  // namespace fgr
+
+extern "C" __attribute__((visibility("default"))) const fgr::video_backend::Table*
+fgr_video_backend() {
+    return &fgr::video_backend::table;
+}

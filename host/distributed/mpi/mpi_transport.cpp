@@ -1,5 +1,6 @@
 // The MPI transport: MPI_COMM_WORLD, point-to-point byte messages of one tag. Only the main
-// thread calls MPI (MPI_THREAD_FUNNELED): rank 0's own renderer thread never does.
+// thread calls MPI (MPI_THREAD_FUNNELED): rank 0's own renderer thread never does. Built as the
+// module libfgr_mpi.so (transport.hpp), which calls nothing of fgr's but this file.
 #include <mpi.h>
 #include <unistd.h>
 
@@ -8,7 +9,6 @@
 
 #include <fmt/format.h>
 
-#include "fgr/distributed/cluster.hpp"
 #include "transport.hpp"
 
 namespace fgr {
@@ -57,12 +57,7 @@ public:
     }
 };
 
-}  // namespace
-
-std::unique_ptr<Transport> join_transport(int* argc, char*** argv, Membership& membership) {
-    // A plain `fgr render` does not start MPI: its runtime would cost start-up time and, on
-    // some systems, print warnings about networks it cannot use.
-    if (launcher_world_size() <= 1) return nullptr;
+Transport* join(int* argc, char*** argv, Membership& membership) {
     int provided = 0;
     check(MPI_Init_thread(argc, argv, MPI_THREAD_FUNNELED, &provided), "init");
     MPI_Comm_rank(MPI_COMM_WORLD, &membership.rank);
@@ -75,7 +70,13 @@ std::unique_ptr<Transport> join_transport(int* argc, char*** argv, Membership& m
     int length = 0;
     MPI_Get_processor_name(name, &length);
     membership.host.assign(name, size_t(length));
-    return std::make_unique<MpiTransport>();
+    return new MpiTransport();
 }
 
+}  // namespace
 }  // namespace fgr
+
+extern "C" __attribute__((visibility("default"))) const fgr::MpiModule* fgr_mpi_module() {
+    static const fgr::MpiModule module{fgr::kMpiModuleVersion, fgr::join};
+    return &module;
+}

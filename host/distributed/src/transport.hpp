@@ -32,4 +32,17 @@ public:
 // Joins the launcher's job when it started more than one rank; null (alone) otherwise.
 std::unique_ptr<Transport> join_transport(int* argc, char*** argv, Membership& membership);
 
+// The MPI transport is fgr's module libfgr_mpi.so (fgr/modules.hpp, host/distributed/mpi/):
+// join_transport loads it only when a launcher started several ranks, so a plain `fgr render`
+// does not load Open MPI and the libraries it pulls in. Its entry point returns this table.
+struct MpiModule {
+    int version;  // kMpiModuleVersion of the tree the module was built from
+    // MPI_Init and the membership; the transport is the caller's to delete. Throws
+    // std::runtime_error when MPI fails.
+    Transport* (*join)(int* argc, char*** argv, Membership& membership);
+};
+inline constexpr int kMpiModuleVersion = 1;
+inline constexpr const char* kMpiModuleName = "libfgr_mpi.so";
+inline constexpr const char* kMpiModuleEntry = "fgr_mpi_module";
+
 }  // namespace fgr

@@ -46,4 +46,15 @@ struct ViewerOptions {
 // std::runtime_error for failures (no display, no OpenCL device...).
 int run_viewer(const ViewerOptions& options);
 
+// The viewer is also fgr's module libfgr_viewer.so (fgr/modules.hpp), which `fgr view` loads: SDL,
+// OpenGL and the ~50 libraries they pull in are loaded only by the process that opens a window.
+// Its entry point kViewerModuleEntry returns this table.
+struct ViewerModule {
+    int version;  // kViewerModuleVersion of the tree the module was built from
+    int (*run)(const ViewerOptions& options);
+};
+inline constexpr int kViewerModuleVersion = 1;
+inline constexpr const char* kViewerModuleName = "libfgr_viewer.so";
+inline constexpr const char* kViewerModuleEntry = "fgr_viewer_module";
+
 }  // namespace fgr::viewer
