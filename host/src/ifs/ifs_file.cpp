@@ -21,6 +21,7 @@
 #include <nlohmann/json.hpp>
 
 #include "../json_fields.hpp"
+#include "../scene_json.hpp"
 #include "fgr/description_validation.hpp"
 #include "fgr/ifs.hpp"
 #include "fgr/view_validation.hpp"
@@ -33,6 +34,9 @@ using json_fields::check_keys;
 using json_fields::dvec3_from;
 using json_fields::finite_double;
 using json_fields::shown;
+using scene_json::array_from;
+using scene_json::require_object;
+using scene_json::text_from;
 
 constexpr const char* kFormat = "fgr-ifs";
 constexpr std::string_view kSuffix = ".ifs.json";
@@ -45,14 +49,6 @@ constexpr double kMaxMapNumber = 1e6;
 constexpr double kSingularRatio = 1e-9;
 // How far from the origin the attractor's bounding sphere may reach.
 constexpr double kMaxExtent = 1e5;
-// The limits plugins have (description_validation.cpp).
-constexpr std::size_t kMaxTextLength = 4096;
-constexpr std::size_t kMaxCameras = 256;
-constexpr std::size_t kMaxCameraPaths = 256;
-constexpr std::size_t kMinKeyframes = 2;
-constexpr std::size_t kMaxKeyframes = 10000;
-constexpr std::size_t kMaxLights = 16;
-constexpr double kMaxAngularRadiusDegrees = 45.0;
 // Defaults for files that leave the depth out.
 constexpr int kDefaultDepth = 6;
 constexpr int kDefaultMaxDepth = 12;
@@ -68,41 +64,6 @@ template <typename... Args>
 
 // --- Small readers -------------------------------------------------------------------------------
 
-// Names and descriptions: at most kMaxTextLength bytes, no control characters (they would break
-// `fgr list` and the one-line messages that quote them).
-std::string text_from(const json& object, const char* key, const std::string& where,
-                      bool required) {
-    const std::string what = where.empty() ? fmt::format("\"{}\"", key)
-                                           : fmt::format("{} \"{}\"", where, key);
-    if (!object.contains(key)) {
-        if (required) fail("{} is missing", what);
-        return {};
-    }
-    const json& value = object.at(key);
-    if (!value.is_string()) fail("{} must be a string", what);
-    std::string text = value.get<std::string>();
-    if (text.size() > kMaxTextLength) fail("{} longer than {} bytes", what, kMaxTextLength);
-    if (std::any_of(text.begin(), text.end(),
-                    [](char c) { return static_cast<unsigned char>(c) < 0x20 || c == 0x7f; })) {
-        fail("{} contains a control character", what);
-    }
-    return text;
-}
-
-const json& array_from(const json& object, const char* key, std::size_t min_size,
-                       std::size_t max_size, const std::string& what) {
-    const json& value = object.at(key);
-    if (!value.is_array()) fail("{} must be an array", what);
-    if (value.size() < min_size || value.size() > max_size) {
-        fail("{} has {} entries; {} to {} allowed", what, value.size(), min_size, max_size);
-    }
-    return value;
-}
-
-void require_object(const json& value, const std::string& where) {
-    if (!value.is_object()) fail("{} must be an object", where);
-}
-
 // A colour in [0, 1]: a map's albedo.
 glm::vec3 albedo_from(const json& object, const std::string& where) {
     const glm::dvec3 colour = dvec3_from(object, "colour", where);
@@ -112,15 +73,6 @@ glm::vec3 albedo_from(const json& object, const std::string& where) {
         }
     }
     return glm::vec3(colour);
-}
-
-std::string camera_name_from(const json& object, const std::string& where) {
-    const std::string name = text_from(object, "name", where, true);
-    if (!is_camera_name(name)) {
-        fail("{}: name '{}' must match [a-z0-9_-]+ (at most 63 characters)", where,
-             printable(name));
-    }
-    return name;
 }
 
 // --- Maps ----------------------------------------------------------------------------------------
@@ -354,126 +306,6 @@ IfsLeaf leaf_from(const json& document, const IfsBounds& bounds) {
 
 // --- Cameras, paths, lights ----------------------------------------------------------------------
 
-std::vector<NamedCamera> cameras_from(const json& document) {
-    std::vector<NamedCamera> cameras;
-    if (!document.contains("cameras")) return cameras;
-    const json& array = array_from(document, "cameras", 1, kMaxCameras, "\"cameras\"");
-    std::set<std::string> names;
-    for (std::size_t i = 0; i < array.size(); ++i) {
-        const json& entry = array[i];
-        const std::string where = fmt::format("camera {}", i);
-        require_object(entry, where);
-        check_keys(entry, {"name", "position", "target", "up", "fov"}, where);
-        NamedCamera camera;
-        camera.name = camera_name_from(entry, where);
-        if (!names.insert(camera.name).second) fail("{}: duplicate name '{}'", where, camera.name);
-        camera.view = json_fields::view_from(entry, fmt::format("camera '{}'", camera.name));
-        cameras.push_back(std::move(camera));
-    }
-    return cameras;
-}
-
-std::vector<Keyframe> keyframes_from(const json& path, const std::string& where) {
-    if (!path.contains("keyframes")) fail("{} \"keyframes\" is missing", where);
-    const json& array =
-        array_from(path, "keyframes", kMinKeyframes, kMaxKeyframes, where + " \"keyframes\"");
-    std::vector<Keyframe> keyframes;
-    for (std::size_t i = 0; i < array.size(); ++i) {
-        const json& entry = array[i];
-        const std::string keyframe_where = fmt::format("{} keyframe {}", where, i);
-        require_object(entry, keyframe_where);
-        check_keys(entry, {"time", "position", "target", "up", "fov"}, keyframe_where);
-        if (!entry.contains("time")) fail("{} \"time\" is missing", keyframe_where);
-        Keyframe keyframe;
-        // Times are floats in a Scene: read as the plugins' are, then compared as stored.
-        keyframe.time = static_cast<float>(
-            finite_double(entry.at("time"), keyframe_where + " \"time\"", 1e30));
-        if (!keyframes.empty() && !(keyframe.time > keyframes.back().time)) {
-            fail("{}: time {} not after {}", keyframe_where, keyframe.time,
-                 keyframes.back().time);
-        }
-        keyframe.view = json_fields::view_from(entry, keyframe_where);
-        keyframes.push_back(keyframe);
-    }
-    return keyframes;
-}
-
-std::vector<CameraPath> camera_paths_from(const json& document) {
-    std::vector<CameraPath> paths;
-    if (!document.contains("camera_paths")) return paths;
-    const json& array = array_from(document, "camera_paths", 0, kMaxCameraPaths,
-                                   "\"camera_paths\"");
-    std::set<std::string> names;
-    for (std::size_t i = 0; i < array.size(); ++i) {
-        const json& entry = array[i];
-        std::string where = fmt::format("camera path {}", i);
-        require_object(entry, where);
-        check_keys(entry, {"name", "keyframes"}, where);
-        CameraPath path;
-        path.name = camera_name_from(entry, where);
-        if (!names.insert(path.name).second) fail("{}: duplicate name '{}'", where, path.name);
-        path.keyframes = keyframes_from(entry, fmt::format("camera path '{}'", path.name));
-        paths.push_back(std::move(path));
-    }
-    return paths;
-}
-
-// As a plugin's lights (description_validation.cpp copy_light): finite, colour and intensity not
-// negative, a directional light's direction not zero (normalised here), its disc's angular radius
-// in [0, 45] degrees.
-Light light_from(const json& entry, std::size_t index) {
-    const std::string where = fmt::format("light {}", index);
-    require_object(entry, where);
-    if (!entry.contains("type")) fail("{} \"type\" is missing", where);
-    const json& type = entry.at("type");
-    Light light;
-    if (type == "directional") {
-        check_keys(entry, {"type", "direction", "colour", "intensity", "angular_radius_degrees"},
-                   where);
-        light.type = LightType::Directional;
-        const glm::dvec3 direction = dvec3_from(entry, "direction", where);
-        const double length = glm::length(direction);
-        if (!(length > 0.0) || !std::isfinite(length)) fail("{}: zero direction", where);
-        light.vector = glm::vec3(direction / length);
-        if (entry.contains("angular_radius_degrees")) {
-            const double degrees = finite_double(entry.at("angular_radius_degrees"),
-                                                 where + " \"angular_radius_degrees\"");
-            if (degrees < 0.0 || degrees > kMaxAngularRadiusDegrees) {
-                fail("{}: angular_radius_degrees {} outside [0, {}]", where, degrees,
-                     kMaxAngularRadiusDegrees);
-            }
-            light.angular_radius = static_cast<float>(degrees * (std::numbers::pi / 180.0));
-        }
-    } else if (type == "point") {
-        check_keys(entry, {"type", "position", "colour", "intensity"}, where);
-        light.type = LightType::Point;
-        light.vector = glm::vec3(dvec3_from(entry, "position", where));
-    } else {
-        fail("{} \"type\" {} must be \"directional\" or \"point\"", where, shown(type));
-    }
-    if (entry.contains("colour")) {
-        const glm::dvec3 colour = dvec3_from(entry, "colour", where, 1e6);
-        if (colour.r < 0.0 || colour.g < 0.0 || colour.b < 0.0) {
-            fail("{}: negative colour", where);
-        }
-        light.colour = glm::vec3(colour);
-    }
-    if (entry.contains("intensity")) {
-        const double intensity = finite_double(entry.at("intensity"), where + " \"intensity\"", 1e6);
-        if (intensity < 0.0) fail("{}: negative intensity {}", where, intensity);
-        light.intensity = static_cast<float>(intensity);
-    }
-    return light;
-}
-
-std::vector<Light> lights_from(const json& document) {
-    std::vector<Light> lights;
-    if (!document.contains("lights")) return lights;
-    const json& array = array_from(document, "lights", 1, kMaxLights, "\"lights\"");
-    for (std::size_t i = 0; i < array.size(); ++i) lights.push_back(light_from(array[i], i));
-    return lights;
-}
-
 // --- Defaults ------------------------------------------------------------------------------------
 
 // Looks at the bounding sphere's centre from the front right, above, from where a sphere of the
@@ -496,80 +328,24 @@ NamedCamera default_camera(const IfsBounds& bounds) {
     return camera;
 }
 
-// A turn around the vertical through the default camera's target, at its distance and height:
-// five keyframes 90 degrees apart, two seconds each (the last back where it started).
-CameraPath default_orbit(const NamedCamera& camera) {
-    CameraPath path;
-    path.name = "orbit";
-    const glm::dvec3 target = camera.view.target;
-    const glm::dvec3 offset = camera.view.position - target;
-    for (int step = 0; step <= 4; ++step) {
-        const double angle = glm::radians(90.0 * step);
-        const double c = std::cos(angle), s = std::sin(angle);
-        Keyframe keyframe;
-        keyframe.time = 2.0f * static_cast<float>(step);
-        keyframe.view = camera.view;
-        keyframe.view.position =
-            target + glm::dvec3(c * offset.x - s * offset.y, s * offset.x + c * offset.y, offset.z);
-        path.keyframes.push_back(keyframe);
-    }
-    return path;
-}
-
-// The DE scenes' usual warm key light (sdk/template/scene.c).
-Light default_light() {
-    Light light;
-    light.type = LightType::Directional;
-    light.vector = glm::vec3(glm::normalize(glm::dvec3(0.6, -0.5, 0.8)));
-    light.colour = glm::vec3(1.0f, 0.95f, 0.85f);
-    light.intensity = 1.1f;
-    return light;
-}
-
 // --- The document --------------------------------------------------------------------------------
-
-void header_from(const json& document, IfsScene& scene) {
-    if (!document.contains("format")) fail("\"format\" is missing (must be \"{}\")", kFormat);
-    if (document.at("format") != kFormat) {
-        fail("\"format\" {} must be \"{}\"", shown(document.at("format")), kFormat);
-    }
-    json_fields::check_version(document, kIfsFormatVersion);
-    scene.version = kIfsFormatVersion;
-    scene.id = text_from(document, "id", "", true);
-    if (!is_scene_id(scene.id)) {
-        fail("\"id\" '{}' must match [a-z][a-z0-9_-]* (at most 63 characters)",
-             printable(scene.id));
-    }
-    scene.name = text_from(document, "name", "", true);
-    if (scene.name.empty()) fail("\"name\" is empty");
-    scene.description = text_from(document, "description", "", false);
-}
 
 IfsScene parse_checked(const std::string& text) {
     if (text.size() > kIfsMaxFileBytes) {
         fail("{} bytes, more than the {} an IFS file may have", text.size(), kIfsMaxFileBytes);
     }
-    json document;
-    try {
-        document = json::parse(text);
-    } catch (const json::parse_error& error) {
-        // "[json.exception.parse_error.101] parse error at line 3, column 5: ..." without the tag.
-        std::string message = error.what();
-        if (const std::size_t tag = message.find("] "); tag != std::string::npos) {
-            message.erase(0, tag + 2);
-        }
-        for (char& c : message) {
-            if (static_cast<unsigned char>(c) < 0x20) c = ' ';
-        }
-        fail("not valid JSON: {}", message);
-    }
-    if (!document.is_object()) fail("must be a JSON object");
+    const json document = scene_json::parse_object(text);
     check_keys(document,
                {"format", "version", "id", "name", "description", "depth", "maps", "leaf",
                 "cameras", "camera_paths", "lights"},
                "top level");
     IfsScene scene;
-    header_from(document, scene);
+    scene_json::check_format(document, kFormat, kIfsFormatVersion);
+    scene.version = kIfsFormatVersion;
+    const scene_json::Header header = scene_json::header_from(document);
+    scene.id = header.id;
+    scene.name = header.name;
+    scene.description = header.description;
     depth_from(document, scene);
     if (!document.contains("maps")) fail("\"maps\" is missing");
     const json& maps = array_from(document, "maps", 1, static_cast<std::size_t>(kIfsMaxMaps),
@@ -577,12 +353,12 @@ IfsScene parse_checked(const std::string& text) {
     for (std::size_t i = 0; i < maps.size(); ++i) scene.maps.push_back(map_from(maps[i], i));
     check_maps(scene, "map");
     scene.leaf = leaf_from(document, scene.bounds);
-    scene.cameras = cameras_from(document);
+    scene.cameras = scene_json::cameras_from(document);
     if (scene.cameras.empty()) scene.cameras.push_back(default_camera(scene.bounds));
-    scene.camera_paths = camera_paths_from(document);
-    if (scene.camera_paths.empty()) scene.camera_paths.push_back(default_orbit(scene.cameras[0]));
-    scene.lights = lights_from(document);
-    if (scene.lights.empty()) scene.lights.push_back(default_light());
+    scene.camera_paths = scene_json::camera_paths_from(document);
+    if (scene.camera_paths.empty()) scene.camera_paths.push_back(scene_json::default_orbit(scene.cameras[0]));
+    scene.lights = scene_json::lights_from(document);
+    if (scene.lights.empty()) scene.lights.push_back(scene_json::default_light());
     return scene;
 }
 
@@ -691,22 +467,11 @@ IfsScene parse_ifs_json(const std::string& text, const std::string& origin) {
 }
 
 IfsScene read_ifs_file(const std::filesystem::path& file) {
-    std::ifstream in(file, std::ios::binary);
-    if (!in) throw IfsError(file.string() + ": cannot open the file");
     std::string text;
-    // Reads one byte past the limit at most, so a huge file is refused without reading it all;
-    // in chunks, so a small file costs a small buffer (a buffer of the limit, zeroed, was most
-    // of the time discovery took).
-    std::array<char, 64 * 1024> chunk;
-    while (in && text.size() <= kIfsMaxFileBytes) {
-        const std::size_t wanted = std::min(chunk.size(), kIfsMaxFileBytes + 1 - text.size());
-        in.read(chunk.data(), static_cast<std::streamsize>(wanted));
-        text.append(chunk.data(), static_cast<std::size_t>(in.gcount()));
-    }
-    if (in.bad()) throw IfsError(file.string() + ": cannot read the file");
-    if (text.size() > kIfsMaxFileBytes) {
-        throw IfsError(fmt::format("{}: larger than the {} bytes an IFS file may have",
-                                   file.string(), kIfsMaxFileBytes));
+    try {
+        text = scene_json::read_bounded(file, kIfsMaxFileBytes, "an IFS file");
+    } catch (const std::runtime_error& error) {
+        throw IfsError(error.what());
     }
     return parse_ifs_json(text, file.string());
 }
