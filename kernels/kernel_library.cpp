@@ -8,6 +8,11 @@
 #include "fgr_environment_cl.h"
 #include "fgr_effects_cl.h"
 #include "fgr_folds_cl.h"
+#include "formulas_boxes_cl.h"
+#include "formulas_bulbs_cl.h"
+#include "formulas_hypercomplex_cl.h"
+#include "formulas_kifs_cl.h"
+#include "formulas_kleinian_cl.h"
 #include "fgr_fractals_cl.h"
 #include "fgr_geometry_cl.h"
 #include "fgr_ifs_cl.h"
@@ -42,6 +47,21 @@ std::span<const KernelFile> kernel_prelude() {
         KernelFile{"fgr_iterate.cl", fgr_iterate_cl},
     };
     return files;
+}
+
+const KernelFile* formula_family(std::string_view family) {
+    static constexpr std::array files{
+        KernelFile{"formulas/bulbs.cl", formulas_bulbs_cl},
+        KernelFile{"formulas/hypercomplex.cl", formulas_hypercomplex_cl},
+        KernelFile{"formulas/boxes.cl", formulas_boxes_cl},
+        KernelFile{"formulas/kifs.cl", formulas_kifs_cl},
+        KernelFile{"formulas/kleinian.cl", formulas_kleinian_cl},
+    };
+    for (const KernelFile& file : files) {
+        const std::string_view name = file.name;
+        if (name.substr(9, name.size() - 12) == family) return &file;
+    }
+    return nullptr;
 }
 
 std::span<const KernelFile> kernel_postlude() {

@@ -28,6 +28,10 @@ std::span<const KernelFile> mode_files(std::string_view mode);
 // prelude's types and maths; materials and their BSDFs (fgr_bsdf.cl) are in the prelude.
 std::span<const KernelFile> path_library();
 
+// The formula library's families (formulas/<family>.cl: bulbs, hypercomplex, boxes, kifs,
+// kleinian), each a file of formula_NAME step functions; null for an unknown family.
+const KernelFile* formula_family(std::string_view family);
+
 // The device math self-test kernel (fgr_math_check.cl), built on its own.
 const char* math_check_source();
 

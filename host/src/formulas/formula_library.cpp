@@ -1,0 +1,349 @@
+// The formula library's table: what each kernels/formulas/<family>.cl function takes, where it
+// comes from, and what its scene starts with. The kernel function's arguments after (z, w, dr, c)
+// are its params in this order (then the rotation, for those that have one).
+#include <algorithm>
+
+#include "fgr/formulas.hpp"
+
+namespace fgr {
+namespace {
+
+FormulaParam scalar(const char* id, const char* label, float min_value, float max_value,
+                    float default_value, const char* description) {
+    return {id, label, ParamType::Float, min_value, max_value,
+            {default_value, default_value, default_value}, description};
+}
+
+FormulaParam vector(const char* id, const char* label, float min_value, float max_value, float x,
+                    float y, float z, const char* description) {
+    return {id, label, ParamType::Vec3, min_value, max_value, {x, y, z}, description};
+}
+
+FormulaParam power(float default_value) {
+    return scalar("power", "Power", 2.0f, 16.0f, default_value, "the exponent n of z^n");
+}
+
+FormulaParam julia(float x, float y, float z) {
+    return vector("julia", "Julia constant", -2.0f, 2.0f, x, y, z,
+                  "the constant added each step instead of the point");
+}
+
+FormulaParam julia_w(float w) {
+    return scalar("julia_w", "Julia constant w", -2.0f, 2.0f, w, "the constant's fourth part");
+}
+
+// The rotation's parameters, last: axis and angle (degrees).
+void add_rotation(Formula& formula, float x, float y, float z, float degrees) {
+    formula.rotation = true;
+    formula.params.push_back(vector("axis", "Rotation axis", -1.0f, 1.0f, x, y, z,
+                                    "the axis each step turns about"));
+    formula.params.push_back(scalar("angle", "Rotation angle", -180.0f, 180.0f, degrees,
+                                    "the turn each step adds, degrees"));
+}
+
+CameraView view(double px, double py, double pz, double tx, double ty, double tz, float fov) {
+    CameraView v;
+    v.position = {px, py, pz};
+    v.target = {tx, ty, tz};
+    v.up = {0.0f, 0.0f, 1.0f};
+    v.fov_degrees = fov;
+    return v;
+}
+
+Formula formula(const char* name, const char* title, const char* family,
+                std::vector<std::string> tags, const char* summary, const char* origin,
+                FormulaDistance distance, std::vector<FormulaParam> params) {
+    Formula f;
+    f.name = name;
+    f.title = title;
+    f.family = family;
+    f.tags = std::move(tags);
+    f.summary = summary;
+    f.origin = origin;
+    f.distance = distance;
+    f.params = std::move(params);
+    return f;
+}
+
+// Bulbs: polynomial steps, logarithmic distance; the DE overestimates a little (0.8 steps).
+Formula bulb(Formula f, int iterations = 10, float bailout = 4.0f) {
+    f.iterations = iterations;
+    f.bailout = bailout;
+    f.max_bailout = 64.0f;  // r^16 of the largest power stays a float
+    f.step_factor = 0.8f;
+    f.max_distance = 10.0f;
+    f.view = view(2.0, -2.2, 1.2, 0.0, 0.0, 0.0, 50.0f);
+    return f;
+}
+
+// Quadratic and cubic steps: the logarithmic estimate is only good once |z| is well past 1, and
+// where the number of steps before escape changes (|c| at the bailout) it jumps by about
+// log(bailout) / bailout of itself; squares and cubes of 256 stay floats.
+Formula low_power(Formula f) {
+    f.bailout = 256.0f;
+    f.max_bailout = 10000.0f;
+    return f;
+}
+
+// Maps whose dr bounds nothing (they are not conformal, and the check's Lipschitz measurement
+// ran to 30-90x): their scenes take the delta estimate.
+Formula delta(Formula f) {
+    f.analytic_derivative = false;
+    return f;
+}
+
+// The step factor `fgr check` found safe for the formula's scene, a little lower.
+Formula stepping(Formula f, float step_factor) {
+    f.step_factor = step_factor;
+    return f;
+}
+
+Formula box(Formula f, double distance = 9.0) {
+    f.iterations = 12;
+    f.bailout = 10000.0f;
+    f.max_bailout = 1e6f;
+    f.step_factor = 1.0f;
+    f.max_distance = 40.0f;
+    f.view = view(distance, -distance * 1.15, distance * 0.7, 0.0, 0.0, 0.0, 50.0f);
+    return f;
+}
+
+Formula kifs(Formula f, double distance = 3.0) {
+    f.iterations = 10;
+    f.bailout = 10000.0f;
+    f.max_bailout = 1e6f;
+    f.step_factor = 1.0f;
+    f.max_distance = 20.0f;
+    f.view = view(distance, -distance * 1.2, distance * 0.75, 0.0, 0.0, 0.0, 50.0f);
+    return f;
+}
+
+std::vector<Formula> build_library() {
+    using D = FormulaDistance;
+    std::vector<Formula> all;
+    // --- bulbs ---
+    all.push_back(bulb(formula("mandelbulb", "Mandelbulb", "bulbs", {"bulb", "power"},
+        "z^n + c in spherical coordinates, polar angle from +z",
+        "Daniel White and Paul Nylander, 2009 (skytopia.com)", D::Logarithmic, {power(8.0f)})));
+    all.push_back(bulb(formula("mandelbulb_latitude", "Mandelbulb (latitude)", "bulbs",
+        {"bulb", "power", "mandelbulber"},
+        "z^n + c with the polar angle from the xy-plane: Mandelbulber 2's Mandelbulb",
+        "Mandelbulber 2 (Krzysztof Marczak et al.)", D::Logarithmic, {power(8.0f)})));
+    all.push_back(bulb(formula("juliabulb", "Juliabulb", "bulbs", {"bulb", "power", "julia"},
+        "the Mandelbulb's step with a fixed constant: its Julia sets",
+        "Daniel White and Paul Nylander, 2009", D::Logarithmic,
+        {power(8.0f), julia(0.45f, 0.5f, 0.0f)})));
+    all.push_back(low_power(bulb(formula("white_nylander", "White-Nylander power 2", "bulbs",
+        {"bulb", "polynomial"},
+        "the power-2 bulb written out as a polynomial: no trigonometry",
+        "Daniel White, 2009 (skytopia.com)", D::Logarithmic, {}))));
+    all.push_back(bulb(formula("mandelbar_bulb", "Mandelbar bulb", "bulbs",
+        {"bulb", "power", "tricorn"},
+        "the Mandelbulb of the mirror image (x, -y, z), the tricorn's conjugate in 3D",
+        "after Crowe, Hasson, Rippon and Strain-Clark, 1989 (the Mandelbar)", D::Logarithmic,
+        {power(8.0f)})));
+    all.push_back(bulb(formula("xenodreambuie", "Xenodreambuie", "bulbs", {"bulb", "power"},
+        "the Mandelbulb with both angles turned after multiplying",
+        "Xenodreambuie, fractalforums.com 2009 (Mandelbulber 2)", D::Logarithmic,
+        {power(8.0f),
+         scalar("alpha", "Azimuth turn", -180.0f, 180.0f, 0.0f, "added to n phi, degrees"),
+         scalar("beta", "Polar turn", -180.0f, 180.0f, 45.0f, "added to n theta, degrees")})));
+    all.push_back(stepping(low_power(bulb(formula("makin", "Makin 3D", "bulbs", {"bulb", "polynomial", "revolution"},
+        "(x^2 - y^2 - z^2, 2xy, 2xz) + c: the Mandelbrot set turned about the real axis",
+        "David Makin, fractalforums.com 2009", D::Logarithmic, {}))), 0.7f));
+    all.push_back(stepping(delta(low_power(bulb(formula("quick_dudley", "Quick-Dudley", "bulbs", {"bulb", "polynomial"},
+        "(x^2 + 2yz, z^2 + 2xy, y^2 + 2xz) + c",
+        "David Makin's Quick Dudley, fractalforums.com (Mandelbulber 2)", D::Logarithmic, {})))), 0.15f));
+    all.push_back(stepping(low_power(bulb(formula("benesi_pine_tree", "Benesi pine tree", "bulbs",
+        {"bulb", "polynomial", "benesi"},
+        "x^2 - y^2 - z^2, and (y, z) turned by 2x / |(y, z)|: Benesi's pine tree",
+        "Matt Benesi, fractalforums.com 2010 (Mandelbulber 2)", D::Logarithmic, {}))), 0.7f));
+    // --- hypercomplex ---
+    const Formula quaternion_plain = low_power(bulb(formula("quaternion", "Quaternion Mandelbrot",
+        "hypercomplex", {"hypercomplex", "quaternion"}, "q^2 + c in the quaternions, slice w = 0",
+        "Hart, Sandin and Kauffman, SIGGRAPH 1989", D::Logarithmic, {}), 12));
+    // the quaternions' squares are not conformal: `fgr check` measured 1.3x overestimates
+    const Formula quaternion_base = stepping(quaternion_plain, 0.7f);
+    all.push_back(quaternion_base);
+    Formula quaternion_julia = quaternion_base;
+    quaternion_julia.name = "quaternion_julia";
+    quaternion_julia.title = "Quaternion Julia";
+    quaternion_julia.tags = {"hypercomplex", "quaternion", "julia"};
+    quaternion_julia.summary = "q^2 + k for a fixed quaternion k, slice w = 0";
+    quaternion_julia.origin = "Alan Norton, 1982; Hart, Sandin and Kauffman, SIGGRAPH 1989";
+    quaternion_julia.params = {julia(-0.2f, 0.6f, 0.2f), julia_w(0.2f)};
+    all.push_back(quaternion_julia);
+    Formula cubic = quaternion_base;
+    cubic.name = "quaternion_cubic";
+    cubic.title = "Cubic quaternion Mandelbrot";
+    cubic.tags = {"hypercomplex", "quaternion", "cubic"};
+    cubic.summary = "q^3 + c in the quaternions, slice w = 0";
+    all.push_back(cubic);
+    Formula cubic_julia = quaternion_base;
+    cubic_julia.name = "quaternion_cubic_julia";
+    cubic_julia.title = "Cubic quaternion Julia";
+    cubic_julia.tags = {"hypercomplex", "quaternion", "cubic", "julia"};
+    cubic_julia.summary = "q^3 + k for a fixed quaternion k, slice w = 0";
+    cubic_julia.params = {julia(-0.5f, 0.4f, 0.2f), julia_w(0.0f)};
+    all.push_back(cubic_julia);
+    Formula bicomplex = quaternion_base;
+    bicomplex.name = "bicomplex";
+    bicomplex.title = "Bicomplex Mandelbrot (Tetrabrot)";
+    bicomplex.tags = {"hypercomplex", "bicomplex"};
+    bicomplex.summary = "Z^2 + c in the bicomplex numbers, slice w = 0";
+    bicomplex.origin = "Dominic Rochon, 2000 (the Tetrabrot); Segre's bicomplex numbers, 1892";
+    bicomplex.analytic_derivative = false;
+    bicomplex.step_factor = 0.06f;  // `fgr check`: the delta estimate still overestimates 14x
+    all.push_back(bicomplex);
+    Formula bicomplex_julia = bicomplex;
+    bicomplex_julia.name = "bicomplex_julia";
+    bicomplex_julia.title = "Bicomplex Julia";
+    bicomplex_julia.tags = {"hypercomplex", "bicomplex", "julia"};
+    bicomplex_julia.summary = "Z^2 + k for a fixed bicomplex k, slice w = 0";
+    bicomplex_julia.params = {julia(-0.2f, 0.65f, 0.0f), julia_w(0.0f)};
+    bicomplex_julia.step_factor = 0.15f;
+    all.push_back(bicomplex_julia);
+    Formula multibrot = bicomplex;
+    multibrot.name = "bicomplex_power";
+    multibrot.title = "Bicomplex multibrot";
+    multibrot.tags = {"hypercomplex", "bicomplex", "power"};
+    multibrot.summary = "Z^n + c in the bicomplex numbers, slice w = 0";
+    multibrot.params = {scalar("power", "Power", 2.0f, 8.0f, 3.0f,
+                               "the exponent n, an integer (rounded down)")};
+    multibrot.step_factor = 0.12f;
+    all.push_back(multibrot);
+    Formula qpower = quaternion_base;
+    qpower.name = "quaternion_power";
+    qpower.title = "Quaternion power";
+    qpower.tags = {"hypercomplex", "quaternion", "power"};
+    qpower.summary = "q^n + c in the quaternions (polar form), slice w = 0";
+    qpower.origin = "after Hart, Sandin and Kauffman, 1989; the polar form of quaternion powers";
+    qpower.params = {scalar("power", "Power", 2.0f, 8.0f, 4.0f, "the exponent n")};
+    qpower.max_bailout = 64.0f;
+    qpower.bailout = 16.0f;
+    all.push_back(qpower);
+    // --- boxes ---
+    const std::vector<FormulaParam> mandelbox_params = {
+        scalar("scale", "Scale", -3.0f, 3.0f, 2.0f, "the step's scale (|scale| at least 1.2)"),
+        scalar("folding_limit", "Folding limit", 0.5f, 1.5f, 1.0f, "where the box fold reflects"),
+        scalar("min_radius", "Min radius", 0.1f, 1.5f, 0.5f, "the sphere fold's inner radius"),
+        scalar("fixed_radius", "Fixed radius", 0.5f, 1.5f, 1.0f, "the sphere fold's outer radius")};
+    all.push_back(box(formula("mandelbox", "Mandelbox", "boxes", {"box", "folding"},
+        "scale * sphere_fold(box_fold(z)) + c", "Tom Lowe, fractalforums.com 2010", D::Linear,
+        mandelbox_params), 16.0));
+    std::vector<FormulaParam> julia_box = mandelbox_params;
+    julia_box.push_back(julia(1.0f, 1.0f, 1.0f));
+    all.push_back(box(formula("mandelbox_julia", "Mandelbox Julia", "boxes",
+        {"box", "folding", "julia"}, "the Mandelbox's step with a fixed constant",
+        "after Tom Lowe, 2010", D::Linear, julia_box)));
+    Formula amazing = box(formula("amazing_box", "Amazing Box", "boxes",
+        {"box", "folding", "rotation"}, "the Mandelbox with a turn after the folds",
+        "Tglad's Amazing Box, fractalforums.com 2010 (Mandelbulber 2)", D::Linear,
+        mandelbox_params), 16.0);
+    add_rotation(amazing, 0.3f, 0.4f, 1.0f, 12.0f);
+    all.push_back(amazing);
+    Formula surf = box(formula("amazing_surf", "Amazing Surf", "boxes",
+        {"box", "folding", "surface", "rotation"},
+        "box fold on x and y only, sphere fold, scale: a surface along z",
+        "Kali and M. Benesi, fractalforums.com 2011 (Mandelbulber 2)", D::Linear,
+        {scalar("scale", "Scale", -3.0f, 3.0f, 1.8f, "the step's scale (|scale| at least 1.2)"),
+         vector("fold", "Fold", 0.0f, 2.0f, 1.0f, 1.0f, 0.0f,
+                "the box fold's limits on x and y (z is not folded)"),
+         scalar("min_radius", "Min radius", 0.1f, 1.0f, 0.5f, "the sphere fold's inner radius"),
+         scalar("c_scale", "c scale", 0.0f, 2.0f, 1.0f, "how much of the point is added")}), 6.0);
+    add_rotation(surf, 0.0f, 0.0f, 1.0f, 0.0f);
+    all.push_back(surf);
+    all.push_back(box(formula("abox", "ABox (per-axis folds)", "boxes", {"box", "folding"},
+        "the Mandelbox with a folding limit per axis",
+        "after Tglad's box fold (Mandelbulber 2's ABox Mod)", D::Linear,
+        {scalar("scale", "Scale", -3.0f, 3.0f, 2.0f, "the step's scale (|scale| at least 1.2)"),
+         vector("limits", "Folding limits", 0.5f, 1.5f, 1.0f, 1.0f, 1.3f, "per-axis box fold"),
+         scalar("min_radius", "Min radius", 0.1f, 1.5f, 0.5f, "the sphere fold's inner radius"),
+         scalar("fixed_radius", "Fixed radius", 0.5f, 1.5f, 1.0f,
+                "the sphere fold's outer radius")}), 16.0));
+    // --- kaleidoscopic IFS ---
+    Formula menger = kifs(formula("menger", "Menger sponge (KIFS)", "kifs", {"kifs", "cube"},
+        "the cube's fold and a scale of 3 about (1, 1, 1)", "Knighty, fractalforums.com 2010",
+        D::Own,
+        {scalar("scale", "Scale", 2.0f, 4.0f, 3.0f, "the step's scale"),
+         vector("offset", "Offset", 0.0f, 2.0f, 1.0f, 1.0f, 1.0f, "the vertex scaled about")}));
+    add_rotation(menger, 0.0f, 0.0f, 1.0f, 0.0f);
+    all.push_back(menger);
+    Formula sierpinski = kifs(formula("sierpinski", "Sierpinski tetrahedron (KIFS)", "kifs",
+        {"kifs", "tetrahedron"}, "the tetrahedron's fold and a scale of 2 about (1, 1, 1)",
+        "Knighty, fractalforums.com 2010", D::Own,
+        {scalar("scale", "Scale", 1.5f, 3.0f, 2.0f, "the step's scale"),
+         vector("offset", "Offset", 0.0f, 2.0f, 1.0f, 1.0f, 1.0f, "the vertex scaled about")}));
+    add_rotation(sierpinski, 0.0f, 0.0f, 1.0f, 0.0f);
+    all.push_back(sierpinski);
+    Formula octahedral = kifs(formula("octahedral", "Octahedral KIFS", "kifs",
+        {"kifs", "octahedron"}, "the octahedron's fold and a scale of 2 about a vertex",
+        "Knighty, fractalforums.com 2010", D::Own,
+        {scalar("scale", "Scale", 1.5f, 3.0f, 2.0f, "the step's scale"),
+         vector("offset", "Offset", 0.0f, 2.0f, 1.0f, 0.0f, 0.0f, "the vertex scaled about")}));
+    add_rotation(octahedral, 0.0f, 0.0f, 1.0f, 0.0f);
+    all.push_back(octahedral);
+    Formula icosahedral = kifs(formula("icosahedral", "Icosahedral KIFS", "kifs",
+        {"kifs", "icosahedron"}, "the icosahedral fold and a scale about the icosahedron's vertex",
+        "Knighty, fractalforums.com 2010", D::Own,
+        {scalar("scale", "Scale", 1.5f, 4.0f, 3.0f, "the step's scale"),
+         scalar("size", "Size", 0.5f, 2.0f, 1.0f, "the vertex's distance from the centre")}));
+    add_rotation(icosahedral, 0.2f, 0.5f, 1.0f, 8.0f);
+    all.push_back(icosahedral);
+    Formula dodecahedral = kifs(formula("dodecahedral", "Dodecahedral KIFS", "kifs",
+        {"kifs", "dodecahedron"},
+        "the icosahedral fold and a scale about the dodecahedron's vertex",
+        "Knighty, fractalforums.com 2010", D::Own,
+        {scalar("scale", "Scale", 1.5f, 4.0f, 2.618034f, "the step's scale"),
+         scalar("size", "Size", 0.5f, 2.0f, 1.0f, "the vertex's distance from the centre")}));
+    add_rotation(dodecahedral, 0.0f, 0.0f, 1.0f, 0.0f);
+    all.push_back(dodecahedral);
+    all.push_back(kifs(formula("cantor_dust", "Cantor dust (KIFS)", "kifs", {"kifs", "cube", "dust"},
+        "the octant's fold and a scale of 3 about (1, 1, 1): eight cubes of eight cubes",
+        "Georg Cantor's set, 1883, in three dimensions; Knighty's KIFS form", D::Own,
+        {scalar("scale", "Scale", 2.2f, 4.0f, 3.0f, "the step's scale"),
+         vector("offset", "Offset", 0.0f, 2.0f, 1.0f, 1.0f, 1.0f, "the vertex scaled about")})));
+    // --- Kleinian ---
+    Formula kleinian = formula("pseudo_kleinian", "Pseudo-Kleinian", "kleinian",
+        {"kleinian", "inversion", "interior"},
+        "a per-axis box fold and a sphere inversion: a Kleinian group's limit set, nearly",
+        "Knighty, fractalforums.com 2011", D::Own,
+        {vector("box", "Box size", 0.5f, 2.0f, 1.0f, 1.0f, 1.3f, "the box fold's half sizes"),
+         scalar("size", "Inversion size", 0.5f, 1.5f, 1.0f, "the inversion sphere's radius^2"),
+         vector("offset", "Offset", -0.5f, 0.5f, 0.0f, 0.0f, 0.0f, "added after the inversion"),
+         scalar("thickness", "Thickness", 0.0f, 0.1f, 0.01f, "the drawn cylinders' radius")});
+    kleinian.iterations = 12;
+    kleinian.bailout = 1e10f;
+    kleinian.max_bailout = 1e10f;
+    kleinian.max_distance = 8.0f;
+    kleinian.view = view(1.7, -1.5, 0.95, 0.0, 0.5, 0.2, 70.0f);
+    all.push_back(kleinian);
+    Formula apollonian = formula("apollonian", "Apollonian packing", "kleinian",
+        {"kleinian", "inversion", "spheres", "interior"},
+        "the unit cell folded and inverted over and over: a packing of spheres, cut to one cell",
+        "after Paul Nylander and Knighty, fractalforums.com 2010", D::Own,
+        {scalar("size", "Inversion size", 1.0f, 1.5f, 1.2f, "the inversion sphere's radius^2")});
+    apollonian.iterations = 10;
+    apollonian.bailout = 1e10f;
+    apollonian.max_bailout = 1e10f;
+    apollonian.max_distance = 6.0f;
+    apollonian.view = view(2.2, -2.8, 1.7, 0.0, 0.0, 0.0, 50.0f);
+    all.push_back(apollonian);
+    return all;
+}
+
+}  // namespace
+
+std::span<const Formula> formula_library() {
+    static const std::vector<Formula> library = build_library();
+    return library;
+}
+
+const Formula* find_formula(std::string_view name) {
+    const auto library = formula_library();
+    const auto found = std::find_if(library.begin(), library.end(),
+                                    [&](const Formula& f) { return f.name == name; });
+    return found == library.end() ? nullptr : &*found;
+}
+
+}  // namespace fgr
