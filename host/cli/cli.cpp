@@ -62,8 +62,12 @@ int run_cli(int argc, char** argv) {
     bool verbose = false;
     app.add_flag("-v,--verbose", verbose, "debug logging");
     std::string list_scene;
-    app.add_subcommand("list", "list the scenes found, with parameters, cameras and camera paths")
-        ->add_option("scene", list_scene, "list this scene alone, describing each parameter");
+    bool list_formulas = false;
+    CLI::App* list =
+        app.add_subcommand("list", "list the scenes found, with parameters, cameras and camera paths");
+    list->add_option("scene", list_scene, "list this scene alone, describing each parameter");
+    list->add_flag("--formulas", list_formulas,
+                   "list the formula library instead: what formula scene files may iterate");
     bool math_check = false;
     app.add_subcommand("info", "list OpenCL platforms and devices")
         ->add_flag("--math-check", math_check,
@@ -114,7 +118,7 @@ int run_cli(int argc, char** argv) {
     }
     configure_logging(verbose, cluster);
     const auto run_command = [&](const std::string& command) {
-        if (command == "list") return command_list(list_scene);
+        if (command == "list") return command_list(list_scene, list_formulas);
         if (command == "info") return command_info(math_check);
         if (command == "video") return command_video(video_options);
         if (command == "merge") return command_merge(merge_options);

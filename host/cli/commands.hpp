@@ -124,7 +124,8 @@ void write_output(const std::filesystem::path& file, const std::string& text);
 // --- fgr list, fgr info --------------------------------------------------------------------------
 
 // Every scene; with a scene id, that scene alone, each parameter with its description.
-int command_list(const std::string& scene_id);
+// `fgr list`: the scenes found, or one described; with formulas, the formula library instead.
+int command_list(const std::string& scene_id, bool formulas);
 // With `math_check`, each device's math self-test verdict per precision and packet width.
 int command_info(bool math_check);
 

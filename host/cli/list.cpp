@@ -3,8 +3,10 @@
 #include <string>
 
 #include <fmt/format.h>
+#include <fmt/ranges.h>
 
 #include "commands.hpp"
+#include "fgr/formulas.hpp"
 #include "fgr/render_mode.hpp"
 #include "fgr/ifs.hpp"
 #include "fgr/kernel_assembly.hpp"
@@ -45,9 +47,12 @@ void print_scene(const Scene& scene, bool described) {
                    scene.plugin_file.string(), scene.ifs->maps.size(), scene.ifs->bounds.centre.x,
                    scene.ifs->bounds.centre.y, scene.ifs->bounds.centre.z,
                    scene.ifs->bounds.radius);
+    } else if (is_formula_file_name(scene.plugin_file)) {
+        fmt::print("  formula file: {}\n", scene.plugin_file.string());
     } else {
         fmt::print("  plugin: {}\n", scene.plugin_file.string());
     }
+    if (!scene.tags.empty()) fmt::print("  tags: {}\n", fmt::join(scene.tags, ", "));
     if (scene.scale != 1.0f) {
         fmt::print("  scale: {} (the default ao_radius, glow_radius, aperture, fog_density and "
                    "absorption follow it)\n",
@@ -82,7 +87,42 @@ void print_scene(const Scene& scene, bool described) {
 
 }  // namespace
 
-int command_list(const std::string& scene_id) {
+const char* distance_name(FormulaDistance distance) {
+    switch (distance) {
+        case FormulaDistance::Logarithmic: return "logarithmic";
+        case FormulaDistance::Linear: return "linear";
+        case FormulaDistance::Own: return "its own";
+    }
+    return "";
+}
+
+// The formula library: what a formula scene's "sequence" may name (fgr/formulas.hpp).
+void print_formulas() {
+    std::string family;
+    for (const Formula& formula : formula_library()) {
+        if (formula.family != family) {
+            family = formula.family;
+            fmt::print("{}{}:\n", family == formula_library().front().family ? "" : "\n", family);
+        }
+        fmt::print("  {:<22} {} - {}\n", formula.name, formula.title, formula.summary);
+        fmt::print("    from: {}\n", formula.origin);
+        fmt::print("    tags: {}; distance: {}{}\n", fmt::join(formula.tags, ", "),
+                   distance_name(formula.distance),
+                   formula.analytic_derivative ? "" : ", delta estimate (no analytic derivative)");
+        std::string params;
+        for (const FormulaParam& param : formula.params) {
+            params += fmt::format("{}{} [{}, {}]", params.empty() ? "" : ", ", param.id,
+                                  param.min_value, param.max_value);
+        }
+        fmt::print("    parameters: {}\n", params.empty() ? "none" : params);
+    }
+}
+
+int command_list(const std::string& scene_id, bool formulas) {
+    if (formulas) {
+        print_formulas();
+        return 0;
+    }
     const Discovery found = discover();
     if (!scene_id.empty()) {
         print_scene(find_scene(found, scene_id), true);

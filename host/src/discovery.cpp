@@ -27,9 +27,9 @@ std::vector<fs::path> split_path_list(std::string_view list) {
     return directories;
 }
 
-// Regular files (or links to them) named *.so or *.ifs.json, sorted by file name so the load
-// order, and thus which of two duplicate ids wins, does not depend on the filesystem's directory
-// order.
+// Regular files (or links to them) named *.so, *.ifs.json or *.formula.json, sorted by file name
+// so the load order, and thus which of two duplicate ids wins, does not depend on the
+// filesystem's directory order.
 std::vector<fs::path> plugin_files_in(const fs::path& directory) {
     std::vector<fs::path> files;
     std::error_code error;
@@ -107,11 +107,12 @@ std::string dashed(std::string_view id) {
     return text;
 }
 
-// The scene id a file name suggests: oops.so, liboops.so and oops.ifs.json give "oops"; '_' reads
+// The scene id a file name suggests: oops.so, liboops.so, oops.ifs.json and oops.formula.json give
+// "oops"; '_' reads
 // as '-' (a CMake target liboops_scene.so for the scene 'oops-scene').
 std::string id_from_file_name(const fs::path& file) {
     std::string name = file.filename().string();
-    for (const std::string_view suffix : {".ifs.json", ".so"}) {
+    for (const std::string_view suffix : {".ifs.json", ".formula.json", ".so"}) {
         if (name.ends_with(suffix)) {
             name.erase(name.size() - suffix.size());
             break;

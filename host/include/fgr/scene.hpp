@@ -96,6 +96,9 @@ struct Scene {
     std::string id;
     std::string name;
     std::string description;
+    // Words to find the scene by (`fgr list`): a formula scene's families and traits. Plugins
+    // have none (ABI 1.x carries no tags).
+    std::vector<std::string> tags;
     std::string source;       // OpenCL C source of the DE or inside test (and optional colour)
     std::string source_name;  // file name shown in compiler messages
     std::filesystem::path plugin_file;
