@@ -21,7 +21,7 @@ json vec3_json(glm::vec3 v) { return json::array({v.x, v.y, v.z}); }
 // Positions and targets: JSON numbers are written to round-trip a double exactly.
 json vec3_json(glm::dvec3 v) { return json::array({v.x, v.y, v.z}); }
 
-[[noreturn]] void fail(const std::string& reason) { throw std::runtime_error(reason); }
+using json_fields::fail;
 
 Keyframe keyframe_from(const json& entry, std::size_t index) {
     const std::string where = "keyframe " + std::to_string(index);

@@ -14,8 +14,6 @@ namespace {
 
 using nlohmann::json;
 
-[[noreturn]] void fail(const std::string& reason) { throw std::runtime_error(reason); }
-
 std::string limit_text(double limit) { return fmt::format("{:g}", limit); }
 
 }  // namespace

@@ -5,16 +5,28 @@
 // file's name in front).
 
 #include <cstdint>
+#include <stdexcept>
 #include <initializer_list>
 #include <string>
 #include <string_view>
+#include <utility>
 
+#include <fmt/format.h>
 #include <glm/vec3.hpp>
 #include <nlohmann/json.hpp>
 
 #include "fgr/scene.hpp"
 
 namespace fgr::json_fields {
+
+// Stops reading with a one-line reason (std::runtime_error): every reader here, and the files'
+// own checks, fail this way.
+[[noreturn]] inline void fail(const std::string& reason) { throw std::runtime_error(reason); }
+
+template <typename... Args>
+[[noreturn]] void fail(fmt::format_string<Args...> format, Args&&... args) {
+    fail(fmt::format(format, std::forward<Args>(args)...));
+}
 
 // A number, finite and at most `limit` in magnitude.
 double finite_double(const nlohmann::json& value, const std::string& what, double limit = 1e30);

@@ -20,16 +20,11 @@ namespace {
 
 using nlohmann::json;
 using json_fields::check_keys;
+using json_fields::fail;
 using json_fields::dvec3_from;
 using json_fields::finite_double;
 using json_fields::shown;
 
-[[noreturn]] void fail(const std::string& reason) { throw std::runtime_error(reason); }
-
-template <typename... Args>
-[[noreturn]] void fail(fmt::format_string<Args...> format, Args&&... args) {
-    fail(fmt::format(format, std::forward<Args>(args)...));
-}
 
 std::vector<Keyframe> keyframes_from(const json& path, const std::string& where);
 Light light_from(const json& entry, std::size_t index);

@@ -20,6 +20,7 @@ namespace {
 
 using nlohmann::json;
 using json_fields::check_keys;
+using json_fields::fail;
 using json_fields::finite_double;
 using json_fields::shown;
 
@@ -29,12 +30,6 @@ constexpr std::size_t kMaxTags = 16;
 constexpr int kMaxIterations = 1000;
 constexpr float kMaxBailout = 1e10f;
 
-[[noreturn]] void fail(const std::string& reason) { throw std::runtime_error(reason); }
-
-template <typename... Args>
-[[noreturn]] void fail(fmt::format_string<Args...> format, Args&&... args) {
-    fail(fmt::format(format, std::forward<Args>(args)...));
-}
 
 bool is_tag(std::string_view tag) {
     return !tag.empty() && tag.size() <= 32 &&

@@ -31,6 +31,7 @@ namespace {
 
 using nlohmann::json;
 using json_fields::check_keys;
+using json_fields::fail;
 using json_fields::dvec3_from;
 using json_fields::finite_double;
 using json_fields::shown;
@@ -55,12 +56,6 @@ constexpr int kDefaultMaxDepth = 12;
 
 // Validation stops at the first problem with a one-line reason; parse_ifs_json puts the file's
 // name in front. json_fields throws std::runtime_error the same way.
-[[noreturn]] void fail(const std::string& reason) { throw std::runtime_error(reason); }
-
-template <typename... Args>
-[[noreturn]] void fail(fmt::format_string<Args...> format, Args&&... args) {
-    fail(fmt::format(format, std::forward<Args>(args)...));
-}
 
 // --- Small readers -------------------------------------------------------------------------------
 
