@@ -20,7 +20,7 @@ namespace fgr::test {
 // discovery's own log lines would bury the test output).
 // The formula scene the scene-wide suites take: a hybrid, so the generated loop's turns between
 // formulas run at every packet width too.
-inline constexpr const char* kFormulaSceneInSuites = "bulb-box";
+inline constexpr const char* kFormulaSceneInSuites = "quaternion-bulb";
 
 inline const std::vector<Scene>& all_scenes() {
     static const std::vector<Scene> scenes = [] {

@@ -82,3 +82,28 @@ inline void formula_abox(vec3* z, real* w, real* dr, const vec3 c, float scale, 
     *dr = fold_dr * fabs(s) + 1.0f;
     *z = v3_mad(c, folded, fgr_real(s));
 }
+
+/* Amazing Box with a Julia constant: + julia instead of + c. */
+inline void formula_amazing_box_julia(vec3* z, real* w, real* dr, const vec3 c, float scale,
+                                      float folding_limit, float min_radius, float fixed_radius,
+                                      vec3 julia, rotation3 turn) {
+    (void)w;
+    (void)c;
+    const float s = formula_box_scale(scale);
+    const vec3 folded = box_step(*z, dr, s, folding_limit, min_radius, fixed_radius);
+    *z = v3_add(op_rotate(folded, turn), julia);
+}
+
+/* ABox with a Julia constant. */
+inline void formula_abox_julia(vec3* z, real* w, real* dr, const vec3 c, float scale, vec3 limits,
+                               float min_radius, float fixed_radius, vec3 julia) {
+    (void)w;
+    (void)c;
+    const float s = formula_box_scale(scale);
+    const float fixed2 = fixed_radius * fixed_radius;
+    real fold_dr = *dr;
+    const vec3 folded = fold_sphere(fold_box_axes(*z, limits), &fold_dr,
+                                    fmin(min_radius * min_radius, fixed2), fixed2);
+    *dr = fold_dr * fabs(s);
+    *z = v3_mad(julia, folded, fgr_real(s));
+}

@@ -52,6 +52,17 @@ inline void formula_juliabulb(vec3* z, real* w, real* dr, const vec3 c, float po
     *z = v3_add(zn, julia);
 }
 
+/* Juliabulb in the latitude form (Mandelbulber 2's convention). */
+inline void formula_juliabulb_latitude(vec3* z, real* w, real* dr, const vec3 c, float power,
+                                       vec3 julia) {
+    (void)w;
+    (void)c;
+    real r_pow;
+    const vec3 zn = formula_bulb_power(*z, power, 1, &r_pow);
+    *dr = power * r_pow * *dr;
+    *z = v3_add(zn, julia);
+}
+
 /* White-Nylander power 2 written out as the polynomial it is (Daniel White's quadratic bulb,
  * 2009): with rho = |(x, y)|, z^2 = (2 z (x^2 - y^2) / rho, 4 x y z / rho, z^2 - rho^2). The same
  * map as formula_mandelbulb at power 2, without trigonometry or angle powers (the tests hold the
@@ -124,16 +135,6 @@ inline void formula_makin(vec3* z, real* w, real* dr, const vec3 c) {
     const vec3 p = *z;
     *dr = 2.0f * v3_length(p) * *dr + 1.0f;
     *z = v3_add(v3(p.x * p.x - p.y * p.y - p.z * p.z, 2.0f * p.x * p.y, 2.0f * p.x * p.z), c);
-}
-
-/* Quick-Dudley (Mandelbulber 2, after David Makin's "Quick Dudley" formula, fractalforums.com):
- * (x^2 + 2 y z, z^2 + 2 x y, y^2 + 2 x z) + c. */
-inline void formula_quick_dudley(vec3* z, real* w, real* dr, const vec3 c) {
-    (void)w;
-    const vec3 p = *z;
-    *dr = 2.0f * v3_length(p) * *dr + 1.0f;
-    *z = v3_add(v3(p.x * p.x + 2.0f * p.y * p.z, p.z * p.z + 2.0f * p.x * p.y,
-                   p.y * p.y + 2.0f * p.x * p.z), c);
 }
 
 /* Benesi's pine tree (Matt Benesi, fractalforums.com, 2010; Mandelbulber 2's "Benesi pine

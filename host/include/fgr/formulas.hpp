@@ -29,7 +29,8 @@ enum class FormulaDistance { Logarithmic, Linear, Own };
 // How the distance's derivative is had: the running derivative dr the formulas carry (analytic),
 // or Mandelbulber's "delta DE": |z| after the same number of steps from the point nudged along
 // each axis, its gradient by finite differences (four orbits a distance instead of one), for maps
-// whose dr is no bound (non-conformal ones: Quick-Dudley, the bicomplex numbers).
+// whose dr is no bound (a formula without an analytic derivative takes it by default; none of the
+// shipped ones is such) or to compare with the analytic one.
 enum class FormulaEstimate { Analytic, Delta };
 
 struct FormulaParam {

@@ -85,13 +85,6 @@ Formula low_power(Formula f) {
     return f;
 }
 
-// Maps whose dr bounds nothing (they are not conformal, and the check's Lipschitz measurement
-// ran to 30-90x): their scenes take the delta estimate.
-Formula delta(Formula f) {
-    f.analytic_derivative = false;
-    return f;
-}
-
 // The step factor `fgr check` found safe for the formula's scene, a little lower.
 Formula stepping(Formula f, float step_factor) {
     f.step_factor = step_factor;
@@ -133,6 +126,11 @@ std::vector<Formula> build_library() {
         "the Mandelbulb's step with a fixed constant: its Julia sets",
         "Daniel White and Paul Nylander, 2009", D::Logarithmic,
         {power(8.0f), julia(0.45f, 0.5f, 0.0f)})));
+    all.push_back(bulb(formula("juliabulb_latitude", "Juliabulb (latitude)", "bulbs",
+        {"bulb", "power", "julia", "mandelbulber"},
+        "the latitude-form Mandelbulb's step with a fixed constant",
+        "after White and Nylander, 2009, in Mandelbulber 2's angle convention", D::Logarithmic,
+        {power(8.0f), julia(0.45f, 0.5f, 0.0f)})));
     all.push_back(low_power(bulb(formula("white_nylander", "White-Nylander power 2", "bulbs",
         {"bulb", "polynomial"},
         "the power-2 bulb written out as a polynomial: no trigonometry",
@@ -151,9 +149,6 @@ std::vector<Formula> build_library() {
     all.push_back(stepping(low_power(bulb(formula("makin", "Makin 3D", "bulbs", {"bulb", "polynomial", "revolution"},
         "(x^2 - y^2 - z^2, 2xy, 2xz) + c: the Mandelbrot set turned about the real axis",
         "David Makin, fractalforums.com 2009", D::Logarithmic, {}))), 0.7f));
-    all.push_back(stepping(delta(low_power(bulb(formula("quick_dudley", "Quick-Dudley", "bulbs", {"bulb", "polynomial"},
-        "(x^2 + 2yz, z^2 + 2xy, y^2 + 2xz) + c",
-        "David Makin's Quick Dudley, fractalforums.com (Mandelbulber 2)", D::Logarithmic, {})))), 0.15f));
     all.push_back(stepping(low_power(bulb(formula("benesi_pine_tree", "Benesi pine tree", "bulbs",
         {"bulb", "polynomial", "benesi"},
         "x^2 - y^2 - z^2, and (y, z) turned by 2x / |(y, z)|: Benesi's pine tree",
@@ -186,32 +181,6 @@ std::vector<Formula> build_library() {
     cubic_julia.summary = "q^3 + k for a fixed quaternion k, slice w = 0";
     cubic_julia.params = {julia(-0.5f, 0.4f, 0.2f), julia_w(0.0f)};
     all.push_back(cubic_julia);
-    Formula bicomplex = quaternion_base;
-    bicomplex.name = "bicomplex";
-    bicomplex.title = "Bicomplex Mandelbrot (Tetrabrot)";
-    bicomplex.tags = {"hypercomplex", "bicomplex"};
-    bicomplex.summary = "Z^2 + c in the bicomplex numbers, slice w = 0";
-    bicomplex.origin = "Dominic Rochon, 2000 (the Tetrabrot); Segre's bicomplex numbers, 1892";
-    bicomplex.analytic_derivative = false;
-    bicomplex.step_factor = 0.06f;  // `fgr check`: the delta estimate still overestimates 14x
-    all.push_back(bicomplex);
-    Formula bicomplex_julia = bicomplex;
-    bicomplex_julia.name = "bicomplex_julia";
-    bicomplex_julia.title = "Bicomplex Julia";
-    bicomplex_julia.tags = {"hypercomplex", "bicomplex", "julia"};
-    bicomplex_julia.summary = "Z^2 + k for a fixed bicomplex k, slice w = 0";
-    bicomplex_julia.params = {julia(-0.2f, 0.65f, 0.0f), julia_w(0.0f)};
-    bicomplex_julia.step_factor = 0.15f;
-    all.push_back(bicomplex_julia);
-    Formula multibrot = bicomplex;
-    multibrot.name = "bicomplex_power";
-    multibrot.title = "Bicomplex multibrot";
-    multibrot.tags = {"hypercomplex", "bicomplex", "power"};
-    multibrot.summary = "Z^n + c in the bicomplex numbers, slice w = 0";
-    multibrot.params = {scalar("power", "Power", 2.0f, 8.0f, 3.0f,
-                               "the exponent n, an integer (rounded down)")};
-    multibrot.step_factor = 0.12f;
-    all.push_back(multibrot);
     Formula qpower = quaternion_base;
     qpower.name = "quaternion_power";
     qpower.title = "Quaternion power";
@@ -222,6 +191,14 @@ std::vector<Formula> build_library() {
     qpower.max_bailout = 64.0f;
     qpower.bailout = 16.0f;
     all.push_back(qpower);
+    Formula qpower_julia = qpower;
+    qpower_julia.name = "quaternion_power_julia";
+    qpower_julia.title = "Quaternion power Julia";
+    qpower_julia.tags = {"hypercomplex", "quaternion", "power", "julia"};
+    qpower_julia.summary = "q^n + k for a fixed quaternion k (polar form), slice w = 0";
+    qpower_julia.params = {scalar("power", "Power", 2.0f, 8.0f, 3.0f, "the exponent n"),
+                           julia(-0.2f, 0.6f, 0.2f), julia_w(0.0f)};
+    all.push_back(qpower_julia);
     // --- boxes ---
     const std::vector<FormulaParam> mandelbox_params = {
         scalar("scale", "Scale", -3.0f, 3.0f, 2.0f, "the step's scale (|scale| at least 1.2)"),
@@ -261,6 +238,22 @@ std::vector<Formula> build_library() {
          scalar("min_radius", "Min radius", 0.1f, 1.5f, 0.5f, "the sphere fold's inner radius"),
          scalar("fixed_radius", "Fixed radius", 0.5f, 1.5f, 1.0f,
                 "the sphere fold's outer radius")}), 16.0));
+    all.push_back(box(formula("abox_julia", "ABox Julia", "boxes", {"box", "folding", "julia"},
+        "the ABox's step with a fixed constant", "after Tglad's box fold (Mandelbulber 2's ABox Mod)",
+        D::Linear,
+        {scalar("scale", "Scale", -3.0f, 3.0f, 2.0f, "the step's scale (|scale| at least 1.2)"),
+         vector("limits", "Folding limits", 0.5f, 1.5f, 1.0f, 1.0f, 1.3f, "per-axis box fold"),
+         scalar("min_radius", "Min radius", 0.1f, 1.5f, 0.5f, "the sphere fold's inner radius"),
+         scalar("fixed_radius", "Fixed radius", 0.5f, 1.5f, 1.0f, "the sphere fold's outer radius"),
+         julia(1.0f, 1.0f, 1.0f)}), 9.0));
+    std::vector<FormulaParam> amazing_julia_params = mandelbox_params;
+    amazing_julia_params.push_back(julia(1.0f, 0.6f, 0.8f));
+    Formula amazing_julia = box(formula("amazing_box_julia", "Amazing Box Julia", "boxes",
+        {"box", "folding", "rotation", "julia"},
+        "the Amazing Box's step with a fixed constant",
+        "after Tglad's Amazing Box, fractalforums.com 2010", D::Linear, amazing_julia_params), 9.0);
+    add_rotation(amazing_julia, 0.3f, 0.4f, 1.0f, 12.0f);
+    all.push_back(amazing_julia);
     // --- kaleidoscopic IFS ---
     Formula menger = kifs(formula("menger", "Menger sponge (KIFS)", "kifs", {"kifs", "cube"},
         "the cube's fold and a scale of 3 about (1, 1, 1)", "Knighty, fractalforums.com 2010",

@@ -64,8 +64,9 @@ std::string loop_body(const FormulaScene& scene) {
 std::string distance_expression(const FormulaScene& scene) {
     switch (scene.distance) {
         case FormulaDistance::Logarithmic:
-            // dr = 0 (a Julia orbit through 0) has no estimate: 0, as on the surface.
-            return "select(0.5f * log(r) * r / dr, fgr_real(0.0f), (r <= 0.0f) | (dr <= 0.0f))";
+            // dr = 0 or below float's range (a Julia orbit through 0, or one that never escapes
+            // shrinking it away) has no estimate: 0, as on the surface.
+            return "select(0.5f * log(r) * r / dr, fgr_real(0.0f), (r <= 0.0f) | (dr <= 1e-30f))";
         case FormulaDistance::Linear:
             return "select(r / fabs(dr), fgr_real(0.0f), dr == 0.0f)";
         case FormulaDistance::Own:
