@@ -15,9 +15,9 @@
 #   mandelbulber_render_ms <best>         fgr_render_ms <best>
 #   speedup <mandelbulber_ms / fgr_ms>    render_speedup <mandelbulber_render_ms / fgr_render_ms>
 #
-# The images land in bench/results/mandelbulber_view_{mandelbulber,fgr}.png. Mandelbulber's
-# Mandelbulb formula is oriented differently from fgr's (a turn about z), so the two images show
-# the same camera and the same kind of surface, not identical pixels.
+# The images land in bench/results/mandelbulber_view_{mandelbulber,fgr}.png: the same surface
+# (bench/compare_formulas_mandelbulber.py measures their silhouettes' agreement, IoU 0.99), lit
+# and coloured each tool's way.
 # Environment: ROUNDS (3).
 set -euo pipefail
 
