@@ -52,6 +52,10 @@ TEST(FormulaEdit, AddingAFormulaMakesAHybridWithPrefixedParameters) {
     EXPECT_EQ(hybrid.march.step_factor, std::min(bulb.march.step_factor, box.step_factor));
     EXPECT_EQ(hybrid.iterations, std::max(bulb.iterations, box.iterations));
     EXPECT_EQ(hybrid.distance, FormulaDistance::Logarithmic) << "the bulb's growth wins";
+    const Formula& quaternion = library("quaternion");
+    ASSERT_LT(quaternion.step_factor, bulb.march.step_factor);
+    EXPECT_EQ(with_formula_added(bulb, quaternion).march.step_factor, quaternion.step_factor)
+        << "the march is as careful as its most careful formula";
 
     const Scene scene = formula_scene_to_scene(hybrid, "edited.formula.json");
     const std::vector<std::string> ids = param_ids(scene);
@@ -144,6 +148,23 @@ TEST(FormulaEdit, TheUsersValuesTravelWithTheirSlots) {
     EXPECT_EQ(param_value(after, carried, box_param),
               library("amazing_box").params[0].default_value[0])
         << "the box's slot took the bulb's old place, not its values";
+}
+
+// Two slots of one formula swapped: their parameters have the same ids after as before, so only
+// the slots carrying their values (not ids) gives each its own.
+TEST(FormulaEdit, SwappedSlotsOfOneFormulaSwapTheirValues) {
+    const FormulaScene twice = with_formula_added(shipped("mandelbulb-formula"), library("mandelbulb"));
+    const Scene before = formula_scene_to_scene(twice, "twice.formula.json");
+    std::vector<float> values = default_param_values(before);
+    set_param_from_text(before, values, "f1_power=5");
+    set_param_from_text(before, values, "f2_power=3");
+    FormulaScene edited = twice;
+    take_slot_values(edited, before, values);
+    edited = with_slot_moved(edited, 1, -1);
+    const Scene after = formula_scene_to_scene(edited, "twice.formula.json");
+    const std::vector<float> carried = values_after_edit(before, values, after, edited);
+    EXPECT_EQ(param_value(after, carried, "f1_power"), 3.0f);
+    EXPECT_EQ(param_value(after, carried, "f2_power"), 5.0f);
 }
 
 }  // namespace
