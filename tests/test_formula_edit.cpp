@@ -153,7 +153,8 @@ TEST(FormulaEdit, TheUsersValuesTravelWithTheirSlots) {
 // Two slots of one formula swapped: their parameters have the same ids after as before, so only
 // the slots carrying their values (not ids) gives each its own.
 TEST(FormulaEdit, SwappedSlotsOfOneFormulaSwapTheirValues) {
-    const FormulaScene twice = with_formula_added(shipped("mandelbulb-formula"), library("mandelbulb"));
+    const FormulaScene twice =
+        with_formula_added(shipped("mandelbulb-formula"), library("mandelbulb"));
     const Scene before = formula_scene_to_scene(twice, "twice.formula.json");
     std::vector<float> values = default_param_values(before);
     set_param_from_text(before, values, "f1_power=5");
@@ -165,6 +166,39 @@ TEST(FormulaEdit, SwappedSlotsOfOneFormulaSwapTheirValues) {
     const std::vector<float> carried = values_after_edit(before, values, after, edited);
     EXPECT_EQ(param_value(after, carried, "f1_power"), 3.0f);
     EXPECT_EQ(param_value(after, carried, "f2_power"), 5.0f);
+}
+
+// What the editor saves reads back as the same scene: source, parameters and their values,
+// cameras, paths and lights; for every shipped file and for an edited hybrid.
+TEST(FormulaEdit, SavedScenesReadBackAsTheSameScene) {
+    std::vector<FormulaScene> scenes;
+    for (const auto& entry : fs::directory_iterator(FGR_TEST_FORMULA_DIR)) {
+        if (is_formula_file_name(entry.path())) scenes.push_back(read_formula_file(entry.path()));
+    }
+    ASSERT_EQ(scenes.size(), 36u);
+    FormulaScene edited = with_formula_added(shipped("menger-kifs"), library("amazing_box"));
+    edited = with_repeat(edited, 1, 3);
+    edited.sequence[0].values[0] = {2.5f, 2.5f, 2.5f};
+    scenes.push_back(edited);
+    for (const FormulaScene& scene : scenes) {
+        SCOPED_TRACE(scene.id);
+        const FormulaScene read = parse_formula_json(formula_scene_json(scene), "saved");
+        EXPECT_EQ(formula_kernel_source(read), formula_kernel_source(scene));
+        const Scene original = formula_scene_to_scene(scene, "a.formula.json");
+        const Scene again = formula_scene_to_scene(read, "a.formula.json");
+        EXPECT_EQ(default_param_values(again), default_param_values(original));
+        EXPECT_EQ(param_ids(again), param_ids(original));
+        ASSERT_EQ(again.cameras.size(), original.cameras.size());
+        EXPECT_EQ(again.cameras[0].view.position, original.cameras[0].view.position);
+        EXPECT_EQ(again.cameras[0].view.fov_degrees, original.cameras[0].view.fov_degrees);
+        ASSERT_EQ(again.camera_paths.size(), original.camera_paths.size());
+        EXPECT_EQ(again.camera_paths[0].keyframes.size(),
+                  original.camera_paths[0].keyframes.size());
+        ASSERT_EQ(again.lights.size(), original.lights.size());
+        EXPECT_NEAR(again.lights[0].angular_radius, original.lights[0].angular_radius, 1e-6);
+        EXPECT_EQ(again.march.step_factor, original.march.step_factor);
+        EXPECT_EQ(again.march.max_distance, original.march.max_distance);
+    }
 }
 
 }  // namespace

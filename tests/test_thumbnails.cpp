@@ -39,8 +39,8 @@ TEST(ThumbnailKey, FollowsTheSourceTheParametersTheCameraAndTheEffects) {
     other_fov.cameras[0].view.fov_degrees += 1.0f;
     Scene other_effects = scene;
     other_effects.effects ^= 1u;
-    for (const Scene* changed : {&other_source, &other_default, &other_camera, &other_fov,
-                                 &other_effects}) {
+    for (const Scene* changed :
+         {&other_source, &other_default, &other_camera, &other_fov, &other_effects}) {
         EXPECT_NE(thumbnail_key(*changed), key);
     }
     Scene renamed = scene;

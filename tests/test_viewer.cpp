@@ -371,6 +371,7 @@ TEST_F(ViewerTest, HybridEditRebuildsTheSceneAndKeepsTheOldImageWhileCompiling) 
 0 wait_idle
 0 key F12
 0 hybrid_remove 3
+0 hybrid_save bulb-box-edited
 0 wait_idle
 0.2 quit
 )", {"bulb-box"});
@@ -392,6 +393,12 @@ TEST_F(ViewerTest, HybridEditRebuildsTheSceneAndKeepsTheOldImageWhileCompiling) 
         << run.result;
     EXPECT_EQ(stat_text(run.result.out, "sequence"), "mandelbulb*1 amazing_box*3") << run.result;
     EXPECT_EQ(stat_text(run.result.out, "hybrid_edits"), "1") << run.result;
+    // Saved as a file that loads as the edited scene under its new id.
+    const FormulaScene saved = read_formula_file(dir() / "bulb-box-edited.formula.json");
+    EXPECT_EQ(saved.id, "bulb-box-edited");
+    ASSERT_EQ(saved.sequence.size(), 2u);
+    EXPECT_EQ(saved.sequence[1].formula->name, "amazing_box");
+    EXPECT_EQ(saved.sequence[1].repeat, 3);
 }
 
 TEST_F(ViewerTest, RecordedPathIsSavedAndRendersFromTheCommandLine) {

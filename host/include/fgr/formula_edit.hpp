@@ -7,6 +7,7 @@
 
 #include <cstddef>
 #include <stdexcept>
+#include <string>
 #include <vector>
 
 #include "fgr/formulas.hpp"
@@ -36,5 +37,10 @@ void take_slot_values(FormulaScene& scene, const Scene& running, const std::vect
 // `before` by id, as a reload does.
 std::vector<float> values_after_edit(const Scene& before, const std::vector<float>& values,
                                      const Scene& after, const FormulaScene& edited);
+
+// The scene as a formula file (sdk/README.md "Formula scenes and hybrids") that reads back as the
+// same sequence, settings, cameras, paths and lights: every value written, the distance and
+// estimate only where the sequence would not give them by itself.
+std::string formula_scene_json(const FormulaScene& scene);
 
 }  // namespace fgr

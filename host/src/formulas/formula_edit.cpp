@@ -2,10 +2,12 @@
 #include "fgr/formula_edit.hpp"
 
 #include <algorithm>
+#include <numbers>
 #include <set>
 #include <string>
 
 #include <fmt/format.h>
+#include <nlohmann/json.hpp>
 
 #include "fgr/parameters.hpp"
 
@@ -29,9 +31,8 @@ bool any_slot(const FormulaScene& scene, auto predicate) {
 // linear one (its folds and scales set the growth) where a file must choose. A delta estimate the
 // scene asked for stays while the distance allows it.
 void settle_sequence_settings(FormulaScene& scene) {
-    const bool any_own = any_slot(scene, [](const FormulaSlot& s) {
-        return s.formula->distance == FormulaDistance::Own;
-    });
+    const bool any_own = any_slot(
+        scene, [](const FormulaSlot& s) { return s.formula->distance == FormulaDistance::Own; });
     const bool any_log = any_slot(scene, [](const FormulaSlot& s) {
         return s.formula->distance == FormulaDistance::Logarithmic;
     });
@@ -40,8 +41,8 @@ void settle_sequence_settings(FormulaScene& scene) {
     } else {
         scene.distance = any_log ? FormulaDistance::Logarithmic : FormulaDistance::Linear;
     }
-    const bool all_analytic = !any_slot(
-        scene, [](const FormulaSlot& s) { return !s.formula->analytic_derivative; });
+    const bool all_analytic =
+        !any_slot(scene, [](const FormulaSlot& s) { return !s.formula->analytic_derivative; });
     if (!all_analytic) {
         scene.estimate = FormulaEstimate::Delta;
     } else if (scene.distance == FormulaDistance::Own) {
@@ -55,7 +56,87 @@ void settle_sequence_settings(FormulaScene& scene) {
     scene.bailout = std::min(scene.bailout, max_bailout);
 }
 
+using nlohmann::json;
+
+json vector_json(const auto& v) { return json::array({v.x, v.y, v.z}); }
+
+json view_json(const CameraView& view) {
+    return {{"position", vector_json(view.position)},
+            {"target", vector_json(view.target)},
+            {"up", vector_json(view.up)},
+            {"fov", view.fov_degrees}};
+}
+
+json slot_json(const FormulaSlot& slot) {
+    json entry = {{"formula", slot.formula->name}, {"repeat", slot.repeat}};
+    json parameters = json::object();
+    for (std::size_t i = 0; i < slot.formula->params.size(); ++i) {
+        const FormulaParam& param = slot.formula->params[i];
+        const auto& value = slot.values[i];
+        parameters[param.id] = param.type == ParamType::Float
+                                   ? json(value[0])
+                                   : json::array({value[0], value[1], value[2]});
+    }
+    entry["parameters"] = parameters;
+    return entry;
+}
+
+json light_json(const Light& light) {
+    json entry = {{"colour", vector_json(light.colour)}, {"intensity", light.intensity}};
+    if (light.type == LightType::Point) {
+        entry["type"] = "point";
+        entry["position"] = vector_json(light.vector);
+    } else {
+        entry["type"] = "directional";
+        entry["direction"] = vector_json(light.vector);
+        entry["angular_radius_degrees"] = light.angular_radius * (180.0 / std::numbers::pi);
+    }
+    return entry;
+}
+
 }  // namespace
+
+std::string formula_scene_json(const FormulaScene& scene) {
+    json document = {{"format", "fgr-formula"},
+                     {"version", kFormulaFormatVersion},
+                     {"id", scene.id},
+                     {"name", scene.name},
+                     {"description", scene.description},
+                     {"tags", scene.tags},
+                     {"iterations", scene.iterations},
+                     {"bailout", scene.bailout},
+                     {"step_factor", scene.march.step_factor},
+                     {"max_distance", scene.march.max_distance}};
+    json sequence = json::array();
+    for (const FormulaSlot& slot : scene.sequence) sequence.push_back(slot_json(slot));
+    document["sequence"] = sequence;
+    // A formula's own distance is what a file without "distance" gets; the others may be written.
+    if (scene.distance == FormulaDistance::Logarithmic) document["distance"] = "logarithmic";
+    if (scene.distance == FormulaDistance::Linear) document["distance"] = "linear";
+    document["estimate"] = scene.estimate == FormulaEstimate::Delta ? "delta" : "analytic";
+    json cameras = json::array();
+    for (const NamedCamera& camera : scene.cameras) {
+        json entry = view_json(camera.view);
+        entry["name"] = camera.name;
+        cameras.push_back(entry);
+    }
+    document["cameras"] = cameras;
+    json paths = json::array();
+    for (const CameraPath& path : scene.camera_paths) {
+        json keyframes = json::array();
+        for (const Keyframe& keyframe : path.keyframes) {
+            json entry = view_json(keyframe.view);
+            entry["time"] = keyframe.time;
+            keyframes.push_back(entry);
+        }
+        paths.push_back({{"name", path.name}, {"keyframes", keyframes}});
+    }
+    document["camera_paths"] = paths;
+    json lights = json::array();
+    for (const Light& light : scene.lights) lights.push_back(light_json(light));
+    document["lights"] = lights;
+    return document.dump(2) + "\n";
+}
 
 FormulaScene with_formula_added(FormulaScene scene, const Formula& formula) {
     if (scene.sequence.size() >= kFormulaMaxSlots) {

@@ -55,6 +55,7 @@ constexpr std::array kEventSyntax{
     EventSyntax{"hybrid_remove", ReplayAction::HybridRemove, 1, 1, "hybrid_remove N"},
     EventSyntax{"hybrid_move", ReplayAction::HybridMove, 2, 2, "hybrid_move N OFFSET"},
     EventSyntax{"hybrid_repeat", ReplayAction::HybridRepeat, 2, 2, "hybrid_repeat N COUNT"},
+    EventSyntax{"hybrid_save", ReplayAction::HybridSave, 1, 1, "hybrid_save ID"},
 };
 
 // Places in a hybrid's sequence and repeat counts a script may name (kFormulaMaxSlots and
@@ -175,7 +176,8 @@ void read_arguments(const LineParser& parser, const std::vector<std::string>& ar
         case ReplayAction::BrowserSearch:
             event.text = args[0] == "-" ? std::string() : key_name(args[0]);
             break;
-        case ReplayAction::HybridAdd: event.text = args[0]; break;
+        case ReplayAction::HybridAdd:
+        case ReplayAction::HybridSave: event.text = args[0]; break;
         case ReplayAction::BrowserPick:
             event.count = parser.integer(args[0], "N", 1, kMaxPick) - 1;
             break;

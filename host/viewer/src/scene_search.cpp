@@ -32,10 +32,9 @@ SceneSearchEntry search_entry(const Scene& scene, const FormulaScene* formula_sc
 bool matches_query(const SceneSearchEntry& entry, std::string_view query) {
     std::istringstream words{lower(query)};
     for (std::string word; words >> word;) {
-        const bool found = std::any_of(entry.words.begin(), entry.words.end(),
-                                       [&](const std::string& text) {
-                                           return text.find(word) != std::string::npos;
-                                       });
+        const bool found = std::any_of(
+            entry.words.begin(), entry.words.end(),
+            [&](const std::string& text) { return text.find(word) != std::string::npos; });
         if (!found) return false;
     }
     return true;

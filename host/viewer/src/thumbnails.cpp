@@ -37,7 +37,8 @@ std::string thumbnail_key(const Scene& scene) {
     uint64_t hash = fnv1a(0xcbf29ce484222325ull, kThumbnailFormat);
     hash = fnv1a(hash, scene.source);
     const std::vector<float> params = default_param_values(scene);
-    hash = fnv1a(hash, {reinterpret_cast<const char*>(params.data()), params.size() * sizeof(float)});
+    hash =
+        fnv1a(hash, {reinterpret_cast<const char*>(params.data()), params.size() * sizeof(float)});
     const CameraView& view = scene.cameras.front().view;
     for (int i = 0; i < 3; ++i) {
         hash = fnv1a(hash, bytes_of(view.position[i]));
@@ -202,9 +203,9 @@ Image8 ThumbnailWorker::render(const Scene& scene) {
     const int packet_width =
         packet_width_ ? packet_width_ : preferred_packet_width(device_->device.info);
     // The switches the view starts a scene with, so the kernel binary cached on disk serves both.
-    Renderer renderer(device_->device, device_->cache, scene,
-                      KernelSwitches{packet_width, scene.effects, false, false,
-                                     RenderMode::Shaded});
+    Renderer renderer(
+        device_->device, device_->cache, scene,
+        KernelSwitches{packet_width, scene.effects, false, false, RenderMode::Shaded});
     FrameRequest request;
     request.width = kThumbnailWidth;
     request.height = kThumbnailHeight;

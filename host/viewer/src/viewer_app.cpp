@@ -415,7 +415,8 @@ void ViewerApp::push_replay_event(const ReplayEvent& event) {
         case ReplayAction::HybridAdd:
         case ReplayAction::HybridRemove:
         case ReplayAction::HybridMove:
-        case ReplayAction::HybridRepeat: apply_replay_formula_event(event); break;
+        case ReplayAction::HybridRepeat:
+        case ReplayAction::HybridSave: apply_replay_formula_event(event); break;
     }
 }
 

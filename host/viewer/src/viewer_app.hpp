@@ -203,6 +203,9 @@ private:
     // replaces the scene once it compiles (apply_reloads), the old image staying meanwhile.
     void edit_hybrid(const std::function<FormulaScene(FormulaScene)>& edit);
     bool adopt_hybrid_edit(const ReloadResult& result);
+    // Writes the current formula scene, as edited and with the panel's values, as
+    // <output dir>/<id>.formula.json under the id `id`.
+    void save_formula_scene(const std::string& id);
     bool thumbnails_done();
     void apply_replay_formula_event(const ReplayEvent& event);
 
@@ -329,6 +332,7 @@ private:
     };
     std::optional<PendingHybrid> pending_hybrid_;
     std::string hybrid_error_;  // the last edit that was refused, one line
+    std::string save_id_;       // the panel's "save as" id
     int hybrid_edits_ = 0;      // adopted, for --stats
 
     FrameStats render_stats_;

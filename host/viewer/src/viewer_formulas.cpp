@@ -10,6 +10,7 @@
 #include <imgui_stdlib.h>
 #include <spdlog/spdlog.h>
 
+#include "fgr/atomic_file.hpp"
 #include "fgr/formula_edit.hpp"
 #include "fgr/parameters.hpp"
 
@@ -154,8 +155,8 @@ void ViewerApp::draw_thumbnail_cell(size_t index) {
         for (const std::string& tag : cell_scene.tags) tags += (tags.empty() ? "" : ", ") + tag;
         const FormulaScene* formula = formula_scene_of(index);
         ImGui::SetTooltip("%s (%s)\n%s%s%s%s%s", cell_scene.name.c_str(), cell_scene.id.c_str(),
-                          cell_scene.description.c_str(), tags.empty() ? "" : "\ntags: ",
-                          tags.c_str(),
+                          cell_scene.description.c_str(),
+                          tags.empty() ? "" : "\ntags: ", tags.c_str(),
                           formula ? ("\nsequence: " + sequence_text(*formula)).c_str() : "",
                           error != thumbnail_errors_.end() ? ("\n" + error->second).c_str() : "");
     }
@@ -182,7 +183,8 @@ void ViewerApp::draw_hybrid_section() {
         for (const Formula& candidate : formula_library()) {
             const std::string label = fmt::format("{}  ({})", candidate.title, candidate.family);
             if (ImGui::Selectable(label.c_str())) {
-                edit_hybrid([&](FormulaScene f) { return with_formula_added(std::move(f), candidate); });
+                edit_hybrid(
+                    [&](FormulaScene f) { return with_formula_added(std::move(f), candidate); });
             }
             if (ImGui::IsItemHovered()) ImGui::SetTooltip("%s", candidate.summary.c_str());
         }
@@ -194,6 +196,47 @@ void ViewerApp::draw_hybrid_section() {
         ImGui::TextColored(kCompilingColour, "compiling the new sequence... (the old image stays)");
     }
     if (!hybrid_error_.empty()) ImGui::TextColored(kErrorColour, "%s", hybrid_error_.c_str());
+    if (save_id_.empty()) save_id_ = scene().id + "-edited";
+    ImGui::InputText("##save id", &save_id_);
+    ImGui::SameLine();
+    if (ImGui::Button("Save as")) save_formula_scene(save_id_);
+    if (ImGui::IsItemHovered()) {
+        ImGui::SetTooltip(
+            "writes %s.formula.json to the output folder (--output-dir); copy it "
+            "into a plugin folder to load it",
+            save_id_.c_str());
+    }
+}
+
+void ViewerApp::save_formula_scene(const std::string& id) {
+    const FormulaScene* current = formula_scene_of(static_cast<size_t>(scene_index_));
+    if (current == nullptr) {
+        add_message(fmt::format("'{}' is not a formula scene: nothing to save", scene().id));
+        return;
+    }
+    FormulaScene formula = *current;
+    take_slot_values(formula, scene(), session().params);
+    formula.id = id;
+    // The panel's bailout and march settings, within what a file may say.
+    const auto value = [&](const char* param) {
+        return param_value(scene(), session().params, param);
+    };
+    formula.bailout = value("bailout");
+    formula.iterations = std::clamp(static_cast<int>(value("iterations")), 1, 1000);
+    formula.march.step_factor = std::clamp(value("step_factor"), 0.05f, 1.0f);
+    formula.march.max_distance = std::clamp(value("max_distance"), 1e-3f, 1e6f);
+    const std::filesystem::path file = options_.output_dir / (id + ".formula.json");
+    try {
+        const std::string text = formula_scene_json(formula);
+        parse_formula_json(text, file.string());  // an id the format refuses is said here
+        write_text_file_atomically(file, text);
+    } catch (const std::exception& error) {
+        spdlog::error("{}", error.what());
+        add_message(error.what());
+        return;
+    }
+    spdlog::info("saved '{}' ({}) as {}", id, sequence_text(formula), file.string());
+    add_message(fmt::format("saved {}", file.string()));
 }
 
 void ViewerApp::draw_hybrid_slot(const FormulaScene& formula, size_t slot) {
@@ -241,8 +284,8 @@ void ViewerApp::edit_hybrid(const std::function<FormulaScene(FormulaScene)>& edi
     }
     const FormulaScene* current = formula_scene_of(index);
     if (current == nullptr) {
-        add_message(fmt::format("'{}' is not a formula scene: it has no sequence to edit",
-                                scene().id));
+        add_message(
+            fmt::format("'{}' is not a formula scene: it has no sequence to edit", scene().id));
         return;
     }
     FormulaScene formula = *current;
@@ -250,7 +293,8 @@ void ViewerApp::edit_hybrid(const std::function<FormulaScene(FormulaScene)>& edi
     std::shared_ptr<const Scene> candidate;
     try {
         formula = edit(std::move(formula));
-        candidate = std::make_shared<const Scene>(formula_scene_to_scene(formula, scene().plugin_file));
+        candidate =
+            std::make_shared<const Scene>(formula_scene_to_scene(formula, scene().plugin_file));
     } catch (const std::exception& error) {
         hybrid_error_ = fmt::format("edit of '{}' refused: {}", scene().id, error.what());
         spdlog::error("{}", hybrid_error_);
@@ -270,8 +314,8 @@ bool ViewerApp::adopt_hybrid_edit(const ReloadResult& result) {
     pending_hybrid_.reset();
     const auto running = std::find(scenes_.begin(), scenes_.end(), result.request.replaces);
     if (running == scenes_.end()) {
-        hybrid_error_ = fmt::format("edit of '{}' dropped: the scene was reloaded meanwhile",
-                                    edit.scene->id);
+        hybrid_error_ =
+            fmt::format("edit of '{}' dropped: the scene was reloaded meanwhile", edit.scene->id);
         add_message(hybrid_error_);
         return true;
     }
@@ -285,11 +329,12 @@ bool ViewerApp::adopt_hybrid_edit(const ReloadResult& result) {
     }
     const auto index = static_cast<size_t>(running - scenes_.begin());
     const std::shared_ptr<const Scene> before = *running;
-    const std::vector<float> values =
-        sessions_.count(int(index)) ? sessions_.at(int(index)).params : default_param_values(*before);
+    const std::vector<float> values = sessions_.count(int(index)) ? sessions_.at(int(index)).params
+                                                                  : default_param_values(*before);
     adopt_scene(index, edit.scene);
     if (sessions_.count(int(index))) {
-        sessions_.at(int(index)).params = values_after_edit(*before, values, *edit.scene, edit.formula);
+        sessions_.at(int(index)).params =
+            values_after_edit(*before, values, *edit.scene, edit.formula);
     }
     spdlog::info("'{}' now iterates {}", edit.scene->id, sequence_text(edit.formula));
     add_message(fmt::format("sequence: {}", sequence_text(edit.formula)));
@@ -321,7 +366,9 @@ void ViewerApp::apply_replay_formula_event(const ReplayEvent& event) {
             switch_scene(static_cast<int>(matches[static_cast<size_t>(event.count)]));
             break;
         }
-        case ReplayAction::WaitThumbnails: thumbnails_awaited_ = true; break;
+        case ReplayAction::WaitThumbnails:
+            thumbnails_awaited_ = true;
+            break;
         case ReplayAction::HybridAdd: {
             const Formula* formula = find_formula(event.text);
             if (formula == nullptr) {
@@ -332,7 +379,9 @@ void ViewerApp::apply_replay_formula_event(const ReplayEvent& event) {
             break;
         }
         case ReplayAction::HybridRemove:
-            edit_hybrid([&](FormulaScene f) { return with_slot_removed(std::move(f), size_t(event.slot)); });
+            edit_hybrid([&](FormulaScene f) {
+                return with_slot_removed(std::move(f), size_t(event.slot));
+            });
             break;
         case ReplayAction::HybridMove:
             edit_hybrid([&](FormulaScene f) {
@@ -344,7 +393,11 @@ void ViewerApp::apply_replay_formula_event(const ReplayEvent& event) {
                 return with_repeat(std::move(f), size_t(event.slot), event.count);
             });
             break;
-        default: break;
+        case ReplayAction::HybridSave:
+            save_formula_scene(event.text);
+            break;
+        default:
+            break;
     }
 }
 

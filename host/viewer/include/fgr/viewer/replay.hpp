@@ -25,6 +25,7 @@
 //   hybrid_remove N       remove its Nth formula (1 is the first)
 //   hybrid_move N OFFSET  move its Nth formula OFFSET places (-1: up, 1: down)
 //   hybrid_repeat N COUNT repeat its Nth formula COUNT times
+//   hybrid_save ID        save the current formula scene as ID.formula.json in the output folder
 //                         (a hybrid edit rebuilds the scene like a reload: wait_reload waits
 //                         for it)
 //
@@ -56,7 +57,8 @@ enum class ReplayAction {
     HybridAdd,
     HybridRemove,
     HybridMove,
-    HybridRepeat
+    HybridRepeat,
+    HybridSave
 };
 
 struct ReplayEvent {
@@ -67,7 +69,8 @@ struct ReplayEvent {
     bool has_position = false;   // mouse_down / mouse_up with X Y
     int x = 0, y = 0;            // mouse_down / mouse_up position; mouse_move: DX DY; resize: W H
     int wheel = 0;               // wheel steps
-    std::string text;            // browser_search: the text; hybrid_add: the formula's name
+    std::string text;            // browser_search: the text; hybrid_add: the formula's name;
+                                 // hybrid_save: the new scene's id
     int slot = 0;                // hybrid edits: the formula's place, 0 the first
     int count = 0;               // browser_pick: the scene, 0 the first; hybrid_move: the offset;
                                  // hybrid_repeat: the repeat count

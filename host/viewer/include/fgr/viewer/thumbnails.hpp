@@ -53,8 +53,8 @@ private:
 struct Thumbnail {
     std::string key;
     std::string scene_id;
-    Image8 image;         // kThumbnailWidth x kThumbnailHeight, empty when it failed
-    std::string error;    // one line, when it failed
+    Image8 image;       // kThumbnailWidth x kThumbnailHeight, empty when it failed
+    std::string error;  // one line, when it failed
     bool from_disk = false;
 };
 
