@@ -47,6 +47,7 @@ std::string thumbnail_key(const Scene& scene) {
     }
     hash = fnv1a(hash, bytes_of(view.fov_degrees));
     hash = fnv1a(hash, bytes_of(scene.effects));
+    hash = fnv1a(hash, bytes_of(scene.default_mode));
     hash = fnv1a(hash, fmt::format("{}x{}", kThumbnailWidth, kThumbnailHeight));
     return fmt::format("{:016x}", hash);
 }
@@ -202,10 +203,11 @@ Image8 ThumbnailWorker::render(const Scene& scene) {
     }
     const int packet_width =
         packet_width_ ? packet_width_ : preferred_packet_width(device_->device.info);
-    // The switches the view starts a scene with, so the kernel binary cached on disk serves both.
+    // The switches the view starts a scene with (its effects, in its own mode: an inside-only
+    // scene renders only in the brute-force one), so the kernel cached on disk serves both.
     Renderer renderer(
         device_->device, device_->cache, scene,
-        KernelSwitches{packet_width, scene.effects, false, false, RenderMode::Shaded});
+        KernelSwitches{packet_width, scene.effects, false, false, scene.default_mode});
     FrameRequest request;
     request.width = kThumbnailWidth;
     request.height = kThumbnailHeight;
