@@ -4,6 +4,12 @@
 #
 #   [FGR_SCENE=ID] bench/viewer_screenshot.sh [OUT.png]   (default: mandelbulb, bench/results/viewer.png)
 #
+# FGR_REPLAY (replay lines, default "0 wait_idle") drives the viewer first and FGR_READY (default
+# "view refined") is the log line to wait for before the grab; the formula browser's screenshot:
+#
+#   FGR_SCENE=bulb-box FGR_REPLAY=$'0 browser_search hybrid\n0 wait_thumbnails\n0 hybrid_add quaternion\n0 wait_reload\n0 wait_idle\n0 key F12' \
+#       FGR_READY="screenshot: wrote" bench/viewer_screenshot.sh bench/results/viewer_browser.png
+#
 # Needs a built tree (BUILD_DIR, default build) and xvfb, xauth and imagemagick.
 set -euo pipefail
 repo=$(cd "$(dirname "$0")/.." && pwd)
@@ -15,13 +21,14 @@ for tool in xvfb-run import; do
 done
 work=$(mktemp -d)
 trap 'rm -rf "$work"' EXIT
-printf '0 wait_idle\n10 quit\n' > "$work/replay.txt"
+printf '%s\n10 quit\n' "${FGR_REPLAY:-0 wait_idle}" > "$work/replay.txt"
+ready=${FGR_READY:-view refined}
 cat > "$work/session.sh" <<SESSION
 #!/usr/bin/env bash
 set -e
 "$build_dir/bin/fgr" -v view ${FGR_SCENE:-mandelbulb} --width 1280 --height 720 --samples 4 \
-    --replay "$work/replay.txt" --exit-after 600 2> "$work/log" &
-until grep -q "view refined" "$work/log"; do
+    --replay "$work/replay.txt" --output-dir "$work" --exit-after 600 2> "$work/log" &
+until grep -q "$ready" "$work/log"; do
     kill -0 \$! 2>/dev/null || { cat "$work/log" >&2; exit 1; }
     sleep 0.5
 done

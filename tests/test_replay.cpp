@@ -130,6 +130,45 @@ TEST(ReplayParse, WaitReload) {
               "demo.replay:1: wait_reload takes wait_reload, got 1 argument");
 }
 
+TEST(ReplayParse, BrowserAndHybridEditorEvents) {
+    const auto events = parse(
+        "0 browser_search box_julia\n0 browser_search -\n0 browser_pick 3\n0 wait_thumbnails\n"
+        "0 hybrid_add amazing_box\n0 hybrid_remove 2\n0 hybrid_move 2 -1\n"
+        "0 hybrid_repeat 1 4\n");
+    ASSERT_EQ(events.size(), 8u);
+    EXPECT_EQ(events[0].action, ReplayAction::BrowserSearch);
+    EXPECT_EQ(events[0].text, "box julia") << "underscores stand for spaces";
+    EXPECT_EQ(events[1].text, "") << "- clears the search";
+    EXPECT_EQ(events[2].action, ReplayAction::BrowserPick);
+    EXPECT_EQ(events[2].count, 2) << "N counts from 1";
+    EXPECT_EQ(events[3].action, ReplayAction::WaitThumbnails);
+    EXPECT_TRUE(is_wait(events[3].action));
+    EXPECT_EQ(events[4].action, ReplayAction::HybridAdd);
+    EXPECT_EQ(events[4].text, "amazing_box") << "formula names keep their underscores";
+    EXPECT_EQ(events[5].action, ReplayAction::HybridRemove);
+    EXPECT_EQ(events[5].slot, 1);
+    EXPECT_EQ(events[6].action, ReplayAction::HybridMove);
+    EXPECT_EQ(events[6].slot, 1);
+    EXPECT_EQ(events[6].count, -1);
+    EXPECT_EQ(events[7].action, ReplayAction::HybridRepeat);
+    EXPECT_EQ(events[7].slot, 0);
+    EXPECT_EQ(events[7].count, 4);
+    EXPECT_EQ(parse_error("0 hybrid_remove 0\n"), "demo.replay:1: N 0 is out of range [1, 64]");
+    EXPECT_EQ(parse_error("0 hybrid_move 1 up\n"),
+              "demo.replay:1: OFFSET must be an integer, got 'up'");
+    EXPECT_EQ(parse_error("0 browser_pick\n"),
+              "demo.replay:1: browser_pick takes browser_pick N, got 0 arguments");
+}
+
+TEST(ReplayClock, WaitThumbnailsHoldsTheScriptUntilResumed) {
+    ReplayClock clock(script({{0.0, ReplayAction::WaitThumbnails}, {0.0, ReplayAction::Quit}}));
+    EXPECT_EQ(clock.due(0.0).size(), 1u);
+    EXPECT_TRUE(clock.waiting());
+    EXPECT_TRUE(clock.due(5.0).empty());
+    clock.resume(5.0);
+    EXPECT_EQ(clock.due(5.0).size(), 1u);
+}
+
 TEST(ReplayParse, CommentsBlankLinesAndSpacingAreIgnored) {
     const auto events = parse(
         "# a demo\n"

@@ -25,7 +25,10 @@
 
 #include "child_process.hpp"
 #include "fgr/camera_path_file.hpp"
+#include "fgr/formulas.hpp"
 #include "fgr/image_io.hpp"
+#include "fgr/viewer/thumbnails.hpp"
+#include "hermetic_caches.hpp"
 
 namespace fgr {
 namespace {
@@ -310,6 +313,92 @@ TEST_F(ViewerTest, SwitchingScenesChangesTheImageAndKeepsEachScenesCamera) {
     const std::vector<double> position = stat_values(run.result.out, "camera_position");
     ASSERT_EQ(position.size(), 3u);
     EXPECT_LT(length(position), 3.0 * 0.97) << run.result;
+}
+
+// The formula browser: a search finds the Bulb-Box hybrid, its thumbnail is rendered and kept in
+// the kernel cache's folder, picking it switches the view to it, and the next start reads the
+// thumbnail instead of rendering it.
+TEST_F(ViewerTest, FormulaBrowserFindsAScenePicksItAndCachesItsThumbnail) {
+    const std::string script = R"(0 wait_idle
+0 browser_search BULB_box
+0 wait_thumbnails
+0 browser_pick 1
+0 wait_idle
+0 key F12
+0.2 quit
+)";
+    const fs::path file = fs::path(FGR_TEST_FORMULA_DIR) / "bulb-box.formula.json";
+    const std::string key = viewer::thumbnail_key(formula_scene_to_scene(read_formula_file(file), file));
+    const fs::path thumbnail = test::test_kernel_cache() / "thumbnails" / (key + ".png");
+    fs::remove(thumbnail);
+
+    const ViewerRun first = view(script);
+    ASSERT_EQ(first.result.exit_code, 0) << first.result;
+    EXPECT_EQ(stat_text(first.result.out, "scene"), "bulb-box") << first.result;
+    EXPECT_EQ(stat_text(first.result.out, "sequence"), "mandelbulb*1 amazing_box*1") << first.result;
+    EXPECT_NE(first.result.err.find("thumbnail of 'bulb-box' rendered"), std::string::npos)
+        << first.result;
+    ASSERT_TRUE(fs::exists(thumbnail)) << "the thumbnail is cached on disk" << first.result;
+    const Image8 cached = read_png(thumbnail);
+    EXPECT_EQ(cached.width, viewer::kThumbnailWidth);
+    EXPECT_EQ(cached.height, viewer::kThumbnailHeight);
+    long lit = 0;
+    for (const uint8_t channel : cached.rgb) lit += channel > 40;
+    EXPECT_GT(lit, long(cached.rgb.size() / 20)) << "the thumbnail shows the fractal";
+    ASSERT_EQ(first.screenshots.size(), 1u) << first.result;
+    EXPECT_EQ(read_png(first.screenshots[0]).width, kWidth);
+
+    const ViewerRun second = view(script);
+    ASSERT_EQ(second.result.exit_code, 0) << second.result;
+    EXPECT_EQ(second.result.err.find("thumbnail of 'bulb-box' rendered"), std::string::npos)
+        << "the second start reads the thumbnail" << second.result;
+    EXPECT_NE(second.result.err.find("thumbnail of 'bulb-box' read from"), std::string::npos)
+        << second.result;
+    EXPECT_EQ(stat_text(second.result.out, "scene"), "bulb-box") << second.result;
+}
+
+// The hybrid editor: an edit is built on the render thread and then replaces the scene (the log
+// says so in that order; a screenshot asked for in the edit's frame is still the old image), the
+// new sequence shows; an edit the sequence cannot take is refused in one line and changes nothing.
+// (That the old scene stays in view for the whole build is not timed here: with the kernel caches
+// warm the build can end within a frame.)
+TEST_F(ViewerTest, HybridEditRebuildsTheSceneAndKeepsTheOldImageWhileCompiling) {
+    const ViewerRun run = view(R"(0 wait_idle
+0 key F12
+0 hybrid_repeat 2 3
+0 key F12
+0 wait_reload
+0 wait_idle
+0 key F12
+0 hybrid_remove 3
+0 hybrid_save bulb-box-edited
+0 wait_idle
+0.2 quit
+)", {"bulb-box"});
+    ASSERT_EQ(run.result.exit_code, 0) << run.result;
+    ASSERT_EQ(run.screenshots.size(), 3u) << run.result;
+    const Image8 before = read_png(run.screenshots[0]);
+    const Image8 while_compiling = read_png(run.screenshots[1]);
+    const Image8 after = read_png(run.screenshots[2]);
+    EXPECT_EQ(while_compiling.rgb, before.rgb) << "the old scene stays until the new one builds";
+    EXPECT_GT(mean_abs_difference(before, after), 2.0) << "the new sequence shows" << run.result;
+    const std::string& err = run.result.err;
+    const size_t building = err.find("building the edited 'bulb-box': mandelbulb, amazing_box x3");
+    const size_t adopted = err.find("'bulb-box' now iterates mandelbulb, amazing_box x3");
+    ASSERT_NE(building, std::string::npos) << run.result;
+    ASSERT_NE(adopted, std::string::npos) << run.result;
+    EXPECT_LT(building, adopted);
+    EXPECT_NE(err.find("edit of 'bulb-box' refused: no formula 3 in a sequence of 2"),
+              std::string::npos)
+        << run.result;
+    EXPECT_EQ(stat_text(run.result.out, "sequence"), "mandelbulb*1 amazing_box*3") << run.result;
+    EXPECT_EQ(stat_text(run.result.out, "hybrid_edits"), "1") << run.result;
+    // Saved as a file that loads as the edited scene under its new id.
+    const FormulaScene saved = read_formula_file(dir() / "bulb-box-edited.formula.json");
+    EXPECT_EQ(saved.id, "bulb-box-edited");
+    ASSERT_EQ(saved.sequence.size(), 2u);
+    EXPECT_EQ(saved.sequence[1].formula->name, "amazing_box");
+    EXPECT_EQ(saved.sequence[1].repeat, 3);
 }
 
 TEST_F(ViewerTest, RecordedPathIsSavedAndRendersFromTheCommandLine) {

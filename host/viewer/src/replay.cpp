@@ -48,7 +48,21 @@ constexpr std::array kEventSyntax{
     EventSyntax{"wait_idle", ReplayAction::WaitIdle, 0, 0, "wait_idle"},
     EventSyntax{"wait_reload", ReplayAction::WaitReload, 0, 0, "wait_reload"},
     EventSyntax{"quit", ReplayAction::Quit, 0, 0, "quit"},
+    EventSyntax{"browser_search", ReplayAction::BrowserSearch, 1, 1, "browser_search TEXT"},
+    EventSyntax{"browser_pick", ReplayAction::BrowserPick, 1, 1, "browser_pick N"},
+    EventSyntax{"wait_thumbnails", ReplayAction::WaitThumbnails, 0, 0, "wait_thumbnails"},
+    EventSyntax{"hybrid_add", ReplayAction::HybridAdd, 1, 1, "hybrid_add NAME"},
+    EventSyntax{"hybrid_remove", ReplayAction::HybridRemove, 1, 1, "hybrid_remove N"},
+    EventSyntax{"hybrid_move", ReplayAction::HybridMove, 2, 2, "hybrid_move N OFFSET"},
+    EventSyntax{"hybrid_repeat", ReplayAction::HybridRepeat, 2, 2, "hybrid_repeat N COUNT"},
+    EventSyntax{"hybrid_save", ReplayAction::HybridSave, 1, 1, "hybrid_save ID"},
 };
+
+// Places in a hybrid's sequence and repeat counts a script may name (kFormulaMaxSlots and
+// kFormulaMaxRepeat are smaller; the viewer says so in one line), and scenes in the browser.
+constexpr int kMaxSlotNumber = 64;
+constexpr int kMaxMove = 16;
+constexpr int kMaxPick = 100000;
 
 // SDL's button numbering.
 constexpr std::array<std::pair<std::string_view, int>, 3> kButtons{{
@@ -159,8 +173,28 @@ void read_arguments(const LineParser& parser, const std::vector<std::string>& ar
             event.x = parser.integer(args[0], "WIDTH", 1, kMaxWindowSide);
             event.y = parser.integer(args[1], "HEIGHT", 1, kMaxWindowSide);
             break;
+        case ReplayAction::BrowserSearch:
+            event.text = args[0] == "-" ? std::string() : key_name(args[0]);
+            break;
+        case ReplayAction::HybridAdd:
+        case ReplayAction::HybridSave: event.text = args[0]; break;
+        case ReplayAction::BrowserPick:
+            event.count = parser.integer(args[0], "N", 1, kMaxPick) - 1;
+            break;
+        case ReplayAction::HybridRemove:
+            event.slot = parser.integer(args[0], "N", 1, kMaxSlotNumber) - 1;
+            break;
+        case ReplayAction::HybridMove:
+            event.slot = parser.integer(args[0], "N", 1, kMaxSlotNumber) - 1;
+            event.count = parser.integer(args[1], "OFFSET", -kMaxMove, kMaxMove);
+            break;
+        case ReplayAction::HybridRepeat:
+            event.slot = parser.integer(args[0], "N", 1, kMaxSlotNumber) - 1;
+            event.count = parser.integer(args[1], "COUNT", 1, kMaxSlotNumber);
+            break;
         case ReplayAction::WaitIdle:
         case ReplayAction::WaitReload:
+        case ReplayAction::WaitThumbnails:
         case ReplayAction::Quit:
             break;
     }
@@ -221,6 +255,11 @@ std::vector<ReplayEvent> load_replay(const std::filesystem::path& file) {
     return parse_replay(input, name);
 }
 
+bool is_wait(ReplayAction action) {
+    return action == ReplayAction::WaitIdle || action == ReplayAction::WaitReload ||
+           action == ReplayAction::WaitThumbnails;
+}
+
 ReplayClock::ReplayClock(std::vector<ReplayEvent> events) : events_(std::move(events)) {}
 
 std::vector<ReplayEvent> ReplayClock::due(double now_seconds) {
@@ -238,8 +277,7 @@ std::vector<ReplayEvent> ReplayClock::due(double now_seconds) {
         // Count the next delay from when this event was due, not from when due() noticed it, so
         // a slow frame does not stretch the rest of the script.
         last_event_time_ = due_time;
-        waiting_ = event.action == ReplayAction::WaitIdle ||
-                   event.action == ReplayAction::WaitReload;
+        waiting_ = is_wait(event.action);
         ready.push_back(event);
         ++next_;
     }

@@ -77,6 +77,11 @@ void check_replay_keys(const std::vector<ReplayEvent>& events, const std::string
                                          "PageDown, Left_Shift...)",
                                          file, event.line, event.key));
         }
+        if (event.action == ReplayAction::HybridAdd && find_formula(event.text) == nullptr) {
+            throw UsageError(fmt::format("{}:{}: unknown formula '{}' (`fgr list --formulas` "
+                                         "names them)",
+                                         file, event.line, event.text));
+        }
     }
 }
 
@@ -188,6 +193,8 @@ int ViewerApp::run() {
     // --precision double on a device without it fails here, as `fgr render` does.
     use_double_precision(precision_, session().camera.to_view(), options_.width,
                          worker_->device_info());
+    thumbnails_ = std::make_unique<ThumbnailWorker>(options_.device, options_.packet_width,
+                                                    default_thumbnail_directory());
     watch_sources();
     spdlog::info("viewer on {}; press H for the key bindings", worker_->device_info().name);
     if (!replay_events_.empty()) replay_ = std::make_unique<ReplayClock>(replay_events_);
@@ -208,6 +215,7 @@ int ViewerApp::run() {
         update_camera(dt);
         submit_view();
         receive_frame();
+        receive_thumbnails();
         for (std::string& message : worker_->take_messages()) add_message(std::move(message));
         poll_sources();
         if (redraws_pending_ > 0 || seconds_since(last_draw_) >= kMaxUndrawnSeconds) {
@@ -226,6 +234,7 @@ int ViewerApp::run() {
     if (const int pending = worker_->status().pending_screenshots; pending > 0) {
         spdlog::info("finishing {} screenshot(s) before exit", pending);
     }
+    thumbnails_.reset();  // finishes the thumbnail it is making
     worker_->stop();
     for (std::string& message : worker_->take_messages()) add_message(std::move(message));
     if (options_.print_stats) print_stats();
@@ -318,6 +327,7 @@ void ViewerApp::handle_key_down(SDL_Scancode key, bool repeat) {
         case SDL_SCANCODE_F1: show_help_ = !show_help_; break;
         case SDL_SCANCODE_TAB: show_panel_ = !show_panel_; break;
         case SDL_SCANCODE_F11: toggle_fullscreen(); break;
+        case SDL_SCANCODE_B: show_browser_ = !show_browser_; break;
         default: break;
     }
 }
@@ -326,9 +336,12 @@ void ViewerApp::feed_replay() {
     if (!replay_) return;
     const double now = seconds_since(start_);
     if (replay_->waiting()) {
-        if (awaited_changes_ ? watched_changes_handled_ <= *awaited_changes_ : !view_idle()) {
-            return;
-        }
+        const bool still_waiting =
+            thumbnails_awaited_ ? !thumbnails_done()
+            : awaited_changes_  ? watched_changes_handled_ <= *awaited_changes_
+                                : !view_idle();
+        if (still_waiting) return;
+        thumbnails_awaited_ = false;
         awaited_changes_.reset();
         replay_window_size_.reset();
         replay_->resume(now);
@@ -396,6 +409,14 @@ void ViewerApp::push_replay_event(const ReplayEvent& event) {
         case ReplayAction::WaitIdle: break;  // the clock holds the script until view_idle()
         case ReplayAction::WaitReload: awaited_changes_ = watched_changes_handled_; break;
         case ReplayAction::Quit: quit_ = true; break;
+        case ReplayAction::BrowserSearch:
+        case ReplayAction::BrowserPick:
+        case ReplayAction::WaitThumbnails:
+        case ReplayAction::HybridAdd:
+        case ReplayAction::HybridRemove:
+        case ReplayAction::HybridMove:
+        case ReplayAction::HybridRepeat:
+        case ReplayAction::HybridSave: apply_replay_formula_event(event); break;
     }
 }
 
@@ -530,6 +551,7 @@ void ViewerApp::add_message(std::string message) {
 void ViewerApp::switch_scene(int index) {
     playing_ = false;
     scene_index_ = index;
+    scene_list_follows_ = true;
     if (!sessions_.count(index)) sessions_[index] = default_session(scene());
     spdlog::info("scene '{}'", scene().id);
 }
@@ -623,9 +645,18 @@ void ViewerApp::set_window_size(int width, int height) {
     SDL_SetWindowSize(window_.get(), width, height);
 }
 
-void ViewerApp::print_stats() const {
+void ViewerApp::print_stats() {
     const FlyCamera& camera = session().camera;
     fmt::print("scene {}\n", scene().id);
+    if (const FormulaScene* formula = formula_scene_of(static_cast<size_t>(scene_index_))) {
+        std::string sequence;
+        for (const FormulaSlot& slot : formula->sequence) {
+            sequence += fmt::format("{}{}*{}", sequence.empty() ? "" : " ", slot.formula->name,
+                                    slot.repeat);
+        }
+        fmt::print("sequence {}\n", sequence);
+        fmt::print("hybrid_edits {}\n", hybrid_edits_);
+    }
     fmt::print("frames_shown {}\n", frames_shown_);
     fmt::print("{}\n", format_summary("render_ms", render_stats_.summary()));
     fmt::print("{}\n", format_summary("ui_frame_ms", ui_stats_.summary()));

@@ -1,7 +1,7 @@
 #pragma once
 // The viewer application shared by its source files: viewer_app.cpp (window, input, camera,
-// actions), viewer_panel.cpp (the Dear ImGui panel) and viewer_reload.cpp (hot reload). Private
-// to fgr_viewer.
+// actions), viewer_panel.cpp (the Dear ImGui panel), viewer_reload.cpp (hot reload) and
+// viewer_formulas.cpp (the formula browser and the hybrid editor). Private to fgr_viewer.
 
 #include <SDL2/SDL.h>
 #include <SDL2/SDL_opengl.h>
@@ -10,6 +10,7 @@
 #include <imgui.h>
 
 #include <chrono>
+#include <functional>
 #include <stdexcept>
 #include <deque>
 #include <filesystem>
@@ -21,6 +22,7 @@
 #include <vector>
 
 #include "fgr/camera_path_file.hpp"
+#include "fgr/formulas.hpp"
 #include "fgr/image_io.hpp"
 #include "fgr/precision.hpp"
 #include "fgr/scene.hpp"
@@ -30,6 +32,8 @@
 #include "fgr/viewer/frame_stats.hpp"
 #include "fgr/viewer/render_worker.hpp"
 #include "fgr/viewer/replay.hpp"
+#include "fgr/viewer/scene_search.hpp"
+#include "fgr/viewer/thumbnails.hpp"
 #include "fgr/viewer/viewer.hpp"
 
 #include <fmt/format.h>
@@ -184,6 +188,27 @@ private:
     void apply_reloads();
     void adopt_scene(size_t index, const std::shared_ptr<const Scene>& scene);
 
+    // The formula browser and the hybrid editor (viewer_formulas.cpp).
+    // The sequence of scene `index` when it is a formula scene (read from its file once, then
+    // what the hybrid editor made of it); null for other scenes and unreadable files.
+    const FormulaScene* formula_scene_of(size_t index);
+    std::vector<size_t> browser_matches();
+    const std::string& thumbnail_key_of(size_t index);
+    void receive_thumbnails();
+    void draw_browser();
+    void draw_thumbnail_cell(size_t index);
+    void draw_hybrid_section();
+    void draw_hybrid_slot(const FormulaScene& formula, size_t slot);
+    // Makes the edit of the current formula scene; the render thread builds the result, which
+    // replaces the scene once it compiles (apply_reloads), the old image staying meanwhile.
+    void edit_hybrid(const std::function<FormulaScene(FormulaScene)>& edit);
+    bool adopt_hybrid_edit(const ReloadResult& result);
+    // Writes the current formula scene, as edited and with the panel's values, as
+    // <output dir>/<id>.formula.json under the id `id`.
+    void save_formula_scene(const std::string& id);
+    bool thumbnails_done();
+    void apply_replay_formula_event(const ReplayEvent& event);
+
     // Actions.
     void switch_scene(int index);
     void reset_camera(int camera_index);
@@ -212,6 +237,7 @@ private:
     void draw_messages();
     void draw_help();
     void draw_build_error();
+    void draw_browser_window();
 
     std::vector<CameraPath> playable_paths() const;
     // Selects the current scene's playable path `name` for P (UsageError naming the paths).
@@ -219,7 +245,7 @@ private:
     const Scene& scene() const { return *scenes_[static_cast<size_t>(scene_index_)]; }
     SceneSession& session() { return sessions_.at(scene_index_); }
     const SceneSession& session() const { return sessions_.at(scene_index_); }
-    void print_stats() const;
+    void print_stats();
 
     ViewerOptions options_;
     std::vector<std::shared_ptr<const Scene>> scenes_;
@@ -245,6 +271,7 @@ private:
     float speed_factor_ = 1.0f;
     bool show_panel_ = true;
     bool show_help_ = false;
+    bool scene_list_follows_ = true;  // the panel's scene list scrolls to the current scene
     bool fullscreen_ = false;
     bool playing_ = false;
     bool loop_playback_ = true;
@@ -283,6 +310,30 @@ private:
     std::optional<uint64_t> awaited_changes_;
     // The window size a replayed resize asked for: the view is not idle until it has it.
     std::optional<std::pair<int, int>> replay_window_size_;
+
+    // The formula browser: its search, the thumbnails' textures by key, and the sequences of
+    // formula scenes (with the scene version each belongs to: a reload makes it stale).
+    std::unique_ptr<ThumbnailWorker> thumbnails_;
+    bool show_browser_ = false;
+    std::string browser_query_;
+    std::map<std::string, std::unique_ptr<ImageTexture>> thumbnail_textures_;
+    std::map<std::string, std::string> thumbnail_errors_;
+    std::map<const Scene*, std::pair<std::shared_ptr<const Scene>, std::string>> thumbnail_keys_;
+    struct FormulaSource {
+        std::shared_ptr<const Scene> scene;
+        std::optional<FormulaScene> formula;  // none: not a formula scene, or unreadable
+    };
+    std::map<size_t, FormulaSource> formula_sources_;
+    bool thumbnails_awaited_ = false;  // a replayed wait_thumbnails is holding the script
+    // The hybrid edit the render thread is building: the new scene and its sequence.
+    struct PendingHybrid {
+        std::shared_ptr<const Scene> scene;
+        FormulaScene formula;
+    };
+    std::optional<PendingHybrid> pending_hybrid_;
+    std::string hybrid_error_;  // the last edit that was refused, one line
+    std::string save_id_;       // the panel's "save as" id
+    int hybrid_edits_ = 0;      // adopted, for --stats
 
     FrameStats render_stats_;
     FrameStats ui_stats_;

@@ -1,5 +1,6 @@
 // The viewer's Dear ImGui panel: status line, scenes, cameras and paths, a widget per
-// parameter, effects, adaptive quality, messages, key bindings and build errors.
+// parameter, effects, adaptive quality, messages, key bindings and build errors (the formula
+// browser and the sequence editor are in viewer_formulas.cpp).
 #include "viewer_app.hpp"
 
 #include <algorithm>
@@ -20,6 +21,7 @@ namespace fgr::viewer {
 namespace {
 
 constexpr float kPanelWidth = 340.0f;
+constexpr size_t kSceneListRows = 8;  // the scene list's height; it scrolls beyond
 
 const std::pair<const char*, std::pair<int, int>> kWindowPresets[] = {
     {"1366x768", {1366, 768}},
@@ -42,6 +44,7 @@ const std::pair<const char*, const char*> kKeyBindings[] = {
     {"F12", "screenshot at full resolution and quality"},
     {"Tab", "show / hide the panel"},
     {"F11", "fullscreen"},
+    {"B", "formula browser: thumbnails of the scenes, search"},
     {"H or F1", "this help"},
     {"Escape", "quit"}};
 
@@ -60,6 +63,7 @@ void ViewerApp::draw_ui() {
     } else {
         panel_min_ = panel_max_ = ImVec2(0, 0);
     }
+    draw_browser_window();
     draw_build_error();
     if (show_help_) draw_help();
     ImGui::Render();
@@ -134,6 +138,7 @@ void ViewerApp::draw_panel() {
                 ImGui::GetIO().Framerate);
     ImGui::PushItemWidth(-150);
     draw_scene_section();
+    draw_hybrid_section();
     draw_camera_section();
     draw_projection_section();
     draw_params_section();
@@ -147,6 +152,14 @@ void ViewerApp::draw_panel() {
 
 void ViewerApp::draw_scene_section() {
     if (!ImGui::CollapsingHeader("Scene", ImGuiTreeNodeFlags_DefaultOpen)) return;
+    if (ImGui::Button(show_browser_ ? "Hide the formula browser (B)" : "Formula browser (B)")) {
+        show_browser_ = !show_browser_;
+    }
+    // A list of its own that scrolls: with the formula scenes there are fifty, and the sections
+    // below must stay in reach.
+    const float list_height = ImGui::GetTextLineHeightWithSpacing() *
+                              static_cast<float>(std::min<size_t>(scenes_.size(), kSceneListRows));
+    ImGui::BeginChild("scenes", ImVec2(0, list_height + 4), false);
     for (size_t i = 0; i < scenes_.size(); ++i) {
         const bool selected = static_cast<int>(i) == scene_index_;
         if (ImGui::Selectable(fmt::format("{}  ({})", scenes_[i]->name, scenes_[i]->id).c_str(),
@@ -154,7 +167,10 @@ void ViewerApp::draw_scene_section() {
             !selected) {
             switch_scene(static_cast<int>(i));
         }
+        if (selected && scene_list_follows_) ImGui::SetScrollHereY();
     }
+    scene_list_follows_ = false;
+    ImGui::EndChild();
     ImGui::TextWrapped("%s", scene().description.c_str());
 }
 

@@ -116,6 +116,7 @@ void ViewerApp::reload_source(const std::filesystem::path& file) {
 void ViewerApp::apply_reloads() {
     for (const ReloadResult& result : worker_->take_reloads()) {
         ++watched_changes_handled_;
+        if (adopt_hybrid_edit(result)) continue;
         const auto running = std::find(scenes_.begin(), scenes_.end(), result.request.replaces);
         if (running == scenes_.end()) continue;  // replaced again meanwhile
         const std::string& id = result.request.candidate->id;

@@ -17,6 +17,17 @@
 //                         watched file: a scene reloaded or its update refused, a new scene
 //                         added, a plugin that failed to load
 //   quit                  close the viewer
+//   browser_search TEXT   open the formula browser and search for TEXT (underscores stand for
+//                         spaces; "-" clears the search)
+//   browser_pick N        switch to the browser's Nth scene (1 is the first found)
+//   wait_thumbnails       pause the script until the browser's thumbnails are all made
+//   hybrid_add NAME       append formula NAME to the current formula scene's sequence
+//   hybrid_remove N       remove its Nth formula (1 is the first)
+//   hybrid_move N OFFSET  move its Nth formula OFFSET places (-1: up, 1: down)
+//   hybrid_repeat N COUNT repeat its Nth formula COUNT times
+//   hybrid_save ID        save the current formula scene as ID.formula.json in the output folder
+//                         (a hybrid edit rebuilds the scene like a reload: wait_reload waits
+//                         for it)
 //
 // KEY is an SDL key name: W, A, F12, PageDown, Escape, "Left Shift" is written Left_Shift
 // (underscores stand for spaces).
@@ -39,7 +50,15 @@ enum class ReplayAction {
     Resize,
     WaitIdle,
     WaitReload,
-    Quit
+    Quit,
+    BrowserSearch,
+    BrowserPick,
+    WaitThumbnails,
+    HybridAdd,
+    HybridRemove,
+    HybridMove,
+    HybridRepeat,
+    HybridSave
 };
 
 struct ReplayEvent {
@@ -50,19 +69,28 @@ struct ReplayEvent {
     bool has_position = false;   // mouse_down / mouse_up with X Y
     int x = 0, y = 0;            // mouse_down / mouse_up position; mouse_move: DX DY; resize: W H
     int wheel = 0;               // wheel steps
+    std::string text;            // browser_search: the text; hybrid_add: the formula's name;
+                                 // hybrid_save: the new scene's id
+    int slot = 0;                // hybrid edits: the formula's place, 0 the first
+    int count = 0;               // browser_pick: the scene, 0 the first; hybrid_move: the offset;
+                                 // hybrid_repeat: the repeat count
     int line = 0;                // line number in the file, for messages
 };
 
 // Parses a replay script. `source_name` prefixes error messages ("FILE:LINE: reason"), which are
 // thrown as std::runtime_error: unknown event, wrong argument count, a negative, non-finite or
 // non-numeric delay, an unknown button, non-integer or out-of-range numbers (resize sides in
-// [1, 16384]).
+// [1, 16384], hybrid places and counts in [1, 64], offsets in [-16, 16]).
 std::vector<ReplayEvent> parse_replay(std::istream& input, const std::string& source_name);
 
 // Reads and parses FILE; a missing or unreadable file is a std::runtime_error naming it.
 std::vector<ReplayEvent> load_replay(const std::filesystem::path& file);
 
-// Plays a script against a clock: due events come out in order, and a wait (WaitIdle, WaitReload)
+// Whether the script waits at this event until the viewer says it may go on.
+bool is_wait(ReplayAction action);
+
+// Plays a script against a clock: due events come out in order, and a wait (WaitIdle, WaitReload,
+// WaitThumbnails)
 // holds everything after it until resume() is called (the viewer calls it once what the wait
 // names has happened).
 class ReplayClock {
