@@ -175,7 +175,7 @@ TEST(FormulaEdit, SavedScenesReadBackAsTheSameScene) {
     for (const auto& entry : fs::directory_iterator(FGR_TEST_FORMULA_DIR)) {
         if (is_formula_file_name(entry.path())) scenes.push_back(read_formula_file(entry.path()));
     }
-    ASSERT_EQ(scenes.size(), 36u);
+    ASSERT_GE(scenes.size(), 36u);
     FormulaScene edited = with_formula_added(shipped("menger-kifs"), library("amazing_box"));
     edited = with_repeat(edited, 1, 3);
     edited.sequence[0].values[0] = {2.5f, 2.5f, 2.5f};

@@ -6,6 +6,7 @@
 // own ctest (SceneCheck.*.formula.json).
 #include <algorithm>
 #include <cmath>
+#include <complex>
 #include <cstdio>
 #include <filesystem>
 #include <map>
@@ -124,6 +125,14 @@ TEST(FormulaFile, RefusesBadDocumentsInOneLineNamingTheFile) {
         {"delta estimate of an own distance",
          [&] { json d = document({{{"formula", "menger"}}}); d["estimate"] = "delta"; return d; }(),
          "\"estimate\": \"delta\" needs \"distance\""},
+        {"analytic estimate of an inside-only formula",
+         [&] { json d = document({{{"formula", "tetrabrot"}}}); d["estimate"] = "analytic"; return d; }(),
+         "\"estimate\" \"analytic\": tetrabrot has no distance estimate, only an inside test"},
+        {"delta estimate of a hybrid with an inside-only formula",
+         [&] { json d = document({bulb, {{"formula", "lambdabulb"}}}); d["estimate"] = "delta"; return d; }(),
+         "lambdabulb has no distance estimate"},
+        {"unknown estimate", [&] { json d = document({bulb}); d["estimate"] = "exact"; return d; }(),
+         "must be \"analytic\", \"delta\" or \"inside\""},
         {"misspelt key", [&] { json d = document({bulb}); d["iteratons"] = 5; return d; }(),
          "iteratons"},
         {"wrong format", [&] { json d = document({bulb}); d["format"] = "fgr-ifs"; return d; }(),
@@ -203,6 +212,26 @@ TEST(FormulaFuzz, ParsesOrRefusesEveryMutatedFile) {
     EXPECT_LT(accepted, kCases * 19 / 20);
 }
 
+// A formula with no safe distance estimate makes an inside test, the brute-force mode's scene,
+// and so does any hybrid it is in, or a file that asks; every other scene keeps its estimate.
+TEST(FormulaFile, FormulasWithoutAnEstimateMakeInsideOnlyScenesForTheBruteForceMode) {
+    const json bulb = {{"formula", "mandelbulb"}};
+    const Scene tetrabrot = scene_of(document({{{"formula", "tetrabrot"}}}));
+    EXPECT_TRUE(tetrabrot.inside_only());
+    EXPECT_EQ(tetrabrot.default_mode, RenderMode::Brute);
+    EXPECT_TRUE(scene_of(document({bulb, {{"formula", "lambdabulb"}}})).inside_only());
+    const Scene bulb_alone = scene_of(document({bulb}));
+    EXPECT_FALSE(bulb_alone.inside_only());
+    EXPECT_EQ(bulb_alone.default_mode, RenderMode::Shaded);
+    json asked = document({bulb});
+    asked["estimate"] = "inside";
+    EXPECT_TRUE(scene_of(asked).inside_only());
+    for (const Formula& formula : formula_library()) {
+        const Scene scene = scene_of(document({{{"formula", formula.name}}}));
+        EXPECT_EQ(scene.inside_only(), formula.estimate == FormulaEstimate::Inside) << formula.name;
+    }
+}
+
 // --- Rendering --------------------------------------------------------------------------------
 
 class FormulaScenes : public test::DeviceSuite<> {
@@ -215,6 +244,28 @@ protected:
         request.view = scene.cameras.front().view;
         request.params = default_param_values(scene);
         return renderer.render(request);
+    }
+
+    // The scene's inside test at each point: a 1x1 brute-force render from the point, sampling
+    // from the eye, hits at depth 0 exactly when the eye is in the set.
+    static std::vector<bool> inside(const Scene& scene, const std::vector<glm::dvec3>& points) {
+        KernelSwitches switches;
+        switches.packet_width = 16;
+        switches.mode = RenderMode::Brute;
+        Renderer renderer(*device_, *cache_, scene, switches);
+        std::vector<bool> verdicts;
+        for (const glm::dvec3& point : points) {
+            FrameRequest probe;
+            probe.width = probe.height = 1;
+            probe.view = scene.cameras.front().view;
+            probe.view.target += point - probe.view.position;
+            probe.view.position = point;
+            probe.params = default_param_values(scene);
+            set_param_from_text(scene, probe.params, "brute_solid=set");
+            set_param_from_text(scene, probe.params, "brute_samples=1");
+            verdicts.push_back(renderer.render(probe).depth[0] == 0.0f);
+        }
+        return verdicts;
     }
 
     static std::vector<float> distances(const Scene& scene, const std::vector<glm::vec3>& points) {
@@ -334,6 +385,58 @@ TEST_F(FormulaScenes, TheDeltaEstimateAgreesWithTheAnalyticOne) {
             EXPECT_LT(high, 1.05) << c.name;
         }
     }
+}
+
+}  // namespace
+}  // namespace fgr
+
+namespace fgr {
+namespace {
+
+// The Tetrabrot's inside test against the bicomplex numbers' other description: in idempotent
+// coordinates z1 + z2 j = (z1 - i z2) e1 + (z1 + i z2) e2 squares component by component, so the
+// orbit of (x, y, z, 0) is two complex Mandelbrot orbits, of x + i (y - z) and x + i (y + z), and
+// |z|^2 = (|u|^2 + |v|^2) / 2. The host runs those (double) with the scene's bailout and
+// iterations; points whose largest |z| on the way comes within 2% of the bailout are left out
+// (float against double). A wrong sign or term in the kernel's square moves the set.
+TEST_F(FormulaScenes, TheTetrabrotIsTwoMandelbrotSetsInIdempotentCoordinates) {
+    const Scene tetrabrot = scene_of(document({{{"formula", "tetrabrot"}}}));
+    const auto params = default_param_values(tetrabrot);
+    const double bailout = param_value(tetrabrot, params, "bailout");
+    const int iterations = int(param_value(tetrabrot, params, "iterations"));
+    test::FuzzRng rng(2026);
+    std::vector<glm::dvec3> points;
+    std::vector<bool> expected;
+    while (points.size() < 240) {
+        const glm::dvec3 p(rng.uniform(-1.9f, 0.4f), rng.uniform(-0.8f, 0.8f), rng.uniform(-0.8f, 0.8f));
+        std::complex<double> u(p.x, p.y - p.z), v(p.x, p.y + p.z);
+        const std::complex<double> cu = u, cv = v;
+        bool in = true, close = false;
+        for (int i = 0; i <= iterations; ++i) {
+            const double norm = std::sqrt(0.5 * (std::norm(u) + std::norm(v)));
+            close = close || std::abs(norm - bailout) < 0.02 * bailout;
+            if (norm > bailout) {
+                in = false;
+                break;
+            }
+            if (i < iterations) {
+                u = u * u + cu;
+                v = v * v + cv;
+            }
+        }
+        if (close) continue;
+        points.push_back(p);
+        expected.push_back(in);
+    }
+    const std::vector<bool> verdicts = inside(tetrabrot, points);
+    int in_count = 0;
+    for (std::size_t i = 0; i < points.size(); ++i) {
+        in_count += expected[i];
+        EXPECT_EQ(verdicts[i], expected[i]) << "at (" << points[i].x << ", " << points[i].y
+                                            << ", " << points[i].z << ")";
+    }
+    EXPECT_GT(in_count, 20);  // both verdicts are tried
+    EXPECT_LT(in_count, 220);
 }
 
 }  // namespace

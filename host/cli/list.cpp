@@ -106,9 +106,20 @@ void print_formulas() {
         }
         fmt::print("  {:<22} {} - {}\n", formula.name, formula.title, formula.summary);
         fmt::print("    from: {}\n", formula.origin);
-        fmt::print("    tags: {}; distance: {}{}\n", fmt::join(formula.tags, ", "),
-                   distance_name(formula.distance),
-                   formula.analytic_derivative ? "" : ", delta estimate (no analytic derivative)");
+        std::string distance;
+        switch (formula.estimate) {
+            case FormulaEstimate::Analytic:
+                distance = fmt::format("distance: {}", distance_name(formula.distance));
+                break;
+            case FormulaEstimate::Delta:
+                distance = fmt::format("distance: {}, delta estimate only",
+                                       distance_name(formula.distance));
+                break;
+            case FormulaEstimate::Inside:
+                distance = "no distance estimate: an inside test, rendered by brute force";
+                break;
+        }
+        fmt::print("    tags: {}; {}\n", fmt::join(formula.tags, ", "), distance);
         std::string params;
         for (const FormulaParam& param : formula.params) {
             params += fmt::format("{}{} [{}, {}]", params.empty() ? "" : ", ", param.id,

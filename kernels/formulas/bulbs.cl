@@ -108,24 +108,27 @@ inline void formula_xenodreambuie(vec3* z, real* w, real* dr, const vec3 c, floa
     *z = v3_add(v3(rn * s * fgr_cos(theta), rn * s * fgr_sin(theta), rn * fgr_cos(phi)), c);
 }
 
-/* Lambdabulb: the logistic (lambda) map z <- lambda z (1 - z) (Mandelbrot 1980) in triplex
- * algebra, as in Aexion's Lambdabulb (fractalforums.com, 2011): z <- lambda * (z - z^n), the
- * product multiplying radii and adding angles. |d/dz| <= |lambda| (1 + n r^(n-1)). */
+/* Lambdabulb (Paul Nylander, bugman123.com "Hypercomplex", and fractalrebels,
+ * fractalforums.com 2011; Mandelbulber 2's "Mandelbulb Lambda"): the logistic map
+ * z <- lambda (z - z^n) of Mandelbrot's lambda form (1980) in triplex numbers, the power in the
+ * latitude form and the product Nylander's trigonometry-free one: radii multiply, azimuths add,
+ * and the heights combine as r1 b.z + r2 a.z over the horizontal radii r1, r2. A Julia-type set:
+ * lambda is fixed and the point only starts the orbit. */
+inline vec3 triplex_multiply(vec3 a, vec3 b) {
+    const real ra = sqrt(a.x * a.x + a.y * a.y);
+    const real rb = sqrt(b.x * b.x + b.y * b.y);
+    const real k = 1.0f - a.z * b.z / fmax(ra * rb, fgr_real(1e-20f));
+    return v3(k * (a.x * b.x - a.y * b.y), k * (a.x * b.y + a.y * b.x), ra * b.z + rb * a.z);
+}
+
 inline void formula_lambdabulb(vec3* z, real* w, real* dr, const vec3 c, float power,
                                vec3 lambda) {
     (void)w;
     (void)c;
     real r_pow;
-    const vec3 zn = formula_bulb_power(*z, power, 0, &r_pow);
-    const vec3 d = v3_sub(*z, zn);
-    /* Triplex product lambda * d: radii multiply, azimuths and polar angles add. */
-    const real rl = v3_length(lambda), rd = v3_length(d);
-    const real phi = atan2(lambda.y, lambda.x) + atan2(d.y, d.x);
-    const real theta = atan2(sqrt(lambda.x * lambda.x + lambda.y * lambda.y), lambda.z) +
-                       atan2(sqrt(d.x * d.x + d.y * d.y), d.z);
-    const real r = rl * rd, s = fgr_sin(theta);
-    *dr = rl * (1.0f + power * r_pow) * *dr;
-    *z = v3(r * s * fgr_cos(phi), r * s * fgr_sin(phi), r * fgr_cos(theta));
+    const vec3 zn = formula_bulb_power(*z, power, 1, &r_pow);
+    *dr = v3_length(lambda) * (1.0f + power * r_pow) * *dr;
+    *z = triplex_multiply(v3_sub(*z, zn), lambda);
 }
 
 /* Makin's 3D Mandelbrot (fractalforums.com, 2009): (x^2 - y^2 - z^2, 2 x y, 2 x z) + c, the
@@ -148,10 +151,25 @@ inline void formula_benesi_pine_tree(vec3* z, real* w, real* dr, const vec3 c) {
     *z = v3_add(v3(p.x * p.x - yz * yz, t * (p.y * p.y - p.z * p.z), 2.0f * t * p.y * p.z), c);
 }
 
-/* Box fold, then the power-2 bulb (Mandelbulber 2's "Box Fold Bulb Pow 2", after Tglad's box fold
- * and White and Nylander's bulb): the fold is an isometry, so the bulb's derivative is all there
- * is. */
-inline void formula_box_fold_bulb(vec3* z, real* w, real* dr, const vec3 c, float folding_limit) {
-    *z = fold_box(*z, folding_limit);
-    formula_white_nylander(z, w, dr, c);
+/* Riemann sphere fractal (msltoe, fractalforums.com 2011, "Riemann fractals"; Mandelbulber 2's
+ * "Riemann Sphere Msltoe"): z scaled onto the sphere of radius `scale`, projected
+ * stereographically to the plane (s, t), folded there by |sin(pi s + shift)|, mapped back onto
+ * the sphere and given the radius |z|^(2 (1 + s^2 + t^2)) - 1/4, then + c. The radius grows with
+ * the projection's own stretch, so no running derivative bounds it: an inside test. */
+inline void formula_riemann_sphere(vec3* z, real* w, real* dr, const vec3 c, float scale,
+                                   float shift_s, float shift_t) {
+    (void)w;
+    const real r = v3_length(*z);
+    const vec3 p = v3_scale(*z, scale / fmax(r, fgr_real(1e-20f)));
+    /* The projection's pole (0, 0, 1) maps to infinity: keep 1 - z away from 0. */
+    const real q = 1.0f / fmax(1.0f - p.z, fgr_real(1e-6f));
+    real s = p.x * q, t = p.y * q;
+    /* Mandelbulber caps the exponent at 36 (r^72 stays a float below r = 3.4). */
+    const real exponent = fmin(1.0f + s * s + t * t, fgr_real(36.0f));
+    s = fabs(fgr_sin(M_PI_F * s + shift_s));
+    t = fabs(fgr_sin(M_PI_F * t + shift_t));
+    const real radius = fgr_pow(r * r, exponent) - 0.25f;
+    const real k = radius / (1.0f + s * s + t * t);
+    *dr = 2.0f * exponent * r * *dr + 1.0f;
+    *z = v3_add(v3(2.0f * s * k, 2.0f * t * k, (s * s + t * t - 1.0f) * k), c);
 }

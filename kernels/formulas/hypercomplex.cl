@@ -88,3 +88,34 @@ inline void formula_quaternion_power_julia(vec3* z, real* w, real* dr, const vec
     *w += julia_w;
     *dr = power * r_pow * *dr;
 }
+
+/* The bicomplex numbers (Corrado Segre, 1892; the 3D slices of their Mandelbrot set are Dominic
+ * Rochon's Tetrabrot, 2000): z1 + z2 j with z1 = x + i y, z2 = z + i w and i j = j i, j^2 = -1,
+ * so (z1 + z2 j)^2 = (z1^2 - z2^2) + 2 z1 z2 j. Unlike the quaternions' the product commutes but
+ * is not conformal (it has zero divisors), so no scalar running derivative bounds the distance:
+ * the bicomplex formulas' scenes are inside tests for the brute-force mode, and dr here is only a
+ * growth measure. */
+inline void bicomplex_square(vec3* z, real* w) {
+    const vec3 p = *z;
+    const real q = *w;
+    *z = v3(p.x * p.x - p.y * p.y - p.z * p.z + q * q, 2.0f * (p.x * p.y - p.z * q),
+            2.0f * (p.x * p.z - p.y * q));
+    *w = 2.0f * (p.x * q + p.y * p.z);
+}
+
+/* Tetrabrot: the bicomplex Mandelbrot set z^2 + c, on the slice w = 0 (Rochon 2000). */
+inline void formula_tetrabrot(vec3* z, real* w, real* dr, const vec3 c) {
+    *dr = 2.0f * quaternion_length(*z, *w) * *dr + 1.0f;
+    bicomplex_square(z, w);
+    *z = v3_add(*z, c);
+}
+
+/* Bicomplex Julia set: z^2 + k for a fixed bicomplex k. */
+inline void formula_bicomplex_julia(vec3* z, real* w, real* dr, const vec3 c, vec3 julia,
+                                    float julia_w) {
+    (void)c;
+    *dr = 2.0f * quaternion_length(*z, *w) * *dr;
+    bicomplex_square(z, w);
+    *z = v3_add(*z, julia);
+    *w += julia_w;
+}

@@ -26,12 +26,14 @@ namespace fgr {
 // scales), or a distance of the formula's own (formula_NAME_distance: the Kleinian surfaces).
 enum class FormulaDistance { Logarithmic, Linear, Own };
 
-// How the distance's derivative is had: the running derivative dr the formulas carry (analytic),
-// or Mandelbulber's "delta DE": |z| after the same number of steps from the point nudged along
+// How a scene's distance is had: from the running derivative dr the formulas carry (analytic);
+// by Mandelbulber's "delta DE": |z| after the same number of steps from the point nudged along
 // each axis, its gradient by finite differences (four orbits a distance instead of one), for maps
-// whose dr is no bound (a formula without an analytic derivative takes it by default; none of the
-// shipped ones is such) or to compare with the analytic one.
-enum class FormulaEstimate { Analytic, Delta };
+// whose dr is no bound or to compare with the analytic one; or not at all (inside): the scene is
+// an inside test, the orbit staying within the bailout for every step, that the brute-force mode
+// renders (--mode brute), for maps neither estimate is safe for. In this order each is a weaker
+// claim than the one before.
+enum class FormulaEstimate { Analytic, Delta, Inside };
 
 struct FormulaParam {
     std::string id;  // the kernel argument's name; a scene's parameter id (prefixed in hybrids)
@@ -54,9 +56,10 @@ struct Formula {
     // Takes "axis" and "angle" parameters, passed to the kernel as one rotation3 built once per
     // point (after the formula's other parameters).
     bool rotation = false;
-    // Whether dr bounds how fast the orbit moves with the point (`fgr check`'s Lipschitz and
-    // march-safety checks pass with it); without, its scenes take the delta estimate.
-    bool analytic_derivative = true;
+    // The strongest estimate its scenes can have: analytic where dr bounds how fast the orbit
+    // moves with the point (`fgr check`'s Lipschitz and march-safety checks pass with it), inside
+    // where no estimate passed them (a sequence takes its weakest member's).
+    FormulaEstimate estimate = FormulaEstimate::Analytic;
     std::vector<FormulaParam> params;  // in the kernel function's order (axis and angle last)
     // What its scene starts with: iterations, bailout, the march's step factor (the DE's
     // overestimate, as `fgr check` measures it) and how far rays go, and a view.
@@ -68,6 +71,9 @@ struct Formula {
     float max_distance = 10.0f;
     CameraView view;
 };
+
+// "analytic", "delta" or "inside", as scene files spell it.
+const char* formula_estimate_name(FormulaEstimate estimate);
 
 // Every formula, by family then name.
 std::span<const Formula> formula_library();

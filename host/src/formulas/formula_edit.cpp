@@ -41,11 +41,13 @@ void settle_sequence_settings(FormulaScene& scene) {
     } else {
         scene.distance = any_log ? FormulaDistance::Logarithmic : FormulaDistance::Linear;
     }
-    const bool all_analytic =
-        !any_slot(scene, [](const FormulaSlot& s) { return !s.formula->analytic_derivative; });
-    if (!all_analytic) {
-        scene.estimate = FormulaEstimate::Delta;
-    } else if (scene.distance == FormulaDistance::Own) {
+    FormulaEstimate available = FormulaEstimate::Analytic;
+    for (const FormulaSlot& slot : scene.sequence) {
+        available = std::max(available, slot.formula->estimate);
+    }
+    if (scene.estimate < available) {
+        scene.estimate = available;
+    } else if (scene.distance == FormulaDistance::Own && scene.estimate == FormulaEstimate::Delta) {
         scene.estimate = FormulaEstimate::Analytic;
     }
     float max_bailout = 1e10f;
@@ -113,7 +115,7 @@ std::string formula_scene_json(const FormulaScene& scene) {
     // A formula's own distance is what a file without "distance" gets; the others may be written.
     if (scene.distance == FormulaDistance::Logarithmic) document["distance"] = "logarithmic";
     if (scene.distance == FormulaDistance::Linear) document["distance"] = "linear";
-    document["estimate"] = scene.estimate == FormulaEstimate::Delta ? "delta" : "analytic";
+    document["estimate"] = formula_estimate_name(scene.estimate);
     json cameras = json::array();
     for (const NamedCamera& camera : scene.cameras) {
         json entry = view_json(camera.view);

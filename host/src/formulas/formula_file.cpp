@@ -154,30 +154,36 @@ FormulaDistance distance_from(const json& document, const std::vector<FormulaSlo
     return any_log ? FormulaDistance::Logarithmic : FormulaDistance::Linear;
 }
 
-// Analytic where every formula's dr is a bound; a file may ask for the delta estimate anyway
-// (it cannot ask for an analytic one its formulas do not have).
+// The weakest of the sequence's estimates; a file may ask for a weaker one (the delta estimate,
+// or an inside test), not a stronger one its formulas do not have.
 FormulaEstimate estimate_from(const json& document, const FormulaScene& scene) {
-    const auto without = std::find_if(scene.sequence.begin(), scene.sequence.end(),
-                                      [](const FormulaSlot& s) { return !s.formula->analytic_derivative; });
-    if (!document.contains("estimate")) {
-        return without == scene.sequence.end() ? FormulaEstimate::Analytic : FormulaEstimate::Delta;
-    }
+    const FormulaSlot& weakest = *std::max_element(
+        scene.sequence.begin(), scene.sequence.end(),
+        [](const FormulaSlot& a, const FormulaSlot& b) { return a.formula->estimate < b.formula->estimate; });
+    const FormulaEstimate available = weakest.formula->estimate;
+    if (!document.contains("estimate")) return available;
     const json& value = document.at("estimate");
-    if (value == "delta") {
-        if (scene.distance == FormulaDistance::Own) {
-            fail("\"estimate\": \"delta\" needs \"distance\" \"logarithmic\" or \"linear\" ({} "
-                 "has a distance of its own)", scene.sequence[0].formula->name);
-        }
-        return FormulaEstimate::Delta;
-    }
+    FormulaEstimate asked;
     if (value == "analytic") {
-        if (without != scene.sequence.end()) {
-            fail("\"estimate\": \"analytic\": {} has no analytic derivative (use \"delta\")",
-                 without->formula->name);
-        }
-        return FormulaEstimate::Analytic;
+        asked = FormulaEstimate::Analytic;
+    } else if (value == "delta") {
+        asked = FormulaEstimate::Delta;
+    } else if (value == "inside") {
+        asked = FormulaEstimate::Inside;
+    } else {
+        fail("\"estimate\" {} must be \"analytic\", \"delta\" or \"inside\"", shown(value));
     }
-    fail("\"estimate\" {} must be \"analytic\" or \"delta\"", shown(value));
+    if (asked < available) {
+        fail("\"estimate\" {}: {} has {} (use {})", shown(value), weakest.formula->name,
+             available == FormulaEstimate::Delta ? "no analytic derivative"
+                                                 : "no distance estimate, only an inside test",
+             available == FormulaEstimate::Delta ? "\"delta\" or \"inside\"" : "\"inside\"");
+    }
+    if (asked == FormulaEstimate::Delta && scene.distance == FormulaDistance::Own) {
+        fail("\"estimate\": \"delta\" needs \"distance\" \"logarithmic\" or \"linear\" ({} "
+             "has a distance of its own)", scene.sequence[0].formula->name);
+    }
+    return asked;
 }
 
 void march_from(const json& document, FormulaScene& scene) {

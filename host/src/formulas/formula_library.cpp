@@ -91,6 +91,14 @@ Formula stepping(Formula f, float step_factor) {
     return f;
 }
 
+// No estimate passed `fgr check` (the map is not conformal, or stretches unboundedly): the
+// formula's scenes are inside tests, rendered by brute force. max_distance is where sampling
+// along a ray ends.
+Formula inside_only(Formula f) {
+    f.estimate = FormulaEstimate::Inside;
+    return f;
+}
+
 Formula box(Formula f, double distance = 9.0) {
     f.iterations = 12;
     f.bailout = 10000.0f;
@@ -153,6 +161,28 @@ std::vector<Formula> build_library() {
         {"bulb", "polynomial", "benesi"},
         "x^2 - y^2 - z^2, and (y, z) turned by 2x / |(y, z)|: Benesi's pine tree",
         "Matt Benesi, fractalforums.com 2010 (Mandelbulber 2)", D::Logarithmic, {}))), 0.7f));
+    Formula lambdabulb = inside_only(bulb(formula("lambdabulb", "Lambdabulb", "bulbs",
+        {"bulb", "power", "julia", "lambda"},
+        "the logistic map lambda (z - z^n) in triplex numbers: the Mandelbulb's Lambda form",
+        "Paul Nylander (bugman123.com) and fractalrebels, fractalforums.com 2011 (Mandelbulber 2's "
+        "Mandelbulb Lambda), after Mandelbrot's lambda map (1980)",
+        D::Logarithmic,
+        {power(2.0f), vector("lambda", "Lambda", -4.0f, 4.0f, 1.6f, 0.4f, 0.3f,
+                             "the constant the difference is multiplied by")})));
+    lambdabulb.view = view(2.8, -3.2, 1.8, 0.3, 0.0, 0.0, 50.0f);
+    all.push_back(lambdabulb);
+    Formula riemann = inside_only(bulb(formula("riemann_sphere", "Riemann sphere", "bulbs",
+        {"bulb", "sphere", "stereographic"},
+        "stereographic projection, a sine fold in the plane and back, radius |z|^(2 (1 + s^2 + "
+        "t^2))",
+        "msltoe, fractalforums.com 2011 (Mandelbulber 2's Riemann Sphere Msltoe)",
+        D::Logarithmic,
+        {scalar("scale", "Scale", 0.5f, 2.0f, 1.0f, "the sphere z is scaled onto"),
+         scalar("shift_s", "Shift s", -3.14159f, 3.14159f, 0.0f, "the fold's phase along s"),
+         scalar("shift_t", "Shift t", -3.14159f, 3.14159f, 0.0f, "the fold's phase along t")})));
+    riemann.bailout = 10.0f;
+    riemann.view = view(4.0, -4.6, 2.8, 0.0, 0.0, 0.0, 50.0f);
+    all.push_back(riemann);
     // --- hypercomplex ---
     const Formula quaternion_plain = low_power(bulb(formula("quaternion", "Quaternion Mandelbrot",
         "hypercomplex", {"hypercomplex", "quaternion"}, "q^2 + c in the quaternions, slice w = 0",
@@ -199,6 +229,22 @@ std::vector<Formula> build_library() {
     qpower_julia.params = {scalar("power", "Power", 2.0f, 8.0f, 3.0f, "the exponent n"),
                            julia(-0.2f, 0.6f, 0.2f), julia_w(0.0f)};
     all.push_back(qpower_julia);
+    Formula tetrabrot = inside_only(low_power(bulb(formula("tetrabrot", "Tetrabrot",
+        "hypercomplex", {"hypercomplex", "bicomplex"},
+        "the bicomplex Mandelbrot set z^2 + c, slice w = 0",
+        "Dominic Rochon, 2000, in Corrado Segre's bicomplex numbers (1892)", D::Logarithmic, {}),
+        12)));
+    tetrabrot.view = view(1.4, -2.6, 1.6, -0.6, 0.0, 0.0, 50.0f);
+    all.push_back(tetrabrot);
+    Formula bicomplex_julia = tetrabrot;
+    bicomplex_julia.name = "bicomplex_julia";
+    bicomplex_julia.title = "Bicomplex Julia";
+    bicomplex_julia.tags = {"hypercomplex", "bicomplex", "julia"};
+    bicomplex_julia.summary = "z^2 + k for a fixed bicomplex k, slice w = 0";
+    bicomplex_julia.origin = "after Rochon, 2000 (bicomplex Julia sets)";
+    bicomplex_julia.params = {julia(-0.12f, 0.75f, 0.1f), julia_w(0.0f)};
+    bicomplex_julia.view = view(1.8, -2.4, 1.4, 0.0, 0.0, 0.0, 50.0f);
+    all.push_back(bicomplex_julia);
     // --- boxes ---
     const std::vector<FormulaParam> mandelbox_params = {
         scalar("scale", "Scale", -3.0f, 3.0f, 2.0f, "the step's scale (|scale| at least 1.2)"),
@@ -330,6 +376,15 @@ std::vector<Formula> build_library() {
 std::span<const Formula> formula_library() {
     static const std::vector<Formula> library = build_library();
     return library;
+}
+
+const char* formula_estimate_name(FormulaEstimate estimate) {
+    switch (estimate) {
+        case FormulaEstimate::Analytic: return "analytic";
+        case FormulaEstimate::Delta: return "delta";
+        case FormulaEstimate::Inside: return "inside";
+    }
+    return "analytic";
 }
 
 const Formula* find_formula(std::string_view name) {

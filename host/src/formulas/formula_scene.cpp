@@ -145,6 +145,9 @@ std::string formula_param_id(std::size_t slots, std::size_t slot, const std::str
 
 std::string formula_kernel_source(const FormulaScene& scene) {
     std::string source = "#define FGR_KERNEL_API 2\n#define FGR_SCENE_HAS_COLOUR\n";
+    // An inside test, not a distance: the host reads this line (Scene::inside_only) and renders
+    // the scene by brute force.
+    if (scene.estimate == FormulaEstimate::Inside) source += "#define FGR_SCENE_INSIDE_ONLY\n";
     for (const char* family : kFamilies) {
         const bool used = std::any_of(scene.sequence.begin(), scene.sequence.end(),
                                       [&](const FormulaSlot& s) { return s.formula->family == family; });
@@ -193,6 +196,22 @@ std::string formula_kernel_source(const FormulaScene& scene) {
               "    *dr_out = dr;\n"
               "    *steps_out = steps;\n"
               "}\n";
+    if (scene.estimate == FormulaEstimate::Inside) {
+        source += "inline mask formula_scene_inside(const vec3 c, PARAMS, const int record,\n"
+                  "                                 orbit_trap* trap) {\n"
+                  "    const float bailout2 = param_bailout * param_bailout;\n"
+                  "    vec3 z;\n"
+                  "    real w, dr;\n"
+                  "    mask steps;\n"
+                  "    formula_scene_iterate(c, PARAMS_PASS, (mask)(param_iterations), bailout2,\n"
+                  "                          record, trap, &z, &w, &dr, &steps);\n"
+                  "    (void)dr;\n"
+                  "    (void)steps;\n"
+                  "    return v3_length2(z) + w * w <= bailout2;  /* a NaN orbit is outside */\n"
+                  "}\n"
+                  "FGR_TRAP_COLOURED_INSIDE_SCENE(formula_scene_inside)\n";
+        return source;
+    }
     source += "inline real formula_scene_orbit(const vec3 c, PARAMS, const int record,\n"
               "                                orbit_trap* trap) {\n"
               "    vec3 z;\n"
@@ -227,7 +246,8 @@ Scene formula_scene_to_scene(const FormulaScene& formula_scene, const std::files
     scene.lights = formula_scene.lights;
     scene.effects = FGR_EFFECT_AMBIENT_OCCLUSION | FGR_EFFECT_SOFT_SHADOWS;
     scene.march = formula_scene.march;
-    scene.default_mode = RenderMode::Shaded;
+    scene.default_mode = formula_scene.estimate == FormulaEstimate::Inside ? RenderMode::Brute
+                                                                          : RenderMode::Shaded;
     const std::size_t slots = formula_scene.sequence.size();
     for (std::size_t slot = 0; slot < slots; ++slot) {
         const FormulaSlot& entry = formula_scene.sequence[slot];
