@@ -49,7 +49,7 @@ std::span<const KernelFile> kernel_prelude() {
     return files;
 }
 
-const KernelFile* formula_family(std::string_view family) {
+std::span<const KernelFile> formula_families() {
     static constexpr std::array files{
         KernelFile{"formulas/bulbs.cl", formulas_bulbs_cl},
         KernelFile{"formulas/hypercomplex.cl", formulas_hypercomplex_cl},
@@ -57,7 +57,11 @@ const KernelFile* formula_family(std::string_view family) {
         KernelFile{"formulas/kifs.cl", formulas_kifs_cl},
         KernelFile{"formulas/kleinian.cl", formulas_kleinian_cl},
     };
-    for (const KernelFile& file : files) {
+    return files;
+}
+
+const KernelFile* formula_family(std::string_view family) {
+    for (const KernelFile& file : formula_families()) {
         const std::string_view name = file.name;
         if (name.substr(9, name.size() - 12) == family) return &file;
     }

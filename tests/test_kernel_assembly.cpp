@@ -6,7 +6,9 @@
 #include <filesystem>
 #include <fstream>
 #include <sstream>
+#include <utility>
 
+#include <fmt/format.h>
 #include <gtest/gtest.h>
 
 #include "fgr/kernel_assembly.hpp"
@@ -131,6 +133,83 @@ TEST(KernelAssembly, SceneSourceIsTaggedWithItsOwnFileName) {
     ASSERT_NE(scene_line, std::string::npos);
     EXPECT_LT(program.source.find("#line 1 \"fgr_types.cl\""), scene_line);
     EXPECT_GT(program.source.find("#line 1 \"fgr_render.cl\""), scene_line);
+}
+
+// A scene's program holds the formula families its source calls (formula_NAME( as a word, or
+// formula_NAME_distance(), before the scene's source, and no others: a plugin iterates the
+// library's steps as a formula scene does, without copying them.
+TEST(KernelAssembly, ProgramsHoldTheFormulaFamiliesTheSceneCalls) {
+    const auto families_in = [](const std::string& source) {
+        const std::string program =
+            assemble_program(test::inline_scene("#define FGR_KERNEL_API 2\n" + source), {1, 0}).source;
+        std::string found;
+        for (const char* family : {"bulbs", "hypercomplex", "boxes", "kifs", "kleinian"}) {
+            const size_t at = program.find(fmt::format("#line 1 \"formulas/{}.cl\"", family));
+            if (at == std::string::npos) continue;
+            EXPECT_LT(at, program.find("#line 1 \"inline.cl\"")) << family;
+            found += found.empty() ? family : std::string(" ") + family;
+        }
+        return found;
+    };
+    const std::string plain = "real scene_de(vec3 p, PARAMS) { return p.x; }\n";
+    EXPECT_EQ(families_in(plain), "");
+    EXPECT_EQ(families_in(plain + "void f(vec3* z, real* w, real* dr, vec3 c) {\n"
+                                  "    formula_mandelbox (z, w, dr, c, 2.0f, 1.0f, 0.5f, 1.0f);\n}\n"),
+              "boxes");
+    EXPECT_EQ(families_in(plain + "real g(vec3 z, real w, real dr, vec3 c) {\n"
+                                  "    return formula_menger_distance(z, w, dr, c, 3.0f, z);\n}\n"
+                                  "void h(vec3* z, real* w, real* dr, vec3 c) {\n"
+                                  "    formula_mandelbulb_latitude(z, w, dr, c, 8.0f);\n}\n"),
+              "bulbs kifs");
+    // Words that only look like calls: a comment's mention, a longer name, another identifier.
+    EXPECT_EQ(families_in(plain + "/* like formula_menger, in the library */\n"
+                                  "#define my_formula_quaternion(x) (x)\n"
+                                  "#define formula_mandelboxes 1\n"),
+              "");
+    // The library's families are kernel API 2: a scene of API 1 calling one is told so.
+    try {
+        (void)assemble_program(test::inline_scene(plain + "void f(vec3* z, real* w, real* dr, vec3 c) "
+                                                          "{ formula_quaternion(z, w, dr, c); }\n"),
+                               {1, 0});
+        ADD_FAILURE() << "an API 1 scene calling a formula was assembled";
+    } catch (const std::invalid_argument& error) {
+        EXPECT_NE(std::string(error.what()).find("needs kernel API 2: put `#define FGR_KERNEL_API 2`"),
+                  std::string::npos)
+            << error.what();
+    }
+}
+
+// OpenCL source without its /* */ and // comments.
+std::string code_of(const std::string& source) {
+    std::string code;
+    for (size_t i = 0; i < source.size(); ++i) {
+        if (source.compare(i, 2, "/*") == 0) {
+            i = std::min(source.find("*/", i + 2), source.size()) + 1;
+        } else if (source.compare(i, 2, "//") == 0) {
+            i = std::min(source.find('\n', i), source.size());
+        } else {
+            code += source[i];
+        }
+    }
+    return code;
+}
+
+// The built-in scenes whose formulas the library has iterate the library's steps, not copies:
+// their programs hold its family, and their code calls none of the folds or squares the steps
+// are made of.
+TEST(KernelAssembly, BuiltInScenesIterateTheLibrarysSteps) {
+    const std::pair<const char*, const char*> users[] = {{"mandelbox.so", "formulas/boxes.cl"},
+                                                         {"julia.so", "formulas/hypercomplex.cl"},
+                                                         {"menger.so", "formulas/kifs.cl"},
+                                                         {"sierpinski.so", "formulas/kifs.cl"}};
+    for (const auto& [plugin, family] : users) {
+        const Scene scene = test::built_scene(plugin);
+        const std::string program = assemble_program(scene, {1, 0}).source;
+        EXPECT_NE(program.find(fmt::format("#line 1 \"{}\"", family)), std::string::npos) << plugin;
+        for (const char* copy : {"fold_box(", "quaternion_square(", "fold_menger(", "fold_sierpinski("}) {
+            EXPECT_EQ(code_of(scene.source).find(copy), std::string::npos) << plugin << " calls " << copy;
+        }
+    }
 }
 
 TEST(KernelAssembly, BuildErrorsNameTheScenesFileAndLine) {

@@ -5,27 +5,39 @@
  * to its level-n shapes, the base solid at the orbit's end divided by dr
  * (formula_NAME_distance: exact for the folds are isometries); in a hybrid, r / dr. */
 
+/* A KIFS step before its scale: the fold, the turn, and the offset times `shift` taken off. The
+ * formulas below are it times the scale, with shift (scale - 1) / scale. The menger and
+ * sierpinski scenes (plugins/) iterate it on z_i scale^-i instead, with shift
+ * (scale - 1) scale^-(i+1): the same map in the point's own units, which stays a float for any
+ * number of steps where z_i itself overflows. */
+
 /* Menger sponge (Knighty's Menger KIFS): the cube's fold (|z| sorted x >= y >= z), scale 3 about
  * (1, 1, 1), and the middle layer pulled back so the holes go through. */
+inline vec3 formula_menger_step(vec3 p, rotation3 turn, vec3 offset, float shift) {
+    p = v3_sub(op_rotate(fold_menger(p), turn), v3_scale(offset, fgr_real(shift)));
+    p.z = select(p.z, p.z + offset.z * shift, p.z < -0.5f * offset.z * shift);
+    return p;
+}
+
 inline void formula_menger(vec3* z, real* w, real* dr, const vec3 c, float scale, vec3 offset,
                            rotation3 turn) {
     (void)w;
     (void)c;
-    vec3 p = op_rotate(fold_menger(*z), turn);
-    p = v3_sub(v3_scale(p, fgr_real(scale)), v3_scale(offset, fgr_real(scale - 1.0f)));
-    const real middle = 0.5f * offset.z * (scale - 1.0f);
-    p.z = select(p.z, p.z + offset.z * (scale - 1.0f), p.z < -middle);
-    *z = p;
+    *z = v3_scale(formula_menger_step(*z, turn, offset, (scale - 1.0f) / scale), fgr_real(scale));
     *dr *= scale;
 }
 
 /* Sierpinski tetrahedron: reflections across x = -y, x = -z, y = -z, scale 2 about (1, 1, 1). */
+inline vec3 formula_sierpinski_step(vec3 p, rotation3 turn, vec3 offset, float shift) {
+    return v3_sub(op_rotate(fold_sierpinski(p), turn), v3_scale(offset, fgr_real(shift)));
+}
+
 inline void formula_sierpinski(vec3* z, real* w, real* dr, const vec3 c, float scale,
                                vec3 offset, rotation3 turn) {
     (void)w;
     (void)c;
-    const vec3 p = op_rotate(fold_sierpinski(*z), turn);
-    *z = v3_sub(v3_scale(p, fgr_real(scale)), v3_scale(offset, fgr_real(scale - 1.0f)));
+    *z = v3_scale(formula_sierpinski_step(*z, turn, offset, (scale - 1.0f) / scale),
+                  fgr_real(scale));
     *dr *= scale;
 }
 

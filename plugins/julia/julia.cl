@@ -1,27 +1,14 @@
 /* Quaternion Julia set: the iteration q -> q^2 + c on quaternions q = x + y i + z j + w k, seen as
- * the 3D slice w = slice_w of the 4D set.
+ * the 3D slice w = slice_w of the 4D set. One step is the formula library's
+ * formula_quaternion_julia (kernels/formulas/hypercomplex.cl, its quaternion_square and
+ * quaternion_length too); this scene adds the slice, the Koebe bound and the bounding ball.
  *
  * Distance estimate: DE = 0.5 |q| log|q| / |q'| with the running derivative q' -> 2 q q'. The
  * quaternion norm is multiplicative, so |q'| -> 2 |q| |q'| exactly and one scalar stands in for the
  * whole derivative. */
 
-typedef struct quaternion_packet {
-    real x, y, z, w; /* x is the real part */
-} quaternion_packet;
-
-/* q^2 = (x^2 - y^2 - z^2 - w^2, 2xy, 2xz, 2xw): a square needs no general product. */
-inline quaternion_packet quaternion_square(quaternion_packet q) {
-    quaternion_packet s;
-    s.x = q.x * q.x - q.y * q.y - q.z * q.z - q.w * q.w;
-    s.y = 2.0f * q.x * q.y;
-    s.z = 2.0f * q.x * q.z;
-    s.w = 2.0f * q.x * q.w;
-    return s;
-}
-
-inline real quaternion_length(quaternion_packet q) {
-    return sqrt(q.x * q.x + q.y * q.y + q.z * q.z + q.w * q.w);
-}
+/* The formula library (kernels/formulas/) is kernel API 2. */
+#define FGR_KERNEL_API 2
 
 /* Every orbit leaving the ball of radius R = (1 + sqrt(1 + 4|c|)) / 2 escapes: beyond it
  * |q^2 + c| >= |q|^2 - |c| > |q| and the gap only grows. So the whole set lies inside it. */
@@ -47,27 +34,25 @@ inline real potential_bound(real r, real dr, real potential_scale) {
  * *trap with the orbit's x, y, z. */
 inline real julia_iterate(vec3 p, PARAMS, int record, orbit_trap* trap) {
     const float c_x = param_c_x, c_y = param_c_y, c_z = param_c_z, c_w = param_c_w;
+    const vec3 julia = v3_splat(c_x, c_y, c_z);
     const float bailout = param_bailout;
-    quaternion_packet q;
-    q.x = p.x;
-    q.y = p.y;
-    q.z = p.z;
-    q.w = fgr_real(param_slice_w);
-    real r = quaternion_length(q);
+    vec3 z = p;
+    real w = fgr_real(param_slice_w);
+    real r = quaternion_length(z, w);
     real dr = fgr_real(1.0f);
     real potential_scale = fgr_real(1.0f); /* 2^-n after n iterations */
     for (int i = 0; i < param_iterations; ++i) {
         mask active = r <= bailout;
         if (!fgr_any(active)) break;
-        quaternion_packet next = quaternion_square(q);
-        dr = select(dr, 2.0f * r * dr, active);
+        vec3 z_next = z;
+        real w_next = w, dr_next = dr;
+        formula_quaternion_julia(&z_next, &w_next, &dr_next, p, julia, c_w);
+        z = v3_select(z, z_next, active);
+        w = select(w, w_next, active);
+        dr = select(dr, dr_next, active);
         potential_scale = select(potential_scale, 0.5f * potential_scale, active);
-        q.x = select(q.x, next.x + c_x, active);
-        q.y = select(q.y, next.y + c_y, active);
-        q.z = select(q.z, next.z + c_z, active);
-        q.w = select(q.w, next.w + c_w, active);
-        r = quaternion_length(q);
-        if (record) *trap = trap_update(*trap, v3(q.x, q.y, q.z), active);
+        r = quaternion_length(z, w);
+        if (record) *trap = trap_update(*trap, z, active);
     }
     /* Far from the set the bounding ball is the better bound; both never overestimate. */
     float c_length = sqrt(c_x * c_x + c_y * c_y + c_z * c_z + c_w * c_w);

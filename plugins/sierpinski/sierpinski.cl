@@ -14,7 +14,12 @@
  *
  * The loop keeps w = z * scale^-i instead of z. It is the same map (folds and rotations commute
  * with scaling), but w stays in p's units: z itself would grow like scale^n, which overflows
- * float for far points or high iteration counts, where w merely stops changing. */
+ * float for far points or high iteration counts, where w merely stops changing. The step is the
+ * formula library's (formula_sierpinski_step in kernels/formulas/kifs.cl, which the sierpinski
+ * formula scales by `scale`). */
+
+/* The formula library (kernels/formulas/) is kernel API 2. */
+#define FGR_KERNEL_API 2
 
 #define SIERPINSKI_INV_SQRT3 0.57735027f
 /* Orbit traps see the first few levels only: deeper ones vary faster than a pixel and would turn
@@ -36,15 +41,12 @@ inline real sierpinski_iterate(vec3 p, PARAMS, int record, orbit_trap* trap) {
     const float scale = param_scale;
     const vec3 offset = param_offset;
     /* The twist turns about the diagonal (world z), through the corner being blown up. */
-    const rotation3 twist = rotation_about_axis((float3)(SIERPINSKI_INV_SQRT3), param_twist);
-    const int twisted = param_twist != 0.0f;
+    const rotation3 twist = rotation_about_axis(v3_splat(SIERPINSKI_INV_SQRT3, SIERPINSKI_INV_SQRT3, SIERPINSKI_INV_SQRT3), param_twist);
     vec3 w = tetrahedron_frame(p); /* the orbit point z_i times scale^-i */
     float size = 1.0f;             /* scale^-i: the size of one level-i tetrahedron */
     for (int i = 0; i < param_iterations; ++i) {
-        w = fold_sierpinski(w);
-        if (twisted) w = op_rotate(w, twist);
         size /= scale;
-        w = v3_sub(w, v3_scale(offset, (scale - 1.0f) * size));
+        w = formula_sierpinski_step(w, twist, offset, (scale - 1.0f) * size);
         if (record && i < SIERPINSKI_TRAP_LEVELS) {
             *trap = trap_update(*trap, v3_scale(w, 1.0f / size), FGR_TRUE);
         }

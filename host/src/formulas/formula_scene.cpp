@@ -1,19 +1,14 @@
 // A formula scene as the host renders it: its parameters and the OpenCL source written from the
 // sequence (fgr/formulas.hpp).
 #include <algorithm>
-#include <set>
 
 #include <fmt/format.h>
 
 #include "fgr/formulas.hpp"
-#include "fgr/kernel_library.hpp"
 #include "fgr/plugin.h"
 
 namespace fgr {
 namespace {
-
-constexpr std::array<const char*, 5> kFamilies = {"bulbs", "hypercomplex", "boxes", "kifs",
-                                                  "kleinian"};
 
 // The kernel name of a slot's value: param_<id> (a float or a vec3, as the scene declares it).
 std::string argument(const FormulaScene& scene, std::size_t slot, const FormulaParam& param) {
@@ -148,13 +143,6 @@ std::string formula_kernel_source(const FormulaScene& scene) {
     // An inside test, not a distance: the host reads this line (Scene::inside_only) and renders
     // the scene by brute force.
     if (scene.estimate == FormulaEstimate::Inside) source += "#define FGR_SCENE_INSIDE_ONLY\n";
-    for (const char* family : kFamilies) {
-        const bool used = std::any_of(scene.sequence.begin(), scene.sequence.end(),
-                                      [&](const FormulaSlot& s) { return s.formula->family == family; });
-        if (!used) continue;
-        const KernelFile* file = formula_family(family);
-        source += fmt::format("#line 1 \"{}\"\n{}\n", file->name, file->source);
-    }
     source += fmt::format("#line 1 \"{}.formula.cl\"\n", scene.id);
     if (scene.estimate == FormulaEstimate::Delta) {
         source += "/* the nudge of the delta estimate: small against the features, large against\n"

@@ -1,7 +1,7 @@
 #pragma once
 // The OpenCL C kernel library, embedded in the binary. A scene's program is
-//   switches + prelude files + parameter accessors + scene source + postlude files
-//   + the render mode's files.
+//   switches + prelude files + parameter accessors + the formula families the scene calls
+//   + scene source + postlude files + the render mode's files.
 
 #include <span>
 #include <string_view>
@@ -29,7 +29,10 @@ std::span<const KernelFile> mode_files(std::string_view mode);
 std::span<const KernelFile> path_library();
 
 // The formula library's families (formulas/<family>.cl: bulbs, hypercomplex, boxes, kifs,
-// kleinian), each a file of formula_NAME step functions; null for an unknown family.
+// kleinian), each a file of formula_NAME step functions, in the order a program holds them; the
+// program of a scene whose source calls a formula holds its family (kernel_assembly.cpp).
+std::span<const KernelFile> formula_families();
+// The family's file; null for an unknown family.
 const KernelFile* formula_family(std::string_view family);
 
 // The device math self-test kernel (fgr_math_check.cl), built on its own.
