@@ -55,7 +55,6 @@ private:
     std::unique_ptr<State> state_;
     std::filesystem::path output_, temporary_;
     std::string description_;
-    long frames_ = 0;
     bool finished_ = false;
 };
 

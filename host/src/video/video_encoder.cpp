@@ -63,7 +63,6 @@ VideoEncoder::~VideoEncoder() {
 
 void VideoEncoder::add_frame(const Image8& image) {
     state_->backend.add_frame(state_->encoder, image);
-    ++frames_;
 }
 
 void VideoEncoder::finish() {

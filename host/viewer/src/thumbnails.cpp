@@ -31,11 +31,25 @@ std::string_view bytes_of(const T& value) {
     return {reinterpret_cast<const char*>(&value), sizeof value};
 }
 
+// The scene's program as the thumbnail renders it, the kernel library's files and the formula
+// families it calls included: a newer fgr's kernels make new thumbnails. (A scene whose program
+// cannot be assembled has no thumbnail to render; its source stands in.)
+std::string program_source(const Scene& scene) {
+    KernelSwitches switches;
+    switches.effects = scene.effects;
+    switches.mode = scene.default_mode;
+    try {
+        return assemble_program(scene, switches).source;
+    } catch (const std::exception&) {
+        return scene.source;
+    }
+}
+
 }  // namespace
 
 std::string thumbnail_key(const Scene& scene) {
     uint64_t hash = fnv1a(0xcbf29ce484222325ull, kThumbnailFormat);
-    hash = fnv1a(hash, scene.source);
+    hash = fnv1a(hash, program_source(scene));
     const std::vector<float> params = default_param_values(scene);
     hash =
         fnv1a(hash, {reinterpret_cast<const char*>(params.data()), params.size() * sizeof(float)});

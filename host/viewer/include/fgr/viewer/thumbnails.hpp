@@ -29,7 +29,9 @@ namespace fgr::viewer {
 constexpr int kThumbnailWidth = 128;
 constexpr int kThumbnailHeight = 96;
 
-// 16 hex digits: a 64-bit FNV-1a hash of what decides the thumbnail's image.
+// 16 hex digits: a 64-bit FNV-1a hash of what decides the thumbnail's image: the scene's program as
+// assembled (the kernel library and the formula families it calls with it), the parameters'
+// defaults, the default camera, the effects and the render mode.
 std::string thumbnail_key(const Scene& scene);
 
 // The thumbnails' folder: "thumbnails" in ProgramCache::default_directory() (FGR_CACHE_DIR ...);
