@@ -7,9 +7,7 @@ For every case in bench/mandelbulber_formulas.json (or the IDs given) it renders
 Mandelbulber 2 (`--nogui --format png16alpha`: alpha 0 where a ray reached the background) and
 in fgr (`--alpha`, no effects) with the same camera, parameters, iterations and bailout, and
 prints a Markdown table: the intersection over union of the two silhouettes and each tool's best
-whole-process time of --rounds runs (start-up, render and PNG), alternating the tools. A case
-with a "known_disagreement" is marked (*) and its note printed under the table; the CI test
-leaves it out. Pictures of
+whole-process time of --rounds runs (start-up, render and PNG), alternating the tools. Pictures of
 the disagreement (white both, red Mandelbulber only, cyan fgr only) land in
 bench/results/mandelbulber/ID_diff.png, all of them at half size in silhouettes.png.
 
@@ -119,17 +117,9 @@ def corner_aligned_target(eye, target, up, width, height):
     return [t - 0.5 * pixel * r + 0.5 * pixel * u for t, r, u in zip(target, right, camera_up)]
 
 
-def swap_xy(v):
-    return [v[1], v[0], v[2]]
-
-
 def fgr_command(case, width, height, output):
     eye, target, up = case["eye"], case.get("target", [0, 0, 0]), case.get("up", [0, 0, 1])
     target = corner_aligned_target(eye, target, up, width, height)
-    if case.get("fgr_swap_xy"):
-        # Mandelbulber's formula is fgr's with x and y swapped: fgr looks at its set from the
-        # mirrored camera, and its image is mirrored back (mirror_columns) before comparing.
-        eye, target, up = swap_xy(eye), swap_xy(target), swap_xy(up)
     horizontal_fov = math.degrees(2 * math.atan(TAN_HALF_VERTICAL * width / height))
     command = [FGR, "render", case["fgr_scene"], "--width", str(width), "--height", str(height),
                "--effects", "none", "--alpha", "--eye", ",".join(map(str, eye)),
@@ -151,10 +141,6 @@ def run_fgr(case, width, height, output):
     return wall_ms
 
 
-def mirror_columns(mask, width, height):
-    return [mask[y * width + width - 1 - x] for y in range(height) for x in range(width)]
-
-
 def compare(case, width, height, rounds, tmp):
     mandelbulber_png = os.path.join(tmp, case["id"] + "_mandelbulber.png")
     fgr_png = os.path.join(tmp, case["id"] + "_fgr.png")
@@ -166,8 +152,6 @@ def compare(case, width, height, rounds, tmp):
         best_fgr = min(best_fgr, run_fgr(case, width, height, fgr_png))
     _, _, a = silhouette_iou.read_alpha_mask(mandelbulber_png)
     _, _, b = silhouette_iou.read_alpha_mask(fgr_png)
-    if case.get("fgr_swap_xy"):
-        b = mirror_columns(b, width, height)
     both = sum(1 for x, y in zip(a, b) if x and y)
     either = sum(1 for x, y in zip(a, b) if x or y)
     os.makedirs(RESULTS, exist_ok=True)
@@ -243,16 +227,12 @@ def main():
             print(f"comparing {case['id']}", file=sys.stderr)
             iou, mandelbulber_ms, fgr_ms, pair = compare(case, width, height, args.rounds, tmp)
             masks.append(pair)
-            marker = " *" if "known_disagreement" in case else ""
             print(f"| {case['title']} | `{case['fgr_scene']}` | {case['mandelbulber_name']} "
-                  f"({case['mandelbulber_formula']}) | {iou:.3f}{marker} | {mandelbulber_ms:.0f} | "
+                  f"({case['mandelbulber_formula']}) | {iou:.3f} | {mandelbulber_ms:.0f} | "
                   f"{fgr_ms:.0f} | {mandelbulber_ms / fgr_ms:.1f}x |", flush=True)
             if args.fixtures:
                 write_fixture(case, tmp)
     write_sheet(os.path.join(RESULTS, "silhouettes.png"), width, height, masks)
-    for case in cases:
-        if "known_disagreement" in case:
-            print(f"\n\\* {case['title']}: {case['known_disagreement']}.")
 
 
 if __name__ == "__main__":

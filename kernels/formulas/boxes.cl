@@ -53,9 +53,10 @@ inline void formula_amazing_box(vec3* z, real* w, real* dr, const vec3 c, float 
     *dr += 1.0f;
 }
 
-/* Amazing Surf (Kali and M. Benesi, fractalforums.com 2011; Mandelbulber 2's "Amazing Surf"):
- * the box fold on x and y only, so the set spreads into a surface along z; then the sphere fold
- * (fixed radius 1), the scale, c times c_scale, and a rotation. */
+/* Amazing Surf (Kali and M. Benesi, fractalforums.com 2011; Mandelbulb 3D's and Mandelbulber 2's
+ * "Amazing Surf"): the box fold on x and y only, so the set spreads into a surface along z; then
+ * the sphere fold (fixed radius 1), the scale and a rotation, and c times c_scale added with its
+ * x and y exchanged, as the original does. */
 inline void formula_amazing_surf(vec3* z, real* w, real* dr, const vec3 c, float scale,
                                  vec3 fold, float min_radius, float c_scale, rotation3 turn) {
     (void)w;
@@ -66,7 +67,8 @@ inline void formula_amazing_surf(vec3* z, real* w, real* dr, const vec3 c, float
     p = fold_sphere(p, &fold_dr, fmin(min_radius * min_radius, 1.0f), 1.0f);
     const float s = formula_box_scale(scale);
     *dr = fold_dr * fabs(s) + 1.0f;
-    *z = op_rotate(v3_mad(v3_scale(c, fgr_real(c_scale)), p, fgr_real(s)), turn);
+    const vec3 c_swapped = v3(c.y, c.x, c.z);
+    *z = v3_add(op_rotate(v3_scale(p, fgr_real(s)), turn), v3_scale(c_swapped, fgr_real(c_scale)));
 }
 
 /* ABox with per-axis folds (Mandelbulber 2's "ABox Mod", after Tglad's box fold): each axis folds
