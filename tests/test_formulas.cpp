@@ -69,6 +69,12 @@ TEST(FormulaLibrary, EveryFormulaHasItsKernelFunctionsInItsFamilysFile) {
                       std::string::npos)
                 << formula.name;
         }
+        if (formula.own_inside) {
+            EXPECT_EQ(formula.estimate, FormulaEstimate::Inside) << formula.name;
+            EXPECT_NE(source.find("inline mask formula_" + formula.name + "_inside("),
+                      std::string::npos)
+                << formula.name;
+        }
         EXPECT_FALSE(formula.origin.empty()) << formula.name << " says where it comes from";
         for (const FormulaParam& param : formula.params) {
             for (const float value : param.default_value) {
@@ -437,6 +443,49 @@ TEST_F(FormulaScenes, TheTetrabrotIsTwoMandelbrotSetsInIdempotentCoordinates) {
     }
     EXPECT_GT(in_count, 20);  // both verdicts are tried
     EXPECT_LT(in_count, 220);
+}
+
+}  // namespace
+}  // namespace fgr
+
+namespace fgr {
+namespace {
+
+// Jos Leys' Kleinian set is invariant under its group's translations, x and z by twice the box's
+// half sizes (2 at the defaults): points on a grid of 2^-10 and the same points moved by 2 have
+// exactly the same wrapped orbits, so the inside test must agree at every one. A wrap of the
+// wrong period, or none, moves the set under the translation.
+TEST_F(FormulaScenes, JosLeysKleinianIsInvariantUnderItsGroupsTranslations) {
+    // Thick spheres, so that a fair share of the points is inside.
+    const Scene kleinian = scene_of(
+        document({{{"formula", "jos_kleinian"}, {"parameters", {{"thickness", 0.1}}}}}));
+    ASSERT_TRUE(kleinian.inside_only());
+    test::FuzzRng rng(1957);
+    std::vector<glm::dvec3> points;
+    for (int i = 0; i < 800; ++i) {
+        const auto grid = [&](float low, float high) {
+            return std::round(double(rng.uniform(low, high)) * 1024.0) / 1024.0;
+        };
+        points.emplace_back(grid(-1.0f, 1.0f), grid(0.0f, 1.9f), grid(-1.0f, 1.0f));
+    }
+    std::vector<glm::dvec3> moved_x, moved_z;
+    for (const glm::dvec3& p : points) {
+        moved_x.push_back(p + glm::dvec3(2.0, 0.0, 0.0));
+        moved_z.push_back(p + glm::dvec3(0.0, 0.0, -2.0));
+    }
+    const std::vector<bool> here = inside(kleinian, points);
+    const std::vector<bool> along_x = inside(kleinian, moved_x);
+    const std::vector<bool> along_z = inside(kleinian, moved_z);
+    int in_count = 0;
+    for (std::size_t i = 0; i < points.size(); ++i) {
+        in_count += here[i];
+        EXPECT_EQ(along_x[i], here[i]) << "at (" << points[i].x << ", " << points[i].y << ", "
+                                       << points[i].z << ") moved by 2 along x";
+        EXPECT_EQ(along_z[i], here[i]) << "at (" << points[i].x << ", " << points[i].y << ", "
+                                       << points[i].z << ") moved by -2 along z";
+    }
+    EXPECT_GT(in_count, 10);  // both verdicts are tried (about 3% of the points are inside)
+    EXPECT_LT(in_count, 790);
 }
 
 }  // namespace

@@ -60,6 +60,10 @@ struct Formula {
     // moves with the point (`fgr check`'s Lipschitz and march-safety checks pass with it), inside
     // where no estimate passed them (a sequence takes its weakest member's).
     FormulaEstimate estimate = FormulaEstimate::Analytic;
+    // An inside-only formula whose set is not "the orbit stays bounded" (a Kleinian limit set,
+    // whose orbits never escape) decides inside itself: formula_NAME_inside(z, w, dr, c,
+    // parameters...) on the orbit's end, when the formula is its scene's only one.
+    bool own_inside = false;
     std::vector<FormulaParam> params;  // in the kernel function's order (axis and angle last)
     // What its scene starts with: iterations, bailout, the march's step factor (the DE's
     // overestimate, as `fgr check` measures it) and how far rays go, and a view.

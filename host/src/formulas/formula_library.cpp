@@ -368,6 +368,24 @@ std::vector<Formula> build_library() {
     apollonian.max_distance = 6.0f;
     apollonian.view = view(2.2, -2.8, 1.7, 0.0, 0.0, 0.0, 50.0f);
     all.push_back(apollonian);
+    Formula jos = inside_only(formula("jos_kleinian", "Jos Leys' Kleinian", "kleinian",
+        {"kleinian", "inversion", "mandelbulber"},
+        "a slab wrapped into a box, a half turn above a waving line and a Moebius inversion: "
+        "the limit set of a Kleinian group",
+        "Jos Leys, fractalforums.com 2015 (after Knighty), in Mandelbulber 2's form", D::Linear,
+        {scalar("kr", "Klein r", 1.5f, 2.1f, 1.9f, "the slab's height: the group's translation"),
+         scalar("ki", "Klein i", -0.5f, 0.5f, 0.05f, "the half turn's and inversion's shift"),
+         vector("box", "Box size", 0.5f, 1.5f, 1.0f, 1.0f, 1.0f, "the wrapping box's half sizes"),
+         scalar("thickness", "Thickness", 0.001f, 0.1f, 0.04f,
+                "how near the slab's floor or ceiling an orbit ends in the set")}));
+    jos.own_inside = true;
+    jos.iterations = 30;
+    jos.bailout = 1e10f;
+    jos.max_bailout = 1e10f;
+    jos.max_distance = 1.9f;  // it fills space: brute force samples this far along each ray
+    jos.view = view(0.4, 0.95, 1.39, 0.015, 0.95, 0.07, 60.0f);
+    jos.view.up = {0.0f, 1.0f, 0.0f};
+    all.push_back(jos);
     return all;
 }
 

@@ -194,9 +194,15 @@ std::string formula_kernel_source(const FormulaScene& scene) {
                   "    formula_scene_iterate(c, PARAMS_PASS, (mask)(param_iterations), bailout2,\n"
                   "                          record, trap, &z, &w, &dr, &steps);\n"
                   "    (void)dr;\n"
-                  "    (void)steps;\n"
-                  "    return v3_length2(z) + w * w <= bailout2;  /* a NaN orbit is outside */\n"
-                  "}\n"
+                  "    (void)steps;\n";
+        const Formula& first = *scene.sequence[0].formula;
+        if (scene.sequence.size() == 1 && first.own_inside) {
+            source += fmt::format("    return formula_{}_inside({}) != 0;\n", first.name,
+                                  arguments(scene, 0, false));
+        } else {
+            source += "    return v3_length2(z) + w * w <= bailout2;  /* a NaN orbit is outside */\n";
+        }
+        source += "}\n"
                   "FGR_TRAP_COLOURED_INSIDE_SCENE(formula_scene_inside)\n";
         return source;
     }
