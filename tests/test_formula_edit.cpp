@@ -93,6 +93,16 @@ TEST(FormulaEdit, RemovingASlotGivesBackTheSettingsOfTheRest) {
     EXPECT_EQ(names(alone), names(kifs));
     EXPECT_EQ(alone.distance, FormulaDistance::Own);
     EXPECT_EQ(alone.estimate, FormulaEstimate::Analytic);
+    // A formula without an estimate makes the hybrid an inside test, and takes it away with it;
+    // a bicomplex formula's own distance holds alone, not in a hybrid.
+    const FormulaScene lambda = with_formula_added(shipped("mandelbulb-formula"), library("lambdabulb"));
+    EXPECT_EQ(lambda.estimate, FormulaEstimate::Inside);
+    EXPECT_EQ(with_slot_removed(lambda, 1).estimate, FormulaEstimate::Analytic);
+    const FormulaScene bicomplex = with_formula_added(shipped("tetrabrot"), library("mandelbulb"));
+    EXPECT_EQ(bicomplex.estimate, FormulaEstimate::Inside);
+    const FormulaScene tetrabrot_alone = with_slot_removed(bicomplex, 1);
+    EXPECT_EQ(tetrabrot_alone.distance, FormulaDistance::Own);
+    EXPECT_EQ(tetrabrot_alone.estimate, FormulaEstimate::Analytic);
 
     const FormulaScene bulb = shipped("mandelbulb-formula");
     const FormulaScene with_quaternion = with_formula_added(bulb, library("quaternion"));

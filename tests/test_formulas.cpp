@@ -132,8 +132,8 @@ TEST(FormulaFile, RefusesBadDocumentsInOneLineNamingTheFile) {
          [&] { json d = document({{{"formula", "menger"}}}); d["estimate"] = "delta"; return d; }(),
          "\"estimate\": \"delta\" needs \"distance\""},
         {"analytic estimate of an inside-only formula",
-         [&] { json d = document({{{"formula", "tetrabrot"}}}); d["estimate"] = "analytic"; return d; }(),
-         "\"estimate\" \"analytic\": tetrabrot has no distance estimate, only an inside test"},
+         [&] { json d = document({{{"formula", "lambdabulb"}}}); d["estimate"] = "analytic"; return d; }(),
+         "\"estimate\" \"analytic\": lambdabulb has no distance estimate, only an inside test"},
         {"delta estimate of a hybrid with an inside-only formula",
          [&] { json d = document({bulb, {{"formula", "lambdabulb"}}}); d["estimate"] = "delta"; return d; }(),
          "lambdabulb has no distance estimate"},
@@ -222,10 +222,15 @@ TEST(FormulaFuzz, ParsesOrRefusesEveryMutatedFile) {
 // and so does any hybrid it is in, or a file that asks; every other scene keeps its estimate.
 TEST(FormulaFile, FormulasWithoutAnEstimateMakeInsideOnlyScenesForTheBruteForceMode) {
     const json bulb = {{"formula", "mandelbulb"}};
-    const Scene tetrabrot = scene_of(document({{{"formula", "tetrabrot"}}}));
-    EXPECT_TRUE(tetrabrot.inside_only());
-    EXPECT_EQ(tetrabrot.default_mode, RenderMode::Brute);
+    const Scene lambdabulb = scene_of(document({{{"formula", "lambdabulb"}}}));
+    EXPECT_TRUE(lambdabulb.inside_only());
+    EXPECT_EQ(lambdabulb.default_mode, RenderMode::Brute);
     EXPECT_TRUE(scene_of(document({bulb, {{"formula", "lambdabulb"}}})).inside_only());
+    // The bicomplex formulas measure their own distance alone; in a hybrid they are inside tests.
+    EXPECT_FALSE(scene_of(document({{{"formula", "tetrabrot"}}})).inside_only());
+    json bicomplex_hybrid = document({bulb, {{"formula", "tetrabrot"}}});
+    bicomplex_hybrid["distance"] = "logarithmic";
+    EXPECT_TRUE(scene_of(bicomplex_hybrid).inside_only());
     const Scene bulb_alone = scene_of(document({bulb}));
     EXPECT_FALSE(bulb_alone.inside_only());
     EXPECT_EQ(bulb_alone.default_mode, RenderMode::Shaded);
@@ -234,7 +239,9 @@ TEST(FormulaFile, FormulasWithoutAnEstimateMakeInsideOnlyScenesForTheBruteForceM
     EXPECT_TRUE(scene_of(asked).inside_only());
     for (const Formula& formula : formula_library()) {
         const Scene scene = scene_of(document({{{"formula", formula.name}}}));
-        EXPECT_EQ(scene.inside_only(), formula.estimate == FormulaEstimate::Inside) << formula.name;
+        EXPECT_EQ(scene.inside_only(), formula.estimate == FormulaEstimate::Inside &&
+                                           formula.distance != FormulaDistance::Own)
+            << formula.name;
     }
 }
 
@@ -406,7 +413,9 @@ namespace {
 // iterations; points whose largest |z| on the way comes within 2% of the bailout are left out
 // (float against double). A wrong sign or term in the kernel's square moves the set.
 TEST_F(FormulaScenes, TheTetrabrotIsTwoMandelbrotSetsInIdempotentCoordinates) {
-    const Scene tetrabrot = scene_of(document({{{"formula", "tetrabrot"}}}));
+    json inside_test = document({{{"formula", "tetrabrot"}}});
+    inside_test["estimate"] = "inside";
+    const Scene tetrabrot = scene_of(inside_test);
     const auto params = default_param_values(tetrabrot);
     const double bailout = param_value(tetrabrot, params, "bailout");
     const int iterations = int(param_value(tetrabrot, params, "iterations"));
@@ -486,6 +495,61 @@ TEST_F(FormulaScenes, JosLeysKleinianIsInvariantUnderItsGroupsTranslations) {
     }
     EXPECT_GT(in_count, 10);  // both verdicts are tried (about 3% of the points are inside)
     EXPECT_LT(in_count, 790);
+}
+
+}  // namespace
+}  // namespace fgr
+
+namespace fgr {
+namespace {
+
+// Whether the host proves c out of the complex Mandelbrot set: its orbit passes |u| = 2 within
+// 4000 steps (double precision).
+bool escapes_mandelbrot(std::complex<double> c) {
+    std::complex<double> u = c;
+    for (int i = 0; i < 4000; ++i) {
+        if (std::norm(u) > 4.0) return true;
+        u = u * u + c;
+    }
+    return false;
+}
+
+// The Tetrabrot's distance is a lower bound: every point nearer than it (9/10 of it) to where it
+// was measured is out of the set, which the host proves in idempotent coordinates (either
+// complex orbit, of x + i (y - z) or x + i (y + z), escapes). A distance without the sqrt(2) of
+// the cylinders' stretch, or with the derivative's + 1 left out, claims balls that reach into
+// the set.
+TEST_F(FormulaScenes, TheTetrabrotsDistanceIsALowerBound) {
+    const Scene tetrabrot = scene_of(document({{{"formula", "tetrabrot"}}}));
+    ASSERT_FALSE(tetrabrot.inside_only());
+    test::FuzzRng rng(1892);
+    std::vector<glm::vec3> centres;
+    for (int i = 0; i < 400; ++i) {
+        centres.emplace_back(rng.uniform(-2.0f, 0.6f), rng.uniform(-1.2f, 1.2f),
+                             rng.uniform(-1.2f, 1.2f));
+    }
+    const std::vector<float> de = distances(tetrabrot, centres);
+    const auto in_set = [](const glm::dvec3& p) {
+        return !escapes_mandelbrot({p.x, p.y - p.z}) && !escapes_mandelbrot({p.x, p.y + p.z});
+    };
+    int balls = 0, largest_ball_index = -1;
+    float largest = 0.0f;
+    for (std::size_t i = 0; i < centres.size(); ++i) {
+        if (!(de[i] > 1e-3f)) continue;
+        ++balls;
+        if (de[i] > largest) largest = de[i], largest_ball_index = int(i);
+        for (int k = 0; k < 24; ++k) {
+            const glm::vec3 direction = glm::normalize(glm::vec3(
+                rng.uniform(-1.0f, 1.0f), rng.uniform(-1.0f, 1.0f), rng.uniform(-1.0f, 1.0f)));
+            const glm::dvec3 q = glm::dvec3(centres[i]) +
+                                 glm::dvec3(direction) * (0.9 * double(de[i]) * rng.uniform(0.5f, 1.0f));
+            ASSERT_FALSE(in_set(q)) << "distance " << de[i] << " at (" << centres[i].x << ", "
+                                    << centres[i].y << ", " << centres[i].z << ") reaches ("
+                                    << q.x << ", " << q.y << ", " << q.z << ") in the set";
+        }
+    }
+    EXPECT_GT(balls, 200);  // most points are outside, and their balls were tried
+    EXPECT_GE(largest_ball_index, 0);
 }
 
 }  // namespace

@@ -116,7 +116,10 @@ void print_formulas() {
                                        distance_name(formula.distance));
                 break;
             case FormulaEstimate::Inside:
-                distance = "no distance estimate: an inside test, rendered by brute force";
+                distance = formula.distance == FormulaDistance::Own
+                               ? "distance: its own alone; in a hybrid an inside test, rendered "
+                                 "by brute force"
+                               : "no distance estimate: an inside test, rendered by brute force";
                 break;
         }
         fmt::print("    tags: {}; {}\n", fmt::join(formula.tags, ", "), distance);

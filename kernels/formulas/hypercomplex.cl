@@ -89,12 +89,33 @@ inline void formula_quaternion_power_julia(vec3* z, real* w, real* dr, const vec
     *dr = power * r_pow * *dr;
 }
 
+/* The orbit's estimate 0.5 r log(r) / dr is G / (2 |G'|) for the potential G = log(r) / 2^n
+ * (potential_scale 2^-n after n steps). Near the set (G -> 0) it is the distance; far out it
+ * grows like r log r, faster than the distance. Koebe's bound (Hubbard and Douady's for the
+ * Mandelbrot set, the same for Julia sets), sinh(G) / (2 e^G |G'|), is the same near the set and
+ * saturates far out: it is the estimate times (1 - e^(-2G)) / (2G). Negative where the orbit
+ * ended inside the unit circle. */
+inline real formula_potential_bound(real r, real dr, real potential_scale) {
+    const real log_r = log(r);
+    const real potential = log_r * potential_scale;
+    const real estimate = 0.5f * r * log_r / dr;
+    const real koebe_factor = (1.0f - exp(-2.0f * potential)) / (2.0f * potential);
+    /* Inside (r < 1) and at G -> 0 the factor is 1; r = 0 or dr = 0 only occur inside. */
+    const real bound = select(estimate, estimate * koebe_factor, potential > 1e-4f);
+    return select(bound, fgr_real(0.0f), (r <= 0.0f) | (dr <= 0.0f));
+}
+
 /* The bicomplex numbers (Corrado Segre, 1892; the 3D slices of their Mandelbrot set are Dominic
  * Rochon's Tetrabrot, 2000): z1 + z2 j with z1 = x + i y, z2 = z + i w and i j = j i, j^2 = -1,
- * so (z1 + z2 j)^2 = (z1^2 - z2^2) + 2 z1 z2 j. Unlike the quaternions' the product commutes but
- * is not conformal (it has zero divisors), so no scalar running derivative bounds the distance:
- * the bicomplex formulas' scenes are inside tests for the brute-force mode, and dr here is only a
- * growth measure. */
+ * so (z1 + z2 j)^2 = (z1^2 - z2^2) + 2 z1 z2 j. The product commutes but is not conformal (it
+ * has zero divisors): no scalar running derivative bounds the distance, and dr here is only a
+ * growth measure (a hybrid with a bicomplex formula is an inside test). Alone they measure
+ * their own distance, in idempotent coordinates: z1 + z2 j = u e1 + v e2 with
+ * u = (x + w) + i (y - z), v = (x - w) + i (y + z) and e1, e2 = (1 +- i j) / 2, products act on u
+ * and v apart, so the set is where two complex orbits stay bounded: on a 3D slice, two cylinders
+ * over complex Mandelbrot or Julia sets meeting. The distance to their intersection is at least
+ * the larger of the distances to each cylinder, and a cylinder's is at least the distance of u
+ * (or v) to its complex set over sqrt(2), the most u moves per unit step of the point. */
 inline void bicomplex_square(vec3* z, real* w) {
     const vec3 p = *z;
     const real q = *w;
@@ -103,11 +124,49 @@ inline void bicomplex_square(vec3* z, real* w) {
     *w = 2.0f * (p.x * q + p.y * p.z);
 }
 
+/* Koebe's lower bound on the distance from u0 to the complex Mandelbrot set (k = u0, mandelbrot
+ * set) or the Julia set of k, from the orbit u <- u^2 + k and its derivative by u0, which stops
+ * past `bailout`. */
+inline real complex_set_distance(real re, real im, real k_re, real k_im, int mandelbrot,
+                                 int iterations, float bailout) {
+    real d_re = fgr_real(1.0f), d_im = fgr_real(0.0f);
+    real potential_scale = fgr_real(1.0f);
+    real r2 = re * re + im * im;
+    const float bailout2 = bailout * bailout;
+    for (int i = 0; i < iterations; ++i) {
+        const mask active = r2 <= bailout2;
+        if (!fgr_any(active)) break;
+        /* u' <- 2 u u' (+ 1 for the Mandelbrot set, where k moves with u0) */
+        const real nd_re = 2.0f * (re * d_re - im * d_im) + (mandelbrot ? 1.0f : 0.0f);
+        const real nd_im = 2.0f * (re * d_im + im * d_re);
+        const real n_re = re * re - im * im + k_re, n_im = 2.0f * re * im + k_im;
+        d_re = select(d_re, nd_re, active);
+        d_im = select(d_im, nd_im, active);
+        re = select(re, n_re, active);
+        im = select(im, n_im, active);
+        potential_scale = select(potential_scale, 0.5f * potential_scale, active);
+        r2 = re * re + im * im;
+    }
+    return formula_potential_bound(sqrt(r2), sqrt(d_re * d_re + d_im * d_im), potential_scale);
+}
+
 /* Tetrabrot: the bicomplex Mandelbrot set z^2 + c, on the slice w = 0 (Rochon 2000). */
 inline void formula_tetrabrot(vec3* z, real* w, real* dr, const vec3 c) {
     *dr = 2.0f * quaternion_length(*z, *w) * *dr + 1.0f;
     bicomplex_square(z, w);
     *z = v3_add(*z, c);
+}
+
+inline real formula_tetrabrot_distance(vec3 z, real w, real dr, vec3 c, int iterations,
+                                       float bailout) {
+    (void)z;
+    (void)w;
+    (void)dr;
+    const real u = complex_set_distance(c.x, c.y - c.z, c.x, c.y - c.z, 1, iterations, bailout);
+    const real v = complex_set_distance(c.x, c.y + c.z, c.x, c.y + c.z, 1, iterations, bailout);
+    /* Where both orbits stay bounded the point is in the set: 0, not the estimates' negative
+     * values (orbits ending inside the unit circle). */
+    return fmax(fmax(u, v), fgr_real(0.0f)) * M_SQRT1_2_F;
 }
 
 /* Bicomplex Julia set: z^2 + k for a fixed bicomplex k. */
@@ -118,4 +177,18 @@ inline void formula_bicomplex_julia(vec3* z, real* w, real* dr, const vec3 c, ve
     bicomplex_square(z, w);
     *z = v3_add(*z, julia);
     *w += julia_w;
+}
+
+inline real formula_bicomplex_julia_distance(vec3 z, real w, real dr, vec3 c, vec3 julia,
+                                             float julia_w, int iterations, float bailout) {
+    (void)z;
+    (void)w;
+    (void)dr;
+    const real ku_re = julia.x + julia_w, ku_im = julia.y - julia.z;
+    const real kv_re = julia.x - julia_w, kv_im = julia.y + julia.z;
+    const real u = complex_set_distance(c.x, c.y - c.z, ku_re, ku_im, 0, iterations, bailout);
+    const real v = complex_set_distance(c.x, c.y + c.z, kv_re, kv_im, 0, iterations, bailout);
+    /* Where both orbits stay bounded the point is in the set: 0, not the estimates' negative
+     * values (orbits ending inside the unit circle). */
+    return fmax(fmax(u, v), fgr_real(0.0f)) * M_SQRT1_2_F;
 }

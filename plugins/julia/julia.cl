@@ -1,7 +1,8 @@
 /* Quaternion Julia set: the iteration q -> q^2 + c on quaternions q = x + y i + z j + w k, seen as
  * the 3D slice w = slice_w of the 4D set. One step is the formula library's
  * formula_quaternion_julia (kernels/formulas/hypercomplex.cl, its quaternion_square and
- * quaternion_length too); this scene adds the slice, the Koebe bound and the bounding ball.
+ * quaternion_length too, and its Koebe bound formula_potential_bound); this scene adds the slice
+ * and the bounding ball.
  *
  * Distance estimate: DE = 0.5 |q| log|q| / |q'| with the running derivative q' -> 2 q q'. The
  * quaternion norm is multiplicative, so |q'| -> 2 |q| |q'| exactly and one scalar stands in for the
@@ -14,20 +15,6 @@
  * |q^2 + c| >= |q|^2 - |c| > |q| and the gap only grows. So the whole set lies inside it. */
 inline float julia_set_radius(float c_length) {
     return 0.5f * (1.0f + sqrt(1.0f + 4.0f * c_length));
-}
-
-/* The orbit's estimate 0.5 r log(r) / dr is G / (2 |G'|) for the potential G = log(r) / 2^n.
- * Near the set (G -> 0) it is the distance; far out it grows like r log r, faster than the
- * distance. Koebe's bound for Julia sets, sinh(G) / (2 e^G |G'|), is the same near the set and
- * saturates far out: it is the estimate times (1 - e^(-2G)) / (2G). */
-inline real potential_bound(real r, real dr, real potential_scale) {
-    real log_r = log(r);
-    real potential = log_r * potential_scale;
-    real estimate = 0.5f * r * log_r / dr;
-    real koebe_factor = (1.0f - exp(-2.0f * potential)) / (2.0f * potential);
-    /* Inside (r < 1) and at G -> 0 the factor is 1; r = 0 or dr = 0 only occur inside. */
-    real bound = select(estimate, estimate * koebe_factor, potential > 1e-4f);
-    return select(bound, fgr_real(0.0f), r <= 0.0f | dr <= 0.0f);
 }
 
 /* Iterates q -> q^2 + c from q = (p, slice_w); returns the DE and, when `record` is set, fills
@@ -57,7 +44,7 @@ inline real julia_iterate(vec3 p, PARAMS, int record, orbit_trap* trap) {
     /* Far from the set the bounding ball is the better bound; both never overestimate. */
     float c_length = sqrt(c_x * c_x + c_y * c_y + c_z * c_z + c_w * c_w);
     real ball_bound = v3_length(p) - julia_set_radius(c_length);
-    return fmax(potential_bound(r, dr, potential_scale), ball_bound);
+    return fmax(formula_potential_bound(r, dr, potential_scale), ball_bound);
 }
 
 #define FGR_SCENE_HAS_COLOUR

@@ -64,6 +64,11 @@ struct Formula {
     // whose orbits never escape) decides inside itself: formula_NAME_inside(z, w, dr, c,
     // parameters...) on the orbit's end, when the formula is its scene's only one.
     bool own_inside = false;
+    // Its own distance (formula_NAME_distance) runs orbits of its own from c, so the scene passes
+    // it its iterations and bailout after the parameters (the bicomplex formulas: two complex
+    // orbits). Such a distance stands even where the formula's dr is no bound (estimate Inside):
+    // alone, its scenes measure it; in a hybrid they are inside tests.
+    bool distance_reiterates = false;
     std::vector<FormulaParam> params;  // in the kernel function's order (axis and angle last)
     // What its scene starts with: iterations, bailout, the march's step factor (the DE's
     // overestimate, as `fgr check` measures it) and how far rays go, and a view.
@@ -116,6 +121,10 @@ struct FormulaScene {
     std::vector<CameraPath> camera_paths;
     std::vector<Light> lights;
 };
+
+// The strongest estimate a sequence allows: a formula alone with a distance of its own has it
+// (analytic); otherwise the weakest of its formulas' estimates.
+FormulaEstimate strongest_estimate(const std::vector<FormulaSlot>& sequence);
 
 // A formula scene file's problem, one line starting with the file's name.
 struct FormulaError : std::runtime_error {

@@ -29,7 +29,8 @@ bool any_slot(const FormulaScene& scene, auto predicate) {
 // What the sequence decides, worked out as a file without "distance" and "estimate" would have
 // it (formula_file.cpp), except that a formula with a distance of its own in a hybrid gets the
 // linear one (its folds and scales set the growth) where a file must choose. A delta estimate the
-// scene asked for stays while the distance allows it.
+// scene asked for stays while the sequence and the distance allow it; an inside test is what a
+// sequence gives, and goes with the formula that gave it.
 void settle_sequence_settings(FormulaScene& scene) {
     const bool any_own = any_slot(
         scene, [](const FormulaSlot& s) { return s.formula->distance == FormulaDistance::Own; });
@@ -41,15 +42,11 @@ void settle_sequence_settings(FormulaScene& scene) {
     } else {
         scene.distance = any_log ? FormulaDistance::Logarithmic : FormulaDistance::Linear;
     }
-    FormulaEstimate available = FormulaEstimate::Analytic;
-    for (const FormulaSlot& slot : scene.sequence) {
-        available = std::max(available, slot.formula->estimate);
-    }
-    if (scene.estimate < available) {
-        scene.estimate = available;
-    } else if (scene.distance == FormulaDistance::Own && scene.estimate == FormulaEstimate::Delta) {
-        scene.estimate = FormulaEstimate::Analytic;
-    }
+    const FormulaEstimate available = strongest_estimate(scene.sequence);
+    const bool keep_delta = scene.estimate == FormulaEstimate::Delta &&
+                            available <= FormulaEstimate::Delta &&
+                            scene.distance != FormulaDistance::Own;
+    scene.estimate = keep_delta ? FormulaEstimate::Delta : available;
     float max_bailout = 1e10f;
     for (const FormulaSlot& slot : scene.sequence) {
         max_bailout = std::min(max_bailout, slot.formula->max_bailout);

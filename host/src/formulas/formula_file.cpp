@@ -154,13 +154,13 @@ FormulaDistance distance_from(const json& document, const std::vector<FormulaSlo
     return any_log ? FormulaDistance::Logarithmic : FormulaDistance::Linear;
 }
 
-// The weakest of the sequence's estimates; a file may ask for a weaker one (the delta estimate,
+// The strongest estimate the sequence allows (strongest_estimate); a file may ask for a weaker one (the delta estimate,
 // or an inside test), not a stronger one its formulas do not have.
 FormulaEstimate estimate_from(const json& document, const FormulaScene& scene) {
     const FormulaSlot& weakest = *std::max_element(
         scene.sequence.begin(), scene.sequence.end(),
         [](const FormulaSlot& a, const FormulaSlot& b) { return a.formula->estimate < b.formula->estimate; });
-    const FormulaEstimate available = weakest.formula->estimate;
+    const FormulaEstimate available = strongest_estimate(scene.sequence);
     if (!document.contains("estimate")) return available;
     const json& value = document.at("estimate");
     FormulaEstimate asked;

@@ -232,8 +232,9 @@ std::vector<Formula> build_library() {
     Formula tetrabrot = inside_only(low_power(bulb(formula("tetrabrot", "Tetrabrot",
         "hypercomplex", {"hypercomplex", "bicomplex"},
         "the bicomplex Mandelbrot set z^2 + c, slice w = 0",
-        "Dominic Rochon, 2000, in Corrado Segre's bicomplex numbers (1892)", D::Logarithmic, {}),
+        "Dominic Rochon, 2000, in Corrado Segre's bicomplex numbers (1892)", D::Own, {}),
         12)));
+    tetrabrot.distance_reiterates = true;
     tetrabrot.view = view(1.4, -2.6, 1.6, -0.6, 0.0, 0.0, 50.0f);
     all.push_back(tetrabrot);
     Formula bicomplex_julia = tetrabrot;
@@ -242,7 +243,9 @@ std::vector<Formula> build_library() {
     bicomplex_julia.tags = {"hypercomplex", "bicomplex", "julia"};
     bicomplex_julia.summary = "z^2 + k for a fixed bicomplex k, slice w = 0";
     bicomplex_julia.origin = "after Rochon, 2000 (bicomplex Julia sets)";
-    bicomplex_julia.params = {julia(-0.12f, 0.75f, 0.1f), julia_w(0.0f)};
+    // Both idempotent parts of k, -0.12 + 0.65i and -0.12 + 0.75i, in the Mandelbrot set: their
+    // Julia sets are connected, which Koebe's bound needs.
+    bicomplex_julia.params = {julia(-0.12f, 0.7f, 0.05f), julia_w(0.0f)};
     bicomplex_julia.view = view(1.8, -2.4, 1.4, 0.0, 0.0, 0.0, 50.0f);
     all.push_back(bicomplex_julia);
     // --- boxes ---
@@ -394,6 +397,15 @@ std::vector<Formula> build_library() {
 std::span<const Formula> formula_library() {
     static const std::vector<Formula> library = build_library();
     return library;
+}
+
+FormulaEstimate strongest_estimate(const std::vector<FormulaSlot>& sequence) {
+    if (sequence.size() == 1 && sequence[0].formula->distance == FormulaDistance::Own) {
+        return FormulaEstimate::Analytic;
+    }
+    FormulaEstimate weakest = FormulaEstimate::Analytic;
+    for (const FormulaSlot& slot : sequence) weakest = std::max(weakest, slot.formula->estimate);
+    return weakest;
 }
 
 const char* formula_estimate_name(FormulaEstimate estimate) {

@@ -64,9 +64,13 @@ std::string distance_expression(const FormulaScene& scene) {
             return "select(0.5f * log(r) * r / dr, fgr_real(0.0f), (r <= 0.0f) | (dr <= 1e-30f))";
         case FormulaDistance::Linear:
             return "select(r / fabs(dr), fgr_real(0.0f), dr == 0.0f)";
-        case FormulaDistance::Own:
-            return fmt::format("formula_{}_distance({})", scene.sequence[0].formula->name,
-                               arguments(scene, 0, false));
+        case FormulaDistance::Own: {
+            const Formula& formula = *scene.sequence[0].formula;
+            return fmt::format("formula_{}_distance({}{})", formula.name,
+                               arguments(scene, 0, false),
+                               formula.distance_reiterates ? ", param_iterations, param_bailout"
+                                                          : "");
+        }
     }
     return "r";
 }
