@@ -771,6 +771,18 @@ std::string printable(std::string_view text) {
     return out;
 }
 
+std::vector<ParamInfo> copy_param_descriptions(std::span<const fgr_param_desc> descriptions) {
+    std::vector<ParamInfo> params;
+    for (size_t i = 0; i < descriptions.size(); ++i) {
+        try {
+            params.push_back(copy_param(descriptions[i], static_cast<uint32_t>(i)));
+        } catch (const InvalidDescription& invalid) {
+            throw std::invalid_argument(invalid.what());
+        }
+    }
+    return params;
+}
+
 bool is_scene_id(std::string_view id) { return is_identifier(id, true); }
 
 bool is_camera_name(std::string_view name) { return is_name(name); }

@@ -5,7 +5,9 @@
 // reason given.
 
 #include <optional>
+#include <span>
 #include <string>
+#include <vector>
 #include <string_view>
 
 #include "fgr/plugin.h"
@@ -26,6 +28,12 @@ struct LoadResult {
 // a host-owned Scene, built-in quality parameters included. Never dereferences a pointer it has
 // not checked for NULL.
 LoadResult copy_scene_description(const fgr_scene_desc* desc);
+
+// Parameters described as a plugin describes them (fgr_param_desc, e.g. scene_helpers.h's
+// FGR_COLOUR_PARAMS), checked and copied as a plugin's are: for scenes the host writes itself
+// (formula files), so that their colour parameters are a plugin's. Throws std::invalid_argument
+// (one line) for a description a plugin would be refused.
+std::vector<ParamInfo> copy_param_descriptions(std::span<const fgr_param_desc> descriptions);
 
 // The naming rules every scene follows, whatever it came from (a plugin or an IFS file):
 // scene ids match [a-z][a-z0-9_-]*, camera and camera path names [a-z0-9_-]+, both at most 63

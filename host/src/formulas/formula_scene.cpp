@@ -4,8 +4,10 @@
 
 #include <fmt/format.h>
 
+#include "fgr/description_validation.hpp"
 #include "fgr/formulas.hpp"
 #include "fgr/plugin.h"
+#include "fgr/scene_helpers.h"
 
 namespace fgr {
 namespace {
@@ -100,40 +102,6 @@ std::string delta_distance(const FormulaScene& scene) {
                   "                  (r <= 0.0f) | (gradient <= 0.0f));\n"
                 : "    return select(r / gradient, fgr_real(0.0f), gradient <= 0.0f);\n";
     return text;
-}
-
-ParamInfo enum_param(const char* id, const char* label, std::vector<std::string> choices,
-                     int default_index, const char* description) {
-    ParamInfo param;
-    param.id = id;
-    param.label = label;
-    param.group = "Colour";
-    param.description = description;
-    param.type = ParamType::Int;
-    param.min_value = 0.0f;
-    param.max_value = static_cast<float>(choices.size() - 1);
-    param.default_value.fill(static_cast<float>(default_index));
-    param.choices = std::move(choices);
-    return param;
-}
-
-// The orbit-trap colouring's parameters (as FGR_COLOUR_PARAMS gives a plugin).
-void add_colour_params(Scene& scene) {
-    scene.params.push_back(enum_param("colour_mode", "Colour by", {"point", "planes", "axes",
-                                      "iterations"}, 0, "orbit trap that drives the palette"));
-    scene.params.push_back(enum_param("palette", "Palette",
-                                      {"ember", "ocean", "forest", "pastel", "mono"}, 1,
-                                      "colour ramp"));
-    ParamInfo base;
-    base.id = "base_colour";
-    base.label = "Base colour";
-    base.group = "Colour";
-    base.description = "tint multiplying the palette";
-    base.type = ParamType::Colour;
-    base.min_value = 0.0f;
-    base.max_value = 1.0f;
-    base.default_value = {1.0f, 0.96f, 0.9f};
-    scene.params.push_back(base);
 }
 
 }  // namespace
@@ -275,7 +243,9 @@ Scene formula_scene_to_scene(const FormulaScene& formula_scene, const std::files
     bailout.max_value = formula_scene.max_bailout;
     bailout.default_value.fill(formula_scene.bailout);
     scene.params.push_back(bailout);
-    add_colour_params(scene);
+    // The orbit-trap colouring's parameters, as FGR_COLOUR_PARAMS gives a plugin.
+    const fgr_param_desc colour[] = {FGR_COLOUR_PARAMS(0, 1, 1.0f, 0.96f, 0.9f)};
+    for (ParamInfo& param : copy_param_descriptions(colour)) scene.params.push_back(param);
     add_builtin_params(scene);
     return scene;
 }
