@@ -124,30 +124,41 @@ inline void bicomplex_square(vec3* z, real* w) {
     *w = 2.0f * (p.x * q + p.y * p.z);
 }
 
-/* Koebe's lower bound on the distance from u0 to the complex Mandelbrot set (k = u0, mandelbrot
- * set) or the Julia set of k, from the orbit u <- u^2 + k and its derivative by u0, which stops
- * past `bailout`. */
-inline real complex_set_distance(real re, real im, real k_re, real k_im, int mandelbrot,
+/* Koebe's lower bound on the distance from u to the complex Mandelbrot set (k = u, mandelbrot
+ * set) or the Julia set of k, from the orbit u <- u^2 + k and its derivative by the start,
+ * u' <- 2 u u' (+ 1 for the Mandelbrot set, where k moves with the start), stopping past
+ * `bailout`. */
+inline real complex_set_distance(complex_packet u, complex_packet k, int mandelbrot,
                                  int iterations, float bailout) {
-    real d_re = fgr_real(1.0f), d_im = fgr_real(0.0f);
+    complex_packet du = {fgr_real(1.0f), fgr_real(0.0f)};
     real potential_scale = fgr_real(1.0f);
-    real r2 = re * re + im * im;
+    real r2 = u.re * u.re + u.im * u.im;
     const float bailout2 = bailout * bailout;
     for (int i = 0; i < iterations; ++i) {
         const mask active = r2 <= bailout2;
         if (!fgr_any(active)) break;
-        /* u' <- 2 u u' (+ 1 for the Mandelbrot set, where k moves with u0) */
-        const real nd_re = 2.0f * (re * d_re - im * d_im) + (mandelbrot ? 1.0f : 0.0f);
-        const real nd_im = 2.0f * (re * d_im + im * d_re);
-        const real n_re = re * re - im * im + k_re, n_im = 2.0f * re * im + k_im;
-        d_re = select(d_re, nd_re, active);
-        d_im = select(d_im, nd_im, active);
-        re = select(re, n_re, active);
-        im = select(im, n_im, active);
+        const complex_packet u_du = complex_mul(u, du);
+        const complex_packet u2 = complex_mul(u, u);
+        du.re = select(du.re, 2.0f * u_du.re + (mandelbrot ? 1.0f : 0.0f), active);
+        du.im = select(du.im, 2.0f * u_du.im, active);
+        u.re = select(u.re, u2.re + k.re, active);
+        u.im = select(u.im, u2.im + k.im, active);
         potential_scale = select(potential_scale, 0.5f * potential_scale, active);
-        r2 = re * re + im * im;
+        r2 = u.re * u.re + u.im * u.im;
     }
-    return formula_potential_bound(sqrt(r2), sqrt(d_re * d_re + d_im * d_im), potential_scale);
+    return formula_potential_bound(sqrt(r2), sqrt(du.re * du.re + du.im * du.im), potential_scale);
+}
+
+/* The bicomplex point (x, y, z, w)'s idempotent parts: u = (x + w) + i (y - z) and
+ * v = (x - w) + i (y + z). */
+inline complex_packet idempotent_u(vec3 p, real w) {
+    const complex_packet u = {p.x + w, p.y - p.z};
+    return u;
+}
+
+inline complex_packet idempotent_v(vec3 p, real w) {
+    const complex_packet v = {p.x - w, p.y + p.z};
+    return v;
 }
 
 /* Tetrabrot: the bicomplex Mandelbrot set z^2 + c, on the slice w = 0 (Rochon 2000). */
@@ -162,11 +173,12 @@ inline real formula_tetrabrot_distance(vec3 z, real w, real dr, vec3 c, int iter
     (void)z;
     (void)w;
     (void)dr;
-    const real u = complex_set_distance(c.x, c.y - c.z, c.x, c.y - c.z, 1, iterations, bailout);
-    const real v = complex_set_distance(c.x, c.y + c.z, c.x, c.y + c.z, 1, iterations, bailout);
+    const complex_packet u = idempotent_u(c, fgr_real(0.0f)), v = idempotent_v(c, fgr_real(0.0f));
+    const real du = complex_set_distance(u, u, 1, iterations, bailout);
+    const real dv = complex_set_distance(v, v, 1, iterations, bailout);
     /* Where both orbits stay bounded the point is in the set: 0, not the estimates' negative
      * values (orbits ending inside the unit circle). */
-    return fmax(fmax(u, v), fgr_real(0.0f)) * M_SQRT1_2_F;
+    return fmax(fmax(du, dv), fgr_real(0.0f)) * M_SQRT1_2_F;
 }
 
 /* Bicomplex Julia set: z^2 + k for a fixed bicomplex k. */
@@ -184,11 +196,12 @@ inline real formula_bicomplex_julia_distance(vec3 z, real w, real dr, vec3 c, ve
     (void)z;
     (void)w;
     (void)dr;
-    const real ku_re = julia.x + julia_w, ku_im = julia.y - julia.z;
-    const real kv_re = julia.x - julia_w, kv_im = julia.y + julia.z;
-    const real u = complex_set_distance(c.x, c.y - c.z, ku_re, ku_im, 0, iterations, bailout);
-    const real v = complex_set_distance(c.x, c.y + c.z, kv_re, kv_im, 0, iterations, bailout);
+    const real julia_w_packet = fgr_real(julia_w);
+    const real du = complex_set_distance(idempotent_u(c, fgr_real(0.0f)),
+                                         idempotent_u(julia, julia_w_packet), 0, iterations, bailout);
+    const real dv = complex_set_distance(idempotent_v(c, fgr_real(0.0f)),
+                                         idempotent_v(julia, julia_w_packet), 0, iterations, bailout);
     /* Where both orbits stay bounded the point is in the set: 0, not the estimates' negative
      * values (orbits ending inside the unit circle). */
-    return fmax(fmax(u, v), fgr_real(0.0f)) * M_SQRT1_2_F;
+    return fmax(fmax(du, dv), fgr_real(0.0f)) * M_SQRT1_2_F;
 }
