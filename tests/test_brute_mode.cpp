@@ -22,6 +22,7 @@
 #include "fgr/plugin.h"
 #include "fgr/program_cache.hpp"
 #include "fgr/renderer.hpp"
+#include "render_probes.hpp"
 #include "test_scenes.hpp"
 
 namespace fgr {
@@ -300,15 +301,6 @@ std::vector<Scene> inside_only_scenes() {
     return scenes;
 }
 
-// Whether the camera's eye is inside the solid of the set: with the set solid and sampling from
-// the eye, a 1x1 render then hits at depth 0 exactly (the cut at near).
-bool eye_inside(Renderer& brute, const Scene& scene, const CameraView& view) {
-    FrameRequest probe = {1, 1, view, default_param_values(scene)};
-    set_param_from_text(scene, probe.params, "brute_solid=set");
-    set_param_from_text(scene, probe.params, "brute_samples=1");
-    return brute.render(probe).depth[0] == 0.0f;
-}
-
 TEST_F(BruteModeTest, InsideOnlyScenesRenderEveryCameraWithoutNaN) {
     const std::vector<Scene> scenes = inside_only_scenes();
     ASSERT_GE(scenes.size(), 2u);
@@ -353,8 +345,8 @@ TEST_F(BruteModeTest, ACameraInsideTheSetSeesItsCavitiesWithoutNaN) {
         const glm::dvec3 step = glm::dvec3(basis.forward) * double(centre + 2.0f * pixel);
         inside.position += step;
         inside.target += step;
-        ASSERT_FALSE(eye_inside(*brute, scene, outside.view));
-        ASSERT_TRUE(eye_inside(*brute, scene, inside));
+        ASSERT_FALSE(test::eye_inside(*brute, scene, outside.view));
+        ASSERT_TRUE(test::eye_inside(*brute, scene, inside));
         for (const char* solid : {"auto", "set", "complement"}) {
             SCOPED_TRACE(solid);
             FrameRequest req = request(scene, kW, kH, 4, {std::string("brute_solid=") + solid});

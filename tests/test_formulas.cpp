@@ -27,6 +27,7 @@
 #include "fuzz_rng.hpp"
 #include "json_mutation.hpp"
 #include "random_points.hpp"
+#include "render_probes.hpp"
 
 namespace fgr {
 namespace {
@@ -251,16 +252,10 @@ class FormulaScenes : public test::DeviceSuite<> {
 protected:
     static Frame render(const Scene& scene, int width) {
         Renderer renderer(*device_, *cache_, scene, {width, scene.effects});
-        FrameRequest request;
-        request.width = 96;
-        request.height = 72;
-        request.view = scene.cameras.front().view;
-        request.params = default_param_values(scene);
-        return renderer.render(request);
+        return renderer.render(test::default_view_request(scene));
     }
 
-    // The scene's inside test at each point: a 1x1 brute-force render from the point, sampling
-    // from the eye, hits at depth 0 exactly when the eye is in the set.
+    // The scene's inside test at each point (test::eye_inside, the eye put at the point).
     static std::vector<bool> inside(const Scene& scene, const std::vector<glm::dvec3>& points) {
         KernelSwitches switches;
         switches.packet_width = 16;
@@ -268,15 +263,10 @@ protected:
         Renderer renderer(*device_, *cache_, scene, switches);
         std::vector<bool> verdicts;
         for (const glm::dvec3& point : points) {
-            FrameRequest probe;
-            probe.width = probe.height = 1;
-            probe.view = scene.cameras.front().view;
-            probe.view.target += point - probe.view.position;
-            probe.view.position = point;
-            probe.params = default_param_values(scene);
-            set_param_from_text(scene, probe.params, "brute_solid=set");
-            set_param_from_text(scene, probe.params, "brute_samples=1");
-            verdicts.push_back(renderer.render(probe).depth[0] == 0.0f);
+            CameraView view = scene.cameras.front().view;
+            view.target += point - view.position;
+            view.position = point;
+            verdicts.push_back(test::eye_inside(renderer, scene, view));
         }
         return verdicts;
     }

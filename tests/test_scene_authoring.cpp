@@ -25,6 +25,7 @@
 #include "fgr/program_cache.hpp"
 #include "fgr/renderer.hpp"
 #include "random_points.hpp"
+#include "render_probes.hpp"
 #include "test_scenes.hpp"
 
 namespace fgr {
@@ -50,12 +51,7 @@ Scene sdk_example(const std::string& id) {
 Frame render_small(const Scene& scene, int packet_width) {
     ProgramCache no_disk_cache{std::filesystem::path()};
     Renderer renderer(device(), no_disk_cache, scene, {packet_width, scene.effects});
-    FrameRequest request;
-    request.width = 96;
-    request.height = 72;
-    request.view = scene.cameras.front().view;
-    request.params = default_param_values(scene);
-    return renderer.render(request);
+    return renderer.render(test::default_view_request(scene));
 }
 
 // --- Kernel API versions ----------------------------------------------------------------------
