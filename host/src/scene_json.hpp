@@ -16,6 +16,26 @@
 
 namespace fgr::scene_json {
 
+// The Scene of a scene file's data (an IfsScene, a FormulaScene): its id, name and description,
+// cameras, camera paths and lights, the OpenCL source written from it and the file. The source's
+// name is the id and `suffix` (".ifs.cl"), not the file's path: `fgr view --dev` watches a
+// scene's source_name as OpenCL source.
+template <typename FileData>
+Scene scene_of_file(const FileData& data, std::string source, const char* suffix,
+                    const std::filesystem::path& file) {
+    Scene scene;
+    scene.id = data.id;
+    scene.name = data.name;
+    scene.description = data.description;
+    scene.source = std::move(source);
+    scene.source_name = data.id + suffix;
+    scene.plugin_file = file;
+    scene.cameras = data.cameras;
+    scene.camera_paths = data.camera_paths;
+    scene.lights = data.lights;
+    return scene;
+}
+
 // The limits plugins have (description_validation.cpp).
 inline constexpr std::size_t kMaxTextLength = 4096;
 inline constexpr std::size_t kMaxCameras = 256;

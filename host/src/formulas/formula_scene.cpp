@@ -4,6 +4,7 @@
 
 #include <fmt/format.h>
 
+#include "../scene_json.hpp"
 #include "fgr/description_validation.hpp"
 #include "fgr/formulas.hpp"
 #include "fgr/plugin.h"
@@ -198,18 +199,9 @@ std::string formula_kernel_source(const FormulaScene& scene) {
 }
 
 Scene formula_scene_to_scene(const FormulaScene& formula_scene, const std::filesystem::path& file) {
-    Scene scene;
-    scene.id = formula_scene.id;
-    scene.name = formula_scene.name;
-    scene.description = formula_scene.description;
+    Scene scene = scene_json::scene_of_file(formula_scene, formula_kernel_source(formula_scene),
+                                            ".formula.cl", file);
     scene.tags = formula_scene.tags;
-    scene.source = formula_kernel_source(formula_scene);
-    // Not the file's path: `fgr view --dev` watches a scene's source_name as OpenCL source.
-    scene.source_name = formula_scene.id + ".formula.cl";
-    scene.plugin_file = file;
-    scene.cameras = formula_scene.cameras;
-    scene.camera_paths = formula_scene.camera_paths;
-    scene.lights = formula_scene.lights;
     scene.effects = FGR_EFFECT_AMBIENT_OCCLUSION | FGR_EFFECT_SOFT_SHADOWS;
     scene.march = formula_scene.march;
     scene.default_mode = formula_scene.estimate == FormulaEstimate::Inside ? RenderMode::Brute

@@ -5,6 +5,7 @@
 
 #include <glm/geometric.hpp>
 
+#include "../scene_json.hpp"
 #include "fgr/ifs.hpp"
 #include "fgr/plugin.h"
 #include "ifs_source.hpp"
@@ -45,17 +46,7 @@ ParamInfo depth_param(const IfsScene& ifs) {
 }  // namespace
 
 Scene ifs_scene_to_scene(const IfsScene& ifs, const std::filesystem::path& file) {
-    Scene scene;
-    scene.id = ifs.id;
-    scene.name = ifs.name;
-    scene.description = ifs.description;
-    scene.source = ifs_kernel_source(ifs);
-    // Not the file's path: `fgr view --dev` watches a scene's source_name as OpenCL source.
-    scene.source_name = ifs.id + ".ifs.cl";
-    scene.plugin_file = file;
-    scene.cameras = ifs.cameras;
-    scene.camera_paths = ifs.camera_paths;
-    scene.lights = ifs.lights;
+    Scene scene = scene_json::scene_of_file(ifs, ifs_kernel_source(ifs), ".ifs.cl", file);
     scene.effects = FGR_EFFECT_SHADOWS;  // exact any-hit shadow rays are cheap
     scene.march.max_distance = max_distance_for(ifs);
     scene.default_mode = RenderMode::Shaded;
