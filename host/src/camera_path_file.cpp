@@ -17,10 +17,6 @@ using nlohmann::json;
 constexpr const char* kFormat = "fgr-camera-path";
 constexpr int kVersion = 1;
 
-json vec3_json(glm::vec3 v) { return json::array({v.x, v.y, v.z}); }
-// Positions and targets: JSON numbers are written to round-trip a double exactly.
-json vec3_json(glm::dvec3 v) { return json::array({v.x, v.y, v.z}); }
-
 using json_fields::fail;
 
 Keyframe keyframe_from(const json& entry, std::size_t index) {
@@ -39,11 +35,9 @@ Keyframe keyframe_from(const json& entry, std::size_t index) {
 std::string camera_path_json(const CameraPathFile& file) {
     json keyframes = json::array();
     for (const Keyframe& keyframe : file.path.keyframes) {
-        keyframes.push_back({{"time", keyframe.time},
-                             {"position", vec3_json(keyframe.view.position)},
-                             {"target", vec3_json(keyframe.view.target)},
-                             {"up", vec3_json(keyframe.view.up)},
-                             {"fov", keyframe.view.fov_degrees}});
+        json entry = json_fields::view_json(keyframe.view);
+        entry["time"] = keyframe.time;
+        keyframes.push_back(entry);
     }
     const json document = {{"format", kFormat},     {"version", kVersion},
                            {"scene", file.scene},   {"name", file.path.name},

@@ -64,6 +64,15 @@ void check_version(const json& document, int version) {
     }
 }
 
+json vec3_json(glm::dvec3 v) { return json::array({v.x, v.y, v.z}); }
+
+json view_json(const CameraView& view) {
+    return {{"position", vec3_json(view.position)},
+            {"target", vec3_json(view.target)},
+            {"up", vec3_json(view.up)},
+            {"fov", view.fov_degrees}};
+}
+
 CameraView view_from(const json& entry, const std::string& where) {
     CameraView view;
     view.position = dvec3_from(entry, "position", where);

@@ -47,6 +47,11 @@ void check_version(const nlohmann::json& document, int version);
 // default 60), checked by view_problem (view_validation.hpp).
 CameraView view_from(const nlohmann::json& entry, const std::string& where);
 
+// What view_from and dvec3_from read, written: three numbers (a double round-trips exactly), and
+// a view's "position", "target", "up" and "fov".
+nlohmann::json vec3_json(glm::dvec3 v);
+nlohmann::json view_json(const CameraView& view);
+
 // Refuses any key of `object` not in `known`: a misspelt key must not pass silently.
 void check_keys(const nlohmann::json& object, std::initializer_list<std::string_view> known,
                 const std::string& where);

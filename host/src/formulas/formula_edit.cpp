@@ -9,6 +9,7 @@
 #include <fmt/format.h>
 #include <nlohmann/json.hpp>
 
+#include "../json_fields.hpp"
 #include "fgr/parameters.hpp"
 
 namespace fgr {
@@ -57,15 +58,6 @@ void settle_sequence_settings(FormulaScene& scene) {
 
 using nlohmann::json;
 
-json vector_json(const auto& v) { return json::array({v.x, v.y, v.z}); }
-
-json view_json(const CameraView& view) {
-    return {{"position", vector_json(view.position)},
-            {"target", vector_json(view.target)},
-            {"up", vector_json(view.up)},
-            {"fov", view.fov_degrees}};
-}
-
 json slot_json(const FormulaSlot& slot) {
     json entry = {{"formula", slot.formula->name}, {"repeat", slot.repeat}};
     json parameters = json::object();
@@ -81,13 +73,13 @@ json slot_json(const FormulaSlot& slot) {
 }
 
 json light_json(const Light& light) {
-    json entry = {{"colour", vector_json(light.colour)}, {"intensity", light.intensity}};
+    json entry = {{"colour", json_fields::vec3_json(light.colour)}, {"intensity", light.intensity}};
     if (light.type == LightType::Point) {
         entry["type"] = "point";
-        entry["position"] = vector_json(light.vector);
+        entry["position"] = json_fields::vec3_json(light.vector);
     } else {
         entry["type"] = "directional";
-        entry["direction"] = vector_json(light.vector);
+        entry["direction"] = json_fields::vec3_json(light.vector);
         entry["angular_radius_degrees"] = light.angular_radius * (180.0 / std::numbers::pi);
     }
     return entry;
@@ -115,7 +107,7 @@ std::string formula_scene_json(const FormulaScene& scene) {
     document["estimate"] = formula_estimate_name(scene.estimate);
     json cameras = json::array();
     for (const NamedCamera& camera : scene.cameras) {
-        json entry = view_json(camera.view);
+        json entry = json_fields::view_json(camera.view);
         entry["name"] = camera.name;
         cameras.push_back(entry);
     }
@@ -124,7 +116,7 @@ std::string formula_scene_json(const FormulaScene& scene) {
     for (const CameraPath& path : scene.camera_paths) {
         json keyframes = json::array();
         for (const Keyframe& keyframe : path.keyframes) {
-            json entry = view_json(keyframe.view);
+            json entry = json_fields::view_json(keyframe.view);
             entry["time"] = keyframe.time;
             keyframes.push_back(entry);
         }
