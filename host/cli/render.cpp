@@ -6,6 +6,9 @@
 #include <functional>
 #include <numeric>
 #include <string>
+#include <vector>
+
+#include <fnmatch.h>  // POSIX: the shell's wildcards for --all's scene pattern
 
 #include <fmt/format.h>
 #include <spdlog/spdlog.h>
@@ -107,7 +110,6 @@ void check_render_options(const RenderOptions& options) {
         } catch (const std::invalid_argument& error) {
             throw UsageError(error.what());
         }
-        if (!options.scene.empty()) throw UsageError("give a SCENE or --all, not both");
         if (options.dev) throw UsageError("--dev is for one scene: give a SCENE, not --all");
         if (!options.assignments.empty() || options.colour || options.camera ||
             options.camera_path || options.time || !options.view_override.empty()) {
@@ -363,20 +365,35 @@ int render_across_ranks(Cluster& cluster, const Scene& scene, const FrameRequest
     return render_tiled(scene, request, device, cache, options);
 }
 
+// The scenes whose ids match PATTERN, a shell wildcard ('mandel*', 'quaternion-?ulia'); every
+// scene when it is empty.
+std::vector<Scene> scenes_matching(const Discovery& found, const std::string& pattern) {
+    if (found.scenes.empty()) throw RuntimeFailure("no scenes found (see `fgr list`)");
+    std::vector<Scene> matching;
+    for (const Scene& scene : found.scenes) {
+        if (pattern.empty() || fnmatch(pattern.c_str(), scene.id.c_str(), 0) == 0) {
+            matching.push_back(scene);
+        }
+    }
+    if (matching.empty()) {
+        throw UsageError(fmt::format("no scene id matches '{}' (see `fgr list`)", pattern));
+    }
+    return matching;
+}
+
 int render_all(const RenderOptions& options) {
+    const std::vector<Scene> scenes = scenes_matching(discover(), options.scene);
     const std::filesystem::path directory = options.output;
     std::error_code error;
     std::filesystem::create_directories(directory, error);
     if (error || !std::filesystem::is_directory(directory)) {
         throw RuntimeFailure(fmt::format("cannot create directory '{}'", directory.string()));
     }
-    const Discovery found = discover();
-    if (found.scenes.empty()) throw RuntimeFailure("no scenes found (see `fgr list`)");
     const ComputeDevice device = open_requested_device(options.device);
     ProgramCache cache(ProgramCache::default_directory());
-    for (size_t i = 0; i < found.scenes.size(); ++i) {
-        const Scene scene = scene_as_used(found.scenes[i], false);
-        fmt::print("scene {} ({}/{})\n", scene.id, i + 1, found.scenes.size());
+    for (size_t i = 0; i < scenes.size(); ++i) {
+        const Scene scene = scene_as_used(scenes[i], false);
+        fmt::print("scene {} ({}/{})\n", scene.id, i + 1, scenes.size());
         render_to_file(scene, default_request(scene, options), device, cache, options,
                        directory / (scene.id + ".png"));
     }
@@ -429,8 +446,11 @@ void add_render_command(CLI::App& app, RenderOptions& options) {
     CLI::App* render = app.add_subcommand(
         "render",
         "render one image of a scene to a PNG, EXR or TIFF file, or every scene's default view");
-    render->add_option("scene", options.scene, "scene id (see `fgr list`)");
-    render->add_flag("--all", options.all, "render every scene's default view into the directory -o");
+    render->add_option("scene", options.scene,
+                       "scene id (see `fgr list`); with --all, a wildcard pattern of ids (e.g. 'mandel*')");
+    render->add_flag("--all", options.all,
+                     "render every scene's default view (or those the scene pattern matches) into "
+                     "the directory -o");
     render->add_option("-o,--output", options.output,
                        "output .png or .tif (tone-mapped) or .exr (linear) file; a directory with --all")
         ->required();
