@@ -376,6 +376,41 @@ TEST(SdfCombinators, UnionOfDisjointShapesIsExactOutside) {
                 }});
 }
 
+// op_union_culled(d, lower, object) is fmin(d, object) wherever lower <= object, and evaluates
+// `object` only for packets with a lane whose lower bound is not beyond d. Here d = p.x,
+// lower = p.z, object = p.y (>= p.z), and each evaluation of the object adds 1000 to the result.
+TEST(SdfCombinators, CulledUnionIsTheUnionAndEvaluatesTheObjectOnlyWhereALaneMayNeedIt) {
+    const std::string body =
+        "real evaluations = fgr_real(0.0f);\n"
+        "real d = p.x;\n"
+        "d = op_union_culled(d, p.z, (evaluations += 1.0f, p.y));\n"
+        "return d + 1000.0f * evaluations;";
+    std::mt19937 rng(41);
+    std::uniform_real_distribution<float> unit(0.0f, 1.0f);
+    // One 16-point packet whose lower bounds all lie beyond d, then the same with one lane near.
+    std::vector<glm::vec3> beyond;
+    for (int i = 0; i < 16; ++i) {
+        const float x = unit(rng), lower = x + 0.01f + unit(rng);
+        beyond.emplace_back(x, lower + 2.0f * unit(rng), lower);
+    }
+    constexpr size_t kNearLane = 5;
+    std::vector<glm::vec3> one_near = beyond;
+    one_near[kNearLane].z = one_near[kNearLane].x - 0.5f;
+    one_near[kNearLane].y = one_near[kNearLane].x - 0.25f;  // nearer than d: the union takes it
+    for (int width : kWidths) {
+        const auto values = kernel_de(body, {beyond, one_near}, width);
+        for (size_t i = 0; i < 16; ++i) {
+            EXPECT_EQ(values[0][i], beyond[i].x) << "width " << width << ", lane " << i;
+            // Width 16: the near lane's packet evaluates the object for all its lanes; width 1:
+            // that lane alone.
+            const bool evaluated = width == 16 || i == kNearLane;
+            const float expected =
+                evaluated ? std::fmin(one_near[i].x, one_near[i].y) + 1000.0f : one_near[i].x;
+            EXPECT_EQ(values[1][i], expected) << "width " << width << ", lane " << i;
+        }
+    }
+}
+
 // --- Smooth combinators, by their properties rather than by their formula typed again. With
 // d1 = p.x and d2 = p.y the kernel's operation is evaluated at chosen input values directly.
 
@@ -738,6 +773,48 @@ TEST(SdfGallery, OneLipschitzAroundEveryObjectForEveryParameterExtreme) {
             ASSERT_LE(std::abs(de_first[i] - de_second[i]), (1.0 + 1e-3) * separation + 2e-6)
                 << name << ", slot " << i / 60 << ", pair " << i;
         }
+    }
+}
+
+// The benchmark scene unions its objects with op_union_culled. Its DE must equal, bit for bit,
+// the same source with every culled union made a plain fmin: at single points (width 1, where
+// each lane culls alone) and in packets of 16 points a few hundredths apart (width 16, where
+// whole packets cull), spread over the scene and packed round each object, whose bounding
+// spheres and boxes are where a lower bound that is too high would show.
+TEST(SdfGallery, TheBenchmarkScenesCulledUnionsChangeNoDistance) {
+    const Scene culled = test::built_scene("benchmark.so");
+    Scene plain = culled;
+    plain.source = "#undef op_union_culled\n#define op_union_culled(d, lower, object) fmin((d), (object))\n" +
+                   culled.source;
+    std::mt19937 rng(59);
+    std::uniform_real_distribution<float> unit(-1.0f, 1.0f);
+    const std::array<glm::vec3, 5> centres{glm::vec3(-1.7f, 0.5f, 0.72f), glm::vec3(1.5f, 0.7f, 0.62f),
+                                           glm::vec3(0.1f, -1.5f, 0.55f), glm::vec3(0.2f, 1.9f, 0.8f),
+                                           glm::vec3(0.0f, 0.0f, 0.8f)};
+    std::vector<glm::vec3> points;
+    for (int cluster = 0; cluster < 2000; ++cluster) {
+        // Round an object (the last centre: the whole scene, 3 units about).
+        const size_t object = size_t(cluster) % centres.size();
+        const float reach = object + 1 == centres.size() ? 3.0f : 1.3f;
+        const glm::vec3 centre = centres[object] + reach * glm::vec3(unit(rng), unit(rng), unit(rng));
+        for (int i = 0; i < 16; ++i) points.push_back(centre + 0.03f * glm::vec3(unit(rng), unit(rng), unit(rng)));
+    }
+    for (int width : kWidths) {
+        ProgramCache no_disk_cache{std::filesystem::path()};
+        Renderer with_culling(device(), no_disk_cache, culled, {width, 0});
+        Renderer without(device(), no_disk_cache, plain, {width, 0});
+        const auto values = default_param_values(culled);
+        const auto expected = without.probe_de(points, values);
+        const auto actual = with_culling.probe_de(points, values);
+        int differing = 0;
+        for (size_t i = 0; i < points.size(); ++i) {
+            if (actual[i] != expected[i] && ++differing <= 3) {
+                ADD_FAILURE() << "width " << width << " at (" << points[i].x << ", " << points[i].y
+                              << ", " << points[i].z << "): " << actual[i] << " against "
+                              << expected[i];
+            }
+        }
+        EXPECT_EQ(differing, 0) << "width " << width << " of " << points.size() << " points";
     }
 }
 
