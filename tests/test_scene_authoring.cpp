@@ -61,13 +61,13 @@ TEST(KernelApi, TheVersionIsReadFromTheSourcesOwnDefine) {
     EXPECT_EQ(declared_kernel_api("#define FGR_KERNEL_API 2\nreal scene_de..."), 2);
     EXPECT_EQ(declared_kernel_api("  #  define   FGR_KERNEL_API 1  \n"), 1);
     EXPECT_EQ(declared_kernel_api("/* #define FGR_KERNEL_API 2 */\n// #define FGR_KERNEL_API 2\n"), 1);
-    for (const char* unknown : {"#define FGR_KERNEL_API 3\n", "#define FGR_KERNEL_API 0\n",
+    for (const char* unknown : {"#define FGR_KERNEL_API 4\n", "#define FGR_KERNEL_API 0\n",
                                 "#define FGR_KERNEL_API two\n"}) {
         try {
             declared_kernel_api(unknown);
             ADD_FAILURE() << "accepted: " << unknown;
         } catch (const std::invalid_argument& error) {
-            EXPECT_NE(std::string(error.what()).find("kernel APIs 1 to 2"), std::string::npos)
+            EXPECT_NE(std::string(error.what()).find("kernel APIs 1 to 3"), std::string::npos)
                 << error.what();
         }
     }

@@ -381,6 +381,7 @@ TEST(SdfCombinators, UnionOfDisjointShapesIsExactOutside) {
 // lower = p.z, object = p.y (>= p.z), and each evaluation of the object adds 1000 to the result.
 TEST(SdfCombinators, CulledUnionIsTheUnionAndEvaluatesTheObjectOnlyWhereALaneMayNeedIt) {
     const std::string body =
+        "#define FGR_KERNEL_API 3\n"
         "real evaluations = fgr_real(0.0f);\n"
         "real d = p.x;\n"
         "d = op_union_culled(d, p.z, (evaluations += 1.0f, p.y));\n"

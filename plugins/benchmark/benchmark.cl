@@ -10,6 +10,8 @@
  *   else is nearer than its bound for every lane of the packet: a shadow ray or reflection
  *   crossing the floor pays for the floor alone. */
 
+#define FGR_KERNEL_API 3
+
 #define BENCH_BULB_CENTRE v3_splat(-1.7f, 0.5f, 0.72f)
 #define BENCH_BULB_SCALE 0.6f
 #define BENCH_SPONGE_CENTRE v3_splat(1.5f, 0.7f, 0.62f)

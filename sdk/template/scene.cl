@@ -8,7 +8,7 @@
  * FGR_ITERATE, FGR_DISTANCE ("Orbit scenes: the short way" in the guide). */
 
 /* The kernel library version this source is written for: fgr shows it that version's names. */
-#define FGR_KERNEL_API 2
+#define FGR_KERNEL_API 3
 
 /* A lower bound on the distance from p to the surface: the ball of radius param_radius, pushed
  * in and out by sine bumps. op_displace_sine divides by the bumps' steepest slope, so the result
