@@ -100,6 +100,17 @@ TEST_F(SceneCheckTest, ADistanceTenPercentTooLargeFailsTheMarchSafety) {
     EXPECT_NE(safety.detail.find("1.10x"), std::string::npos) << safety.detail;
 }
 
+// The relaxed-steps check compares the march with a cautious one: steps of half the scene's own
+// step factor (at most 0.5). A ball whose DE is 2.5 times the distance is safe at its step factor
+// 0.35 (steps of 0.875 of the distance); a "cautious" march at 0.5 would overshoot (1.25) and
+// blame the scene for its own holes.
+TEST_F(SceneCheckTest, TheCautiousMarchStepsFinerThanASceneWithASmallStepFactor) {
+    Scene scene = ball("return 2.5f * (v3_length(p) - 1.0f);", 0.35f);
+    SceneChecker checker(device(), cache_, scene);
+    const CheckResult relaxed = checker.relaxed_steps();
+    EXPECT_EQ(relaxed.status, CheckStatus::Passed) << relaxed.detail;
+}
+
 // NaN at one point only: the check names the point and the parameters it used.
 TEST_F(SceneCheckTest, ANanAtTheOriginIsNamed) {
     Scene scene = ball("return (v3_length(p) - 1.0f) * (v3_length(p) / v3_length(p));");
