@@ -131,14 +131,14 @@ inline real sd_tetrahedron(vec3 p, float size) {
 /* Both shapes. Exact outside when both inputs are; a bound inside. */
 inline real op_union(real d1, real d2) { return fmin(d1, d2); }
 
-/* (Kernel API 3.) The union of the nearest distance so far, d, with an object whose DE `object` is costly:
- * exactly fmin(d, object), but `object` is not evaluated at all when no lane can need it, that
- * is when every lane's `lower` lies beyond d. `lower` must never exceed the object's DE value: the
- * distance to a sphere or box containing the object, less whatever the object's DE may fall below
- * the true distance (a smooth union's k/4, say), and a little for rounding (scale it by 0.9999).
- * A ray near one object then pays for that object alone: a scene of several (the benchmark) or a
- * fractal on a floor marches as fast as its nearest object. A macro, so `object` is evaluated only
- * when used; d is read twice, so pass a variable. */
+/* (Kernel API 3.) The union of the nearest distance so far, d, with an object whose DE `object`
+ * is costly: exactly fmin(d, object), but `object` is not evaluated at all when no lane can need
+ * it, that is when every lane's `lower` lies beyond d. `lower` must never exceed the object's DE
+ * value: the distance to a sphere or box containing the object, less whatever the object's DE may
+ * fall below the true distance (a smooth union's k/4, say), and a little for rounding (1e-5 in a
+ * scene of size 1). A ray near one object then pays for that object alone: a scene of several
+ * (the benchmark) or a fractal on a floor marches as fast as its nearest object. A macro, so
+ * `object` is evaluated only when used; d is read twice, so pass a variable. */
 #if FGR_KERNEL_API >= 3
 #define op_union_culled(d, lower, object) (fgr_all((lower) > (d)) ? (d) : fmin((d), (object)))
 #endif

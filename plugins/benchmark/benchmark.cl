@@ -88,26 +88,27 @@ inline real bench_column(vec3 p) {
 inline real bench_floor(vec3 p) { return sd_plane(p, v3_splat(0.0f, 0.0f, 1.0f), 0.0f); }
 
 /* Lower bounds of the objects' DE values, for op_union_culled: a ray near the floor or one object
- * evaluates that object alone, and the scene's DE is the same to the last bit. */
+ * evaluates that object alone, and the scene's DE is the same to the last bit. Each is 1e-5 under
+ * the bound it stands for, so rounding cannot lift it above the object's DE. */
 inline real bulb_lower(vec3 p) {
     vec3 in_object = op_scale_point(op_translate(p, BENCH_BULB_CENTRE), BENCH_BULB_SCALE);
-    return 0.9999f * op_scale_distance(sd_sphere(in_object, 1.25f), BENCH_BULB_SCALE);
+    return op_scale_distance(sd_sphere(in_object, 1.25f), BENCH_BULB_SCALE) - 1e-5f;
 }
 inline real sponge_lower(vec3 p) {
     vec3 in_object = op_scale_point(op_rotate_z(op_translate(p, BENCH_SPONGE_CENTRE), 0.5f),
                                     BENCH_SPONGE_HALF);
-    return 0.9999f * op_scale_distance(sd_box(in_object, v3_splat(1.0f, 1.0f, 1.0f)),
-                                       BENCH_SPONGE_HALF);
+    return op_scale_distance(sd_box(in_object, v3_splat(1.0f, 1.0f, 1.0f)), BENCH_SPONGE_HALF) -
+           1e-5f;
 }
 inline real blob_lower(vec3 p) {
     /* sphere >= |q| - 0.38, ring >= |q| - (0.55 + 0.12), their smooth union >= min - 0.2 / 4 */
-    return v3_length(op_translate(p, BENCH_BLOB_CENTRE)) - 0.7201f;
+    return v3_length(op_translate(p, BENCH_BLOB_CENTRE)) - 0.72f - 1e-5f;
 }
 inline real column_lower(vec3 p) {
     /* Outside its clamping cylinder the column's DE is at least the way back to it. */
     real excess;
     op_clamp_to_cylinder(op_translate(p, BENCH_COLUMN_CENTRE), 0.6f, 1.6f, &excess);
-    return select(fgr_real(-INFINITY), 0.9999f * excess, excess > 0.0f);
+    return select(fgr_real(-INFINITY), excess - 1e-5f, excess > 0.0f);
 }
 
 real scene_de(vec3 p, PARAMS) {
