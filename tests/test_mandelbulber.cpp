@@ -12,6 +12,7 @@
 #include <cmath>
 #include <filesystem>
 #include <fstream>
+#include <ostream>
 #include <string>
 #include <vector>
 
@@ -39,13 +40,21 @@ const fs::path kSourceDir = FGR_TEST_SOURCE_DIR;
 const fs::path kCasesFile = kSourceDir / ".." / "bench" / "mandelbulber_formulas.json";
 const fs::path kMaskDir = kSourceDir / "fixtures" / "mandelbulber";
 
-std::vector<json> comparison_cases() {
+// One case of bench/mandelbulber_formulas.json. gtest (and so ctest's test names) prints a case
+// by its id alone, not its whole JSON.
+struct ComparisonCase {
+    json item;
+    std::string id() const { return item.at("id").get<std::string>(); }
+};
+void PrintTo(const ComparisonCase& comparison, std::ostream* out) { *out << comparison.id(); }
+
+std::vector<ComparisonCase> comparison_cases() {
     std::ifstream in(kCasesFile);
     if (!in) return {};
     const json document = json::parse(in);
-    std::vector<json> cases;
+    std::vector<ComparisonCase> cases;
     for (const json& item : document.at("cases")) {
-        cases.push_back(item);
+        cases.push_back({item});
     }
     return cases;
 }
@@ -108,11 +117,11 @@ double intersection_over_union(const std::vector<bool>& a, const std::vector<boo
     return either == 0 ? 1.0 : static_cast<double>(both) / static_cast<double>(either);
 }
 
-class MandelbulberAgreement : public ::testing::TestWithParam<json> {};
+class MandelbulberAgreement : public ::testing::TestWithParam<ComparisonCase> {};
 
 TEST_P(MandelbulberAgreement, HitSilhouetteMatchesMandelbulbers) {
-    const json& item = GetParam();
-    const std::string id = item.at("id").get<std::string>();
+    const json& item = GetParam().item;
+    const std::string id = GetParam().id();
     test::TempDir dir("fgr_mandelbulber");
     const fs::path output = dir.path() / (id + ".png");
     const test::RunResult result = test::run_fgr(render_arguments(item, output), dir.path());
@@ -126,20 +135,19 @@ TEST_P(MandelbulberAgreement, HitSilhouetteMatchesMandelbulbers) {
 }
 
 TEST(MandelbulberCases, AtLeastEightFormulasAgree) {
-    const std::vector<json> cases = comparison_cases();
+    const std::vector<ComparisonCase> cases = comparison_cases();
     std::vector<std::string> scenes;
-    for (const json& item : cases) {
-        EXPECT_TRUE(fs::exists(kMaskDir / (item.at("id").get<std::string>() + ".png")))
-            << item.at("id");
-        const std::string scene = item.at("fgr_scene").get<std::string>();
+    for (const ComparisonCase& comparison : cases) {
+        EXPECT_TRUE(fs::exists(kMaskDir / (comparison.id() + ".png"))) << comparison.id();
+        const std::string scene = comparison.item.at("fgr_scene").get<std::string>();
         if (std::find(scenes.begin(), scenes.end(), scene) == scenes.end()) scenes.push_back(scene);
     }
     EXPECT_GE(scenes.size(), 8u) << "formula scenes compared with Mandelbulber 2";
 }
 
 INSTANTIATE_TEST_SUITE_P(Cases, MandelbulberAgreement, ::testing::ValuesIn(comparison_cases()),
-                         [](const ::testing::TestParamInfo<json>& param_info) {
-                             return param_info.param.at("id").get<std::string>();
+                         [](const ::testing::TestParamInfo<ComparisonCase>& param_info) {
+                             return param_info.param.id();
                          });
 
 }  // namespace
