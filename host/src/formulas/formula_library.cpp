@@ -65,6 +65,17 @@ Formula formula(const char* name, const char* title, const char* family,
     return f;
 }
 
+// A formula that iterates like `base` (same family, distance, estimate, numbers and view) under
+// another name: a Julia form, a higher power.
+Formula variant(Formula base, const char* name, const char* title, std::vector<std::string> tags,
+                const char* summary) {
+    base.name = name;
+    base.title = title;
+    base.tags = std::move(tags);
+    base.summary = summary;
+    return base;
+}
+
 // Bulbs: polynomial steps, logarithmic distance; the DE overestimates a little (0.8 steps).
 Formula bulb(Formula f, int iterations = 10, float bailout = 4.0f) {
     f.iterations = iterations;
@@ -190,42 +201,33 @@ std::vector<Formula> build_library() {
     // the quaternions' squares are not conformal: `fgr check` measured 1.3x overestimates
     const Formula quaternion_base = stepping(quaternion_plain, 0.7f);
     all.push_back(quaternion_base);
-    Formula quaternion_julia = quaternion_base;
-    quaternion_julia.name = "quaternion_julia";
-    quaternion_julia.title = "Quaternion Julia";
-    quaternion_julia.tags = {"hypercomplex", "quaternion", "julia"};
-    quaternion_julia.summary = "q^2 + k for a fixed quaternion k, slice w = 0";
+    Formula quaternion_julia = variant(quaternion_base, "quaternion_julia", "Quaternion Julia",
+                                       {"hypercomplex", "quaternion", "julia"},
+                                       "q^2 + k for a fixed quaternion k, slice w = 0");
     quaternion_julia.origin = "Alan Norton, 1982; Hart, Sandin and Kauffman, SIGGRAPH 1989";
     quaternion_julia.params = {julia(-0.2f, 0.6f, 0.2f), julia_w(0.2f)};
     all.push_back(quaternion_julia);
-    Formula cubic = quaternion_base;
-    cubic.name = "quaternion_cubic";
-    cubic.title = "Cubic quaternion Mandelbrot";
-    cubic.tags = {"hypercomplex", "quaternion", "cubic"};
-    cubic.summary = "q^3 + c in the quaternions, slice w = 0";
+    Formula cubic = variant(quaternion_base, "quaternion_cubic", "Cubic quaternion Mandelbrot",
+                            {"hypercomplex", "quaternion", "cubic"},
+                            "q^3 + c in the quaternions, slice w = 0");
     all.push_back(cubic);
-    Formula cubic_julia = quaternion_base;
-    cubic_julia.name = "quaternion_cubic_julia";
-    cubic_julia.title = "Cubic quaternion Julia";
-    cubic_julia.tags = {"hypercomplex", "quaternion", "cubic", "julia"};
-    cubic_julia.summary = "q^3 + k for a fixed quaternion k, slice w = 0";
+    Formula cubic_julia = variant(quaternion_base, "quaternion_cubic_julia",
+                                  "Cubic quaternion Julia",
+                                  {"hypercomplex", "quaternion", "cubic", "julia"},
+                                  "q^3 + k for a fixed quaternion k, slice w = 0");
     cubic_julia.params = {julia(-0.5f, 0.4f, 0.2f), julia_w(0.0f)};
     all.push_back(cubic_julia);
-    Formula qpower = quaternion_base;
-    qpower.name = "quaternion_power";
-    qpower.title = "Quaternion power";
-    qpower.tags = {"hypercomplex", "quaternion", "power"};
-    qpower.summary = "q^n + c in the quaternions (polar form), slice w = 0";
+    Formula qpower = variant(quaternion_base, "quaternion_power", "Quaternion power",
+                             {"hypercomplex", "quaternion", "power"},
+                             "q^n + c in the quaternions (polar form), slice w = 0");
     qpower.origin = "after Hart, Sandin and Kauffman, 1989; the polar form of quaternion powers";
     qpower.params = {scalar("power", "Power", 2.0f, 8.0f, 4.0f, "the exponent n")};
     qpower.max_bailout = 64.0f;
     qpower.bailout = 16.0f;
     all.push_back(qpower);
-    Formula qpower_julia = qpower;
-    qpower_julia.name = "quaternion_power_julia";
-    qpower_julia.title = "Quaternion power Julia";
-    qpower_julia.tags = {"hypercomplex", "quaternion", "power", "julia"};
-    qpower_julia.summary = "q^n + k for a fixed quaternion k (polar form), slice w = 0";
+    Formula qpower_julia = variant(qpower, "quaternion_power_julia", "Quaternion power Julia",
+                                   {"hypercomplex", "quaternion", "power", "julia"},
+                                   "q^n + k for a fixed quaternion k (polar form), slice w = 0");
     qpower_julia.params = {scalar("power", "Power", 2.0f, 8.0f, 3.0f, "the exponent n"),
                            julia(-0.2f, 0.6f, 0.2f), julia_w(0.0f)};
     all.push_back(qpower_julia);
@@ -237,11 +239,9 @@ std::vector<Formula> build_library() {
     tetrabrot.distance_reiterates = true;
     tetrabrot.view = view(1.4, -2.6, 1.6, -0.6, 0.0, 0.0, 50.0f);
     all.push_back(tetrabrot);
-    Formula bicomplex_julia = tetrabrot;
-    bicomplex_julia.name = "bicomplex_julia";
-    bicomplex_julia.title = "Bicomplex Julia";
-    bicomplex_julia.tags = {"hypercomplex", "bicomplex", "julia"};
-    bicomplex_julia.summary = "z^2 + k for a fixed bicomplex k, slice w = 0";
+    Formula bicomplex_julia = variant(tetrabrot, "bicomplex_julia", "Bicomplex Julia",
+                                      {"hypercomplex", "bicomplex", "julia"},
+                                      "z^2 + k for a fixed bicomplex k, slice w = 0");
     bicomplex_julia.origin = "after Rochon, 2000 (bicomplex Julia sets)";
     // Both idempotent parts of k, -0.12 + 0.65i and -0.12 + 0.75i, in the Mandelbrot set: their
     // Julia sets are connected, which Koebe's bound needs.
