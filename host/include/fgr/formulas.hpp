@@ -95,6 +95,8 @@ inline constexpr std::size_t kFormulaMaxFileBytes = 256u << 10;
 // Slots in a sequence, and repeats of one slot: far beyond any hybrid worth iterating.
 inline constexpr std::size_t kFormulaMaxSlots = 16;
 inline constexpr int kFormulaMaxRepeat = 64;
+// The largest bailout a formula scene may set, whatever its formulas allow.
+inline constexpr float kFormulaMaxBailout = 1e10f;
 
 struct FormulaSlot {
     const Formula* formula = nullptr;
@@ -125,6 +127,13 @@ struct FormulaScene {
 // The strongest estimate a sequence allows: a formula alone with a distance of its own has it
 // (analytic); otherwise the weakest of its formulas' estimates.
 FormulaEstimate strongest_estimate(const std::vector<FormulaSlot>& sequence);
+
+// The distance a sequence calls for when nobody chooses: a formula's own only alone; else
+// logarithmic when any step is polynomial (its growth wins), linear when all fold and scale.
+FormulaDistance sequence_distance(const std::vector<FormulaSlot>& sequence);
+
+// The largest bailout every formula of the sequence keeps finite: the least of their ceilings.
+float sequence_max_bailout(const std::vector<FormulaSlot>& sequence);
 
 // A formula scene file's problem, one line starting with the file's name.
 struct FormulaError : std::runtime_error {

@@ -23,37 +23,20 @@ void check_slot(const FormulaScene& scene, std::size_t slot) {
     }
 }
 
-bool any_slot(const FormulaScene& scene, auto predicate) {
-    return std::any_of(scene.sequence.begin(), scene.sequence.end(), predicate);
-}
-
 // What the sequence decides, worked out as a file without "distance" and "estimate" would have
 // it (formula_file.cpp), except that a formula with a distance of its own in a hybrid gets the
 // linear one (its folds and scales set the growth) where a file must choose. A delta estimate the
 // scene asked for stays while the sequence and the distance allow it; an inside test is what a
 // sequence gives, and goes with the formula that gave it.
 void settle_sequence_settings(FormulaScene& scene) {
-    const bool any_own = any_slot(
-        scene, [](const FormulaSlot& s) { return s.formula->distance == FormulaDistance::Own; });
-    const bool any_log = any_slot(scene, [](const FormulaSlot& s) {
-        return s.formula->distance == FormulaDistance::Logarithmic;
-    });
-    if (any_own && scene.sequence.size() == 1) {
-        scene.distance = FormulaDistance::Own;
-    } else {
-        scene.distance = any_log ? FormulaDistance::Logarithmic : FormulaDistance::Linear;
-    }
+    scene.distance = sequence_distance(scene.sequence);
     const FormulaEstimate available = strongest_estimate(scene.sequence);
     const bool keep_delta = scene.estimate == FormulaEstimate::Delta &&
                             available <= FormulaEstimate::Delta &&
                             scene.distance != FormulaDistance::Own;
     scene.estimate = keep_delta ? FormulaEstimate::Delta : available;
-    float max_bailout = 1e10f;
-    for (const FormulaSlot& slot : scene.sequence) {
-        max_bailout = std::min(max_bailout, slot.formula->max_bailout);
-    }
-    scene.max_bailout = max_bailout;
-    scene.bailout = std::min(scene.bailout, max_bailout);
+    scene.max_bailout = sequence_max_bailout(scene.sequence);
+    scene.bailout = std::min(scene.bailout, scene.max_bailout);
 }
 
 using nlohmann::json;

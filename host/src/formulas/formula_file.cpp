@@ -28,7 +28,6 @@ constexpr const char* kFormat = "fgr-formula";
 constexpr std::string_view kSuffix = ".formula.json";
 constexpr std::size_t kMaxTags = 16;
 constexpr int kMaxIterations = 1000;
-constexpr float kMaxBailout = 1e10f;
 
 
 bool is_tag(std::string_view tag) {
@@ -128,30 +127,24 @@ std::vector<std::string> tags_from(const json& document) {
     return tags;
 }
 
-// The distance the sequence calls for: a formula's own only alone; else logarithmic when any
-// step is polynomial (its growth wins), linear when all fold and scale. A file may choose.
+// The distance the sequence calls for (sequence_distance), or the one the file chooses; a hybrid
+// with a formula that has a distance of its own must choose.
 FormulaDistance distance_from(const json& document, const std::vector<FormulaSlot>& sequence) {
-    const bool any_own = std::any_of(sequence.begin(), sequence.end(), [](const FormulaSlot& s) {
-        return s.formula->distance == FormulaDistance::Own;
-    });
     if (document.contains("distance")) {
         const json& value = document.at("distance");
         if (value == "logarithmic") return FormulaDistance::Logarithmic;
         if (value == "linear") return FormulaDistance::Linear;
         fail("\"distance\" {} must be \"logarithmic\" or \"linear\"", shown(value));
     }
-    if (any_own) {
-        if (sequence.size() == 1) return FormulaDistance::Own;
+    const auto own = std::find_if(sequence.begin(), sequence.end(), [](const FormulaSlot& s) {
+        return s.formula->distance == FormulaDistance::Own;
+    });
+    if (own != sequence.end() && sequence.size() > 1) {
         fail("a hybrid with {} (a formula with a distance of its own) needs \"distance\": "
              "\"linear\" or \"logarithmic\"",
-             std::find_if(sequence.begin(), sequence.end(), [](const FormulaSlot& s) {
-                 return s.formula->distance == FormulaDistance::Own;
-             })->formula->name);
+             own->formula->name);
     }
-    const bool any_log = std::any_of(sequence.begin(), sequence.end(), [](const FormulaSlot& s) {
-        return s.formula->distance == FormulaDistance::Logarithmic;
-    });
-    return any_log ? FormulaDistance::Logarithmic : FormulaDistance::Linear;
+    return sequence_distance(sequence);
 }
 
 // The strongest estimate the sequence allows (strongest_estimate); a file may ask for a weaker one (the delta estimate,
@@ -189,10 +182,9 @@ FormulaEstimate estimate_from(const json& document, const FormulaScene& scene) {
 void march_from(const json& document, FormulaScene& scene) {
     int iterations = 0;
     float bailout = 0.0f, step_factor = 1.0f, max_distance = 0.0f;
-    float max_bailout = kMaxBailout;
+    const float max_bailout = sequence_max_bailout(scene.sequence);
     for (const FormulaSlot& slot : scene.sequence) {
         iterations = std::max(iterations, slot.formula->iterations);
-        max_bailout = std::min(max_bailout, slot.formula->max_bailout);
         bailout = std::max(bailout, slot.formula->bailout);
         step_factor = std::min(step_factor, slot.formula->step_factor);
         max_distance = std::max(max_distance, slot.formula->max_distance);

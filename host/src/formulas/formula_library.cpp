@@ -408,6 +408,24 @@ FormulaEstimate strongest_estimate(const std::vector<FormulaSlot>& sequence) {
     return weakest;
 }
 
+FormulaDistance sequence_distance(const std::vector<FormulaSlot>& sequence) {
+    if (sequence.size() == 1 && sequence[0].formula->distance == FormulaDistance::Own) {
+        return FormulaDistance::Own;
+    }
+    const bool any_log = std::any_of(sequence.begin(), sequence.end(), [](const FormulaSlot& s) {
+        return s.formula->distance == FormulaDistance::Logarithmic;
+    });
+    return any_log ? FormulaDistance::Logarithmic : FormulaDistance::Linear;
+}
+
+float sequence_max_bailout(const std::vector<FormulaSlot>& sequence) {
+    float max_bailout = kFormulaMaxBailout;
+    for (const FormulaSlot& slot : sequence) {
+        max_bailout = std::min(max_bailout, slot.formula->max_bailout);
+    }
+    return max_bailout;
+}
+
 const char* formula_estimate_name(FormulaEstimate estimate) {
     switch (estimate) {
         case FormulaEstimate::Analytic: return "analytic";
