@@ -33,15 +33,11 @@ Keyframe keyframe_from(const json& entry, std::size_t index) {
 }  // namespace
 
 std::string camera_path_json(const CameraPathFile& file) {
-    json keyframes = json::array();
-    for (const Keyframe& keyframe : file.path.keyframes) {
-        json entry = json_fields::view_json(keyframe.view);
-        entry["time"] = keyframe.time;
-        keyframes.push_back(entry);
-    }
-    const json document = {{"format", kFormat},     {"version", kVersion},
-                           {"scene", file.scene},   {"name", file.path.name},
-                           {"keyframes", keyframes}};
+    const json document = {{"format", kFormat},
+                           {"version", kVersion},
+                           {"scene", file.scene},
+                           {"name", file.path.name},
+                           {"keyframes", json_fields::keyframes_json(file.path.keyframes)}};
     return document.dump(2) + "\n";
 }
 

@@ -73,6 +73,16 @@ json view_json(const CameraView& view) {
             {"fov", view.fov_degrees}};
 }
 
+json keyframes_json(const std::vector<Keyframe>& keyframes) {
+    json entries = json::array();
+    for (const Keyframe& keyframe : keyframes) {
+        json entry = view_json(keyframe.view);
+        entry["time"] = keyframe.time;
+        entries.push_back(entry);
+    }
+    return entries;
+}
+
 CameraView view_from(const json& entry, const std::string& where) {
     CameraView view;
     view.position = dvec3_from(entry, "position", where);

@@ -10,6 +10,7 @@
 #include <string>
 #include <string_view>
 #include <utility>
+#include <vector>
 
 #include <fmt/format.h>
 #include <glm/vec3.hpp>
@@ -51,6 +52,8 @@ CameraView view_from(const nlohmann::json& entry, const std::string& where);
 // a view's "position", "target", "up" and "fov".
 nlohmann::json vec3_json(glm::dvec3 v);
 nlohmann::json view_json(const CameraView& view);
+// A camera path's keyframes: each view with its "time".
+nlohmann::json keyframes_json(const std::vector<Keyframe>& keyframes);
 
 // Refuses any key of `object` not in `known`: a misspelt key must not pass silently.
 void check_keys(const nlohmann::json& object, std::initializer_list<std::string_view> known,

@@ -97,13 +97,8 @@ std::string formula_scene_json(const FormulaScene& scene) {
     document["cameras"] = cameras;
     json paths = json::array();
     for (const CameraPath& path : scene.camera_paths) {
-        json keyframes = json::array();
-        for (const Keyframe& keyframe : path.keyframes) {
-            json entry = json_fields::view_json(keyframe.view);
-            entry["time"] = keyframe.time;
-            keyframes.push_back(entry);
-        }
-        paths.push_back({{"name", path.name}, {"keyframes", keyframes}});
+        paths.push_back(
+            {{"name", path.name}, {"keyframes", json_fields::keyframes_json(path.keyframes)}});
     }
     document["camera_paths"] = paths;
     json lights = json::array();
