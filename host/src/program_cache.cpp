@@ -11,6 +11,8 @@
 #include <fmt/format.h>
 #include <spdlog/spdlog.h>
 
+#include "fgr/content_hash.hpp"
+
 namespace fgr {
 namespace {
 
@@ -20,16 +22,6 @@ constexpr const char* kBaseOptions = "-cl-std=CL1.2";
 
 std::string full_options(const AssembledProgram& program) {
     return fmt::format("{} {}", kBaseOptions, program.options);
-}
-
-uint64_t fnv1a(uint64_t hash, std::string_view bytes) {
-    for (unsigned char byte : bytes) {
-        hash ^= byte;
-        hash *= 0x100000001b3ull;
-    }
-    // A separator, so ("ab","c") and ("a","bc") hash differently.
-    hash ^= 0xff;
-    return hash * 0x100000001b3ull;
 }
 
 double elapsed_ms(std::chrono::steady_clock::time_point since) {
@@ -66,9 +58,9 @@ std::string ProgramCache::cache_key(const ComputeDevice& device, const Assembled
     const std::string_view parts[] = {program.source,           options,
                                       device.info.platform,     device.info.name,
                                       device.info.version,      device.info.driver_version};
-    uint64_t hash = 0xcbf29ce484222325ull;
-    for (std::string_view part : parts) hash = fnv1a(hash, part);
-    return fmt::format("{:016x}", hash);
+    ContentHash hash;
+    for (std::string_view part : parts) hash.add(part);
+    return hash.hex();
 }
 
 cl::Program ProgramCache::build(const ComputeDevice& device, const AssembledProgram& program,

@@ -6,6 +6,7 @@
 #include <fmt/format.h>
 #include <spdlog/spdlog.h>
 
+#include "fgr/content_hash.hpp"
 #include "fgr/kernel_assembly.hpp"
 #include "fgr/opencl_device.hpp"
 #include "fgr/parameters.hpp"
@@ -17,19 +18,6 @@ namespace {
 
 // Changes whenever the way thumbnails are rendered does, so old files are never shown.
 constexpr std::string_view kThumbnailFormat = "fgr-thumbnail-1";
-
-uint64_t fnv1a(uint64_t hash, std::string_view bytes) {
-    for (const unsigned char byte : bytes) {
-        hash ^= byte;
-        hash *= 0x100000001b3ull;
-    }
-    return hash;
-}
-
-template <typename T>
-std::string_view bytes_of(const T& value) {
-    return {reinterpret_cast<const char*>(&value), sizeof value};
-}
 
 // The scene's program as the thumbnail renders it, the kernel library's files and the formula
 // families it calls included: a newer fgr's kernels make new thumbnails. (A scene whose program
@@ -48,22 +36,17 @@ std::string program_source(const Scene& scene) {
 }  // namespace
 
 std::string thumbnail_key(const Scene& scene) {
-    uint64_t hash = fnv1a(0xcbf29ce484222325ull, kThumbnailFormat);
-    hash = fnv1a(hash, program_source(scene));
+    ContentHash hash;
+    hash.add(kThumbnailFormat).add(program_source(scene));
     const std::vector<float> params = default_param_values(scene);
-    hash =
-        fnv1a(hash, {reinterpret_cast<const char*>(params.data()), params.size() * sizeof(float)});
+    hash.add({reinterpret_cast<const char*>(params.data()), params.size() * sizeof(float)});
     const CameraView& view = scene.cameras.front().view;
     for (int i = 0; i < 3; ++i) {
-        hash = fnv1a(hash, bytes_of(view.position[i]));
-        hash = fnv1a(hash, bytes_of(view.target[i]));
-        hash = fnv1a(hash, bytes_of(view.up[i]));
+        hash.add_bytes_of(view.position[i]).add_bytes_of(view.target[i]).add_bytes_of(view.up[i]);
     }
-    hash = fnv1a(hash, bytes_of(view.fov_degrees));
-    hash = fnv1a(hash, bytes_of(scene.effects));
-    hash = fnv1a(hash, bytes_of(scene.default_mode));
-    hash = fnv1a(hash, fmt::format("{}x{}", kThumbnailWidth, kThumbnailHeight));
-    return fmt::format("{:016x}", hash);
+    hash.add_bytes_of(view.fov_degrees).add_bytes_of(scene.effects).add_bytes_of(scene.default_mode);
+    hash.add(fmt::format("{}x{}", kThumbnailWidth, kThumbnailHeight));
+    return hash.hex();
 }
 
 std::filesystem::path default_thumbnail_directory() {
