@@ -97,6 +97,10 @@ inline constexpr std::size_t kFormulaMaxSlots = 16;
 inline constexpr int kFormulaMaxRepeat = 64;
 // The largest bailout a formula scene may set, whatever its formulas allow.
 inline constexpr float kFormulaMaxBailout = 1e10f;
+// The ranges of a file's "iterations", "step_factor" and "max_distance".
+inline constexpr int kFormulaMaxIterations = 1000;
+inline constexpr double kFormulaMinStepFactor = 0.05, kFormulaMaxStepFactor = 1.0;
+inline constexpr double kFormulaMinMaxDistance = 1e-3, kFormulaMaxMaxDistance = 1e6;
 
 struct FormulaSlot {
     const Formula* formula = nullptr;

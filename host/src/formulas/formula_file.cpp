@@ -27,7 +27,6 @@ using json_fields::shown;
 constexpr const char* kFormat = "fgr-formula";
 constexpr std::string_view kSuffix = ".formula.json";
 constexpr std::size_t kMaxTags = 16;
-constexpr int kMaxIterations = 1000;
 
 
 bool is_tag(std::string_view tag) {
@@ -190,7 +189,7 @@ void march_from(const json& document, FormulaScene& scene) {
         max_distance = std::max(max_distance, slot.formula->max_distance);
     }
     if (document.contains("iterations")) {
-        iterations = integer_from(document, "iterations", 1, kMaxIterations, "top level");
+        iterations = integer_from(document, "iterations", 1, kFormulaMaxIterations, "top level");
     }
     bailout = std::min(bailout, max_bailout);
     if (document.contains("bailout")) {
@@ -199,11 +198,13 @@ void march_from(const json& document, FormulaScene& scene) {
     }
     if (document.contains("step_factor")) {
         step_factor = static_cast<float>(
-            number_in(document.at("step_factor"), 0.05, 1.0, "\"step_factor\""));
+            number_in(document.at("step_factor"), kFormulaMinStepFactor, kFormulaMaxStepFactor,
+                      "\"step_factor\""));
     }
     if (document.contains("max_distance")) {
         max_distance = static_cast<float>(
-            number_in(document.at("max_distance"), 1e-3, 1e6, "\"max_distance\""));
+            number_in(document.at("max_distance"), kFormulaMinMaxDistance, kFormulaMaxMaxDistance,
+                      "\"max_distance\""));
     }
     scene.iterations = iterations;
     scene.bailout = bailout;

@@ -222,9 +222,11 @@ void ViewerApp::save_formula_scene(const std::string& id) {
         return param_value(scene(), session().params, param);
     };
     formula.bailout = value("bailout");
-    formula.iterations = std::clamp(static_cast<int>(value("iterations")), 1, 1000);
-    formula.march.step_factor = std::clamp(value("step_factor"), 0.05f, 1.0f);
-    formula.march.max_distance = std::clamp(value("max_distance"), 1e-3f, 1e6f);
+    formula.iterations = std::clamp(static_cast<int>(value("iterations")), 1, kFormulaMaxIterations);
+    formula.march.step_factor = std::clamp(value("step_factor"), float(kFormulaMinStepFactor),
+                                           float(kFormulaMaxStepFactor));
+    formula.march.max_distance = std::clamp(value("max_distance"), float(kFormulaMinMaxDistance),
+                                            float(kFormulaMaxMaxDistance));
     const std::filesystem::path file = options_.output_dir / (id + ".formula.json");
     try {
         const std::string text = formula_scene_json(formula);
