@@ -1,7 +1,5 @@
 // fgr environment: writes one of the environment maps fgr generates (the studio, the daylight
 // sky) as an equirectangular .hdr or .exr file, to look at, edit, or light other renderers with.
-#include <algorithm>
-#include <cctype>
 #include <filesystem>
 #include <string>
 
@@ -10,6 +8,7 @@
 #include "commands.hpp"
 #include "fgr/environment.hpp"
 #include "fgr/hdr_io.hpp"
+#include "fgr/lower_case.hpp"
 
 namespace fgr {
 
@@ -32,9 +31,7 @@ void add_environment_command(CLI::App& app, EnvironmentOptions& options) {
 
 int command_environment(const EnvironmentOptions& options) {
     const std::filesystem::path output = options.output;
-    std::string extension = output.extension().string();
-    std::transform(extension.begin(), extension.end(), extension.begin(),
-                   [](unsigned char c) { return static_cast<char>(std::tolower(c)); });
+    const std::string extension = lower_extension(output);
     if (extension != ".hdr" && extension != ".exr") {
         throw UsageError(fmt::format("output '{}' must be a .hdr or .exr file", output.string()));
     }

@@ -1,7 +1,6 @@
 #include "fgr/still_image.hpp"
 
 #include <algorithm>
-#include <cctype>
 #include <cmath>
 #include <limits>
 #include <vector>
@@ -15,6 +14,7 @@
 #include "fgr/hdr_io.hpp"
 #include "fgr/image_io.hpp"
 #include "fgr/kernel_assembly.hpp"
+#include "fgr/lower_case.hpp"
 #include "fgr/view_validation.hpp"
 
 namespace fgr {
@@ -116,12 +116,6 @@ Aovs parse_aovs(std::string_view list) {
 }
 
 namespace {
-
-std::string lower_extension(const std::filesystem::path& path) {
-    std::string extension = path.extension().string();
-    for (char& c : extension) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
-    return extension;
-}
 
 // The frame's linear colour, or with alpha the straight foreground, as a PNG's pixels.
 void write_png_still(const std::filesystem::path& path, const Frame& frame,

@@ -15,6 +15,7 @@
 #include <fmt/format.h>
 #include <nlohmann/json.hpp>
 
+#include "fgr/lower_case.hpp"
 #include "fgr/streaming_image.hpp"
 #include "parts/render_identity.hpp"
 
@@ -89,12 +90,6 @@ float* put_pixel(const Frame& frame, size_t i, bool layers, float* out) {
 
 double seconds_since(std::chrono::steady_clock::time_point start) {
     return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-}
-
-std::string lower_extension(const fs::path& path) {
-    std::string extension = path.extension().string();
-    for (char& c : extension) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
-    return extension;
 }
 
 [[noreturn]] void not_a_part(const fs::path& path, const std::string& why) {

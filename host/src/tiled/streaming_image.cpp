@@ -12,7 +12,6 @@
 #include <ImfStringAttribute.h>
 
 #include <algorithm>
-#include <cctype>
 #include <cerrno>
 #include <csetjmp>
 #include <cstdarg>
@@ -22,6 +21,7 @@
 #include <utility>
 
 #include "fgr/atomic_file.hpp"
+#include "fgr/lower_case.hpp"
 #include "png_errors.hpp"
 
 namespace fgr {
@@ -302,8 +302,7 @@ size_t sample_bytes(SampleType type) {
 }
 
 ImageFormat image_format_of(const fs::path& path) {
-    std::string extension = path.extension().string();
-    for (char& c : extension) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
+    const std::string extension = lower_extension(path);
     if (extension == ".png") return ImageFormat::Png;
     if (extension == ".exr") return ImageFormat::Exr;
     if (extension == ".tif" || extension == ".tiff") return ImageFormat::Tiff;

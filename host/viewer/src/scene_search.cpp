@@ -1,36 +1,27 @@
 #include "fgr/viewer/scene_search.hpp"
 
 #include <algorithm>
-#include <cctype>
 #include <sstream>
 
+#include "fgr/lower_case.hpp"
+
 namespace fgr::viewer {
-namespace {
-
-std::string lower(std::string_view text) {
-    std::string result(text);
-    std::transform(result.begin(), result.end(), result.begin(),
-                   [](unsigned char c) { return static_cast<char>(std::tolower(c)); });
-    return result;
-}
-
-}  // namespace
 
 SceneSearchEntry search_entry(const Scene& scene, const FormulaScene* formula_scene) {
     SceneSearchEntry entry;
-    entry.words = {lower(scene.id), lower(scene.name)};
-    for (const std::string& tag : scene.tags) entry.words.push_back(lower(tag));
+    entry.words = {lower_case(scene.id), lower_case(scene.name)};
+    for (const std::string& tag : scene.tags) entry.words.push_back(lower_case(tag));
     if (formula_scene == nullptr) return entry;
     for (const FormulaSlot& slot : formula_scene->sequence) {
-        entry.words.push_back(lower(slot.formula->name));
-        entry.words.push_back(lower(slot.formula->title));
-        entry.words.push_back(lower(slot.formula->family));
+        entry.words.push_back(lower_case(slot.formula->name));
+        entry.words.push_back(lower_case(slot.formula->title));
+        entry.words.push_back(lower_case(slot.formula->family));
     }
     return entry;
 }
 
 bool matches_query(const SceneSearchEntry& entry, std::string_view query) {
-    std::istringstream words{lower(query)};
+    std::istringstream words{lower_case(query)};
     for (std::string word; words >> word;) {
         const bool found = std::any_of(
             entry.words.begin(), entry.words.end(),
