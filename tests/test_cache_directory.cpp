@@ -14,6 +14,7 @@
 
 #include "child_process.hpp"
 #include "fgr/cache_directory.hpp"
+#include "fgr/scene_index.hpp"
 #include "fgr/kernel_assembly.hpp"
 #include "fgr/opencl_device.hpp"
 #include "fgr/program_cache.hpp"
@@ -46,10 +47,12 @@ std::vector<std::string> names(const fs::path& directory) {
     return found;
 }
 
-TEST(CacheDirectory, EntriesAreProgramsAndVerdictsOnly) {
+TEST(CacheDirectory, EntriesAreProgramsVerdictsAndTheSceneIndexOnly) {
     EXPECT_TRUE(is_cache_entry_name(kProgram));
     EXPECT_TRUE(is_cache_entry_name(kVerdict));
+    EXPECT_TRUE(is_cache_entry_name(kSceneIndexName));
     for (const char* name : {"0123456789abcdef.bin.tmp-12-0", "0123456789ABCDEF.bin",
+                             "scene-index.json.tmp-12-0", "scene-index.jsonx", "scenes.json",
                              "0123456789abcde.bin", "notes.txt", "math-0123456789abcdef.bin",
                              "0123456789abcdef.txt", "math-xyz.txt", ".bin"}) {
         EXPECT_FALSE(is_cache_entry_name(name)) << name;

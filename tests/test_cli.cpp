@@ -979,12 +979,14 @@ protected:
         return run_with(args, {}, environment);
     }
 
-    // Entries (programs and math verdicts) and their bytes, as the directory holds them.
+    // Entries (programs, math verdicts and the scene index) and their bytes, as the directory
+    // holds them.
     std::pair<long long, long long> entries_and_bytes() const {
         long long entries = 0, bytes = 0;
         for (const fs::directory_entry& entry : fs::directory_iterator(cache_dir())) {
             const std::string name = entry.path().filename().string();
-            if (name.ends_with(".bin") || (name.starts_with("math-") && name.ends_with(".txt"))) {
+            if (name.ends_with(".bin") || (name.starts_with("math-") && name.ends_with(".txt")) ||
+                name == "scene-index.json") {
                 ++entries;
                 bytes += static_cast<long long>(entry.file_size());
             }
@@ -1002,6 +1004,8 @@ TEST_F(CliCache, SizeReportsTheEntriesAndClearRemovesThemAll) {
             return entry.path().filename().string().starts_with("math-");
         });
     EXPECT_TRUE(has_verdict) << joined(directory_listing(cache_dir()));
+    EXPECT_TRUE(fs::exists(cache_dir() / "scene-index.json"))
+        << "finding mandelbulb indexed the scene files: " << joined(directory_listing(cache_dir()));
     std::ofstream(cache_dir() / "notes.txt") << "not fgr's";
 
     const RunResult size = run_with({"cache", "size"});

@@ -3,14 +3,18 @@
 
 #include <gtest/gtest.h>
 
+#include <chrono>
 #include <cstdlib>
+#include <fstream>
 #include <filesystem>
 #include <optional>
 #include <string>
 #include <vector>
 
 #include "fgr/discovery.hpp"
+#include "child_process.hpp"
 #include "fgr/plugin_loader.hpp"
+#include "fgr/scene_index.hpp"
 
 namespace fgr {
 namespace {
@@ -161,6 +165,135 @@ TEST(ExecutableDir, IsTheTestBinarysDirectory) {
     const fs::path dir = executable_dir();
     EXPECT_TRUE(dir.is_absolute()) << dir;
     EXPECT_TRUE(fs::is_directory(dir)) << dir;
+}
+
+// --- Finding one scene by id: discover_scene and the scene index --------------------------------
+
+// An IFS scene file `name` in `directory` holding scene `id`, padded with `padding` spaces (to
+// give two versions of a file different sizes).
+fs::path write_ifs_scene(const fs::path& directory, const std::string& name, const std::string& id,
+                         std::size_t padding = 0) {
+    const fs::path file = directory / name;
+    std::ofstream(file) << R"({"format": "fgr-ifs", "version": 1, "id": ")" << id
+                        << R"(", "name": "Test", "maps": [{"scale": 0.5},)"
+                        << R"( {"scale": 0.5, "translate": [1, 0, 0]}]})" << std::string(padding, ' ');
+    return file;
+}
+
+// Rewrites `file` in place (same inode) with contents every load refuses, of the same size and
+// modification time: a file the index vouches for that would be refused if it were loaded.
+void make_refused_keeping_stamp(const fs::path& file) {
+    const std::uintmax_t size = fs::file_size(file);
+    const fs::file_time_type modified = fs::last_write_time(file);
+    std::ofstream(file, std::ios::in | std::ios::out) << "{" << std::string(size - 2, ' ') << "}";
+    fs::last_write_time(file, modified);
+    ASSERT_EQ(fs::file_size(file), size);
+}
+
+struct SceneDirectories {
+    test::TempDir root{"fgr_scene_index"};
+    fs::path first = root.path() / "first";
+    fs::path second = root.path() / "second";
+    fs::path index = root.path() / "cache" / kSceneIndexName;
+    SceneDirectories() {
+        fs::create_directories(first);
+        fs::create_directories(second);
+    }
+    std::vector<fs::path> search_path() const { return {first, second}; }
+};
+
+TEST(DiscoverScene, FindsTheFileDiscoveryWouldPickWithOrWithoutTheIndex) {
+    SceneDirectories dirs;
+    write_ifs_scene(dirs.first, "a.ifs.json", "other");
+    const fs::path winner = write_ifs_scene(dirs.first, "b.ifs.json", "target");
+    write_ifs_scene(dirs.first, "c.ifs.json", "target");  // a duplicate later in the folder
+    write_ifs_scene(dirs.second, "a.ifs.json", "target");  // and one in a later folder
+    const Discovery all = discover_scenes(dirs.search_path());
+    ASSERT_EQ(all.scenes.size(), 2u);
+    ASSERT_EQ(all.scenes[1].id, "target");
+    ASSERT_EQ(all.scenes[1].plugin_file, winner);
+    // Without an index, building it, then through it.
+    for (const fs::path& index : {fs::path(), dirs.index, dirs.index}) {
+        const Discovery found = discover_scene(dirs.search_path(), "target", index);
+        ASSERT_EQ(found.scenes.size(), 1u) << index;
+        EXPECT_EQ(found.scenes[0].plugin_file, winner) << index;
+        EXPECT_TRUE(found.skipped.empty()) << index;
+    }
+    EXPECT_EQ(SceneIndex::read(dirs.index).size(), 2u);  // a and b: the files up to the winner
+}
+
+TEST(DiscoverScene, TheIndexSparesLoadingTheFilesOfOtherScenes) {
+    SceneDirectories dirs;
+    const fs::path other = write_ifs_scene(dirs.first, "a.ifs.json", "other");
+    write_ifs_scene(dirs.first, "b.ifs.json", "target");
+    ASSERT_EQ(discover_scene(dirs.search_path(), "target", dirs.index).scenes.size(), 1u);
+    make_refused_keeping_stamp(other);
+    // Loading a.ifs.json now would refuse it: without the index it is tried and refused...
+    const Discovery unindexed = discover_scene(dirs.search_path(), "target", {});
+    ASSERT_EQ(unindexed.skipped.size(), 1u);
+    EXPECT_EQ(unindexed.skipped[0].file, other);
+    // ...with it, it is never opened.
+    const Discovery indexed = discover_scene(dirs.search_path(), "target", dirs.index);
+    ASSERT_EQ(indexed.scenes.size(), 1u);
+    EXPECT_EQ(indexed.scenes[0].id, "target");
+    EXPECT_TRUE(indexed.skipped.empty());
+}
+
+TEST(DiscoverScene, AFileChangedSinceItWasIndexedIsLoadedAgain) {
+    SceneDirectories dirs;
+    const fs::path first = write_ifs_scene(dirs.first, "a.ifs.json", "other");
+    write_ifs_scene(dirs.first, "b.ifs.json", "target");
+    ASSERT_EQ(discover_scene(dirs.search_path(), "target", dirs.index).scenes.size(), 1u);
+    // a.ifs.json now holds the scene: it comes first, so it is the one discovery picks.
+    write_ifs_scene(dirs.first, "a.ifs.json", "target", 7);
+    fs::last_write_time(first, fs::last_write_time(first) + std::chrono::seconds(2));
+    const Discovery found = discover_scene(dirs.search_path(), "target", dirs.index);
+    ASSERT_EQ(found.scenes.size(), 1u);
+    EXPECT_EQ(found.scenes[0].plugin_file, first);
+    const std::optional<FileStamp> stamp = file_stamp(first);
+    ASSERT_TRUE(stamp);
+    EXPECT_EQ(SceneIndex::read(dirs.index).id_of(first, *stamp), "target");
+}
+
+TEST(DiscoverScene, AnUnknownIdGivesEverySceneForTheError) {
+    SceneDirectories dirs;
+    write_ifs_scene(dirs.first, "a.ifs.json", "one");
+    write_ifs_scene(dirs.second, "b.ifs.json", "two");
+    std::ofstream(dirs.second / "c.ifs.json") << "{}";
+    const Discovery found = discover_scene(dirs.search_path(), "three", dirs.index);
+    ASSERT_EQ(found.scenes.size(), 2u);
+    EXPECT_EQ(found.skipped.size(), 1u);
+    EXPECT_NE(unknown_scene_message(found, "three").find("available: one, two"), std::string::npos)
+        << unknown_scene_message(found, "three");
+}
+
+TEST(DiscoverScene, FilesRefusedBeforeTheSceneAreReported) {
+    SceneDirectories dirs;
+    std::ofstream(dirs.first / "a.ifs.json") << "{}";
+    write_ifs_scene(dirs.first, "b.ifs.json", "target");
+    for (int run = 0; run < 2; ++run) {  // refused files are not indexed: tried again each time
+        const Discovery found = discover_scene(dirs.search_path(), "target", dirs.index);
+        ASSERT_EQ(found.scenes.size(), 1u);
+        ASSERT_EQ(found.skipped.size(), 1u);
+        EXPECT_EQ(found.skipped[0].file, dirs.first / "a.ifs.json");
+    }
+}
+
+TEST(DiscoverScene, ADamagedIndexIsRebuiltAndRemovedFilesLeaveIt) {
+    SceneDirectories dirs;
+    const fs::path gone = write_ifs_scene(dirs.first, "a.ifs.json", "other");
+    write_ifs_scene(dirs.first, "b.ifs.json", "target");
+    fs::create_directories(dirs.index.parent_path());
+    for (const char* damage : {"not json", "[]", R"({"format": "fgr-scene-index", "version": 1,
+                                                    "files": [{"path": 3}]})"}) {
+        std::ofstream(dirs.index) << damage;
+        EXPECT_EQ(SceneIndex::read(dirs.index).size(), 0u) << damage;
+        ASSERT_EQ(discover_scene(dirs.search_path(), "target", dirs.index).scenes.size(), 1u);
+        EXPECT_EQ(SceneIndex::read(dirs.index).size(), 2u) << damage;
+    }
+    fs::remove(gone);
+    ASSERT_EQ(discover_scene(dirs.search_path(), "target", dirs.index).scenes.size(), 1u);
+    EXPECT_EQ(SceneIndex::read(dirs.index).size(), 1u);
 }
 
 TEST(MandelbulbPlugin, LoadsFromThePluginDirectory) {

@@ -102,7 +102,7 @@ int command_bench(BenchOptions& options) {
                          "view: give one or the other");
     }
     parsed_view_override(options.view_override);  // a malformed vector fails before any loading
-    const Discovery found = discover();
+    const Discovery found = discover_for(options.scene);
     const Scene& found_scene = find_scene(found, options.scene);
     const Scene scene = with_kernel_source(
         options.view_override.empty()

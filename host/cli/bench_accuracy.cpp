@@ -116,7 +116,7 @@ void brute_accuracy(const Scene& scene, const AccuracySettings& settings,
 }  // namespace
 
 int command_bench_accuracy(const AccuracyOptions& options, int device_index) {
-    const Discovery found = discover();
+    const Discovery found = discover_for(options.scene);
     const Scene& scene = find_scene(found, options.scene);
     const std::string prefix = options.output.empty() ? "accuracy-" + scene.id : options.output;
     const std::filesystem::path csv = prefix + ".csv", script = prefix + ".gp", png = prefix + ".png";

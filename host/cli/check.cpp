@@ -23,7 +23,7 @@ bool names_a_file(const std::string& argument) {
 }
 
 Scene load_checked_scene(const std::string& argument) {
-    if (!names_a_file(argument)) return find_scene(discover(), argument);
+    if (!names_a_file(argument)) return find_scene(discover_for(argument), argument);
     LoadResult loaded = load_scene_file(argument);
     if (!loaded.scene) throw UsageError(fmt::format("{}: {}", argument, loaded.error));
     return std::move(*loaded.scene);

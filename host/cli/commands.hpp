@@ -7,6 +7,7 @@
 // while running (exit 1).
 
 #include <filesystem>
+#include <future>
 #include <optional>
 #include <stdexcept>
 #include <string>
@@ -44,6 +45,9 @@ struct RuntimeFailure : std::runtime_error {
 
 // The scenes in the plugin search path beside this executable.
 Discovery discover();
+// For a command on one scene: scene `id` alone, found through the scene index in the kernel cache
+// (discover_scene), or every scene when none has that id (find_scene then says which there are).
+Discovery discover_for(const std::string& id);
 // The scene with that id; throws UsageError naming the scenes there are.
 const Scene& find_scene(const Discovery& found, const std::string& id);
 // --kernel-source FILE.cl on `command`; with_kernel_source gives the scene with that file's text
@@ -53,6 +57,11 @@ Scene with_kernel_source(Scene scene, const std::string& file);
 
 // Device `index` (-1: the default); throws UsageError for an index `fgr info` does not list.
 ComputeDevice open_requested_device(int index);
+// open_requested_device(index) on a thread of its own, for a command to find its scene meanwhile:
+// opening the first device loads the OpenCL driver (PoCL: LLVM, about a quarter of a small
+// `fgr render`), and the scan of the plugin folders need not wait for it. get() gives the device
+// or throws what open_requested_device threw.
+std::future<ComputeDevice> open_requested_device_meanwhile(int index);
 // --device and --packet-width, for the commands that render.
 void add_device_options(CLI::App* command, int& device, int& packet_width);
 // --precision, for the commands that render; `auto_means` ends its help text.

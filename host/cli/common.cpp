@@ -8,11 +8,19 @@
 #include "commands.hpp"
 #include "fgr/atomic_file.hpp"
 #include "fgr/distributed/cluster.hpp"
+#include "fgr/program_cache.hpp"
 #include "fgr/renderer.hpp"
+#include "fgr/scene_index.hpp"
 #include "fgr/scene_source.hpp"
 
 namespace fgr {
 Discovery discover() { return discover_scenes(plugin_search_path(executable_dir())); }
+
+Discovery discover_for(const std::string& id) {
+    const std::filesystem::path cache = ProgramCache::default_directory();
+    return discover_scene(plugin_search_path(executable_dir()), id,
+                          cache.empty() ? cache : cache / kSceneIndexName);
+}
 
 const Scene& find_scene(const Discovery& found, const std::string& id) {
     for (const auto& scene : found.scenes) {
@@ -72,6 +80,10 @@ ComputeDevice open_requested_device(int index) {
         }
     }
     return open_device(index);
+}
+
+std::future<ComputeDevice> open_requested_device_meanwhile(int index) {
+    return std::async(std::launch::async, open_requested_device, index);
 }
 
 void print_mpi_figures(const Cluster& cluster, const FarmOutcome& outcome) {

@@ -382,6 +382,7 @@ std::vector<Scene> scenes_matching(const Discovery& found, const std::string& pa
 }
 
 int render_all(const RenderOptions& options) {
+    std::future<ComputeDevice> device_opening = open_requested_device_meanwhile(options.device);
     const std::vector<Scene> scenes = scenes_matching(discover(), options.scene);
     const std::filesystem::path directory = options.output;
     std::error_code error;
@@ -389,7 +390,7 @@ int render_all(const RenderOptions& options) {
     if (error || !std::filesystem::is_directory(directory)) {
         throw RuntimeFailure(fmt::format("cannot create directory '{}'", directory.string()));
     }
-    const ComputeDevice device = open_requested_device(options.device);
+    const ComputeDevice device = device_opening.get();
     ProgramCache cache(ProgramCache::default_directory());
     for (size_t i = 0; i < scenes.size(); ++i) {
         const Scene scene = scene_as_used(scenes[i], false);
@@ -485,12 +486,13 @@ void add_render_command(CLI::App& app, RenderOptions& options) {
 int command_render(const RenderOptions& options) {
     check_render_options(options);
     if (options.all) return render_all(options);
-    const Discovery found = discover();
+    std::future<ComputeDevice> device_opening = open_requested_device_meanwhile(options.device);
+    const Discovery found = discover_for(options.scene);
     const Scene scene = with_kernel_source(scene_as_used(find_scene(found, options.scene), options.dev),
                                            options.kernel_source);
     FrameRequest request = scene_request(scene, options);
     request.view = choose_view(scene, options);
-    const ComputeDevice device = open_requested_device(options.device);
+    const ComputeDevice device = device_opening.get();
     ProgramCache cache(ProgramCache::default_directory());
     if (part_render_wanted(options)) {
         if (!Cluster::current().alone()) {

@@ -192,7 +192,7 @@ void add_video_command(CLI::App& app, VideoOptions& options) {
 int command_video(const VideoOptions& options) {
     check_video_options(options);
     const RenderOptions& frame_options = options.frame;
-    const Discovery found = discover();
+    const Discovery found = discover_for(frame_options.scene);
     const Scene scene =
         with_kernel_source(scene_as_used(find_scene(found, frame_options.scene), frame_options.dev),
                            frame_options.kernel_source);

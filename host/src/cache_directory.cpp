@@ -10,6 +10,7 @@
 #include <spdlog/spdlog.h>
 
 #include "fgr/atomic_file.hpp"
+#include "fgr/scene_index.hpp"
 
 namespace fgr {
 namespace {
@@ -54,6 +55,7 @@ std::uintmax_t cache_size_limit() {
 }
 
 bool is_cache_entry_name(std::string_view name) {
+    if (name == kSceneIndexName) return true;
     if (name.size() == 20 && name.ends_with(".bin")) return is_key(name.substr(0, 16));
     if (name.size() == 25 && name.starts_with("math-") && name.ends_with(".txt")) {
         return is_key(name.substr(5, 16));

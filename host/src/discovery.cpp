@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cstdlib>
 #include <map>
+#include <optional>
 #include <set>
 #include <string_view>
 #include <system_error>
@@ -10,6 +11,7 @@
 #include <spdlog/spdlog.h>
 
 #include "fgr/scene_file.hpp"
+#include "fgr/scene_index.hpp"
 
 namespace fgr {
 namespace fs = std::filesystem;
@@ -58,13 +60,30 @@ fs::path canonical_or_self(const fs::path& directory) {
     return error ? directory : canonical;
 }
 
+// The directories of the search path in order, each once.
+class DirectoryWalk {
+public:
+    bool first_visit(const fs::path& directory) {
+        if (scanned_directories_.insert(canonical_or_self(directory)).second) return true;
+        spdlog::debug("plugin directory {} already scanned", directory.string());
+        return false;
+    }
+
+private:
+    std::set<fs::path> scanned_directories_;
+};
+
+void warn_skipped(const SkippedPlugin& skipped) {
+    spdlog::warn("skipping plugin {}: {}{}", skipped.file.string(),
+                 skipped.declared_id.empty() ? ""
+                                             : fmt::format("scene '{}': ", skipped.declared_id),
+                 skipped.reason);
+}
+
 class SceneCollector {
 public:
     void scan(const fs::path& directory) {
-        if (!scanned_directories_.insert(canonical_or_self(directory)).second) {
-            spdlog::debug("plugin directory {} already scanned", directory.string());
-            return;
-        }
+        if (!walk_.first_visit(directory)) return;
         for (const fs::path& file : plugin_files_in(directory)) load(file);
     }
 
@@ -84,15 +103,47 @@ private:
     }
 
     void skip(const fs::path& file, std::string reason, std::string declared_id = {}) {
-        spdlog::warn("skipping plugin {}: {}{}", file.string(),
-                     declared_id.empty() ? "" : fmt::format("scene '{}': ", declared_id), reason);
         discovery_.skipped.push_back({file, std::move(reason), std::move(declared_id)});
+        warn_skipped(discovery_.skipped.back());
     }
 
     Discovery discovery_;
     std::map<std::string, fs::path> loaded_from_;  // scene id -> file it came from
-    std::set<fs::path> scanned_directories_;
+    DirectoryWalk walk_;
 };
+
+// The first scene with `id` in search order, as discover_scenes would pick it (the first of
+// duplicate ids wins), loading only the files the index cannot vouch for and the one that holds
+// it. The files refused on the way are added to `refused`.
+std::optional<Scene> first_scene_with_id(const std::vector<fs::path>& directories,
+                                         const std::string& id, SceneIndex& index,
+                                         std::vector<SkippedPlugin>& refused) {
+    DirectoryWalk walk;
+    for (const fs::path& directory : directories) {
+        if (!walk.first_visit(directory)) continue;
+        const std::vector<fs::path> files = plugin_files_in(directory);
+        index.keep_only(directory, std::set<fs::path>(files.begin(), files.end()));
+        for (const fs::path& file : files) {
+            const std::optional<FileStamp> stamp = file_stamp(file);
+            if (stamp) {
+                const std::optional<std::string> indexed = index.id_of(file, *stamp);
+                if (indexed && *indexed != id) continue;  // another scene, unchanged
+            }
+            LoadResult result = load_scene_file(file);
+            if (!result.scene) {
+                refused.push_back({file, result.error, result.declared_id});
+                index.forget(file);
+                continue;
+            }
+            if (stamp) index.record(file, *stamp, result.scene->id);
+            if (result.scene->id == id) {
+                spdlog::debug("loaded scene '{}' from {}", id, file.string());
+                return std::move(result.scene);
+            }
+        }
+    }
+    return std::nullopt;
+}
 
 std::string scene_ids(const std::vector<Scene>& scenes) {
     std::string ids;
@@ -187,6 +238,21 @@ Discovery discover_scenes(const std::vector<fs::path>& directories) {
     SceneCollector collector;
     for (const fs::path& directory : directories) collector.scan(directory);
     return collector.take();
+}
+
+Discovery discover_scene(const std::vector<fs::path>& directories, const std::string& id,
+                         const fs::path& index_file) {
+    SceneIndex index = index_file.empty() ? SceneIndex{} : SceneIndex::read(index_file);
+    std::vector<SkippedPlugin> refused;
+    std::optional<Scene> scene = first_scene_with_id(directories, id, index, refused);
+    if (index.changed() && !index_file.empty()) index.write(index_file);
+    // Not found: the full scan, for the error's list of scenes and refusals (and its warnings).
+    if (!scene) return discover_scenes(directories);
+    for (const SkippedPlugin& skipped : refused) warn_skipped(skipped);
+    Discovery found;
+    found.scenes.push_back(std::move(*scene));
+    found.skipped = std::move(refused);
+    return found;
 }
 
 }  // namespace fgr

@@ -1,8 +1,9 @@
 #pragma once
 // The kernel cache directory on disk (ProgramCache::default_directory()): compiled programs
-// (<key>.bin, program_cache.cpp) and the device math self-test's verdicts (math-<key>.txt,
-// math_check.cpp). Entries are written atomically and durably, marked when used, and kept under a
-// size limit by evicting the least recently used; `fgr cache` reports and clears them.
+// (<key>.bin, program_cache.cpp), the device math self-test's verdicts (math-<key>.txt,
+// math_check.cpp) and the scene index (scene-index.json, fgr/scene_index.hpp). Entries are
+// written atomically and durably, marked when used, and kept under a size limit by evicting the
+// least recently used; `fgr cache` reports and clears them.
 
 #include <cstddef>
 #include <cstdint>
@@ -26,9 +27,9 @@ std::uintmax_t cache_size_limit();
 // A limit in bytes from its text in MiB, or nothing when the text is not a whole number >= 1.
 std::optional<std::uintmax_t> parse_cache_limit(std::string_view mib);
 
-// Whether a file name is one of the cache's entries: a program "<16 hex digits>.bin" or a verdict
-// "math-<16 hex digits>.txt". Nothing else in the directory is ever evicted or cleared, except
-// clear_cache's temporaries.
+// Whether a file name is one of the cache's entries: a program "<16 hex digits>.bin", a verdict
+// "math-<16 hex digits>.txt" or the scene index (kSceneIndexName). Nothing else in the directory
+// is ever evicted or cleared, except clear_cache's temporaries.
 bool is_cache_entry_name(std::string_view name);
 
 struct CacheEntry {

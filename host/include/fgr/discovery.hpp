@@ -34,6 +34,15 @@ struct Discovery {
 // log line naming the file and the reason.
 Discovery discover_scenes(const std::vector<std::filesystem::path>& directories);
 
+// Scene `id` alone, as discover_scenes(directories) would find it (the first file in search
+// order that holds it), without loading the other scenes' files that the scene index in
+// `index_file` (fgr/scene_index.hpp) knows to hold other ids; the index is brought up to date
+// with what was loaded. When no file holds `id`, it is discover_scenes(directories) in full, for
+// unknown_scene_message. An empty `index_file` means no index: files are loaded in order up to
+// the scene's.
+Discovery discover_scene(const std::vector<std::filesystem::path>& directories,
+                         const std::string& id, const std::filesystem::path& index_file);
+
 // The one-line error for a scene id that `found` lacks. When a refused file is that scene (its
 // description declared the id, or, refused before the id could be read, its file name is the id,
 // e.g. liboops.so or oops.ifs.json for 'oops'), the message names the file and why it was refused;
