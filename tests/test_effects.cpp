@@ -790,6 +790,7 @@ TEST_F(EffectTest, ExposureAndToneMappingActAfterTheLinearImage) {
     const Frame base = plain->render(request(scene));
     const Frame bright = plain->render(request(scene, {"exposure=2"}));
     const Frame reinhard = plain->render(request(scene, {"tone_map=reinhard"}));
+    const Frame aces = plain->render(request(scene, {"tone_map=aces"}));
     EXPECT_EQ(bright.linear, base.linear);  // exposure acts after the linear image
     long brighter = 0, total_base = 0, total_bright = 0;
     for (size_t i = 0; i < base.linear.size(); ++i) {
@@ -797,6 +798,7 @@ TEST_F(EffectTest, ExposureAndToneMappingActAfterTheLinearImage) {
         ASSERT_EQ(base.image.rgb[i], encode_srgb(std::min(value, 1.0f))) << i;
         ASSERT_EQ(bright.image.rgb[i], encode_srgb(std::min(2.0f * value, 1.0f))) << i;
         ASSERT_EQ(reinhard.image.rgb[i], encode_srgb(value / (1.0f + value))) << i;
+        ASSERT_EQ(aces.image.rgb[i], encode_srgb(tone_map(value, ToneMap::Aces))) << i;
         ASSERT_GE(bright.image.rgb[i], base.image.rgb[i]) << i;
         brighter += bright.image.rgb[i] > base.image.rgb[i];
         total_base += base.image.rgb[i];

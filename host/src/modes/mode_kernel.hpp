@@ -4,6 +4,7 @@
 // colour and depth. One implementation per mode, in this folder; mode_registry.cpp makes them.
 
 #include <memory>
+#include <span>
 #include <vector>
 
 #include "fgr/opencl_device.hpp"
@@ -49,13 +50,13 @@ public:
 
     // Fills what the mode adds to a frame from the planes read back (plane p of pixel (x, y) at
     // planes[p * layout.plane_size() + layout.index(x, y)]), `samples` samples summed in them.
-    virtual void read_back(const std::vector<float>& planes, const TileLayout& layout,
+    virtual void read_back(std::span<const float> planes, const TileLayout& layout,
                            const FrameRequest& request, int samples, Frame& frame) const = 0;
 };
 
 // Planes `first` .. first + count - 1 of each pixel in rows (count floats per pixel), times
 // `scale` (1 / samples for planes that sum them).
-std::vector<float> planes_in_rows(const std::vector<float>& planes, const TileLayout& layout,
+std::vector<float> planes_in_rows(std::span<const float> planes, const TileLayout& layout,
                                   int first, int count, int width, int height, float scale = 1.0f);
 
 // A read-only device buffer holding `values` (one unused float when empty).

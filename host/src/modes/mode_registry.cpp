@@ -17,13 +17,15 @@ cl::Buffer upload_floats(const ComputeDevice& device, const std::vector<float>& 
                       padded.size() * sizeof(float), const_cast<float*>(padded.data()));
 }
 
-std::vector<float> planes_in_rows(const std::vector<float>& planes, const TileLayout& layout,
+std::vector<float> planes_in_rows(std::span<const float> planes, const TileLayout& layout,
                                   int first, int count, int width, int height, float scale) {
     const size_t plane = static_cast<size_t>(layout.plane_size());
     std::vector<float> rows(static_cast<size_t>(width) * height * count);
+    const std::vector<int> columns = layout.column_offsets(width);
     for (int y = 0; y < height; ++y) {
+        const int row = layout.row_offset(y);
         for (int x = 0; x < width; ++x) {
-            const size_t source = static_cast<size_t>(layout.index(x, y));
+            const size_t source = static_cast<size_t>(row + columns[static_cast<size_t>(x)]);
             const size_t pixel = static_cast<size_t>(y) * width + x;
             for (int c = 0; c < count; ++c) {
                 rows[pixel * count + c] = planes[(first + c) * plane + source] * scale;

@@ -171,7 +171,7 @@ void PathMode::bind(cl::Kernel& kernel, const FrameRequest& request, const TileL
                                    bound_environment_->intensity));
 }
 
-void PathMode::read_back(const std::vector<float>& planes, const TileLayout& layout,
+void PathMode::read_back(std::span<const float> planes, const TileLayout& layout,
                          const FrameRequest&, int samples, Frame& frame) const {
     const int width = frame.image.width, height = frame.image.height;  // the region's
     const float average = 1.0f / static_cast<float>(std::max(samples, 1));

@@ -14,7 +14,7 @@ public:
     PathMode(const ComputeDevice& device, const Scene& scene, const KernelSwitches& switches);
     int extra_planes(const KernelSwitches& switches) const override;
     void bind(cl::Kernel& kernel, const FrameRequest& request, const TileLayout& layout) override;
-    void read_back(const std::vector<float>& planes, const TileLayout& layout,
+    void read_back(std::span<const float> planes, const TileLayout& layout,
                    const FrameRequest& request, int samples, Frame& frame) const override;
 
 private:

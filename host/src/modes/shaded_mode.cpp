@@ -16,7 +16,7 @@ constexpr int kAovPlanes = 10;  // albedo (3), normal (3), coverage, foreground 
 // Sums the stats planes (4: steps, 5: ran out of steps, 6: secondary rays' DE evaluations per
 // lane, 7: IFS scenes' heap peak, or DE scenes' secondary DE evaluations per packet) over the
 // image's pixels; depth (plane 3) says which pixels hit and so had their normal estimated.
-MarchStats march_stats(const std::vector<float>& planes, const TileLayout& layout, int width,
+MarchStats march_stats(std::span<const float> planes, const TileLayout& layout, int width,
                        int height, bool ifs) {
     const size_t plane = static_cast<size_t>(layout.plane_size());
     MarchStats stats;
@@ -62,7 +62,7 @@ MarchStats march_stats(const std::vector<float>& planes, const TileLayout& layou
 }
 
 // The deepest and mean level of the IFS nodes the pixels hit (plane `index`; -1 where missed).
-IfsLevels hit_levels(const std::vector<float>& planes, const TileLayout& layout, int index,
+IfsLevels hit_levels(std::span<const float> planes, const TileLayout& layout, int index,
                      int width, int height) {
     const size_t offset = static_cast<size_t>(index) * static_cast<size_t>(layout.plane_size());
     IfsLevels levels;
@@ -102,7 +102,7 @@ void ShadedMode::bind(cl::Kernel& kernel, const FrameRequest&, const TileLayout&
     kernel.setArg(kFirstModeArgument + 1, light_count_);
 }
 
-void ShadedMode::read_back(const std::vector<float>& planes, const TileLayout& layout,
+void ShadedMode::read_back(std::span<const float> planes, const TileLayout& layout,
                            const FrameRequest& request, int samples, Frame& frame) const {
     const int width = frame.image.width, height = frame.image.height;  // the region's
     const int level_plane = kCommonPlanes + (stats_ ? kStatsPlanes : 0);
