@@ -18,10 +18,10 @@
 # The images land in bench/results/mandelbulber_view_{mandelbulber,fgr}.png: the same surface
 # (bench/compare_formulas_mandelbulber.py measures their silhouettes' agreement, IoU 0.99), lit
 # and coloured each tool's way.
-# Environment: ROUNDS (3).
+# Environment: ROUNDS (8: Mandelbulber's time is bimodal on the 2-core machine, 1.25 or 1.9 s).
 set -euo pipefail
 
-rounds=${ROUNDS:-3}
+rounds=${ROUNDS:-8}
 [[ $rounds =~ ^[1-9][0-9]*$ ]] || { echo "compare_mandelbulber: ROUNDS must be a positive integer" >&2; exit 1; }
 die() {
     echo "compare_mandelbulber: $*" >&2
