@@ -6,6 +6,7 @@
 // returns the exit code, throws UsageError for bad input (exit 2) and anything else for failures
 // while running (exit 1).
 
+#include <exception>
 #include <filesystem>
 #include <future>
 #include <optional>
@@ -57,11 +58,25 @@ Scene with_kernel_source(Scene scene, const std::string& file);
 
 // Device `index` (-1: the default); throws UsageError for an index `fgr info` does not list.
 ComputeDevice open_requested_device(int index);
-// open_requested_device(index) on a thread of its own, for a command to find its scene meanwhile:
-// opening the first device loads the OpenCL driver (PoCL: LLVM, about a quarter of a small
-// `fgr render`), and the scan of the plugin folders need not wait for it. get() gives the device
-// or throws what open_requested_device threw.
-std::future<ComputeDevice> open_requested_device_meanwhile(int index);
+// For a command that finds its scenes while its device opens: opening the first device loads the
+// OpenCL driver (PoCL: LLVM, about a quarter of a small `fgr render`), which finding the scenes
+// need not wait for. The device opens on the calling (main) thread, because the thread that first
+// loads LLVM gets an alternate signal stack of LLVM's, which AddressSanitizer fails to unmap when
+// such a thread ends; the scenes are found on another (discover_for_meanwhile). A failure to open
+// is kept until take(), so that the command's scene errors come first, as they did when the
+// device opened after them.
+class DeviceOpenedAhead {
+public:
+    explicit DeviceOpenedAhead(int index);
+    // The device, or throws what open_requested_device threw.
+    ComputeDevice take();
+
+private:
+    std::optional<ComputeDevice> device_;
+    std::exception_ptr failure_;
+};
+// discover_for(id) on a thread of its own; an empty id finds every scene (discover()).
+std::future<Discovery> discover_meanwhile(const std::string& id);
 // --device and --packet-width, for the commands that render.
 void add_device_options(CLI::App* command, int& device, int& packet_width);
 // --precision, for the commands that render; `auto_means` ends its help text.

@@ -82,8 +82,21 @@ ComputeDevice open_requested_device(int index) {
     return open_device(index);
 }
 
-std::future<ComputeDevice> open_requested_device_meanwhile(int index) {
-    return std::async(std::launch::async, open_requested_device, index);
+DeviceOpenedAhead::DeviceOpenedAhead(int index) {
+    try {
+        device_ = open_requested_device(index);
+    } catch (...) {
+        failure_ = std::current_exception();
+    }
+}
+
+ComputeDevice DeviceOpenedAhead::take() {
+    if (failure_) std::rethrow_exception(failure_);
+    return std::move(*device_);
+}
+
+std::future<Discovery> discover_meanwhile(const std::string& id) {
+    return std::async(std::launch::async, [id] { return id.empty() ? discover() : discover_for(id); });
 }
 
 void print_mpi_figures(const Cluster& cluster, const FarmOutcome& outcome) {

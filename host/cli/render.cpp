@@ -382,15 +382,16 @@ std::vector<Scene> scenes_matching(const Discovery& found, const std::string& pa
 }
 
 int render_all(const RenderOptions& options) {
-    std::future<ComputeDevice> device_opening = open_requested_device_meanwhile(options.device);
-    const std::vector<Scene> scenes = scenes_matching(discover(), options.scene);
+    std::future<Discovery> finding = discover_meanwhile("");
+    DeviceOpenedAhead device_opening(options.device);
+    const std::vector<Scene> scenes = scenes_matching(finding.get(), options.scene);
     const std::filesystem::path directory = options.output;
     std::error_code error;
     std::filesystem::create_directories(directory, error);
     if (error || !std::filesystem::is_directory(directory)) {
         throw RuntimeFailure(fmt::format("cannot create directory '{}'", directory.string()));
     }
-    const ComputeDevice device = device_opening.get();
+    const ComputeDevice device = device_opening.take();
     ProgramCache cache(ProgramCache::default_directory());
     for (size_t i = 0; i < scenes.size(); ++i) {
         const Scene scene = scene_as_used(scenes[i], false);
@@ -486,13 +487,14 @@ void add_render_command(CLI::App& app, RenderOptions& options) {
 int command_render(const RenderOptions& options) {
     check_render_options(options);
     if (options.all) return render_all(options);
-    std::future<ComputeDevice> device_opening = open_requested_device_meanwhile(options.device);
-    const Discovery found = discover_for(options.scene);
+    std::future<Discovery> finding = discover_meanwhile(options.scene);
+    DeviceOpenedAhead device_opening(options.device);
+    const Discovery found = finding.get();
     const Scene scene = with_kernel_source(scene_as_used(find_scene(found, options.scene), options.dev),
                                            options.kernel_source);
     FrameRequest request = scene_request(scene, options);
     request.view = choose_view(scene, options);
-    const ComputeDevice device = device_opening.get();
+    const ComputeDevice device = device_opening.take();
     ProgramCache cache(ProgramCache::default_directory());
     if (part_render_wanted(options)) {
         if (!Cluster::current().alone()) {
