@@ -18,10 +18,12 @@
 # The images land in bench/results/mandelbulber_view_{mandelbulber,fgr}.png: the same surface
 # (bench/compare_formulas_mandelbulber.py measures their silhouettes' agreement, IoU 0.99), lit
 # and coloured each tool's way.
-# Environment: ROUNDS (8: Mandelbulber's time is bimodal on the 2-core machine, 1.25 or 1.9 s).
+# Environment: ROUNDS (16). Best of 16 estimates each tool's noise-free time on a noisy machine:
+# Mandelbulber's own time is bimodal on the 2-core machine (1.25 or 1.9 s), and fgr's ~80 ms
+# runs catch the machine's bursts (best of 8 spread 14.6-15.8x; best of 16, 15.2-15.4x).
 set -euo pipefail
 
-rounds=${ROUNDS:-8}
+rounds=${ROUNDS:-16}
 [[ $rounds =~ ^[1-9][0-9]*$ ]] || { echo "compare_mandelbulber: ROUNDS must be a positive integer" >&2; exit 1; }
 die() {
     echo "compare_mandelbulber: $*" >&2
