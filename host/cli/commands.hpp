@@ -62,7 +62,7 @@ ComputeDevice open_requested_device(int index);
 // OpenCL driver (PoCL: LLVM, about a quarter of a small `fgr render`), which finding the scenes
 // need not wait for. The device opens on the calling (main) thread, because the thread that first
 // loads LLVM gets an alternate signal stack of LLVM's, which AddressSanitizer fails to unmap when
-// such a thread ends; the scenes are found on another (discover_for_meanwhile). A failure to open
+// such a thread ends; the scenes are found on another (discover_meanwhile). A failure to open
 // is kept until take(), so that the command's scene errors come first, as they did when the
 // device opened after them.
 class DeviceOpenedAhead {

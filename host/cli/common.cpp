@@ -96,7 +96,8 @@ ComputeDevice DeviceOpenedAhead::take() {
 }
 
 std::future<Discovery> discover_meanwhile(const std::string& id) {
-    return std::async(std::launch::async, [id] { return id.empty() ? discover() : discover_for(id); });
+    return std::async(std::launch::async,
+                      [id] { return id.empty() ? discover() : discover_for(id); });
 }
 
 void print_mpi_figures(const Cluster& cluster, const FarmOutcome& outcome) {
