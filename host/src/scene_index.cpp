@@ -42,9 +42,11 @@ SceneIndex SceneIndex::read(const fs::path& file) {
     std::error_code error;
     if (!fs::exists(file, error)) return index;
     try {
-        const json document = json::parse(scene_json::read_bounded(file, kMaxIndexBytes, "a scene index"));
+        const json document =
+            json::parse(scene_json::read_bounded(file, kMaxIndexBytes, "a scene index"));
         if (document.value("format", "") != kFormat || document.value("version", 0) != kVersion) {
-            spdlog::debug("{} is not a scene index of version {}: rebuilt", file.string(), kVersion);
+            spdlog::debug("{} is not a scene index of version {}: rebuilt", file.string(),
+                          kVersion);
             return index;
         }
         for (const json& entry : document.at("files")) {
