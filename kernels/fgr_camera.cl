@@ -40,7 +40,7 @@
  * (eye.w, forward.w, right.w). Double lanes see the eye to about 2^-48 of its size, so a deep
  * zoom's eye can move by less than float's step.
  *
- * The projection (host/include/fgr/projection.hpp describes each layout) maps pixels to rays:
+ * The projection (host/camera/projection.hpp describes each layout) maps pixels to rays:
  * pinhole, equirectangular (the whole sphere), equidistant fisheye, or a stereo pair of
  * off-axis pinholes side by side or top/bottom. */
 #define FGR_PROJECTION_PINHOLE 0
@@ -231,7 +231,7 @@ inline camera_ray camera_ray_through(camera_frame camera, real px, real py, came
 }
 
 /* The arguments every render mode's entry point `fgr_render` starts with, in this order (the host
- * sets them in host/src/renderer.cpp; a mode's own arguments follow from index 9):
+ * sets them in host/render/renderer.cpp; a mode's own arguments follow from index 9):
  *   planes      the output: plane p of the image at planes + p * plane_size, tile-major
  *   plane_size  floats per plane (whole tiles)
  *   tile_count  tiles in the image; the global size is rounded up past it

@@ -1,6 +1,6 @@
 /* fgr kernel library: environment lighting, lookup and importance sampling.
  *
- * An environment is an equirectangular map (host/include/fgr/environment.hpp builds its tables)
+ * An environment is an equirectangular map (host/render/environment.hpp builds its tables)
  * seen at infinity. Directions are z-up, as fgr's worlds are. Texel (column i, row j) of a
  * width x height map covers polar angles theta (from +z) in [j, j + 1] pi / height (row 0 looks
  * straight up) and azimuths phi in [i, i + 1] 2 pi / width, the direction of (theta, phi) being

@@ -1,7 +1,7 @@
 /* fgr kernel library: exact ray tracing of IFS scenes (geometry kind "ifs").
  *
  * An IFS scene is the attractor of affine maps w_i(x) = A_i x + b_i. A ball B with w_i(B) inside
- * B for every map (host/src/ifs/ifs_file.cpp) contains the attractor, and so does every node of
+ * B for every map (host/scene/ifs/ifs_file.cpp) contains the attractor, and so does every node of
  * the tree of its images w_i1(w_i2(... w_ik(B))), the node's "ellipsoid". A ray is intersected
  * with that tree as Hart and DeFanti describe ("Efficient Antialiased Rendering of 3-D Linear
  * Fractals", SIGGRAPH 1991): nodes wait in a min-heap ordered by the distance at which the ray
@@ -16,7 +16,7 @@
  * compare across nodes without going back to world space. The sphere test compares squared
  * quantities and takes a square root only for rays that do meet the ball.
  *
- * The generated scene source (host/src/ifs/ifs_source.cpp) defines FGR_GEOMETRY_IFS and the
+ * The generated scene source (host/scene/ifs/ifs_source.cpp) defines FGR_GEOMETRY_IFS and the
  * tables read here: FGR_IFS_MAPS maps; fgr_ifs_inverse[i] (A_i^-1 row-major, then -A_i^-1 b_i)
  * and fgr_ifs_forward[i] (A_i row-major, then b_i); fgr_ifs_contraction[i] (A_i's largest singular
  * value); fgr_ifs_colour[i]; FGR_IFS_CENTRE_X/Y/Z and FGR_IFS_RADIUS (the ball B).

@@ -4,7 +4,7 @@
  * computes double8/double16 pow and pown (and fmod, frexp) with a lane mask of the wrong width, so
  * a lane that is 0, denormal, Inf or NaN corrupts another lane of the packet; its float16 sin,
  * cos and sincos go wrong in a lane near 0 when another lane is Inf. The library calls these
- * helpers instead, and the host's math self-test (host/src/math_check.cpp) checks them and the
+ * helpers instead, and the host's math self-test (host/device/math_check.cpp) checks them and the
  * plain built-ins the library uses at the width and precision of each render, narrowing the
  * packet where one fails. For finite inputs, float lanes compute what the plain built-ins
  * compute, except fgr_pown, which multiplies. Scenes should use them too. */

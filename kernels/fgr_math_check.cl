@@ -1,4 +1,4 @@
-/* fgr kernel library: the device math self-test (host/src/math_check.cpp).
+/* fgr kernel library: the device math self-test (host/device/math_check.cpp).
  *
  * Runs the maths the kernel library calls on lanes (fgr_math.cl's helpers and the plain
  * built-ins) at the packet width and precision a render would use, so the host can compare every
@@ -20,7 +20,7 @@ typedef FGR_LANES(float, double) lane_scalar;
 /* One kernel per function, each over its own run of cases starting at first_case. (A single
  * kernel switching over all of them took minutes to build at 16 double lanes, where each alone
  * takes a fraction of a second.) One work-item per group keeps PoCL from compiling a work-item
- * loop around each. Kernel names: keep in step with host/src/math_check.cpp. */
+ * loop around each. Kernel names: keep in step with host/device/math_check.cpp. */
 #define FGR_CHECK_KERNEL(name, expression)                                                      \
     __kernel __attribute__((reqd_work_group_size(1, 1, 1))) void fgr_check_##name(             \
         __global const lane_scalar* a, __global const lane_scalar* b, __global lane_scalar* out, \

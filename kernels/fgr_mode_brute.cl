@@ -168,7 +168,7 @@ __kernel void fgr_render(FGR_RENDER_ARGS, __global float* state) {
 /* The farthest any pixel's screen-space shading reads from it, in pixels: the occlusion disc's
  * and the glow's radius are capped here (only images over 1024 pixels wide reach the occlusion
  * cap, over 12288 the glow's), so a tile of a gigapixel still needs this much padding and no
- * more. Mirrored by kBruteMaxReach in host/src/modes/brute_mode.hpp. */
+ * more. Mirrored by kBruteMaxReach in host/render/modes/brute_mode.hpp. */
 #define FGR_BRUTE_MAX_REACH 256
 /* Samples of the screen-space occlusion's disc, and the glow's. */
 #define FGR_SSAO_SAMPLES 16

@@ -14,7 +14,7 @@
 
  *
  * Arguments: those every mode takes (planes .. PARAMS, see fgr_camera.cl), then the lights (the
- * scene's and the sky's sun, FGR_PATH_LIGHT_FLOATS each, laid out by host/src/modes/path_mode.cpp),
+ * scene's and the sky's sun, FGR_PATH_LIGHT_FLOATS each, laid out by host/render/modes/path_mode.cpp),
  * the settings, and the environment (ENVIRONMENT, fgr_environment.cl).
  *
  * Planes: 0-2 radiance (summed over samples), 3 depth of the first hit (sample 0), then the
@@ -42,7 +42,7 @@
 #define FGR_PATH_ENVIRONMENT_IS 4  /* sample the environment by importance, not uniformly */
 #define FGR_PATH_INDEPENDENT 8     /* independent random samples instead of stratified ones */
 
-/* Mirrors PathSettingsArgument in host/src/modes/path_mode.cpp. */
+/* Mirrors PathSettingsArgument in host/render/modes/path_mode.cpp. */
 typedef struct path_settings {
     int max_bounces;       /* scattering events after the camera ray at most */
     int roulette_depth;    /* Russian roulette from this bounce on */

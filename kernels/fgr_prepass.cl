@@ -30,7 +30,7 @@
  * safe cone; the tests narrow it on purpose to see that a cone too narrow for its block is
  * caught. */
 
-/* Pixels per block side. host/src/prepass/cone_prepass.hpp has the same value. */
+/* Pixels per block side. host/render/prepass/cone_prepass.hpp has the same value. */
 #define FGR_PREPASS_BLOCK 8
 
 /* A cone stops once its step falls below this fraction of its own width at that distance (the
@@ -81,11 +81,11 @@ inline real march_start_of(__global const float* starts, tile_pixels pixels,
 #endif
 }
 
-/* Where camera rays start given a reprojected hint (fgr/reprojection.hpp: the viewer's previous
+/* Where camera rays start given a reprojected hint (render/prepass/reprojection.hpp: the viewer's previous
  * frame's depths seen from the new view, less a margin; 0 for none): at the hint, for the lanes
  * whose hint lies past `start` and where the DE there is more than twice the hit footprint
  * (outside the surface, and not where the march would stop at once), at `start` elsewhere. A
- * hint is not proof that the way to it is clear, as the cone is: fgr/reprojection.hpp keeps
+ * hint is not proof that the way to it is clear, as the cone is: render/prepass/reprojection.hpp keeps
  * hints away from holes and depth edges, where a surface the previous frame did not see may
  * come into view, and the viewer uses them only for previews while the camera moves. Costs one
  * DE evaluation per packet with a hint, counted in *evaluations. */

@@ -1,6 +1,6 @@
 /* fgr kernel library: lighting. Blinn-Phong with the scene's lights, in linear RGB; the host
  * encodes to sRGB afterwards. Lights arrive as FGR_LIGHT_FLOATS floats each:
- * type, vector.xyz, colour.rgb, intensity (see host/src/renderer.cpp). */
+ * type, vector.xyz, colour.rgb, intensity (see host/render/renderer.cpp). */
 
 #define FGR_LIGHT_FLOATS 8
 #define FGR_LIGHT_POINT 1

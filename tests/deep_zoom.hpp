@@ -7,7 +7,7 @@
 #include <glm/geometric.hpp>
 #include <glm/trigonometric.hpp>
 
-#include "fgr/scene.hpp"
+#include "scene/scene.hpp"
 #include "mandelbulb_reference.hpp"
 
 namespace fgr::test {

@@ -7,8 +7,8 @@
 
 #include <filesystem>
 
-#include "fgr/opencl_device.hpp"
-#include "fgr/program_cache.hpp"
+#include "device/opencl_device.hpp"
+#include "device/program_cache.hpp"
 
 namespace fgr::test {
 

@@ -2,7 +2,7 @@
 
 #include <fmt/format.h>
 
-#include "fgr/kernel_assembly.hpp"
+#include "device/kernel_assembly.hpp"
 #include "fgr/kernel_library.hpp"
 
 namespace fgr::test {

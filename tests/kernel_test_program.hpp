@@ -6,8 +6,8 @@
 #include <string>
 #include <string_view>
 
-#include "fgr/opencl_device.hpp"
-#include "fgr/program_cache.hpp"
+#include "device/opencl_device.hpp"
+#include "device/program_cache.hpp"
 
 namespace fgr::test {
 

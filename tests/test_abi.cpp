@@ -11,10 +11,10 @@
 #include <string>
 #include <vector>
 
-#include "fgr/camera.hpp"
-#include "fgr/description_validation.hpp"
+#include "camera/camera.hpp"
+#include "scene/description_validation.hpp"
 #include "fgr/plugin.h"
-#include "fgr/render_mode.hpp"
+#include "scene/render_mode.hpp"
 #include "fgr/scene_helpers.h"
 
 namespace fgr {

@@ -27,20 +27,20 @@
 #include <vector>
 
 #include "child_process.hpp"
-#include "fgr/discovery.hpp"
-#include "fgr/opencl_device.hpp"
-#include "fgr/parameters.hpp"
+#include "scene/discovery.hpp"
+#include "device/opencl_device.hpp"
+#include "scene/parameters.hpp"
 #include "fgr/plugin.h"
-#include "fgr/plugin_loader.hpp"
-#include "fgr/program_cache.hpp"
-#include "fgr/render_mode.hpp"
-#include "fgr/renderer.hpp"
+#include "scene/plugin_loader.hpp"
+#include "device/program_cache.hpp"
+#include "scene/render_mode.hpp"
+#include "render/renderer.hpp"
 #include "fixtures/frozen_v1/frozen_layout.h"
 #include "fixtures/frozen_v1_1/frozen_layout_v1_1.h"
 #include "fixtures/frozen_v1_2/frozen_layout_v1_2.h"
 #include "fixtures/frozen_v1_3/frozen_layout_v1_3.h"
 #include "fixtures/frozen_v1_4/frozen_layout_v1_4.h"
-#include "fgr/ifs.hpp"
+#include "scene/ifs/ifs.hpp"
 
 namespace fgr {
 namespace {

@@ -11,8 +11,8 @@
 #include <gtest/gtest.h>
 
 #include "child_process.hpp"
-#include "fgr/accuracy.hpp"
-#include "fgr/parameters.hpp"
+#include "diagnostics/accuracy.hpp"
+#include "scene/parameters.hpp"
 #include "test_scenes.hpp"
 
 namespace fgr {

@@ -30,19 +30,19 @@
 #include <spdlog/sinks/ostream_sink.h>
 #include <spdlog/spdlog.h>
 
-#include "fgr/camera.hpp"
-#include "fgr/description_validation.hpp"
-#include "fgr/discovery.hpp"
-#include "fgr/ifs.hpp"
-#include "fgr/kernel_assembly.hpp"
-#include "fgr/opencl_device.hpp"
-#include "fgr/parameters.hpp"
+#include "camera/camera.hpp"
+#include "scene/description_validation.hpp"
+#include "scene/discovery.hpp"
+#include "scene/ifs/ifs.hpp"
+#include "device/kernel_assembly.hpp"
+#include "device/opencl_device.hpp"
+#include "scene/parameters.hpp"
 #include "fgr/plugin.h"
-#include "fgr/plugin_loader.hpp"
-#include "fgr/program_cache.hpp"
-#include "fgr/render_mode.hpp"
-#include "fgr/scene_file.hpp"
-#include "fgr/renderer.hpp"
+#include "scene/plugin_loader.hpp"
+#include "device/program_cache.hpp"
+#include "scene/render_mode.hpp"
+#include "scene/scene_file.hpp"
+#include "render/renderer.hpp"
 #include "fuzz_rng.hpp"
 
 namespace fgr {

@@ -10,8 +10,8 @@
 #include <nlohmann/json.hpp>
 
 #include "child_process.hpp"
-#include "fgr/bench.hpp"
-#include "fgr/camera.hpp"
+#include "diagnostics/bench.hpp"
+#include "camera/camera.hpp"
 #include "deep_zoom.hpp"
 #include "test_scenes.hpp"
 

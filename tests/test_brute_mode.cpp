@@ -16,12 +16,12 @@
 #include <glm/geometric.hpp>
 #include <glm/trigonometric.hpp>
 
-#include "fgr/brute_accuracy.hpp"
-#include "fgr/camera.hpp"
-#include "fgr/parameters.hpp"
+#include "diagnostics/brute_accuracy.hpp"
+#include "camera/camera.hpp"
+#include "scene/parameters.hpp"
 #include "fgr/plugin.h"
-#include "fgr/program_cache.hpp"
-#include "fgr/renderer.hpp"
+#include "device/program_cache.hpp"
+#include "render/renderer.hpp"
 #include "render_probes.hpp"
 #include "test_scenes.hpp"
 

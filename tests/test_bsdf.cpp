@@ -25,9 +25,9 @@
 #include <utility>
 #include <vector>
 
-#include "fgr/opencl_device.hpp"
-#include "fgr/precision.hpp"
-#include "fgr/program_cache.hpp"
+#include "device/opencl_device.hpp"
+#include "render/precision.hpp"
+#include "device/program_cache.hpp"
 #include "kernel_test_program.hpp"
 
 namespace fgr {

@@ -13,11 +13,11 @@
 #include <gtest/gtest.h>
 
 #include "child_process.hpp"
-#include "fgr/cache_directory.hpp"
-#include "fgr/scene_index.hpp"
-#include "fgr/kernel_assembly.hpp"
-#include "fgr/opencl_device.hpp"
-#include "fgr/program_cache.hpp"
+#include "device/cache_directory.hpp"
+#include "scene/scene_index.hpp"
+#include "device/kernel_assembly.hpp"
+#include "device/opencl_device.hpp"
+#include "device/program_cache.hpp"
 #include "test_scenes.hpp"
 
 namespace fgr {

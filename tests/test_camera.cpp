@@ -9,7 +9,7 @@
 
 #include <glm/geometric.hpp>
 
-#include "fgr/camera.hpp"
+#include "camera/camera.hpp"
 
 namespace fgr {
 namespace {

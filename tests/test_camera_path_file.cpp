@@ -8,8 +8,8 @@
 
 #include <gtest/gtest.h>
 
-#include "fgr/camera.hpp"
-#include "fgr/camera_path_file.hpp"
+#include "camera/camera.hpp"
+#include "camera/camera_path_file.hpp"
 
 namespace fgr {
 namespace {

@@ -5,8 +5,8 @@
 #include <gtest/gtest.h>
 
 #include "child_process.hpp"
-#include "fgr/hdr_io.hpp"
-#include "fgr/image_io.hpp"
+#include "image/hdr_io.hpp"
+#include "image/image_io.hpp"
 
 #include <ImfChannelList.h>
 #include <ImfHeader.h>

@@ -11,10 +11,10 @@
 #include <string>
 #include <vector>
 
-#include "fgr/discovery.hpp"
+#include "scene/discovery.hpp"
 #include "child_process.hpp"
-#include "fgr/plugin_loader.hpp"
-#include "fgr/scene_index.hpp"
+#include "scene/plugin_loader.hpp"
+#include "scene/scene_index.hpp"
 
 namespace fgr {
 namespace {

@@ -17,11 +17,11 @@
 #include <vector>
 
 #include "device_suite.hpp"
-#include "fgr/camera.hpp"
-#include "fgr/parameters.hpp"
+#include "camera/camera.hpp"
+#include "scene/parameters.hpp"
 #include "fgr/plugin.h"
-#include "fgr/program_cache.hpp"
-#include "fgr/renderer.hpp"
+#include "device/program_cache.hpp"
+#include "render/renderer.hpp"
 #include "test_scenes.hpp"
 
 namespace fgr {

@@ -18,9 +18,9 @@
 #include <gtest/gtest.h>
 
 #include "device_suite.hpp"
-#include "fgr/environment.hpp"
-#include "fgr/opencl_device.hpp"
-#include "fgr/program_cache.hpp"
+#include "render/environment.hpp"
+#include "device/opencl_device.hpp"
+#include "device/program_cache.hpp"
 #include "kernel_test_program.hpp"
 
 namespace fgr {

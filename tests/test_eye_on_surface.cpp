@@ -6,10 +6,10 @@
 
 #include <filesystem>
 
-#include "fgr/opencl_device.hpp"
-#include "fgr/parameters.hpp"
-#include "fgr/program_cache.hpp"
-#include "fgr/renderer.hpp"
+#include "device/opencl_device.hpp"
+#include "scene/parameters.hpp"
+#include "device/program_cache.hpp"
+#include "render/renderer.hpp"
 #include "test_scenes.hpp"
 
 namespace fgr {

@@ -1,4 +1,4 @@
-// The hybrid editor's edits of a formula scene's sequence (fgr/formula_edit.hpp): what each edit
+// The hybrid editor's edits of a formula scene's sequence (scene/formulas/formula_edit.hpp): what each edit
 // does to the sequence, the settings that follow from it and the scene's parameters, what it
 // refuses, and that the user's values travel with their slots.
 #include <gtest/gtest.h>
@@ -7,9 +7,9 @@
 #include <string>
 #include <vector>
 
-#include "fgr/formula_edit.hpp"
-#include "fgr/formulas.hpp"
-#include "fgr/parameters.hpp"
+#include "scene/formulas/formula_edit.hpp"
+#include "scene/formulas/formulas.hpp"
+#include "scene/parameters.hpp"
 
 namespace fgr {
 namespace {

@@ -1,4 +1,4 @@
-// The formula library and formula scene files (fgr/formulas.hpp): every formula has its kernel
+// The formula library and formula scene files (scene/formulas/formulas.hpp): every formula has its kernel
 // function; the shipped files load (30 formulas and 5 hybrids at least); bad files are refused in
 // one line naming the file, fuzzed ones too; a formula in two slots renders as the formula alone;
 // formulas that are the same map under two names give the same distances; the delta estimate
@@ -20,10 +20,10 @@
 
 #include "child_process.hpp"
 #include "device_suite.hpp"
-#include "fgr/formulas.hpp"
+#include "scene/formulas/formulas.hpp"
 #include "fgr/kernel_library.hpp"
-#include "fgr/parameters.hpp"
-#include "fgr/renderer.hpp"
+#include "scene/parameters.hpp"
+#include "render/renderer.hpp"
 #include "fuzz_rng.hpp"
 #include "json_mutation.hpp"
 #include "random_points.hpp"

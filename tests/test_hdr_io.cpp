@@ -27,8 +27,8 @@
 #include <string>
 #include <vector>
 
-#include "fgr/hdr_io.hpp"
-#include "fgr/image_io.hpp"
+#include "image/hdr_io.hpp"
+#include "image/image_io.hpp"
 
 namespace fgr {
 namespace {

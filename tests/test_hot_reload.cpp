@@ -12,8 +12,8 @@
 #include <gtest/gtest.h>
 
 #include "child_process.hpp"
-#include "fgr/parameters.hpp"
-#include "fgr/plugin_loader.hpp"
+#include "scene/parameters.hpp"
+#include "scene/plugin_loader.hpp"
 #include "fgr/viewer/file_watcher.hpp"
 #include "test_scenes.hpp"
 

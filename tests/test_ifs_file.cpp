@@ -1,4 +1,4 @@
-// IFS scene files (fgr/ifs.hpp): the shipped files (plugins/ifs/) parse and their geometry is what
+// IFS scene files (scene/ifs/ifs.hpp): the shipped files (plugins/ifs/) parse and their geometry is what
 // it claims (bounding spheres that hold, attractors that match the DE scenes they copy), bad files
 // are refused with one line naming the file and the map, a seeded fuzz test of the reader, and
 // discovery of IFS files beside plugins.
@@ -28,9 +28,9 @@
 #include <spdlog/spdlog.h>
 
 #include "child_process.hpp"
-#include "fgr/discovery.hpp"
-#include "fgr/ifs.hpp"
-#include "fgr/scene_file.hpp"
+#include "scene/discovery.hpp"
+#include "scene/ifs/ifs.hpp"
+#include "scene/scene_file.hpp"
 #include "fuzz_rng.hpp"
 #include "json_mutation.hpp"
 

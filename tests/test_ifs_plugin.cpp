@@ -11,14 +11,14 @@
 #include <filesystem>
 #include <string>
 
-#include "fgr/description_validation.hpp"
-#include "fgr/ifs.hpp"
-#include "fgr/opencl_device.hpp"
-#include "fgr/parameters.hpp"
+#include "scene/description_validation.hpp"
+#include "scene/ifs/ifs.hpp"
+#include "device/opencl_device.hpp"
+#include "scene/parameters.hpp"
 #include "fgr/plugin.h"
-#include "fgr/plugin_loader.hpp"
-#include "fgr/program_cache.hpp"
-#include "fgr/renderer.hpp"
+#include "scene/plugin_loader.hpp"
+#include "device/program_cache.hpp"
+#include "render/renderer.hpp"
 #include "fgr/scene_helpers.h"
 
 namespace fgr {

@@ -9,14 +9,14 @@
 #include <glm/geometric.hpp>
 #include <glm/trigonometric.hpp>
 
-#include "fgr/camera.hpp"
-#include "fgr/ifs.hpp"
+#include "camera/camera.hpp"
+#include "scene/ifs/ifs.hpp"
 #include "fgr/plugin.h"
-#include "fgr/opencl_device.hpp"
-#include "fgr/parameters.hpp"
-#include "fgr/program_cache.hpp"
-#include "fgr/path_settings.hpp"
-#include "fgr/renderer.hpp"
+#include "device/opencl_device.hpp"
+#include "scene/parameters.hpp"
+#include "device/program_cache.hpp"
+#include "render/path_settings.hpp"
+#include "render/renderer.hpp"
 #include "test_scenes.hpp"
 
 namespace fgr {

@@ -11,7 +11,7 @@
 #include <string>
 #include <vector>
 
-#include "fgr/image_io.hpp"
+#include "image/image_io.hpp"
 
 namespace fgr {
 namespace {

@@ -1,4 +1,4 @@
-// Image metrics (fgr/image_metrics.hpp): SSIM against closed forms of its three terms, against
+// Image metrics (diagnostics/image_metrics.hpp): SSIM against closed forms of its three terms, against
 // scikit-image's implementation on synthetic image pairs, and its properties; display luma, the
 // sRGB decoding of 8-bit images, and linear RMSE.
 #include <cmath>
@@ -7,7 +7,7 @@
 
 #include <gtest/gtest.h>
 
-#include "fgr/image_metrics.hpp"
+#include "diagnostics/image_metrics.hpp"
 
 namespace fgr {
 namespace {

@@ -11,11 +11,11 @@
 #include <fmt/format.h>
 #include <gtest/gtest.h>
 
-#include "fgr/kernel_assembly.hpp"
-#include "fgr/parameters.hpp"
+#include "device/kernel_assembly.hpp"
+#include "scene/parameters.hpp"
 #include "fgr/plugin.h"
-#include "fgr/program_cache.hpp"
-#include "fgr/renderer.hpp"
+#include "device/program_cache.hpp"
+#include "render/renderer.hpp"
 #include "hermetic_caches.hpp"
 #include "test_scenes.hpp"
 

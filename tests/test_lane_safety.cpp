@@ -13,11 +13,11 @@
 #include <gtest/gtest.h>
 #include <spdlog/spdlog.h>
 
-#include "fgr/camera.hpp"
-#include "fgr/discovery.hpp"
-#include "fgr/parameters.hpp"
-#include "fgr/program_cache.hpp"
-#include "fgr/renderer.hpp"
+#include "camera/camera.hpp"
+#include "scene/discovery.hpp"
+#include "scene/parameters.hpp"
+#include "device/program_cache.hpp"
+#include "render/renderer.hpp"
 #include "test_scenes.hpp"
 
 namespace fgr {

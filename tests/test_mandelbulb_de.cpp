@@ -8,9 +8,9 @@
 #include <glm/geometric.hpp>
 #include <gtest/gtest.h>
 
-#include "fgr/parameters.hpp"
-#include "fgr/program_cache.hpp"
-#include "fgr/renderer.hpp"
+#include "scene/parameters.hpp"
+#include "device/program_cache.hpp"
+#include "render/renderer.hpp"
 #include "mandelbulb_reference.hpp"
 #include "random_points.hpp"
 #include "test_scenes.hpp"

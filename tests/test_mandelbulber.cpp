@@ -23,7 +23,7 @@
 #include <nlohmann/json.hpp>
 
 #include "child_process.hpp"
-#include "fgr/image_io.hpp"
+#include "image/image_io.hpp"
 
 namespace fgr {
 namespace {

@@ -8,9 +8,9 @@
 
 #include <gtest/gtest.h>
 
-#include "fgr/math_check.hpp"
-#include "fgr/opencl_device.hpp"
-#include "fgr/program_cache.hpp"
+#include "device/math_check.hpp"
+#include "device/opencl_device.hpp"
+#include "device/program_cache.hpp"
 #include "child_process.hpp"
 
 namespace fgr {

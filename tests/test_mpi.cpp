@@ -21,7 +21,7 @@
 #include "video_decoding.hpp"
 #include "fgr/distributed/frame_wire.hpp"
 #include "fgr/distributed/task_farm.hpp"
-#include "fgr/hdr_io.hpp"
+#include "image/hdr_io.hpp"
 
 namespace fgr {
 namespace {

@@ -1,4 +1,4 @@
-// in_parallel_bands (fgr/parallel_bands.hpp): every index of the range done exactly once.
+// in_parallel_bands (util/parallel_bands.hpp): every index of the range done exactly once.
 
 #include <gtest/gtest.h>
 
@@ -6,7 +6,7 @@
 #include <cstddef>
 #include <vector>
 
-#include "fgr/parallel_bands.hpp"
+#include "util/parallel_bands.hpp"
 
 namespace fgr {
 namespace {

@@ -15,11 +15,11 @@
 #include <glm/geometric.hpp>
 #include <gtest/gtest.h>
 
-#include "fgr/opencl_device.hpp"
-#include "fgr/parameters.hpp"
-#include "fgr/path_settings.hpp"
-#include "fgr/program_cache.hpp"
-#include "fgr/renderer.hpp"
+#include "device/opencl_device.hpp"
+#include "scene/parameters.hpp"
+#include "render/path_settings.hpp"
+#include "device/program_cache.hpp"
+#include "render/renderer.hpp"
 #include "test_scenes.hpp"
 
 namespace fgr {
@@ -509,7 +509,7 @@ TEST_F(PathTracer, EveryPacketWidthRendersTheSameImage) {
     }
 }
 
-// The stability suite's hard camera placements (`fgr check`, host/src/scene_check.cpp) beside a scene's
+// The stability suite's hard camera placements (`fgr check`, host/diagnostics/scene_check.cpp) beside a scene's
 // own cameras: at the origin (inside most fractals), a centre ray through the origin, a narrow
 // view grazing the silhouette, and a camera 1000 times farther out.
 std::vector<std::pair<std::string, CameraView>> hard_views(const Scene& scene) {

@@ -21,9 +21,9 @@
 #include <glm/geometric.hpp>
 
 #include "device_suite.hpp"
-#include "fgr/parameters.hpp"
-#include "fgr/projection.hpp"
-#include "fgr/renderer.hpp"
+#include "scene/parameters.hpp"
+#include "camera/projection.hpp"
+#include "render/renderer.hpp"
 #include "test_scenes.hpp"
 
 namespace fgr::test {

@@ -1,4 +1,4 @@
-// Cameras beyond the pinhole (fgr/projection.hpp, kernels/fgr_camera.cl): small spheres placed in
+// Cameras beyond the pinhole (camera/projection.hpp, kernels/fgr_camera.cl): small spheres placed in
 // known world directions must appear where the projection's own formulas (written out here, apart
 // from both implementations) put them, in the images the kernels render; stereo pairs must show
 // the parallax that separation, convergence and focal length predict; the hit threshold must
@@ -15,11 +15,11 @@
 
 #include "child_process.hpp"
 #include "device_suite.hpp"
-#include "fgr/parameters.hpp"
-#include "fgr/program_cache.hpp"
-#include "fgr/projection.hpp"
-#include "fgr/renderer.hpp"
-#include "fgr/still_image.hpp"
+#include "scene/parameters.hpp"
+#include "device/program_cache.hpp"
+#include "camera/projection.hpp"
+#include "render/renderer.hpp"
+#include "output/still_image.hpp"
 #include "test_scenes.hpp"
 
 namespace fgr {

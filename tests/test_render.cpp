@@ -6,10 +6,10 @@
 
 #include <gtest/gtest.h>
 
-#include "fgr/camera.hpp"
-#include "fgr/parameters.hpp"
-#include "fgr/program_cache.hpp"
-#include "fgr/renderer.hpp"
+#include "camera/camera.hpp"
+#include "scene/parameters.hpp"
+#include "device/program_cache.hpp"
+#include "render/renderer.hpp"
 #include "mandelbulb_reference.hpp"
 #include "test_scenes.hpp"
 

@@ -1,4 +1,4 @@
-// Split and merge for schedulers (fgr/render_parts.hpp, fgr render --part/--tile, fgr merge,
+// Split and merge for schedulers (output/parts/render_parts.hpp, fgr render --part/--tile, fgr merge,
 // fgr video --frame-range, fgr merge --frames): tiles merge into exactly the whole render (PNG
 // bytes, EXR floats, the brute mode's neighbour-reading shading included); parts of different
 // seeds merge into the sample-weighted mean with the summed samples; parts that do not make one
@@ -26,10 +26,10 @@ extern "C" {
 
 #include "child_process.hpp"
 #include "device_suite.hpp"
-#include "fgr/image_io.hpp"
-#include "fgr/parameters.hpp"
-#include "fgr/render_parts.hpp"
-#include "fgr/renderer.hpp"
+#include "image/image_io.hpp"
+#include "scene/parameters.hpp"
+#include "output/parts/render_parts.hpp"
+#include "render/renderer.hpp"
 #include "test_scenes.hpp"
 
 namespace fgr {
@@ -377,7 +377,7 @@ TEST_F(RenderPartsTest, BandsAcrossTileSeamsMergeIntoTheUntiledFrame) {
     const auto read =
         read_exr_channels(output.path, {"R", "G", "B", "albedo.R", "albedo.G", "albedo.B",
                                         "normal.X", "normal.Y", "normal.Z", "depth.Z", "A"});
-    // With alpha the colour is the premultiplied foreground (fgr/still_layers.hpp).
+    // With alpha the colour is the premultiplied foreground (output/still_layers.hpp).
     const std::vector<std::pair<const std::vector<float>*, int>> planes{{&frame.foreground, 3},
                                                                         {&frame.albedo, 3},
                                                                         {&frame.normal, 3},

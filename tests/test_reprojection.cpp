@@ -1,4 +1,4 @@
-// Temporal reprojection (fgr/reprojection.hpp): the viewer's previews start camera rays from the
+// Temporal reprojection (render/prepass/reprojection.hpp): the viewer's previews start camera rays from the
 // previous frame's depths seen from the new view. Hints must fall short of the surface the new
 // ray meets (a plane seen from a moved camera: every hint within the margin below the true
 // distance, never past it), leave holes and depth edges alone, and a preview rendered from them
@@ -16,11 +16,11 @@
 #include <glm/geometric.hpp>
 
 #include "device_suite.hpp"
-#include "fgr/camera.hpp"
-#include "fgr/parameters.hpp"
-#include "fgr/projection.hpp"
-#include "fgr/renderer.hpp"
-#include "fgr/reprojection.hpp"
+#include "camera/camera.hpp"
+#include "scene/parameters.hpp"
+#include "camera/projection.hpp"
+#include "render/renderer.hpp"
+#include "render/prepass/reprojection.hpp"
 #include "test_scenes.hpp"
 
 namespace fgr::test {

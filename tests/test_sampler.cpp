@@ -21,9 +21,9 @@
 #include <gtest/gtest.h>
 
 #include "device_suite.hpp"
-#include "fgr/opencl_device.hpp"
-#include "fgr/precision.hpp"
-#include "fgr/program_cache.hpp"
+#include "device/opencl_device.hpp"
+#include "render/precision.hpp"
+#include "device/program_cache.hpp"
 #include "kernel_test_program.hpp"
 
 namespace fgr {

@@ -7,8 +7,8 @@
 #include <gtest/gtest.h>
 
 #include "child_process.hpp"
-#include "fgr/parameters.hpp"
-#include "fgr/scaffold.hpp"
+#include "scene/parameters.hpp"
+#include "cli/scaffold.hpp"
 
 namespace fgr {
 namespace {

@@ -18,12 +18,12 @@
 #include <gtest/gtest.h>
 
 #include "child_process.hpp"
-#include "fgr/kernel_api.hpp"
+#include "scene/kernel_api.hpp"
 #include "fgr/kernel_library.hpp"
-#include "fgr/parameters.hpp"
-#include "fgr/plugin_loader.hpp"
-#include "fgr/program_cache.hpp"
-#include "fgr/renderer.hpp"
+#include "scene/parameters.hpp"
+#include "scene/plugin_loader.hpp"
+#include "device/program_cache.hpp"
+#include "render/renderer.hpp"
 #include "random_points.hpp"
 #include "render_probes.hpp"
 #include "test_scenes.hpp"

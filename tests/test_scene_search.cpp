@@ -7,7 +7,7 @@
 #include <string>
 #include <vector>
 
-#include "fgr/formulas.hpp"
+#include "scene/formulas/formulas.hpp"
 #include "fgr/viewer/scene_search.hpp"
 
 namespace fgr::viewer {

@@ -12,12 +12,12 @@
 #include <vector>
 
 #include "child_process.hpp"
-#include "fgr/description_validation.hpp"
-#include "fgr/opencl_device.hpp"
-#include "fgr/parameters.hpp"
+#include "scene/description_validation.hpp"
+#include "device/opencl_device.hpp"
+#include "scene/parameters.hpp"
 #include "fgr/plugin.h"
-#include "fgr/program_cache.hpp"
-#include "fgr/renderer.hpp"
+#include "device/program_cache.hpp"
+#include "render/renderer.hpp"
 #include "fgr/scene_helpers.h"
 #include "test_scenes.hpp"
 

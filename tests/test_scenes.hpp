@@ -9,10 +9,10 @@
 
 #include <spdlog/spdlog.h>
 
-#include "fgr/discovery.hpp"
-#include "fgr/formulas.hpp"
-#include "fgr/plugin_loader.hpp"
-#include "fgr/scene.hpp"
+#include "scene/discovery.hpp"
+#include "scene/formulas/formulas.hpp"
+#include "scene/plugin_loader.hpp"
+#include "scene/scene.hpp"
 
 namespace fgr::test {
 

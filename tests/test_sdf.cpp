@@ -16,10 +16,10 @@
 #include <glm/vec3.hpp>
 #include <gtest/gtest.h>
 
-#include "fgr/parameters.hpp"
-#include "fgr/plugin_loader.hpp"
-#include "fgr/program_cache.hpp"
-#include "fgr/renderer.hpp"
+#include "scene/parameters.hpp"
+#include "scene/plugin_loader.hpp"
+#include "device/program_cache.hpp"
+#include "render/renderer.hpp"
 #include "random_points.hpp"
 #include "test_scenes.hpp"
 

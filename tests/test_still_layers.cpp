@@ -1,4 +1,4 @@
-// Alpha and layers (host/include/fgr/still_layers.hpp): every render mode, on DE and IFS scenes,
+// Alpha and layers (host/output/still_layers.hpp): every render mode, on DE and IFS scenes,
 // gives a ball's analytic depth, normal and albedo, coverage 1 on it, 0 off it and the fraction of
 // hitting samples at its edge; the plain shaded kernel is untouched by the switch; and the CLI's
 // RGBA PNG and EXR hold the same coverage with the background removed.
@@ -22,14 +22,14 @@
 
 #include "child_process.hpp"
 #include "device_suite.hpp"
-#include "fgr/camera.hpp"
-#include "fgr/ifs.hpp"
-#include "fgr/image_io.hpp"
-#include "fgr/parameters.hpp"
-#include "fgr/program_cache.hpp"
-#include "fgr/renderer.hpp"
-#include "fgr/still_image.hpp"
-#include "fgr/still_layers.hpp"
+#include "camera/camera.hpp"
+#include "scene/ifs/ifs.hpp"
+#include "image/image_io.hpp"
+#include "scene/parameters.hpp"
+#include "device/program_cache.hpp"
+#include "render/renderer.hpp"
+#include "output/still_image.hpp"
+#include "output/still_layers.hpp"
 #include "test_scenes.hpp"
 
 namespace fgr {

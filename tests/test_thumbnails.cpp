@@ -9,8 +9,8 @@
 #include <string>
 
 #include "child_process.hpp"
-#include "fgr/formulas.hpp"
-#include "fgr/program_cache.hpp"
+#include "scene/formulas/formulas.hpp"
+#include "device/program_cache.hpp"
 #include "fgr/viewer/thumbnails.hpp"
 
 namespace fgr::viewer {

@@ -1,4 +1,4 @@
-// Tiled stills (fgr/tiled_still.hpp): a tiled render equals the untiled one pixel for pixel in
+// Tiled stills (output/tiled/tiled_still.hpp): a tiled render equals the untiled one pixel for pixel in
 // every mode, including the brute-force mode whose shading reads neighbours across tile seams;
 // the streaming PNG, EXR and TIFF writers give files that read back as the frame; an interrupted
 // render resumed from its tile store equals an uninterrupted one, and a store of another render
@@ -23,15 +23,15 @@
 
 #include "child_process.hpp"
 #include "device_suite.hpp"
-#include "fgr/ifs.hpp"
-#include "fgr/image_io.hpp"
-#include "fgr/kernel_assembly.hpp"
-#include "fgr/parameters.hpp"
-#include "fgr/program_cache.hpp"
-#include "fgr/projection.hpp"
-#include "fgr/renderer.hpp"
-#include "fgr/still_layers.hpp"
-#include "fgr/tiled_still.hpp"
+#include "scene/ifs/ifs.hpp"
+#include "image/image_io.hpp"
+#include "device/kernel_assembly.hpp"
+#include "scene/parameters.hpp"
+#include "device/program_cache.hpp"
+#include "camera/projection.hpp"
+#include "render/renderer.hpp"
+#include "output/still_layers.hpp"
+#include "output/tiled/tiled_still.hpp"
 #include "test_scenes.hpp"
 
 namespace fgr {
@@ -143,7 +143,7 @@ void expect_tiled_equals_untiled(Renderer& renderer, const FrameRequest& whole, 
         &width, &height);
     ASSERT_EQ(width, whole.width);
     ASSERT_EQ(height, whole.height);
-    // With alpha the colour is the premultiplied foreground (fgr/still_layers.hpp).
+    // With alpha the colour is the premultiplied foreground (output/still_layers.hpp).
     const std::vector<std::pair<const std::vector<float>*, int>> planes{
         {&frame.foreground, 3}, {&frame.albedo, 3}, {&frame.normal, 3}, {&frame.depth, 1},
         {&frame.alpha, 1}};

@@ -24,9 +24,9 @@ extern "C" {
 }
 
 #include "child_process.hpp"
-#include "fgr/image_io.hpp"
-#include "fgr/video_encoder.hpp"
-#include "fgr/video_timing.hpp"
+#include "image/image_io.hpp"
+#include "output/video/video_encoder.hpp"
+#include "output/video/video_timing.hpp"
 #include "video_decoding.hpp"
 
 namespace fgr {

@@ -24,9 +24,9 @@
 #include <glm/geometric.hpp>
 
 #include "child_process.hpp"
-#include "fgr/camera_path_file.hpp"
-#include "fgr/formulas.hpp"
-#include "fgr/image_io.hpp"
+#include "camera/camera_path_file.hpp"
+#include "scene/formulas/formulas.hpp"
+#include "image/image_io.hpp"
 #include "fgr/viewer/thumbnails.hpp"
 #include "hermetic_caches.hpp"
 

@@ -11,8 +11,8 @@
 #include <spdlog/spdlog.h>
 
 #include "commands.hpp"
-#include "fgr/program_cache.hpp"
-#include "fgr/renderer.hpp"
+#include "device/program_cache.hpp"
+#include "render/renderer.hpp"
 
 namespace fgr {
 namespace {

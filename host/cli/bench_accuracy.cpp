@@ -8,9 +8,9 @@
 #include <spdlog/spdlog.h>
 
 #include "commands.hpp"
-#include "fgr/brute_accuracy.hpp"
-#include "fgr/program_cache.hpp"
-#include "fgr/renderer.hpp"
+#include "diagnostics/brute_accuracy.hpp"
+#include "device/program_cache.hpp"
+#include "render/renderer.hpp"
 
 namespace fgr {
 
@@ -66,7 +66,7 @@ void plot(const std::filesystem::path& csv, const std::filesystem::path& script,
     fmt::print("wrote {}\n", png.string());
 }
 
-// --mode brute: the depth's convergence over passes (fgr/brute_accuracy.hpp).
+// --mode brute: the depth's convergence over passes (diagnostics/brute_accuracy.hpp).
 void brute_accuracy(const Scene& scene, const AccuracySettings& settings,
                     const ComputeDevice& device, ProgramCache& cache,
                     const std::filesystem::path& csv, const std::filesystem::path& script,

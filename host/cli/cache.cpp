@@ -8,8 +8,8 @@
 #include <fmt/format.h>
 
 #include "commands.hpp"
-#include "fgr/cache_directory.hpp"
-#include "fgr/program_cache.hpp"
+#include "device/cache_directory.hpp"
+#include "device/program_cache.hpp"
 
 namespace fgr {
 namespace {

@@ -1,4 +1,4 @@
-// fgr check: the numerical checks of fgr/scene_check.hpp on one scene, given by id or as a plugin
+// fgr check: the numerical checks of diagnostics/scene_check.hpp on one scene, given by id or as a plugin
 // file, with a report a scene's author can act on; --compile only builds the kernel (what the SDK
 // template's build runs, so a typo in the .cl fails `cmake --build` with its file and line).
 #include <fmt/format.h>
@@ -10,9 +10,9 @@
 #include <string>
 
 #include "commands.hpp"
-#include "fgr/program_cache.hpp"
-#include "fgr/scene_check.hpp"
-#include "fgr/scene_file.hpp"
+#include "device/program_cache.hpp"
+#include "diagnostics/scene_check.hpp"
+#include "scene/scene_file.hpp"
 
 namespace fgr {
 namespace {

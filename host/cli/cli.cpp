@@ -13,7 +13,7 @@
 
 #include "commands.hpp"
 #include "fgr/distributed/cluster.hpp"
-#include "fgr/program_cache.hpp"
+#include "device/program_cache.hpp"
 
 namespace fgr {
 namespace {

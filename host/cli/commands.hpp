@@ -16,20 +16,20 @@
 
 #include <CLI/CLI.hpp>
 
-#include "fgr/accuracy.hpp"
-#include "fgr/bench.hpp"
-#include "fgr/discovery.hpp"
+#include "diagnostics/accuracy.hpp"
+#include "diagnostics/bench.hpp"
+#include "scene/discovery.hpp"
 #include "fgr/distributed/cluster.hpp"
 #include "fgr/distributed/task_farm.hpp"
-#include "fgr/opencl_device.hpp"
-#include "fgr/parameters.hpp"
-#include "fgr/path_settings.hpp"
-#include "fgr/precision.hpp"
-#include "fgr/projection.hpp"
-#include "fgr/render_mode.hpp"
-#include "fgr/scene.hpp"
-#include "fgr/still_image.hpp"
-#include "fgr/view_override.hpp"
+#include "device/opencl_device.hpp"
+#include "scene/parameters.hpp"
+#include "render/path_settings.hpp"
+#include "render/precision.hpp"
+#include "camera/projection.hpp"
+#include "scene/render_mode.hpp"
+#include "scene/scene.hpp"
+#include "output/still_image.hpp"
+#include "camera/view_override.hpp"
 #include "fgr/viewer/viewer.hpp"
 
 namespace fgr {
@@ -120,7 +120,7 @@ CameraView overridden_view(const CameraView& base, const ViewOverrideText& text)
 
 // --projection, --stereo, --fisheye-fov, --eye-separation, --convergence (render and view).
 struct ProjectionOptions {
-    std::optional<std::string> projection;  // a name or alias (fgr/projection.hpp)
+    std::optional<std::string> projection;  // a name or alias (camera/projection.hpp)
     std::optional<std::string> stereo;      // sbs or tb: the same as --projection stereo-sbs/tb
     std::optional<float> fisheye_fov;       // degrees in (0, 360]
     std::optional<double> eye_separation;   // world units >= 0
@@ -139,7 +139,7 @@ void print_mpi_figures(const Cluster& cluster, const FarmOutcome& outcome);
 void check_output_directory(const std::filesystem::path& file);
 // The scene as a command uses it: with --dev (`dev`), its source read from its recorded .cl file
 // (UsageError when it records none); without, as loaded, after a warning when that file changed
-// after the plugin was built (fgr/scene_source.hpp).
+// after the plugin was built (scene/scene_source.hpp).
 Scene scene_as_used(const Scene& scene, bool dev);
 
 // Writes `text` to `file` atomically; a failure is a RuntimeFailure.
@@ -183,7 +183,7 @@ struct RenderOptions {
     std::optional<int> tile_size;  // render in tiles of about this side (also implied by size)
     bool resume = false;           // continue an interrupted tiled render from its tile store
     ProjectionOptions projection;
-    bool part = false;                // write a part for `fgr merge` (fgr/render_parts.hpp)
+    bool part = false;                // write a part for `fgr merge` (output/parts/render_parts.hpp)
     std::optional<std::string> tile;  // "I/N": the part is rows of tile I of N (implies --part)
     bool prepass = true;  // --prepass on|off: the cone-marched depth prepass (FrameRequest)
 };

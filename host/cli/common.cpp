@@ -6,12 +6,12 @@
 #include <spdlog/spdlog.h>
 
 #include "commands.hpp"
-#include "fgr/atomic_file.hpp"
+#include "util/atomic_file.hpp"
 #include "fgr/distributed/cluster.hpp"
-#include "fgr/program_cache.hpp"
-#include "fgr/renderer.hpp"
-#include "fgr/scene_index.hpp"
-#include "fgr/scene_source.hpp"
+#include "device/program_cache.hpp"
+#include "render/renderer.hpp"
+#include "scene/scene_index.hpp"
+#include "scene/scene_source.hpp"
 
 namespace fgr {
 Discovery discover() { return discover_scenes(plugin_search_path(executable_dir())); }

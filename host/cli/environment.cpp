@@ -6,9 +6,9 @@
 #include <fmt/format.h>
 
 #include "commands.hpp"
-#include "fgr/environment.hpp"
-#include "fgr/hdr_io.hpp"
-#include "fgr/lower_case.hpp"
+#include "render/environment.hpp"
+#include "image/hdr_io.hpp"
+#include "util/lower_case.hpp"
 
 namespace fgr {
 

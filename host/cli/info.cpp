@@ -2,9 +2,9 @@
 #include <fmt/format.h>
 
 #include "commands.hpp"
-#include "fgr/math_check.hpp"
-#include "fgr/opencl_device.hpp"
-#include "fgr/program_cache.hpp"
+#include "device/math_check.hpp"
+#include "device/opencl_device.hpp"
+#include "device/program_cache.hpp"
 
 namespace fgr {
 namespace {

@@ -6,10 +6,10 @@
 #include <fmt/ranges.h>
 
 #include "commands.hpp"
-#include "fgr/formulas.hpp"
-#include "fgr/render_mode.hpp"
-#include "fgr/ifs.hpp"
-#include "fgr/kernel_assembly.hpp"
+#include "scene/formulas/formulas.hpp"
+#include "scene/render_mode.hpp"
+#include "scene/ifs/ifs.hpp"
+#include "device/kernel_assembly.hpp"
 
 namespace fgr {
 namespace {
@@ -96,7 +96,7 @@ const char* distance_name(FormulaDistance distance) {
     return "";
 }
 
-// The formula library: what a formula scene's "sequence" may name (fgr/formulas.hpp).
+// The formula library: what a formula scene's "sequence" may name (scene/formulas/formulas.hpp).
 void print_formulas() {
     std::string family;
     for (const Formula& formula : formula_library()) {

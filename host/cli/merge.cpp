@@ -13,10 +13,10 @@
 #include <spdlog/spdlog.h>
 
 #include "commands.hpp"
-#include "fgr/image_io.hpp"
-#include "fgr/render_parts.hpp"
-#include "fgr/streaming_image.hpp"
-#include "fgr/video_encoder.hpp"
+#include "image/image_io.hpp"
+#include "output/parts/render_parts.hpp"
+#include "output/tiled/streaming_image.hpp"
+#include "output/video/video_encoder.hpp"
 
 namespace fgr {
 namespace {

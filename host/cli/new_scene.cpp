@@ -6,7 +6,7 @@
 #include <fmt/format.h>
 
 #include "commands.hpp"
-#include "fgr/scaffold.hpp"
+#include "cli/scaffold.hpp"
 
 namespace fgr {
 

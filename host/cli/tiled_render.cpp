@@ -17,13 +17,13 @@
 #include "fgr/distributed/cluster.hpp"
 #include "fgr/distributed/frame_wire.hpp"
 #include "fgr/distributed/task_farm.hpp"
-#include "fgr/parameters.hpp"
-#include "fgr/precision.hpp"
-#include "fgr/progress.hpp"
-#include "fgr/render_parts.hpp"
-#include "fgr/still_layers.hpp"
-#include "fgr/streaming_image.hpp"
-#include "fgr/tiled_still.hpp"
+#include "scene/parameters.hpp"
+#include "render/precision.hpp"
+#include "cli/progress.hpp"
+#include "output/parts/render_parts.hpp"
+#include "output/still_layers.hpp"
+#include "output/tiled/streaming_image.hpp"
+#include "output/tiled/tiled_still.hpp"
 
 namespace fgr {
 namespace {

@@ -17,16 +17,16 @@
 #include <unistd.h>
 
 #include "commands.hpp"
-#include "fgr/camera.hpp"
+#include "camera/camera.hpp"
 #include "fgr/distributed/cluster.hpp"
 #include "fgr/distributed/frame_wire.hpp"
 #include "fgr/distributed/task_farm.hpp"
-#include "fgr/program_cache.hpp"
-#include "fgr/progress.hpp"
-#include "fgr/video_encoder.hpp"
-#include "fgr/video_frames.hpp"
-#include "fgr/video_timing.hpp"
-#include "fgr/view_validation.hpp"
+#include "device/program_cache.hpp"
+#include "cli/progress.hpp"
+#include "output/video/video_encoder.hpp"
+#include "output/video/video_frames.hpp"
+#include "output/video/video_timing.hpp"
+#include "camera/view_validation.hpp"
 
 namespace fgr {
 namespace {

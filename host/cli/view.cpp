@@ -9,11 +9,11 @@
 #include <fmt/format.h>
 
 #include "commands.hpp"
-#include "fgr/camera_path_file.hpp"
-#include "fgr/hdr_io.hpp"
-#include "fgr/kernel_assembly.hpp"
-#include "fgr/modules.hpp"
-#include "fgr/renderer.hpp"
+#include "camera/camera_path_file.hpp"
+#include "image/hdr_io.hpp"
+#include "device/kernel_assembly.hpp"
+#include "scene/modules.hpp"
+#include "render/renderer.hpp"
 
 namespace fgr {
 namespace {

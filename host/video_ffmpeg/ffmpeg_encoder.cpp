@@ -1,6 +1,6 @@
 // FFmpeg's side of `fgr video` and `fgr merge`'s videos: the module fgr loads on first use (see
-// host/src/video/video_backend.hpp for why it is not linked in).
-#include "video_backend.hpp"
+// host/output/video/video_backend.hpp for why it is not linked in).
+#include "output/video/video_backend.hpp"
 
 #include <array>
 #include <cstdarg>

@@ -7,7 +7,7 @@
 #include <stdexcept>
 
 #include "child_process.hpp"
-#include "fgr/content_hash.hpp"
+#include "util/content_hash.hpp"
 
 namespace fgr::golden {
 namespace {

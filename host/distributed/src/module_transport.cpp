@@ -4,7 +4,7 @@
 #include <stdexcept>
 
 #include "fgr/distributed/cluster.hpp"
-#include "fgr/modules.hpp"
+#include "scene/modules.hpp"
 #include "transport.hpp"
 
 namespace fgr {

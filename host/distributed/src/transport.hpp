@@ -32,7 +32,7 @@ public:
 // Joins the launcher's job when it started more than one rank; null (alone) otherwise.
 std::unique_ptr<Transport> join_transport(int* argc, char*** argv, Membership& membership);
 
-// The MPI transport is fgr's module libfgr_mpi.so (fgr/modules.hpp, host/distributed/mpi/):
+// The MPI transport is fgr's module libfgr_mpi.so (scene/modules.hpp, host/distributed/mpi/):
 // join_transport loads it only when a launcher started several ranks, so a plain `fgr render`
 // does not load Open MPI and the libraries it pulls in. Its entry point returns this table.
 struct MpiModule {

@@ -3,7 +3,7 @@
 #include <algorithm>
 #include <system_error>
 
-#include "fgr/scene_file.hpp"
+#include "scene/scene_file.hpp"
 
 namespace fgr::viewer {
 

@@ -1,6 +1,6 @@
 #include "fgr/viewer/fly_camera.hpp"
 
-#include "fgr/camera.hpp"
+#include "camera/camera.hpp"
 
 #include <algorithm>
 #include <cmath>

@@ -7,7 +7,7 @@
 #include <glm/geometric.hpp>
 #include <spdlog/spdlog.h>
 
-#include "fgr/parameters.hpp"
+#include "scene/parameters.hpp"
 
 namespace fgr::viewer {
 namespace {

@@ -3,7 +3,7 @@
 #include <algorithm>
 #include <sstream>
 
-#include "fgr/lower_case.hpp"
+#include "util/lower_case.hpp"
 
 namespace fgr::viewer {
 

@@ -6,12 +6,12 @@
 #include <fmt/format.h>
 #include <spdlog/spdlog.h>
 
-#include "fgr/content_hash.hpp"
-#include "fgr/kernel_assembly.hpp"
-#include "fgr/opencl_device.hpp"
-#include "fgr/parameters.hpp"
-#include "fgr/program_cache.hpp"
-#include "fgr/renderer.hpp"
+#include "util/content_hash.hpp"
+#include "device/kernel_assembly.hpp"
+#include "device/opencl_device.hpp"
+#include "scene/parameters.hpp"
+#include "device/program_cache.hpp"
+#include "render/renderer.hpp"
 
 namespace fgr::viewer {
 namespace {

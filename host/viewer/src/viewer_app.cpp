@@ -9,12 +9,12 @@
 #include <fmt/format.h>
 #include <spdlog/spdlog.h>
 
-#include "fgr/camera.hpp"
-#include "fgr/discovery.hpp"
-#include "fgr/scene_source.hpp"
-#include "fgr/kernel_assembly.hpp"
-#include "fgr/parameters.hpp"
-#include "fgr/precision.hpp"
+#include "camera/camera.hpp"
+#include "scene/discovery.hpp"
+#include "scene/scene_source.hpp"
+#include "device/kernel_assembly.hpp"
+#include "scene/parameters.hpp"
+#include "render/precision.hpp"
 
 namespace fgr::viewer {
 namespace {

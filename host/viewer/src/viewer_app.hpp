@@ -21,11 +21,11 @@
 #include <string>
 #include <vector>
 
-#include "fgr/camera_path_file.hpp"
-#include "fgr/formulas.hpp"
-#include "fgr/image_io.hpp"
-#include "fgr/precision.hpp"
-#include "fgr/scene.hpp"
+#include "camera/camera_path_file.hpp"
+#include "scene/formulas/formulas.hpp"
+#include "image/image_io.hpp"
+#include "render/precision.hpp"
+#include "scene/scene.hpp"
 #include "fgr/viewer/adaptive_quality.hpp"
 #include "fgr/viewer/file_watcher.hpp"
 #include "fgr/viewer/fly_camera.hpp"

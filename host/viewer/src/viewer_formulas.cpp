@@ -10,9 +10,9 @@
 #include <imgui_stdlib.h>
 #include <spdlog/spdlog.h>
 
-#include "fgr/atomic_file.hpp"
-#include "fgr/formula_edit.hpp"
-#include "fgr/parameters.hpp"
+#include "util/atomic_file.hpp"
+#include "scene/formulas/formula_edit.hpp"
+#include "scene/parameters.hpp"
 
 namespace fgr::viewer {
 namespace {

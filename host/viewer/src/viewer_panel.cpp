@@ -10,12 +10,12 @@
 #include <fmt/format.h>
 #include <spdlog/spdlog.h>
 
-#include "fgr/kernel_assembly.hpp"
-#include "fgr/parameters.hpp"
+#include "device/kernel_assembly.hpp"
+#include "scene/parameters.hpp"
 #include "fgr/plugin.h"
-#include "fgr/precision.hpp"
-#include "fgr/projection.hpp"
-#include "fgr/render_mode.hpp"
+#include "render/precision.hpp"
+#include "camera/projection.hpp"
+#include "scene/render_mode.hpp"
 
 namespace fgr::viewer {
 namespace {

@@ -9,10 +9,10 @@
 #include <fmt/format.h>
 #include <spdlog/spdlog.h>
 
-#include "fgr/discovery.hpp"
-#include "fgr/parameters.hpp"
-#include "fgr/scene_file.hpp"
-#include "fgr/scene_source.hpp"
+#include "scene/discovery.hpp"
+#include "scene/parameters.hpp"
+#include "scene/scene_file.hpp"
+#include "scene/scene_source.hpp"
 
 namespace fgr::viewer {
 namespace {

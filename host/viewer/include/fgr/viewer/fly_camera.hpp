@@ -5,7 +5,7 @@
 
 #include <glm/vec3.hpp>
 
-#include "fgr/scene.hpp"
+#include "scene/scene.hpp"
 
 namespace fgr::viewer {
 

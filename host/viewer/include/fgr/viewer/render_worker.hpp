@@ -21,15 +21,15 @@
 #include <utility>
 #include <vector>
 
-#include "fgr/image_io.hpp"
-#include "fgr/opencl_device.hpp"
-#include "fgr/path_settings.hpp"
-#include "fgr/precision.hpp"
-#include "fgr/program_cache.hpp"
-#include "fgr/render_mode.hpp"
-#include "fgr/renderer.hpp"
-#include "fgr/reprojection.hpp"
-#include "fgr/scene.hpp"
+#include "image/image_io.hpp"
+#include "device/opencl_device.hpp"
+#include "render/path_settings.hpp"
+#include "render/precision.hpp"
+#include "device/program_cache.hpp"
+#include "scene/render_mode.hpp"
+#include "render/renderer.hpp"
+#include "render/prepass/reprojection.hpp"
+#include "scene/scene.hpp"
 #include "fgr/viewer/adaptive_quality.hpp"
 
 namespace fgr::viewer {
@@ -198,7 +198,7 @@ private:
     int ifs_depth_reached_ = -1;  // of the last frame that reported it (sample 0 or a preview)
     std::vector<float> accumulation_;  // sum of linear RGB over the samples
     // The last preview's depths and what they were rendered with: the next preview starts its
-    // rays from them, reprojected (fgr/reprojection.hpp), when only the camera moved.
+    // rays from them, reprojected (render/prepass/reprojection.hpp), when only the camera moved.
     struct LastPreview {
         std::shared_ptr<const Scene> scene;  // held: no reloaded scene can take its address
         const Renderer* renderer = nullptr;

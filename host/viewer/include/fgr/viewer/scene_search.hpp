@@ -9,8 +9,8 @@
 #include <string_view>
 #include <vector>
 
-#include "fgr/formulas.hpp"
-#include "fgr/scene.hpp"
+#include "scene/formulas/formulas.hpp"
+#include "scene/scene.hpp"
 
 namespace fgr::viewer {
 

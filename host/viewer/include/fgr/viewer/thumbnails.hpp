@@ -21,8 +21,8 @@
 #include <thread>
 #include <vector>
 
-#include "fgr/image_io.hpp"
-#include "fgr/scene.hpp"
+#include "image/image_io.hpp"
+#include "scene/scene.hpp"
 
 namespace fgr::viewer {
 

@@ -7,11 +7,11 @@
 #include <string>
 #include <vector>
 
-#include "fgr/path_settings.hpp"
-#include "fgr/precision.hpp"
-#include "fgr/projection.hpp"
-#include "fgr/render_mode.hpp"
-#include "fgr/view_override.hpp"
+#include "render/path_settings.hpp"
+#include "render/precision.hpp"
+#include "camera/projection.hpp"
+#include "scene/render_mode.hpp"
+#include "camera/view_override.hpp"
 
 namespace fgr::viewer {
 
@@ -46,7 +46,7 @@ struct ViewerOptions {
 // std::runtime_error for failures (no display, no OpenCL device...).
 int run_viewer(const ViewerOptions& options);
 
-// The viewer is also fgr's module libfgr_viewer.so (fgr/modules.hpp), which `fgr view` loads: SDL,
+// The viewer is also fgr's module libfgr_viewer.so (scene/modules.hpp), which `fgr view` loads: SDL,
 // OpenGL and the ~50 libraries they pull in are loaded only by the process that opens a window.
 // Its entry point kViewerModuleEntry returns this table.
 struct ViewerModule {

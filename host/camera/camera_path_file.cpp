@@ -1,0 +1,95 @@
+#include "camera/camera_path_file.hpp"
+
+#include <fstream>
+#include <sstream>
+#include <stdexcept>
+
+#include <nlohmann/json.hpp>
+
+#include "util/atomic_file.hpp"
+#include "camera/view_json.hpp"
+#include "util/json_fields.hpp"
+
+namespace fgr {
+namespace {
+
+using nlohmann::json;
+
+constexpr const char* kFormat = "fgr-camera-path";
+constexpr int kVersion = 1;
+
+using json_fields::fail;
+
+Keyframe keyframe_from(const json& entry, std::size_t index) {
+    const std::string where = "keyframe " + std::to_string(index);
+    if (!entry.is_object()) fail(where + " must be an object");
+    Keyframe keyframe;
+    if (!entry.contains("time")) fail(where + " \"time\" is missing");
+    keyframe.time =
+        static_cast<float>(json_fields::finite_double(entry.at("time"), where + " \"time\""));
+    keyframe.view = json_fields::view_from(entry, where);
+    return keyframe;
+}
+
+}  // namespace
+
+std::string camera_path_json(const CameraPathFile& file) {
+    const json document = {{"format", kFormat},
+                           {"version", kVersion},
+                           {"scene", file.scene},
+                           {"name", file.path.name},
+                           {"keyframes", json_fields::keyframes_json(file.path.keyframes)}};
+    return document.dump(2) + "\n";
+}
+
+CameraPathFile parse_camera_path_json(const std::string& text) {
+    const json document = json::parse(text, nullptr, /*allow_exceptions=*/false);
+    if (document.is_discarded()) fail("not valid JSON");
+    if (!document.is_object()) fail("must be a JSON object");
+    // Compared as JSON: value("format", "") throws a type_error when "format" is not a string.
+    if (!document.contains("format") || document.at("format") != kFormat) {
+        fail("\"format\" must be \"fgr-camera-path\"");
+    }
+    json_fields::check_version(document, kVersion);
+    CameraPathFile file;
+    if (document.contains("scene") && document.at("scene").is_string()) {
+        file.scene = document.at("scene").get<std::string>();
+    }
+    file.path.name = document.contains("name") && document.at("name").is_string()
+                         ? document.at("name").get<std::string>()
+                         : "file";
+    if (!document.contains("keyframes") || !document.at("keyframes").is_array()) {
+        fail("\"keyframes\" must be an array");
+    }
+    const json& keyframes = document.at("keyframes");
+    if (keyframes.size() < 2) fail("a camera path needs at least two keyframes");
+    for (std::size_t i = 0; i < keyframes.size(); ++i) {
+        file.path.keyframes.push_back(keyframe_from(keyframes[i], i));
+        if (i > 0 && !(file.path.keyframes[i].time > file.path.keyframes[i - 1].time)) {
+            fail("keyframe " + std::to_string(i) + " \"time\" must be after the previous one");
+        }
+    }
+    return file;
+}
+
+CameraPathFile read_camera_path_file(const std::filesystem::path& file) {
+    std::ifstream in(file, std::ios::binary);
+    if (!in) throw std::runtime_error("cannot read camera path '" + file.string() + "'");
+    std::ostringstream text;
+    text << in.rdbuf();
+    try {
+        return parse_camera_path_json(text.str());
+    } catch (const std::runtime_error& error) {
+        throw std::runtime_error("camera path '" + file.string() + "': " + error.what());
+    }
+}
+
+void write_camera_path_file(const std::filesystem::path& file, const CameraPathFile& contents) {
+    write_text_file_atomically(file, camera_path_json(contents));
+}
+
+bool looks_like_camera_path_file(const std::string& argument) {
+    return argument.size() > 5 && argument.substr(argument.size() - 5) == ".json";
+}
+
+}  // namespace fgr

@@ -1,0 +1,69 @@
+#include "cli/progress.hpp"
+
+#include <unistd.h>
+
+#include <algorithm>
+#include <cmath>
+
+#include <fmt/format.h>
+
+namespace fgr {
+
+std::string format_duration(double seconds) {
+    const long s = std::lround(std::max(seconds, 0.0));
+    if (s < 60) return fmt::format("{}s", s);
+    if (s < 3600) return fmt::format("{}m{:02d}s", s / 60, s % 60);
+    return fmt::format("{}h{:02d}m", s / 3600, (s % 3600) / 60);
+}
+
+std::string format_rate(double per_second) {
+    if (per_second >= 1e9) return fmt::format("{:.2f} G", per_second / 1e9);
+    if (per_second >= 1e6) return fmt::format("{:.1f} M", per_second / 1e6);
+    if (per_second >= 1e3) return fmt::format("{:.0f} k", per_second / 1e3);
+    return fmt::format("{:.0f} ", per_second);
+}
+
+ProgressLine::ProgressLine(std::string unit, std::FILE* out)
+    : unit_(std::move(unit)), out_(out), terminal_(::isatty(::fileno(out)) == 1) {}
+
+ProgressLine::~ProgressLine() { finish(); }
+
+void ProgressLine::update(long done, long total, long fresh, double seconds,
+                          const std::string& detail) {
+    const auto now = std::chrono::steady_clock::now();
+    const long tenth = total > 0 ? done * 10 / total : 10;
+    const bool last = done >= total;
+    if (terminal_) {
+        if (!last && now - last_draw_ < std::chrono::milliseconds(250)) return;
+    } else if (!last && tenth == last_tenth_ &&
+               now - last_draw_ < std::chrono::seconds(30)) {
+        return;
+    }
+    last_draw_ = now;
+    last_tenth_ = tenth;
+    std::string eta = "ETA --";
+    if (fresh > 0 && !last) {
+        eta = "ETA " + format_duration(seconds / double(fresh) * double(total - done));
+    } else if (last) {
+        eta = "took " + format_duration(seconds);
+    }
+    const std::string text =
+        fmt::format("{} {}/{} ({:.0f}%) | {} | {}", unit_, done, total,
+                    total > 0 ? 100.0 * double(done) / double(total) : 100.0, detail, eta);
+    if (terminal_) {
+        fmt::print(out_, "\r{}\x1b[K", text);
+        open_ = true;
+    } else {
+        fmt::print(out_, "{}\n", text);
+    }
+    std::fflush(out_);
+}
+
+void ProgressLine::finish() {
+    if (!open_) return;
+    fmt::print(out_, "\n");
+    std::fflush(out_);
+    open_ = false;
+}
+
+}  // namespace fgr

@@ -1,0 +1,155 @@
+#include "device/kernel_assembly.hpp"
+
+#include <algorithm>
+#include <array>
+#include <stdexcept>
+#include <string>
+#include <string_view>
+#include <vector>
+
+#include <fmt/format.h>
+
+#include "scene/kernel_api.hpp"
+#include "fgr/kernel_library.hpp"
+#include "scene/parameters.hpp"
+#include "fgr/plugin.h"
+
+namespace fgr {
+namespace {
+
+
+// A file name is quoted in #line, so quotes, backslashes and newlines in it are replaced.
+std::string line_directive_name(std::string name) {
+    for (char& c : name) {
+        if (c == '"' || c == '\\' || c == '\n' || c == '\r') c = '_';
+    }
+    return name;
+}
+
+void append_file(std::string& out, const std::string& name, const char* source) {
+    out += fmt::format("#line 1 \"{}\"\n", line_directive_name(name));
+    out += source;
+    if (!out.empty() && out.back() != '\n') out += '\n';
+}
+
+bool is_identifier_char(char c) {
+    return (c >= 'a' && c <= 'z') || (c >= 'A' && c <= 'Z') || (c >= '0' && c <= '9') || c == '_';
+}
+
+// The library functions a family file defines: `inline TYPE formula_NAME(` at a line's start (its
+// formulas, their distances and the steps scenes share).
+std::vector<std::string> family_functions(std::string_view family_source) {
+    std::vector<std::string> names;
+    for (size_t at = family_source.find("inline "); at != std::string_view::npos;
+         at = family_source.find("inline ", at + 1)) {
+        if (at > 0 && family_source[at - 1] != '\n') continue;
+        const size_t name = family_source.find("formula_", at);
+        const size_t open = family_source.find('(', at);
+        if (name == std::string_view::npos || open == std::string_view::npos || name > open) continue;
+        names.emplace_back(family_source.substr(name, open - name));
+    }
+    return names;
+}
+
+// Whether `source` calls `function`: its name as a whole word, then "(".
+bool calls(std::string_view source, const std::string& function) {
+    for (size_t at = source.find(function); at != std::string_view::npos;
+         at = source.find(function, at + 1)) {
+        if (at > 0 && is_identifier_char(source[at - 1])) continue;
+        std::string_view rest = source.substr(at + function.size());
+        while (!rest.empty() && (rest.front() == ' ' || rest.front() == '\t')) rest.remove_prefix(1);
+        if (rest.starts_with("(")) return true;
+    }
+    return false;
+}
+
+// The formula families whose functions `source` calls, in the library's order: a scene plugin
+// iterates the library's steps as a formula scene does, and a program holds only the families
+// it uses. (No family calls another's functions.)
+std::vector<const KernelFile*> formula_families_called(std::string_view source) {
+    static const std::vector<std::vector<std::string>> functions = [] {
+        std::vector<std::vector<std::string>> all;
+        for (const KernelFile& family : formula_families()) {
+            all.push_back(family_functions(family.source));
+        }
+        return all;
+    }();
+    std::vector<const KernelFile*> used;
+    if (source.find("formula_") == std::string_view::npos) return used;
+    for (size_t i = 0; i < formula_families().size(); ++i) {
+        if (std::any_of(functions[i].begin(), functions[i].end(),
+                        [&](const std::string& function) { return calls(source, function); })) {
+            used.push_back(&formula_families()[i]);
+        }
+    }
+    return used;
+}
+
+std::string accessor(const ParamInfo& param, int offset) {
+    const std::string slot = fmt::format("fgr_params[{}]", offset);
+    switch (param.type) {
+        case ParamType::Float: return fmt::format("#define param_{} ({})\n", param.id, slot);
+        case ParamType::Int: return fmt::format("#define param_{} ((int){})\n", param.id, slot);
+        case ParamType::Bool:
+            return fmt::format("#define param_{} ({} != 0.0f)\n", param.id, slot);
+        case ParamType::Vec3:
+        case ParamType::Colour:
+            return fmt::format("#define param_{} v3_splat(fgr_params[{}], fgr_params[{}], fgr_params[{}])\n",
+                               param.id, offset, offset + 1, offset + 2);
+    }
+    return {};
+}
+
+}  // namespace
+
+std::string param_accessors(const Scene& scene) {
+    std::string out;
+    const auto offsets = param_offsets(scene);
+    for (size_t i = 0; i < scene.params.size(); ++i) out += accessor(scene.params[i], offsets[i]);
+    return out;
+}
+
+std::string switch_options(const KernelSwitches& switches) {
+    std::string options = fmt::format("-DFGR_WIDTH={}", switches.packet_width);
+    for (const EffectSwitch& effect : effect_switches()) {
+        if (switches.effects & effect.bit) options += fmt::format(" -D{}", effect.macro);
+    }
+    if (switches.stats) options += " -DFGR_STATS";
+    if (switches.double_precision) options += " -DFGR_DOUBLE";
+    if (switches.aovs) options += " -DFGR_AOVS";
+    // A plain literal (`z * 2.0`) is a double in OpenCL C, which a float packet refuses ("scalar
+    // operand type has greater rank"), while a double build takes it: a scene could work on one
+    // device and not another. In float builds literals are made single precision, so scenes
+    // written the way the maths reads compile in both; double builds keep them double.
+    if (!switches.double_precision) options += " -cl-single-precision-constant";
+    return options;
+}
+
+AssembledProgram assemble_program(const Scene& scene, const KernelSwitches& switches) {
+    check_supported_effects(scene, switches.effects);
+    AssembledProgram program;
+    program.options = switch_options(switches);
+    std::string& source = program.source;
+    // The library shows the scene the names of the kernel API version its source is written for.
+    const int kernel_api = declared_kernel_api(scene.source);
+    append_file(source, "<kernel API>", fmt::format("#define FGR_KERNEL_API {}\n", kernel_api).c_str());
+    for (const auto& file : kernel_prelude()) append_file(source, file.name, file.source);
+    append_file(source, fmt::format("<parameters of {}>", scene.id),
+                param_accessors(scene).c_str());
+    const std::vector<const KernelFile*> families = formula_families_called(scene.source);
+    if (!families.empty() && kernel_api < 2) {
+        throw std::invalid_argument(fmt::format(
+            "scene '{}' calls the formula library ({}), which needs kernel API 2: put "
+            "`#define FGR_KERNEL_API 2` on a line of its own in {}",
+            scene.id, families.front()->name, scene.source_name));
+    }
+    for (const KernelFile* family : families) append_file(source, family->name, family->source);
+    append_file(source, scene.source_name, scene.source.c_str());
+    for (const auto& file : kernel_postlude()) append_file(source, file.name, file.source);
+    for (const auto& file : mode_files(render_mode_name(switches.mode))) {
+        append_file(source, file.name, file.source);
+    }
+    return program;
+}
+
+}  // namespace fgr

@@ -1,0 +1,65 @@
+#pragma once
+// Building OpenCL programs once per (source, switches, device): in memory for the process, and as
+// device binaries on disk across runs, so a second `fgr render` skips the compiler. The disk
+// entries live in a cache directory shared with the math self-test's verdicts
+// (cache_directory.hpp).
+
+#include <cstdint>
+#include <filesystem>
+#include <map>
+#include <stdexcept>
+#include <string>
+
+#include "device/cache_directory.hpp"
+#include "device/kernel_assembly.hpp"
+#include "device/opencl_device.hpp"
+
+namespace fgr {
+
+// The program did not compile. what() is a one-line summary; build_log() the compiler's output,
+// whose file:line references name the scene's own source thanks to #line directives.
+class KernelBuildError : public std::runtime_error {
+public:
+    KernelBuildError(const std::string& summary, std::string log)
+        : std::runtime_error(summary), log_(std::move(log)) {}
+    const std::string& build_log() const { return log_; }
+
+private:
+    std::string log_;
+};
+
+struct BuildReport {
+    double build_ms = 0.0;
+    enum class Origin { Memory, Disk, Compiled } origin = Origin::Compiled;
+};
+
+class ProgramCache {
+public:
+    // An empty directory keeps the cache in memory only. On disk, entries are kept under
+    // `size_limit` bytes by evicting the least recently used (cache_directory.hpp).
+    explicit ProgramCache(std::filesystem::path directory,
+                          std::uintmax_t size_limit = cache_size_limit());
+
+    // $FGR_CACHE_DIR, else $XDG_CACHE_HOME/fgr/kernels, else ~/.cache/fgr/kernels, else none.
+    static std::filesystem::path default_directory();
+
+    cl::Program build(const ComputeDevice& device, const AssembledProgram& program,
+                      BuildReport* report = nullptr);
+
+    // 64-bit FNV-1a over everything that makes a binary valid: source, options and device.
+    static std::string cache_key(const ComputeDevice& device, const AssembledProgram& program);
+
+    const std::filesystem::path& directory() const { return directory_; }
+    std::uintmax_t size_limit() const { return size_limit_; }
+
+private:
+    cl::Program load_binary(const ComputeDevice& device, const AssembledProgram& program,
+                            const std::filesystem::path& file);
+    void store_binary(const cl::Program& program, const std::filesystem::path& file);
+
+    std::filesystem::path directory_;
+    std::uintmax_t size_limit_;
+    std::map<std::string, cl::Program> programs_;
+};
+
+}  // namespace fgr

@@ -1,0 +1,93 @@
+#pragma once
+// Checking any scene's numerics, as `fgr check` does and tests/test_scene_stability.cpp does for
+// every built scene: the DE stays finite at hard points and at every parameter's extremes, it is
+// 1-Lipschitz, the march's steps never reach the surface (measured by bisection), one ray per
+// work-item renders what the packets render, and every camera and camera path sees something.
+// Each check reports what it measured and, when it fails, what the scene's author can change.
+// Checks that need a distance estimator are skipped, with the reason, for inside-only and IFS
+// scenes.
+#include <memory>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "device/opencl_device.hpp"
+#include "device/program_cache.hpp"
+#include "render/renderer.hpp"
+#include "scene/scene.hpp"
+
+namespace fgr {
+
+enum class CheckStatus { Passed, Failed, Skipped };
+
+struct CheckResult {
+    std::string name;   // e.g. "march-safety": stable, for selecting and for tests
+    std::string title;  // what holds when it passes, e.g. "march steps never reach the surface"
+    CheckStatus status = CheckStatus::Passed;
+    std::string detail;  // what was measured; for a skipped check, why
+    std::string advice;  // a failed check: what to change, e.g. "set step_factor <= 0.76"
+};
+
+struct SceneCheckReport {
+    std::string scene_id;
+    std::vector<CheckResult> results;
+    bool passed() const;  // no check failed (skipped ones do not count)
+};
+
+// The names of the checks, in the order SceneChecker::run_all runs them.
+const std::vector<std::string>& scene_check_names();
+
+class SceneChecker {
+public:
+    // Builds the scene's program (shaded, or brute force for an inside-only scene) at
+    // `packet_width` (0: the device's preference). Throws KernelBuildError when the scene's source
+    // does not compile.
+    SceneChecker(const ComputeDevice& device, ProgramCache& cache, const Scene& scene,
+                 int packet_width = 0);
+    ~SceneChecker();
+
+    // The DE and the shading normal are finite at the origin, the axes, huge and tiny points and
+    // the default camera's eye and target.
+    CheckResult finite_at_hard_points();
+    // Renders with the camera at the origin, through the origin, grazing and far away are finite.
+    CheckResult finite_for_hard_cameras();
+    // Every parameter at its minimum and maximum renders finite pixels (and a finite DE).
+    CheckResult finite_at_parameter_extremes();
+    // step_factor * |DE(p) - DE(q)| <= |p - q| (2% and float rounding allowed) over pairs around
+    // the default view.
+    CheckResult lipschitz();
+    // step_factor * DE <= the distance to the surface, measured by bisection along rays (1%).
+    CheckResult march_safety();
+    // One ray per work-item renders the packets' image within one 8-bit level, the same hits.
+    CheckResult packet_agreement();
+    // The shading normal at every hit of the default view is finite and of unit length.
+    CheckResult normals_at_hits();
+    // Over-relaxed steps agree with a cautious march (no holes, no hits behind thin parts).
+    CheckResult relaxed_steps();
+    // Every camera and every camera path (at four times) renders finite pixels and some surface.
+    CheckResult cameras_and_paths();
+    // The default view hits 5-97% of pixels and is neither nearly uniform nor nearly black.
+    CheckResult default_view();
+
+    // Every check above, in scene_check_names() order; `only`, when given, runs that one check.
+    SceneCheckReport run_all(const std::optional<std::string>& only = std::nullopt);
+
+    Renderer& renderer() { return *renderer_; }
+
+private:
+    Frame render(const CameraView& view, const std::vector<float>& params, int width = 48,
+                 int height = 32);
+    std::vector<glm::vec3> region_points(int count, unsigned seed) const;
+    std::optional<CheckResult> skip_without_de(const std::string& name, const std::string& title);
+
+    const ComputeDevice& device_;
+    ProgramCache& cache_;
+    const Scene& scene_;
+    std::unique_ptr<Renderer> renderer_;
+};
+
+// The report as a beginner reads it: one line per check (ok / FAILED / skipped), what was
+// measured, and under each failure what to do; ends with a one-line verdict.
+std::string format_check_report(const SceneCheckReport& report);
+
+}  // namespace fgr

@@ -1,0 +1,48 @@
+#include "output/video/video_timing.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <stdexcept>
+
+#include <fmt/format.h>
+
+namespace fgr {
+
+int VideoTiming::frame_count() const {
+    return std::max(1, static_cast<int>(std::lround(duration * fps)));
+}
+
+float VideoTiming::frame_time(int index) const {
+    return static_cast<float>(start + static_cast<double>(index) / fps);
+}
+
+VideoTiming video_timing(const CameraPath& path, double fps, std::optional<double> start,
+                         std::optional<double> duration) {
+    const double first = path.keyframes.front().time, last = path.keyframes.back().time;
+    if (!(fps > 0.0) || !std::isfinite(fps)) {
+        throw std::invalid_argument(fmt::format("--fps must be a positive number (got {})", fps));
+    }
+    VideoTiming timing;
+    timing.fps = fps;
+    timing.start = start.value_or(first);
+    if (!(timing.start >= first && timing.start < last)) {
+        throw std::invalid_argument(fmt::format("--start {} is outside camera path '{}' [{}, {})",
+                                                timing.start, path.name, first, last));
+    }
+    timing.duration = duration.value_or(last - timing.start);
+    if (!(timing.duration > 0.0) || !std::isfinite(timing.duration)) {
+        throw std::invalid_argument(fmt::format(
+            "--duration must be a positive number of seconds (got {})", timing.duration));
+    }
+    // The last frame's time must lie on the path, as `fgr render --time` would take it.
+    const float last_frame = timing.frame_time(timing.frame_count() - 1);
+    if (last_frame > path.keyframes.back().time) {
+        throw std::invalid_argument(fmt::format(
+            "--duration {} from {} runs past the end of camera path '{}' at {} (its length from "
+            "there is {} s)",
+            timing.duration, timing.start, path.name, last, last - timing.start));
+    }
+    return timing;
+}
+
+}  // namespace fgr

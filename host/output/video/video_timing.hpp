@@ -1,0 +1,32 @@
+#pragma once
+// Which moments of a camera path a video shows: frame i is the path at time start + i / fps, for
+// every i whose time falls before start + duration. The path's own clock is the keyframes' times
+// (seconds), so a video at any fps plays the path at its recorded speed.
+
+#include <optional>
+#include <vector>
+
+#include "scene/scene.hpp"
+
+namespace fgr {
+
+struct VideoTiming {
+    double fps = 30.0;
+    double start = 0.0;     // path time of frame 0
+    double duration = 0.0;  // seconds of path time the video covers
+    // Frames in the video: duration x fps rounded to the nearest whole frame (at least one), so
+    // 10 s at 30 fps is 300 frames, the last at start + 299/30 (the end keyframe itself would be
+    // the first frame of an 11th second).
+    int frame_count() const;
+    // Path time of frame `index`, in float as `fgr render --time` reads it, so the frame equals
+    // that render.
+    float frame_time(int index) const;
+};
+
+// The timing for `path`: start defaults to its first keyframe's time, duration to the rest of the
+// path from there (to its last keyframe). Throws std::invalid_argument for fps <= 0 or not
+// finite, a duration <= 0, or a start or end outside the path's keyframe times.
+VideoTiming video_timing(const CameraPath& path, double fps, std::optional<double> start,
+                         std::optional<double> duration);
+
+}  // namespace fgr

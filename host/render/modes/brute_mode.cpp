@@ -1,0 +1,74 @@
+#include "render/modes/brute_mode.hpp"
+
+namespace fgr {
+
+BruteMode::BruteMode(const ComputeDevice& device, const cl::Program& program, const Scene& scene,
+                     const KernelSwitches& switches)
+    : device_(device),
+      shade_kernel_(program, "fgr_brute_shade"),
+      lights_(upload_floats(device, scene_light_values(scene))),
+      light_count_(static_cast<cl_int>(scene.lights.size())),
+      stats_(switches.stats),
+      aovs_(switches.aovs) {}
+
+namespace {
+
+constexpr int kSurfacePlanes = 6;  // albedo (3) and normal (3): FGR_BRUTE_ALBEDO_PLANE onwards
+
+}  // namespace
+
+int BruteMode::extra_planes(const KernelSwitches& switches) const {
+    return kSurfacePlanes + (switches.stats ? 1 : 0);
+}
+
+void BruteMode::bind(cl::Kernel& kernel, const FrameRequest& request, const TileLayout& layout) {
+    const int floats = layout.plane_size();
+    const PixelRegion region = rendered_region(request);
+    const bool same_image = floats == state_floats_ && region.width == state_width_ &&
+                            region.height == state_height_;
+    if (!same_image) {
+        state_ = cl::Buffer(device_.context, CL_MEM_READ_WRITE, sizeof(float) * floats);
+        state_floats_ = floats;
+        state_width_ = region.width;
+        state_height_ = region.height;
+        // A continued render (first sample > 0) of a new size has nothing to continue from.
+        device_.queue.enqueueFillBuffer(state_, -1.0f, 0, sizeof(float) * floats);
+    }
+    kernel.setArg(kFirstModeArgument, state_);
+    shade_kernel_.setArg(kFirstModeArgument, state_);
+    shade_kernel_.setArg(kFirstModeArgument + 1, lights_);
+    shade_kernel_.setArg(kFirstModeArgument + 2, light_count_);
+}
+
+void BruteMode::read_back(std::span<const float> planes, const TileLayout& layout,
+                          const FrameRequest&, int, Frame& frame) const {
+    const int width = frame.image.width, height = frame.image.height;  // the region's
+    frame.albedo = planes_in_rows(planes, layout, kCommonPlanes, 3, width, height);
+    frame.normal = planes_in_rows(planes, layout, kCommonPlanes + 3, 3, width, height);
+    if (aovs_) {
+        // Every pass samples the pixel's centre: it is covered or not, and its colour is the
+        // surface's where covered.
+        const size_t pixels = frame.depth.size();
+        frame.alpha.resize(pixels);
+        frame.foreground.resize(pixels * 3);
+        for (size_t i = 0; i < pixels; ++i) {
+            const bool covered = frame.depth[i] >= 0.0f;
+            frame.alpha[i] = covered ? 1.0f : 0.0f;
+            for (size_t c = 0; c < 3; ++c) {
+                frame.foreground[i * 3 + c] = covered ? frame.linear[i * 3 + c] : 0.0f;
+            }
+        }
+    }
+    const size_t plane = static_cast<size_t>(layout.plane_size());
+    const size_t stats_plane = kCommonPlanes + kSurfacePlanes;
+    if (!stats_) return;
+    double tests = 0.0;
+    for (int y = 0; y < height; ++y) {
+        for (int x = 0; x < width; ++x) {
+            tests += planes[stats_plane * plane + static_cast<size_t>(layout.index(x, y))];
+        }
+    }
+    frame.inside_tests_per_pixel = tests / (double(width) * double(height));
+}
+
+}  // namespace fgr

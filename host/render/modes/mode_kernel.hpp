@@ -1,0 +1,74 @@
+#pragma once
+// What a render mode's host module does for Renderer: the kernel's own arguments (after the nine
+// every mode takes, see FGR_RENDER_ARGS in kernels/fgr_camera.cl) and the planes it writes beyond
+// colour and depth. One implementation per mode, in this folder; mode_registry.cpp makes them.
+
+#include <memory>
+#include <span>
+#include <vector>
+
+#include "device/opencl_device.hpp"
+#include "scene/render_mode.hpp"
+#include "render/renderer.hpp"
+#include "scene/scene.hpp"
+
+namespace fgr {
+
+// Index of a mode's first own argument of fgr_render (after FGR_RENDER_ARGS).
+constexpr int kFirstModeArgument = 9;
+
+// Indices of fgr_render's `march_starts` (the cone prepass's distances), `march_hints` and
+// `has_hints` (reprojected start hints), see FGR_RENDER_ARGS.
+constexpr int kMarchStartsArgument = 6;
+constexpr int kMarchHintsArgument = 7;
+constexpr int kHasHintsArgument = 8;
+
+// The planes every mode writes: r, g, b (summed over samples) and depth (sample 0).
+constexpr int kCommonPlanes = 4;
+
+class ModeKernel {
+public:
+    virtual ~ModeKernel() = default;
+
+    // Planes the kernel writes after the common four, with these switches.
+    virtual int extra_planes(const KernelSwitches& switches) const = 0;
+
+    // Sets the kernel's arguments from kFirstModeArgument on, for this frame (and those of its
+    // resolve kernel, if it has one).
+    virtual void bind(cl::Kernel& kernel, const FrameRequest& request,
+                      const TileLayout& layout) = 0;
+
+    // A second kernel the renderer runs once after the samples, over the same tiles and with the
+    // same first arguments (FGR_RENDER_ARGS, `sample` being the samples done), for a mode whose
+    // colour needs the whole image (the brute-force mode's screen-space shading); null for modes
+    // that shade as they sample.
+    virtual cl::Kernel* resolve_kernel() { return nullptr; }
+
+    // Whether the colour planes hold a sum over the samples, which the renderer divides by their
+    // count, or the finished colour.
+    virtual bool sums_samples() const { return true; }
+
+    // Fills what the mode adds to a frame from the planes read back (plane p of pixel (x, y) at
+    // planes[p * layout.plane_size() + layout.index(x, y)]), `samples` samples summed in them.
+    virtual void read_back(std::span<const float> planes, const TileLayout& layout,
+                           const FrameRequest& request, int samples, Frame& frame) const = 0;
+};
+
+// Planes `first` .. first + count - 1 of each pixel in rows (count floats per pixel), times
+// `scale` (1 / samples for planes that sum them).
+std::vector<float> planes_in_rows(std::span<const float> planes, const TileLayout& layout,
+                                  int first, int count, int width, int height, float scale = 1.0f);
+
+// A read-only device buffer holding `values` (one unused float when empty).
+cl::Buffer upload_floats(const ComputeDevice& device, const std::vector<float>& values);
+
+// The scene's lights as fgr_shade.cl reads them: FGR_LIGHT_FLOATS floats each (type, vector with
+// directions normalised, colour, intensity).
+std::vector<float> scene_light_values(const Scene& scene);
+
+// The module for switches.mode, for a program built with `switches`.
+std::unique_ptr<ModeKernel> make_mode_kernel(const KernelSwitches& switches,
+                                             const ComputeDevice& device,
+                                             const cl::Program& program, const Scene& scene);
+
+}  // namespace fgr

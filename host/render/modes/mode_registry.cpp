@@ -1,0 +1,64 @@
+// Which host module serves which render mode.
+#include "render/modes/brute_mode.hpp"
+#include "render/modes/mode_kernel.hpp"
+#include "render/modes/path_mode.hpp"
+#include "render/modes/shaded_mode.hpp"
+
+#include <stdexcept>
+
+#include <glm/geometric.hpp>
+
+namespace fgr {
+
+cl::Buffer upload_floats(const ComputeDevice& device, const std::vector<float>& values) {
+    // A zero-sized buffer is invalid in OpenCL: an empty list uploads one unused float.
+    const std::vector<float> padded = values.empty() ? std::vector<float>{0.0f} : values;
+    return cl::Buffer(device.context, CL_MEM_READ_ONLY | CL_MEM_COPY_HOST_PTR,
+                      padded.size() * sizeof(float), const_cast<float*>(padded.data()));
+}
+
+std::vector<float> planes_in_rows(std::span<const float> planes, const TileLayout& layout,
+                                  int first, int count, int width, int height, float scale) {
+    const size_t plane = static_cast<size_t>(layout.plane_size());
+    std::vector<float> rows(static_cast<size_t>(width) * height * count);
+    const std::vector<int> columns = layout.column_offsets(width);
+    for (int y = 0; y < height; ++y) {
+        const int row = layout.row_offset(y);
+        for (int x = 0; x < width; ++x) {
+            const size_t source = static_cast<size_t>(row + columns[static_cast<size_t>(x)]);
+            const size_t pixel = static_cast<size_t>(y) * width + x;
+            for (int c = 0; c < count; ++c) {
+                rows[pixel * count + c] = planes[(first + c) * plane + source] * scale;
+            }
+        }
+    }
+    return rows;
+}
+
+std::vector<float> scene_light_values(const Scene& scene) {
+    constexpr size_t kLightFloats = 8;  // FGR_LIGHT_FLOATS in fgr_shade.cl
+    std::vector<float> values;
+    values.reserve(scene.lights.size() * kLightFloats);
+    for (const Light& light : scene.lights) {
+        const glm::vec3 vector =
+            light.type == LightType::Directional ? glm::normalize(light.vector) : light.vector;
+        values.insert(values.end(), {light.type == LightType::Point ? 1.0f : 0.0f, vector.x,
+                                     vector.y, vector.z, light.colour.r, light.colour.g,
+                                     light.colour.b, light.intensity});
+    }
+    return values;
+}
+
+std::unique_ptr<ModeKernel> make_mode_kernel(const KernelSwitches& switches,
+                                             const ComputeDevice& device,
+                                             const cl::Program& program, const Scene& scene) {
+    switch (switches.mode) {
+        case RenderMode::Shaded: return std::make_unique<ShadedMode>(device, scene, switches);
+        case RenderMode::Path: return std::make_unique<PathMode>(device, scene, switches);
+        case RenderMode::Brute:
+            return std::make_unique<BruteMode>(device, program, scene, switches);
+    }
+    throw std::invalid_argument("unknown render mode");
+}
+
+}  // namespace fgr

@@ -1,0 +1,205 @@
+#include "render/modes/path_mode.hpp"
+
+#include <algorithm>
+#include <cmath>
+
+#include <glm/geometric.hpp>
+#include <glm/trigonometric.hpp>
+
+namespace fgr {
+namespace {
+
+constexpr int kPathLightFloats = 10;  // FGR_PATH_LIGHT_FLOATS in fgr_mode_path.cl
+constexpr int kAuxiliaryPlanes = 7;   // albedo (3), normal (3), alpha
+constexpr int kStatsPlanes = 2;       // lane and packet DE evaluations
+constexpr int kForegroundPlanes = 3;  // with aovs: radiance of the samples that hit
+
+// Mirrors `path_settings` in kernels/fgr_mode_path.cl.
+struct PathSettingsArgument {
+    cl_int max_bounces;
+    cl_int roulette_depth;
+    cl_float radiance_clamp;
+    cl_int flags;
+    cl_uint seed;
+    cl_int light_count;
+    cl_float environment_pick;
+    cl_int padding;
+};
+static_assert(sizeof(PathSettingsArgument) == 32, "must match path_settings in fgr_mode_path.cl");
+
+enum PathFlags : cl_int {
+    kLightSampling = 1,
+    kMis = 2,
+    kEnvironmentImportance = 4,
+    kIndependentSamples = 8,
+};
+
+float luminance(glm::vec3 rgb) { return 0.2126f * rgb.r + 0.7152f * rgb.g + 0.0722f * rgb.b; }
+
+struct LightList {
+    std::vector<float> values;    // kPathLightFloats per light
+    float environment_pick = 1.0f;
+};
+
+// One light in the kernel's layout, with `weight` (its irradiance's luminance, roughly) for the
+// pick probabilities. Lights keep the shaded mode's meaning: a light of intensity I lights a
+// white diffuse surface facing it to radiance I, so its irradiance is pi I.
+struct PathLight {
+    bool point = false;
+    glm::vec3 vector{0.0f, 0.0f, 1.0f};
+    glm::vec3 radiance{0.0f};  // a disc's radiance, or a delta light's irradiance (times 1/d^2)
+    float cos_max = 1.0f;
+    float weight = 0.0f;
+};
+
+PathLight scene_light(const Light& light) {
+    constexpr float pi = 3.14159265358979f;
+    PathLight path;
+    const glm::vec3 irradiance = pi * light.intensity * light.colour;
+    path.point = light.type == LightType::Point;
+    path.vector = path.point ? light.vector : glm::normalize(light.vector);
+    if (!path.point && light.angular_radius > 0.0f) {
+        // A disc of radiance L and angular radius r gives irradiance pi L sin^2 r facing it.
+        const float sin_r = std::sin(light.angular_radius);
+        path.radiance = irradiance / (pi * sin_r * sin_r);
+        path.cos_max = std::cos(light.angular_radius);
+    } else {
+        path.radiance = irradiance;
+    }
+    // A point light's weight as seen from the scene's origin, where fractals sit.
+    const float falloff =
+        path.point ? 1.0f / std::max(glm::dot(light.vector, light.vector), 1e-6f) : 1.0f;
+    path.weight = luminance(irradiance) * falloff;
+    return path;
+}
+
+PathLight sun_light(const SunDisc& sun, float intensity) {
+    constexpr float pi = 3.14159265358979f;
+    PathLight path;
+    path.vector = glm::normalize(sun.direction);
+    path.radiance = sun.radiance * intensity;
+    path.cos_max = std::cos(sun.angular_radius_radians);
+    const float sin_r = std::sin(sun.angular_radius_radians);
+    path.weight = luminance(path.radiance) * pi * sin_r * sin_r;
+    return path;
+}
+
+LightList light_list(const Scene& scene, const PreparedEnvironment& environment,
+                     bool scene_lights) {
+    std::vector<PathLight> lights;
+    if (environment.sun) lights.push_back(sun_light(*environment.sun, environment.intensity));
+    if (scene_lights) {
+        // Under the sky its sun stands in for the scene's key light (its first directional one).
+        bool key_replaced = !environment.sun.has_value();
+        for (const Light& light : scene.lights) {
+            if (!key_replaced && light.type == LightType::Directional) {
+                key_replaced = true;
+                continue;
+            }
+            lights.push_back(scene_light(light));
+        }
+    }
+    // Pick probabilities follow each source's irradiance: a uniform environment of radiance L
+    // gives pi L to a surface facing it.
+    const float environment_weight = 3.14159265f * environment.mean_luminance;
+    float total = environment_weight;
+    for (const PathLight& light : lights) total += light.weight;
+    LightList list;
+    list.environment_pick = total > 0.0f ? environment_weight / total : 1.0f;
+    float cumulative = list.environment_pick;
+    for (size_t i = 0; i < lights.size(); ++i) {
+        const PathLight& light = lights[i];
+        cumulative += total > 0.0f ? light.weight / total : 0.0f;
+        // The last light closes the distribution at exactly 1, whatever rounding left.
+        const float pick_until = i + 1 == lights.size() ? 1.0f : cumulative;
+        list.values.insert(list.values.end(),
+                           {light.point ? 1.0f : 0.0f, light.vector.x, light.vector.y,
+                            light.vector.z, light.radiance.r, light.radiance.g, light.radiance.b,
+                            light.cos_max, pick_until, 0.0f});
+    }
+    return list;
+}
+
+}  // namespace
+
+PathMode::PathMode(const ComputeDevice& device, const Scene& scene, const KernelSwitches& switches)
+    : device_(device), scene_(scene), stats_(switches.stats), aovs_(switches.aovs) {}
+
+int PathMode::extra_planes(const KernelSwitches& switches) const {
+    return kAuxiliaryPlanes + (switches.stats ? kStatsPlanes : 0) +
+           (switches.aovs ? kForegroundPlanes : 0);
+}
+
+void PathMode::prepare(const PathSettings& settings) {
+    std::shared_ptr<const PreparedEnvironment> environment = settings.environment;
+    if (!environment) {
+        if (!default_environment_) {
+            default_environment_ = prepare_environment(EnvironmentChoice{}, scene_);
+        }
+        environment = default_environment_;
+    }
+    if (environment == bound_environment_ && settings.scene_lights == bound_scene_lights_) return;
+    environment_data_ = upload_floats(device_, environment->tables.data);
+    const LightList lights = light_list(scene_, *environment, settings.scene_lights);
+    lights_ = upload_floats(device_, lights.values);
+    light_count_ = static_cast<int>(lights.values.size() / kPathLightFloats);
+    environment_pick_ = lights.environment_pick;
+    bound_environment_ = environment;
+    bound_scene_lights_ = settings.scene_lights;
+}
+
+void PathMode::bind(cl::Kernel& kernel, const FrameRequest& request, const TileLayout&) {
+    const PathSettings& settings = request.path;
+    check_path_settings(settings);
+    prepare(settings);
+    PathSettingsArgument argument{};
+    argument.max_bounces = settings.max_bounces;
+    argument.roulette_depth = settings.roulette_depth > 0 ? settings.roulette_depth : kMaxBounces + 1;
+    argument.radiance_clamp = settings.radiance_clamp;
+    argument.flags = (settings.light_sampling ? kLightSampling : 0) | (settings.mis ? kMis : 0) |
+                     (settings.environment_importance ? kEnvironmentImportance : 0) |
+                     (settings.stratified ? 0 : kIndependentSamples);
+    argument.seed = settings.seed;
+    argument.light_count = light_count_;
+    argument.environment_pick = environment_pick_;
+    kernel.setArg(kFirstModeArgument, lights_);
+    kernel.setArg(kFirstModeArgument + 1, argument);
+    kernel.setArg(kFirstModeArgument + 2, environment_data_);
+    kernel.setArg(kFirstModeArgument + 3,
+                  environment_info(bound_environment_->tables,
+                                   bound_environment_->rotation_degrees,
+                                   bound_environment_->intensity));
+}
+
+void PathMode::read_back(std::span<const float> planes, const TileLayout& layout,
+                         const FrameRequest&, int samples, Frame& frame) const {
+    const int width = frame.image.width, height = frame.image.height;  // the region's
+    const float average = 1.0f / static_cast<float>(std::max(samples, 1));
+    frame.albedo = planes_in_rows(planes, layout, kCommonPlanes, 3, width, height, average);
+    frame.normal = planes_in_rows(planes, layout, kCommonPlanes + 3, 3, width, height, average);
+    frame.alpha = planes_in_rows(planes, layout, kCommonPlanes + 6, 1, width, height, average);
+    const int stats_plane = kCommonPlanes + kAuxiliaryPlanes;
+    if (aovs_) {
+        const int first = stats_plane + (stats_ ? kStatsPlanes : 0);
+        frame.foreground = planes_in_rows(planes, layout, first, 3, width, height, average);
+    }
+    const size_t plane = static_cast<size_t>(layout.plane_size());
+    if (!stats_) return;
+    // Sum the lanes' evaluations over every pixel; a packet's count is the same in all of its
+    // lanes, so it is taken once per tile (from its first lane).
+    LaneStats stats;
+    stats.packet_width = layout.packet_width;
+    const size_t lanes = plane * static_cast<size_t>(stats_plane);
+    const size_t packets = lanes + plane;
+    for (int y = 0; y < height; ++y) {
+        for (int x = 0; x < width; ++x) {
+            stats.lane_evaluations += planes[lanes + static_cast<size_t>(layout.index(x, y))];
+        }
+    }
+    for (size_t tile = 0; tile < plane; tile += static_cast<size_t>(layout.packet_width)) {
+        stats.packet_evaluations += planes[packets + tile];
+    }
+    frame.lane_stats = stats;
+}
+
+}  // namespace fgr

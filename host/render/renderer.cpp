@@ -1,0 +1,506 @@
+#include "render/renderer.hpp"
+
+#include <algorithm>
+#include <array>
+#include <atomic>
+#include <chrono>
+#include <cmath>
+#include <mutex>
+#include <set>
+#include <span>
+#include <stdexcept>
+#include <string>
+
+#include <fmt/format.h>
+#include <glm/geometric.hpp>
+#include <spdlog/spdlog.h>
+
+#include "camera/camera.hpp"
+#include "device/math_check.hpp"
+#include "scene/parameters.hpp"
+#include "camera/projection.hpp"
+#include "camera/view_validation.hpp"
+#include "render/modes/mode_kernel.hpp"
+#include "render/camera_frame.hpp"
+#include "util/parallel_bands.hpp"
+#include "render/prepass/cone_prepass.hpp"
+
+namespace fgr {
+namespace {
+
+void check_size(const FrameRequest& request) {
+    if (request.region.whole()) {
+        if (request.width < 1 || request.height < 1 || request.width > kMaxImageSide ||
+            request.height > kMaxImageSide) {
+            throw std::invalid_argument("image size must be between 1x1 and 16384x16384");
+        }
+        return;
+    }
+    if (request.width < 1 || request.height < 1 || request.width > kMaxTiledImageSide ||
+        request.height > kMaxTiledImageSide) {
+        throw std::invalid_argument(fmt::format(
+            "tiled image size must be between 1x1 and {0}x{0}", kMaxTiledImageSide));
+    }
+    const PixelRegion& r = request.region;
+    if (r.width < 1 || r.height < 1 || r.width > kMaxImageSide || r.height > kMaxImageSide ||
+        r.x < 0 || r.y < 0 || r.x > request.width - r.width || r.y > request.height - r.height) {
+        throw std::invalid_argument(fmt::format(
+            "region {}x{} at ({}, {}) is not inside the {}x{} image (or a side exceeds 16384)",
+            r.width, r.height, r.x, r.y, request.width, request.height));
+    }
+}
+
+void check_request(const Scene& scene, const FrameRequest& request) {
+    check_size(request);
+    if (request.samples < 1 || request.samples > kMaxSamples) {
+        throw std::invalid_argument("samples per pixel must be between 1 and 4096");
+    }
+    if (request.first_sample < 0 || request.first_sample > kMaxSamples) {
+        throw std::invalid_argument("first sample must be between 0 and 4096");
+    }
+    if (request.params.size() != default_param_values(scene).size()) {
+        throw std::invalid_argument("parameter buffer does not match the scene's parameters");
+    }
+    // A basis with NaN or Inf in it would give every ray NaN: an image of nothing, not of the view.
+    if (const std::string problem = computed_view_problem(request.view); !problem.empty()) {
+        throw std::invalid_argument("cannot render this view: " + problem);
+    }
+    check_projection(request.projection);
+}
+
+// 4096 steps over [0, 1] keep every 8-bit output code reachable.
+const std::array<uint8_t, 4097>& srgb_table() {
+    static const auto table = [] {
+        std::array<uint8_t, 4097> values{};
+        for (size_t i = 0; i < values.size(); ++i) {
+            const double linear = static_cast<double>(i) / 4096.0;
+            const double encoded = linear <= 0.0031308 ? 12.92 * linear
+                                                        : 1.055 * std::pow(linear, 1.0 / 2.4) - 0.055;
+            values[i] = static_cast<uint8_t>(std::lround(std::clamp(encoded, 0.0, 1.0) * 255.0));
+        }
+        return values;
+    }();
+    return table;
+}
+
+uint8_t encode_srgb_with(const std::array<uint8_t, 4097>& table, float linear) {
+    if (!(linear > 0.0f)) return 0;  // also NaN
+    if (linear >= 1.0f) return 255;
+    return table[static_cast<size_t>(linear * 4096.0f + 0.5f)];
+}
+
+// The tone curves of tone_map (NaN and values below 0 give 0).
+float clamp_curve(float linear) { return linear > 0.0f ? std::min(linear, 1.0f) : 0.0f; }
+float reinhard_curve(float linear) { return linear > 0.0f ? linear / (1.0f + linear) : 0.0f; }
+float aces_curve(float linear) {
+    if (!(linear > 0.0f)) return 0.0f;
+    return std::clamp(
+        linear * (2.51f * linear + 0.03f) / (linear * (2.43f * linear + 0.59f) + 0.14f), 0.0f,
+        1.0f);
+}
+
+// Values a band of a frame's host loops holds at least: under it a thread costs more than it saves.
+constexpr size_t kMinHostBand = 1 << 16;
+
+// display_image's bytes with the curve chosen once for the image (a call and a switch per value
+// cost more than the curve itself), in bands over the CPU's threads.
+template <typename Curve>
+void encode_display(const std::vector<float>& linear, float exposure, Curve curve,
+                    std::vector<uint8_t>& bytes) {
+    const std::array<uint8_t, 4097>& table = srgb_table();
+    in_parallel_bands(linear.size(), kMinHostBand, [&](size_t first, size_t last) {
+        for (size_t i = first; i < last; ++i) {
+            bytes[i] = encode_srgb_with(table, curve(linear[i] * exposure));
+        }
+    });
+}
+
+// The planes on the host while a frame is read back, unmapped when done. Mapped, not copied: on a
+// CPU device the buffer is host memory already, and copying it (into pages touched for the first
+// time) took as long as unpacking it.
+class MappedPlanes {
+public:
+    MappedPlanes(const cl::CommandQueue& queue, const cl::Buffer& buffer, size_t count)
+        : queue_(queue), buffer_(buffer), count_(count),
+          data_(static_cast<float*>(queue.enqueueMapBuffer(buffer, CL_TRUE, CL_MAP_READ, 0,
+                                                            count * sizeof(float)))) {}
+    MappedPlanes(const MappedPlanes&) = delete;
+    MappedPlanes& operator=(const MappedPlanes&) = delete;
+    ~MappedPlanes() {
+        // The buffer is released after this anyway: an unmap that fails changes nothing.
+        cl_int ignored = clEnqueueUnmapMemObject(queue_(), buffer_(), data_, 0, nullptr, nullptr);
+        static_cast<void>(ignored);
+    }
+    std::span<const float> values() const { return {data_, count_}; }
+
+private:
+    cl::CommandQueue queue_;
+    cl::Buffer buffer_;
+    size_t count_;
+    float* data_;
+};
+
+// A frame of `region`'s size: depth, linear colour and display image, zeroed.
+Frame sized_frame(const PixelRegion& region) {
+    Frame frame;
+    const size_t pixels = static_cast<size_t>(region.pixels());
+    frame.depth.resize(pixels);
+    frame.linear.resize(pixels * 3);
+    frame.image = Image8{region.width, region.height, std::vector<uint8_t>(pixels * 3)};
+    return frame;
+}
+
+// The colour planes (times `average`) and depth of each pixel of `region` into `frame` (sized by
+// sized_frame), in rows, and the hits.
+void unpack_common_planes(std::span<const float> planes, const TileLayout& layout,
+                          const PixelRegion& region, float average, Frame& frame) {
+    const size_t plane = static_cast<size_t>(layout.plane_size());
+    const std::vector<int> columns = layout.column_offsets(region.width);
+    const size_t width = static_cast<size_t>(region.width);
+    std::atomic<long> hits = 0;
+    in_parallel_bands(static_cast<size_t>(region.height), kMinHostBand / std::max<size_t>(width, 1),
+                      [&](size_t first_row, size_t last_row) {
+        long band_hits = 0;
+        for (size_t y = first_row; y < last_row; ++y) {
+            const size_t row = static_cast<size_t>(layout.row_offset(static_cast<int>(y)));
+            for (size_t x = 0; x < width; ++x) {
+                const size_t source = row + static_cast<size_t>(columns[x]);
+                const size_t pixel = y * width + x;
+                for (size_t c = 0; c < 3; ++c) {
+                    frame.linear[pixel * 3 + c] = planes[c * plane + source] * average;
+                }
+                frame.depth[pixel] = planes[3 * plane + source];
+                band_hits += frame.depth[pixel] >= 0.0f;
+            }
+        }
+        hits += band_hits;
+    });
+    frame.hits = hits;
+}
+
+// Work-items per work-group. Fixed rather than left to the driver so that the warm-up launch in
+// the constructor compiles exactly the work-group function later frames use (PoCL specialises
+// its code per local size), keeping JIT time out of render_ms.
+int work_group_size(const ComputeDevice& device) { return device.info.is_cpu ? 8 : 64; }
+
+// A cancellable frame runs in this many launches.
+constexpr int kCancelBands = 32;
+
+cl::NDRange global_range(int items, int group) {
+    return cl::NDRange(static_cast<size_t>((items + group - 1) / group) * group);
+}
+
+// Logs each distinct warning once per process: every renderer on a device meets the same
+// self-test verdict.
+void warn_once(const std::string& message) {
+    static std::mutex mutex;
+    static std::set<std::string> said;
+    std::lock_guard lock(mutex);
+    if (said.insert(message).second) spdlog::warn("{}", message);
+}
+
+// The probes evaluate the DE: an inside-only scene has none (std::logic_error, saying `to_do`).
+void require_distance_estimator(const Scene& scene, const char* to_do) {
+    if (scene.inside_only()) {
+        throw std::logic_error(fmt::format(
+            "scene '{}' has no distance estimator to {} (it defines only scene_inside)", scene.id,
+            to_do));
+    }
+}
+
+Frame cancelled_frame() {
+    Frame cancelled;
+    cancelled.cancelled = true;
+    return cancelled;
+}
+
+double elapsed_ms(std::chrono::steady_clock::time_point since) {
+    return std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - since)
+        .count();
+}
+
+}  // namespace
+
+void check_mode_supported(const Scene& scene, RenderMode mode) {
+    if (mode == RenderMode::Brute && scene.ifs) {
+        throw std::invalid_argument(fmt::format(
+            "the IFS scene '{}' cannot render in the brute mode: it is ray traced exactly and has "
+            "neither an inside test nor a distance estimator (use --mode shaded or path)",
+            scene.id));
+    }
+    if (mode != RenderMode::Brute && scene.inside_only()) {
+        throw std::invalid_argument(fmt::format(
+            "scene '{}' has no distance estimator (its source defines only scene_inside): it "
+            "renders only with --mode brute, not {}",
+            scene.id, render_mode_name(mode)));
+    }
+}
+
+Image16 linear_image16(const Frame& frame, float exposure) {
+    Image16 image{frame.image.width, frame.image.height, {}};
+    image.rgb.reserve(frame.linear.size());
+    for (float value : frame.linear) {
+        const float scaled = value * exposure;
+        const float clamped = scaled > 0.0f ? std::min(scaled, 1.0f) : 0.0f;  // NaN to 0
+        image.rgb.push_back(static_cast<uint16_t>(std::lround(clamped * 65535.0f)));
+    }
+    return image;
+}
+
+float tone_map(float linear, ToneMap op) {
+    switch (op) {
+        case ToneMap::Clamp: return clamp_curve(linear);
+        case ToneMap::Reinhard: return reinhard_curve(linear);
+        case ToneMap::Aces: return aces_curve(linear);
+    }
+    return 0.0f;
+}
+
+Image8 display_image(const Scene& scene, const std::vector<float>& params,
+                     const std::vector<float>& linear, int width, int height, float scale) {
+    Image8 image{width, height, std::vector<uint8_t>(linear.size())};
+    fill_display_image(scene, params, linear, image, scale);
+    return image;
+}
+
+void fill_display_image(const Scene& scene, const std::vector<float>& params,
+                        const std::vector<float>& linear, Image8& image, float scale) {
+    if (image.rgb.size() != linear.size()) {
+        throw std::logic_error("fill_display_image: the image is not the size of the colour");
+    }
+    const float exposure = param_value(scene, params, "exposure") * scale;
+    switch (static_cast<ToneMap>(param_value(scene, params, "tone_map"))) {
+        case ToneMap::Clamp: encode_display(linear, exposure, clamp_curve, image.rgb); break;
+        case ToneMap::Reinhard: encode_display(linear, exposure, reinhard_curve, image.rgb); break;
+        case ToneMap::Aces: encode_display(linear, exposure, aces_curve, image.rgb); break;
+    }
+}
+
+uint8_t encode_srgb(float linear) { return encode_srgb_with(srgb_table(), linear); }
+
+std::vector<int> TileLayout::column_offsets(int width) const {
+    std::vector<int> offsets(static_cast<size_t>(std::max(width, 0)));
+    for (int x = 0; x < width; ++x) offsets[static_cast<size_t>(x)] = column_offset(x);
+    return offsets;
+}
+
+PixelRegion rendered_region(const FrameRequest& request) {
+    if (!request.region.whole()) return request.region;
+    return {0, 0, request.width, request.height};
+}
+
+TileLayout tile_layout(int packet_width, int width, int height) {
+    const int tile_w = packet_width == 1 ? 1 : packet_width == 4 ? 2 : 4;
+    const int tile_h = packet_width / tile_w;
+    return {packet_width, tile_w, tile_h, (width + tile_w - 1) / tile_w,
+            (height + tile_h - 1) / tile_h};
+}
+
+Renderer::Renderer(const ComputeDevice& device, ProgramCache& cache, const Scene& scene,
+                   const KernelSwitches& switches)
+    : device_(device), scene_(scene), switches_(switches) {
+    check_mode_supported(scene, switches.mode);
+    switches_.packet_width = trusted_packet_width(device, cache, switches.double_precision,
+                                                  switches.packet_width, warn_once);
+    program_ = cache.build(device, assemble_program(scene, switches_), &build_report_);
+    render_kernel_ = cl::Kernel(program_, "fgr_render");
+    probe_kernel_ = cl::Kernel(program_, "fgr_probe_de");
+    normal_kernel_ = cl::Kernel(program_, "fgr_probe_normal");
+    mode_ = make_mode_kernel(switches_, device, program_, scene);
+    prepass_ = std::make_unique<ConePrepass>(device, program_, scene, switches_);
+    warm_up();
+}
+
+Renderer::~Renderer() = default;
+Renderer::Renderer(Renderer&&) noexcept = default;
+
+void Renderer::warm_up() {
+    FrameRequest tiny;
+    tiny.width = 1;
+    tiny.height = 1;
+    tiny.view = scene_.cameras.front().view;
+    tiny.params = default_param_values(scene_);
+    const auto start = std::chrono::steady_clock::now();
+    render(tiny);
+    if (!scene_.inside_only()) {  // an inside-only scene has no DE to probe
+        const glm::vec3 origin(0.0f);
+        probe_de(std::span(&origin, 1), tiny.params);
+        probe_normals(std::span(&origin, 1), tiny.params, 1e-3f);
+    }
+    build_report_.build_ms += elapsed_ms(start);
+}
+
+cl::Buffer Renderer::upload(const std::vector<float>& values) {
+    return cl::Buffer(device_.context, CL_MEM_READ_ONLY | CL_MEM_COPY_HOST_PTR,
+                      values.size() * sizeof(float), const_cast<float*>(values.data()));
+}
+
+bool Renderer::launch_tiles(cl::Kernel& kernel, int tiles, int group,
+                            const std::function<bool()>& cancel) {
+    if (!cancel) {
+        device_.queue.enqueueNDRangeKernel(kernel, cl::NullRange, global_range(tiles, group),
+                                           cl::NDRange(group));
+        return true;
+    }
+    // Bands of whole work-groups, offset through the global work offset (get_global_id includes
+    // it), so cancelling costs at most one band.
+    const int groups = (tiles + group - 1) / group;
+    const int band = std::max(1, (groups + kCancelBands - 1) / kCancelBands) * group;
+    for (int first = 0; first < tiles; first += band) {
+        if (cancel()) return false;
+        device_.queue.enqueueNDRangeKernel(kernel, cl::NDRange(first),
+                                           global_range(std::min(band, tiles - first), group),
+                                           cl::NDRange(group));
+        device_.queue.finish();
+    }
+    return !cancel();
+}
+
+Frame Renderer::render(const FrameRequest& request) {
+    check_request(scene_, request);
+    const PixelRegion region = rendered_region(request);
+    const TileLayout layout = tile_layout(switches_.packet_width, region.width, region.height);
+    const int plane = layout.plane_size();
+    const auto start = std::chrono::steady_clock::now();
+
+    cl::Buffer params = upload(request.params);
+    const int plane_count = kCommonPlanes + mode_->extra_planes(switches_);
+    cl::Buffer planes(device_.context, CL_MEM_READ_WRITE, sizeof(float) * plane_count * plane);
+    const int tiles = layout.tiles_x * layout.tiles_y;
+    const CameraFrame camera = camera_frame(request.view, request.projection, request.width,
+                                            request.height, region);
+    const int group = work_group_size(device_);
+    const cl::Buffer starts = prepass_->starts(request, camera, params, group);
+    int has_hints = 0;
+    const cl::Buffer hints = prepass_->hints(request, layout, &has_hints);
+    cl::Kernel* resolve = mode_->resolve_kernel();
+    for (cl::Kernel* kernel : {&render_kernel_, resolve}) {
+        if (kernel == nullptr) continue;
+        kernel->setArg(0, planes);
+        kernel->setArg(1, plane);
+        kernel->setArg(2, tiles);
+        kernel->setArg(3, camera);
+        kernel->setArg(5, params);
+        kernel->setArg(kMarchStartsArgument, starts);
+        kernel->setArg(kMarchHintsArgument, hints);
+        kernel->setArg(kHasHintsArgument, has_hints);
+    }
+    mode_->bind(render_kernel_, request, layout);
+    // Samples accumulate in the planes, one launch each, in order (in-order queue). Sample 0
+    // overwrites them; a request starting later starts from zeroed planes instead.
+    if (request.first_sample > 0) {
+        device_.queue.enqueueFillBuffer(planes, 0.0f, 0, sizeof(float) * 3 * plane);
+        device_.queue.enqueueFillBuffer(planes, -1.0f, sizeof(float) * 3 * plane,
+                                        sizeof(float) * plane);
+        if (plane_count > kCommonPlanes) {
+            device_.queue.enqueueFillBuffer(planes, 0.0f, sizeof(float) * kCommonPlanes * plane,
+                                            sizeof(float) * (plane_count - kCommonPlanes) * plane);
+        }
+    }
+    int done = 0;
+    while (done < request.samples) {
+        render_kernel_.setArg(4, request.first_sample + done);
+        if (!launch_tiles(render_kernel_, tiles, group, request.cancel)) return cancelled_frame();
+        ++done;
+        if (request.on_sample || request.enough) {
+            device_.queue.finish();  // report each sample as it completes
+            if (request.on_sample) request.on_sample(done, request.samples);
+            if (request.enough && done < request.samples && request.enough()) break;
+        }
+    }
+    if (resolve != nullptr) {
+        resolve->setArg(4, request.first_sample + done);
+        if (!launch_tiles(*resolve, tiles, group, request.cancel)) return cancelled_frame();
+    }
+    // The frame's host memory is claimed while the device renders: zeroing fresh pages (a page
+    // fault each on first touch) took 3 ms of a 640x480 frame when it followed the render.
+    device_.queue.flush();
+    Frame frame = sized_frame(region);
+    const MappedPlanes host(device_.queue, planes, static_cast<size_t>(plane) * plane_count);
+    frame.double_precision = switches_.double_precision;
+    frame.samples = done;
+    unpack_common_planes(host.values(), layout, region,
+                         mode_->sums_samples() ? 1.0f / static_cast<float>(done) : 1.0f, frame);
+    fill_display_image(scene_, request.params, frame.linear, frame.image);
+    mode_->read_back(host.values(), layout, request, done, frame);
+    if (frame.stats) {
+        frame.stats->prepass_de_evaluations = prepass_->evaluations(starts, camera);
+        frame.stats->de_evaluations += frame.stats->prepass_de_evaluations;
+    }
+    frame.render_ms = elapsed_ms(start);
+    return frame;
+}
+
+cl::Buffer Renderer::upload_points(std::span<const glm::dvec3> points, int* packets, int* plane) {
+    const int width = switches_.packet_width;
+    *packets = static_cast<int>((points.size() + width - 1) / width);
+    *plane = *packets * width;
+    std::vector<float> coordinates(static_cast<size_t>(*plane) * 6, 0.0f);
+    for (size_t i = 0; i < points.size(); ++i) {
+        for (int c = 0; c < 3; ++c) {
+            const auto hi = static_cast<float>(points[i][c]);
+            coordinates[c * *plane + i] = hi;
+            coordinates[(c + 3) * *plane + i] = static_cast<float>(points[i][c] - double(hi));
+        }
+    }
+    return upload(coordinates);
+}
+
+std::vector<float> Renderer::run_probe(cl::Kernel& kernel, std::span<const glm::dvec3> points,
+                                       const std::vector<float>& params, int outputs,
+                                       const std::function<void(cl::Kernel&)>& set_extra_args,
+                                       int* plane) {
+    int packets = 0;
+    cl::Buffer input = upload_points(points, &packets, plane);
+    cl::Buffer params_buffer = upload(params);
+    const size_t output_floats = static_cast<size_t>(*plane) * outputs;
+    cl::Buffer output(device_.context, CL_MEM_WRITE_ONLY, sizeof(float) * output_floats);
+    kernel.setArg(0, input);
+    kernel.setArg(1, *plane);
+    kernel.setArg(2, packets);
+    kernel.setArg(3, output);
+    kernel.setArg(4, params_buffer);
+    set_extra_args(kernel);  // the kernel's own arguments, from index 5
+    const int group = work_group_size(device_);
+    device_.queue.enqueueNDRangeKernel(kernel, cl::NullRange, global_range(packets, group),
+                                       cl::NDRange(group));
+    std::vector<float> planes(output_floats);
+    device_.queue.enqueueReadBuffer(output, CL_TRUE, 0, sizeof(float) * planes.size(),
+                                    planes.data());
+    return planes;
+}
+
+std::vector<float> Renderer::probe_de(std::span<const glm::vec3> points,
+                                      const std::vector<float>& params) {
+    const std::vector<glm::dvec3> wide(points.begin(), points.end());
+    return probe_de(std::span<const glm::dvec3>(wide), params);
+}
+
+std::vector<float> Renderer::probe_de(std::span<const glm::dvec3> points,
+                                      const std::vector<float>& params) {
+    require_distance_estimator(scene_, "probe");
+    if (points.empty()) return {};
+    int plane = 0;
+    std::vector<float> distances =
+        run_probe(probe_kernel_, points, params, 1, [](cl::Kernel&) {}, &plane);
+    distances.resize(points.size());
+    return distances;
+}
+
+std::vector<glm::vec3> Renderer::probe_normals(std::span<const glm::vec3> points,
+                                               const std::vector<float>& params, float eps) {
+    require_distance_estimator(scene_, "take normals from");
+    if (points.empty()) return {};
+    int plane = 0;
+    const std::vector<glm::dvec3> wide(points.begin(), points.end());
+    const std::vector<float> planes = run_probe(
+        normal_kernel_, wide, params, 3, [eps](cl::Kernel& kernel) { kernel.setArg(5, eps); },
+        &plane);
+    std::vector<glm::vec3> normals(points.size());
+    for (size_t i = 0; i < points.size(); ++i) {
+        normals[i] = {planes[i], planes[plane + i], planes[2 * static_cast<size_t>(plane) + i]};
+    }
+    return normals;
+}
+
+}  // namespace fgr

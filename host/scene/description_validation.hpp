@@ -1,0 +1,47 @@
+#pragma once
+// Validating a plugin's scene description (fgr_scene_desc) and copying it into a host-owned Scene:
+// the ABI version and struct sizes, ids and names, string lengths, parameter ranges and types,
+// cameras and camera paths, lights, effects and march settings. The first problem found is the
+// reason given.
+
+#include <optional>
+#include <span>
+#include <string>
+#include <vector>
+#include <string_view>
+
+#include "fgr/plugin.h"
+#include "scene/scene.hpp"
+
+namespace fgr {
+
+// Either a scene or the reason there is none (one line, no file name: callers add that).
+struct LoadResult {
+    std::optional<Scene> scene;
+    std::string error;
+    // On a refusal, the scene id the description declared if it got as far as a valid one (""
+    // otherwise): `fgr render ID` can then say why scene ID is missing.
+    std::string declared_id = {};
+};
+
+// Validates `desc` field by field (reading only fields its struct_size covers) and copies it into
+// a host-owned Scene, built-in quality parameters included. Never dereferences a pointer it has
+// not checked for NULL.
+LoadResult copy_scene_description(const fgr_scene_desc* desc);
+
+// Parameters described as a plugin describes them (fgr_param_desc, e.g. scene_helpers.h's
+// FGR_COLOUR_PARAMS), checked and copied as a plugin's are: for scenes the host writes itself
+// (formula files), so that their colour parameters are a plugin's. Throws std::invalid_argument
+// (one line) for a description a plugin would be refused.
+std::vector<ParamInfo> copy_param_descriptions(std::span<const fgr_param_desc> descriptions);
+
+// The naming rules every scene follows, whatever it came from (a plugin or an IFS file):
+// scene ids match [a-z][a-z0-9_-]*, camera and camera path names [a-z0-9_-]+, both at most 63
+// characters.
+bool is_scene_id(std::string_view id);
+bool is_camera_name(std::string_view name);
+
+// `text` as it may appear in a one-line refusal: bytes outside printable ASCII become \xNN.
+std::string printable(std::string_view text);
+
+}  // namespace fgr

@@ -1,0 +1,52 @@
+#pragma once
+// Finding scenes (plugins and IFS files): the search path and the scan of its directories.
+
+#include <filesystem>
+#include <string>
+#include <string_view>
+#include <vector>
+
+#include "scene/scene.hpp"
+
+namespace fgr {
+
+// In order: each directory of $FGR_PLUGIN_PATH (colon-separated, empty entries ignored),
+// <exe_dir>/../lib/fgr/plugins (the libdir fgr was built for: built and installed trees match),
+// and ~/.local/share/fgr/plugins (when $HOME is set).
+std::vector<std::filesystem::path> plugin_search_path(const std::filesystem::path& exe_dir);
+
+// Directory holding the running executable (/proc/self/exe).
+std::filesystem::path executable_dir();
+
+struct SkippedPlugin {
+    std::filesystem::path file;
+    std::string reason;
+    std::string declared_id = {};  // the scene id its description declared, if it got that far
+};
+
+struct Discovery {
+    std::vector<Scene> scenes;  // in discovery order; the first of duplicate ids wins
+    std::vector<SkippedPlugin> skipped;
+};
+
+// Loads every *.so plugin and *.ifs.json IFS file (scene/ifs/ifs.hpp) in each directory, sorted together
+// by name within a directory; missing directories are ignored. Each skipped file gets one warning
+// log line naming the file and the reason.
+Discovery discover_scenes(const std::vector<std::filesystem::path>& directories);
+
+// Scene `id` alone, as discover_scenes(directories) would find it (the first file in search
+// order that holds it), without loading the other scenes' files that the scene index in
+// `index_file` (scene/scene_index.hpp) knows to hold other ids; the index is brought up to date
+// with what was loaded. When no file holds `id`, it is discover_scenes(directories) in full, for
+// unknown_scene_message. An empty `index_file` means no index: files are loaded in order up to
+// the scene's.
+Discovery discover_scene(const std::vector<std::filesystem::path>& directories,
+                         const std::string& id, const std::filesystem::path& index_file);
+
+// The one-line error for a scene id that `found` lacks. When a refused file is that scene (its
+// description declared the id, or, refused before the id could be read, its file name is the id,
+// e.g. liboops.so or oops.ifs.json for 'oops'), the message names the file and why it was refused;
+// otherwise it lists the scenes there are and the files that were refused.
+std::string unknown_scene_message(const Discovery& found, std::string_view id);
+
+}  // namespace fgr

@@ -1,0 +1,93 @@
+#pragma once
+// What fgr's JSON scene files (IFS scenes `NAME.ifs.json`, formula scenes `NAME.formula.json`)
+// read the same way: the file itself (bounded in size), the header (format, version, id, name,
+// description), names and texts, cameras, camera paths and lights, and the defaults a file may
+// leave out. Each reader throws std::runtime_error with a one-line reason; the caller puts the
+// file's name in front. The numbers a plugin may have (description_validation.cpp) bound them.
+
+#include <cstddef>
+#include <filesystem>
+#include <string>
+#include <vector>
+
+#include <nlohmann/json.hpp>
+
+#include "scene/scene.hpp"
+
+namespace fgr::scene_json {
+
+// The Scene of a scene file's data (an IfsScene, a FormulaScene): its id, name and description,
+// cameras, camera paths and lights, the OpenCL source written from it and the file. The source's
+// name is the id and `suffix` (".ifs.cl"), not the file's path: `fgr view --dev` watches a
+// scene's source_name as OpenCL source.
+template <typename FileData>
+Scene scene_of_file(const FileData& data, std::string source, const char* suffix,
+                    const std::filesystem::path& file) {
+    Scene scene;
+    scene.id = data.id;
+    scene.name = data.name;
+    scene.description = data.description;
+    scene.source = std::move(source);
+    scene.source_name = data.id + suffix;
+    scene.plugin_file = file;
+    scene.cameras = data.cameras;
+    scene.camera_paths = data.camera_paths;
+    scene.lights = data.lights;
+    return scene;
+}
+
+// The limits plugins have (description_validation.cpp).
+inline constexpr std::size_t kMaxTextLength = 4096;
+inline constexpr std::size_t kMaxCameras = 256;
+inline constexpr std::size_t kMaxCameraPaths = 256;
+inline constexpr std::size_t kMinKeyframes = 2;
+inline constexpr std::size_t kMaxKeyframes = 10000;
+inline constexpr std::size_t kMaxLights = 16;
+inline constexpr double kMaxAngularRadiusDegrees = 45.0;
+
+// The file's bytes, refused (std::runtime_error "<file>: ...") past max_bytes without reading
+// more than one byte beyond; read in 64 KiB chunks, so a small file costs a small buffer.
+std::string read_bounded(const std::filesystem::path& file, std::size_t max_bytes,
+                         const std::string& kind);
+
+// The document `text` parses to: a JSON object, else "not valid JSON: <where and why>".
+nlohmann::json parse_object(const std::string& text);
+
+// "format" must be `format` and "version" the integer `version`.
+void check_format(const nlohmann::json& document, const char* format, int version);
+
+// Names and descriptions: at most kMaxTextLength bytes, no control characters (they would break
+// `fgr list` and the one-line messages that quote them). Empty when absent and not required.
+std::string text_from(const nlohmann::json& object, const char* key, const std::string& where,
+                      bool required);
+
+// object[key]: an array of min_size to max_size entries.
+const nlohmann::json& array_from(const nlohmann::json& object, const char* key,
+                                 std::size_t min_size, std::size_t max_size,
+                                 const std::string& what);
+
+void require_object(const nlohmann::json& value, const std::string& where);
+
+// A scene's "id" (required, [a-z][a-z0-9_-]*), "name" (required, not empty) and "description".
+struct Header {
+    std::string id;
+    std::string name;
+    std::string description;
+};
+Header header_from(const nlohmann::json& document);
+
+// A camera's or path's "name": [a-z0-9_-]+.
+std::string camera_name_from(const nlohmann::json& object, const std::string& where);
+
+// The document's "cameras", "camera_paths" and "lights" (each optional: empty when absent).
+std::vector<NamedCamera> cameras_from(const nlohmann::json& document);
+std::vector<CameraPath> camera_paths_from(const nlohmann::json& document);
+std::vector<Light> lights_from(const nlohmann::json& document);
+
+// A turn around the vertical through the camera's target, at its distance and height: five
+// keyframes 90 degrees apart, two seconds each (the last back where it started).
+CameraPath default_orbit(const NamedCamera& camera);
+// The DE scenes' usual warm key light (sdk/template/scene.c).
+Light default_light();
+
+}  // namespace fgr::scene_json

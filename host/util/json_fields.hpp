@@ -1,0 +1,55 @@
+#pragma once
+// Reading fgr's JSON files (camera path files, IFS and formula scene files): the checks their
+// fields share, so a number or a version is read and refused the same way in every file. Each throws
+// std::runtime_error with a one-line reason that starts with `what` or `where` (callers add the
+// file's name in front).
+
+#include <cstdint>
+#include <stdexcept>
+#include <initializer_list>
+#include <string>
+#include <string_view>
+#include <utility>
+#include <vector>
+
+#include <fmt/format.h>
+#include <glm/vec3.hpp>
+#include <nlohmann/json.hpp>
+
+namespace fgr::json_fields {
+
+// Stops reading with a one-line reason (std::runtime_error): every reader here, and the files'
+// own checks, fail this way.
+[[noreturn]] inline void fail(const std::string& reason) { throw std::runtime_error(reason); }
+
+template <typename... Args>
+[[noreturn]] void fail(fmt::format_string<Args...> format, Args&&... args) {
+    fail(fmt::format(format, std::forward<Args>(args)...));
+}
+
+// A number, finite and at most `limit` in magnitude.
+double finite_double(const nlohmann::json& value, const std::string& what, double limit = 1e30);
+
+// object[key], required: an array of three numbers as finite_double reads them.
+glm::dvec3 dvec3_from(const nlohmann::json& object, const char* key, const std::string& where,
+                      double limit = 1e30);
+
+// Whether `value` is an integer in [low, high], compared as the integer JSON holds, never converted
+// first (4294967297 is not 1, and 1.0 or "1" are not integers). Sets `out` when it is.
+bool integer_in(const nlohmann::json& value, std::int64_t low, std::int64_t high,
+                std::int64_t& out);
+
+// "version" must be the integer `version`.
+void check_version(const nlohmann::json& document, int version);
+
+// What dvec3_from reads, written: three numbers (a double round-trips exactly).
+nlohmann::json vec3_json(glm::dvec3 v);
+// Refuses any key of `object` not in `known`: a misspelt key must not pass silently.
+void check_keys(const nlohmann::json& object, std::initializer_list<std::string_view> known,
+                const std::string& where);
+
+// A JSON value as it may appear in a one-line message: dumped with non-ASCII escaped, shortened to
+// about 40 characters.
+std::string shown(const nlohmann::json& value);
+
+}  // namespace fgr::json_fields
