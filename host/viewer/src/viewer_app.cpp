@@ -2,19 +2,19 @@
 // screenshots and the hand-over of view states to the render thread (render_worker.cpp).
 #include "viewer_app.hpp"
 
+#include <fmt/format.h>
+#include <spdlog/spdlog.h>
+
 #include <algorithm>
 #include <cmath>
 #include <ctime>
 
-#include <fmt/format.h>
-#include <spdlog/spdlog.h>
-
 #include "fgr/camera.hpp"
 #include "fgr/discovery.hpp"
-#include "fgr/scene_source.hpp"
 #include "fgr/kernel_assembly.hpp"
 #include "fgr/parameters.hpp"
 #include "fgr/precision.hpp"
+#include "fgr/scene_source.hpp"
 
 namespace fgr::viewer {
 namespace {
@@ -31,14 +31,6 @@ constexpr float kLookRadiansPerPixel = 0.0035f;
 constexpr float kShiftSpeedUp = 4.0f;
 constexpr float kWheelSpeedStep = 1.25f;
 constexpr size_t kMessagesKept = 6;
-
-SceneSession default_session(const Scene& scene) {
-    SceneSession session;
-    session.camera = FlyCamera::from_view(scene.cameras.front().view);
-    session.params = default_param_values(scene);
-    session.effects = scene.effects;
-    return session;
-}
 
 // Whether `next` renders the image `last` did. Every field counts but the two that this answer
 // decides: the generation it gets and whether it is interactive.
@@ -57,8 +49,9 @@ std::string timestamp() {
     return text;
 }
 
-
-SDL_Scancode scancode_named(const std::string& name) { return SDL_GetScancodeFromName(name.c_str()); }
+SDL_Scancode scancode_named(const std::string& name) {
+    return SDL_GetScancodeFromName(name.c_str());
+}
 
 // Replay scripts are checked before the window opens, so a typo fails fast.
 void check_replay_keys(const std::vector<ReplayEvent>& events, const std::string& file) {
@@ -67,14 +60,16 @@ void check_replay_keys(const std::vector<ReplayEvent>& events, const std::string
                             event.action == ReplayAction::KeyUp ||
                             event.action == ReplayAction::KeyPress;
         if (is_key && scancode_named(event.key) == SDL_SCANCODE_UNKNOWN) {
-            throw UsageError(fmt::format("{}:{}: unknown key '{}' (SDL key names: W, F12, "
-                                         "PageDown, Left_Shift...)",
-                                         file, event.line, event.key));
+            throw UsageError(
+                fmt::format("{}:{}: unknown key '{}' (SDL key names: W, F12, "
+                            "PageDown, Left_Shift...)",
+                            file, event.line, event.key));
         }
         if (event.action == ReplayAction::HybridAdd && find_formula(event.text) == nullptr) {
-            throw UsageError(fmt::format("{}:{}: unknown formula '{}' (`fgr list --formulas` "
-                                         "names them)",
-                                         file, event.line, event.text));
+            throw UsageError(
+                fmt::format("{}:{}: unknown formula '{}' (`fgr list --formulas` "
+                            "names them)",
+                            file, event.line, event.text));
         }
     }
 }
@@ -82,8 +77,7 @@ void check_replay_keys(const std::vector<ReplayEvent>& events, const std::string
 }  // namespace
 
 ViewerApp::ViewerApp(const ViewerOptions& options, std::vector<Scene> scenes)
-    : options_(options) {
-    for (Scene& scene : scenes) scenes_.push_back(std::make_shared<const Scene>(std::move(scene)));
+    : options_(options), scenes_(std::move(scenes)) {
     quality_.target_ms = options.target_ms;
     quality_.sample_cap = options.sample_cap;
     precision_ = options.precision;
@@ -112,41 +106,33 @@ ViewerApp::ViewerApp(const ViewerOptions& options, std::vector<Scene> scenes)
 
 void ViewerApp::prepare_first_scene() {
     // Without a choice, the Mandelbulb (fgr's default scene) if it is installed.
-    const std::string wanted = options_.scene.empty() ? "mandelbulb" : options_.scene;
-    const auto default_scene = std::find_if(scenes_.begin(), scenes_.end(),
-                                            [&](const auto& s) { return s->id == wanted; });
-    if (options_.scene.empty() && default_scene != scenes_.end()) {
-        scene_index_ = static_cast<int>(default_scene - scenes_.begin());
+    std::optional<size_t> index =
+        scenes_.find(options_.scene.empty() ? "mandelbulb" : options_.scene);
+    if (!index && !options_.scene.empty()) {
+        std::string ids;
+        for (size_t i = 0; i < scenes_.size(); ++i)
+            ids += (ids.empty() ? "" : ", ") + scenes_.at(i)->id;
+        throw UsageError(fmt::format("unknown scene '{}' (available: {})", options_.scene, ids));
     }
-    if (!options_.scene.empty()) {
-        const auto found = std::find_if(scenes_.begin(), scenes_.end(),
-                                        [&](const auto& s) { return s->id == options_.scene; });
-        if (found == scenes_.end()) {
-            std::string ids;
-            for (const auto& s : scenes_) ids += (ids.empty() ? "" : ", ") + s->id;
-            throw UsageError(
-                fmt::format("unknown scene '{}' (available: {})", options_.scene, ids));
-        }
-        scene_index_ = static_cast<int>(found - scenes_.begin());
-    }
-    SceneSession first = default_session(scene());
+    const Scene& scene = *scenes_.at(index.value_or(0));
+    SceneSession first = default_session(scene);
     if (options_.start_view) {
         try {
             first.camera = FlyCamera::from_view(
-                apply_view_override(scene().cameras.front().view, *options_.start_view));
+                apply_view_override(scene.cameras.front().view, *options_.start_view));
         } catch (const std::invalid_argument& error) {
             throw UsageError(error.what());
         }
     }
     for (const std::string& assignment : options_.assignments) {
-        set_param_from_text(scene(), first.params, assignment);
+        set_param_from_text(scene, first.params, assignment);
     }
     try {
         first.effects = apply_effect_changes(first.effects, options_.effect_changes);
     } catch (const std::invalid_argument& error) {
         throw UsageError(error.what());
     }
-    sessions_[scene_index_] = std::move(first);
+    scenes_.select(static_cast<int>(index.value_or(0)), std::move(first));
     if (!options_.path_name.empty()) select_path(options_.path_name);
 }
 
@@ -174,7 +160,8 @@ void ViewerApp::open_window() {
     if (!window_) throw std::runtime_error(fmt::format("cannot open a window: {}", SDL_GetError()));
     gl_context_.reset(SDL_GL_CreateContext(window_.get()));
     if (!gl_context_) {
-        throw std::runtime_error(fmt::format("cannot create an OpenGL context: {}", SDL_GetError()));
+        throw std::runtime_error(
+            fmt::format("cannot create an OpenGL context: {}", SDL_GetError()));
     }
     SDL_GL_SetSwapInterval(1);
     imgui_ = std::make_unique<ImGuiSession>(window_.get(), gl_context_.get());
@@ -254,22 +241,29 @@ bool ViewerApp::over_ui(int x, int y) const {
 
 void ViewerApp::handle_event(const SDL_Event& event) {
     switch (event.type) {
-        case SDL_QUIT: quit_ = true; break;
+        case SDL_QUIT:
+            quit_ = true;
+            break;
         case SDL_KEYDOWN:
             if (ImGui::GetIO().WantTextInput) break;  // typing a value into the panel
             held_keys_.insert(event.key.keysym.scancode);
             handle_key_down(event.key.keysym.scancode, event.key.repeat != 0);
             break;
-        case SDL_KEYUP: held_keys_.erase(event.key.keysym.scancode); break;
-        case SDL_MOUSEBUTTONDOWN: handle_mouse_button(event.button, true); break;
-        case SDL_MOUSEBUTTONUP: handle_mouse_button(event.button, false); break;
+        case SDL_KEYUP:
+            held_keys_.erase(event.key.keysym.scancode);
+            break;
+        case SDL_MOUSEBUTTONDOWN:
+            handle_mouse_button(event.button, true);
+            break;
+        case SDL_MOUSEBUTTONUP:
+            handle_mouse_button(event.button, false);
+            break;
         case SDL_MOUSEMOTION:
             if (looking_) {
                 const float fov_scale = session().camera.fov_degrees / 60.0f;
-                session().camera.turn(static_cast<float>(event.motion.xrel) *
-                                          kLookRadiansPerPixel * fov_scale,
-                                      -static_cast<float>(event.motion.yrel) *
-                                          kLookRadiansPerPixel * fov_scale);
+                session().camera.turn(
+                    static_cast<float>(event.motion.xrel) * kLookRadiansPerPixel * fov_scale,
+                    -static_cast<float>(event.motion.yrel) * kLookRadiansPerPixel * fov_scale);
                 playing_ = false;
             }
             break;
@@ -278,11 +272,12 @@ void ViewerApp::handle_event(const SDL_Event& event) {
             SDL_GetMouseState(&x, &y);
             if (!looking_ && over_ui(x, y)) break;
             speed_factor_ = std::clamp(
-                speed_factor_ * std::pow(kWheelSpeedStep, static_cast<float>(event.wheel.y)),
-                1e-3f, 1e3f);
+                speed_factor_ * std::pow(kWheelSpeedStep, static_cast<float>(event.wheel.y)), 1e-3f,
+                1e3f);
             break;
         }
-        default: break;
+        default:
+            break;
     }
 }
 
@@ -299,30 +294,49 @@ void ViewerApp::handle_key_down(SDL_Scancode key, bool repeat) {
     if (repeat) return;
     const bool ctrl = held_keys_.count(SDL_SCANCODE_LCTRL) || held_keys_.count(SDL_SCANCODE_RCTRL);
     switch (key) {
-        case SDL_SCANCODE_ESCAPE: quit_ = true; break;
-        case SDL_SCANCODE_R: reset_camera(0); break;
+        case SDL_SCANCODE_ESCAPE:
+            quit_ = true;
+            break;
+        case SDL_SCANCODE_R:
+            reset_camera(0);
+            break;
         case SDL_SCANCODE_C:
             reset_camera((session().camera_index + 1) % static_cast<int>(scene().cameras.size()));
             break;
         case SDL_SCANCODE_PAGEUP:
-            switch_scene((scene_index_ + static_cast<int>(scenes_.size()) - 1) %
+            switch_scene((scenes_.current_index() + static_cast<int>(scenes_.size()) - 1) %
                          static_cast<int>(scenes_.size()));
             break;
         case SDL_SCANCODE_PAGEDOWN:
-            switch_scene((scene_index_ + 1) % static_cast<int>(scenes_.size()));
+            switch_scene((scenes_.current_index() + 1) % static_cast<int>(scenes_.size()));
             break;
-        case SDL_SCANCODE_P: toggle_playback(); break;
-        case SDL_SCANCODE_K: record_keyframe(); break;
+        case SDL_SCANCODE_P:
+            toggle_playback();
+            break;
+        case SDL_SCANCODE_K:
+            record_keyframe();
+            break;
         case SDL_SCANCODE_S:
             if (ctrl) save_recorded_path();
             break;
-        case SDL_SCANCODE_F12: take_screenshot(); break;
+        case SDL_SCANCODE_F12:
+            take_screenshot();
+            break;
         case SDL_SCANCODE_H:
-        case SDL_SCANCODE_F1: show_help_ = !show_help_; break;
-        case SDL_SCANCODE_TAB: show_panel_ = !show_panel_; break;
-        case SDL_SCANCODE_F11: toggle_fullscreen(); break;
-        case SDL_SCANCODE_B: show_browser_ = !show_browser_; break;
-        default: break;
+        case SDL_SCANCODE_F1:
+            show_help_ = !show_help_;
+            break;
+        case SDL_SCANCODE_TAB:
+            show_panel_ = !show_panel_;
+            break;
+        case SDL_SCANCODE_F11:
+            toggle_fullscreen();
+            break;
+        case SDL_SCANCODE_B:
+            show_browser_ = !show_browser_;
+            break;
+        default:
+            break;
     }
 }
 
@@ -330,10 +344,10 @@ void ViewerApp::feed_replay() {
     if (!replay_) return;
     const double now = seconds_since(start_);
     if (replay_->waiting()) {
-        const bool still_waiting =
-            thumbnails_awaited_ ? !thumbnails_done()
-            : awaited_changes_  ? watched_changes_handled_ <= *awaited_changes_
-                                : !view_idle();
+        const bool still_waiting = thumbnails_awaited_ ? !thumbnails_done()
+                                   : awaited_changes_
+                                       ? watched_changes_handled_ <= *awaited_changes_
+                                       : !view_idle();
         if (still_waiting) return;
         thumbnails_awaited_ = false;
         awaited_changes_.reset();
@@ -370,8 +384,8 @@ void ViewerApp::push_replay_event(const ReplayEvent& event) {
         }
         case ReplayAction::MouseDown:
         case ReplayAction::MouseUp:
-            sdl.type = event.action == ReplayAction::MouseDown ? SDL_MOUSEBUTTONDOWN
-                                                               : SDL_MOUSEBUTTONUP;
+            sdl.type =
+                event.action == ReplayAction::MouseDown ? SDL_MOUSEBUTTONDOWN : SDL_MOUSEBUTTONUP;
             sdl.button.windowID = window_id;
             sdl.button.button = static_cast<Uint8>(event.button);
             sdl.button.state = event.action == ReplayAction::MouseDown ? SDL_PRESSED : SDL_RELEASED;
@@ -400,9 +414,14 @@ void ViewerApp::push_replay_event(const ReplayEvent& event) {
             set_window_size(event.x, event.y);
             replay_window_size_ = {event.x, event.y};
             break;
-        case ReplayAction::WaitIdle: break;  // the clock holds the script until view_idle()
-        case ReplayAction::WaitReload: awaited_changes_ = watched_changes_handled_; break;
-        case ReplayAction::Quit: quit_ = true; break;
+        case ReplayAction::WaitIdle:
+            break;  // the clock holds the script until view_idle()
+        case ReplayAction::WaitReload:
+            awaited_changes_ = watched_changes_handled_;
+            break;
+        case ReplayAction::Quit:
+            quit_ = true;
+            break;
         case ReplayAction::BrowserSearch:
         case ReplayAction::BrowserPick:
         case ReplayAction::WaitThumbnails:
@@ -410,7 +429,9 @@ void ViewerApp::push_replay_event(const ReplayEvent& event) {
         case ReplayAction::HybridRemove:
         case ReplayAction::HybridMove:
         case ReplayAction::HybridRepeat:
-        case ReplayAction::HybridSave: apply_replay_formula_event(event); break;
+        case ReplayAction::HybridSave:
+            apply_replay_formula_event(event);
+            break;
     }
 }
 
@@ -426,8 +447,8 @@ void ViewerApp::update_camera(double dt) {
     FlyCamera& camera = session().camera;
     // Until the render thread has measured the distance to the surface, move relative to the
     // distance to the target.
-    const double de = status_.de_at_camera >= 0.0f ? double(status_.de_at_camera)
-                                                   : 0.25 * camera.target_distance;
+    const double de =
+        status_.de_at_camera >= 0.0f ? double(status_.de_at_camera) : 0.25 * camera.target_distance;
     const bool shift = held(SDL_SCANCODE_LSHIFT) + held(SDL_SCANCODE_RSHIFT) > 0.0f;
     const double speed = travel_speed(de, speed_factor_ * (shift ? kShiftSpeedUp : 1.0f));
     camera.move(local, limit_step(speed * dt, de));
@@ -473,7 +494,7 @@ void ViewerApp::submit_view() {
     int width = 0, height = 0;
     SDL_GL_GetDrawableSize(window_.get(), &width, &height);
     ViewState state;
-    state.scene = scenes_[static_cast<size_t>(scene_index_)];
+    state.scene = scenes_.current_ptr();
     state.effects = session().effects;
     state.view = session().camera.to_view();
     state.projection = projection_;
@@ -544,9 +565,8 @@ void ViewerApp::add_message(std::string message) {
 
 void ViewerApp::switch_scene(int index) {
     playing_ = false;
-    scene_index_ = index;
+    scenes_.select(index);
     scene_list_follows_ = true;
-    if (!sessions_.count(index)) sessions_[index] = default_session(scene());
     spdlog::info("scene '{}'", scene().id);
 }
 
@@ -582,9 +602,8 @@ void ViewerApp::toggle_playback() {
 
 void ViewerApp::record_keyframe() {
     CameraPath& recorded = session().recorded;
-    const float time = recorded.keyframes.empty()
-                           ? 0.0f
-                           : recorded.keyframes.back().time + keyframe_interval_;
+    const float time =
+        recorded.keyframes.empty() ? 0.0f : recorded.keyframes.back().time + keyframe_interval_;
     recorded.keyframes.push_back({time, session().camera.to_view()});
     add_message(fmt::format("keyframe {} at {:.1f} s", recorded.keyframes.size(), time));
 }
@@ -604,10 +623,10 @@ void ViewerApp::save_recorded_path() {
         add_message(error.what());
         return;
     }
-    spdlog::info("saved camera path {} ({} keyframes, {:.1f} s); render it with `fgr render {} "
-                 "--camera-path {} --time T`",
-                 file.string(), recorded.keyframes.size(), recorded.duration(), scene().id,
-                 file.string());
+    spdlog::info(
+        "saved camera path {} ({} keyframes, {:.1f} s); render it with `fgr render {} "
+        "--camera-path {} --time T`",
+        file.string(), recorded.keyframes.size(), recorded.duration(), scene().id, file.string());
     add_message(fmt::format("saved {}", file.string()));
 }
 
@@ -642,7 +661,8 @@ void ViewerApp::set_window_size(int width, int height) {
 void ViewerApp::print_stats() {
     const FlyCamera& camera = session().camera;
     fmt::print("scene {}\n", scene().id);
-    if (const FormulaScene* formula = formula_scene_of(static_cast<size_t>(scene_index_))) {
+    if (const FormulaScene* formula =
+            formula_scene_of(static_cast<size_t>(scenes_.current_index()))) {
         std::string sequence;
         for (const FormulaSlot& slot : formula->sequence) {
             sequence += fmt::format("{}{}*{}", sequence.empty() ? "" : " ", slot.formula->name,
@@ -686,6 +706,5 @@ int run_viewer(const ViewerOptions& options) {
     ViewerApp app(options, std::move(found.scenes));
     return app.run();
 }
-
 
 }  // namespace fgr::viewer

@@ -7,17 +7,18 @@
 #include <SDL2/SDL_opengl.h>
 #include <backends/imgui_impl_opengl2.h>
 #include <backends/imgui_impl_sdl.h>
+#include <fmt/format.h>
 #include <imgui.h>
 
 #include <chrono>
-#include <functional>
-#include <stdexcept>
 #include <deque>
 #include <filesystem>
+#include <functional>
 #include <map>
 #include <memory>
 #include <optional>
 #include <set>
+#include <stdexcept>
 #include <string>
 #include <vector>
 
@@ -36,8 +37,7 @@
 #include "fgr/viewer/thumbnails.hpp"
 #include "fgr/viewer/viewer.hpp"
 #include "gl_handles.hpp"
-
-#include <fmt/format.h>
+#include "scene_set.hpp"
 
 namespace fgr::viewer {
 
@@ -50,17 +50,6 @@ inline const char* precision_label(Precision choice, bool in_double) {
     if (!in_double) return "float";
     return choice == Precision::Auto ? "double (deep zoom)" : "double";
 }
-
-// --- Per-scene state, remembered while the viewer runs ---------------------------------------
-
-struct SceneSession {
-    FlyCamera camera;
-    std::vector<float> params;
-    uint64_t effects = 0;
-    int camera_index = 0;
-    int path_index = 0;  // into ViewerApp::playable_paths()
-    CameraPath recorded{"recorded", {}};
-};
 
 // --- The application ---------------------------------------------------------------------
 
@@ -153,18 +142,15 @@ private:
     std::vector<CameraPath> playable_paths() const;
     // Selects the current scene's playable path `name` for P (UsageError naming the paths).
     void select_path(const std::string& name);
-    const Scene& scene() const { return *scenes_[static_cast<size_t>(scene_index_)]; }
-    SceneSession& session() { return sessions_.at(scene_index_); }
-    const SceneSession& session() const { return sessions_.at(scene_index_); }
+    const Scene& scene() const { return scenes_.current(); }
+    SceneSession& session() { return scenes_.session(); }
+    const SceneSession& session() const { return scenes_.session(); }
     void print_stats();
 
     ViewerOptions options_;
-    std::vector<std::shared_ptr<const Scene>> scenes_;
+    SceneSet scenes_;
     std::optional<CameraPathFile> loaded_path_;
     std::vector<ReplayEvent> replay_events_;
-
-    int scene_index_ = 0;
-    std::map<int, SceneSession> sessions_;
 
     // Created in run(), in this order, destroyed in reverse.
     std::unique_ptr<SdlSession> sdl_;
@@ -193,7 +179,7 @@ private:
     // The render mode chosen in the panel (or by --mode); unset: each scene's own.
     std::optional<RenderMode> mode_;
     Projection projection_;  // the panel's projection (or --projection's)
-    PathSettings path_;  // path mode's settings; the environment is prepared per scene
+    PathSettings path_;      // path mode's settings; the environment is prepared per scene
     EnvironmentChoice environment_;
     // The environment prepared for each scene (the sky's sun follows the scene's key light),
     // dropped when the choice changes.

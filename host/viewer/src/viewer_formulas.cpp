@@ -2,17 +2,17 @@
 // panel's "Formula sequence" section). An edit of a sequence makes a new scene that the render
 // thread builds as it builds a reloaded one: the old scene and its image stay until the new
 // kernel compiles, and a build that fails keeps them.
-#include "viewer_app.hpp"
-
-#include <algorithm>
-
 #include <fmt/format.h>
+#include <imgui.h>
 #include <imgui_stdlib.h>
 #include <spdlog/spdlog.h>
+
+#include <algorithm>
 
 #include "fgr/atomic_file.hpp"
 #include "fgr/formula_edit.hpp"
 #include "fgr/parameters.hpp"
+#include "viewer_app.hpp"
 
 namespace fgr::viewer {
 namespace {
@@ -37,7 +37,7 @@ std::string sequence_text(const FormulaScene& formula) {
 // --- Formula scenes ---------------------------------------------------------------------------
 
 const FormulaScene* ViewerApp::formula_scene_of(size_t index) {
-    const std::shared_ptr<const Scene>& scene = scenes_[index];
+    const std::shared_ptr<const Scene>& scene = scenes_.at(index);
     auto found = formula_sources_.find(index);
     if (found == formula_sources_.end() || found->second.scene != scene) {
         FormulaSource source{scene, std::nullopt};
@@ -61,13 +61,13 @@ const FormulaScene* ViewerApp::formula_scene_of(size_t index) {
 std::vector<size_t> ViewerApp::browser_matches() {
     std::vector<SceneSearchEntry> entries;
     for (size_t i = 0; i < scenes_.size(); ++i) {
-        entries.push_back(search_entry(*scenes_[i], formula_scene_of(i)));
+        entries.push_back(search_entry(*scenes_.at(i), formula_scene_of(i)));
     }
     return matching_scenes(entries, browser_query_);
 }
 
 const std::string& ViewerApp::thumbnail_key_of(size_t index) {
-    const std::shared_ptr<const Scene>& scene = scenes_[index];
+    const std::shared_ptr<const Scene>& scene = scenes_.at(index);
     auto found = thumbnail_keys_.find(scene.get());
     if (found == thumbnail_keys_.end()) {
         // The entry holds its scene, so no other scene can take its address while it exists.
@@ -128,13 +128,13 @@ void ViewerApp::draw_browser() {
 }
 
 void ViewerApp::draw_thumbnail_cell(size_t index) {
-    const Scene& cell_scene = *scenes_[index];
+    const Scene& cell_scene = *scenes_.at(index);
     const std::string key = thumbnail_key_of(index);
     const auto texture = thumbnail_textures_.find(key);
     const auto error = thumbnail_errors_.find(key);
     // Asked for when first shown: the worker renders those in view first, one at a time.
     if (texture == thumbnail_textures_.end() && error == thumbnail_errors_.end() && thumbnails_) {
-        thumbnails_->request(scenes_[index], key);
+        thumbnails_->request(scenes_.at(index), key);
     }
     const ImVec2 size(kThumbnailWidth, kThumbnailHeight);
     ImGui::PushID(static_cast<int>(index));
@@ -146,7 +146,8 @@ void ViewerApp::draw_thumbnail_cell(size_t index) {
         const char* label = error != thumbnail_errors_.end() ? "no image" : "rendering...";
         clicked = ImGui::Button(label, ImVec2(size.x + 4, size.y + 4));
     }
-    if (static_cast<int>(index) == scene_index_) {
+    const bool current = static_cast<int>(index) == scenes_.current_index();
+    if (current) {
         ImGui::GetWindowDrawList()->AddRect(ImGui::GetItemRectMin(), ImGui::GetItemRectMax(),
                                             ImGui::GetColorU32(kSelectedColour), 0.0f, 0, 2.0f);
     }
@@ -165,13 +166,13 @@ void ViewerApp::draw_thumbnail_cell(size_t index) {
     ImGui::PopTextWrapPos();
     ImGui::EndGroup();
     ImGui::PopID();
-    if (clicked && static_cast<int>(index) != scene_index_) switch_scene(static_cast<int>(index));
+    if (clicked && !current) switch_scene(static_cast<int>(index));
 }
 
 // --- The hybrid editor ------------------------------------------------------------------------
 
 void ViewerApp::draw_hybrid_section() {
-    const FormulaScene* current = formula_scene_of(static_cast<size_t>(scene_index_));
+    const FormulaScene* current = formula_scene_of(static_cast<size_t>(scenes_.current_index()));
     if (current == nullptr) return;
     if (!ImGui::CollapsingHeader("Formula sequence", ImGuiTreeNodeFlags_DefaultOpen)) return;
     const FormulaScene formula = *current;  // an edit below replaces what `current` points to
@@ -209,7 +210,7 @@ void ViewerApp::draw_hybrid_section() {
 }
 
 void ViewerApp::save_formula_scene(const std::string& id) {
-    const FormulaScene* current = formula_scene_of(static_cast<size_t>(scene_index_));
+    const FormulaScene* current = formula_scene_of(static_cast<size_t>(scenes_.current_index()));
     if (current == nullptr) {
         add_message(fmt::format("'{}' is not a formula scene: nothing to save", scene().id));
         return;
@@ -222,7 +223,8 @@ void ViewerApp::save_formula_scene(const std::string& id) {
         return param_value(scene(), session().params, param);
     };
     formula.bailout = value("bailout");
-    formula.iterations = std::clamp(static_cast<int>(value("iterations")), 1, kFormulaMaxIterations);
+    formula.iterations =
+        std::clamp(static_cast<int>(value("iterations")), 1, kFormulaMaxIterations);
     formula.march.step_factor = std::clamp(value("step_factor"), float(kFormulaMinStepFactor),
                                            float(kFormulaMaxStepFactor));
     formula.march.max_distance = std::clamp(value("max_distance"), float(kFormulaMinMaxDistance),
@@ -279,7 +281,7 @@ void ViewerApp::draw_hybrid_slot(const FormulaScene& formula, size_t slot) {
 }
 
 void ViewerApp::edit_hybrid(const std::function<FormulaScene(FormulaScene)>& edit) {
-    const auto index = static_cast<size_t>(scene_index_);
+    const auto index = static_cast<size_t>(scenes_.current_index());
     if (pending_hybrid_) {
         add_message("the last edit of the sequence is still compiling; try again when it is done");
         return;
@@ -306,7 +308,7 @@ void ViewerApp::edit_hybrid(const std::function<FormulaScene(FormulaScene)>& edi
     spdlog::info("building the edited '{}': {}", candidate->id, sequence_text(formula));
     hybrid_error_.clear();
     pending_hybrid_ = PendingHybrid{candidate, std::move(formula)};
-    worker_->request_reload({candidate, scenes_[index], session().effects});
+    worker_->request_reload({candidate, scenes_.at(index), session().effects});
 }
 
 // Takes the render thread's verdict on the pending edit; false when `result` is not about it.
@@ -314,8 +316,8 @@ bool ViewerApp::adopt_hybrid_edit(const ReloadResult& result) {
     if (!pending_hybrid_ || result.request.candidate != pending_hybrid_->scene) return false;
     PendingHybrid edit = std::move(*pending_hybrid_);
     pending_hybrid_.reset();
-    const auto running = std::find(scenes_.begin(), scenes_.end(), result.request.replaces);
-    if (running == scenes_.end()) {
+    const std::optional<size_t> index = scenes_.index_of(result.request.replaces);
+    if (!index) {
         hybrid_error_ =
             fmt::format("edit of '{}' dropped: the scene was reloaded meanwhile", edit.scene->id);
         add_message(hybrid_error_);
@@ -329,18 +331,16 @@ bool ViewerApp::adopt_hybrid_edit(const ReloadResult& result) {
         reload_error_ = {hybrid_error_, result.error_log};
         return true;
     }
-    const auto index = static_cast<size_t>(running - scenes_.begin());
-    const std::shared_ptr<const Scene> before = *running;
-    const std::vector<float> values = sessions_.count(int(index)) ? sessions_.at(int(index)).params
-                                                                  : default_param_values(*before);
-    adopt_scene(index, edit.scene);
-    if (sessions_.count(int(index))) {
-        sessions_.at(int(index)).params =
-            values_after_edit(*before, values, *edit.scene, edit.formula);
+    const std::shared_ptr<const Scene> before = scenes_.at(*index);
+    const SceneSession* session = scenes_.session_of(*index);
+    const std::vector<float> values = session ? session->params : default_param_values(*before);
+    adopt_scene(*index, edit.scene);
+    if (SceneSession* adopted = scenes_.session_of(*index)) {
+        adopted->params = values_after_edit(*before, values, *edit.scene, edit.formula);
     }
     spdlog::info("'{}' now iterates {}", edit.scene->id, sequence_text(edit.formula));
     add_message(fmt::format("sequence: {}", sequence_text(edit.formula)));
-    formula_sources_.insert_or_assign(index, FormulaSource{edit.scene, std::move(edit.formula)});
+    formula_sources_.insert_or_assign(*index, FormulaSource{edit.scene, std::move(edit.formula)});
     ++hybrid_edits_;
     return true;
 }

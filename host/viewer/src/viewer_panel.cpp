@@ -1,14 +1,12 @@
 // The viewer's Dear ImGui panel: status line, scenes, cameras and paths, a widget per
 // parameter, effects, adaptive quality, messages, key bindings and build errors (the formula
 // browser and the sequence editor are in viewer_formulas.cpp).
-#include "viewer_app.hpp"
+#include <fmt/format.h>
+#include <spdlog/spdlog.h>
 
 #include <algorithm>
 #include <array>
 #include <cmath>
-
-#include <fmt/format.h>
-#include <spdlog/spdlog.h>
 
 #include "fgr/kernel_assembly.hpp"
 #include "fgr/parameters.hpp"
@@ -16,6 +14,7 @@
 #include "fgr/precision.hpp"
 #include "fgr/projection.hpp"
 #include "fgr/render_mode.hpp"
+#include "viewer_app.hpp"
 
 namespace fgr::viewer {
 namespace {
@@ -23,11 +22,10 @@ namespace {
 constexpr float kPanelWidth = 340.0f;
 constexpr size_t kSceneListRows = 8;  // the scene list's height; it scrolls beyond
 
-const std::pair<const char*, std::pair<int, int>> kWindowPresets[] = {
-    {"1366x768", {1366, 768}},
-    {"1920x1080", {1920, 1080}},
-    {"2560x1440", {2560, 1440}},
-    {"3840x2160", {3840, 2160}}};
+const std::pair<const char*, std::pair<int, int>> kWindowPresets[] = {{"1366x768", {1366, 768}},
+                                                                      {"1920x1080", {1920, 1080}},
+                                                                      {"2560x1440", {2560, 1440}},
+                                                                      {"3840x2160", {3840, 2160}}};
 
 const std::pair<const char*, const char*> kKeyBindings[] = {
     {"W A S D", "move forward, left, back, right"},
@@ -93,12 +91,11 @@ void ViewerApp::draw_status_overlay() {
     ImGui::Text("%s  %dx%d", scene().id.c_str(), last_state_.width, last_state_.height);
     if (shown_) {
         const bool path = last_state_.mode == RenderMode::Path;
-        ImGui::Text("resolution %.0f%%  samples %d/%d  frame %.0f ms  %s",
-                    shown_->scale * 100.0f, shown_->samples,
+        ImGui::Text("resolution %.0f%%  samples %d/%d  frame %.0f ms  %s", shown_->scale * 100.0f,
+                    shown_->samples,
                     mode_sample_cap(last_state_.mode) > 0 ? mode_sample_cap(last_state_.mode)
                                                           : quality_.sample_cap,
-                    shown_->render_ms,
-                    precision_label(precision_, shown_->double_precision));
+                    shown_->render_ms, precision_label(precision_, shown_->double_precision));
         if (path) {
             ImGui::Text("path tracing: %d samples/pixel, %.2f M samples/s", shown_->samples,
                         shown_->samples_per_second / 1e6);
@@ -132,8 +129,8 @@ void ViewerApp::draw_panel() {
     ImGui::SetNextWindowBgAlpha(0.8f);
     ImGui::Begin("fgr", nullptr, ImGuiWindowFlags_NoMove | ImGuiWindowFlags_NoResize);
     panel_min_ = ImGui::GetWindowPos();
-    panel_max_ = ImVec2(panel_min_.x + ImGui::GetWindowSize().x,
-                        panel_min_.y + ImGui::GetWindowSize().y);
+    panel_max_ =
+        ImVec2(panel_min_.x + ImGui::GetWindowSize().x, panel_min_.y + ImGui::GetWindowSize().y);
     ImGui::Text("frame %.0f ms  ui %.0f fps", shown_ ? shown_->render_ms : 0.0,
                 ImGui::GetIO().Framerate);
     ImGui::PushItemWidth(-150);
@@ -161,9 +158,9 @@ void ViewerApp::draw_scene_section() {
                               static_cast<float>(std::min<size_t>(scenes_.size(), kSceneListRows));
     ImGui::BeginChild("scenes", ImVec2(0, list_height + 4), false);
     for (size_t i = 0; i < scenes_.size(); ++i) {
-        const bool selected = static_cast<int>(i) == scene_index_;
-        if (ImGui::Selectable(fmt::format("{}  ({})", scenes_[i]->name, scenes_[i]->id).c_str(),
-                              selected) &&
+        const bool selected = static_cast<int>(i) == scenes_.current_index();
+        const Scene& listed = *scenes_.at(i);
+        if (ImGui::Selectable(fmt::format("{}  ({})", listed.name, listed.id).c_str(), selected) &&
             !selected) {
             switch_scene(static_cast<int>(i));
         }
@@ -237,8 +234,9 @@ void draw_optional_distance(const char* label, std::optional<double>* value, dou
     }
     auto shown = static_cast<float>(**value);
     const auto low = static_cast<float>(std::max(minimum, 1e-4 * automatic));
-    if (ImGui::SliderFloat(label, &shown, low, static_cast<float>(std::max(automatic, 1e-30) * 10.0),
-                           "%.4g", ImGuiSliderFlags_Logarithmic)) {
+    if (ImGui::SliderFloat(label, &shown, low,
+                           static_cast<float>(std::max(automatic, 1e-30) * 10.0), "%.4g",
+                           ImGuiSliderFlags_Logarithmic)) {
         *value = std::max(double(shown), minimum);
     }
 }
@@ -302,8 +300,8 @@ bool edit_param(const ParamInfo& param, float* value) {
                 }
                 current = low + index;
             } else {
-                changed = ImGui::SliderInt(label, &current, low,
-                                           static_cast<int>(param.max_value), "%d", clamp);
+                changed = ImGui::SliderInt(label, &current, low, static_cast<int>(param.max_value),
+                                           "%d", clamp);
             }
             *value = static_cast<float>(current);
             break;
@@ -315,10 +313,11 @@ bool edit_param(const ParamInfo& param, float* value) {
             break;
         }
         case ParamType::Vec3:
-            changed = ImGui::SliderFloat3(label, value, param.min_value, param.max_value, "%.3g",
-                                          clamp);
+            changed =
+                ImGui::SliderFloat3(label, value, param.min_value, param.max_value, "%.3g", clamp);
             break;
-        case ParamType::Colour: changed = ImGui::ColorEdit3(label, value, ImGuiColorEditFlags_Float);
+        case ParamType::Colour:
+            changed = ImGui::ColorEdit3(label, value, ImGuiColorEditFlags_Float);
             break;
     }
     if (ImGui::IsItemHovered() && !param.description.empty()) {
@@ -490,16 +489,17 @@ void ViewerApp::draw_precision_combo() {
             // Without cl_khr_fp64 double cannot be chosen; auto then stays in float.
             const ImGuiSelectableFlags flags =
                 choice == Precision::Double && !has_fp64 ? ImGuiSelectableFlags_Disabled : 0;
-            if (ImGui::Selectable(std::string(precision_name(choice)).c_str(),
-                                  choice == precision_, flags)) {
+            if (ImGui::Selectable(std::string(precision_name(choice)).c_str(), choice == precision_,
+                                  flags)) {
                 precision_ = choice;
             }
         }
         ImGui::EndCombo();
     }
     if (ImGui::IsItemHovered()) {
-        ImGui::SetTooltip("auto: double where a pixel is finer than float resolves (deep "
-                          "zooms); double costs ~2.3x on a CPU");
+        ImGui::SetTooltip(
+            "auto: double where a pixel is finer than float resolves (deep "
+            "zooms); double costs ~2.3x on a CPU");
     }
     if (shown_) {
         ImGui::TextDisabled("rendered in %s",

@@ -1,18 +1,17 @@
 // The viewer's hot reload: watching plugin folders and scene sources, and swapping in a new
 // version of a scene once the render thread has built it.
-#include "viewer_app.hpp"
+#include <fmt/format.h>
+#include <spdlog/spdlog.h>
 
 #include <algorithm>
 #include <stdexcept>
 #include <string>
 
-#include <fmt/format.h>
-#include <spdlog/spdlog.h>
-
 #include "fgr/discovery.hpp"
 #include "fgr/parameters.hpp"
 #include "fgr/scene_file.hpp"
 #include "fgr/scene_source.hpp"
+#include "viewer_app.hpp"
 
 namespace fgr::viewer {
 namespace {
@@ -30,11 +29,12 @@ void ViewerApp::watch_sources() {
     }
     if (options_.dev) {
         // A scene built with fgr_add_scene_plugin names its .cl file by absolute path.
-        for (const auto& scene : scenes_) {
-            const std::filesystem::path source = scene->source_name;
+        for (size_t i = 0; i < scenes_.size(); ++i) {
+            const Scene& scene = *scenes_.at(i);
+            const std::filesystem::path source = scene.source_name;
             if (source.is_absolute() && std::filesystem::exists(source)) {
                 watcher_.watch_file(source);
-                spdlog::info("watching {} for '{}'", source.string(), scene->id);
+                spdlog::info("watching {} for '{}'", source.string(), scene.id);
             }
         }
     }
@@ -68,28 +68,27 @@ void ViewerApp::reload_plugin(const std::filesystem::path& file) {
         return;
     }
     auto candidate = std::make_shared<const Scene>(std::move(*loaded.scene));
-    const auto same_id = std::find_if(scenes_.begin(), scenes_.end(),
-                                      [&](const auto& s) { return s->id == candidate->id; });
-    if (same_id == scenes_.end()) {
+    const std::optional<size_t> same_id = scenes_.find(candidate->id);
+    if (!same_id) {
         spdlog::info("new scene '{}' from {}", candidate->id, file.string());
         add_message(fmt::format("new scene '{}'", candidate->id));
-        scenes_.push_back(candidate);
+        scenes_.add(candidate);
         // An IFS scene's source is generated, not a file to watch.
         if (options_.dev && !candidate->ifs) watcher_.watch_file(candidate->source_name);
         ++watched_changes_handled_;
         return;
     }
-    if ((*same_id)->plugin_file != candidate->plugin_file) {
+    const std::shared_ptr<const Scene>& running = scenes_.at(*same_id);
+    if (running->plugin_file != candidate->plugin_file) {
         spdlog::warn("{}: scene '{}' is already loaded from {}; ignored", file.string(),
-                     candidate->id, (*same_id)->plugin_file.string());
+                     candidate->id, running->plugin_file.string());
         ++watched_changes_handled_;
         return;
     }
-    const int index = static_cast<int>(same_id - scenes_.begin());
-    const uint64_t effects =
-        sessions_.count(index) ? sessions_.at(index).effects : candidate->effects;
+    const SceneSession* session = scenes_.session_of(*same_id);
+    const uint64_t effects = session ? session->effects : candidate->effects;
     spdlog::info("{} changed: building the new '{}'", file.string(), candidate->id);
-    worker_->request_reload({candidate, *same_id, effects});
+    worker_->request_reload({candidate, running, effects});
 }
 
 void ViewerApp::reload_source(const std::filesystem::path& file) {
@@ -102,14 +101,14 @@ void ViewerApp::reload_source(const std::filesystem::path& file) {
         return;
     }
     for (size_t i = 0; i < scenes_.size(); ++i) {
-        if (scenes_[i]->source_name != file.string()) continue;
-        Scene edited = *scenes_[i];
+        if (scenes_.at(i)->source_name != file.string()) continue;
+        Scene edited = *scenes_.at(i);
         edited.source = text;
-        const uint64_t effects =
-            sessions_.count(int(i)) ? sessions_.at(int(i)).effects : edited.effects;
+        const SceneSession* session = scenes_.session_of(i);
+        const uint64_t effects = session ? session->effects : edited.effects;
         spdlog::info("{} changed: building the new '{}'", file.string(), edited.id);
-        worker_->request_reload({std::make_shared<const Scene>(std::move(edited)), scenes_[i],
-                                 effects});
+        worker_->request_reload(
+            {std::make_shared<const Scene>(std::move(edited)), scenes_.at(i), effects});
     }
 }
 
@@ -117,37 +116,27 @@ void ViewerApp::apply_reloads() {
     for (const ReloadResult& result : worker_->take_reloads()) {
         ++watched_changes_handled_;
         if (adopt_hybrid_edit(result)) continue;
-        const auto running = std::find(scenes_.begin(), scenes_.end(), result.request.replaces);
-        if (running == scenes_.end()) continue;  // replaced again meanwhile
+        const std::optional<size_t> running = scenes_.index_of(result.request.replaces);
+        if (!running) continue;  // replaced again meanwhile
         const std::string& id = result.request.candidate->id;
         if (!result.ok) {
-            const std::string message =
-                fmt::format("update of '{}' refused, keeping the previous version: {}", id,
-                            result.error);
+            const std::string message = fmt::format(
+                "update of '{}' refused, keeping the previous version: {}", id, result.error);
             spdlog::error("{}", message);
             add_message(message);
             reload_error_ = {message, result.error_log};
             continue;
         }
-        adopt_scene(static_cast<size_t>(running - scenes_.begin()), result.request.candidate);
+        adopt_scene(*running, result.request.candidate);
         reload_error_ = {};
         spdlog::info("reloaded '{}'", id);
         add_message(fmt::format("reloaded '{}'", id));
     }
 }
 
-// The new version takes the old one's place; its session keeps the camera and every parameter
-// that still exists, and follows the scene's effects unless the user had changed them.
 void ViewerApp::adopt_scene(size_t index, const std::shared_ptr<const Scene>& scene) {
-    const std::shared_ptr<const Scene> old = scenes_[index];
-    scenes_[index] = scene;
+    scenes_.replace(index, scene);
     scene_swapped_ = true;
-    const auto session = sessions_.find(static_cast<int>(index));
-    if (session == sessions_.end()) return;
-    session->second.params = carry_param_values(*old, session->second.params, *scene);
-    if (session->second.effects == old->effects) session->second.effects = scene->effects;
-    const int cameras = static_cast<int>(scene->cameras.size());
-    session->second.camera_index = std::min(session->second.camera_index, cameras - 1);
 }
 
 }  // namespace fgr::viewer
