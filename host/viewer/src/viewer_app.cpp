@@ -85,7 +85,6 @@ ViewerApp::ViewerApp(const ViewerOptions& options, std::vector<Scene> scenes)
     projection_ = options.projection;
     path_ = options.path;
     environment_ = options.environment;
-    fullscreen_ = options.fullscreen;
     if (options.camera_path_file) {
         try {
             loaded_path_ = read_camera_path_file(*options.camera_path_file);
@@ -150,26 +149,9 @@ void ViewerApp::select_path(const std::string& name) {
                                  name, names.empty() ? "none" : names));
 }
 
-void ViewerApp::open_window() {
-    sdl_ = std::make_unique<SdlSession>();
-    SDL_GL_SetAttribute(SDL_GL_DOUBLEBUFFER, 1);
-    Uint32 flags = SDL_WINDOW_OPENGL | SDL_WINDOW_RESIZABLE | SDL_WINDOW_ALLOW_HIGHDPI;
-    if (fullscreen_) flags |= SDL_WINDOW_FULLSCREEN_DESKTOP;
-    window_.reset(SDL_CreateWindow("fgr", SDL_WINDOWPOS_CENTERED, SDL_WINDOWPOS_CENTERED,
-                                   options_.width, options_.height, flags));
-    if (!window_) throw std::runtime_error(fmt::format("cannot open a window: {}", SDL_GetError()));
-    gl_context_.reset(SDL_GL_CreateContext(window_.get()));
-    if (!gl_context_) {
-        throw std::runtime_error(
-            fmt::format("cannot create an OpenGL context: {}", SDL_GetError()));
-    }
-    SDL_GL_SetSwapInterval(1);
-    imgui_ = std::make_unique<ImGuiSession>(window_.get(), gl_context_.get());
-    texture_ = std::make_unique<ImageTexture>();
-}
-
 int ViewerApp::run() {
-    open_window();
+    window_.open(options_.width, options_.height, options_.fullscreen);
+    texture_ = std::make_unique<ImageTexture>();
     worker_ = std::make_unique<RenderWorker>(options_.device, options_.packet_width, quality_);
     // --precision double on a device without it fails here, as `fgr render` does.
     use_double_precision(precision_, session().camera.to_view(), options_.width,
@@ -330,7 +312,7 @@ void ViewerApp::handle_key_down(SDL_Scancode key, bool repeat) {
             show_panel_ = !show_panel_;
             break;
         case SDL_SCANCODE_F11:
-            toggle_fullscreen();
+            window_.toggle_fullscreen();
             break;
         case SDL_SCANCODE_B:
             show_browser_ = !show_browser_;
@@ -358,10 +340,9 @@ void ViewerApp::feed_replay() {
 }
 
 void ViewerApp::push_replay_event(const ReplayEvent& event) {
-    int width = 0, height = 0;
-    SDL_GetWindowSize(window_.get(), &width, &height);
+    const auto [width, height] = window_.size();
     SDL_Event sdl{};
-    const Uint32 window_id = SDL_GetWindowID(window_.get());
+    const Uint32 window_id = window_.id();
     switch (event.action) {
         case ReplayAction::KeyDown:
         case ReplayAction::KeyUp:
@@ -411,7 +392,7 @@ void ViewerApp::push_replay_event(const ReplayEvent& event) {
             SDL_PushEvent(&sdl);
             break;
         case ReplayAction::Resize:
-            set_window_size(event.x, event.y);
+            window_.set_size(event.x, event.y);
             replay_window_size_ = {event.x, event.y};
             break;
         case ReplayAction::WaitIdle:
@@ -491,8 +472,7 @@ std::shared_ptr<const PreparedEnvironment> ViewerApp::environment_for_scene() {
 }
 
 void ViewerApp::submit_view() {
-    int width = 0, height = 0;
-    SDL_GL_GetDrawableSize(window_.get(), &width, &height);
+    const auto [width, height] = window_.drawable_size();
     ViewState state;
     state.scene = scenes_.current_ptr();
     state.effects = session().effects;
@@ -545,11 +525,7 @@ void ViewerApp::log_refined_view() {
 }
 
 bool ViewerApp::view_idle() const {
-    if (replay_window_size_) {
-        int width = 0, height = 0;
-        SDL_GetWindowSize(window_.get(), &width, &height);
-        if (std::make_pair(width, height) != *replay_window_size_) return false;
-    }
+    if (replay_window_size_ && window_.size() != *replay_window_size_) return false;
     return status_.idle && status_.idle_generation == generation_ && !status_.compiling &&
            status_.pending_screenshots == 0 && status_.pending_reloads == 0 &&
            !last_state_.interactive && !scene_swapped_;
@@ -646,16 +622,6 @@ void ViewerApp::take_screenshot() {
     spdlog::info("screenshot requested: {}", file.string());
     add_message(fmt::format("rendering {} ...", file.filename().string()));
     worker_->request_screenshot(std::move(request));
-}
-
-void ViewerApp::toggle_fullscreen() {
-    fullscreen_ = !fullscreen_;
-    SDL_SetWindowFullscreen(window_.get(), fullscreen_ ? SDL_WINDOW_FULLSCREEN_DESKTOP : 0);
-}
-
-void ViewerApp::set_window_size(int width, int height) {
-    if (fullscreen_) toggle_fullscreen();
-    SDL_SetWindowSize(window_.get(), width, height);
 }
 
 void ViewerApp::print_stats() {

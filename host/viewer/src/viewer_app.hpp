@@ -38,6 +38,7 @@
 #include "fgr/viewer/viewer.hpp"
 #include "gl_handles.hpp"
 #include "scene_set.hpp"
+#include "viewer_window.hpp"
 
 namespace fgr::viewer {
 
@@ -61,7 +62,6 @@ public:
 private:
     // Setup.
     void prepare_first_scene();
-    void open_window();
 
     // Input.
     void pump_events();
@@ -116,8 +116,6 @@ private:
     void record_keyframe();
     void save_recorded_path();
     void take_screenshot();
-    void toggle_fullscreen();
-    void set_window_size(int width, int height);
     void add_message(std::string message);
 
     // The panel.
@@ -152,11 +150,9 @@ private:
     std::optional<CameraPathFile> loaded_path_;
     std::vector<ReplayEvent> replay_events_;
 
-    // Created in run(), in this order, destroyed in reverse.
-    std::unique_ptr<SdlSession> sdl_;
-    WindowHandle window_;
-    GlContextHandle gl_context_;
-    std::unique_ptr<ImGuiSession> imgui_;
+    // Opened in run(); declared before everything that holds a texture, so the OpenGL context
+    // outlives them.
+    ViewerWindow window_;
     std::unique_ptr<ImageTexture> texture_;
     std::unique_ptr<RenderWorker> worker_;
     std::unique_ptr<ReplayClock> replay_;
@@ -169,7 +165,6 @@ private:
     bool show_panel_ = true;
     bool show_help_ = false;
     bool scene_list_follows_ = true;  // the panel's scene list scrolls to the current scene
-    bool fullscreen_ = false;
     bool playing_ = false;
     bool loop_playback_ = true;
     double playback_time_ = 0.0;

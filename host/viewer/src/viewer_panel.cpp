@@ -65,13 +65,12 @@ void ViewerApp::draw_ui() {
     draw_build_error();
     if (show_help_) draw_help();
     ImGui::Render();
-    int width = 0, height = 0;
-    SDL_GL_GetDrawableSize(window_.get(), &width, &height);
+    const auto [width, height] = window_.drawable_size();
     glViewport(0, 0, width, height);
     glClearColor(0.0f, 0.0f, 0.0f, 1.0f);
     glClear(GL_COLOR_BUFFER_BIT);
     ImGui_ImplOpenGL2_RenderDrawData(ImGui::GetDrawData());
-    SDL_GL_SwapWindow(window_.get());
+    window_.swap();
 }
 
 void ViewerApp::draw_image() {
@@ -391,12 +390,10 @@ void ViewerApp::draw_quality_section() {
         ImGui::EndCombo();
     }
     if (preset >= 0) {
-        set_window_size(kWindowPresets[preset].second.first, kWindowPresets[preset].second.second);
+        window_.set_size(kWindowPresets[preset].second.first, kWindowPresets[preset].second.second);
     }
-    if (ImGui::Checkbox("fullscreen (F11)", &fullscreen_)) {
-        fullscreen_ = !fullscreen_;
-        toggle_fullscreen();
-    }
+    bool fullscreen = window_.fullscreen();
+    if (ImGui::Checkbox("fullscreen (F11)", &fullscreen)) window_.toggle_fullscreen();
     ImGui::TextDisabled("device: %s", worker_->device_info().name.c_str());
 }
 

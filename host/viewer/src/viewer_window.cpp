@@ -1,8 +1,8 @@
 #include "viewer_window.hpp"
 
-#include <stdexcept>
-
 #include <fmt/format.h>
+
+#include <stdexcept>
 
 namespace fgr::viewer {
 
@@ -17,7 +17,8 @@ void ViewerWindow::open(int width, int height, bool fullscreen) {
     if (!window_) throw std::runtime_error(fmt::format("cannot open a window: {}", SDL_GetError()));
     gl_context_.reset(SDL_GL_CreateContext(window_.get()));
     if (!gl_context_) {
-        throw std::runtime_error(fmt::format("cannot create an OpenGL context: {}", SDL_GetError()));
+        throw std::runtime_error(
+            fmt::format("cannot create an OpenGL context: {}", SDL_GetError()));
     }
     SDL_GL_SetSwapInterval(1);
     imgui_ = std::make_unique<ImGuiSession>(window_.get(), gl_context_.get());
