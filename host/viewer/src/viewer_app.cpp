@@ -77,14 +77,7 @@ void check_replay_keys(const std::vector<ReplayEvent>& events, const std::string
 }  // namespace
 
 ViewerApp::ViewerApp(const ViewerOptions& options, std::vector<Scene> scenes)
-    : options_(options), scenes_(std::move(scenes)) {
-    quality_.target_ms = options.target_ms;
-    quality_.sample_cap = options.sample_cap;
-    precision_ = options.precision;
-    mode_ = options.mode;
-    projection_ = options.projection;
-    path_ = options.path;
-    environment_ = options.environment;
+    : options_(options), scenes_(std::move(scenes)), choices_(options) {
     if (options.camera_path_file) {
         try {
             loaded_path_ = read_camera_path_file(*options.camera_path_file);
@@ -152,9 +145,10 @@ void ViewerApp::select_path(const std::string& name) {
 int ViewerApp::run() {
     window_.open(options_.width, options_.height, options_.fullscreen);
     texture_ = std::make_unique<ImageTexture>();
-    worker_ = std::make_unique<RenderWorker>(options_.device, options_.packet_width, quality_);
+    worker_ =
+        std::make_unique<RenderWorker>(options_.device, options_.packet_width, choices_.quality);
     // --precision double on a device without it fails here, as `fgr render` does.
-    use_double_precision(precision_, session().camera.to_view(), options_.width,
+    use_double_precision(choices_.precision, session().camera.to_view(), options_.width,
                          worker_->device_info());
     thumbnails_ = std::make_unique<ThumbnailWorker>(options_.device, options_.packet_width,
                                                     default_thumbnail_directory());
@@ -455,35 +449,22 @@ void ViewerApp::update_playback(double dt) {
     session().camera = FlyCamera::from_view(view);
 }
 
-std::shared_ptr<const PreparedEnvironment> ViewerApp::environment_for_scene() {
-    const Scene* current = &scene();
-    auto found = environments_.find(current);
-    if (found != environments_.end()) return found->second;
-    std::shared_ptr<const PreparedEnvironment> prepared;
-    try {
-        prepared = prepare_environment(environment_, *current);
-    } catch (const std::exception& error) {
-        // A file that stopped being readable: say so and light the scene with the sky instead.
-        add_message(fmt::format("environment: {}; using the sky", error.what()));
-        environment_ = EnvironmentChoice{};
-        prepared = prepare_environment(environment_, *current);
-    }
-    return environments_[current] = prepared;
-}
-
 void ViewerApp::submit_view() {
     const auto [width, height] = window_.drawable_size();
     ViewState state;
     state.scene = scenes_.current_ptr();
     state.effects = session().effects;
     state.view = session().camera.to_view();
-    state.projection = projection_;
+    state.projection = choices_.projection;
     state.params = session().params;
-    state.precision = precision_;
-    state.mode = current_mode();
+    state.precision = choices_.precision;
+    state.mode = choices_.mode_for(scene());
     if (state.mode == RenderMode::Path) {
-        state.path = path_;
-        state.path.environment = environment_for_scene();
+        state.path = choices_.path;
+        std::string fallback_reason;
+        state.path.environment =
+            environments_.prepare(scene(), choices_.environment, &fallback_reason);
+        if (!fallback_reason.empty()) add_message(std::move(fallback_reason));
     }
     state.width = std::clamp(width, 1, kMaxImageSide);
     state.height = std::clamp(height, 1, kMaxImageSide);
@@ -610,7 +591,7 @@ void ViewerApp::take_screenshot() {
     ScreenshotRequest request;
     request.state = last_state_;
     request.state.interactive = false;
-    request.samples = quality_.sample_cap;
+    request.samples = choices_.quality.sample_cap;
     const std::string stem = fmt::format("fgr-{}-{}", scene().id, timestamp());
     std::filesystem::path file = options_.output_dir / (stem + ".png");
     // Two screenshots within a second (the first may not be written yet) must not collide.
@@ -648,7 +629,7 @@ void ViewerApp::print_stats() {
                camera.forward.z);
     if (shown_) {
         fmt::print("last_frame scale {:.3f} samples {} precision {}\n", shown_->scale,
-                   shown_->samples, precision_label(precision_, shown_->double_precision));
+                   shown_->samples, precision_label(choices_.precision, shown_->double_precision));
     }
 }
 

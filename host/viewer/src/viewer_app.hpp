@@ -37,6 +37,7 @@
 #include "fgr/viewer/thumbnails.hpp"
 #include "fgr/viewer/viewer.hpp"
 #include "gl_handles.hpp"
+#include "render_choices.hpp"
 #include "scene_set.hpp"
 #include "viewer_window.hpp"
 
@@ -147,6 +148,8 @@ private:
 
     ViewerOptions options_;
     SceneSet scenes_;
+    RenderChoices choices_;
+    SceneEnvironments environments_;
     std::optional<CameraPathFile> loaded_path_;
     std::vector<ReplayEvent> replay_events_;
 
@@ -169,18 +172,6 @@ private:
     bool loop_playback_ = true;
     double playback_time_ = 0.0;
     float keyframe_interval_ = 2.0f;
-    QualitySettings quality_;
-    Precision precision_ = Precision::Auto;
-    // The render mode chosen in the panel (or by --mode); unset: each scene's own.
-    std::optional<RenderMode> mode_;
-    Projection projection_;  // the panel's projection (or --projection's)
-    PathSettings path_;      // path mode's settings; the environment is prepared per scene
-    EnvironmentChoice environment_;
-    // The environment prepared for each scene (the sky's sun follows the scene's key light),
-    // dropped when the choice changes.
-    std::map<const Scene*, std::shared_ptr<const PreparedEnvironment>> environments_;
-    RenderMode current_mode() const { return mode_.value_or(scene().default_mode); }
-    std::shared_ptr<const PreparedEnvironment> environment_for_scene();
 
     ViewState last_state_;
     bool submitted_ = false;

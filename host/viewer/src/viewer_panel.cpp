@@ -93,8 +93,9 @@ void ViewerApp::draw_status_overlay() {
         ImGui::Text("resolution %.0f%%  samples %d/%d  frame %.0f ms  %s", shown_->scale * 100.0f,
                     shown_->samples,
                     mode_sample_cap(last_state_.mode) > 0 ? mode_sample_cap(last_state_.mode)
-                                                          : quality_.sample_cap,
-                    shown_->render_ms, precision_label(precision_, shown_->double_precision));
+                                                          : choices_.quality.sample_cap,
+                    shown_->render_ms,
+                    precision_label(choices_.precision, shown_->double_precision));
         if (path) {
             ImGui::Text("path tracing: %d samples/pixel, %.2f M samples/s", shown_->samples,
                         shown_->samples_per_second / 1e6);
@@ -247,24 +248,25 @@ void ViewerApp::draw_projection_section() {
     constexpr std::array kKinds{ProjectionKind::Pinhole, ProjectionKind::Equirectangular,
                                 ProjectionKind::Fisheye, ProjectionKind::StereoSideBySide,
                                 ProjectionKind::StereoTopBottom};
-    if (ImGui::BeginCombo("projection", projection_name(projection_.kind))) {
+    if (ImGui::BeginCombo("projection", projection_name(choices_.projection.kind))) {
         for (const ProjectionKind kind : kKinds) {
-            if (ImGui::Selectable(projection_name(kind), kind == projection_.kind)) {
-                projection_.kind = kind;
+            if (ImGui::Selectable(projection_name(kind), kind == choices_.projection.kind)) {
+                choices_.projection.kind = kind;
             }
         }
         ImGui::EndCombo();
     }
-    if (projection_.kind == ProjectionKind::Fisheye) {
-        ImGui::SliderFloat("fisheye fov", &projection_.fisheye_fov_degrees, 10.0f, 360.0f,
+    if (choices_.projection.kind == ProjectionKind::Fisheye) {
+        ImGui::SliderFloat("fisheye fov", &choices_.projection.fisheye_fov_degrees, 10.0f, 360.0f,
                            "%.0f deg");
     }
-    if (!is_stereo(projection_.kind)) return;
+    if (!is_stereo(choices_.projection.kind)) return;
     // Unset values follow the view: 1/30 of the distance to the target, converging there.
     const double distance = session().camera.target_distance;
-    draw_optional_distance("eye separation", &projection_.eye_separation,
+    draw_optional_distance("eye separation", &choices_.projection.eye_separation,
                            distance * kDefaultSeparationFraction, 0.0);
-    draw_optional_distance("convergence", &projection_.convergence, distance, 1e-6 * distance);
+    draw_optional_distance("convergence", &choices_.projection.convergence, distance,
+                           1e-6 * distance);
 }
 
 namespace {
@@ -372,13 +374,13 @@ void ViewerApp::draw_effects_section() {
 
 void ViewerApp::draw_quality_section() {
     if (!ImGui::CollapsingHeader("Adaptive quality", ImGuiTreeNodeFlags_DefaultOpen)) return;
-    float target = static_cast<float>(quality_.target_ms);
+    float target = static_cast<float>(choices_.quality.target_ms);
     bool changed = ImGui::SliderFloat("target frame", &target, 5.0f, 200.0f, "%.0f ms");
-    changed |= ImGui::SliderInt("sample cap", &quality_.sample_cap, 1, 256, "%d",
+    changed |= ImGui::SliderInt("sample cap", &choices_.quality.sample_cap, 1, 256, "%d",
                                 ImGuiSliderFlags_Logarithmic);
     if (changed) {
-        quality_.target_ms = target;
-        worker_->set_quality(quality_);
+        choices_.quality.target_ms = target;
+        worker_->set_quality(choices_.quality);
     }
     draw_precision_combo();
     int preset = -1;
@@ -399,11 +401,11 @@ void ViewerApp::draw_quality_section() {
 
 void ViewerApp::draw_mode_section() {
     if (!ImGui::CollapsingHeader("Render mode", ImGuiTreeNodeFlags_DefaultOpen)) return;
-    const RenderMode current = current_mode();
+    const RenderMode current = choices_.mode_for(scene());
     if (ImGui::BeginCombo("mode", std::string(render_mode_name(current)).c_str())) {
         for (const RenderModeInfo& info : render_modes()) {
             if (ImGui::Selectable(std::string(info.name).c_str(), info.mode == current)) {
-                mode_ = info.mode;
+                choices_.mode = info.mode;
             }
             if (ImGui::IsItemHovered()) ImGui::SetTooltip("%s", std::string(info.summary).c_str());
         }
@@ -412,11 +414,11 @@ void ViewerApp::draw_mode_section() {
     if (current != RenderMode::Path) return;
     ImGui::TextDisabled("accumulates while the camera stands still");
     if (draw_environment_controls()) environments_.clear();
-    ImGui::SliderInt("bounces", &path_.max_bounces, 0, 32);
-    ImGui::Checkbox("light sampling", &path_.light_sampling);
+    ImGui::SliderInt("bounces", &choices_.path.max_bounces, 0, 32);
+    ImGui::Checkbox("light sampling", &choices_.path.light_sampling);
     ImGui::SameLine();
-    ImGui::Checkbox("MIS", &path_.mis);
-    ImGui::Checkbox("scene lights", &path_.scene_lights);
+    ImGui::Checkbox("MIS", &choices_.path.mis);
+    ImGui::Checkbox("scene lights", &choices_.path.scene_lights);
     if (ImGui::IsItemHovered()) {
         ImGui::SetTooltip("the scene's own lights shine besides the environment");
     }
@@ -433,46 +435,48 @@ bool ViewerApp::draw_environment_controls() {
     bool changed = false;
     const char* shown = "sky";
     for (const auto& [kind, name] : kinds) {
-        if (kind == environment_.kind) shown = name;
+        if (kind == choices_.environment.kind) shown = name;
     }
     if (ImGui::BeginCombo("environment", shown)) {
         for (const auto& [kind, name] : kinds) {
             // A file comes from --environment FILE; without one there is none to pick.
-            const bool unavailable = kind == EnvironmentKind::File && environment_.file.empty();
-            if (ImGui::Selectable(name, kind == environment_.kind,
+            const bool unavailable =
+                kind == EnvironmentKind::File && choices_.environment.file.empty();
+            if (ImGui::Selectable(name, kind == choices_.environment.kind,
                                   unavailable ? ImGuiSelectableFlags_Disabled : 0)) {
-                changed |= kind != environment_.kind;
-                environment_.kind = kind;
+                changed |= kind != choices_.environment.kind;
+                choices_.environment.kind = kind;
             }
         }
         ImGui::EndCombo();
     }
-    if (environment_.kind == EnvironmentKind::File) {
-        ImGui::TextDisabled("%s", environment_.file.filename().string().c_str());
+    if (choices_.environment.kind == EnvironmentKind::File) {
+        ImGui::TextDisabled("%s", choices_.environment.file.filename().string().c_str());
     }
     // Sliders change the maps when let go: making a sky takes a few milliseconds, not a frame's.
-    ImGui::SliderFloat("intensity", &environment_.intensity, 0.0f, 10.0f, "%.2f",
+    ImGui::SliderFloat("intensity", &choices_.environment.intensity, 0.0f, 10.0f, "%.2f",
                        ImGuiSliderFlags_Logarithmic);
     changed |= ImGui::IsItemDeactivatedAfterEdit();
-    ImGui::SliderFloat("rotation", &environment_.rotation_degrees, -180.0f, 180.0f, "%.0f deg");
+    ImGui::SliderFloat("rotation", &choices_.environment.rotation_degrees, -180.0f, 180.0f,
+                       "%.0f deg");
     changed |= ImGui::IsItemDeactivatedAfterEdit();
-    if (environment_.kind == EnvironmentKind::Sky) {
-        ImGui::SliderFloat("turbidity", &environment_.sky.turbidity, 1.7f, 10.0f, "%.1f");
+    if (choices_.environment.kind == EnvironmentKind::Sky) {
+        ImGui::SliderFloat("turbidity", &choices_.environment.sky.turbidity, 1.7f, 10.0f, "%.1f");
         changed |= ImGui::IsItemDeactivatedAfterEdit();
-        bool own_sun = !environment_.sun_from_scene;
+        bool own_sun = !choices_.environment.sun_from_scene;
         if (ImGui::Checkbox("place the sun", &own_sun)) {
-            environment_.sun_from_scene = !own_sun;
+            choices_.environment.sun_from_scene = !own_sun;
             changed = true;
         }
         if (ImGui::IsItemHovered()) {
             ImGui::SetTooltip("off: the sun stands where the scene's key light is");
         }
         if (own_sun) {
-            ImGui::SliderFloat("sun elevation", &environment_.sky.sun_elevation_degrees, -5.0f,
-                               90.0f, "%.0f deg");
+            ImGui::SliderFloat("sun elevation", &choices_.environment.sky.sun_elevation_degrees,
+                               -5.0f, 90.0f, "%.0f deg");
             changed |= ImGui::IsItemDeactivatedAfterEdit();
-            ImGui::SliderFloat("sun azimuth", &environment_.sky.sun_azimuth_degrees, -180.0f,
-                               180.0f, "%.0f deg");
+            ImGui::SliderFloat("sun azimuth", &choices_.environment.sky.sun_azimuth_degrees,
+                               -180.0f, 180.0f, "%.0f deg");
             changed |= ImGui::IsItemDeactivatedAfterEdit();
         }
     }
@@ -481,14 +485,14 @@ bool ViewerApp::draw_environment_controls() {
 
 void ViewerApp::draw_precision_combo() {
     const bool has_fp64 = worker_->device_info().has_fp64;
-    if (ImGui::BeginCombo("precision", std::string(precision_name(precision_)).c_str())) {
+    if (ImGui::BeginCombo("precision", std::string(precision_name(choices_.precision)).c_str())) {
         for (Precision choice : {Precision::Auto, Precision::Float, Precision::Double}) {
             // Without cl_khr_fp64 double cannot be chosen; auto then stays in float.
             const ImGuiSelectableFlags flags =
                 choice == Precision::Double && !has_fp64 ? ImGuiSelectableFlags_Disabled : 0;
-            if (ImGui::Selectable(std::string(precision_name(choice)).c_str(), choice == precision_,
-                                  flags)) {
-                precision_ = choice;
+            if (ImGui::Selectable(std::string(precision_name(choice)).c_str(),
+                                  choice == choices_.precision, flags)) {
+                choices_.precision = choice;
             }
         }
         ImGui::EndCombo();
@@ -500,7 +504,7 @@ void ViewerApp::draw_precision_combo() {
     }
     if (shown_) {
         ImGui::TextDisabled("rendered in %s",
-                            precision_label(precision_, shown_->double_precision));
+                            precision_label(choices_.precision, shown_->double_precision));
     }
 }
 
