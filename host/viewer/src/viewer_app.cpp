@@ -19,9 +19,6 @@
 namespace fgr::viewer {
 namespace {
 
-// How long the view counts as moving after its last change: mouse look arrives in bursts, and
-// refining between two bursts would only be cancelled again.
-constexpr double kSettleSeconds = 0.15;
 // The window thread's pace: input and the panel stay smooth without taking a core from rendering.
 constexpr double kUiFrameSeconds = 1.0 / 60.0;
 
@@ -31,14 +28,6 @@ constexpr float kLookRadiansPerPixel = 0.0035f;
 constexpr float kShiftSpeedUp = 4.0f;
 constexpr float kWheelSpeedStep = 1.25f;
 constexpr size_t kMessagesKept = 6;
-
-// Whether `next` renders the image `last` did. Every field counts but the two that this answer
-// decides: the generation it gets and whether it is interactive.
-bool same_image_inputs(ViewState next, const ViewState& last) {
-    next.generation = last.generation;
-    next.interactive = last.interactive;
-    return next == last;
-}
 
 std::string timestamp() {
     const std::time_t now = std::time(nullptr);
@@ -161,7 +150,7 @@ int ViewerApp::run() {
         const auto frame_start = std::chrono::steady_clock::now();
         const double dt = std::chrono::duration<double>(frame_start - previous).count();
         previous = frame_start;
-        ui_stats_.add(dt * 1000.0);
+        stats_.add_window_frame(dt * 1000.0);
 
         status_ = worker_->status();
         apply_reloads();  // before the idle check: a swapped-in scene is not refined yet
@@ -468,17 +457,7 @@ void ViewerApp::submit_view() {
     }
     state.width = std::clamp(width, 1, kMaxImageSide);
     state.height = std::clamp(height, 1, kMaxImageSide);
-    const double now = seconds_since(start_);
-    if (!submitted_ || !same_image_inputs(state, last_state_)) {
-        ++generation_;
-        last_change_ = now;
-    }
-    state.generation = generation_;
-    state.interactive = playing_ || now - last_change_ < kSettleSeconds;
-    last_state_ = state;
-    submitted_ = true;
-    scene_swapped_ = false;
-    worker_->submit(std::move(state));
+    worker_->submit(view_.track(std::move(state), seconds_since(start_), playing_));
 }
 
 void ViewerApp::receive_frame() {
@@ -486,12 +465,7 @@ void ViewerApp::receive_frame() {
     if (!frame) return;
     texture_->upload(frame->image);
     redraws_pending_ = std::max(redraws_pending_, 1);
-    render_stats_.add(frame->render_ms);
-    if (frame->scale < 1.0f) {
-        ++preview_frames_;
-        preview_scale_sum_ += frame->scale;
-    }
-    ++frames_shown_;
+    stats_.add_shown_frame(*frame);
     frame->image.rgb.clear();  // the texture has it
     shown_ = std::move(frame);
 }
@@ -499,17 +473,15 @@ void ViewerApp::receive_frame() {
 void ViewerApp::log_refined_view() {
     const bool idle = view_idle();
     if (idle && !was_idle_ && shown_) {
-        spdlog::debug("view refined: {}x{}, {} samples per pixel", last_state_.width,
-                      last_state_.height, shown_->samples);
+        spdlog::debug("view refined: {}x{}, {} samples per pixel", view_.last().width,
+                      view_.last().height, shown_->samples);
     }
     was_idle_ = idle;
 }
 
 bool ViewerApp::view_idle() const {
     if (replay_window_size_ && window_.size() != *replay_window_size_) return false;
-    return status_.idle && status_.idle_generation == generation_ && !status_.compiling &&
-           status_.pending_screenshots == 0 && status_.pending_reloads == 0 &&
-           !last_state_.interactive && !scene_swapped_;
+    return view_.refined(status_);
 }
 
 // --- Actions ---------------------------------------------------------------------------------
@@ -589,7 +561,7 @@ void ViewerApp::save_recorded_path() {
 
 void ViewerApp::take_screenshot() {
     ScreenshotRequest request;
-    request.state = last_state_;
+    request.state = view_.last();
     request.state.interactive = false;
     request.samples = choices_.quality.sample_cap;
     const std::string stem = fmt::format("fgr-{}-{}", scene().id, timestamp());
@@ -618,11 +590,7 @@ void ViewerApp::print_stats() {
         fmt::print("sequence {}\n", sequence);
         fmt::print("hybrid_edits {}\n", hybrid_edits_);
     }
-    fmt::print("frames_shown {}\n", frames_shown_);
-    fmt::print("{}\n", format_summary("render_ms", render_stats_.summary()));
-    fmt::print("{}\n", format_summary("ui_frame_ms", ui_stats_.summary()));
-    fmt::print("preview_frames {} mean_scale {:.3f}\n", preview_frames_,
-               preview_frames_ ? preview_scale_sum_ / preview_frames_ : 1.0);
+    stats_.print();
     fmt::print("camera_position {:.6g} {:.6g} {:.6g}\n", camera.position.x, camera.position.y,
                camera.position.z);
     fmt::print("camera_forward {:.6g} {:.6g} {:.6g}\n", camera.forward.x, camera.forward.y,

@@ -39,6 +39,8 @@
 #include "gl_handles.hpp"
 #include "render_choices.hpp"
 #include "scene_set.hpp"
+#include "view_tracker.hpp"
+#include "viewer_statistics.hpp"
 #include "viewer_window.hpp"
 
 namespace fgr::viewer {
@@ -173,10 +175,7 @@ private:
     double playback_time_ = 0.0;
     float keyframe_interval_ = 2.0f;
 
-    ViewState last_state_;
-    bool submitted_ = false;
-    double last_change_ = -1e9;
-    uint64_t generation_ = 0;
+    ViewTracker view_;
     WorkerStatus status_;
     bool was_idle_ = false;
     std::optional<DisplayFrame> shown_;  // image data lives in the texture; this keeps its facts
@@ -186,7 +185,6 @@ private:
     FileWatcher watcher_;
     double next_watch_ = 0.0;
     std::pair<std::string, std::string> reload_error_;  // a refused update: summary, log
-    bool scene_swapped_ = false;  // a reload replaced a scene since the last submitted view
     // Changes to watched files dealt with so far (reloaded, refused, added, failed to load), and
     // the count when a replayed wait_reload began: the script goes on once it has grown.
     uint64_t watched_changes_handled_ = 0;
@@ -218,9 +216,7 @@ private:
     std::string save_id_;       // the panel's "save as" id
     int hybrid_edits_ = 0;      // adopted, for --stats
 
-    FrameStats render_stats_;
-    FrameStats ui_stats_;
-    int frames_shown_ = 0;
+    ViewerStatistics stats_;
     // The window is drawn again only when something may have changed it (an input event, a new
     // frame: redraws_pending_ counts the draws still owed, ImGui settling over two) and at least
     // every kMaxUndrawnSeconds for the status line: redrawing an unchanged window 60 times a
@@ -228,8 +224,6 @@ private:
     // render thread needs.
     int redraws_pending_ = 2;
     std::chrono::steady_clock::time_point last_draw_{};
-    int preview_frames_ = 0;  // shown at reduced resolution
-    double preview_scale_sum_ = 0.0;
 };
 
 }  // namespace fgr::viewer

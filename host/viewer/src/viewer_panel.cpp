@@ -87,13 +87,13 @@ void ViewerApp::draw_status_overlay() {
                                    ImGuiWindowFlags_NoSavedSettings |
                                    ImGuiWindowFlags_NoFocusOnAppearing | ImGuiWindowFlags_NoNav;
     ImGui::Begin("##status", nullptr, flags);
-    ImGui::Text("%s  %dx%d", scene().id.c_str(), last_state_.width, last_state_.height);
+    ImGui::Text("%s  %dx%d", scene().id.c_str(), view_.last().width, view_.last().height);
     if (shown_) {
-        const bool path = last_state_.mode == RenderMode::Path;
+        const bool path = view_.last().mode == RenderMode::Path;
         ImGui::Text("resolution %.0f%%  samples %d/%d  frame %.0f ms  %s", shown_->scale * 100.0f,
                     shown_->samples,
-                    mode_sample_cap(last_state_.mode) > 0 ? mode_sample_cap(last_state_.mode)
-                                                          : choices_.quality.sample_cap,
+                    mode_sample_cap(view_.last().mode) > 0 ? mode_sample_cap(view_.last().mode)
+                                                           : choices_.quality.sample_cap,
                     shown_->render_ms,
                     precision_label(choices_.precision, shown_->double_precision));
         if (path) {
@@ -104,7 +104,7 @@ void ViewerApp::draw_status_overlay() {
             // The slider caps the depth; the pixel footprint stops it sooner where detail
             // would be smaller than a pixel.
             ImGui::Text("IFS depth reached %d (slider %d)", shown_->ifs_depth_reached,
-                        static_cast<int>(param_value(scene(), last_state_.params, "ifs_depth")));
+                        static_cast<int>(param_value(scene(), view_.last().params, "ifs_depth")));
         }
     }
     if (status_.compiling) {

@@ -136,7 +136,7 @@ void ViewerApp::apply_reloads() {
 
 void ViewerApp::adopt_scene(size_t index, const std::shared_ptr<const Scene>& scene) {
     scenes_.replace(index, scene);
-    scene_swapped_ = true;
+    view_.scene_replaced();
 }
 
 }  // namespace fgr::viewer
