@@ -29,15 +29,6 @@ constexpr float kShiftSpeedUp = 4.0f;
 constexpr float kWheelSpeedStep = 1.25f;
 constexpr size_t kMessagesKept = 6;
 
-std::string timestamp() {
-    const std::time_t now = std::time(nullptr);
-    std::tm local{};
-    localtime_r(&now, &local);
-    char text[32];
-    std::strftime(text, sizeof text, "%Y%m%d-%H%M%S", &local);
-    return text;
-}
-
 SDL_Scancode scancode_named(const std::string& name) {
     return SDL_GetScancodeFromName(name.c_str());
 }
@@ -66,14 +57,11 @@ void check_replay_keys(const std::vector<ReplayEvent>& events, const std::string
 }  // namespace
 
 ViewerApp::ViewerApp(const ViewerOptions& options, std::vector<Scene> scenes)
-    : options_(options), scenes_(std::move(scenes)), choices_(options) {
-    if (options.camera_path_file) {
-        try {
-            loaded_path_ = read_camera_path_file(*options.camera_path_file);
-        } catch (const std::runtime_error& error) {
-            throw UsageError(error.what());
-        }
-    }
+    : options_(options),
+      scenes_(std::move(scenes)),
+      choices_(options),
+      paths_(scenes_, options.camera_path_file, options.output_dir,
+             [this](std::string message) { add_message(std::move(message)); }) {
     if (options.replay) {
         try {
             replay_events_ = load_replay(*options.replay);
@@ -114,21 +102,7 @@ void ViewerApp::prepare_first_scene() {
         throw UsageError(error.what());
     }
     scenes_.select(static_cast<int>(index.value_or(0)), std::move(first));
-    if (!options_.path_name.empty()) select_path(options_.path_name);
-}
-
-void ViewerApp::select_path(const std::string& name) {
-    const std::vector<CameraPath> paths = playable_paths();
-    std::string names;
-    for (size_t i = 0; i < paths.size(); ++i) {
-        if (paths[i].name == name) {
-            session().path_index = static_cast<int>(i);
-            return;
-        }
-        names += (names.empty() ? "" : ", ") + paths[i].name;
-    }
-    throw UsageError(fmt::format("scene '{}' has no camera path '{}' (its paths: {})", scene().id,
-                                 name, names.empty() ? "none" : names));
+    if (!options_.path_name.empty()) paths_.select(options_.path_name);
 }
 
 int ViewerApp::run() {
@@ -157,7 +131,7 @@ int ViewerApp::run() {
         log_refined_view();
         feed_replay();
         pump_events();
-        update_playback(dt);
+        paths_.advance(dt);
         update_camera(dt);
         submit_view();
         receive_frame();
@@ -229,7 +203,7 @@ void ViewerApp::handle_event(const SDL_Event& event) {
                 session().camera.turn(
                     static_cast<float>(event.motion.xrel) * kLookRadiansPerPixel * fov_scale,
                     -static_cast<float>(event.motion.yrel) * kLookRadiansPerPixel * fov_scale);
-                playing_ = false;
+                paths_.stop();
             }
             break;
         case SDL_MOUSEWHEEL: {
@@ -276,13 +250,13 @@ void ViewerApp::handle_key_down(SDL_Scancode key, bool repeat) {
             switch_scene((scenes_.current_index() + 1) % static_cast<int>(scenes_.size()));
             break;
         case SDL_SCANCODE_P:
-            toggle_playback();
+            paths_.toggle_playback();
             break;
         case SDL_SCANCODE_K:
-            record_keyframe();
+            paths_.record_keyframe();
             break;
         case SDL_SCANCODE_S:
-            if (ctrl) save_recorded_path();
+            if (ctrl) paths_.save_recorded();
             break;
         case SDL_SCANCODE_F12:
             take_screenshot();
@@ -407,7 +381,7 @@ void ViewerApp::update_camera(double dt) {
                           held(SDL_SCANCODE_W) - held(SDL_SCANCODE_S),
                           held(SDL_SCANCODE_E) - held(SDL_SCANCODE_Q));
     if (local == glm::vec3(0.0f)) return;
-    playing_ = false;
+    paths_.stop();
     FlyCamera& camera = session().camera;
     // Until the render thread has measured the distance to the surface, move relative to the
     // distance to the target.
@@ -416,26 +390,6 @@ void ViewerApp::update_camera(double dt) {
     const bool shift = held(SDL_SCANCODE_LSHIFT) + held(SDL_SCANCODE_RSHIFT) > 0.0f;
     const double speed = travel_speed(de, speed_factor_ * (shift ? kShiftSpeedUp : 1.0f));
     camera.move(local, limit_step(speed * dt, de));
-}
-
-void ViewerApp::update_playback(double dt) {
-    if (!playing_) return;
-    const std::vector<CameraPath> paths = playable_paths();
-    if (paths.empty()) {
-        playing_ = false;
-        return;
-    }
-    const CameraPath& path =
-        paths[static_cast<size_t>(std::clamp(session().path_index, 0, int(paths.size()) - 1))];
-    playback_time_ += dt;
-    if (playback_time_ > path.duration()) {
-        if (!loop_playback_) playing_ = false;
-        playback_time_ = loop_playback_ ? std::fmod(playback_time_, double(path.duration()))
-                                        : double(path.duration());
-    }
-    const CameraView view =
-        evaluate_camera_path(path, path.keyframes.front().time + float(playback_time_));
-    session().camera = FlyCamera::from_view(view);
 }
 
 void ViewerApp::submit_view() {
@@ -457,7 +411,7 @@ void ViewerApp::submit_view() {
     }
     state.width = std::clamp(width, 1, kMaxImageSide);
     state.height = std::clamp(height, 1, kMaxImageSide);
-    worker_->submit(view_.track(std::move(state), seconds_since(start_), playing_));
+    worker_->submit(view_.track(std::move(state), seconds_since(start_), paths_.playing()));
 }
 
 void ViewerApp::receive_frame() {
@@ -493,70 +447,17 @@ void ViewerApp::add_message(std::string message) {
 }
 
 void ViewerApp::switch_scene(int index) {
-    playing_ = false;
+    paths_.stop();
     scenes_.select(index);
     scene_list_follows_ = true;
     spdlog::info("scene '{}'", scene().id);
 }
 
 void ViewerApp::reset_camera(int camera_index) {
-    playing_ = false;
+    paths_.stop();
     session().camera_index = camera_index;
     session().camera =
         FlyCamera::from_view(scene().cameras[static_cast<size_t>(camera_index)].view);
-}
-
-std::vector<CameraPath> ViewerApp::playable_paths() const {
-    std::vector<CameraPath> paths = scene().camera_paths;
-    if (session().recorded.keyframes.size() >= 2) paths.push_back(session().recorded);
-    if (loaded_path_) {
-        paths.push_back(loaded_path_->path);
-        paths.back().name = "file: " + loaded_path_->path.name;
-    }
-    return paths;
-}
-
-void ViewerApp::toggle_playback() {
-    if (playing_) {
-        playing_ = false;
-        return;
-    }
-    if (playable_paths().empty()) {
-        add_message("no camera path to play: record one with K");
-        return;
-    }
-    playing_ = true;
-    playback_time_ = 0.0;
-}
-
-void ViewerApp::record_keyframe() {
-    CameraPath& recorded = session().recorded;
-    const float time =
-        recorded.keyframes.empty() ? 0.0f : recorded.keyframes.back().time + keyframe_interval_;
-    recorded.keyframes.push_back({time, session().camera.to_view()});
-    add_message(fmt::format("keyframe {} at {:.1f} s", recorded.keyframes.size(), time));
-}
-
-void ViewerApp::save_recorded_path() {
-    const CameraPath& recorded = session().recorded;
-    if (recorded.keyframes.size() < 2) {
-        add_message("record at least two keyframes (K) before saving");
-        return;
-    }
-    const auto file =
-        options_.output_dir / fmt::format("fgr-path-{}-{}.json", scene().id, timestamp());
-    try {
-        write_camera_path_file(file, {scene().id, recorded});
-    } catch (const std::runtime_error& error) {
-        spdlog::error("{}", error.what());
-        add_message(error.what());
-        return;
-    }
-    spdlog::info(
-        "saved camera path {} ({} keyframes, {:.1f} s); render it with `fgr render {} "
-        "--camera-path {} --time T`",
-        file.string(), recorded.keyframes.size(), recorded.duration(), scene().id, file.string());
-    add_message(fmt::format("saved {}", file.string()));
 }
 
 void ViewerApp::take_screenshot() {
@@ -564,7 +465,7 @@ void ViewerApp::take_screenshot() {
     request.state = view_.last();
     request.state.interactive = false;
     request.samples = choices_.quality.sample_cap;
-    const std::string stem = fmt::format("fgr-{}-{}", scene().id, timestamp());
+    const std::string stem = fmt::format("fgr-{}-{}", scene().id, file_timestamp());
     std::filesystem::path file = options_.output_dir / (stem + ".png");
     // Two screenshots within a second (the first may not be written yet) must not collide.
     for (int n = 2; std::filesystem::exists(file) || screenshot_files_.count(file); ++n) {

@@ -22,6 +22,7 @@
 #include <string>
 #include <vector>
 
+#include "camera_paths.hpp"
 #include "fgr/camera_path_file.hpp"
 #include "fgr/formulas.hpp"
 #include "fgr/image_io.hpp"
@@ -41,18 +42,13 @@
 #include "scene_set.hpp"
 #include "view_tracker.hpp"
 #include "viewer_statistics.hpp"
+#include "viewer_util.hpp"
 #include "viewer_window.hpp"
 
 namespace fgr::viewer {
 
 inline double seconds_since(std::chrono::steady_clock::time_point start) {
     return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-}
-
-// The precision an image was rendered in, and why when auto chose double.
-inline const char* precision_label(Precision choice, bool in_double) {
-    if (!in_double) return "float";
-    return choice == Precision::Auto ? "double (deep zoom)" : "double";
 }
 
 // --- The application ---------------------------------------------------------------------
@@ -77,7 +73,6 @@ private:
 
     // Per-frame updates.
     void update_camera(double dt);
-    void update_playback(double dt);
     void submit_view();
     void receive_frame();
     bool view_idle() const;
@@ -115,9 +110,6 @@ private:
     // Actions.
     void switch_scene(int index);
     void reset_camera(int camera_index);
-    void toggle_playback();
-    void record_keyframe();
-    void save_recorded_path();
     void take_screenshot();
     void add_message(std::string message);
 
@@ -140,9 +132,6 @@ private:
     void draw_build_error();
     void draw_browser_window();
 
-    std::vector<CameraPath> playable_paths() const;
-    // Selects the current scene's playable path `name` for P (UsageError naming the paths).
-    void select_path(const std::string& name);
     const Scene& scene() const { return scenes_.current(); }
     SceneSession& session() { return scenes_.session(); }
     const SceneSession& session() const { return scenes_.session(); }
@@ -152,7 +141,7 @@ private:
     SceneSet scenes_;
     RenderChoices choices_;
     SceneEnvironments environments_;
-    std::optional<CameraPathFile> loaded_path_;
+    CameraPaths paths_;
     std::vector<ReplayEvent> replay_events_;
 
     // Opened in run(); declared before everything that holds a texture, so the OpenGL context
@@ -170,10 +159,6 @@ private:
     bool show_panel_ = true;
     bool show_help_ = false;
     bool scene_list_follows_ = true;  // the panel's scene list scrolls to the current scene
-    bool playing_ = false;
-    bool loop_playback_ = true;
-    double playback_time_ = 0.0;
-    float keyframe_interval_ = 2.0f;
 
     ViewTracker view_;
     WorkerStatus status_;

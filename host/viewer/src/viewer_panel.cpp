@@ -116,7 +116,7 @@ void ViewerApp::draw_status_overlay() {
         ImGui::TextColored(ImVec4(0.6f, 0.9f, 1, 1), "screenshot in progress (%d)",
                            status_.pending_screenshots);
     }
-    if (playing_) ImGui::Text("playing path  t = %.1f s", playback_time_);
+    if (paths_.playing()) ImGui::Text("playing path  t = %.1f s", paths_.playback_time());
     ImGui::TextDisabled("H: help");
     ImGui::End();
 }
@@ -192,29 +192,33 @@ void ViewerApp::draw_camera_section() {
         ImGui::TextDisabled("distance to surface unknown");
     }
 
-    const std::vector<CameraPath> paths = playable_paths();
+    const std::vector<CameraPath> paths = paths_.playable();
     if (!paths.empty()) {
         current.path_index = std::clamp(current.path_index, 0, int(paths.size()) - 1);
         if (ImGui::BeginCombo("path", paths[size_t(current.path_index)].name.c_str())) {
             for (size_t i = 0; i < paths.size(); ++i) {
                 if (ImGui::Selectable(paths[i].name.c_str(), int(i) == current.path_index)) {
                     current.path_index = static_cast<int>(i);
-                    playing_ = false;
+                    paths_.stop();
                 }
             }
             ImGui::EndCombo();
         }
-        if (ImGui::Button(playing_ ? "Stop (P)" : "Play (P)")) toggle_playback();
+        if (ImGui::Button(paths_.playing() ? "Stop (P)" : "Play (P)")) paths_.toggle_playback();
         ImGui::SameLine();
-        ImGui::Checkbox("loop", &loop_playback_);
+        bool loop = paths_.loop();
+        if (ImGui::Checkbox("loop", &loop)) paths_.set_loop(loop);
     }
     ImGui::Text("recorded: %zu keyframes", current.recorded.keyframes.size());
-    if (ImGui::Button("Add keyframe (K)")) record_keyframe();
+    if (ImGui::Button("Add keyframe (K)")) paths_.record_keyframe();
     ImGui::SameLine();
-    if (ImGui::Button("Save (Ctrl+S)")) save_recorded_path();
+    if (ImGui::Button("Save (Ctrl+S)")) paths_.save_recorded();
     ImGui::SameLine();
     if (ImGui::Button("Clear")) current.recorded.keyframes.clear();
-    ImGui::SliderFloat("keyframe spacing", &keyframe_interval_, 0.25f, 10.0f, "%.2f s");
+    float spacing = paths_.keyframe_interval();
+    if (ImGui::SliderFloat("keyframe spacing", &spacing, 0.25f, 10.0f, "%.2f s")) {
+        paths_.set_keyframe_interval(spacing);
+    }
     if (ImGui::Button("Screenshot (F12)")) take_screenshot();
 }
 
