@@ -24,9 +24,6 @@ constexpr double kUiFrameSeconds = 1.0 / 60.0;
 
 // The longest the window goes without being drawn (the status line's frame time and messages).
 constexpr double kMaxUndrawnSeconds = 0.1;
-constexpr float kLookRadiansPerPixel = 0.0035f;
-constexpr float kShiftSpeedUp = 4.0f;
-constexpr float kWheelSpeedStep = 1.25f;
 constexpr size_t kMessagesKept = 6;
 
 SDL_Scancode scancode_named(const std::string& name) {
@@ -61,7 +58,8 @@ ViewerApp::ViewerApp(const ViewerOptions& options, std::vector<Scene> scenes)
       scenes_(std::move(scenes)),
       choices_(options),
       paths_(scenes_, options.camera_path_file, options.output_dir,
-             [this](std::string message) { add_message(std::move(message)); }) {
+             [this](std::string message) { add_message(std::move(message)); }),
+      input_(input_host()) {
     if (options.replay) {
         try {
             replay_events_ = load_replay(*options.replay);
@@ -130,9 +128,9 @@ int ViewerApp::run() {
         apply_reloads();  // before the idle check: a swapped-in scene is not refined yet
         log_refined_view();
         feed_replay();
-        pump_events();
+        if (input_.pump_events()) redraws_pending_ = 2;  // ImGui settles a change over two frames
         paths_.advance(dt);
-        update_camera(dt);
+        input_.fly(dt, status_.de_at_camera);
         submit_view();
         receive_frame();
         receive_thumbnails();
@@ -163,120 +161,64 @@ int ViewerApp::run() {
 
 // --- Input -------------------------------------------------------------------------------------
 
-void ViewerApp::pump_events() {
-    SDL_Event event;
-    while (SDL_PollEvent(&event)) {
-        ImGui_ImplSDL2_ProcessEvent(&event);
-        handle_event(event);
-        redraws_pending_ = 2;  // ImGui settles a change over two frames
-    }
-}
-
 bool ViewerApp::over_ui(int x, int y) const {
     const auto fx = static_cast<float>(x), fy = static_cast<float>(y);
     return show_panel_ && fx >= panel_min_.x && fx < panel_max_.x && fy >= panel_min_.y &&
            fy < panel_max_.y;
 }
 
-void ViewerApp::handle_event(const SDL_Event& event) {
-    switch (event.type) {
-        case SDL_QUIT:
+void ViewerApp::run_command(ViewerCommand command) {
+    switch (command) {
+        case ViewerCommand::Quit:
             quit_ = true;
             break;
-        case SDL_KEYDOWN:
-            if (ImGui::GetIO().WantTextInput) break;  // typing a value into the panel
-            held_keys_.insert(event.key.keysym.scancode);
-            handle_key_down(event.key.keysym.scancode, event.key.repeat != 0);
-            break;
-        case SDL_KEYUP:
-            held_keys_.erase(event.key.keysym.scancode);
-            break;
-        case SDL_MOUSEBUTTONDOWN:
-            handle_mouse_button(event.button, true);
-            break;
-        case SDL_MOUSEBUTTONUP:
-            handle_mouse_button(event.button, false);
-            break;
-        case SDL_MOUSEMOTION:
-            if (looking_) {
-                const float fov_scale = session().camera.fov_degrees / 60.0f;
-                session().camera.turn(
-                    static_cast<float>(event.motion.xrel) * kLookRadiansPerPixel * fov_scale,
-                    -static_cast<float>(event.motion.yrel) * kLookRadiansPerPixel * fov_scale);
-                paths_.stop();
-            }
-            break;
-        case SDL_MOUSEWHEEL: {
-            int x = 0, y = 0;
-            SDL_GetMouseState(&x, &y);
-            if (!looking_ && over_ui(x, y)) break;
-            speed_factor_ = std::clamp(
-                speed_factor_ * std::pow(kWheelSpeedStep, static_cast<float>(event.wheel.y)), 1e-3f,
-                1e3f);
-            break;
-        }
-        default:
-            break;
-    }
-}
-
-void ViewerApp::handle_mouse_button(const SDL_MouseButtonEvent& button, bool down) {
-    if (button.button != SDL_BUTTON_RIGHT) return;
-    if (down && over_ui(button.x, button.y)) return;
-    looking_ = down;
-    // Relative mode hides the pointer and reports unbounded motion; some X servers refuse it,
-    // and motion still arrives then, only bounded by the window.
-    SDL_SetRelativeMouseMode(down ? SDL_TRUE : SDL_FALSE);
-}
-
-void ViewerApp::handle_key_down(SDL_Scancode key, bool repeat) {
-    if (repeat) return;
-    const bool ctrl = held_keys_.count(SDL_SCANCODE_LCTRL) || held_keys_.count(SDL_SCANCODE_RCTRL);
-    switch (key) {
-        case SDL_SCANCODE_ESCAPE:
-            quit_ = true;
-            break;
-        case SDL_SCANCODE_R:
+        case ViewerCommand::ResetCamera:
             reset_camera(0);
             break;
-        case SDL_SCANCODE_C:
+        case ViewerCommand::NextCamera:
             reset_camera((session().camera_index + 1) % static_cast<int>(scene().cameras.size()));
             break;
-        case SDL_SCANCODE_PAGEUP:
+        case ViewerCommand::PreviousScene:
             switch_scene((scenes_.current_index() + static_cast<int>(scenes_.size()) - 1) %
                          static_cast<int>(scenes_.size()));
             break;
-        case SDL_SCANCODE_PAGEDOWN:
+        case ViewerCommand::NextScene:
             switch_scene((scenes_.current_index() + 1) % static_cast<int>(scenes_.size()));
             break;
-        case SDL_SCANCODE_P:
+        case ViewerCommand::TogglePlayback:
             paths_.toggle_playback();
             break;
-        case SDL_SCANCODE_K:
+        case ViewerCommand::RecordKeyframe:
             paths_.record_keyframe();
             break;
-        case SDL_SCANCODE_S:
-            if (ctrl) paths_.save_recorded();
+        case ViewerCommand::SaveRecordedPath:
+            paths_.save_recorded();
             break;
-        case SDL_SCANCODE_F12:
+        case ViewerCommand::Screenshot:
             take_screenshot();
             break;
-        case SDL_SCANCODE_H:
-        case SDL_SCANCODE_F1:
+        case ViewerCommand::ToggleHelp:
             show_help_ = !show_help_;
             break;
-        case SDL_SCANCODE_TAB:
+        case ViewerCommand::TogglePanel:
             show_panel_ = !show_panel_;
             break;
-        case SDL_SCANCODE_F11:
+        case ViewerCommand::ToggleFullscreen:
             window_.toggle_fullscreen();
             break;
-        case SDL_SCANCODE_B:
+        case ViewerCommand::ToggleBrowser:
             show_browser_ = !show_browser_;
             break;
-        default:
-            break;
     }
+}
+
+InputHost ViewerApp::input_host() {
+    return {
+        .run = [this](ViewerCommand command) { run_command(command); },
+        .over_panel = [this](int x, int y) { return over_ui(x, y); },
+        .camera = [this]() -> FlyCamera& { return session().camera; },
+        .took_camera = [this] { paths_.stop(); },
+    };
 }
 
 void ViewerApp::feed_replay() {
@@ -374,23 +316,6 @@ void ViewerApp::push_replay_event(const ReplayEvent& event) {
 }
 
 // --- Per-frame updates -----------------------------------------------------------------------
-
-void ViewerApp::update_camera(double dt) {
-    const auto held = [&](SDL_Scancode key) { return held_keys_.count(key) ? 1.0f : 0.0f; };
-    const glm::vec3 local(held(SDL_SCANCODE_D) - held(SDL_SCANCODE_A),
-                          held(SDL_SCANCODE_W) - held(SDL_SCANCODE_S),
-                          held(SDL_SCANCODE_E) - held(SDL_SCANCODE_Q));
-    if (local == glm::vec3(0.0f)) return;
-    paths_.stop();
-    FlyCamera& camera = session().camera;
-    // Until the render thread has measured the distance to the surface, move relative to the
-    // distance to the target.
-    const double de =
-        status_.de_at_camera >= 0.0f ? double(status_.de_at_camera) : 0.25 * camera.target_distance;
-    const bool shift = held(SDL_SCANCODE_LSHIFT) + held(SDL_SCANCODE_RSHIFT) > 0.0f;
-    const double speed = travel_speed(de, speed_factor_ * (shift ? kShiftSpeedUp : 1.0f));
-    camera.move(local, limit_step(speed * dt, de));
-}
 
 void ViewerApp::submit_view() {
     const auto [width, height] = window_.drawable_size();

@@ -38,6 +38,7 @@
 #include "fgr/viewer/thumbnails.hpp"
 #include "fgr/viewer/viewer.hpp"
 #include "gl_handles.hpp"
+#include "input_handler.hpp"
 #include "render_choices.hpp"
 #include "scene_set.hpp"
 #include "view_tracker.hpp"
@@ -63,16 +64,13 @@ private:
     void prepare_first_scene();
 
     // Input.
-    void pump_events();
-    void handle_event(const SDL_Event& event);
-    void handle_key_down(SDL_Scancode key, bool repeat);
-    void handle_mouse_button(const SDL_MouseButtonEvent& button, bool down);
+    void run_command(ViewerCommand command);
+    InputHost input_host();
     void feed_replay();
     void push_replay_event(const ReplayEvent& event);
     bool over_ui(int x, int y) const;
 
     // Per-frame updates.
-    void update_camera(double dt);
     void submit_view();
     void receive_frame();
     bool view_idle() const;
@@ -142,6 +140,7 @@ private:
     RenderChoices choices_;
     SceneEnvironments environments_;
     CameraPaths paths_;
+    InputHandler input_;
     std::vector<ReplayEvent> replay_events_;
 
     // Opened in run(); declared before everything that holds a texture, so the OpenGL context
@@ -153,9 +152,6 @@ private:
 
     std::chrono::steady_clock::time_point start_;
     bool quit_ = false;
-    std::set<SDL_Scancode> held_keys_;
-    bool looking_ = false;
-    float speed_factor_ = 1.0f;
     bool show_panel_ = true;
     bool show_help_ = false;
     bool scene_list_follows_ = true;  // the panel's scene list scrolls to the current scene

@@ -184,8 +184,11 @@ void ViewerApp::draw_camera_section() {
         ImGui::EndCombo();
     }
     ImGui::SliderFloat("fov", &current.camera.fov_degrees, 5.0f, 150.0f, "%.0f deg");
-    ImGui::SliderFloat("speed", &speed_factor_, 1e-3f, 1e3f, "%.3g x DE/s",
-                       ImGuiSliderFlags_Logarithmic);
+    float speed = input_.speed_factor();
+    if (ImGui::SliderFloat("speed", &speed, 1e-3f, 1e3f, "%.3g x DE/s",
+                           ImGuiSliderFlags_Logarithmic)) {
+        input_.set_speed_factor(speed);
+    }
     if (status_.de_at_camera >= 0.0f) {
         ImGui::Text("distance to surface %.3g", double(status_.de_at_camera));
     } else {
