@@ -59,7 +59,8 @@ ViewerApp::ViewerApp(const ViewerOptions& options, std::vector<Scene> scenes)
       choices_(options),
       paths_(scenes_, options.camera_path_file, options.output_dir,
              [this](std::string message) { add_message(std::move(message)); }),
-      input_(input_host()) {
+      input_(input_host()),
+      reloader_(scenes_, options.dev, reload_host()) {
     if (options.replay) {
         try {
             replay_events_ = load_replay(*options.replay);
@@ -113,7 +114,7 @@ int ViewerApp::run() {
                          worker_->device_info());
     thumbnails_ = std::make_unique<ThumbnailWorker>(options_.device, options_.packet_width,
                                                     default_thumbnail_directory());
-    watch_sources();
+    reloader_.watch();
     spdlog::info("viewer on {}; press H for the key bindings", worker_->device_info().name);
     if (!replay_events_.empty()) replay_ = std::make_unique<ReplayClock>(replay_events_);
     start_ = std::chrono::steady_clock::now();
@@ -125,7 +126,8 @@ int ViewerApp::run() {
         stats_.add_window_frame(dt * 1000.0);
 
         status_ = worker_->status();
-        apply_reloads();  // before the idle check: a swapped-in scene is not refined yet
+        // Before the idle check: a swapped-in scene is not refined yet.
+        reloader_.apply(worker_->take_reloads());
         log_refined_view();
         feed_replay();
         if (input_.pump_events()) redraws_pending_ = 2;  // ImGui settles a change over two frames
@@ -135,7 +137,7 @@ int ViewerApp::run() {
         receive_frame();
         receive_thumbnails();
         for (std::string& message : worker_->take_messages()) add_message(std::move(message));
-        poll_sources();
+        reloader_.poll(seconds_since(start_));
         if (redraws_pending_ > 0 || seconds_since(last_draw_) >= kMaxUndrawnSeconds) {
             draw_ui();
             redraws_pending_ = std::max(redraws_pending_ - 1, 0);
@@ -212,6 +214,26 @@ void ViewerApp::run_command(ViewerCommand command) {
     }
 }
 
+void ViewerApp::adopt_scene(size_t index, const std::shared_ptr<const Scene>& scene) {
+    scenes_.replace(index, scene);
+    view_.scene_replaced();
+}
+
+ReloadHost ViewerApp::reload_host() {
+    return {
+        .build = [this](ReloadRequest request) { worker_->request_reload(std::move(request)); },
+        .claim_edit = [this](const ReloadResult& result) { return adopt_hybrid_edit(result); },
+        .adopt_scene = [this](size_t index,
+                              std::shared_ptr<const Scene> scene) { adopt_scene(index, scene); },
+        .show_refused =
+            [this](std::string summary, std::string log) {
+                reload_error_ = {std::move(summary), std::move(log)};
+            },
+        .clear_refused = [this] { reload_error_ = {}; },
+        .add_message = [this](std::string message) { add_message(std::move(message)); },
+    };
+}
+
 InputHost ViewerApp::input_host() {
     return {
         .run = [this](ViewerCommand command) { run_command(command); },
@@ -227,7 +249,7 @@ void ViewerApp::feed_replay() {
     if (replay_->waiting()) {
         const bool still_waiting = thumbnails_awaited_ ? !thumbnails_done()
                                    : awaited_changes_
-                                       ? watched_changes_handled_ <= *awaited_changes_
+                                       ? reloader_.changes_handled() <= *awaited_changes_
                                        : !view_idle();
         if (still_waiting) return;
         thumbnails_awaited_ = false;
@@ -297,7 +319,7 @@ void ViewerApp::push_replay_event(const ReplayEvent& event) {
         case ReplayAction::WaitIdle:
             break;  // the clock holds the script until view_idle()
         case ReplayAction::WaitReload:
-            awaited_changes_ = watched_changes_handled_;
+            awaited_changes_ = reloader_.changes_handled();
             break;
         case ReplayAction::Quit:
             quit_ = true;

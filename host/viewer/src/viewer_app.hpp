@@ -38,6 +38,7 @@
 #include "fgr/viewer/thumbnails.hpp"
 #include "fgr/viewer/viewer.hpp"
 #include "gl_handles.hpp"
+#include "hot_reloader.hpp"
 #include "input_handler.hpp"
 #include "render_choices.hpp"
 #include "scene_set.hpp"
@@ -77,11 +78,7 @@ private:
     void log_refined_view();  // once each time the view becomes fully refined (debug level)
 
     // Hot reload.
-    void watch_sources();
-    void poll_sources();
-    void reload_plugin(const std::filesystem::path& file);
-    void reload_source(const std::filesystem::path& file);
-    void apply_reloads();
+    ReloadHost reload_host();
     void adopt_scene(size_t index, const std::shared_ptr<const Scene>& scene);
 
     // The formula browser and the hybrid editor (viewer_formulas.cpp).
@@ -141,6 +138,7 @@ private:
     SceneEnvironments environments_;
     CameraPaths paths_;
     InputHandler input_;
+    HotReloader reloader_;
     std::vector<ReplayEvent> replay_events_;
 
     // Opened in run(); declared before everything that holds a texture, so the OpenGL context
@@ -163,12 +161,9 @@ private:
     ImVec2 panel_min_{0, 0}, panel_max_{0, 0};
     std::deque<std::string> messages_;
     std::set<std::filesystem::path> screenshot_files_;
-    FileWatcher watcher_;
-    double next_watch_ = 0.0;
     std::pair<std::string, std::string> reload_error_;  // a refused update: summary, log
-    // Changes to watched files dealt with so far (reloaded, refused, added, failed to load), and
-    // the count when a replayed wait_reload began: the script goes on once it has grown.
-    uint64_t watched_changes_handled_ = 0;
+    // The count of changes to watched files dealt with when a replayed wait_reload began: the
+    // script goes on once it has grown.
     std::optional<uint64_t> awaited_changes_;
     // The window size a replayed resize asked for: the view is not idle until it has it.
     std::optional<std::pair<int, int>> replay_window_size_;

@@ -1,17 +1,16 @@
-// The viewer's hot reload: watching plugin folders and scene sources, and swapping in a new
-// version of a scene once the render thread has built it.
+#include "hot_reloader.hpp"
+
 #include <fmt/format.h>
 #include <spdlog/spdlog.h>
 
-#include <algorithm>
+#include <optional>
 #include <stdexcept>
 #include <string>
+#include <utility>
 
 #include "fgr/discovery.hpp"
-#include "fgr/parameters.hpp"
 #include "fgr/scene_file.hpp"
 #include "fgr/scene_source.hpp"
-#include "viewer_app.hpp"
 
 namespace fgr::viewer {
 namespace {
@@ -21,13 +20,14 @@ constexpr double kWatchSeconds = 0.5;
 
 }  // namespace
 
-// --- Hot reload --------------------------------------------------------------------------------
+HotReloader::HotReloader(SceneSet& scenes, bool dev, ReloadHost host)
+    : scenes_(scenes), dev_(dev), host_(std::move(host)) {}
 
-void ViewerApp::watch_sources() {
+void HotReloader::watch() {
     for (const auto& directory : plugin_search_path(executable_dir())) {
         watcher_.watch_directory(directory);
     }
-    if (options_.dev) {
+    if (dev_) {
         // A scene built with fgr_add_scene_plugin names its .cl file by absolute path.
         for (size_t i = 0; i < scenes_.size(); ++i) {
             const Scene& scene = *scenes_.at(i);
@@ -41,10 +41,9 @@ void ViewerApp::watch_sources() {
     watcher_.poll();  // what is there now is what was loaded
 }
 
-void ViewerApp::poll_sources() {
-    const double now = seconds_since(start_);
-    if (now < next_watch_) return;
-    next_watch_ = now + kWatchSeconds;
+void HotReloader::poll(double now_seconds) {
+    if (now_seconds < next_poll_) return;
+    next_poll_ = now_seconds + kWatchSeconds;
     for (const std::filesystem::path& file : watcher_.poll()) {
         if (is_scene_file_name(file)) {
             reload_plugin(file);
@@ -54,7 +53,7 @@ void ViewerApp::poll_sources() {
     }
 }
 
-void ViewerApp::reload_plugin(const std::filesystem::path& file) {
+void HotReloader::reload_plugin(const std::filesystem::path& file) {
     // A plugin from a fresh copy (a library still loaded under this path would come back as it
     // was), an IFS file read again.
     LoadResult loaded = reload_scene_file(file);
@@ -62,42 +61,42 @@ void ViewerApp::reload_plugin(const std::filesystem::path& file) {
         const std::string message =
             fmt::format("{}: {} (keeping the version loaded before)", file.string(), loaded.error);
         spdlog::error("{}", message);
-        add_message(message);
-        reload_error_ = {message, ""};
-        ++watched_changes_handled_;
+        host_.add_message(message);
+        host_.show_refused(message, "");
+        ++changes_handled_;
         return;
     }
     auto candidate = std::make_shared<const Scene>(std::move(*loaded.scene));
     const std::optional<size_t> same_id = scenes_.find(candidate->id);
     if (!same_id) {
         spdlog::info("new scene '{}' from {}", candidate->id, file.string());
-        add_message(fmt::format("new scene '{}'", candidate->id));
+        host_.add_message(fmt::format("new scene '{}'", candidate->id));
         scenes_.add(candidate);
         // An IFS scene's source is generated, not a file to watch.
-        if (options_.dev && !candidate->ifs) watcher_.watch_file(candidate->source_name);
-        ++watched_changes_handled_;
+        if (dev_ && !candidate->ifs) watcher_.watch_file(candidate->source_name);
+        ++changes_handled_;
         return;
     }
     const std::shared_ptr<const Scene>& running = scenes_.at(*same_id);
     if (running->plugin_file != candidate->plugin_file) {
         spdlog::warn("{}: scene '{}' is already loaded from {}; ignored", file.string(),
                      candidate->id, running->plugin_file.string());
-        ++watched_changes_handled_;
+        ++changes_handled_;
         return;
     }
     const SceneSession* session = scenes_.session_of(*same_id);
     const uint64_t effects = session ? session->effects : candidate->effects;
     spdlog::info("{} changed: building the new '{}'", file.string(), candidate->id);
-    worker_->request_reload({candidate, running, effects});
+    host_.build({candidate, running, effects});
 }
 
-void ViewerApp::reload_source(const std::filesystem::path& file) {
+void HotReloader::reload_source(const std::filesystem::path& file) {
     std::string text;
     try {
         text = read_source_file(file);
     } catch (const std::runtime_error& error) {
-        add_message(error.what());
-        ++watched_changes_handled_;
+        host_.add_message(error.what());
+        ++changes_handled_;
         return;
     }
     for (size_t i = 0; i < scenes_.size(); ++i) {
@@ -107,15 +106,14 @@ void ViewerApp::reload_source(const std::filesystem::path& file) {
         const SceneSession* session = scenes_.session_of(i);
         const uint64_t effects = session ? session->effects : edited.effects;
         spdlog::info("{} changed: building the new '{}'", file.string(), edited.id);
-        worker_->request_reload(
-            {std::make_shared<const Scene>(std::move(edited)), scenes_.at(i), effects});
+        host_.build({std::make_shared<const Scene>(std::move(edited)), scenes_.at(i), effects});
     }
 }
 
-void ViewerApp::apply_reloads() {
-    for (const ReloadResult& result : worker_->take_reloads()) {
-        ++watched_changes_handled_;
-        if (adopt_hybrid_edit(result)) continue;
+void HotReloader::apply(const std::vector<ReloadResult>& results) {
+    for (const ReloadResult& result : results) {
+        ++changes_handled_;
+        if (host_.claim_edit(result)) continue;
         const std::optional<size_t> running = scenes_.index_of(result.request.replaces);
         if (!running) continue;  // replaced again meanwhile
         const std::string& id = result.request.candidate->id;
@@ -123,20 +121,15 @@ void ViewerApp::apply_reloads() {
             const std::string message = fmt::format(
                 "update of '{}' refused, keeping the previous version: {}", id, result.error);
             spdlog::error("{}", message);
-            add_message(message);
-            reload_error_ = {message, result.error_log};
+            host_.add_message(message);
+            host_.show_refused(message, result.error_log);
             continue;
         }
-        adopt_scene(*running, result.request.candidate);
-        reload_error_ = {};
+        host_.adopt_scene(*running, result.request.candidate);
+        host_.clear_refused();
         spdlog::info("reloaded '{}'", id);
-        add_message(fmt::format("reloaded '{}'", id));
+        host_.add_message(fmt::format("reloaded '{}'", id));
     }
-}
-
-void ViewerApp::adopt_scene(size_t index, const std::shared_ptr<const Scene>& scene) {
-    scenes_.replace(index, scene);
-    view_.scene_replaced();
 }
 
 }  // namespace fgr::viewer
