@@ -60,7 +60,8 @@ ViewerApp::ViewerApp(const ViewerOptions& options, std::vector<Scene> scenes)
       paths_(scenes_, options.camera_path_file, options.output_dir,
              [this](std::string message) { add_message(std::move(message)); }),
       input_(input_host()),
-      reloader_(scenes_, options.dev, reload_host()) {
+      reloader_(scenes_, options.dev, reload_host()),
+      hybrid_(scenes_, options.output_dir, hybrid_host()) {
     if (options.replay) {
         try {
             replay_events_ = load_replay(*options.replay);
@@ -222,7 +223,7 @@ void ViewerApp::adopt_scene(size_t index, const std::shared_ptr<const Scene>& sc
 ReloadHost ViewerApp::reload_host() {
     return {
         .build = [this](ReloadRequest request) { worker_->request_reload(std::move(request)); },
-        .claim_edit = [this](const ReloadResult& result) { return adopt_hybrid_edit(result); },
+        .claim_edit = [this](const ReloadResult& result) { return hybrid_.adopt_edit(result); },
         .adopt_scene = [this](size_t index,
                               std::shared_ptr<const Scene> scene) { adopt_scene(index, scene); },
         .show_refused =
@@ -230,6 +231,19 @@ ReloadHost ViewerApp::reload_host() {
                 reload_error_ = {std::move(summary), std::move(log)};
             },
         .clear_refused = [this] { reload_error_ = {}; },
+        .add_message = [this](std::string message) { add_message(std::move(message)); },
+    };
+}
+
+HybridHost ViewerApp::hybrid_host() {
+    return {
+        .build = [this](ReloadRequest request) { worker_->request_reload(std::move(request)); },
+        .adopt_scene = [this](size_t index,
+                              std::shared_ptr<const Scene> scene) { adopt_scene(index, scene); },
+        .show_refused =
+            [this](std::string summary, std::string log) {
+                reload_error_ = {std::move(summary), std::move(log)};
+            },
         .add_message = [this](std::string message) { add_message(std::move(message)); },
     };
 }
@@ -429,14 +443,14 @@ void ViewerApp::print_stats() {
     const FlyCamera& camera = session().camera;
     fmt::print("scene {}\n", scene().id);
     if (const FormulaScene* formula =
-            formula_scene_of(static_cast<size_t>(scenes_.current_index()))) {
+            hybrid_.formula_of(static_cast<size_t>(scenes_.current_index()))) {
         std::string sequence;
         for (const FormulaSlot& slot : formula->sequence) {
             sequence += fmt::format("{}{}*{}", sequence.empty() ? "" : " ", slot.formula->name,
                                     slot.repeat);
         }
         fmt::print("sequence {}\n", sequence);
-        fmt::print("hybrid_edits {}\n", hybrid_edits_);
+        fmt::print("hybrid_edits {}\n", hybrid_.edits_adopted());
     }
     stats_.print();
     fmt::print("camera_position {:.6g} {:.6g} {:.6g}\n", camera.position.x, camera.position.y,

@@ -39,6 +39,7 @@
 #include "fgr/viewer/viewer.hpp"
 #include "gl_handles.hpp"
 #include "hot_reloader.hpp"
+#include "hybrid_editor.hpp"
 #include "input_handler.hpp"
 #include "render_choices.hpp"
 #include "scene_set.hpp"
@@ -81,24 +82,15 @@ private:
     ReloadHost reload_host();
     void adopt_scene(size_t index, const std::shared_ptr<const Scene>& scene);
 
-    // The formula browser and the hybrid editor (viewer_formulas.cpp).
-    // The sequence of scene `index` when it is a formula scene (read from its file once, then
-    // what the hybrid editor made of it); null for other scenes and unreadable files.
-    const FormulaScene* formula_scene_of(size_t index);
+    // The hybrid editor.
+    HybridHost hybrid_host();
+
+    // The formula browser (viewer_formulas.cpp).
     std::vector<size_t> browser_matches();
     const std::string& thumbnail_key_of(size_t index);
     void receive_thumbnails();
     void draw_browser();
     void draw_thumbnail_cell(size_t index);
-    void draw_hybrid_section();
-    void draw_hybrid_slot(const FormulaScene& formula, size_t slot);
-    // Makes the edit of the current formula scene; the render thread builds the result, which
-    // replaces the scene once it compiles (apply_reloads), the old image staying meanwhile.
-    void edit_hybrid(const std::function<FormulaScene(FormulaScene)>& edit);
-    bool adopt_hybrid_edit(const ReloadResult& result);
-    // Writes the current formula scene, as edited and with the panel's values, as
-    // <output dir>/<id>.formula.json under the id `id`.
-    void save_formula_scene(const std::string& id);
     bool thumbnails_done();
     void apply_replay_formula_event(const ReplayEvent& event);
 
@@ -139,6 +131,7 @@ private:
     CameraPaths paths_;
     InputHandler input_;
     HotReloader reloader_;
+    HybridEditor hybrid_;
     std::vector<ReplayEvent> replay_events_;
 
     // Opened in run(); declared before everything that holds a texture, so the OpenGL context
@@ -176,21 +169,7 @@ private:
     std::map<std::string, std::unique_ptr<ImageTexture>> thumbnail_textures_;
     std::map<std::string, std::string> thumbnail_errors_;
     std::map<const Scene*, std::pair<std::shared_ptr<const Scene>, std::string>> thumbnail_keys_;
-    struct FormulaSource {
-        std::shared_ptr<const Scene> scene;
-        std::optional<FormulaScene> formula;  // none: not a formula scene, or unreadable
-    };
-    std::map<size_t, FormulaSource> formula_sources_;
     bool thumbnails_awaited_ = false;  // a replayed wait_thumbnails is holding the script
-    // The hybrid edit the render thread is building: the new scene and its sequence.
-    struct PendingHybrid {
-        std::shared_ptr<const Scene> scene;
-        FormulaScene formula;
-    };
-    std::optional<PendingHybrid> pending_hybrid_;
-    std::string hybrid_error_;  // the last edit that was refused, one line
-    std::string save_id_;       // the panel's "save as" id
-    int hybrid_edits_ = 0;      // adopted, for --stats
 
     ViewerStatistics stats_;
     // The window is drawn again only when something may have changed it (an input event, a new

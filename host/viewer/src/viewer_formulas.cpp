@@ -9,59 +9,22 @@
 
 #include <algorithm>
 
-#include "fgr/atomic_file.hpp"
-#include "fgr/formula_edit.hpp"
-#include "fgr/parameters.hpp"
 #include "viewer_app.hpp"
+#include "viewer_util.hpp"
 
 namespace fgr::viewer {
 namespace {
 
-const ImVec4 kCompilingColour(1, 0.8f, 0.2f, 1);
-const ImVec4 kErrorColour(1, 0.4f, 0.4f, 1);
 const ImVec4 kSelectedColour(1, 0.8f, 0.2f, 1);
 
-// "mandelbulb x2, amazing_box": the sequence as logs and --stats show it.
-std::string sequence_text(const FormulaScene& formula) {
-    std::string text;
-    for (const FormulaSlot& slot : formula.sequence) {
-        if (!text.empty()) text += ", ";
-        text += slot.formula->name;
-        if (slot.repeat > 1) text += fmt::format(" x{}", slot.repeat);
-    }
-    return text;
-}
-
 }  // namespace
-
-// --- Formula scenes ---------------------------------------------------------------------------
-
-const FormulaScene* ViewerApp::formula_scene_of(size_t index) {
-    const std::shared_ptr<const Scene>& scene = scenes_.at(index);
-    auto found = formula_sources_.find(index);
-    if (found == formula_sources_.end() || found->second.scene != scene) {
-        FormulaSource source{scene, std::nullopt};
-        if (!scene->ifs && is_formula_file_name(scene->plugin_file)) {
-            try {
-                source.formula = read_formula_file(scene->plugin_file);
-                // A file changed since the scene was loaded (its reload still to come) is not
-                // this scene's sequence.
-                if (formula_kernel_source(*source.formula) != scene->source) source.formula.reset();
-            } catch (const std::exception& error) {
-                spdlog::warn("{}", error.what());
-            }
-        }
-        found = formula_sources_.insert_or_assign(index, std::move(source)).first;
-    }
-    return found->second.formula ? &*found->second.formula : nullptr;
-}
 
 // --- The browser ------------------------------------------------------------------------------
 
 std::vector<size_t> ViewerApp::browser_matches() {
     std::vector<SceneSearchEntry> entries;
     for (size_t i = 0; i < scenes_.size(); ++i) {
-        entries.push_back(search_entry(*scenes_.at(i), formula_scene_of(i)));
+        entries.push_back(search_entry(*scenes_.at(i), hybrid_.formula_of(i)));
     }
     return matching_scenes(entries, browser_query_);
 }
@@ -154,7 +117,7 @@ void ViewerApp::draw_thumbnail_cell(size_t index) {
     if (ImGui::IsItemHovered()) {
         std::string tags;
         for (const std::string& tag : cell_scene.tags) tags += (tags.empty() ? "" : ", ") + tag;
-        const FormulaScene* formula = formula_scene_of(index);
+        const FormulaScene* formula = hybrid_.formula_of(index);
         ImGui::SetTooltip("%s (%s)\n%s%s%s%s%s", cell_scene.name.c_str(), cell_scene.id.c_str(),
                           cell_scene.description.c_str(),
                           tags.empty() ? "" : "\ntags: ", tags.c_str(),
@@ -167,182 +130,6 @@ void ViewerApp::draw_thumbnail_cell(size_t index) {
     ImGui::EndGroup();
     ImGui::PopID();
     if (clicked && !current) switch_scene(static_cast<int>(index));
-}
-
-// --- The hybrid editor ------------------------------------------------------------------------
-
-void ViewerApp::draw_hybrid_section() {
-    const FormulaScene* current = formula_scene_of(static_cast<size_t>(scenes_.current_index()));
-    if (current == nullptr) return;
-    if (!ImGui::CollapsingHeader("Formula sequence", ImGuiTreeNodeFlags_DefaultOpen)) return;
-    const FormulaScene formula = *current;  // an edit below replaces what `current` points to
-    ImGui::BeginDisabled(pending_hybrid_.has_value());
-    for (size_t slot = 0; slot < formula.sequence.size(); ++slot) draw_hybrid_slot(formula, slot);
-    const bool full = formula.sequence.size() >= kFormulaMaxSlots;
-    ImGui::BeginDisabled(full);
-    if (ImGui::BeginCombo("add formula", full ? "sequence full" : "choose...")) {
-        for (const Formula& candidate : formula_library()) {
-            const std::string label = fmt::format("{}  ({})", candidate.title, candidate.family);
-            if (ImGui::Selectable(label.c_str())) {
-                edit_hybrid(
-                    [&](FormulaScene f) { return with_formula_added(std::move(f), candidate); });
-            }
-            if (ImGui::IsItemHovered()) ImGui::SetTooltip("%s", candidate.summary.c_str());
-        }
-        ImGui::EndCombo();
-    }
-    ImGui::EndDisabled();
-    ImGui::EndDisabled();
-    if (pending_hybrid_) {
-        ImGui::TextColored(kCompilingColour, "compiling the new sequence... (the old image stays)");
-    }
-    if (!hybrid_error_.empty()) ImGui::TextColored(kErrorColour, "%s", hybrid_error_.c_str());
-    if (save_id_.empty()) save_id_ = scene().id + "-edited";
-    ImGui::InputText("##save id", &save_id_);
-    ImGui::SameLine();
-    if (ImGui::Button("Save as")) save_formula_scene(save_id_);
-    if (ImGui::IsItemHovered()) {
-        ImGui::SetTooltip(
-            "writes %s.formula.json to the output folder (--output-dir); copy it "
-            "into a plugin folder to load it",
-            save_id_.c_str());
-    }
-}
-
-void ViewerApp::save_formula_scene(const std::string& id) {
-    const FormulaScene* current = formula_scene_of(static_cast<size_t>(scenes_.current_index()));
-    if (current == nullptr) {
-        add_message(fmt::format("'{}' is not a formula scene: nothing to save", scene().id));
-        return;
-    }
-    FormulaScene formula = *current;
-    take_slot_values(formula, scene(), session().params);
-    formula.id = id;
-    // The panel's bailout and march settings, within what a file may say.
-    const auto value = [&](const char* param) {
-        return param_value(scene(), session().params, param);
-    };
-    formula.bailout = value("bailout");
-    formula.iterations =
-        std::clamp(static_cast<int>(value("iterations")), 1, kFormulaMaxIterations);
-    formula.march.step_factor = std::clamp(value("step_factor"), float(kFormulaMinStepFactor),
-                                           float(kFormulaMaxStepFactor));
-    formula.march.max_distance = std::clamp(value("max_distance"), float(kFormulaMinMaxDistance),
-                                            float(kFormulaMaxMaxDistance));
-    const std::filesystem::path file = options_.output_dir / (id + ".formula.json");
-    try {
-        const std::string text = formula_scene_json(formula);
-        parse_formula_json(text, file.string());  // an id the format refuses is said here
-        write_text_file_atomically(file, text);
-    } catch (const std::exception& error) {
-        spdlog::error("{}", error.what());
-        add_message(error.what());
-        return;
-    }
-    spdlog::info("saved '{}' ({}) as {}", id, sequence_text(formula), file.string());
-    add_message(fmt::format("saved {}", file.string()));
-}
-
-void ViewerApp::draw_hybrid_slot(const FormulaScene& formula, size_t slot) {
-    const size_t slots = formula.sequence.size();
-    ImGui::PushID(static_cast<int>(slot));
-    ImGui::Text("%zu. %s", slot + 1, formula.sequence[slot].formula->title.c_str());
-    if (ImGui::IsItemHovered()) {
-        ImGui::SetTooltip("%s: %s", formula.sequence[slot].formula->name.c_str(),
-                          formula.sequence[slot].formula->summary.c_str());
-    }
-    int repeat = formula.sequence[slot].repeat;
-    ImGui::SetNextItemWidth(90);
-    if (ImGui::InputInt("x", &repeat, 1, 1, ImGuiInputTextFlags_EnterReturnsTrue)) {
-        repeat = std::clamp(repeat, 1, kFormulaMaxRepeat);
-        if (repeat != formula.sequence[slot].repeat) {
-            edit_hybrid([&](FormulaScene f) { return with_repeat(std::move(f), slot, repeat); });
-        }
-    }
-    ImGui::SameLine();
-    ImGui::BeginDisabled(slot == 0);
-    if (ImGui::ArrowButton("up", ImGuiDir_Up)) {
-        edit_hybrid([&](FormulaScene f) { return with_slot_moved(std::move(f), slot, -1); });
-    }
-    ImGui::EndDisabled();
-    ImGui::SameLine();
-    ImGui::BeginDisabled(slot + 1 == slots);
-    if (ImGui::ArrowButton("down", ImGuiDir_Down)) {
-        edit_hybrid([&](FormulaScene f) { return with_slot_moved(std::move(f), slot, 1); });
-    }
-    ImGui::EndDisabled();
-    ImGui::SameLine();
-    ImGui::BeginDisabled(slots == 1);
-    if (ImGui::SmallButton("remove")) {
-        edit_hybrid([&](FormulaScene f) { return with_slot_removed(std::move(f), slot); });
-    }
-    ImGui::EndDisabled();
-    ImGui::PopID();
-}
-
-void ViewerApp::edit_hybrid(const std::function<FormulaScene(FormulaScene)>& edit) {
-    const auto index = static_cast<size_t>(scenes_.current_index());
-    if (pending_hybrid_) {
-        add_message("the last edit of the sequence is still compiling; try again when it is done");
-        return;
-    }
-    const FormulaScene* current = formula_scene_of(index);
-    if (current == nullptr) {
-        add_message(
-            fmt::format("'{}' is not a formula scene: it has no sequence to edit", scene().id));
-        return;
-    }
-    FormulaScene formula = *current;
-    take_slot_values(formula, scene(), session().params);
-    std::shared_ptr<const Scene> candidate;
-    try {
-        formula = edit(std::move(formula));
-        candidate =
-            std::make_shared<const Scene>(formula_scene_to_scene(formula, scene().plugin_file));
-    } catch (const std::exception& error) {
-        hybrid_error_ = fmt::format("edit of '{}' refused: {}", scene().id, error.what());
-        spdlog::error("{}", hybrid_error_);
-        add_message(hybrid_error_);
-        return;
-    }
-    spdlog::info("building the edited '{}': {}", candidate->id, sequence_text(formula));
-    hybrid_error_.clear();
-    pending_hybrid_ = PendingHybrid{candidate, std::move(formula)};
-    worker_->request_reload({candidate, scenes_.at(index), session().effects});
-}
-
-// Takes the render thread's verdict on the pending edit; false when `result` is not about it.
-bool ViewerApp::adopt_hybrid_edit(const ReloadResult& result) {
-    if (!pending_hybrid_ || result.request.candidate != pending_hybrid_->scene) return false;
-    PendingHybrid edit = std::move(*pending_hybrid_);
-    pending_hybrid_.reset();
-    const std::optional<size_t> index = scenes_.index_of(result.request.replaces);
-    if (!index) {
-        hybrid_error_ =
-            fmt::format("edit of '{}' dropped: the scene was reloaded meanwhile", edit.scene->id);
-        add_message(hybrid_error_);
-        return true;
-    }
-    if (!result.ok) {
-        hybrid_error_ = fmt::format("edit of '{}' refused, keeping the previous sequence: {}",
-                                    edit.scene->id, result.error);
-        spdlog::error("{}", hybrid_error_);
-        add_message(hybrid_error_);
-        reload_error_ = {hybrid_error_, result.error_log};
-        return true;
-    }
-    const std::shared_ptr<const Scene> before = scenes_.at(*index);
-    const SceneSession* session = scenes_.session_of(*index);
-    const std::vector<float> values = session ? session->params : default_param_values(*before);
-    adopt_scene(*index, edit.scene);
-    if (SceneSession* adopted = scenes_.session_of(*index)) {
-        adopted->params = values_after_edit(*before, values, *edit.scene, edit.formula);
-    }
-    spdlog::info("'{}' now iterates {}", edit.scene->id, sequence_text(edit.formula));
-    add_message(fmt::format("sequence: {}", sequence_text(edit.formula)));
-    formula_sources_.insert_or_assign(*index, FormulaSource{edit.scene, std::move(edit.formula)});
-    ++hybrid_edits_;
-    return true;
 }
 
 // --- Replayed browser and editor events -------------------------------------------------------
@@ -371,32 +158,12 @@ void ViewerApp::apply_replay_formula_event(const ReplayEvent& event) {
         case ReplayAction::WaitThumbnails:
             thumbnails_awaited_ = true;
             break;
-        case ReplayAction::HybridAdd: {
-            const Formula* formula = find_formula(event.text);
-            if (formula == nullptr) {
-                replay_error(fmt::format("hybrid_add: unknown formula '{}'", event.text));
-                break;
-            }
-            edit_hybrid([&](FormulaScene f) { return with_formula_added(std::move(f), *formula); });
-            break;
-        }
+        case ReplayAction::HybridAdd:
         case ReplayAction::HybridRemove:
-            edit_hybrid([&](FormulaScene f) {
-                return with_slot_removed(std::move(f), size_t(event.slot));
-            });
-            break;
         case ReplayAction::HybridMove:
-            edit_hybrid([&](FormulaScene f) {
-                return with_slot_moved(std::move(f), size_t(event.slot), event.count);
-            });
-            break;
         case ReplayAction::HybridRepeat:
-            edit_hybrid([&](FormulaScene f) {
-                return with_repeat(std::move(f), size_t(event.slot), event.count);
-            });
-            break;
         case ReplayAction::HybridSave:
-            save_formula_scene(event.text);
+            hybrid_.apply_replay_event(event);
             break;
         default:
             break;

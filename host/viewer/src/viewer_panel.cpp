@@ -135,7 +135,7 @@ void ViewerApp::draw_panel() {
                 ImGui::GetIO().Framerate);
     ImGui::PushItemWidth(-150);
     draw_scene_section();
-    draw_hybrid_section();
+    hybrid_.draw_section();
     draw_camera_section();
     draw_projection_section();
     draw_params_section();

@@ -1,9 +1,12 @@
 #pragma once
 // Small helpers the viewer's parts share. Private to fgr_viewer.
 
+#include <fmt/format.h>
+
 #include <ctime>
 #include <string>
 
+#include "fgr/formulas.hpp"
 #include "fgr/precision.hpp"
 
 namespace fgr::viewer {
@@ -21,6 +24,17 @@ inline std::string file_timestamp() {
     localtime_r(&now, &local);
     char text[32];
     std::strftime(text, sizeof text, "%Y%m%d-%H%M%S", &local);
+    return text;
+}
+
+// "mandelbulb x2, amazing_box": a formula scene's sequence as logs and tooltips show it.
+inline std::string sequence_text(const FormulaScene& formula) {
+    std::string text;
+    for (const FormulaSlot& slot : formula.sequence) {
+        if (!text.empty()) text += ", ";
+        text += slot.formula->name;
+        if (slot.repeat > 1) text += fmt::format(" x{}", slot.repeat);
+    }
     return text;
 }
 
