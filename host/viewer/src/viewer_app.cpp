@@ -61,7 +61,8 @@ ViewerApp::ViewerApp(const ViewerOptions& options, std::vector<Scene> scenes)
              [this](std::string message) { add_message(std::move(message)); }),
       input_(input_host()),
       reloader_(scenes_, options.dev, reload_host()),
-      hybrid_(scenes_, options.output_dir, hybrid_host()) {
+      hybrid_(scenes_, options.output_dir, hybrid_host()),
+      browser_(scenes_, browser_host()) {
     if (options.replay) {
         try {
             replay_events_ = load_replay(*options.replay);
@@ -113,8 +114,7 @@ int ViewerApp::run() {
     // --precision double on a device without it fails here, as `fgr render` does.
     use_double_precision(choices_.precision, session().camera.to_view(), options_.width,
                          worker_->device_info());
-    thumbnails_ = std::make_unique<ThumbnailWorker>(options_.device, options_.packet_width,
-                                                    default_thumbnail_directory());
+    browser_.start_thumbnails(options_.device, options_.packet_width);
     reloader_.watch();
     spdlog::info("viewer on {}; press H for the key bindings", worker_->device_info().name);
     if (!replay_events_.empty()) replay_ = std::make_unique<ReplayClock>(replay_events_);
@@ -136,7 +136,9 @@ int ViewerApp::run() {
         input_.fly(dt, status_.de_at_camera);
         submit_view();
         receive_frame();
-        receive_thumbnails();
+        if (browser_.receive_thumbnails(view_idle())) {
+            redraws_pending_ = std::max(redraws_pending_, 1);
+        }
         for (std::string& message : worker_->take_messages()) add_message(std::move(message));
         reloader_.poll(seconds_since(start_));
         if (redraws_pending_ > 0 || seconds_since(last_draw_) >= kMaxUndrawnSeconds) {
@@ -155,7 +157,7 @@ int ViewerApp::run() {
     if (const int pending = worker_->status().pending_screenshots; pending > 0) {
         spdlog::info("finishing {} screenshot(s) before exit", pending);
     }
-    thumbnails_.reset();  // finishes the thumbnail it is making
+    browser_.stop_thumbnails();
     worker_->stop();
     for (std::string& message : worker_->take_messages()) add_message(std::move(message));
     if (options_.print_stats) print_stats();
@@ -210,7 +212,7 @@ void ViewerApp::run_command(ViewerCommand command) {
             window_.toggle_fullscreen();
             break;
         case ViewerCommand::ToggleBrowser:
-            show_browser_ = !show_browser_;
+            browser_.toggle();
             break;
     }
 }
@@ -248,6 +250,14 @@ HybridHost ViewerApp::hybrid_host() {
     };
 }
 
+BrowserHost ViewerApp::browser_host() {
+    return {
+        .formula_of = [this](size_t index) { return hybrid_.formula_of(index); },
+        .switch_scene = [this](int index) { switch_scene(index); },
+        .add_message = [this](std::string message) { add_message(std::move(message)); },
+    };
+}
+
 InputHost ViewerApp::input_host() {
     return {
         .run = [this](ViewerCommand command) { run_command(command); },
@@ -261,7 +271,7 @@ void ViewerApp::feed_replay() {
     if (!replay_) return;
     const double now = seconds_since(start_);
     if (replay_->waiting()) {
-        const bool still_waiting = thumbnails_awaited_ ? !thumbnails_done()
+        const bool still_waiting = thumbnails_awaited_ ? !browser_.thumbnails_done()
                                    : awaited_changes_
                                        ? reloader_.changes_handled() <= *awaited_changes_
                                        : !view_idle();
@@ -340,13 +350,17 @@ void ViewerApp::push_replay_event(const ReplayEvent& event) {
             break;
         case ReplayAction::BrowserSearch:
         case ReplayAction::BrowserPick:
+            browser_.apply_replay_event(event);
+            break;
         case ReplayAction::WaitThumbnails:
+            thumbnails_awaited_ = true;
+            break;
         case ReplayAction::HybridAdd:
         case ReplayAction::HybridRemove:
         case ReplayAction::HybridMove:
         case ReplayAction::HybridRepeat:
         case ReplayAction::HybridSave:
-            apply_replay_formula_event(event);
+            hybrid_.apply_replay_event(event);
             break;
     }
 }

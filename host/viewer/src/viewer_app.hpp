@@ -37,6 +37,7 @@
 #include "fgr/viewer/scene_search.hpp"
 #include "fgr/viewer/thumbnails.hpp"
 #include "fgr/viewer/viewer.hpp"
+#include "formula_browser.hpp"
 #include "gl_handles.hpp"
 #include "hot_reloader.hpp"
 #include "hybrid_editor.hpp"
@@ -85,14 +86,8 @@ private:
     // The hybrid editor.
     HybridHost hybrid_host();
 
-    // The formula browser (viewer_formulas.cpp).
-    std::vector<size_t> browser_matches();
-    const std::string& thumbnail_key_of(size_t index);
-    void receive_thumbnails();
-    void draw_browser();
-    void draw_thumbnail_cell(size_t index);
-    bool thumbnails_done();
-    void apply_replay_formula_event(const ReplayEvent& event);
+    // The formula browser.
+    BrowserHost browser_host();
 
     // Actions.
     void switch_scene(int index);
@@ -117,7 +112,6 @@ private:
     void draw_messages();
     void draw_help();
     void draw_build_error();
-    void draw_browser_window();
 
     const Scene& scene() const { return scenes_.current(); }
     SceneSession& session() { return scenes_.session(); }
@@ -125,6 +119,12 @@ private:
     void print_stats();
 
     ViewerOptions options_;
+    // Opened in run(); declared before everything that holds a texture, so that the OpenGL context
+    // outlives them.
+    ViewerWindow window_;
+    std::unique_ptr<ImageTexture> texture_;
+    std::unique_ptr<RenderWorker> worker_;
+
     SceneSet scenes_;
     RenderChoices choices_;
     SceneEnvironments environments_;
@@ -132,13 +132,9 @@ private:
     InputHandler input_;
     HotReloader reloader_;
     HybridEditor hybrid_;
+    FormulaBrowser browser_;
     std::vector<ReplayEvent> replay_events_;
 
-    // Opened in run(); declared before everything that holds a texture, so the OpenGL context
-    // outlives them.
-    ViewerWindow window_;
-    std::unique_ptr<ImageTexture> texture_;
-    std::unique_ptr<RenderWorker> worker_;
     std::unique_ptr<ReplayClock> replay_;
 
     std::chrono::steady_clock::time_point start_;
@@ -161,14 +157,6 @@ private:
     // The window size a replayed resize asked for: the view is not idle until it has it.
     std::optional<std::pair<int, int>> replay_window_size_;
 
-    // The formula browser: its search, the thumbnails' textures by key, and the sequences of
-    // formula scenes (with the scene version each belongs to: a reload makes it stale).
-    std::unique_ptr<ThumbnailWorker> thumbnails_;
-    bool show_browser_ = false;
-    std::string browser_query_;
-    std::map<std::string, std::unique_ptr<ImageTexture>> thumbnail_textures_;
-    std::map<std::string, std::string> thumbnail_errors_;
-    std::map<const Scene*, std::pair<std::shared_ptr<const Scene>, std::string>> thumbnail_keys_;
     bool thumbnails_awaited_ = false;  // a replayed wait_thumbnails is holding the script
 
     ViewerStatistics stats_;

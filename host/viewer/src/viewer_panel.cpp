@@ -61,7 +61,7 @@ void ViewerApp::draw_ui() {
     } else {
         panel_min_ = panel_max_ = ImVec2(0, 0);
     }
-    draw_browser_window();
+    browser_.draw_window();
     draw_build_error();
     if (show_help_) draw_help();
     ImGui::Render();
@@ -149,8 +149,8 @@ void ViewerApp::draw_panel() {
 
 void ViewerApp::draw_scene_section() {
     if (!ImGui::CollapsingHeader("Scene", ImGuiTreeNodeFlags_DefaultOpen)) return;
-    if (ImGui::Button(show_browser_ ? "Hide the formula browser (B)" : "Formula browser (B)")) {
-        show_browser_ = !show_browser_;
+    if (ImGui::Button(browser_.shown() ? "Hide the formula browser (B)" : "Formula browser (B)")) {
+        browser_.toggle();
     }
     // A list of its own that scrolls: with the formula scenes there are fifty, and the sections
     // below must stay in reach.
