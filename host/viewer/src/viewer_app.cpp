@@ -26,31 +26,6 @@ constexpr double kUiFrameSeconds = 1.0 / 60.0;
 constexpr double kMaxUndrawnSeconds = 0.1;
 constexpr size_t kMessagesKept = 6;
 
-SDL_Scancode scancode_named(const std::string& name) {
-    return SDL_GetScancodeFromName(name.c_str());
-}
-
-// Replay scripts are checked before the window opens, so a typo fails fast.
-void check_replay_keys(const std::vector<ReplayEvent>& events, const std::string& file) {
-    for (const ReplayEvent& event : events) {
-        const bool is_key = event.action == ReplayAction::KeyDown ||
-                            event.action == ReplayAction::KeyUp ||
-                            event.action == ReplayAction::KeyPress;
-        if (is_key && scancode_named(event.key) == SDL_SCANCODE_UNKNOWN) {
-            throw UsageError(
-                fmt::format("{}:{}: unknown key '{}' (SDL key names: W, F12, "
-                            "PageDown, Left_Shift...)",
-                            file, event.line, event.key));
-        }
-        if (event.action == ReplayAction::HybridAdd && find_formula(event.text) == nullptr) {
-            throw UsageError(
-                fmt::format("{}:{}: unknown formula '{}' (`fgr list --formulas` "
-                            "names them)",
-                            file, event.line, event.text));
-        }
-    }
-}
-
 }  // namespace
 
 ViewerApp::ViewerApp(const ViewerOptions& options, std::vector<Scene> scenes)
@@ -64,12 +39,8 @@ ViewerApp::ViewerApp(const ViewerOptions& options, std::vector<Scene> scenes)
       hybrid_(scenes_, options.output_dir, hybrid_host()),
       browser_(scenes_, browser_host()) {
     if (options.replay) {
-        try {
-            replay_events_ = load_replay(*options.replay);
-        } catch (const std::runtime_error& error) {
-            throw UsageError(error.what());
-        }
-        check_replay_keys(replay_events_, options.replay->string());
+        std::vector<ReplayEvent> events = ReplayDriver::load(*options.replay);
+        if (!events.empty()) replay_.emplace(std::move(events), replay_host());
     }
     prepare_first_scene();
 }
@@ -117,7 +88,6 @@ int ViewerApp::run() {
     browser_.start_thumbnails(options_.device, options_.packet_width);
     reloader_.watch();
     spdlog::info("viewer on {}; press H for the key bindings", worker_->device_info().name);
-    if (!replay_events_.empty()) replay_ = std::make_unique<ReplayClock>(replay_events_);
     start_ = std::chrono::steady_clock::now();
     auto previous = start_;
     while (!quit_) {
@@ -130,7 +100,7 @@ int ViewerApp::run() {
         // Before the idle check: a swapped-in scene is not refined yet.
         reloader_.apply(worker_->take_reloads());
         log_refined_view();
-        feed_replay();
+        if (replay_) replay_->feed(seconds_since(start_));
         if (input_.pump_events()) redraws_pending_ = 2;  // ImGui settles a change over two frames
         paths_.advance(dt);
         input_.fly(dt, status_.de_at_camera);
@@ -258,6 +228,20 @@ BrowserHost ViewerApp::browser_host() {
     };
 }
 
+ReplayHost ViewerApp::replay_host() {
+    return {
+        .window_size = [this] { return window_.size(); },
+        .window_id = [this] { return window_.id(); },
+        .resize_window = [this](int width, int height) { window_.set_size(width, height); },
+        .view_idle = [this] { return view_idle(); },
+        .thumbnails_done = [this] { return browser_.thumbnails_done(); },
+        .changes_handled = [this] { return reloader_.changes_handled(); },
+        .quit = [this] { quit_ = true; },
+        .browser_event = [this](const ReplayEvent& event) { browser_.apply_replay_event(event); },
+        .editor_event = [this](const ReplayEvent& event) { hybrid_.apply_replay_event(event); },
+    };
+}
+
 InputHost ViewerApp::input_host() {
     return {
         .run = [this](ViewerCommand command) { run_command(command); },
@@ -265,104 +249,6 @@ InputHost ViewerApp::input_host() {
         .camera = [this]() -> FlyCamera& { return session().camera; },
         .took_camera = [this] { paths_.stop(); },
     };
-}
-
-void ViewerApp::feed_replay() {
-    if (!replay_) return;
-    const double now = seconds_since(start_);
-    if (replay_->waiting()) {
-        const bool still_waiting = thumbnails_awaited_ ? !browser_.thumbnails_done()
-                                   : awaited_changes_
-                                       ? reloader_.changes_handled() <= *awaited_changes_
-                                       : !view_idle();
-        if (still_waiting) return;
-        thumbnails_awaited_ = false;
-        awaited_changes_.reset();
-        replay_window_size_.reset();
-        replay_->resume(now);
-    }
-    for (const ReplayEvent& event : replay_->due(now)) push_replay_event(event);
-}
-
-void ViewerApp::push_replay_event(const ReplayEvent& event) {
-    const auto [width, height] = window_.size();
-    SDL_Event sdl{};
-    const Uint32 window_id = window_.id();
-    switch (event.action) {
-        case ReplayAction::KeyDown:
-        case ReplayAction::KeyUp:
-        case ReplayAction::KeyPress: {
-            const SDL_Scancode code = scancode_named(event.key);
-            sdl.key.windowID = window_id;
-            sdl.key.keysym.scancode = code;
-            sdl.key.keysym.sym = SDL_GetKeyFromScancode(code);
-            if (event.action != ReplayAction::KeyUp) {
-                sdl.type = SDL_KEYDOWN;
-                sdl.key.state = SDL_PRESSED;
-                SDL_PushEvent(&sdl);
-            }
-            if (event.action != ReplayAction::KeyDown) {
-                sdl.type = SDL_KEYUP;
-                sdl.key.state = SDL_RELEASED;
-                SDL_PushEvent(&sdl);
-            }
-            break;
-        }
-        case ReplayAction::MouseDown:
-        case ReplayAction::MouseUp:
-            sdl.type =
-                event.action == ReplayAction::MouseDown ? SDL_MOUSEBUTTONDOWN : SDL_MOUSEBUTTONUP;
-            sdl.button.windowID = window_id;
-            sdl.button.button = static_cast<Uint8>(event.button);
-            sdl.button.state = event.action == ReplayAction::MouseDown ? SDL_PRESSED : SDL_RELEASED;
-            sdl.button.clicks = 1;
-            sdl.button.x = event.has_position ? event.x : width / 2;
-            sdl.button.y = event.has_position ? event.y : height / 2;
-            SDL_PushEvent(&sdl);
-            break;
-        case ReplayAction::MouseMove:
-            sdl.type = SDL_MOUSEMOTION;
-            sdl.motion.windowID = window_id;
-            sdl.motion.x = width / 2;
-            sdl.motion.y = height / 2;
-            sdl.motion.xrel = event.x;
-            sdl.motion.yrel = event.y;
-            SDL_PushEvent(&sdl);
-            break;
-        case ReplayAction::Wheel:
-            sdl.type = SDL_MOUSEWHEEL;
-            sdl.wheel.windowID = window_id;
-            sdl.wheel.y = event.wheel;
-            sdl.wheel.direction = SDL_MOUSEWHEEL_NORMAL;
-            SDL_PushEvent(&sdl);
-            break;
-        case ReplayAction::Resize:
-            window_.set_size(event.x, event.y);
-            replay_window_size_ = {event.x, event.y};
-            break;
-        case ReplayAction::WaitIdle:
-            break;  // the clock holds the script until view_idle()
-        case ReplayAction::WaitReload:
-            awaited_changes_ = reloader_.changes_handled();
-            break;
-        case ReplayAction::Quit:
-            quit_ = true;
-            break;
-        case ReplayAction::BrowserSearch:
-        case ReplayAction::BrowserPick:
-            browser_.apply_replay_event(event);
-            break;
-        case ReplayAction::WaitThumbnails:
-            thumbnails_awaited_ = true;
-            break;
-        case ReplayAction::HybridAdd:
-        case ReplayAction::HybridRemove:
-        case ReplayAction::HybridMove:
-        case ReplayAction::HybridRepeat:
-        case ReplayAction::HybridSave:
-            hybrid_.apply_replay_event(event);
-            break;
-    }
 }
 
 // --- Per-frame updates -----------------------------------------------------------------------
@@ -409,7 +295,7 @@ void ViewerApp::log_refined_view() {
 }
 
 bool ViewerApp::view_idle() const {
-    if (replay_window_size_ && window_.size() != *replay_window_size_) return false;
+    if (replay_ && replay_->window_size_pending()) return false;
     return view_.refined(status_);
 }
 

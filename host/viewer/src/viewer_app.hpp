@@ -43,6 +43,7 @@
 #include "hybrid_editor.hpp"
 #include "input_handler.hpp"
 #include "render_choices.hpp"
+#include "replay_driver.hpp"
 #include "scene_set.hpp"
 #include "view_tracker.hpp"
 #include "viewer_statistics.hpp"
@@ -69,8 +70,7 @@ private:
     // Input.
     void run_command(ViewerCommand command);
     InputHost input_host();
-    void feed_replay();
-    void push_replay_event(const ReplayEvent& event);
+    ReplayHost replay_host();
     bool over_ui(int x, int y) const;
 
     // Per-frame updates.
@@ -133,9 +133,7 @@ private:
     HotReloader reloader_;
     HybridEditor hybrid_;
     FormulaBrowser browser_;
-    std::vector<ReplayEvent> replay_events_;
-
-    std::unique_ptr<ReplayClock> replay_;
+    std::optional<ReplayDriver> replay_;  // with --replay
 
     std::chrono::steady_clock::time_point start_;
     bool quit_ = false;
@@ -151,13 +149,6 @@ private:
     std::deque<std::string> messages_;
     std::set<std::filesystem::path> screenshot_files_;
     std::pair<std::string, std::string> reload_error_;  // a refused update: summary, log
-    // The count of changes to watched files dealt with when a replayed wait_reload began: the
-    // script goes on once it has grown.
-    std::optional<uint64_t> awaited_changes_;
-    // The window size a replayed resize asked for: the view is not idle until it has it.
-    std::optional<std::pair<int, int>> replay_window_size_;
-
-    bool thumbnails_awaited_ = false;  // a replayed wait_thumbnails is holding the script
 
     ViewerStatistics stats_;
     // The window is drawn again only when something may have changed it (an input event, a new
