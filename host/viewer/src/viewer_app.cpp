@@ -37,7 +37,8 @@ ViewerApp::ViewerApp(const ViewerOptions& options, std::vector<Scene> scenes)
       input_(input_host()),
       reloader_(scenes_, options.dev, reload_host()),
       hybrid_(scenes_, options.output_dir, hybrid_host()),
-      browser_(scenes_, browser_host()) {
+      browser_(scenes_, browser_host()),
+      panel_(scenes_, choices_, paths_, window_, panel_host()) {
     if (options.replay) {
         std::vector<ReplayEvent> events = ReplayDriver::load(*options.replay);
         if (!events.empty()) replay_.emplace(std::move(events), replay_host());
@@ -112,7 +113,7 @@ int ViewerApp::run() {
         for (std::string& message : worker_->take_messages()) add_message(std::move(message));
         reloader_.poll(seconds_since(start_));
         if (redraws_pending_ > 0 || seconds_since(last_draw_) >= kMaxUndrawnSeconds) {
-            draw_ui();
+            draw_frame();
             redraws_pending_ = std::max(redraws_pending_ - 1, 0);
             last_draw_ = std::chrono::steady_clock::now();
         }
@@ -135,12 +136,6 @@ int ViewerApp::run() {
 }
 
 // --- Input -------------------------------------------------------------------------------------
-
-bool ViewerApp::over_ui(int x, int y) const {
-    const auto fx = static_cast<float>(x), fy = static_cast<float>(y);
-    return show_panel_ && fx >= panel_min_.x && fx < panel_max_.x && fy >= panel_min_.y &&
-           fy < panel_max_.y;
-}
 
 void ViewerApp::run_command(ViewerCommand command) {
     switch (command) {
@@ -173,10 +168,10 @@ void ViewerApp::run_command(ViewerCommand command) {
             take_screenshot();
             break;
         case ViewerCommand::ToggleHelp:
-            show_help_ = !show_help_;
+            panel_.toggle_help();
             break;
         case ViewerCommand::TogglePanel:
-            show_panel_ = !show_panel_;
+            panel_.toggle_panel();
             break;
         case ViewerCommand::ToggleFullscreen:
             window_.toggle_fullscreen();
@@ -200,9 +195,9 @@ ReloadHost ViewerApp::reload_host() {
                               std::shared_ptr<const Scene> scene) { adopt_scene(index, scene); },
         .show_refused =
             [this](std::string summary, std::string log) {
-                reload_error_ = {std::move(summary), std::move(log)};
+                panel_.show_refused_update(std::move(summary), std::move(log));
             },
-        .clear_refused = [this] { reload_error_ = {}; },
+        .clear_refused = [this] { panel_.clear_refused_update(); },
         .add_message = [this](std::string message) { add_message(std::move(message)); },
     };
 }
@@ -214,7 +209,7 @@ HybridHost ViewerApp::hybrid_host() {
                               std::shared_ptr<const Scene> scene) { adopt_scene(index, scene); },
         .show_refused =
             [this](std::string summary, std::string log) {
-                reload_error_ = {std::move(summary), std::move(log)};
+                panel_.show_refused_update(std::move(summary), std::move(log));
             },
         .add_message = [this](std::string message) { add_message(std::move(message)); },
     };
@@ -242,10 +237,39 @@ ReplayHost ViewerApp::replay_host() {
     };
 }
 
+PanelHost ViewerApp::panel_host() {
+    return {
+        .switch_scene = [this](int index) { switch_scene(index); },
+        .reset_camera = [this](int camera_index) { reset_camera(camera_index); },
+        .take_screenshot = [this] { take_screenshot(); },
+        .quality_changed = [this] { worker_->set_quality(choices_.quality); },
+        .environment_changed = [this] { environments_.clear(); },
+        .fly_speed = [this] { return input_.speed_factor(); },
+        .set_fly_speed = [this](float factor) { input_.set_speed_factor(factor); },
+        .browser_shown = [this] { return browser_.shown(); },
+        .toggle_browser = [this] { browser_.toggle(); },
+        .draw_formula_sequence = [this] { hybrid_.draw_section(); },
+    };
+}
+
+void ViewerApp::draw_frame() {
+    window_.begin_frame();
+    if (!texture_->empty()) {
+        ImGui::GetBackgroundDrawList()->AddImage(texture_->id(), ImVec2(0, 0),
+                                                 ImGui::GetIO().DisplaySize);
+    }
+    const ViewReport report{view_.last(), shown_, status_, worker_->device_info(), messages_};
+    panel_.draw_overlay(report);
+    panel_.draw_panel(report);
+    browser_.draw_window();
+    panel_.draw_dialogs(status_);
+    window_.end_frame();
+}
+
 InputHost ViewerApp::input_host() {
     return {
         .run = [this](ViewerCommand command) { run_command(command); },
-        .over_panel = [this](int x, int y) { return over_ui(x, y); },
+        .over_panel = [this](int x, int y) { return panel_.covers(x, y); },
         .camera = [this]() -> FlyCamera& { return session().camera; },
         .took_camera = [this] { paths_.stop(); },
     };
@@ -310,7 +334,7 @@ void ViewerApp::add_message(std::string message) {
 void ViewerApp::switch_scene(int index) {
     paths_.stop();
     scenes_.select(index);
-    scene_list_follows_ = true;
+    panel_.follow_current_scene();
     spdlog::info("scene '{}'", scene().id);
 }
 

@@ -46,6 +46,7 @@
 #include "replay_driver.hpp"
 #include "scene_set.hpp"
 #include "view_tracker.hpp"
+#include "viewer_panel.hpp"
 #include "viewer_statistics.hpp"
 #include "viewer_util.hpp"
 #include "viewer_window.hpp"
@@ -71,7 +72,6 @@ private:
     void run_command(ViewerCommand command);
     InputHost input_host();
     ReplayHost replay_host();
-    bool over_ui(int x, int y) const;
 
     // Per-frame updates.
     void submit_view();
@@ -96,22 +96,8 @@ private:
     void add_message(std::string message);
 
     // The panel.
-    void draw_ui();
-    void draw_image();
-    void draw_status_overlay();
-    void draw_panel();
-    void draw_scene_section();
-    void draw_camera_section();
-    void draw_params_section();
-    void draw_effects_section();
-    void draw_quality_section();
-    void draw_precision_combo();
-    void draw_mode_section();
-    void draw_projection_section();
-    bool draw_environment_controls();
-    void draw_messages();
-    void draw_help();
-    void draw_build_error();
+    PanelHost panel_host();
+    void draw_frame();
 
     const Scene& scene() const { return scenes_.current(); }
     SceneSession& session() { return scenes_.session(); }
@@ -133,22 +119,18 @@ private:
     HotReloader reloader_;
     HybridEditor hybrid_;
     FormulaBrowser browser_;
+    ViewerPanel panel_;
     std::optional<ReplayDriver> replay_;  // with --replay
 
     std::chrono::steady_clock::time_point start_;
     bool quit_ = false;
-    bool show_panel_ = true;
-    bool show_help_ = false;
-    bool scene_list_follows_ = true;  // the panel's scene list scrolls to the current scene
 
     ViewTracker view_;
     WorkerStatus status_;
     bool was_idle_ = false;
     std::optional<DisplayFrame> shown_;  // image data lives in the texture; this keeps its facts
-    ImVec2 panel_min_{0, 0}, panel_max_{0, 0};
     std::deque<std::string> messages_;
     std::set<std::filesystem::path> screenshot_files_;
-    std::pair<std::string, std::string> reload_error_;  // a refused update: summary, log
 
     ViewerStatistics stats_;
     // The window is drawn again only when something may have changed it (an input event, a new

@@ -36,6 +36,22 @@ std::pair<int, int> ViewerWindow::drawable_size() const {
     return {width, height};
 }
 
+void ViewerWindow::begin_frame() {
+    ImGui_ImplOpenGL2_NewFrame();
+    ImGui_ImplSDL2_NewFrame();
+    ImGui::NewFrame();
+}
+
+void ViewerWindow::end_frame() {
+    ImGui::Render();
+    const auto [width, height] = drawable_size();
+    glViewport(0, 0, width, height);
+    glClearColor(0.0f, 0.0f, 0.0f, 1.0f);
+    glClear(GL_COLOR_BUFFER_BIT);
+    ImGui_ImplOpenGL2_RenderDrawData(ImGui::GetDrawData());
+    SDL_GL_SwapWindow(window_.get());
+}
+
 void ViewerWindow::toggle_fullscreen() {
     fullscreen_ = !fullscreen_;
     SDL_SetWindowFullscreen(window_.get(), fullscreen_ ? SDL_WINDOW_FULLSCREEN_DESKTOP : 0);

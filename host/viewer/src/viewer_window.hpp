@@ -20,8 +20,9 @@ public:
     std::pair<int, int> size() const;
     // In pixels: the size the image renders at.
     std::pair<int, int> drawable_size() const;
-    // Shows what was drawn since the last swap.
-    void swap() { SDL_GL_SwapWindow(window_.get()); }
+    // A Dear ImGui frame: begin it, build its windows, then end it, which draws and shows it.
+    void begin_frame();
+    void end_frame();
 
     bool fullscreen() const { return fullscreen_; }
     void toggle_fullscreen();
