@@ -1,20 +1,22 @@
-// The viewer's window thread: the SDL2 window and input, the fly camera, camera paths,
-// screenshots and the hand-over of view states to the render thread (render_worker.cpp).
 #include "viewer_app.hpp"
 
+#include <SDL2/SDL.h>
 #include <fmt/format.h>
+#include <imgui.h>
 #include <spdlog/spdlog.h>
 
 #include <algorithm>
-#include <cmath>
-#include <ctime>
+#include <stdexcept>
+#include <utility>
 
-#include "fgr/camera.hpp"
 #include "fgr/discovery.hpp"
 #include "fgr/kernel_assembly.hpp"
 #include "fgr/parameters.hpp"
 #include "fgr/precision.hpp"
+#include "fgr/renderer.hpp"
 #include "fgr/scene_source.hpp"
+#include "fgr/view_override.hpp"
+#include "viewer_util.hpp"
 
 namespace fgr::viewer {
 namespace {
@@ -25,6 +27,10 @@ constexpr double kUiFrameSeconds = 1.0 / 60.0;
 // The longest the window goes without being drawn (the status line's frame time and messages).
 constexpr double kMaxUndrawnSeconds = 0.1;
 constexpr size_t kMessagesKept = 6;
+
+double seconds_since(std::chrono::steady_clock::time_point start) {
+    return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+}
 
 }  // namespace
 
@@ -52,8 +58,9 @@ void ViewerApp::prepare_first_scene() {
         scenes_.find(options_.scene.empty() ? "mandelbulb" : options_.scene);
     if (!index && !options_.scene.empty()) {
         std::string ids;
-        for (size_t i = 0; i < scenes_.size(); ++i)
+        for (size_t i = 0; i < scenes_.size(); ++i) {
             ids += (ids.empty() ? "" : ", ") + scenes_.at(i)->id;
+        }
         throw UsageError(fmt::format("unknown scene '{}' (available: {})", options_.scene, ids));
     }
     const Scene& scene = *scenes_.at(index.value_or(0));
@@ -79,44 +86,12 @@ void ViewerApp::prepare_first_scene() {
 }
 
 int ViewerApp::run() {
-    window_.open(options_.width, options_.height, options_.fullscreen);
-    texture_ = std::make_unique<ImageTexture>();
-    worker_ =
-        std::make_unique<RenderWorker>(options_.device, options_.packet_width, choices_.quality);
-    // --precision double on a device without it fails here, as `fgr render` does.
-    use_double_precision(choices_.precision, session().camera.to_view(), options_.width,
-                         worker_->device_info());
-    browser_.start_thumbnails(options_.device, options_.packet_width);
-    reloader_.watch();
-    spdlog::info("viewer on {}; press H for the key bindings", worker_->device_info().name);
-    start_ = std::chrono::steady_clock::now();
+    start();
     auto previous = start_;
     while (!quit_) {
         const auto frame_start = std::chrono::steady_clock::now();
-        const double dt = std::chrono::duration<double>(frame_start - previous).count();
+        update(std::chrono::duration<double>(frame_start - previous).count());
         previous = frame_start;
-        stats_.add_window_frame(dt * 1000.0);
-
-        status_ = worker_->status();
-        // Before the idle check: a swapped-in scene is not refined yet.
-        reloader_.apply(worker_->take_reloads());
-        log_refined_view();
-        if (replay_) replay_->feed(seconds_since(start_));
-        if (input_.pump_events()) redraws_pending_ = 2;  // ImGui settles a change over two frames
-        paths_.advance(dt);
-        input_.fly(dt, status_.de_at_camera);
-        submit_view();
-        receive_frame();
-        if (browser_.receive_thumbnails(view_idle())) {
-            redraws_pending_ = std::max(redraws_pending_, 1);
-        }
-        for (std::string& message : worker_->take_messages()) add_message(std::move(message));
-        reloader_.poll(seconds_since(start_));
-        if (redraws_pending_ > 0 || seconds_since(last_draw_) >= kMaxUndrawnSeconds) {
-            draw_frame();
-            redraws_pending_ = std::max(redraws_pending_ - 1, 0);
-            last_draw_ = std::chrono::steady_clock::now();
-        }
         if (options_.exit_after_seconds && seconds_since(start_) >= *options_.exit_after_seconds) {
             quit_ = true;
         }
@@ -125,6 +100,61 @@ int ViewerApp::run() {
             SDL_Delay(static_cast<Uint32>((kUiFrameSeconds - spent) * 1000.0));
         }
     }
+    finish();
+    return 0;
+}
+
+void ViewerApp::start() {
+    window_.open(options_.width, options_.height, options_.fullscreen);
+    texture_ = std::make_unique<ImageTexture>();
+    worker_ =
+        std::make_unique<RenderWorker>(options_.device, options_.packet_width, choices_.quality);
+    // --precision double on a device without it fails here, as `fgr render` does.
+    use_double_precision(choices_.precision, scenes_.session().camera.to_view(), options_.width,
+                         worker_->device_info());
+    browser_.start_thumbnails(options_.device, options_.packet_width);
+    reloader_.watch();
+    spdlog::info("viewer on {}; press H for the key bindings", worker_->device_info().name);
+    start_ = std::chrono::steady_clock::now();
+}
+
+void ViewerApp::update(double dt) {
+    stats_.add_window_frame(dt * 1000.0);
+    status_ = worker_->status();
+    // Before the idle check: a swapped-in scene is not refined yet.
+    reloader_.apply(worker_->take_reloads());
+    log_refined_view();
+    if (replay_) replay_->feed(seconds_since(start_));
+    if (input_.pump_events()) redraws_pending_ = 2;  // ImGui settles a change over two frames
+    paths_.advance(dt);
+    input_.fly(dt, status_.de_at_camera);
+    submit_view();
+    receive_frame();
+    if (browser_.receive_thumbnails(view_idle())) redraws_pending_ = std::max(redraws_pending_, 1);
+    for (std::string& message : worker_->take_messages()) add_message(std::move(message));
+    reloader_.poll(seconds_since(start_));
+    if (redraws_pending_ > 0 || seconds_since(last_draw_) >= kMaxUndrawnSeconds) {
+        draw_frame();
+        redraws_pending_ = std::max(redraws_pending_ - 1, 0);
+        last_draw_ = std::chrono::steady_clock::now();
+    }
+}
+
+void ViewerApp::draw_frame() {
+    window_.begin_frame();
+    if (!texture_->empty()) {
+        ImGui::GetBackgroundDrawList()->AddImage(texture_->id(), ImVec2(0, 0),
+                                                 ImGui::GetIO().DisplaySize);
+    }
+    const ViewReport report{view_.last(), shown_, status_, worker_->device_info(), messages_};
+    panel_.draw_overlay(report);
+    panel_.draw_panel(report);
+    browser_.draw_window();
+    panel_.draw_dialogs(status_);
+    window_.end_frame();
+}
+
+void ViewerApp::finish() {
     if (const int pending = worker_->status().pending_screenshots; pending > 0) {
         spdlog::info("finishing {} screenshot(s) before exit", pending);
     }
@@ -132,59 +162,65 @@ int ViewerApp::run() {
     worker_->stop();
     for (std::string& message : worker_->take_messages()) add_message(std::move(message));
     if (options_.print_stats) print_stats();
-    return 0;
 }
 
-// --- Input -------------------------------------------------------------------------------------
+// --- The view ---------------------------------------------------------------------------------
 
-void ViewerApp::run_command(ViewerCommand command) {
-    switch (command) {
-        case ViewerCommand::Quit:
-            quit_ = true;
-            break;
-        case ViewerCommand::ResetCamera:
-            reset_camera(0);
-            break;
-        case ViewerCommand::NextCamera:
-            reset_camera((session().camera_index + 1) % static_cast<int>(scene().cameras.size()));
-            break;
-        case ViewerCommand::PreviousScene:
-            switch_scene((scenes_.current_index() + static_cast<int>(scenes_.size()) - 1) %
-                         static_cast<int>(scenes_.size()));
-            break;
-        case ViewerCommand::NextScene:
-            switch_scene((scenes_.current_index() + 1) % static_cast<int>(scenes_.size()));
-            break;
-        case ViewerCommand::TogglePlayback:
-            paths_.toggle_playback();
-            break;
-        case ViewerCommand::RecordKeyframe:
-            paths_.record_keyframe();
-            break;
-        case ViewerCommand::SaveRecordedPath:
-            paths_.save_recorded();
-            break;
-        case ViewerCommand::Screenshot:
-            take_screenshot();
-            break;
-        case ViewerCommand::ToggleHelp:
-            panel_.toggle_help();
-            break;
-        case ViewerCommand::TogglePanel:
-            panel_.toggle_panel();
-            break;
-        case ViewerCommand::ToggleFullscreen:
-            window_.toggle_fullscreen();
-            break;
-        case ViewerCommand::ToggleBrowser:
-            browser_.toggle();
-            break;
+void ViewerApp::submit_view() {
+    const auto [width, height] = window_.drawable_size();
+    ViewState state;
+    state.scene = scenes_.current_ptr();
+    state.effects = scenes_.session().effects;
+    state.view = scenes_.session().camera.to_view();
+    state.projection = choices_.projection;
+    state.params = scenes_.session().params;
+    state.precision = choices_.precision;
+    state.mode = choices_.mode_for(scenes_.current());
+    if (state.mode == RenderMode::Path) {
+        state.path = choices_.path;
+        std::string fallback_reason;
+        state.path.environment =
+            environments_.prepare(scenes_.current(), choices_.environment, &fallback_reason);
+        if (!fallback_reason.empty()) add_message(std::move(fallback_reason));
     }
+    state.width = std::clamp(width, 1, kMaxImageSide);
+    state.height = std::clamp(height, 1, kMaxImageSide);
+    worker_->submit(view_.track(std::move(state), seconds_since(start_), paths_.playing()));
 }
 
-void ViewerApp::adopt_scene(size_t index, const std::shared_ptr<const Scene>& scene) {
-    scenes_.replace(index, scene);
-    view_.scene_replaced();
+void ViewerApp::receive_frame() {
+    std::optional<DisplayFrame> frame = worker_->take_frame();
+    if (!frame) return;
+    texture_->upload(frame->image);
+    redraws_pending_ = std::max(redraws_pending_, 1);
+    stats_.add_shown_frame(*frame);
+    frame->image.rgb.clear();  // the texture has it
+    shown_ = std::move(frame);
+}
+
+void ViewerApp::log_refined_view() {
+    const bool idle = view_idle();
+    if (idle && !was_idle_ && shown_) {
+        spdlog::debug("view refined: {}x{}, {} samples per pixel", view_.last().width,
+                      view_.last().height, shown_->samples);
+    }
+    was_idle_ = idle;
+}
+
+bool ViewerApp::view_idle() const {
+    if (replay_ && replay_->window_size_pending()) return false;
+    return view_.refined(status_);
+}
+
+// --- What the parts ask of the viewer ---------------------------------------------------------
+
+InputHost ViewerApp::input_host() {
+    return {
+        .run = [this](ViewerCommand command) { run_command(command); },
+        .over_panel = [this](int x, int y) { return panel_.covers(x, y); },
+        .camera = [this]() -> FlyCamera& { return scenes_.session().camera; },
+        .took_camera = [this] { paths_.stop(); },
+    };
 }
 
 ReloadHost ViewerApp::reload_host() {
@@ -223,20 +259,6 @@ BrowserHost ViewerApp::browser_host() {
     };
 }
 
-ReplayHost ViewerApp::replay_host() {
-    return {
-        .window_size = [this] { return window_.size(); },
-        .window_id = [this] { return window_.id(); },
-        .resize_window = [this](int width, int height) { window_.set_size(width, height); },
-        .view_idle = [this] { return view_idle(); },
-        .thumbnails_done = [this] { return browser_.thumbnails_done(); },
-        .changes_handled = [this] { return reloader_.changes_handled(); },
-        .quit = [this] { quit_ = true; },
-        .browser_event = [this](const ReplayEvent& event) { browser_.apply_replay_event(event); },
-        .editor_event = [this](const ReplayEvent& event) { hybrid_.apply_replay_event(event); },
-    };
-}
-
 PanelHost ViewerApp::panel_host() {
     return {
         .switch_scene = [this](int index) { switch_scene(index); },
@@ -252,97 +274,78 @@ PanelHost ViewerApp::panel_host() {
     };
 }
 
-void ViewerApp::draw_frame() {
-    window_.begin_frame();
-    if (!texture_->empty()) {
-        ImGui::GetBackgroundDrawList()->AddImage(texture_->id(), ImVec2(0, 0),
-                                                 ImGui::GetIO().DisplaySize);
-    }
-    const ViewReport report{view_.last(), shown_, status_, worker_->device_info(), messages_};
-    panel_.draw_overlay(report);
-    panel_.draw_panel(report);
-    browser_.draw_window();
-    panel_.draw_dialogs(status_);
-    window_.end_frame();
-}
-
-InputHost ViewerApp::input_host() {
+ReplayHost ViewerApp::replay_host() {
     return {
-        .run = [this](ViewerCommand command) { run_command(command); },
-        .over_panel = [this](int x, int y) { return panel_.covers(x, y); },
-        .camera = [this]() -> FlyCamera& { return session().camera; },
-        .took_camera = [this] { paths_.stop(); },
+        .window_size = [this] { return window_.size(); },
+        .window_id = [this] { return window_.id(); },
+        .resize_window = [this](int width, int height) { window_.set_size(width, height); },
+        .view_idle = [this] { return view_idle(); },
+        .thumbnails_done = [this] { return browser_.thumbnails_done(); },
+        .changes_handled = [this] { return reloader_.changes_handled(); },
+        .quit = [this] { quit_ = true; },
+        .browser_event = [this](const ReplayEvent& event) { browser_.apply_replay_event(event); },
+        .editor_event = [this](const ReplayEvent& event) { hybrid_.apply_replay_event(event); },
     };
 }
 
-// --- Per-frame updates -----------------------------------------------------------------------
-
-void ViewerApp::submit_view() {
-    const auto [width, height] = window_.drawable_size();
-    ViewState state;
-    state.scene = scenes_.current_ptr();
-    state.effects = session().effects;
-    state.view = session().camera.to_view();
-    state.projection = choices_.projection;
-    state.params = session().params;
-    state.precision = choices_.precision;
-    state.mode = choices_.mode_for(scene());
-    if (state.mode == RenderMode::Path) {
-        state.path = choices_.path;
-        std::string fallback_reason;
-        state.path.environment =
-            environments_.prepare(scene(), choices_.environment, &fallback_reason);
-        if (!fallback_reason.empty()) add_message(std::move(fallback_reason));
+void ViewerApp::run_command(ViewerCommand command) {
+    switch (command) {
+        case ViewerCommand::Quit:
+            quit_ = true;
+            break;
+        case ViewerCommand::ResetCamera:
+            reset_camera(0);
+            break;
+        case ViewerCommand::NextCamera:
+            reset_camera((scenes_.session().camera_index + 1) %
+                         static_cast<int>(scenes_.current().cameras.size()));
+            break;
+        case ViewerCommand::PreviousScene:
+            switch_scene((scenes_.current_index() + static_cast<int>(scenes_.size()) - 1) %
+                         static_cast<int>(scenes_.size()));
+            break;
+        case ViewerCommand::NextScene:
+            switch_scene((scenes_.current_index() + 1) % static_cast<int>(scenes_.size()));
+            break;
+        case ViewerCommand::TogglePlayback:
+            paths_.toggle_playback();
+            break;
+        case ViewerCommand::RecordKeyframe:
+            paths_.record_keyframe();
+            break;
+        case ViewerCommand::SaveRecordedPath:
+            paths_.save_recorded();
+            break;
+        case ViewerCommand::Screenshot:
+            take_screenshot();
+            break;
+        case ViewerCommand::ToggleHelp:
+            panel_.toggle_help();
+            break;
+        case ViewerCommand::TogglePanel:
+            panel_.toggle_panel();
+            break;
+        case ViewerCommand::ToggleFullscreen:
+            window_.toggle_fullscreen();
+            break;
+        case ViewerCommand::ToggleBrowser:
+            browser_.toggle();
+            break;
     }
-    state.width = std::clamp(width, 1, kMaxImageSide);
-    state.height = std::clamp(height, 1, kMaxImageSide);
-    worker_->submit(view_.track(std::move(state), seconds_since(start_), paths_.playing()));
-}
-
-void ViewerApp::receive_frame() {
-    std::optional<DisplayFrame> frame = worker_->take_frame();
-    if (!frame) return;
-    texture_->upload(frame->image);
-    redraws_pending_ = std::max(redraws_pending_, 1);
-    stats_.add_shown_frame(*frame);
-    frame->image.rgb.clear();  // the texture has it
-    shown_ = std::move(frame);
-}
-
-void ViewerApp::log_refined_view() {
-    const bool idle = view_idle();
-    if (idle && !was_idle_ && shown_) {
-        spdlog::debug("view refined: {}x{}, {} samples per pixel", view_.last().width,
-                      view_.last().height, shown_->samples);
-    }
-    was_idle_ = idle;
-}
-
-bool ViewerApp::view_idle() const {
-    if (replay_ && replay_->window_size_pending()) return false;
-    return view_.refined(status_);
-}
-
-// --- Actions ---------------------------------------------------------------------------------
-
-void ViewerApp::add_message(std::string message) {
-    messages_.push_back(std::move(message));
-    while (messages_.size() > kMessagesKept) messages_.pop_front();
-    redraws_pending_ = std::max(redraws_pending_, 1);
 }
 
 void ViewerApp::switch_scene(int index) {
     paths_.stop();
     scenes_.select(index);
     panel_.follow_current_scene();
-    spdlog::info("scene '{}'", scene().id);
+    spdlog::info("scene '{}'", scenes_.current().id);
 }
 
 void ViewerApp::reset_camera(int camera_index) {
     paths_.stop();
-    session().camera_index = camera_index;
-    session().camera =
-        FlyCamera::from_view(scene().cameras[static_cast<size_t>(camera_index)].view);
+    scenes_.session().camera_index = camera_index;
+    scenes_.session().camera =
+        FlyCamera::from_view(scenes_.current().cameras[static_cast<size_t>(camera_index)].view);
 }
 
 void ViewerApp::take_screenshot() {
@@ -350,7 +353,7 @@ void ViewerApp::take_screenshot() {
     request.state = view_.last();
     request.state.interactive = false;
     request.samples = choices_.quality.sample_cap;
-    const std::string stem = fmt::format("fgr-{}-{}", scene().id, file_timestamp());
+    const std::string stem = fmt::format("fgr-{}-{}", scenes_.current().id, file_timestamp());
     std::filesystem::path file = options_.output_dir / (stem + ".png");
     // Two screenshots within a second (the first may not be written yet) must not collide.
     for (int n = 2; std::filesystem::exists(file) || screenshot_files_.count(file); ++n) {
@@ -363,9 +366,20 @@ void ViewerApp::take_screenshot() {
     worker_->request_screenshot(std::move(request));
 }
 
+void ViewerApp::adopt_scene(size_t index, const std::shared_ptr<const Scene>& scene) {
+    scenes_.replace(index, scene);
+    view_.scene_replaced();
+}
+
+void ViewerApp::add_message(std::string message) {
+    messages_.push_back(std::move(message));
+    while (messages_.size() > kMessagesKept) messages_.pop_front();
+    redraws_pending_ = std::max(redraws_pending_, 1);
+}
+
 void ViewerApp::print_stats() {
-    const FlyCamera& camera = session().camera;
-    fmt::print("scene {}\n", scene().id);
+    const FlyCamera& camera = scenes_.session().camera;
+    fmt::print("scene {}\n", scenes_.current().id);
     if (const FormulaScene* formula =
             hybrid_.formula_of(static_cast<size_t>(scenes_.current_index()))) {
         std::string sequence;

@@ -1,41 +1,21 @@
 #pragma once
-// The viewer application shared by its source files: viewer_app.cpp (window, input, camera,
-// actions), viewer_panel.cpp (the Dear ImGui panel), viewer_reload.cpp (hot reload) and
-// viewer_formulas.cpp (the formula browser and the hybrid editor). Private to fgr_viewer.
-
-#include <SDL2/SDL.h>
-#include <SDL2/SDL_opengl.h>
-#include <backends/imgui_impl_opengl2.h>
-#include <backends/imgui_impl_sdl.h>
-#include <fmt/format.h>
-#include <imgui.h>
+// The viewer application: it owns the window, the render worker and the viewer's parts, hands
+// each part what it asks for through the part's host (a struct of callbacks), and runs the window
+// thread's loop. Private to fgr_viewer.
 
 #include <chrono>
+#include <cstddef>
 #include <deque>
 #include <filesystem>
-#include <functional>
-#include <map>
 #include <memory>
 #include <optional>
 #include <set>
-#include <stdexcept>
 #include <string>
 #include <vector>
 
 #include "camera_paths.hpp"
-#include "fgr/camera_path_file.hpp"
-#include "fgr/formulas.hpp"
-#include "fgr/image_io.hpp"
-#include "fgr/precision.hpp"
 #include "fgr/scene.hpp"
-#include "fgr/viewer/adaptive_quality.hpp"
-#include "fgr/viewer/file_watcher.hpp"
-#include "fgr/viewer/fly_camera.hpp"
-#include "fgr/viewer/frame_stats.hpp"
 #include "fgr/viewer/render_worker.hpp"
-#include "fgr/viewer/replay.hpp"
-#include "fgr/viewer/scene_search.hpp"
-#include "fgr/viewer/thumbnails.hpp"
 #include "fgr/viewer/viewer.hpp"
 #include "formula_browser.hpp"
 #include "gl_handles.hpp"
@@ -48,60 +28,46 @@
 #include "view_tracker.hpp"
 #include "viewer_panel.hpp"
 #include "viewer_statistics.hpp"
-#include "viewer_util.hpp"
 #include "viewer_window.hpp"
 
 namespace fgr::viewer {
 
-inline double seconds_since(std::chrono::steady_clock::time_point start) {
-    return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-}
-
-// --- The application ---------------------------------------------------------------------
-
 class ViewerApp {
 public:
+    // Throws UsageError for bad options: an unknown scene, path, key or formula in a replay
+    // script, an unreadable camera path file.
     ViewerApp(const ViewerOptions& options, std::vector<Scene> scenes);
     int run();
 
 private:
-    // Setup.
+    // The scene, camera, parameters, effects and path the command line asks for first.
     void prepare_first_scene();
+    void start();
+    // One pass of the window thread's loop, `dt` seconds after the last.
+    void update(double dt);
+    void draw_frame();
+    void finish();
 
-    // Input.
-    void run_command(ViewerCommand command);
-    InputHost input_host();
-    ReplayHost replay_host();
-
-    // Per-frame updates.
     void submit_view();
     void receive_frame();
+    // The render thread has refined the view, at the size a replayed resize asked for.
     bool view_idle() const;
     void log_refined_view();  // once each time the view becomes fully refined (debug level)
 
-    // Hot reload.
+    // What the parts ask of the viewer.
+    InputHost input_host();
     ReloadHost reload_host();
-    void adopt_scene(size_t index, const std::shared_ptr<const Scene>& scene);
-
-    // The hybrid editor.
     HybridHost hybrid_host();
-
-    // The formula browser.
     BrowserHost browser_host();
-
-    // Actions.
+    PanelHost panel_host();
+    ReplayHost replay_host();
+    void run_command(ViewerCommand command);
     void switch_scene(int index);
     void reset_camera(int camera_index);
     void take_screenshot();
+    // A new version of scene `index` (reloaded, or an edit of its sequence) takes its place.
+    void adopt_scene(size_t index, const std::shared_ptr<const Scene>& scene);
     void add_message(std::string message);
-
-    // The panel.
-    PanelHost panel_host();
-    void draw_frame();
-
-    const Scene& scene() const { return scenes_.current(); }
-    SceneSession& session() { return scenes_.session(); }
-    const SceneSession& session() const { return scenes_.session(); }
     void print_stats();
 
     ViewerOptions options_;
@@ -124,7 +90,6 @@ private:
 
     std::chrono::steady_clock::time_point start_;
     bool quit_ = false;
-
     ViewTracker view_;
     WorkerStatus status_;
     bool was_idle_ = false;
