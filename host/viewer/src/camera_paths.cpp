@@ -20,7 +20,7 @@ CameraPaths::CameraPaths(SceneSet& scenes, const std::optional<std::filesystem::
     : scenes_(scenes), output_dir_(std::move(output_dir)), add_message_(std::move(add_message)) {
     if (!file) return;
     try {
-        file_path_ = read_camera_path_file(*file);
+        loaded_path_ = read_camera_path_file(*file);
     } catch (const std::runtime_error& error) {
         throw UsageError(error.what());
     }
@@ -30,9 +30,9 @@ std::vector<CameraPath> CameraPaths::playable() const {
     std::vector<CameraPath> paths = scenes_.current().camera_paths;
     const SceneSession& session = scenes_.session();
     if (session.recorded.keyframes.size() >= 2) paths.push_back(session.recorded);
-    if (file_path_) {
-        paths.push_back(file_path_->path);
-        paths.back().name = "file: " + file_path_->path.name;
+    if (loaded_path_) {
+        paths.push_back(loaded_path_->path);
+        paths.back().name = "file: " + loaded_path_->path.name;
     }
     return paths;
 }

@@ -46,7 +46,7 @@ public:
 
 private:
     SceneSet& scenes_;
-    std::optional<CameraPathFile> file_path_;
+    std::optional<CameraPathFile> loaded_path_;  // --camera-path's
     std::filesystem::path output_dir_;
     std::function<void(std::string)> add_message_;
     bool playing_ = false;

@@ -37,7 +37,7 @@ public:
 
     // Starts watching; what is there now is what was loaded.
     void watch();
-    // Looks for changes every kWatchSeconds of `now_seconds` (a monotonic clock) and asks for a
+    // Looks for changed files twice a second (`now_seconds`: a monotonic clock) and asks for a
     // build of each scene that changed.
     void poll(double now_seconds);
     // Adopts what the render thread built, or says why it refused.

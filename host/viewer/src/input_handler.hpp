@@ -30,8 +30,8 @@ enum class ViewerCommand {
     ToggleBrowser,
 };
 
-// The command bound to pressing `key` (`ctrl`: with Ctrl held); none for keys bound to none,
-// such as the flying keys, which act while held.
+// The command bound to pressing `key` (`ctrl`: with Ctrl held); none for unbound keys and for the
+// flying keys, which act while held.
 std::optional<ViewerCommand> command_for_key(SDL_Scancode key, bool ctrl);
 
 // What the input asks of the viewer.
