@@ -16,6 +16,7 @@ struct CameraView {
     glm::dvec3 target{0.0};
     glm::vec3 up{0.0f, 0.0f, 1.0f};
     float fov_degrees = 60.0f;  // horizontal
+    bool operator==(const CameraView&) const = default;
 };
 
 struct NamedCamera {

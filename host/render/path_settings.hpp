@@ -70,6 +70,8 @@ struct PathSettings {
     uint32_t seed = 0;           // another seed, another noise pattern
     // What lights the scene; null renders with the default sky.
     std::shared_ptr<const PreparedEnvironment> environment;
+    // The environment compares by identity: a prepared environment is never changed in place.
+    bool operator==(const PathSettings&) const = default;
 };
 
 // Limits fgr accepts, checked by check_path_settings (std::invalid_argument, one line).

@@ -1,228 +1,97 @@
-// The viewer's window thread: the SDL2 window and input, the fly camera, camera paths,
-// screenshots and the hand-over of view states to the render thread (render_worker.cpp).
 #include "viewer_app.hpp"
 
-#include <algorithm>
-#include <cmath>
-#include <ctime>
-
+#include <SDL2/SDL.h>
 #include <fmt/format.h>
+#include <imgui.h>
 #include <spdlog/spdlog.h>
 
-#include "camera/camera.hpp"
+#include <algorithm>
+#include <stdexcept>
+#include <utility>
+
 #include "scene/discovery.hpp"
-#include "scene/scene_source.hpp"
 #include "device/kernel_assembly.hpp"
 #include "scene/parameters.hpp"
 #include "render/precision.hpp"
+#include "render/renderer.hpp"
+#include "scene/scene_source.hpp"
+#include "camera/view_override.hpp"
+#include "viewer_util.hpp"
 
 namespace fgr::viewer {
 namespace {
 
-// How long the view counts as moving after its last change: mouse look arrives in bursts, and
-// refining between two bursts would only be cancelled again.
-constexpr double kSettleSeconds = 0.15;
 // The window thread's pace: input and the panel stay smooth without taking a core from rendering.
 constexpr double kUiFrameSeconds = 1.0 / 60.0;
 
 // The longest the window goes without being drawn (the status line's frame time and messages).
 constexpr double kMaxUndrawnSeconds = 0.1;
-constexpr float kLookRadiansPerPixel = 0.0035f;
-constexpr float kShiftSpeedUp = 4.0f;
-constexpr float kWheelSpeedStep = 1.25f;
 constexpr size_t kMessagesKept = 6;
 
-SceneSession default_session(const Scene& scene) {
-    SceneSession session;
-    session.camera = FlyCamera::from_view(scene.cameras.front().view);
-    session.params = default_param_values(scene);
-    session.effects = scene.effects;
-    return session;
-}
-
-bool same_image_inputs(const ViewState& a, const ViewState& b) {
-    return a.scene == b.scene && a.effects == b.effects && a.width == b.width &&
-           a.height == b.height && a.view.position == b.view.position &&
-           a.view.target == b.view.target && a.view.up == b.view.up &&
-           a.view.fov_degrees == b.view.fov_degrees && a.projection == b.projection &&
-           a.params == b.params &&
-           a.precision == b.precision && a.mode == b.mode &&
-           a.path.environment == b.path.environment && a.path.max_bounces == b.path.max_bounces &&
-           a.path.roulette_depth == b.path.roulette_depth &&
-           a.path.radiance_clamp == b.path.radiance_clamp &&
-           a.path.light_sampling == b.path.light_sampling && a.path.mis == b.path.mis &&
-           a.path.scene_lights == b.path.scene_lights && a.path.seed == b.path.seed;
-}
-
-std::string timestamp() {
-    const std::time_t now = std::time(nullptr);
-    std::tm local{};
-    localtime_r(&now, &local);
-    char text[32];
-    std::strftime(text, sizeof text, "%Y%m%d-%H%M%S", &local);
-    return text;
-}
-
-
-SDL_Scancode scancode_named(const std::string& name) { return SDL_GetScancodeFromName(name.c_str()); }
-
-// Replay scripts are checked before the window opens, so a typo fails fast.
-void check_replay_keys(const std::vector<ReplayEvent>& events, const std::string& file) {
-    for (const ReplayEvent& event : events) {
-        const bool is_key = event.action == ReplayAction::KeyDown ||
-                            event.action == ReplayAction::KeyUp ||
-                            event.action == ReplayAction::KeyPress;
-        if (is_key && scancode_named(event.key) == SDL_SCANCODE_UNKNOWN) {
-            throw UsageError(fmt::format("{}:{}: unknown key '{}' (SDL key names: W, F12, "
-                                         "PageDown, Left_Shift...)",
-                                         file, event.line, event.key));
-        }
-        if (event.action == ReplayAction::HybridAdd && find_formula(event.text) == nullptr) {
-            throw UsageError(fmt::format("{}:{}: unknown formula '{}' (`fgr list --formulas` "
-                                         "names them)",
-                                         file, event.line, event.text));
-        }
-    }
+double seconds_since(std::chrono::steady_clock::time_point start) {
+    return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
 }
 
 }  // namespace
 
 ViewerApp::ViewerApp(const ViewerOptions& options, std::vector<Scene> scenes)
-    : options_(options) {
-    for (Scene& scene : scenes) scenes_.push_back(std::make_shared<const Scene>(std::move(scene)));
-    quality_.target_ms = options.target_ms;
-    quality_.sample_cap = options.sample_cap;
-    precision_ = options.precision;
-    mode_ = options.mode;
-    projection_ = options.projection;
-    path_ = options.path;
-    environment_ = options.environment;
-    fullscreen_ = options.fullscreen;
-    if (options.camera_path_file) {
-        try {
-            loaded_path_ = read_camera_path_file(*options.camera_path_file);
-        } catch (const std::runtime_error& error) {
-            throw UsageError(error.what());
-        }
-    }
+    : options_(options),
+      scenes_(std::move(scenes)),
+      choices_(options),
+      paths_(scenes_, options.camera_path_file, options.output_dir,
+             [this](std::string message) { add_message(std::move(message)); }),
+      input_(input_host()),
+      reloader_(scenes_, options.dev, reload_host()),
+      hybrid_(scenes_, options.output_dir, hybrid_host()),
+      browser_(scenes_, browser_host()),
+      panel_(scenes_, choices_, paths_, window_, panel_host()) {
     if (options.replay) {
-        try {
-            replay_events_ = load_replay(*options.replay);
-        } catch (const std::runtime_error& error) {
-            throw UsageError(error.what());
-        }
-        check_replay_keys(replay_events_, options.replay->string());
+        std::vector<ReplayEvent> events = ReplayDriver::load(*options.replay);
+        if (!events.empty()) replay_.emplace(std::move(events), replay_host());
     }
     prepare_first_scene();
 }
 
 void ViewerApp::prepare_first_scene() {
     // Without a choice, the Mandelbulb (fgr's default scene) if it is installed.
-    const std::string wanted = options_.scene.empty() ? "mandelbulb" : options_.scene;
-    const auto default_scene = std::find_if(scenes_.begin(), scenes_.end(),
-                                            [&](const auto& s) { return s->id == wanted; });
-    if (options_.scene.empty() && default_scene != scenes_.end()) {
-        scene_index_ = static_cast<int>(default_scene - scenes_.begin());
-    }
-    if (!options_.scene.empty()) {
-        const auto found = std::find_if(scenes_.begin(), scenes_.end(),
-                                        [&](const auto& s) { return s->id == options_.scene; });
-        if (found == scenes_.end()) {
-            std::string ids;
-            for (const auto& s : scenes_) ids += (ids.empty() ? "" : ", ") + s->id;
-            throw UsageError(
-                fmt::format("unknown scene '{}' (available: {})", options_.scene, ids));
+    std::optional<size_t> index =
+        scenes_.find(options_.scene.empty() ? "mandelbulb" : options_.scene);
+    if (!index && !options_.scene.empty()) {
+        std::string ids;
+        for (size_t i = 0; i < scenes_.size(); ++i) {
+            ids += (ids.empty() ? "" : ", ") + scenes_.at(i)->id;
         }
-        scene_index_ = static_cast<int>(found - scenes_.begin());
+        throw UsageError(fmt::format("unknown scene '{}' (available: {})", options_.scene, ids));
     }
-    SceneSession first = default_session(scene());
+    const Scene& scene = *scenes_.at(index.value_or(0));
+    SceneSession first = default_session(scene);
     if (options_.start_view) {
         try {
             first.camera = FlyCamera::from_view(
-                apply_view_override(scene().cameras.front().view, *options_.start_view));
+                apply_view_override(scene.cameras.front().view, *options_.start_view));
         } catch (const std::invalid_argument& error) {
             throw UsageError(error.what());
         }
     }
     for (const std::string& assignment : options_.assignments) {
-        set_param_from_text(scene(), first.params, assignment);
+        set_param_from_text(scene, first.params, assignment);
     }
     try {
         first.effects = apply_effect_changes(first.effects, options_.effect_changes);
     } catch (const std::invalid_argument& error) {
         throw UsageError(error.what());
     }
-    sessions_[scene_index_] = std::move(first);
-    if (!options_.path_name.empty()) select_path(options_.path_name);
-}
-
-void ViewerApp::select_path(const std::string& name) {
-    const std::vector<CameraPath> paths = playable_paths();
-    std::string names;
-    for (size_t i = 0; i < paths.size(); ++i) {
-        if (paths[i].name == name) {
-            session().path_index = static_cast<int>(i);
-            return;
-        }
-        names += (names.empty() ? "" : ", ") + paths[i].name;
-    }
-    throw UsageError(fmt::format("scene '{}' has no camera path '{}' (its paths: {})", scene().id,
-                                 name, names.empty() ? "none" : names));
-}
-
-void ViewerApp::open_window() {
-    sdl_ = std::make_unique<SdlSession>();
-    SDL_GL_SetAttribute(SDL_GL_DOUBLEBUFFER, 1);
-    Uint32 flags = SDL_WINDOW_OPENGL | SDL_WINDOW_RESIZABLE | SDL_WINDOW_ALLOW_HIGHDPI;
-    if (fullscreen_) flags |= SDL_WINDOW_FULLSCREEN_DESKTOP;
-    window_.reset(SDL_CreateWindow("fgr", SDL_WINDOWPOS_CENTERED, SDL_WINDOWPOS_CENTERED,
-                                   options_.width, options_.height, flags));
-    if (!window_) throw std::runtime_error(fmt::format("cannot open a window: {}", SDL_GetError()));
-    gl_context_.reset(SDL_GL_CreateContext(window_.get()));
-    if (!gl_context_) {
-        throw std::runtime_error(fmt::format("cannot create an OpenGL context: {}", SDL_GetError()));
-    }
-    SDL_GL_SetSwapInterval(1);
-    imgui_ = std::make_unique<ImGuiSession>(window_.get(), gl_context_.get());
-    texture_ = std::make_unique<ImageTexture>();
+    scenes_.select(static_cast<int>(index.value_or(0)), std::move(first));
+    if (!options_.path_name.empty()) paths_.select(options_.path_name);
 }
 
 int ViewerApp::run() {
-    open_window();
-    worker_ = std::make_unique<RenderWorker>(options_.device, options_.packet_width, quality_);
-    // --precision double on a device without it fails here, as `fgr render` does.
-    use_double_precision(precision_, session().camera.to_view(), options_.width,
-                         worker_->device_info());
-    thumbnails_ = std::make_unique<ThumbnailWorker>(options_.device, options_.packet_width,
-                                                    default_thumbnail_directory());
-    watch_sources();
-    spdlog::info("viewer on {}; press H for the key bindings", worker_->device_info().name);
-    if (!replay_events_.empty()) replay_ = std::make_unique<ReplayClock>(replay_events_);
-    start_ = std::chrono::steady_clock::now();
+    start();
     auto previous = start_;
     while (!quit_) {
         const auto frame_start = std::chrono::steady_clock::now();
-        const double dt = std::chrono::duration<double>(frame_start - previous).count();
+        update(std::chrono::duration<double>(frame_start - previous).count());
         previous = frame_start;
-        ui_stats_.add(dt * 1000.0);
-
-        status_ = worker_->status();
-        apply_reloads();  // before the idle check: a swapped-in scene is not refined yet
-        log_refined_view();
-        feed_replay();
-        pump_events();
-        update_playback(dt);
-        update_camera(dt);
-        submit_view();
-        receive_frame();
-        receive_thumbnails();
-        for (std::string& message : worker_->take_messages()) add_message(std::move(message));
-        poll_sources();
-        if (redraws_pending_ > 0 || seconds_since(last_draw_) >= kMaxUndrawnSeconds) {
-            draw_ui();
-            redraws_pending_ = std::max(redraws_pending_ - 1, 0);
-            last_draw_ = std::chrono::steady_clock::now();
-        }
         if (options_.exit_after_seconds && seconds_since(start_) >= *options_.exit_after_seconds) {
             quit_ = true;
         }
@@ -231,278 +100,92 @@ int ViewerApp::run() {
             SDL_Delay(static_cast<Uint32>((kUiFrameSeconds - spent) * 1000.0));
         }
     }
-    if (const int pending = worker_->status().pending_screenshots; pending > 0) {
-        spdlog::info("finishing {} screenshot(s) before exit", pending);
-    }
-    thumbnails_.reset();  // finishes the thumbnail it is making
-    worker_->stop();
-    for (std::string& message : worker_->take_messages()) add_message(std::move(message));
-    if (options_.print_stats) print_stats();
+    finish();
     return 0;
 }
 
-// --- Input -------------------------------------------------------------------------------------
+void ViewerApp::start() {
+    window_.open(options_.width, options_.height, options_.fullscreen);
+    texture_ = std::make_unique<ImageTexture>();
+    worker_ =
+        std::make_unique<RenderWorker>(options_.device, options_.packet_width, choices_.quality);
+    // --precision double on a device without it fails here, as `fgr render` does.
+    use_double_precision(choices_.precision, scenes_.session().camera.to_view(), options_.width,
+                         worker_->device_info());
+    browser_.start_thumbnails(options_.device, options_.packet_width);
+    reloader_.watch();
+    spdlog::info("viewer on {}; press H for the key bindings", worker_->device_info().name);
+    start_ = std::chrono::steady_clock::now();
+}
 
-void ViewerApp::pump_events() {
-    SDL_Event event;
-    while (SDL_PollEvent(&event)) {
-        ImGui_ImplSDL2_ProcessEvent(&event);
-        handle_event(event);
-        redraws_pending_ = 2;  // ImGui settles a change over two frames
+void ViewerApp::update(double dt) {
+    stats_.add_window_frame(dt * 1000.0);
+    status_ = worker_->status();
+    // Before the idle check: a swapped-in scene is not refined yet.
+    reloader_.apply(worker_->take_reloads());
+    log_refined_view();
+    if (replay_) replay_->feed(seconds_since(start_));
+    if (input_.pump_events()) redraws_pending_ = 2;  // ImGui settles a change over two frames
+    paths_.advance(dt);
+    input_.fly(dt, status_.de_at_camera);
+    submit_view();
+    receive_frame();
+    if (browser_.receive_thumbnails(view_idle())) redraws_pending_ = std::max(redraws_pending_, 1);
+    for (std::string& message : worker_->take_messages()) add_message(std::move(message));
+    reloader_.poll(seconds_since(start_));
+    if (redraws_pending_ > 0 || seconds_since(last_draw_) >= kMaxUndrawnSeconds) {
+        draw_frame();
+        redraws_pending_ = std::max(redraws_pending_ - 1, 0);
+        last_draw_ = std::chrono::steady_clock::now();
     }
 }
 
-bool ViewerApp::over_ui(int x, int y) const {
-    const auto fx = static_cast<float>(x), fy = static_cast<float>(y);
-    return show_panel_ && fx >= panel_min_.x && fx < panel_max_.x && fy >= panel_min_.y &&
-           fy < panel_max_.y;
-}
-
-void ViewerApp::handle_event(const SDL_Event& event) {
-    switch (event.type) {
-        case SDL_QUIT: quit_ = true; break;
-        case SDL_KEYDOWN:
-            if (ImGui::GetIO().WantTextInput) break;  // typing a value into the panel
-            held_keys_.insert(event.key.keysym.scancode);
-            handle_key_down(event.key.keysym.scancode, event.key.repeat != 0);
-            break;
-        case SDL_KEYUP: held_keys_.erase(event.key.keysym.scancode); break;
-        case SDL_MOUSEBUTTONDOWN: handle_mouse_button(event.button, true); break;
-        case SDL_MOUSEBUTTONUP: handle_mouse_button(event.button, false); break;
-        case SDL_MOUSEMOTION:
-            if (looking_) {
-                const float fov_scale = session().camera.fov_degrees / 60.0f;
-                session().camera.turn(static_cast<float>(event.motion.xrel) *
-                                          kLookRadiansPerPixel * fov_scale,
-                                      -static_cast<float>(event.motion.yrel) *
-                                          kLookRadiansPerPixel * fov_scale);
-                playing_ = false;
-            }
-            break;
-        case SDL_MOUSEWHEEL: {
-            int x = 0, y = 0;
-            SDL_GetMouseState(&x, &y);
-            if (!looking_ && over_ui(x, y)) break;
-            speed_factor_ = std::clamp(
-                speed_factor_ * std::pow(kWheelSpeedStep, static_cast<float>(event.wheel.y)),
-                1e-3f, 1e3f);
-            break;
-        }
-        default: break;
+void ViewerApp::draw_frame() {
+    window_.begin_frame();
+    if (!texture_->empty()) {
+        ImGui::GetBackgroundDrawList()->AddImage(texture_->id(), ImVec2(0, 0),
+                                                 ImGui::GetIO().DisplaySize);
     }
+    const ViewReport report{view_.last(), shown_, status_, worker_->device_info(), messages_};
+    panel_.draw_overlay(report);
+    panel_.draw_panel(report);
+    browser_.draw_window();
+    panel_.draw_dialogs(status_);
+    window_.end_frame();
 }
 
-void ViewerApp::handle_mouse_button(const SDL_MouseButtonEvent& button, bool down) {
-    if (button.button != SDL_BUTTON_RIGHT) return;
-    if (down && over_ui(button.x, button.y)) return;
-    looking_ = down;
-    // Relative mode hides the pointer and reports unbounded motion; some X servers refuse it,
-    // and motion still arrives then, only bounded by the window.
-    SDL_SetRelativeMouseMode(down ? SDL_TRUE : SDL_FALSE);
-}
-
-void ViewerApp::handle_key_down(SDL_Scancode key, bool repeat) {
-    if (repeat) return;
-    const bool ctrl = held_keys_.count(SDL_SCANCODE_LCTRL) || held_keys_.count(SDL_SCANCODE_RCTRL);
-    switch (key) {
-        case SDL_SCANCODE_ESCAPE: quit_ = true; break;
-        case SDL_SCANCODE_R: reset_camera(0); break;
-        case SDL_SCANCODE_C:
-            reset_camera((session().camera_index + 1) % static_cast<int>(scene().cameras.size()));
-            break;
-        case SDL_SCANCODE_PAGEUP:
-            switch_scene((scene_index_ + static_cast<int>(scenes_.size()) - 1) %
-                         static_cast<int>(scenes_.size()));
-            break;
-        case SDL_SCANCODE_PAGEDOWN:
-            switch_scene((scene_index_ + 1) % static_cast<int>(scenes_.size()));
-            break;
-        case SDL_SCANCODE_P: toggle_playback(); break;
-        case SDL_SCANCODE_K: record_keyframe(); break;
-        case SDL_SCANCODE_S:
-            if (ctrl) save_recorded_path();
-            break;
-        case SDL_SCANCODE_F12: take_screenshot(); break;
-        case SDL_SCANCODE_H:
-        case SDL_SCANCODE_F1: show_help_ = !show_help_; break;
-        case SDL_SCANCODE_TAB: show_panel_ = !show_panel_; break;
-        case SDL_SCANCODE_F11: toggle_fullscreen(); break;
-        case SDL_SCANCODE_B: show_browser_ = !show_browser_; break;
-        default: break;
+void ViewerApp::finish() {
+    if (const int pending = worker_->status().pending_screenshots; pending > 0) {
+        spdlog::info("finishing {} screenshot(s) before exit", pending);
     }
+    browser_.stop_thumbnails();
+    worker_->stop();
+    for (std::string& message : worker_->take_messages()) add_message(std::move(message));
+    if (options_.print_stats) print_stats();
 }
 
-void ViewerApp::feed_replay() {
-    if (!replay_) return;
-    const double now = seconds_since(start_);
-    if (replay_->waiting()) {
-        const bool still_waiting =
-            thumbnails_awaited_ ? !thumbnails_done()
-            : awaited_changes_  ? watched_changes_handled_ <= *awaited_changes_
-                                : !view_idle();
-        if (still_waiting) return;
-        thumbnails_awaited_ = false;
-        awaited_changes_.reset();
-        replay_window_size_.reset();
-        replay_->resume(now);
-    }
-    for (const ReplayEvent& event : replay_->due(now)) push_replay_event(event);
-}
-
-void ViewerApp::push_replay_event(const ReplayEvent& event) {
-    int width = 0, height = 0;
-    SDL_GetWindowSize(window_.get(), &width, &height);
-    SDL_Event sdl{};
-    const Uint32 window_id = SDL_GetWindowID(window_.get());
-    switch (event.action) {
-        case ReplayAction::KeyDown:
-        case ReplayAction::KeyUp:
-        case ReplayAction::KeyPress: {
-            const SDL_Scancode code = scancode_named(event.key);
-            sdl.key.windowID = window_id;
-            sdl.key.keysym.scancode = code;
-            sdl.key.keysym.sym = SDL_GetKeyFromScancode(code);
-            if (event.action != ReplayAction::KeyUp) {
-                sdl.type = SDL_KEYDOWN;
-                sdl.key.state = SDL_PRESSED;
-                SDL_PushEvent(&sdl);
-            }
-            if (event.action != ReplayAction::KeyDown) {
-                sdl.type = SDL_KEYUP;
-                sdl.key.state = SDL_RELEASED;
-                SDL_PushEvent(&sdl);
-            }
-            break;
-        }
-        case ReplayAction::MouseDown:
-        case ReplayAction::MouseUp:
-            sdl.type = event.action == ReplayAction::MouseDown ? SDL_MOUSEBUTTONDOWN
-                                                               : SDL_MOUSEBUTTONUP;
-            sdl.button.windowID = window_id;
-            sdl.button.button = static_cast<Uint8>(event.button);
-            sdl.button.state = event.action == ReplayAction::MouseDown ? SDL_PRESSED : SDL_RELEASED;
-            sdl.button.clicks = 1;
-            sdl.button.x = event.has_position ? event.x : width / 2;
-            sdl.button.y = event.has_position ? event.y : height / 2;
-            SDL_PushEvent(&sdl);
-            break;
-        case ReplayAction::MouseMove:
-            sdl.type = SDL_MOUSEMOTION;
-            sdl.motion.windowID = window_id;
-            sdl.motion.x = width / 2;
-            sdl.motion.y = height / 2;
-            sdl.motion.xrel = event.x;
-            sdl.motion.yrel = event.y;
-            SDL_PushEvent(&sdl);
-            break;
-        case ReplayAction::Wheel:
-            sdl.type = SDL_MOUSEWHEEL;
-            sdl.wheel.windowID = window_id;
-            sdl.wheel.y = event.wheel;
-            sdl.wheel.direction = SDL_MOUSEWHEEL_NORMAL;
-            SDL_PushEvent(&sdl);
-            break;
-        case ReplayAction::Resize:
-            set_window_size(event.x, event.y);
-            replay_window_size_ = {event.x, event.y};
-            break;
-        case ReplayAction::WaitIdle: break;  // the clock holds the script until view_idle()
-        case ReplayAction::WaitReload: awaited_changes_ = watched_changes_handled_; break;
-        case ReplayAction::Quit: quit_ = true; break;
-        case ReplayAction::BrowserSearch:
-        case ReplayAction::BrowserPick:
-        case ReplayAction::WaitThumbnails:
-        case ReplayAction::HybridAdd:
-        case ReplayAction::HybridRemove:
-        case ReplayAction::HybridMove:
-        case ReplayAction::HybridRepeat:
-        case ReplayAction::HybridSave: apply_replay_formula_event(event); break;
-    }
-}
-
-// --- Per-frame updates -----------------------------------------------------------------------
-
-void ViewerApp::update_camera(double dt) {
-    const auto held = [&](SDL_Scancode key) { return held_keys_.count(key) ? 1.0f : 0.0f; };
-    const glm::vec3 local(held(SDL_SCANCODE_D) - held(SDL_SCANCODE_A),
-                          held(SDL_SCANCODE_W) - held(SDL_SCANCODE_S),
-                          held(SDL_SCANCODE_E) - held(SDL_SCANCODE_Q));
-    if (local == glm::vec3(0.0f)) return;
-    playing_ = false;
-    FlyCamera& camera = session().camera;
-    // Until the render thread has measured the distance to the surface, move relative to the
-    // distance to the target.
-    const double de = status_.de_at_camera >= 0.0f ? double(status_.de_at_camera)
-                                                   : 0.25 * camera.target_distance;
-    const bool shift = held(SDL_SCANCODE_LSHIFT) + held(SDL_SCANCODE_RSHIFT) > 0.0f;
-    const double speed = travel_speed(de, speed_factor_ * (shift ? kShiftSpeedUp : 1.0f));
-    camera.move(local, limit_step(speed * dt, de));
-}
-
-void ViewerApp::update_playback(double dt) {
-    if (!playing_) return;
-    const std::vector<CameraPath> paths = playable_paths();
-    if (paths.empty()) {
-        playing_ = false;
-        return;
-    }
-    const CameraPath& path =
-        paths[static_cast<size_t>(std::clamp(session().path_index, 0, int(paths.size()) - 1))];
-    playback_time_ += dt;
-    if (playback_time_ > path.duration()) {
-        if (!loop_playback_) playing_ = false;
-        playback_time_ = loop_playback_ ? std::fmod(playback_time_, double(path.duration()))
-                                        : double(path.duration());
-    }
-    const CameraView view =
-        evaluate_camera_path(path, path.keyframes.front().time + float(playback_time_));
-    session().camera = FlyCamera::from_view(view);
-}
-
-std::shared_ptr<const PreparedEnvironment> ViewerApp::environment_for_scene() {
-    const Scene* current = &scene();
-    auto found = environments_.find(current);
-    if (found != environments_.end()) return found->second;
-    std::shared_ptr<const PreparedEnvironment> prepared;
-    try {
-        prepared = prepare_environment(environment_, *current);
-    } catch (const std::exception& error) {
-        // A file that stopped being readable: say so and light the scene with the sky instead.
-        add_message(fmt::format("environment: {}; using the sky", error.what()));
-        environment_ = EnvironmentChoice{};
-        prepared = prepare_environment(environment_, *current);
-    }
-    return environments_[current] = prepared;
-}
+// --- The view ---------------------------------------------------------------------------------
 
 void ViewerApp::submit_view() {
-    int width = 0, height = 0;
-    SDL_GL_GetDrawableSize(window_.get(), &width, &height);
+    const auto [width, height] = window_.drawable_size();
     ViewState state;
-    state.scene = scenes_[static_cast<size_t>(scene_index_)];
-    state.effects = session().effects;
-    state.view = session().camera.to_view();
-    state.projection = projection_;
-    state.params = session().params;
-    state.precision = precision_;
-    state.mode = current_mode();
+    state.scene = scenes_.current_ptr();
+    state.effects = scenes_.session().effects;
+    state.view = scenes_.session().camera.to_view();
+    state.projection = choices_.projection;
+    state.params = scenes_.session().params;
+    state.precision = choices_.precision;
+    state.mode = choices_.mode_for(scenes_.current());
     if (state.mode == RenderMode::Path) {
-        state.path = path_;
-        state.path.environment = environment_for_scene();
+        state.path = choices_.path;
+        std::string fallback_reason;
+        state.path.environment =
+            environments_.prepare(scenes_.current(), choices_.environment, &fallback_reason);
+        if (!fallback_reason.empty()) add_message(std::move(fallback_reason));
     }
     state.width = std::clamp(width, 1, kMaxImageSide);
     state.height = std::clamp(height, 1, kMaxImageSide);
-    const double now = seconds_since(start_);
-    if (!submitted_ || !same_image_inputs(state, last_state_)) {
-        ++generation_;
-        last_change_ = now;
-    }
-    state.generation = generation_;
-    state.interactive = playing_ || now - last_change_ < kSettleSeconds;
-    last_state_ = state;
-    submitted_ = true;
-    scene_swapped_ = false;
-    worker_->submit(std::move(state));
+    worker_->submit(view_.track(std::move(state), seconds_since(start_), paths_.playing()));
 }
 
 void ViewerApp::receive_frame() {
@@ -510,12 +193,7 @@ void ViewerApp::receive_frame() {
     if (!frame) return;
     texture_->upload(frame->image);
     redraws_pending_ = std::max(redraws_pending_, 1);
-    render_stats_.add(frame->render_ms);
-    if (frame->scale < 1.0f) {
-        ++preview_frames_;
-        preview_scale_sum_ += frame->scale;
-    }
-    ++frames_shown_;
+    stats_.add_shown_frame(*frame);
     frame->image.rgb.clear();  // the texture has it
     shown_ = std::move(frame);
 }
@@ -523,106 +201,159 @@ void ViewerApp::receive_frame() {
 void ViewerApp::log_refined_view() {
     const bool idle = view_idle();
     if (idle && !was_idle_ && shown_) {
-        spdlog::debug("view refined: {}x{}, {} samples per pixel", last_state_.width,
-                      last_state_.height, shown_->samples);
+        spdlog::debug("view refined: {}x{}, {} samples per pixel", view_.last().width,
+                      view_.last().height, shown_->samples);
     }
     was_idle_ = idle;
 }
 
 bool ViewerApp::view_idle() const {
-    if (replay_window_size_) {
-        int width = 0, height = 0;
-        SDL_GetWindowSize(window_.get(), &width, &height);
-        if (std::make_pair(width, height) != *replay_window_size_) return false;
-    }
-    return status_.idle && status_.idle_generation == generation_ && !status_.compiling &&
-           status_.pending_screenshots == 0 && status_.pending_reloads == 0 &&
-           !last_state_.interactive && !scene_swapped_;
+    if (replay_ && replay_->window_size_pending()) return false;
+    return view_.refined(status_);
 }
 
-// --- Actions ---------------------------------------------------------------------------------
+// --- What the parts ask of the viewer ---------------------------------------------------------
 
-void ViewerApp::add_message(std::string message) {
-    messages_.push_back(std::move(message));
-    while (messages_.size() > kMessagesKept) messages_.pop_front();
-    redraws_pending_ = std::max(redraws_pending_, 1);
+InputHost ViewerApp::input_host() {
+    return {
+        .run = [this](ViewerCommand command) { run_command(command); },
+        .over_panel = [this](int x, int y) { return panel_.covers(x, y); },
+        .camera = [this]() -> FlyCamera& { return scenes_.session().camera; },
+        .took_camera = [this] { paths_.stop(); },
+    };
+}
+
+ReloadHost ViewerApp::reload_host() {
+    return {
+        .build = [this](ReloadRequest request) { worker_->request_reload(std::move(request)); },
+        .claim_edit = [this](const ReloadResult& result) { return hybrid_.adopt_edit(result); },
+        .adopt_scene = [this](size_t index,
+                              std::shared_ptr<const Scene> scene) { adopt_scene(index, scene); },
+        .show_refused =
+            [this](std::string summary, std::string log) {
+                panel_.show_refused_update(std::move(summary), std::move(log));
+            },
+        .clear_refused = [this] { panel_.clear_refused_update(); },
+        .add_message = [this](std::string message) { add_message(std::move(message)); },
+    };
+}
+
+HybridHost ViewerApp::hybrid_host() {
+    return {
+        .build = [this](ReloadRequest request) { worker_->request_reload(std::move(request)); },
+        .adopt_scene = [this](size_t index,
+                              std::shared_ptr<const Scene> scene) { adopt_scene(index, scene); },
+        .show_refused =
+            [this](std::string summary, std::string log) {
+                panel_.show_refused_update(std::move(summary), std::move(log));
+            },
+        .add_message = [this](std::string message) { add_message(std::move(message)); },
+    };
+}
+
+BrowserHost ViewerApp::browser_host() {
+    return {
+        .formula_of = [this](size_t index) { return hybrid_.formula_of(index); },
+        .switch_scene = [this](int index) { switch_scene(index); },
+        .add_message = [this](std::string message) { add_message(std::move(message)); },
+    };
+}
+
+PanelHost ViewerApp::panel_host() {
+    return {
+        .switch_scene = [this](int index) { switch_scene(index); },
+        .reset_camera = [this](int camera_index) { reset_camera(camera_index); },
+        .take_screenshot = [this] { take_screenshot(); },
+        .quality_changed = [this] { worker_->set_quality(choices_.quality); },
+        .environment_changed = [this] { environments_.clear(); },
+        .fly_speed = [this] { return input_.speed_factor(); },
+        .set_fly_speed = [this](float factor) { input_.set_speed_factor(factor); },
+        .browser_shown = [this] { return browser_.shown(); },
+        .toggle_browser = [this] { browser_.toggle(); },
+        .draw_formula_sequence = [this] { hybrid_.draw_section(); },
+    };
+}
+
+ReplayHost ViewerApp::replay_host() {
+    return {
+        .window_size = [this] { return window_.size(); },
+        .window_id = [this] { return window_.id(); },
+        .resize_window = [this](int width, int height) { window_.set_size(width, height); },
+        .view_idle = [this] { return view_idle(); },
+        .thumbnails_done = [this] { return browser_.thumbnails_done(); },
+        .changes_handled = [this] { return reloader_.changes_handled(); },
+        .quit = [this] { quit_ = true; },
+        .browser_event = [this](const ReplayEvent& event) { browser_.apply_replay_event(event); },
+        .editor_event = [this](const ReplayEvent& event) { hybrid_.apply_replay_event(event); },
+    };
+}
+
+void ViewerApp::run_command(ViewerCommand command) {
+    switch (command) {
+        case ViewerCommand::Quit:
+            quit_ = true;
+            break;
+        case ViewerCommand::ResetCamera:
+            reset_camera(0);
+            break;
+        case ViewerCommand::NextCamera:
+            reset_camera((scenes_.session().camera_index + 1) %
+                         static_cast<int>(scenes_.current().cameras.size()));
+            break;
+        case ViewerCommand::PreviousScene:
+            switch_scene((scenes_.current_index() + static_cast<int>(scenes_.size()) - 1) %
+                         static_cast<int>(scenes_.size()));
+            break;
+        case ViewerCommand::NextScene:
+            switch_scene((scenes_.current_index() + 1) % static_cast<int>(scenes_.size()));
+            break;
+        case ViewerCommand::TogglePlayback:
+            paths_.toggle_playback();
+            break;
+        case ViewerCommand::RecordKeyframe:
+            paths_.record_keyframe();
+            break;
+        case ViewerCommand::SaveRecordedPath:
+            paths_.save_recorded();
+            break;
+        case ViewerCommand::Screenshot:
+            take_screenshot();
+            break;
+        case ViewerCommand::ToggleHelp:
+            panel_.toggle_help();
+            break;
+        case ViewerCommand::TogglePanel:
+            panel_.toggle_panel();
+            break;
+        case ViewerCommand::ToggleFullscreen:
+            window_.toggle_fullscreen();
+            break;
+        case ViewerCommand::ToggleBrowser:
+            browser_.toggle();
+            break;
+    }
 }
 
 void ViewerApp::switch_scene(int index) {
-    playing_ = false;
-    scene_index_ = index;
-    scene_list_follows_ = true;
-    if (!sessions_.count(index)) sessions_[index] = default_session(scene());
-    spdlog::info("scene '{}'", scene().id);
+    paths_.stop();
+    scenes_.select(index);
+    panel_.follow_current_scene();
+    spdlog::info("scene '{}'", scenes_.current().id);
 }
 
 void ViewerApp::reset_camera(int camera_index) {
-    playing_ = false;
-    session().camera_index = camera_index;
-    session().camera =
-        FlyCamera::from_view(scene().cameras[static_cast<size_t>(camera_index)].view);
-}
-
-std::vector<CameraPath> ViewerApp::playable_paths() const {
-    std::vector<CameraPath> paths = scene().camera_paths;
-    if (session().recorded.keyframes.size() >= 2) paths.push_back(session().recorded);
-    if (loaded_path_) {
-        paths.push_back(loaded_path_->path);
-        paths.back().name = "file: " + loaded_path_->path.name;
-    }
-    return paths;
-}
-
-void ViewerApp::toggle_playback() {
-    if (playing_) {
-        playing_ = false;
-        return;
-    }
-    if (playable_paths().empty()) {
-        add_message("no camera path to play: record one with K");
-        return;
-    }
-    playing_ = true;
-    playback_time_ = 0.0;
-}
-
-void ViewerApp::record_keyframe() {
-    CameraPath& recorded = session().recorded;
-    const float time = recorded.keyframes.empty()
-                           ? 0.0f
-                           : recorded.keyframes.back().time + keyframe_interval_;
-    recorded.keyframes.push_back({time, session().camera.to_view()});
-    add_message(fmt::format("keyframe {} at {:.1f} s", recorded.keyframes.size(), time));
-}
-
-void ViewerApp::save_recorded_path() {
-    const CameraPath& recorded = session().recorded;
-    if (recorded.keyframes.size() < 2) {
-        add_message("record at least two keyframes (K) before saving");
-        return;
-    }
-    const auto file =
-        options_.output_dir / fmt::format("fgr-path-{}-{}.json", scene().id, timestamp());
-    try {
-        write_camera_path_file(file, {scene().id, recorded});
-    } catch (const std::runtime_error& error) {
-        spdlog::error("{}", error.what());
-        add_message(error.what());
-        return;
-    }
-    spdlog::info("saved camera path {} ({} keyframes, {:.1f} s); render it with `fgr render {} "
-                 "--camera-path {} --time T`",
-                 file.string(), recorded.keyframes.size(), recorded.duration(), scene().id,
-                 file.string());
-    add_message(fmt::format("saved {}", file.string()));
+    paths_.stop();
+    scenes_.session().camera_index = camera_index;
+    scenes_.session().camera =
+        FlyCamera::from_view(scenes_.current().cameras[static_cast<size_t>(camera_index)].view);
 }
 
 void ViewerApp::take_screenshot() {
     ScreenshotRequest request;
-    request.state = last_state_;
+    request.state = view_.last();
     request.state.interactive = false;
-    request.samples = quality_.sample_cap;
-    const std::string stem = fmt::format("fgr-{}-{}", scene().id, timestamp());
+    request.samples = choices_.quality.sample_cap;
+    const std::string stem = fmt::format("fgr-{}-{}", scenes_.current().id, file_timestamp());
     std::filesystem::path file = options_.output_dir / (stem + ".png");
     // Two screenshots within a second (the first may not be written yet) must not collide.
     for (int n = 2; std::filesystem::exists(file) || screenshot_files_.count(file); ++n) {
@@ -635,40 +366,38 @@ void ViewerApp::take_screenshot() {
     worker_->request_screenshot(std::move(request));
 }
 
-void ViewerApp::toggle_fullscreen() {
-    fullscreen_ = !fullscreen_;
-    SDL_SetWindowFullscreen(window_.get(), fullscreen_ ? SDL_WINDOW_FULLSCREEN_DESKTOP : 0);
+void ViewerApp::adopt_scene(size_t index, const std::shared_ptr<const Scene>& scene) {
+    scenes_.replace(index, scene);
+    view_.scene_replaced();
 }
 
-void ViewerApp::set_window_size(int width, int height) {
-    if (fullscreen_) toggle_fullscreen();
-    SDL_SetWindowSize(window_.get(), width, height);
+void ViewerApp::add_message(std::string message) {
+    messages_.push_back(std::move(message));
+    while (messages_.size() > kMessagesKept) messages_.pop_front();
+    redraws_pending_ = std::max(redraws_pending_, 1);
 }
 
 void ViewerApp::print_stats() {
-    const FlyCamera& camera = session().camera;
-    fmt::print("scene {}\n", scene().id);
-    if (const FormulaScene* formula = formula_scene_of(static_cast<size_t>(scene_index_))) {
+    const FlyCamera& camera = scenes_.session().camera;
+    fmt::print("scene {}\n", scenes_.current().id);
+    if (const FormulaScene* formula =
+            hybrid_.formula_of(static_cast<size_t>(scenes_.current_index()))) {
         std::string sequence;
         for (const FormulaSlot& slot : formula->sequence) {
             sequence += fmt::format("{}{}*{}", sequence.empty() ? "" : " ", slot.formula->name,
                                     slot.repeat);
         }
         fmt::print("sequence {}\n", sequence);
-        fmt::print("hybrid_edits {}\n", hybrid_edits_);
+        fmt::print("hybrid_edits {}\n", hybrid_.edits_adopted());
     }
-    fmt::print("frames_shown {}\n", frames_shown_);
-    fmt::print("{}\n", format_summary("render_ms", render_stats_.summary()));
-    fmt::print("{}\n", format_summary("ui_frame_ms", ui_stats_.summary()));
-    fmt::print("preview_frames {} mean_scale {:.3f}\n", preview_frames_,
-               preview_frames_ ? preview_scale_sum_ / preview_frames_ : 1.0);
+    stats_.print();
     fmt::print("camera_position {:.6g} {:.6g} {:.6g}\n", camera.position.x, camera.position.y,
                camera.position.z);
     fmt::print("camera_forward {:.6g} {:.6g} {:.6g}\n", camera.forward.x, camera.forward.y,
                camera.forward.z);
     if (shown_) {
         fmt::print("last_frame scale {:.3f} samples {} precision {}\n", shown_->scale,
-                   shown_->samples, precision_label(precision_, shown_->double_precision));
+                   shown_->samples, precision_label(choices_.precision, shown_->double_precision));
     }
 }
 
@@ -692,6 +421,5 @@ int run_viewer(const ViewerOptions& options) {
     ViewerApp app(options, std::move(found.scenes));
     return app.run();
 }
-
 
 }  // namespace fgr::viewer

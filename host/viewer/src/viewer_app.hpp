@@ -1,343 +1,103 @@
 #pragma once
-// The viewer application shared by its source files: viewer_app.cpp (window, input, camera,
-// actions), viewer_panel.cpp (the Dear ImGui panel), viewer_reload.cpp (hot reload) and
-// viewer_formulas.cpp (the formula browser and the hybrid editor). Private to fgr_viewer.
-
-#include <SDL2/SDL.h>
-#include <SDL2/SDL_opengl.h>
-#include <backends/imgui_impl_opengl2.h>
-#include <backends/imgui_impl_sdl.h>
-#include <imgui.h>
+// The viewer application: it owns the window, the render worker and the viewer's parts, hands
+// each part what it asks for through the part's host (a struct of callbacks), and runs the window
+// thread's loop. Private to fgr_viewer.
 
 #include <chrono>
-#include <functional>
-#include <stdexcept>
+#include <cstddef>
 #include <deque>
 #include <filesystem>
-#include <map>
 #include <memory>
 #include <optional>
 #include <set>
 #include <string>
 #include <vector>
 
-#include "camera/camera_path_file.hpp"
-#include "scene/formulas/formulas.hpp"
-#include "image/image_io.hpp"
-#include "render/precision.hpp"
+#include "camera_paths.hpp"
 #include "scene/scene.hpp"
-#include "fgr/viewer/adaptive_quality.hpp"
-#include "fgr/viewer/file_watcher.hpp"
-#include "fgr/viewer/fly_camera.hpp"
-#include "fgr/viewer/frame_stats.hpp"
 #include "fgr/viewer/render_worker.hpp"
-#include "fgr/viewer/replay.hpp"
-#include "fgr/viewer/scene_search.hpp"
-#include "fgr/viewer/thumbnails.hpp"
 #include "fgr/viewer/viewer.hpp"
-
-#include <fmt/format.h>
+#include "formula_browser.hpp"
+#include "gl_handles.hpp"
+#include "hot_reloader.hpp"
+#include "hybrid_editor.hpp"
+#include "input_handler.hpp"
+#include "render_choices.hpp"
+#include "replay_driver.hpp"
+#include "scene_set.hpp"
+#include "view_tracker.hpp"
+#include "viewer_panel.hpp"
+#include "viewer_statistics.hpp"
+#include "viewer_window.hpp"
 
 namespace fgr::viewer {
 
-inline double seconds_since(std::chrono::steady_clock::time_point start) {
-    return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-}
-
-// The precision an image was rendered in, and why when auto chose double.
-inline const char* precision_label(Precision choice, bool in_double) {
-    if (!in_double) return "float";
-    return choice == Precision::Auto ? "double (deep zoom)" : "double";
-}
-
-// --- RAII over SDL and ImGui handles --------------------------------------------------------
-
-struct SdlSession {
-    SdlSession() {
-        if (SDL_Init(SDL_INIT_VIDEO | SDL_INIT_EVENTS) != 0) {
-            throw std::runtime_error(fmt::format(
-                "cannot open a window: {} (no display? run under xvfb-run for headless use)",
-                SDL_GetError()));
-        }
-        // With no display SDL falls back to drivers that show nothing; a viewer nobody can see
-        // is an error unless that is what the user asked for.
-        const std::string driver = SDL_GetCurrentVideoDriver();
-        if ((driver == "offscreen" || driver == "dummy") && !SDL_getenv("SDL_VIDEODRIVER")) {
-            SDL_Quit();
-            throw std::runtime_error(
-                "cannot open a window: no display found (set DISPLAY, run under xvfb-run, or set "
-                "SDL_VIDEODRIVER=offscreen to run without showing anything)");
-        }
-    }
-    ~SdlSession() { SDL_Quit(); }
-    SdlSession(const SdlSession&) = delete;
-    SdlSession& operator=(const SdlSession&) = delete;
-};
-
-struct WindowDeleter {
-    void operator()(SDL_Window* window) const { SDL_DestroyWindow(window); }
-};
-using WindowHandle = std::unique_ptr<SDL_Window, WindowDeleter>;
-
-struct GlContextDeleter {
-    void operator()(void* context) const { SDL_GL_DeleteContext(context); }
-};
-using GlContextHandle = std::unique_ptr<void, GlContextDeleter>;
-
-class ImGuiSession {
-public:
-    ImGuiSession(SDL_Window* window, void* gl_context) {
-        IMGUI_CHECKVERSION();
-        ImGui::CreateContext();
-        ImGui::GetIO().IniFilename = nullptr;  // no imgui.ini in the user's directory
-        ImGui::StyleColorsDark();
-        ImGui_ImplSDL2_InitForOpenGL(window, gl_context);
-        ImGui_ImplOpenGL2_Init();
-    }
-    ~ImGuiSession() {
-        ImGui_ImplOpenGL2_Shutdown();
-        ImGui_ImplSDL2_Shutdown();
-        ImGui::DestroyContext();
-    }
-    ImGuiSession(const ImGuiSession&) = delete;
-    ImGuiSession& operator=(const ImGuiSession&) = delete;
-};
-
-// The texture the rendered image is drawn from.
-class ImageTexture {
-public:
-    ImageTexture() {
-        glGenTextures(1, &id_);
-        glBindTexture(GL_TEXTURE_2D, id_);
-        glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, GL_LINEAR);
-        glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAG_FILTER, GL_LINEAR);
-        glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_WRAP_S, GL_CLAMP);
-        glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_WRAP_T, GL_CLAMP);
-    }
-    ~ImageTexture() { glDeleteTextures(1, &id_); }
-    ImageTexture(const ImageTexture&) = delete;
-    ImageTexture& operator=(const ImageTexture&) = delete;
-
-    void upload(const Image8& image) {
-        glBindTexture(GL_TEXTURE_2D, id_);
-        glPixelStorei(GL_UNPACK_ALIGNMENT, 1);
-        if (image.width != width_ || image.height != height_) {
-            glTexImage2D(GL_TEXTURE_2D, 0, GL_RGB, image.width, image.height, 0, GL_RGB,
-                         GL_UNSIGNED_BYTE, image.rgb.data());
-            width_ = image.width;
-            height_ = image.height;
-        } else {
-            glTexSubImage2D(GL_TEXTURE_2D, 0, 0, 0, width_, height_, GL_RGB, GL_UNSIGNED_BYTE,
-                            image.rgb.data());
-        }
-    }
-    bool empty() const { return width_ == 0; }
-    ImTextureID id() const { return reinterpret_cast<ImTextureID>(static_cast<intptr_t>(id_)); }
-
-private:
-    GLuint id_ = 0;
-    int width_ = 0;
-    int height_ = 0;
-};
-
-// --- Per-scene state, remembered while the viewer runs ---------------------------------------
-
-struct SceneSession {
-    FlyCamera camera;
-    std::vector<float> params;
-    uint64_t effects = 0;
-    int camera_index = 0;
-    int path_index = 0;  // into ViewerApp::playable_paths()
-    CameraPath recorded{"recorded", {}};
-};
-
-// --- The application ---------------------------------------------------------------------
-
 class ViewerApp {
 public:
+    // Throws UsageError for bad options: an unknown scene, path, key or formula in a replay
+    // script, an unreadable camera path file.
     ViewerApp(const ViewerOptions& options, std::vector<Scene> scenes);
     int run();
 
 private:
-    // Setup.
+    // The scene, camera, parameters, effects and path the command line asks for first.
     void prepare_first_scene();
-    void open_window();
+    void start();
+    // One pass of the window thread's loop, `dt` seconds after the last.
+    void update(double dt);
+    void draw_frame();
+    void finish();
 
-    // Input.
-    void pump_events();
-    void handle_event(const SDL_Event& event);
-    void handle_key_down(SDL_Scancode key, bool repeat);
-    void handle_mouse_button(const SDL_MouseButtonEvent& button, bool down);
-    void feed_replay();
-    void push_replay_event(const ReplayEvent& event);
-    bool over_ui(int x, int y) const;
-
-    // Per-frame updates.
-    void update_camera(double dt);
-    void update_playback(double dt);
     void submit_view();
     void receive_frame();
+    // The render thread has refined the view, at the size a replayed resize asked for.
     bool view_idle() const;
     void log_refined_view();  // once each time the view becomes fully refined (debug level)
 
-    // Hot reload.
-    void watch_sources();
-    void poll_sources();
-    void reload_plugin(const std::filesystem::path& file);
-    void reload_source(const std::filesystem::path& file);
-    void apply_reloads();
-    void adopt_scene(size_t index, const std::shared_ptr<const Scene>& scene);
-
-    // The formula browser and the hybrid editor (viewer_formulas.cpp).
-    // The sequence of scene `index` when it is a formula scene (read from its file once, then
-    // what the hybrid editor made of it); null for other scenes and unreadable files.
-    const FormulaScene* formula_scene_of(size_t index);
-    std::vector<size_t> browser_matches();
-    const std::string& thumbnail_key_of(size_t index);
-    void receive_thumbnails();
-    void draw_browser();
-    void draw_thumbnail_cell(size_t index);
-    void draw_hybrid_section();
-    void draw_hybrid_slot(const FormulaScene& formula, size_t slot);
-    // Makes the edit of the current formula scene; the render thread builds the result, which
-    // replaces the scene once it compiles (apply_reloads), the old image staying meanwhile.
-    void edit_hybrid(const std::function<FormulaScene(FormulaScene)>& edit);
-    bool adopt_hybrid_edit(const ReloadResult& result);
-    // Writes the current formula scene, as edited and with the panel's values, as
-    // <output dir>/<id>.formula.json under the id `id`.
-    void save_formula_scene(const std::string& id);
-    bool thumbnails_done();
-    void apply_replay_formula_event(const ReplayEvent& event);
-
-    // Actions.
+    // What the parts ask of the viewer.
+    InputHost input_host();
+    ReloadHost reload_host();
+    HybridHost hybrid_host();
+    BrowserHost browser_host();
+    PanelHost panel_host();
+    ReplayHost replay_host();
+    void run_command(ViewerCommand command);
     void switch_scene(int index);
     void reset_camera(int camera_index);
-    void toggle_playback();
-    void record_keyframe();
-    void save_recorded_path();
     void take_screenshot();
-    void toggle_fullscreen();
-    void set_window_size(int width, int height);
+    // A new version of scene `index` (reloaded, or an edit of its sequence) takes its place.
+    void adopt_scene(size_t index, const std::shared_ptr<const Scene>& scene);
     void add_message(std::string message);
-
-    // The panel.
-    void draw_ui();
-    void draw_image();
-    void draw_status_overlay();
-    void draw_panel();
-    void draw_scene_section();
-    void draw_camera_section();
-    void draw_params_section();
-    void draw_effects_section();
-    void draw_quality_section();
-    void draw_precision_combo();
-    void draw_mode_section();
-    void draw_projection_section();
-    bool draw_environment_controls();
-    void draw_messages();
-    void draw_help();
-    void draw_build_error();
-    void draw_browser_window();
-
-    std::vector<CameraPath> playable_paths() const;
-    // Selects the current scene's playable path `name` for P (UsageError naming the paths).
-    void select_path(const std::string& name);
-    const Scene& scene() const { return *scenes_[static_cast<size_t>(scene_index_)]; }
-    SceneSession& session() { return sessions_.at(scene_index_); }
-    const SceneSession& session() const { return sessions_.at(scene_index_); }
     void print_stats();
 
     ViewerOptions options_;
-    std::vector<std::shared_ptr<const Scene>> scenes_;
-    std::optional<CameraPathFile> loaded_path_;
-    std::vector<ReplayEvent> replay_events_;
-
-    int scene_index_ = 0;
-    std::map<int, SceneSession> sessions_;
-
-    // Created in run(), in this order, destroyed in reverse.
-    std::unique_ptr<SdlSession> sdl_;
-    WindowHandle window_;
-    GlContextHandle gl_context_;
-    std::unique_ptr<ImGuiSession> imgui_;
+    // Opened in run(); declared before everything that holds a texture, so that the OpenGL context
+    // outlives them.
+    ViewerWindow window_;
     std::unique_ptr<ImageTexture> texture_;
     std::unique_ptr<RenderWorker> worker_;
-    std::unique_ptr<ReplayClock> replay_;
+
+    SceneSet scenes_;
+    RenderChoices choices_;
+    SceneEnvironments environments_;
+    CameraPaths paths_;
+    InputHandler input_;
+    HotReloader reloader_;
+    HybridEditor hybrid_;
+    FormulaBrowser browser_;
+    ViewerPanel panel_;
+    std::optional<ReplayDriver> replay_;  // with --replay
 
     std::chrono::steady_clock::time_point start_;
     bool quit_ = false;
-    std::set<SDL_Scancode> held_keys_;
-    bool looking_ = false;
-    float speed_factor_ = 1.0f;
-    bool show_panel_ = true;
-    bool show_help_ = false;
-    bool scene_list_follows_ = true;  // the panel's scene list scrolls to the current scene
-    bool fullscreen_ = false;
-    bool playing_ = false;
-    bool loop_playback_ = true;
-    double playback_time_ = 0.0;
-    float keyframe_interval_ = 2.0f;
-    QualitySettings quality_;
-    Precision precision_ = Precision::Auto;
-    // The render mode chosen in the panel (or by --mode); unset: each scene's own.
-    std::optional<RenderMode> mode_;
-    Projection projection_;  // the panel's projection (or --projection's)
-    PathSettings path_;  // path mode's settings; the environment is prepared per scene
-    EnvironmentChoice environment_;
-    // The environment prepared for each scene (the sky's sun follows the scene's key light),
-    // dropped when the choice changes.
-    std::map<const Scene*, std::shared_ptr<const PreparedEnvironment>> environments_;
-    RenderMode current_mode() const { return mode_.value_or(scene().default_mode); }
-    std::shared_ptr<const PreparedEnvironment> environment_for_scene();
-
-    ViewState last_state_;
-    bool submitted_ = false;
-    double last_change_ = -1e9;
-    uint64_t generation_ = 0;
+    ViewTracker view_;
     WorkerStatus status_;
     bool was_idle_ = false;
     std::optional<DisplayFrame> shown_;  // image data lives in the texture; this keeps its facts
-    ImVec2 panel_min_{0, 0}, panel_max_{0, 0};
     std::deque<std::string> messages_;
     std::set<std::filesystem::path> screenshot_files_;
-    FileWatcher watcher_;
-    double next_watch_ = 0.0;
-    std::pair<std::string, std::string> reload_error_;  // a refused update: summary, log
-    bool scene_swapped_ = false;  // a reload replaced a scene since the last submitted view
-    // Changes to watched files dealt with so far (reloaded, refused, added, failed to load), and
-    // the count when a replayed wait_reload began: the script goes on once it has grown.
-    uint64_t watched_changes_handled_ = 0;
-    std::optional<uint64_t> awaited_changes_;
-    // The window size a replayed resize asked for: the view is not idle until it has it.
-    std::optional<std::pair<int, int>> replay_window_size_;
 
-    // The formula browser: its search, the thumbnails' textures by key, and the sequences of
-    // formula scenes (with the scene version each belongs to: a reload makes it stale).
-    std::unique_ptr<ThumbnailWorker> thumbnails_;
-    bool show_browser_ = false;
-    std::string browser_query_;
-    std::map<std::string, std::unique_ptr<ImageTexture>> thumbnail_textures_;
-    std::map<std::string, std::string> thumbnail_errors_;
-    std::map<const Scene*, std::pair<std::shared_ptr<const Scene>, std::string>> thumbnail_keys_;
-    struct FormulaSource {
-        std::shared_ptr<const Scene> scene;
-        std::optional<FormulaScene> formula;  // none: not a formula scene, or unreadable
-    };
-    std::map<size_t, FormulaSource> formula_sources_;
-    bool thumbnails_awaited_ = false;  // a replayed wait_thumbnails is holding the script
-    // The hybrid edit the render thread is building: the new scene and its sequence.
-    struct PendingHybrid {
-        std::shared_ptr<const Scene> scene;
-        FormulaScene formula;
-    };
-    std::optional<PendingHybrid> pending_hybrid_;
-    std::string hybrid_error_;  // the last edit that was refused, one line
-    std::string save_id_;       // the panel's "save as" id
-    int hybrid_edits_ = 0;      // adopted, for --stats
-
-    FrameStats render_stats_;
-    FrameStats ui_stats_;
-    int frames_shown_ = 0;
+    ViewerStatistics stats_;
     // The window is drawn again only when something may have changed it (an input event, a new
     // frame: redraws_pending_ counts the draws still owed, ImGui settling over two) and at least
     // every kMaxUndrawnSeconds for the status line: redrawing an unchanged window 60 times a
@@ -345,8 +105,6 @@ private:
     // render thread needs.
     int redraws_pending_ = 2;
     std::chrono::steady_clock::time_point last_draw_{};
-    int preview_frames_ = 0;  // shown at reduced resolution
-    double preview_scale_sum_ = 0.0;
 };
 
 }  // namespace fgr::viewer

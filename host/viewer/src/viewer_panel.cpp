@@ -1,14 +1,11 @@
-// The viewer's Dear ImGui panel: status line, scenes, cameras and paths, a widget per
-// parameter, effects, adaptive quality, messages, key bindings and build errors (the formula
-// browser and the sequence editor are in viewer_formulas.cpp).
-#include "viewer_app.hpp"
+#include "viewer_panel.hpp"
+
+#include <fmt/format.h>
+#include <spdlog/spdlog.h>
 
 #include <algorithm>
 #include <array>
 #include <cmath>
-
-#include <fmt/format.h>
-#include <spdlog/spdlog.h>
 
 #include "device/kernel_assembly.hpp"
 #include "scene/parameters.hpp"
@@ -16,6 +13,7 @@
 #include "render/precision.hpp"
 #include "camera/projection.hpp"
 #include "scene/render_mode.hpp"
+#include "viewer_util.hpp"
 
 namespace fgr::viewer {
 namespace {
@@ -23,11 +21,10 @@ namespace {
 constexpr float kPanelWidth = 340.0f;
 constexpr size_t kSceneListRows = 8;  // the scene list's height; it scrolls beyond
 
-const std::pair<const char*, std::pair<int, int>> kWindowPresets[] = {
-    {"1366x768", {1366, 768}},
-    {"1920x1080", {1920, 1080}},
-    {"2560x1440", {2560, 1440}},
-    {"3840x2160", {3840, 2160}}};
+const std::pair<const char*, std::pair<int, int>> kWindowPresets[] = {{"1366x768", {1366, 768}},
+                                                                      {"1920x1080", {1920, 1080}},
+                                                                      {"2560x1440", {2560, 1440}},
+                                                                      {"3840x2160", {3840, 2160}}};
 
 const std::pair<const char*, const char*> kKeyBindings[] = {
     {"W A S D", "move forward, left, back, right"},
@@ -50,39 +47,25 @@ const std::pair<const char*, const char*> kKeyBindings[] = {
 
 }  // namespace
 
-// --- The panel -------------------------------------------------------------------------------
+ViewerPanel::ViewerPanel(SceneSet& scenes, RenderChoices& choices, CameraPaths& paths,
+                         ViewerWindow& window, PanelHost host)
+    : scenes_(scenes), choices_(choices), paths_(paths), window_(window), host_(std::move(host)) {}
 
-void ViewerApp::draw_ui() {
-    ImGui_ImplOpenGL2_NewFrame();
-    ImGui_ImplSDL2_NewFrame();
-    ImGui::NewFrame();
-    draw_image();
-    draw_status_overlay();
-    if (show_panel_) {
-        draw_panel();
-    } else {
-        panel_min_ = panel_max_ = ImVec2(0, 0);
-    }
-    draw_browser_window();
-    draw_build_error();
+void ViewerPanel::draw_dialogs(const WorkerStatus& status) {
+    draw_build_errors(status);
     if (show_help_) draw_help();
-    ImGui::Render();
-    int width = 0, height = 0;
-    SDL_GL_GetDrawableSize(window_.get(), &width, &height);
-    glViewport(0, 0, width, height);
-    glClearColor(0.0f, 0.0f, 0.0f, 1.0f);
-    glClear(GL_COLOR_BUFFER_BIT);
-    ImGui_ImplOpenGL2_RenderDrawData(ImGui::GetDrawData());
-    SDL_GL_SwapWindow(window_.get());
 }
 
-void ViewerApp::draw_image() {
-    if (texture_->empty()) return;
-    const ImVec2 size = ImGui::GetIO().DisplaySize;
-    ImGui::GetBackgroundDrawList()->AddImage(texture_->id(), ImVec2(0, 0), size);
+bool ViewerPanel::covers(int x, int y) const {
+    const auto fx = static_cast<float>(x), fy = static_cast<float>(y);
+    return visible_ && fx >= min_.x && fx < max_.x && fy >= min_.y && fy < max_.y;
 }
 
-void ViewerApp::draw_status_overlay() {
+void ViewerPanel::show_refused_update(std::string summary, std::string log) {
+    refused_update_ = {std::move(summary), std::move(log)};
+}
+
+void ViewerPanel::draw_overlay(const ViewReport& report) {
     ImGui::SetNextWindowPos(ImVec2(8, 8));
     ImGui::SetNextWindowBgAlpha(0.55f);
     const ImGuiWindowFlags flags = ImGuiWindowFlags_NoDecoration | ImGuiWindowFlags_NoInputs |
@@ -90,70 +73,75 @@ void ViewerApp::draw_status_overlay() {
                                    ImGuiWindowFlags_NoSavedSettings |
                                    ImGuiWindowFlags_NoFocusOnAppearing | ImGuiWindowFlags_NoNav;
     ImGui::Begin("##status", nullptr, flags);
-    ImGui::Text("%s  %dx%d", scene().id.c_str(), last_state_.width, last_state_.height);
-    if (shown_) {
-        const bool path = last_state_.mode == RenderMode::Path;
+    ImGui::Text("%s  %dx%d", scenes_.current().id.c_str(), report.view.width, report.view.height);
+    if (report.shown) {
+        const bool path = report.view.mode == RenderMode::Path;
         ImGui::Text("resolution %.0f%%  samples %d/%d  frame %.0f ms  %s",
-                    shown_->scale * 100.0f, shown_->samples,
-                    mode_sample_cap(last_state_.mode) > 0 ? mode_sample_cap(last_state_.mode)
-                                                          : quality_.sample_cap,
-                    shown_->render_ms,
-                    precision_label(precision_, shown_->double_precision));
+                    report.shown->scale * 100.0f, report.shown->samples,
+                    mode_sample_cap(report.view.mode) > 0 ? mode_sample_cap(report.view.mode)
+                                                          : choices_.quality.sample_cap,
+                    report.shown->render_ms,
+                    precision_label(choices_.precision, report.shown->double_precision));
         if (path) {
-            ImGui::Text("path tracing: %d samples/pixel, %.2f M samples/s", shown_->samples,
-                        shown_->samples_per_second / 1e6);
+            ImGui::Text("path tracing: %d samples/pixel, %.2f M samples/s", report.shown->samples,
+                        report.shown->samples_per_second / 1e6);
         }
-        if (scene().ifs && shown_->ifs_depth_reached >= 0) {
+        if (scenes_.current().ifs && report.shown->ifs_depth_reached >= 0) {
             // The slider caps the depth; the pixel footprint stops it sooner where detail
             // would be smaller than a pixel.
-            ImGui::Text("IFS depth reached %d (slider %d)", shown_->ifs_depth_reached,
-                        static_cast<int>(param_value(scene(), last_state_.params, "ifs_depth")));
+            ImGui::Text(
+                "IFS depth reached %d (slider %d)", report.shown->ifs_depth_reached,
+                static_cast<int>(param_value(scenes_.current(), report.view.params, "ifs_depth")));
         }
     }
-    if (status_.compiling) {
+    if (report.status.compiling) {
         ImGui::TextColored(ImVec4(1, 0.8f, 0.2f, 1), "compiling %s%s...",
-                           status_.compiling_scene.c_str(),
-                           status_.compiling_double ? " in double" : "");
+                           report.status.compiling_scene.c_str(),
+                           report.status.compiling_double ? " in double" : "");
     }
-    if (status_.pending_screenshots > 0) {
+    if (report.status.pending_screenshots > 0) {
         ImGui::TextColored(ImVec4(0.6f, 0.9f, 1, 1), "screenshot in progress (%d)",
-                           status_.pending_screenshots);
+                           report.status.pending_screenshots);
     }
-    if (playing_) ImGui::Text("playing path  t = %.1f s", playback_time_);
+    if (paths_.playing()) ImGui::Text("playing path  t = %.1f s", paths_.playback_time());
     ImGui::TextDisabled("H: help");
     ImGui::End();
 }
 
-void ViewerApp::draw_panel() {
+void ViewerPanel::draw_panel(const ViewReport& report) {
+    if (!visible_) {
+        min_ = max_ = ImVec2(0, 0);
+        return;
+    }
     const ImVec2 display = ImGui::GetIO().DisplaySize;
     const float width = std::min(kPanelWidth, display.x * 0.4f);
     ImGui::SetNextWindowPos(ImVec2(display.x - width - 8, 8), ImGuiCond_Always);
     ImGui::SetNextWindowSize(ImVec2(width, display.y - 16), ImGuiCond_Always);
     ImGui::SetNextWindowBgAlpha(0.8f);
     ImGui::Begin("fgr", nullptr, ImGuiWindowFlags_NoMove | ImGuiWindowFlags_NoResize);
-    panel_min_ = ImGui::GetWindowPos();
-    panel_max_ = ImVec2(panel_min_.x + ImGui::GetWindowSize().x,
-                        panel_min_.y + ImGui::GetWindowSize().y);
-    ImGui::Text("frame %.0f ms  ui %.0f fps", shown_ ? shown_->render_ms : 0.0,
+    min_ = ImGui::GetWindowPos();
+    max_ = ImVec2(min_.x + ImGui::GetWindowSize().x, min_.y + ImGui::GetWindowSize().y);
+    ImGui::Text("frame %.0f ms  ui %.0f fps", report.shown ? report.shown->render_ms : 0.0,
                 ImGui::GetIO().Framerate);
     ImGui::PushItemWidth(-150);
     draw_scene_section();
-    draw_hybrid_section();
-    draw_camera_section();
+    host_.draw_formula_sequence();
+    draw_camera_section(report.status);
     draw_projection_section();
     draw_params_section();
-    draw_effects_section();
+    draw_effects_section(report.status);
     draw_mode_section();
-    draw_quality_section();
+    draw_quality_section(report);
     ImGui::PopItemWidth();
-    draw_messages();
+    draw_messages(report.messages);
     ImGui::End();
 }
 
-void ViewerApp::draw_scene_section() {
+void ViewerPanel::draw_scene_section() {
     if (!ImGui::CollapsingHeader("Scene", ImGuiTreeNodeFlags_DefaultOpen)) return;
-    if (ImGui::Button(show_browser_ ? "Hide the formula browser (B)" : "Formula browser (B)")) {
-        show_browser_ = !show_browser_;
+    if (ImGui::Button(host_.browser_shown() ? "Hide the formula browser (B)"
+                                            : "Formula browser (B)")) {
+        host_.toggle_browser();
     }
     // A list of its own that scrolls: with the formula scenes there are fifty, and the sections
     // below must stay in reach.
@@ -161,64 +149,71 @@ void ViewerApp::draw_scene_section() {
                               static_cast<float>(std::min<size_t>(scenes_.size(), kSceneListRows));
     ImGui::BeginChild("scenes", ImVec2(0, list_height + 4), false);
     for (size_t i = 0; i < scenes_.size(); ++i) {
-        const bool selected = static_cast<int>(i) == scene_index_;
-        if (ImGui::Selectable(fmt::format("{}  ({})", scenes_[i]->name, scenes_[i]->id).c_str(),
-                              selected) &&
+        const bool selected = static_cast<int>(i) == scenes_.current_index();
+        const Scene& listed = *scenes_.at(i);
+        if (ImGui::Selectable(fmt::format("{}  ({})", listed.name, listed.id).c_str(), selected) &&
             !selected) {
-            switch_scene(static_cast<int>(i));
+            host_.switch_scene(static_cast<int>(i));
         }
         if (selected && scene_list_follows_) ImGui::SetScrollHereY();
     }
     scene_list_follows_ = false;
     ImGui::EndChild();
-    ImGui::TextWrapped("%s", scene().description.c_str());
+    ImGui::TextWrapped("%s", scenes_.current().description.c_str());
 }
 
-void ViewerApp::draw_camera_section() {
+void ViewerPanel::draw_camera_section(const WorkerStatus& status) {
     if (!ImGui::CollapsingHeader("Camera and paths", ImGuiTreeNodeFlags_DefaultOpen)) return;
-    SceneSession& current = session();
-    const auto& cameras = scene().cameras;
+    SceneSession& current = scenes_.session();
+    const auto& cameras = scenes_.current().cameras;
     if (ImGui::BeginCombo("camera", cameras[size_t(current.camera_index)].name.c_str())) {
         for (size_t i = 0; i < cameras.size(); ++i) {
             if (ImGui::Selectable(cameras[i].name.c_str(), int(i) == current.camera_index)) {
-                reset_camera(static_cast<int>(i));
+                host_.reset_camera(static_cast<int>(i));
             }
         }
         ImGui::EndCombo();
     }
     ImGui::SliderFloat("fov", &current.camera.fov_degrees, 5.0f, 150.0f, "%.0f deg");
-    ImGui::SliderFloat("speed", &speed_factor_, 1e-3f, 1e3f, "%.3g x DE/s",
-                       ImGuiSliderFlags_Logarithmic);
-    if (status_.de_at_camera >= 0.0f) {
-        ImGui::Text("distance to surface %.3g", double(status_.de_at_camera));
+    float speed = host_.fly_speed();
+    if (ImGui::SliderFloat("speed", &speed, 1e-3f, 1e3f, "%.3g x DE/s",
+                           ImGuiSliderFlags_Logarithmic)) {
+        host_.set_fly_speed(speed);
+    }
+    if (status.de_at_camera >= 0.0f) {
+        ImGui::Text("distance to surface %.3g", double(status.de_at_camera));
     } else {
         ImGui::TextDisabled("distance to surface unknown");
     }
 
-    const std::vector<CameraPath> paths = playable_paths();
+    const std::vector<CameraPath> paths = paths_.playable();
     if (!paths.empty()) {
         current.path_index = std::clamp(current.path_index, 0, int(paths.size()) - 1);
         if (ImGui::BeginCombo("path", paths[size_t(current.path_index)].name.c_str())) {
             for (size_t i = 0; i < paths.size(); ++i) {
                 if (ImGui::Selectable(paths[i].name.c_str(), int(i) == current.path_index)) {
                     current.path_index = static_cast<int>(i);
-                    playing_ = false;
+                    paths_.stop();
                 }
             }
             ImGui::EndCombo();
         }
-        if (ImGui::Button(playing_ ? "Stop (P)" : "Play (P)")) toggle_playback();
+        if (ImGui::Button(paths_.playing() ? "Stop (P)" : "Play (P)")) paths_.toggle_playback();
         ImGui::SameLine();
-        ImGui::Checkbox("loop", &loop_playback_);
+        bool loop = paths_.loop();
+        if (ImGui::Checkbox("loop", &loop)) paths_.set_loop(loop);
     }
     ImGui::Text("recorded: %zu keyframes", current.recorded.keyframes.size());
-    if (ImGui::Button("Add keyframe (K)")) record_keyframe();
+    if (ImGui::Button("Add keyframe (K)")) paths_.record_keyframe();
     ImGui::SameLine();
-    if (ImGui::Button("Save (Ctrl+S)")) save_recorded_path();
+    if (ImGui::Button("Save (Ctrl+S)")) paths_.save_recorded();
     ImGui::SameLine();
     if (ImGui::Button("Clear")) current.recorded.keyframes.clear();
-    ImGui::SliderFloat("keyframe spacing", &keyframe_interval_, 0.25f, 10.0f, "%.2f s");
-    if (ImGui::Button("Screenshot (F12)")) take_screenshot();
+    float spacing = paths_.keyframe_interval();
+    if (ImGui::SliderFloat("keyframe spacing", &spacing, 0.25f, 10.0f, "%.2f s")) {
+        paths_.set_keyframe_interval(spacing);
+    }
+    if (ImGui::Button("Screenshot (F12)")) host_.take_screenshot();
 }
 
 namespace {
@@ -237,37 +232,39 @@ void draw_optional_distance(const char* label, std::optional<double>* value, dou
     }
     auto shown = static_cast<float>(**value);
     const auto low = static_cast<float>(std::max(minimum, 1e-4 * automatic));
-    if (ImGui::SliderFloat(label, &shown, low, static_cast<float>(std::max(automatic, 1e-30) * 10.0),
-                           "%.4g", ImGuiSliderFlags_Logarithmic)) {
+    if (ImGui::SliderFloat(label, &shown, low,
+                           static_cast<float>(std::max(automatic, 1e-30) * 10.0), "%.4g",
+                           ImGuiSliderFlags_Logarithmic)) {
         *value = std::max(double(shown), minimum);
     }
 }
 
 }  // namespace
 
-void ViewerApp::draw_projection_section() {
+void ViewerPanel::draw_projection_section() {
     if (!ImGui::CollapsingHeader("Projection", ImGuiTreeNodeFlags_DefaultOpen)) return;
     constexpr std::array kKinds{ProjectionKind::Pinhole, ProjectionKind::Equirectangular,
                                 ProjectionKind::Fisheye, ProjectionKind::StereoSideBySide,
                                 ProjectionKind::StereoTopBottom};
-    if (ImGui::BeginCombo("projection", projection_name(projection_.kind))) {
+    if (ImGui::BeginCombo("projection", projection_name(choices_.projection.kind))) {
         for (const ProjectionKind kind : kKinds) {
-            if (ImGui::Selectable(projection_name(kind), kind == projection_.kind)) {
-                projection_.kind = kind;
+            if (ImGui::Selectable(projection_name(kind), kind == choices_.projection.kind)) {
+                choices_.projection.kind = kind;
             }
         }
         ImGui::EndCombo();
     }
-    if (projection_.kind == ProjectionKind::Fisheye) {
-        ImGui::SliderFloat("fisheye fov", &projection_.fisheye_fov_degrees, 10.0f, 360.0f,
+    if (choices_.projection.kind == ProjectionKind::Fisheye) {
+        ImGui::SliderFloat("fisheye fov", &choices_.projection.fisheye_fov_degrees, 10.0f, 360.0f,
                            "%.0f deg");
     }
-    if (!is_stereo(projection_.kind)) return;
+    if (!is_stereo(choices_.projection.kind)) return;
     // Unset values follow the view: 1/30 of the distance to the target, converging there.
-    const double distance = session().camera.target_distance;
-    draw_optional_distance("eye separation", &projection_.eye_separation,
+    const double distance = scenes_.session().camera.target_distance;
+    draw_optional_distance("eye separation", &choices_.projection.eye_separation,
                            distance * kDefaultSeparationFraction, 0.0);
-    draw_optional_distance("convergence", &projection_.convergence, distance, 1e-6 * distance);
+    draw_optional_distance("convergence", &choices_.projection.convergence, distance,
+                           1e-6 * distance);
 }
 
 namespace {
@@ -302,8 +299,8 @@ bool edit_param(const ParamInfo& param, float* value) {
                 }
                 current = low + index;
             } else {
-                changed = ImGui::SliderInt(label, &current, low,
-                                           static_cast<int>(param.max_value), "%d", clamp);
+                changed = ImGui::SliderInt(label, &current, low, static_cast<int>(param.max_value),
+                                           "%d", clamp);
             }
             *value = static_cast<float>(current);
             break;
@@ -315,10 +312,11 @@ bool edit_param(const ParamInfo& param, float* value) {
             break;
         }
         case ParamType::Vec3:
-            changed = ImGui::SliderFloat3(label, value, param.min_value, param.max_value, "%.3g",
-                                          clamp);
+            changed =
+                ImGui::SliderFloat3(label, value, param.min_value, param.max_value, "%.3g", clamp);
             break;
-        case ParamType::Colour: changed = ImGui::ColorEdit3(label, value, ImGuiColorEditFlags_Float);
+        case ParamType::Colour:
+            changed = ImGui::ColorEdit3(label, value, ImGuiColorEditFlags_Float);
             break;
     }
     if (ImGui::IsItemHovered() && !param.description.empty()) {
@@ -330,8 +328,8 @@ bool edit_param(const ParamInfo& param, float* value) {
 
 }  // namespace
 
-void ViewerApp::draw_params_section() {
-    const Scene& current = scene();
+void ViewerPanel::draw_params_section() {
+    const Scene& current = scenes_.current();
     const std::vector<int> offsets = param_offsets(current);
     std::vector<std::string> groups;  // in order of first appearance
     for (const ParamInfo& param : current.params) {
@@ -350,39 +348,39 @@ void ViewerApp::draw_params_section() {
             const ParamInfo& param = current.params[i];
             if (param.group != group) continue;
             ImGui::PushID(param.id.c_str());
-            edit_param(param, &session().params[static_cast<size_t>(offsets[i])]);
+            edit_param(param, &scenes_.session().params[static_cast<size_t>(offsets[i])]);
             ImGui::PopID();
         }
         if (group == "Quality" && ImGui::Button("Reset parameters")) {
-            session().params = default_param_values(current);
+            scenes_.session().params = default_param_values(current);
         }
     }
 }
 
-void ViewerApp::draw_effects_section() {
+void ViewerPanel::draw_effects_section(const WorkerStatus& status) {
     if (!ImGui::CollapsingHeader("Effects (compiled in)", ImGuiTreeNodeFlags_DefaultOpen)) return;
-    uint64_t& effects = session().effects;
+    uint64_t& effects = scenes_.session().effects;
     // An IFS scene offers only the effects exact tracing supports (kIfsEffects).
-    const uint64_t offered = FGR_EFFECT_ALL_V1 & supported_effects(scene());
+    const uint64_t offered = FGR_EFFECT_ALL_V1 & supported_effects(scenes_.current());
     for (uint64_t bit = 1; bit != 0 && bit <= FGR_EFFECT_ALL_V1; bit <<= 1) {
         if ((offered & bit) == 0) continue;
         bool on = (effects & bit) != 0;
         if (ImGui::Checkbox(effect_names(bit).c_str(), &on)) effects ^= bit;
     }
-    if (status_.compiling) ImGui::TextColored(ImVec4(1, 0.8f, 0.2f, 1), "compiling...");
+    if (status.compiling) ImGui::TextColored(ImVec4(1, 0.8f, 0.2f, 1), "compiling...");
 }
 
-void ViewerApp::draw_quality_section() {
+void ViewerPanel::draw_quality_section(const ViewReport& report) {
     if (!ImGui::CollapsingHeader("Adaptive quality", ImGuiTreeNodeFlags_DefaultOpen)) return;
-    float target = static_cast<float>(quality_.target_ms);
+    float target = static_cast<float>(choices_.quality.target_ms);
     bool changed = ImGui::SliderFloat("target frame", &target, 5.0f, 200.0f, "%.0f ms");
-    changed |= ImGui::SliderInt("sample cap", &quality_.sample_cap, 1, 256, "%d",
+    changed |= ImGui::SliderInt("sample cap", &choices_.quality.sample_cap, 1, 256, "%d",
                                 ImGuiSliderFlags_Logarithmic);
     if (changed) {
-        quality_.target_ms = target;
-        worker_->set_quality(quality_);
+        choices_.quality.target_ms = target;
+        host_.quality_changed();
     }
-    draw_precision_combo();
+    draw_precision_combo(report);
     int preset = -1;
     const char* preview = "window size";
     if (ImGui::BeginCombo("window", preview)) {
@@ -392,22 +390,20 @@ void ViewerApp::draw_quality_section() {
         ImGui::EndCombo();
     }
     if (preset >= 0) {
-        set_window_size(kWindowPresets[preset].second.first, kWindowPresets[preset].second.second);
+        window_.set_size(kWindowPresets[preset].second.first, kWindowPresets[preset].second.second);
     }
-    if (ImGui::Checkbox("fullscreen (F11)", &fullscreen_)) {
-        fullscreen_ = !fullscreen_;
-        toggle_fullscreen();
-    }
-    ImGui::TextDisabled("device: %s", worker_->device_info().name.c_str());
+    bool fullscreen = window_.fullscreen();
+    if (ImGui::Checkbox("fullscreen (F11)", &fullscreen)) window_.toggle_fullscreen();
+    ImGui::TextDisabled("device: %s", report.device.name.c_str());
 }
 
-void ViewerApp::draw_mode_section() {
+void ViewerPanel::draw_mode_section() {
     if (!ImGui::CollapsingHeader("Render mode", ImGuiTreeNodeFlags_DefaultOpen)) return;
-    const RenderMode current = current_mode();
+    const RenderMode current = choices_.mode_for(scenes_.current());
     if (ImGui::BeginCombo("mode", std::string(render_mode_name(current)).c_str())) {
         for (const RenderModeInfo& info : render_modes()) {
             if (ImGui::Selectable(std::string(info.name).c_str(), info.mode == current)) {
-                mode_ = info.mode;
+                choices_.mode = info.mode;
             }
             if (ImGui::IsItemHovered()) ImGui::SetTooltip("%s", std::string(info.summary).c_str());
         }
@@ -415,19 +411,18 @@ void ViewerApp::draw_mode_section() {
     }
     if (current != RenderMode::Path) return;
     ImGui::TextDisabled("accumulates while the camera stands still");
-    if (draw_environment_controls()) environments_.clear();
-    ImGui::SliderInt("bounces", &path_.max_bounces, 0, 32);
-    ImGui::Checkbox("light sampling", &path_.light_sampling);
+    if (draw_environment_controls()) host_.environment_changed();
+    ImGui::SliderInt("bounces", &choices_.path.max_bounces, 0, 32);
+    ImGui::Checkbox("light sampling", &choices_.path.light_sampling);
     ImGui::SameLine();
-    ImGui::Checkbox("MIS", &path_.mis);
-    ImGui::Checkbox("scene lights", &path_.scene_lights);
+    ImGui::Checkbox("MIS", &choices_.path.mis);
+    ImGui::Checkbox("scene lights", &choices_.path.scene_lights);
     if (ImGui::IsItemHovered()) {
         ImGui::SetTooltip("the scene's own lights shine besides the environment");
     }
 }
 
-// The environment's controls; true when the choice changed (its maps are then made again).
-bool ViewerApp::draw_environment_controls() {
+bool ViewerPanel::draw_environment_controls() {
     static constexpr std::pair<EnvironmentKind, const char*> kinds[] = {
         {EnvironmentKind::Sky, "sky"},
         {EnvironmentKind::Studio, "studio"},
@@ -437,83 +432,86 @@ bool ViewerApp::draw_environment_controls() {
     bool changed = false;
     const char* shown = "sky";
     for (const auto& [kind, name] : kinds) {
-        if (kind == environment_.kind) shown = name;
+        if (kind == choices_.environment.kind) shown = name;
     }
     if (ImGui::BeginCombo("environment", shown)) {
         for (const auto& [kind, name] : kinds) {
             // A file comes from --environment FILE; without one there is none to pick.
-            const bool unavailable = kind == EnvironmentKind::File && environment_.file.empty();
-            if (ImGui::Selectable(name, kind == environment_.kind,
+            const bool unavailable =
+                kind == EnvironmentKind::File && choices_.environment.file.empty();
+            if (ImGui::Selectable(name, kind == choices_.environment.kind,
                                   unavailable ? ImGuiSelectableFlags_Disabled : 0)) {
-                changed |= kind != environment_.kind;
-                environment_.kind = kind;
+                changed |= kind != choices_.environment.kind;
+                choices_.environment.kind = kind;
             }
         }
         ImGui::EndCombo();
     }
-    if (environment_.kind == EnvironmentKind::File) {
-        ImGui::TextDisabled("%s", environment_.file.filename().string().c_str());
+    if (choices_.environment.kind == EnvironmentKind::File) {
+        ImGui::TextDisabled("%s", choices_.environment.file.filename().string().c_str());
     }
     // Sliders change the maps when let go: making a sky takes a few milliseconds, not a frame's.
-    ImGui::SliderFloat("intensity", &environment_.intensity, 0.0f, 10.0f, "%.2f",
+    ImGui::SliderFloat("intensity", &choices_.environment.intensity, 0.0f, 10.0f, "%.2f",
                        ImGuiSliderFlags_Logarithmic);
     changed |= ImGui::IsItemDeactivatedAfterEdit();
-    ImGui::SliderFloat("rotation", &environment_.rotation_degrees, -180.0f, 180.0f, "%.0f deg");
+    ImGui::SliderFloat("rotation", &choices_.environment.rotation_degrees, -180.0f, 180.0f,
+                       "%.0f deg");
     changed |= ImGui::IsItemDeactivatedAfterEdit();
-    if (environment_.kind == EnvironmentKind::Sky) {
-        ImGui::SliderFloat("turbidity", &environment_.sky.turbidity, 1.7f, 10.0f, "%.1f");
+    if (choices_.environment.kind == EnvironmentKind::Sky) {
+        ImGui::SliderFloat("turbidity", &choices_.environment.sky.turbidity, 1.7f, 10.0f, "%.1f");
         changed |= ImGui::IsItemDeactivatedAfterEdit();
-        bool own_sun = !environment_.sun_from_scene;
+        bool own_sun = !choices_.environment.sun_from_scene;
         if (ImGui::Checkbox("place the sun", &own_sun)) {
-            environment_.sun_from_scene = !own_sun;
+            choices_.environment.sun_from_scene = !own_sun;
             changed = true;
         }
         if (ImGui::IsItemHovered()) {
             ImGui::SetTooltip("off: the sun stands where the scene's key light is");
         }
         if (own_sun) {
-            ImGui::SliderFloat("sun elevation", &environment_.sky.sun_elevation_degrees, -5.0f,
-                               90.0f, "%.0f deg");
+            ImGui::SliderFloat("sun elevation", &choices_.environment.sky.sun_elevation_degrees,
+                               -5.0f, 90.0f, "%.0f deg");
             changed |= ImGui::IsItemDeactivatedAfterEdit();
-            ImGui::SliderFloat("sun azimuth", &environment_.sky.sun_azimuth_degrees, -180.0f,
-                               180.0f, "%.0f deg");
+            ImGui::SliderFloat("sun azimuth", &choices_.environment.sky.sun_azimuth_degrees,
+                               -180.0f, 180.0f, "%.0f deg");
             changed |= ImGui::IsItemDeactivatedAfterEdit();
         }
     }
     return changed;
 }
 
-void ViewerApp::draw_precision_combo() {
-    const bool has_fp64 = worker_->device_info().has_fp64;
-    if (ImGui::BeginCombo("precision", std::string(precision_name(precision_)).c_str())) {
+void ViewerPanel::draw_precision_combo(const ViewReport& report) {
+    const bool has_fp64 = report.device.has_fp64;
+    if (ImGui::BeginCombo("precision", std::string(precision_name(choices_.precision)).c_str())) {
         for (Precision choice : {Precision::Auto, Precision::Float, Precision::Double}) {
             // Without cl_khr_fp64 double cannot be chosen; auto then stays in float.
             const ImGuiSelectableFlags flags =
                 choice == Precision::Double && !has_fp64 ? ImGuiSelectableFlags_Disabled : 0;
             if (ImGui::Selectable(std::string(precision_name(choice)).c_str(),
-                                  choice == precision_, flags)) {
-                precision_ = choice;
+                                  choice == choices_.precision, flags)) {
+                choices_.precision = choice;
             }
         }
         ImGui::EndCombo();
     }
     if (ImGui::IsItemHovered()) {
-        ImGui::SetTooltip("auto: double where a pixel is finer than float resolves (deep "
-                          "zooms); double costs ~2.3x on a CPU");
+        ImGui::SetTooltip(
+            "auto: double where a pixel is finer than float resolves (deep "
+            "zooms); double costs ~2.3x on a CPU");
     }
-    if (shown_) {
+    if (report.shown) {
         ImGui::TextDisabled("rendered in %s",
-                            precision_label(precision_, shown_->double_precision));
+                            precision_label(choices_.precision, report.shown->double_precision));
     }
 }
 
-void ViewerApp::draw_messages() {
-    if (messages_.empty()) return;
+void ViewerPanel::draw_messages(const std::deque<std::string>& messages) {
+    if (messages.empty()) return;
     ImGui::Separator();
-    for (const std::string& message : messages_) ImGui::TextWrapped("%s", message.c_str());
+    for (const std::string& message : messages) ImGui::TextWrapped("%s", message.c_str());
 }
 
-void ViewerApp::draw_help() {
+void ViewerPanel::draw_help() {
     const ImVec2 display = ImGui::GetIO().DisplaySize;
     ImGui::SetNextWindowPos(ImVec2(display.x * 0.5f, display.y * 0.5f), ImGuiCond_Always,
                             ImVec2(0.5f, 0.5f));
@@ -536,31 +534,31 @@ void ViewerApp::draw_help() {
     ImGui::End();
 }
 
-void ViewerApp::draw_build_error() {
-    if (!reload_error_.first.empty()) {
+void ViewerPanel::draw_build_errors(const WorkerStatus& status) {
+    if (!refused_update_.first.empty()) {
         const ImVec2 display = ImGui::GetIO().DisplaySize;
         ImGui::SetNextWindowPos(ImVec2(16, display.y * 0.25f), ImGuiCond_Appearing);
         ImGui::SetNextWindowSize(ImVec2(std::min(640.0f, display.x * 0.6f), display.y * 0.45f),
                                  ImGuiCond_Appearing);
         bool open = true;
         ImGui::Begin("Update refused", &open);
-        ImGui::TextColored(ImVec4(1, 0.4f, 0.4f, 1), "%s", reload_error_.first.c_str());
+        ImGui::TextColored(ImVec4(1, 0.4f, 0.4f, 1), "%s", refused_update_.first.c_str());
         ImGui::BeginChild("log", ImVec2(0, 0), true, ImGuiWindowFlags_HorizontalScrollbar);
-        ImGui::TextUnformatted(reload_error_.second.c_str());
+        ImGui::TextUnformatted(refused_update_.second.c_str());
         ImGui::EndChild();
         ImGui::End();
-        if (!open) reload_error_ = {};
+        if (!open) refused_update_ = {};
     }
-    if (status_.error.empty()) return;
+    if (status.error.empty()) return;
     const ImVec2 display = ImGui::GetIO().DisplaySize;
     ImGui::SetNextWindowPos(ImVec2(16, display.y * 0.3f), ImGuiCond_Appearing);
     ImGui::SetNextWindowSize(ImVec2(std::min(640.0f, display.x * 0.6f), display.y * 0.5f),
                              ImGuiCond_Appearing);
     ImGui::Begin("Kernel build failed");
-    ImGui::TextColored(ImVec4(1, 0.4f, 0.4f, 1), "%s", status_.error.c_str());
+    ImGui::TextColored(ImVec4(1, 0.4f, 0.4f, 1), "%s", status.error.c_str());
     ImGui::TextWrapped("The previous image stays; fix the scene, or switch scenes or effects.");
     ImGui::BeginChild("log", ImVec2(0, 0), true, ImGuiWindowFlags_HorizontalScrollbar);
-    ImGui::TextUnformatted(status_.error_log.c_str());
+    ImGui::TextUnformatted(status.error_log.c_str());
     ImGui::EndChild();
     ImGui::End();
 }

@@ -49,6 +49,7 @@ struct ViewState {
     PathSettings path;  // mode Path: bounces, strategies, the environment (null: the sky)
     bool interactive = false;  // the view is changing: preview frames, no refinement
     uint64_t generation = 0;
+    bool operator==(const ViewState&) const = default;
 };
 
 // Samples per pixel the path tracer accumulates while the view stands still (the shaded mode's
