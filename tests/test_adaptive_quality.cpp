@@ -7,7 +7,7 @@
 #include <cstdint>
 #include <limits>
 
-#include "fgr/viewer/adaptive_quality.hpp"
+#include "viewer/adaptive_quality.hpp"
 
 namespace fgr::viewer {
 namespace {

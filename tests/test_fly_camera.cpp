@@ -10,7 +10,7 @@
 #include <glm/geometric.hpp>
 
 #include "deep_zoom.hpp"
-#include "fgr/viewer/fly_camera.hpp"
+#include "viewer/fly_camera.hpp"
 #include "mandelbulb_reference.hpp"
 #include "test_scenes.hpp"
 

@@ -6,7 +6,7 @@
 #include <limits>
 #include <string>
 
-#include "fgr/viewer/frame_stats.hpp"
+#include "viewer/frame_stats.hpp"
 
 namespace fgr::viewer {
 namespace {

@@ -14,7 +14,7 @@
 #include "child_process.hpp"
 #include "scene/parameters.hpp"
 #include "scene/plugin_loader.hpp"
-#include "fgr/viewer/file_watcher.hpp"
+#include "viewer/file_watcher.hpp"
 #include "test_scenes.hpp"
 
 namespace fgr::viewer {

@@ -19,8 +19,8 @@
 
 #include "child_process.hpp"
 #include "video_decoding.hpp"
-#include "fgr/distributed/frame_wire.hpp"
-#include "fgr/distributed/task_farm.hpp"
+#include "distributed/frame_wire.hpp"
+#include "distributed/task_farm.hpp"
 #include "image/hdr_io.hpp"
 
 namespace fgr {

@@ -27,7 +27,7 @@
 #include "render/precision.hpp"
 #include "render/renderer.hpp"
 #include "output/still_image.hpp"
-#include "fgr/viewer/render_worker.hpp"
+#include "viewer/render_worker.hpp"
 #include "deep_zoom.hpp"
 #include "mandelbulb_reference.hpp"
 #include "test_scenes.hpp"

@@ -22,7 +22,7 @@
 #include "render/precision.hpp"
 #include "device/program_cache.hpp"
 #include "render/renderer.hpp"
-#include "fgr/viewer/render_worker.hpp"
+#include "viewer/render_worker.hpp"
 #include "deep_zoom.hpp"
 #include "mandelbulb_reference.hpp"
 #include "test_scenes.hpp"

@@ -12,7 +12,7 @@
 #include <utility>
 #include <vector>
 
-#include "fgr/viewer/replay.hpp"
+#include "viewer/replay.hpp"
 
 namespace fgr::viewer {
 namespace {

@@ -8,7 +8,7 @@
 #include <vector>
 
 #include "scene/formulas/formulas.hpp"
-#include "fgr/viewer/scene_search.hpp"
+#include "viewer/scene_search.hpp"
 
 namespace fgr::viewer {
 namespace {

@@ -11,7 +11,7 @@
 #include "child_process.hpp"
 #include "scene/formulas/formulas.hpp"
 #include "device/program_cache.hpp"
-#include "fgr/viewer/thumbnails.hpp"
+#include "viewer/thumbnails.hpp"
 
 namespace fgr::viewer {
 namespace {

@@ -27,7 +27,7 @@
 #include "camera/camera_path_file.hpp"
 #include "scene/formulas/formulas.hpp"
 #include "image/image_io.hpp"
-#include "fgr/viewer/thumbnails.hpp"
+#include "viewer/thumbnails.hpp"
 #include "hermetic_caches.hpp"
 
 namespace fgr {

@@ -6,7 +6,7 @@
 #include <optional>
 #include <utility>
 
-#include "input_handler.hpp"
+#include "viewer/input_handler.hpp"
 
 namespace fgr::viewer {
 namespace {

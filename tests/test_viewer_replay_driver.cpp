@@ -11,8 +11,8 @@
 #include <utility>
 #include <vector>
 
-#include "fgr/viewer/replay.hpp"
-#include "replay_driver.hpp"
+#include "viewer/replay.hpp"
+#include "viewer/replay_driver.hpp"
 
 namespace fgr::viewer {
 namespace {

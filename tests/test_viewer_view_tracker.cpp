@@ -12,8 +12,8 @@
 
 #include "render/path_settings.hpp"
 #include "scene/scene.hpp"
-#include "fgr/viewer/render_worker.hpp"
-#include "view_tracker.hpp"
+#include "viewer/render_worker.hpp"
+#include "viewer/view_tracker.hpp"
 
 namespace fgr::viewer {
 namespace {

@@ -12,7 +12,7 @@
 #include <spdlog/spdlog.h>
 
 #include "commands.hpp"
-#include "fgr/distributed/cluster.hpp"
+#include "distributed/cluster.hpp"
 #include "device/program_cache.hpp"
 
 namespace fgr {

@@ -19,8 +19,8 @@
 #include "diagnostics/accuracy.hpp"
 #include "diagnostics/bench.hpp"
 #include "scene/discovery.hpp"
-#include "fgr/distributed/cluster.hpp"
-#include "fgr/distributed/task_farm.hpp"
+#include "distributed/cluster.hpp"
+#include "distributed/task_farm.hpp"
 #include "device/opencl_device.hpp"
 #include "scene/parameters.hpp"
 #include "render/path_settings.hpp"
@@ -30,7 +30,7 @@
 #include "scene/scene.hpp"
 #include "output/still_image.hpp"
 #include "camera/view_override.hpp"
-#include "fgr/viewer/viewer.hpp"
+#include "viewer/viewer.hpp"
 
 namespace fgr {
 

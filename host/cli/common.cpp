@@ -7,7 +7,7 @@
 
 #include "commands.hpp"
 #include "util/atomic_file.hpp"
-#include "fgr/distributed/cluster.hpp"
+#include "distributed/cluster.hpp"
 #include "device/program_cache.hpp"
 #include "render/renderer.hpp"
 #include "scene/scene_index.hpp"

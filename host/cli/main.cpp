@@ -1,5 +1,5 @@
 #include "cli.hpp"
-#include "fgr/distributed/cluster.hpp"
+#include "distributed/cluster.hpp"
 
 int main(int argc, char** argv) {
     // Joins the MPI job when mpirun started fgr on several ranks (fgr/distributed/cluster.hpp).

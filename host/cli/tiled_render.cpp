@@ -14,9 +14,9 @@
 #include <fmt/format.h>
 #include <spdlog/spdlog.h>
 
-#include "fgr/distributed/cluster.hpp"
-#include "fgr/distributed/frame_wire.hpp"
-#include "fgr/distributed/task_farm.hpp"
+#include "distributed/cluster.hpp"
+#include "distributed/frame_wire.hpp"
+#include "distributed/task_farm.hpp"
 #include "scene/parameters.hpp"
 #include "render/precision.hpp"
 #include "cli/progress.hpp"

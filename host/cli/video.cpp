@@ -18,9 +18,9 @@
 
 #include "commands.hpp"
 #include "camera/camera.hpp"
-#include "fgr/distributed/cluster.hpp"
-#include "fgr/distributed/frame_wire.hpp"
-#include "fgr/distributed/task_farm.hpp"
+#include "distributed/cluster.hpp"
+#include "distributed/frame_wire.hpp"
+#include "distributed/task_farm.hpp"
 #include "device/program_cache.hpp"
 #include "cli/progress.hpp"
 #include "output/video/video_encoder.hpp"

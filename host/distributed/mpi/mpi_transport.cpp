@@ -9,7 +9,7 @@
 
 #include <fmt/format.h>
 
-#include "transport.hpp"
+#include "distributed/transport.hpp"
 
 namespace fgr {
 namespace {

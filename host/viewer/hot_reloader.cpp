@@ -1,0 +1,135 @@
+#include "viewer/hot_reloader.hpp"
+
+#include <fmt/format.h>
+#include <spdlog/spdlog.h>
+
+#include <optional>
+#include <stdexcept>
+#include <string>
+#include <utility>
+
+#include "scene/discovery.hpp"
+#include "scene/scene_file.hpp"
+#include "scene/scene_source.hpp"
+
+namespace fgr::viewer {
+namespace {
+
+// How often plugin folders (and in --dev mode scene sources) are checked for changes.
+constexpr double kWatchSeconds = 0.5;
+
+}  // namespace
+
+HotReloader::HotReloader(SceneSet& scenes, bool dev, ReloadHost host)
+    : scenes_(scenes), dev_(dev), host_(std::move(host)) {}
+
+void HotReloader::watch() {
+    for (const auto& directory : plugin_search_path(executable_dir())) {
+        watcher_.watch_directory(directory);
+    }
+    if (dev_) {
+        // A scene built with fgr_add_scene_plugin names its .cl file by absolute path.
+        for (size_t i = 0; i < scenes_.size(); ++i) {
+            const Scene& scene = *scenes_.at(i);
+            const std::filesystem::path source = scene.source_name;
+            if (source.is_absolute() && std::filesystem::exists(source)) {
+                watcher_.watch_file(source);
+                spdlog::info("watching {} for '{}'", source.string(), scene.id);
+            }
+        }
+    }
+    watcher_.poll();  // what is there now is what was loaded
+}
+
+void HotReloader::poll(double now_seconds) {
+    if (now_seconds < next_poll_) return;
+    next_poll_ = now_seconds + kWatchSeconds;
+    for (const std::filesystem::path& file : watcher_.poll()) {
+        if (is_scene_file_name(file)) {
+            reload_plugin(file);
+        } else {
+            reload_source(file);
+        }
+    }
+}
+
+void HotReloader::reload_plugin(const std::filesystem::path& file) {
+    // A plugin from a fresh copy (a library still loaded under this path would come back as it
+    // was), an IFS file read again.
+    LoadResult loaded = reload_scene_file(file);
+    if (!loaded.scene) {
+        const std::string message =
+            fmt::format("{}: {} (keeping the version loaded before)", file.string(), loaded.error);
+        spdlog::error("{}", message);
+        host_.add_message(message);
+        host_.show_refused(message, "");
+        ++changes_handled_;
+        return;
+    }
+    auto candidate = std::make_shared<const Scene>(std::move(*loaded.scene));
+    const std::optional<size_t> same_id = scenes_.find(candidate->id);
+    if (!same_id) {
+        spdlog::info("new scene '{}' from {}", candidate->id, file.string());
+        host_.add_message(fmt::format("new scene '{}'", candidate->id));
+        scenes_.add(candidate);
+        // An IFS scene's source is generated, not a file to watch.
+        if (dev_ && !candidate->ifs) watcher_.watch_file(candidate->source_name);
+        ++changes_handled_;
+        return;
+    }
+    const std::shared_ptr<const Scene>& running = scenes_.at(*same_id);
+    if (running->plugin_file != candidate->plugin_file) {
+        spdlog::warn("{}: scene '{}' is already loaded from {}; ignored", file.string(),
+                     candidate->id, running->plugin_file.string());
+        ++changes_handled_;
+        return;
+    }
+    const SceneSession* session = scenes_.session_of(*same_id);
+    const uint64_t effects = session ? session->effects : candidate->effects;
+    spdlog::info("{} changed: building the new '{}'", file.string(), candidate->id);
+    host_.build({candidate, running, effects});
+}
+
+void HotReloader::reload_source(const std::filesystem::path& file) {
+    std::string text;
+    try {
+        text = read_source_file(file);
+    } catch (const std::runtime_error& error) {
+        host_.add_message(error.what());
+        ++changes_handled_;
+        return;
+    }
+    for (size_t i = 0; i < scenes_.size(); ++i) {
+        if (scenes_.at(i)->source_name != file.string()) continue;
+        Scene edited = *scenes_.at(i);
+        edited.source = text;
+        const SceneSession* session = scenes_.session_of(i);
+        const uint64_t effects = session ? session->effects : edited.effects;
+        spdlog::info("{} changed: building the new '{}'", file.string(), edited.id);
+        host_.build({std::make_shared<const Scene>(std::move(edited)), scenes_.at(i), effects});
+    }
+}
+
+void HotReloader::apply(const std::vector<ReloadResult>& results) {
+    for (const ReloadResult& result : results) {
+        ++changes_handled_;
+        if (host_.claim_edit(result)) continue;
+        const std::optional<size_t> running = scenes_.index_of(result.request.replaces);
+        if (!running) continue;  // replaced again meanwhile
+        const std::string& id = result.request.candidate->id;
+        if (!result.ok) {
+            const std::string message = fmt::format(
+                "update of '{}' refused, keeping the previous version: {}", id, result.error);
+            spdlog::error("{}", message);
+            host_.add_message(message);
+            host_.show_refused(message, result.error_log);
+            continue;
+        }
+        host_.adopt_scene(*running, result.request.candidate);
+        host_.clear_refused();
+        spdlog::info("reloaded '{}'", id);
+        host_.add_message(fmt::format("reloaded '{}'", id));
+    }
+}
+
+}  // namespace fgr::viewer

@@ -1,0 +1,415 @@
+#include "viewer/render_worker.hpp"
+
+#include <algorithm>
+#include <cmath>
+
+#include <fmt/format.h>
+#include <glm/geometric.hpp>
+#include <spdlog/spdlog.h>
+
+#include "scene/parameters.hpp"
+
+namespace fgr::viewer {
+namespace {
+
+FrameRequest frame_request(const ViewState& state, int width, int height) {
+    FrameRequest request;
+    request.width = width;
+    request.height = height;
+    request.view = state.view;
+    request.projection = state.projection;
+    request.params = state.params;
+    request.path = state.path;
+    return request;
+}
+
+double samples_per_second(int width, int height, double render_ms) {
+    return render_ms > 0.0 ? double(width) * double(height) * 1000.0 / render_ms : 0.0;
+}
+
+}  // namespace
+
+RenderWorker::RenderWorker(int device_index, int packet_width, QualitySettings quality)
+    : device_(open_device(device_index)),
+      packet_width_(packet_width ? packet_width : preferred_packet_width(device_.info)),
+      cache_(ProgramCache::default_directory()),
+      precision_chooser_(device_.info, [this](const std::string& warning) { post_message(warning); }),
+      quality_(quality) {
+    thread_ = std::thread([this] { run(); });
+}
+
+RenderWorker::~RenderWorker() { stop(); }
+
+void RenderWorker::stop() {
+    {
+        std::lock_guard lock(mutex_);
+        stopping_ = true;
+    }
+    wake_.notify_all();
+    if (thread_.joinable()) thread_.join();
+}
+
+void RenderWorker::submit(ViewState state) {
+    {
+        std::lock_guard lock(mutex_);
+        if (state_ && state_->generation == state.generation &&
+            state_->interactive == state.interactive) {
+            return;
+        }
+        if (!state_ || state_->generation != state.generation) status_.idle = false;
+        state_ = std::move(state);
+    }
+    wake_.notify_all();
+}
+
+void RenderWorker::set_quality(QualitySettings quality) {
+    {
+        std::lock_guard lock(mutex_);
+        quality_.set_settings(quality);
+        status_.idle = false;  // a higher cap means more samples to add
+    }
+    wake_.notify_all();
+}
+
+void RenderWorker::request_screenshot(ScreenshotRequest request) {
+    {
+        std::lock_guard lock(mutex_);
+        screenshots_.push_back(std::move(request));
+        status_.pending_screenshots = static_cast<int>(screenshots_.size());
+    }
+    wake_.notify_all();
+}
+
+void RenderWorker::request_reload(ReloadRequest request) {
+    {
+        std::lock_guard lock(mutex_);
+        reloads_.push_back(std::move(request));
+        status_.pending_reloads = static_cast<int>(reloads_.size());
+    }
+    wake_.notify_all();
+}
+
+std::vector<ReloadResult> RenderWorker::take_reloads() {
+    std::lock_guard lock(mutex_);
+    return std::exchange(reload_results_, {});
+}
+
+std::optional<DisplayFrame> RenderWorker::take_frame() {
+    std::lock_guard lock(mutex_);
+    return std::exchange(frame_, std::nullopt);
+}
+
+WorkerStatus RenderWorker::status() const {
+    std::lock_guard lock(mutex_);
+    return status_;
+}
+
+std::vector<std::string> RenderWorker::take_messages() {
+    std::lock_guard lock(mutex_);
+    return std::exchange(messages_, {});
+}
+
+void RenderWorker::post_message(std::string message) {
+    std::lock_guard lock(mutex_);
+    messages_.push_back(std::move(message));
+}
+
+void RenderWorker::publish(DisplayFrame frame) {
+    frame.ifs_depth_reached = ifs_depth_reached_;
+    std::lock_guard lock(mutex_);
+    frame_ = std::move(frame);
+}
+
+void RenderWorker::mark_idle(uint64_t generation) {
+    std::lock_guard lock(mutex_);
+    if (state_ && state_->generation == generation && !state_->interactive) {
+        status_.idle = true;
+        status_.idle_generation = generation;
+    }
+}
+
+std::optional<RenderWorker::Job> RenderWorker::next_job() {
+    std::unique_lock lock(mutex_);
+    // Work is a screenshot, a reload, or a state not yet fully refined; an interactive state
+    // already previewed waits for the next change (or for the view to settle).
+    wake_.wait(lock, [this] {
+        return stopping_ || !screenshots_.empty() || !reloads_.empty() ||
+               (state_ && !status_.idle &&
+                !(state_->interactive && state_->generation == previewed_generation_));
+    });
+    Job job;
+    if (!screenshots_.empty()) {
+        job.screenshot = std::move(screenshots_.front());
+        screenshots_.pop_front();
+        return job;
+    }
+    if (!reloads_.empty()) {
+        job.reload = std::move(reloads_.front());
+        reloads_.pop_front();
+        return job;
+    }
+    if (stopping_) return std::nullopt;
+    job.view = *state_;
+    return job;
+}
+
+void RenderWorker::run() {
+    while (std::optional<Job> job = next_job()) {
+        try {
+            if (job->screenshot) {
+                take_screenshot(*job->screenshot);
+                std::lock_guard lock(mutex_);
+                status_.pending_screenshots = static_cast<int>(screenshots_.size());
+                continue;
+            }
+            if (job->reload) {
+                reload(*job->reload);
+                continue;
+            }
+            const ViewState& state = *job->view;
+            Renderer* renderer = choose_renderer(state);
+            if (renderer == nullptr) {
+                mark_idle(state.generation);  // the build failed: nothing to refine
+                continue;
+            }
+            render_pass(*renderer, state);
+        } catch (const std::exception& error) {
+            // A render that fails (device out of memory, lost device) must not end the viewer:
+            // report it and wait for the next change.
+            spdlog::error("render failed: {}", error.what());
+            post_message(fmt::format("render failed: {}", error.what()));
+            if (job->view) mark_idle(job->view->generation);
+        }
+    }
+}
+
+Renderer* RenderWorker::build_renderer(const std::shared_ptr<const Scene>& scene,
+                                       uint64_t effects, bool double_precision, RenderMode mode,
+                                       std::pair<std::string, std::string>* failure) {
+    const RendererKey key{scene.get(), effects, double_precision, mode};
+    if (auto found = renderers_.find(key); found != renderers_.end()) {
+        return found->second.renderer.get();
+    }
+    if (auto failed = failures_.find(key); failed != failures_.end()) {
+        *failure = failed->second.message;
+        return nullptr;
+    }
+    {
+        std::lock_guard lock(mutex_);
+        status_.compiling = true;
+        status_.compiling_scene = scene->id;
+        status_.compiling_double = double_precision;
+    }
+    std::unique_ptr<Renderer> renderer;
+    try {
+        renderer = std::make_unique<Renderer>(
+            device_, cache_, *scene,
+            with_precision(KernelSwitches{packet_width_, effects, false, false, mode},
+                           double_precision));
+        spdlog::info("kernel for '{}' ({} mode, effects: {}, {}) ready in {:.0f} ms", scene->id,
+                     render_mode_name(mode), effect_names(effects),
+                     double_precision ? "double" : "float", renderer->build_report().build_ms);
+    } catch (const KernelBuildError& error) {
+        *failure = {fmt::format("scene '{}': {}", scene->id, error.what()), error.build_log()};
+    } catch (const cl::Error& error) {
+        *failure = {fmt::format("scene '{}': {} failed: {}", scene->id, error.what(),
+                                cl_error_name(error.err())),
+                    ""};
+    } catch (const std::invalid_argument& error) {  // a mode the scene cannot render in
+        *failure = {error.what(), ""};
+    }
+    {
+        std::lock_guard lock(mutex_);
+        status_.compiling = false;
+        status_.compiling_scene.clear();
+        status_.compiling_double = false;
+    }
+    if (!renderer) {
+        spdlog::error("{}", failure->first);
+        if (!failure->second.empty()) fmt::print(stderr, "{}\n", failure->second);
+        failures_[key] = {scene, *failure};
+        return nullptr;
+    }
+    return (renderers_[key] = {scene, std::move(renderer)}).renderer.get();
+}
+
+Renderer* RenderWorker::choose_renderer(const ViewState& state) {
+    if (state.generation == chosen_generation_) return renderer_for(state, chosen_double_);
+    // The auto rule's DE at the camera comes from the float kernel, as in fgr render and fgr
+    // bench, so all three decide alike.
+    bool float_failed = false;
+    const auto distance = [&] {
+        Renderer* in_float = renderer_for(state, false);
+        if (in_float == nullptr) {
+            float_failed = true;
+            return -1.0f;
+        }
+        probe_camera(*in_float, state);
+        return probed_de_;
+    };
+    const bool in_double =
+        precision_chooser_.in_double(state.precision, state.view, state.width, distance);
+    if (float_failed) return nullptr;
+    Renderer* renderer = renderer_for(state, in_double);
+    if (renderer == nullptr) return nullptr;
+    // The DE that sets the fly speed, probed in the precision that renders.
+    probe_camera(*renderer, state);
+    chosen_generation_ = state.generation;
+    chosen_double_ = in_double;
+    return renderer;
+}
+
+Renderer* RenderWorker::renderer_for(const ViewState& state, bool double_precision) {
+    const RendererKey key{state.scene.get(), state.effects, double_precision, state.mode};
+    const bool known = renderers_.count(key) || failures_.count(key);
+    std::pair<std::string, std::string> failure;
+    Renderer* renderer =
+        build_renderer(state.scene, state.effects, double_precision, state.mode, &failure);
+    std::lock_guard lock(mutex_);
+    if (renderer == nullptr && !known) messages_.push_back(failure.first);
+    std::tie(status_.error, status_.error_log) = failure;
+    return renderer;
+}
+
+void RenderWorker::reload(const ReloadRequest& request) {
+    std::pair<std::string, std::string> failure;
+    // The float kernel decides: a deep view builds the double one when it first needs it.
+    const bool ok = build_renderer(request.candidate, request.effects, false,
+                                   RenderMode::Shaded, &failure) != nullptr;
+    std::lock_guard lock(mutex_);
+    reload_results_.push_back({request, ok, failure.first, failure.second});
+    status_.pending_reloads = static_cast<int>(reloads_.size());
+}
+
+void RenderWorker::render_pass(Renderer& renderer, const ViewState& state) {
+    if (accumulated_generation_ != state.generation) {
+        accumulated_generation_ = state.generation;
+        accumulated_samples_ = 0;
+    }
+    RenderPass pass;
+    {
+        std::lock_guard lock(mutex_);
+        pass = quality_.next_pass(state.interactive, accumulated_samples_,
+                                  int64_t{state.width} * state.height,
+                                  mode_sample_cap(state.mode));
+    }
+    switch (pass.kind) {
+        case RenderPass::Kind::Preview: render_preview(renderer, state, pass.scale); break;
+        case RenderPass::Kind::Refine: refine(renderer, state, pass.sample); break;
+        case RenderPass::Kind::Idle: mark_idle(state.generation); break;
+    }
+}
+
+void RenderWorker::render_preview(Renderer& renderer, const ViewState& state, float scale) {
+    const int width = scaled_size(state.width, scale);
+    const int height = scaled_size(state.height, scale);
+    // Previews are short by design and never cancelled: while the view keeps changing, every
+    // one of them would be.
+    FrameRequest request = frame_request(state, width, height);
+    request.start_hints = preview_start_hints(renderer, state, width, height);
+    Frame frame = renderer.render(request);
+    last_preview_ = LastPreview{state.scene, &renderer, state.params,
+                                DepthView{state.view, state.projection, width, height, frame.depth}};
+    {
+        std::lock_guard lock(mutex_);
+        quality_.record_frame(int64_t{width} * height, frame.render_ms);
+        previewed_generation_ = state.generation;
+    }
+    ifs_depth_reached_ = frame.ifs_levels ? frame.ifs_levels->deepest : -1;
+    publish({std::move(frame.image), scale, 1, frame.render_ms,
+             samples_per_second(width, height, frame.render_ms),
+             renderer.switches().double_precision, state.generation});
+}
+
+std::vector<float> RenderWorker::preview_start_hints(const Renderer& renderer,
+                                                     const ViewState& state, int width,
+                                                     int height) const {
+    if (!last_preview_ || last_preview_->scene != state.scene ||
+        last_preview_->renderer != &renderer || last_preview_->params != state.params) {
+        return {};
+    }
+    return reproject_start_hints(last_preview_->depths, state.view, state.projection, width,
+                                 height);
+}
+
+void RenderWorker::refine(Renderer& renderer, const ViewState& state, int sample) {
+    FrameRequest request = frame_request(state, state.width, state.height);
+    request.first_sample = sample;
+    request.cancel = [this, generation = state.generation] {
+        std::lock_guard lock(mutex_);
+        return stopping_ || (state_ && state_->generation != generation);
+    };
+    Frame frame = renderer.render(request);
+    if (frame.cancelled) return;
+    {
+        std::lock_guard lock(mutex_);
+        quality_.record_frame(int64_t{state.width} * state.height, frame.render_ms);
+    }
+    if (state.mode == RenderMode::Brute) {
+        // The renderer carries the depth buffer from pass to pass: each frame is the whole image
+        // so far, not one more sample to average.
+        accumulated_samples_ = sample + 1;
+        publish({std::move(frame.image), 1.0f, accumulated_samples_, frame.render_ms,
+                 samples_per_second(state.width, state.height, frame.render_ms),
+                 renderer.switches().double_precision, state.generation});
+        return;
+    }
+    if (sample == 0) {
+        ifs_depth_reached_ = frame.ifs_levels ? frame.ifs_levels->deepest : -1;
+        accumulation_ = std::move(frame.linear);
+        accumulated_samples_ = 1;
+        publish({std::move(frame.image), 1.0f, 1, frame.render_ms,
+                 samples_per_second(state.width, state.height, frame.render_ms),
+                 renderer.switches().double_precision, state.generation});
+        return;
+    }
+    for (size_t i = 0; i < accumulation_.size(); ++i) accumulation_[i] += frame.linear[i];
+    ++accumulated_samples_;
+    publish({display_image(*state.scene, state.params, accumulation_, state.width, state.height,
+                           1.0f / static_cast<float>(accumulated_samples_)),
+             1.0f, accumulated_samples_, frame.render_ms,
+             samples_per_second(state.width, state.height, frame.render_ms),
+             renderer.switches().double_precision, state.generation});
+}
+
+void RenderWorker::take_screenshot(const ScreenshotRequest& request) {
+    const ViewState& state = request.state;
+    Renderer* renderer = choose_renderer(state);
+    if (renderer == nullptr) {
+        const std::string message =
+            fmt::format("screenshot not taken: the kernel for this view did not build");
+        spdlog::error("{}", message);
+        post_message(message);
+        return;
+    }
+    spdlog::info("screenshot: rendering {}x{} at {} samples per pixel", state.width, state.height,
+                 request.samples);
+    FrameRequest frame_request_full = frame_request(state, state.width, state.height);
+    frame_request_full.samples = request.samples;
+    const Frame frame = renderer->render(frame_request_full);
+    try {
+        write_png(request.file, frame.image);
+    } catch (const std::exception& error) {
+        spdlog::error("screenshot: {}", error.what());
+        post_message(fmt::format("screenshot failed: {}", error.what()));
+        return;
+    }
+    spdlog::info("screenshot: wrote {} ({}x{}, {} spp, {:.0f} ms)", request.file.string(),
+                 state.width, state.height, request.samples, frame.render_ms);
+    post_message(fmt::format("wrote {}", request.file.string()));
+}
+
+void RenderWorker::probe_camera(Renderer& renderer, const ViewState& state) {
+    if (&renderer == probed_renderer_ && state.view.position == probed_position_ &&
+        state.params == probed_params_) {
+        return;
+    }
+    probed_renderer_ = &renderer;
+    probed_position_ = state.view.position;
+    probed_params_ = state.params;
+    probed_de_ = surface_distance(renderer, state.view, state.params);
+    std::lock_guard lock(mutex_);
+    status_.de_at_camera = probed_de_;
+}
+
+}  // namespace fgr::viewer

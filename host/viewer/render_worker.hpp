@@ -1,0 +1,233 @@
+#pragma once
+// The viewer's render thread. The window thread posts the state to show (latest wins) and takes
+// finished frames; it never waits on OpenCL. The worker builds kernels (keeping the last image on
+// screen meanwhile), renders previews at a reduced resolution while the view changes, refines the
+// still view sample by sample (the path tracer's for as long as the view stands still), renders
+// screenshots at full quality, and reports the distance
+// estimate at the camera for the fly speed. It picks float or double lanes per view (see
+// precision.hpp), building the double kernel the first time a deep view needs it.
+
+#include <cmath>
+#include <condition_variable>
+#include <cstdint>
+#include <deque>
+#include <filesystem>
+#include <map>
+#include <memory>
+#include <mutex>
+#include <optional>
+#include <string>
+#include <thread>
+#include <utility>
+#include <vector>
+
+#include "image/image_io.hpp"
+#include "device/opencl_device.hpp"
+#include "render/path_settings.hpp"
+#include "render/precision.hpp"
+#include "device/program_cache.hpp"
+#include "scene/render_mode.hpp"
+#include "render/renderer.hpp"
+#include "render/prepass/reprojection.hpp"
+#include "scene/scene.hpp"
+#include "viewer/adaptive_quality.hpp"
+
+namespace fgr::viewer {
+
+// Everything that decides the image. `generation` changes whenever anything else but
+// `interactive` does, so the worker knows when to restart refinement.
+struct ViewState {
+    std::shared_ptr<const Scene> scene;
+    uint64_t effects = 0;
+    CameraView view;
+    Projection projection;
+    std::vector<float> params;
+    int width = 1;   // full resolution
+    int height = 1;
+    Precision precision = Precision::Auto;
+    RenderMode mode = RenderMode::Shaded;
+    PathSettings path;  // mode Path: bounces, strategies, the environment (null: the sky)
+    bool interactive = false;  // the view is changing: preview frames, no refinement
+    uint64_t generation = 0;
+    bool operator==(const ViewState&) const = default;
+};
+
+// Samples per pixel the path tracer accumulates while the view stands still (the shaded mode's
+// cap is QualitySettings::sample_cap): a path-traced view keeps converging for minutes.
+constexpr int kPathSampleCap = 4096;
+// Passes the brute-force mode makes while the view stands still: each can only bring a pixel's
+// hit closer, and after a few hundred the depth buffer has settled.
+constexpr int kBrutePassCap = 256;
+
+// How many samples (passes) a still view accumulates in `mode` (0: the quality settings' cap).
+constexpr int mode_sample_cap(RenderMode mode) {
+    return mode == RenderMode::Path ? kPathSampleCap : mode == RenderMode::Brute ? kBrutePassCap : 0;
+}
+
+struct DisplayFrame {
+    Image8 image;  // tone-mapped sRGB at the rendered size
+    float scale = 1.0f;    // rendered size / full size
+    int samples = 1;       // samples per pixel averaged into it
+    double render_ms = 0;  // the pass that produced it
+    double samples_per_second = 0;  // pixel samples per second of that pass
+    bool double_precision = false;  // rendered with double lanes
+    uint64_t generation = 0;
+    int ifs_depth_reached = -1;  // IFS scenes: the deepest level a pixel hit (-1: none or not IFS)
+};
+
+struct WorkerStatus {
+    bool compiling = false;
+    std::string compiling_scene;  // id of the scene being built
+    bool compiling_double = false;  // ... its double-precision kernel
+    std::string error;            // build failure of the shown (scene, effects), one line
+    std::string error_log;        // the compiler's output for it
+    float de_at_camera = -1.0f;   // < 0 until known
+    bool idle = false;            // the posted state is fully refined (or failed to build)
+    uint64_t idle_generation = 0; // ... for this generation
+    int pending_screenshots = 0;
+    int pending_reloads = 0;
+};
+
+struct ScreenshotRequest {
+    ViewState state;  // rendered at state.width x state.height
+    int samples = 16;
+    std::filesystem::path file;
+};
+
+// A new version of a scene (a rebuilt plugin, an edited .cl file) to try before it replaces the
+// running one: its kernel must build first, so a broken update never takes a working scene away.
+struct ReloadRequest {
+    std::shared_ptr<const Scene> candidate;
+    std::shared_ptr<const Scene> replaces;  // the version running now
+    uint64_t effects = 0;                   // the effects it will be shown with
+};
+
+struct ReloadResult {
+    ReloadRequest request;
+    bool ok = false;
+    std::string error;      // one line, when !ok
+    std::string error_log;  // the compiler's output, when it has one
+};
+
+class RenderWorker {
+public:
+    // Opens the OpenCL device on the calling thread (throws std::runtime_error when there is
+    // none), then starts the render thread.
+    RenderWorker(int device_index, int packet_width, QualitySettings quality);
+    ~RenderWorker();
+    RenderWorker(const RenderWorker&) = delete;
+    RenderWorker& operator=(const RenderWorker&) = delete;
+
+    void submit(ViewState state);
+    void set_quality(QualitySettings quality);
+    void request_screenshot(ScreenshotRequest request);
+    void request_reload(ReloadRequest request);
+    // Reloads finished since the last call, in the order requested.
+    std::vector<ReloadResult> take_reloads();
+
+    // The newest frame finished since the last call, if any.
+    std::optional<DisplayFrame> take_frame();
+    WorkerStatus status() const;
+    // One-line messages for the panel's log (screenshots written, build failures), oldest first.
+    std::vector<std::string> take_messages();
+    const DeviceInfo& device_info() const { return device_.info; }
+
+    // Finishes pending screenshots, abandons refinement, and stops the thread.
+    void stop();
+
+private:
+    struct RendererKey {
+        const Scene* scene;
+        uint64_t effects;
+        bool double_precision;
+        RenderMode mode;
+        auto operator<=>(const RendererKey&) const = default;
+    };
+    struct CachedRenderer {
+        std::shared_ptr<const Scene> scene;  // kept alive for the renderer, which refers to it
+        std::unique_ptr<Renderer> renderer;
+    };
+    struct Job {
+        std::optional<ScreenshotRequest> screenshot;
+        std::optional<ReloadRequest> reload;
+        std::optional<ViewState> view;
+    };
+
+    void run();
+    // The next thing to do, or nothing when the thread should stop; waits while idle.
+    std::optional<Job> next_job();
+    // The renderer for the state's scene, effects and precision (decided once per generation by
+    // the library's auto rule, so refinement never mixes float and double samples), the DE at the
+    // camera probed with it; null when the build failed (the status then carries the error).
+    Renderer* choose_renderer(const ViewState& state);
+    // The renderer for the state's scene and effects in the given precision, building it when
+    // needed; null when the build failed (the status then carries the error).
+    Renderer* renderer_for(const ViewState& state, bool double_precision);
+    // Builds (or finds) the renderer; on failure returns null and fills `failure`.
+    Renderer* build_renderer(const std::shared_ptr<const Scene>& scene, uint64_t effects,
+                             bool double_precision, RenderMode mode,
+                             std::pair<std::string, std::string>* failure);
+    void reload(const ReloadRequest& request);
+    void render_pass(Renderer& renderer, const ViewState& state);
+    void render_preview(Renderer& renderer, const ViewState& state, float scale);
+    // Start hints for a preview of `state` at width x height from the last preview's depths
+    // (empty when the renderer or the parameters changed since: the surface may have moved).
+    std::vector<float> preview_start_hints(const Renderer& renderer, const ViewState& state,
+                                           int width, int height) const;
+    void refine(Renderer& renderer, const ViewState& state, int sample);
+    void take_screenshot(const ScreenshotRequest& request);
+    void probe_camera(Renderer& renderer, const ViewState& state);
+    void publish(DisplayFrame frame);
+    void mark_idle(uint64_t generation);
+    void post_message(std::string message);
+
+    ComputeDevice device_;
+    int packet_width_;
+    ProgramCache cache_;
+    std::map<RendererKey, CachedRenderer> renderers_;  // render thread only
+    // Keys are scene addresses: each entry keeps its scene alive so no new scene can reuse the
+    // address while the entry exists.
+    struct Failure {
+        std::shared_ptr<const Scene> scene;
+        std::pair<std::string, std::string> message;  // summary, log
+    };
+    std::map<RendererKey, Failure> failures_;
+
+    // Refinement of the current generation (render thread only).
+    uint64_t accumulated_generation_ = UINT64_MAX;
+    int accumulated_samples_ = 0;
+    int ifs_depth_reached_ = -1;  // of the last frame that reported it (sample 0 or a preview)
+    std::vector<float> accumulation_;  // sum of linear RGB over the samples
+    // The last preview's depths and what they were rendered with: the next preview starts its
+    // rays from them, reprojected (render/prepass/reprojection.hpp), when only the camera moved.
+    struct LastPreview {
+        std::shared_ptr<const Scene> scene;  // held: no reloaded scene can take its address
+        const Renderer* renderer = nullptr;
+        std::vector<float> params;
+        DepthView depths;
+    };
+    std::optional<LastPreview> last_preview_;
+    const Renderer* probed_renderer_ = nullptr;  // renderers live as long as the worker
+    glm::dvec3 probed_position_{NAN};
+    std::vector<float> probed_params_;
+    float probed_de_ = -1.0f;
+    uint64_t chosen_generation_ = UINT64_MAX;  // the generation whose precision is decided
+    bool chosen_double_ = false;
+    PrecisionChooser precision_chooser_;  // posts once when auto wants double the device lacks
+
+    mutable std::mutex mutex_;
+    std::condition_variable wake_;
+    std::optional<ViewState> state_;
+    QualityController quality_;
+    std::deque<ScreenshotRequest> screenshots_;
+    std::deque<ReloadRequest> reloads_;
+    std::vector<ReloadResult> reload_results_;
+    std::optional<DisplayFrame> frame_;
+    WorkerStatus status_;
+    uint64_t previewed_generation_ = UINT64_MAX;  // the last interactive state previewed
+    std::vector<std::string> messages_;
+    bool stopping_ = false;
+    std::thread thread_;
+};
+
+}  // namespace fgr::viewer
