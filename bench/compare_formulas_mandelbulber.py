@@ -1,5 +1,5 @@
 #!/usr/bin/env python3
-"""fgr's formula library against Mandelbulber 2 (issue 20): the hit silhouettes and the times.
+"""fgr's formula library against Mandelbulber 2: the hit silhouettes and the times.
 
     bench/compare_formulas_mandelbulber.py [--size WxH] [--rounds N] [--fixtures] [ID ...]
 

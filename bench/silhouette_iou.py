@@ -1,5 +1,5 @@
 #!/usr/bin/env python3
-"""Hit silhouettes of two renders and how well they agree (issue 20: fgr against Mandelbulber 2).
+"""Hit silhouettes of two renders and how well they agree (fgr against Mandelbulber 2).
 
     silhouette_iou.py A.png B.png [--diff OUT.png]     prints "iou <value> a_only <n> b_only <n>"
     silhouette_iou.py --mask IN.png OUT.png            writes IN's silhouette as a small mask PNG

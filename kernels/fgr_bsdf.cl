@@ -1,4 +1,4 @@
-/* fgr kernel library: materials and their BSDFs, for the path tracer (issue 13).
+/* fgr kernel library: materials and their BSDFs, for the path tracer.
  *
  * A material is a diffuse (Lambertian) lobe plus a glossy GGX microfacet lobe:
  *

@@ -883,7 +883,7 @@ TEST_F(CopyScene, RefusesZeroLights) {
 }
 
 // A count over a NULL array says a light is missing, and the refusal carries the scene's id so
-// discovery's warning and `fgr render ID` can name the scene (issue 16, item 8).
+// discovery's warning and `fgr render ID` can name the scene.
 TEST_F(CopyScene, RefusesNullLightsSayingASceneNeedsOneAndNamingTheScene) {
     built.desc.lights = nullptr;
     built.desc.light_count = 8;

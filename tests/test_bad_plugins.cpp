@@ -197,7 +197,7 @@ TEST(BadPlugin, DiscoveryNamesEachBrokenFileAndReasonAndLoadsTheGoodOne) {
     }
 }
 
-// A refusal after the description's id was read names the scene too (issue 16, item 8): the
+// A refusal after the description's id was read names the scene too: the
 // warning for a NULL light list says which scene lacks its lights.
 TEST(BadPlugin, WarningNamesTheSceneWhoseLightsAreNull) {
     LogCapture log;

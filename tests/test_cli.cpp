@@ -303,7 +303,7 @@ const std::vector<BadInput> kBadInputs = {
       "brute"},
      kAnyFailure,
      {"sierpinski-ifs", "brute"}},
-    // --eye, --target, --up and --fov (issue 16, item 12): malformed vectors, views that cannot
+    // --eye, --target, --up and --fov: malformed vectors, views that cannot
     // be rendered, and combinations that contradict each other.
     {"EyeOfTwoNumbers", render_args({"--eye", "1,2", "--target", "0,0,0"}), 2,
      {"--eye '1,2'", "three finite numbers X,Y,Z"}},
@@ -669,7 +669,7 @@ TEST_F(CliTest, ListShowsMandelbulbParametersCamerasAndPaths) {
 }
 
 // `fgr list SCENE` lists that scene alone with each parameter's description on the line under it,
-// built-in ones included; `fgr list` keeps one line a parameter (issue 16, item 13).
+// built-in ones included; `fgr list` keeps one line a parameter.
 TEST_F(CliTest, ListOfOneSceneDescribesEachParameter) {
     const RunResult one = run({"list", "mandelbulb"});
     ASSERT_EQ(one.exit_code, 0) << one;
@@ -764,7 +764,7 @@ TEST_F(CliWithOwnCache, ListShowsAnIfsPluginsMaps) {
 }
 
 // A scene whose plugin was refused at load is not just "unknown": every command that takes a scene
-// names the refused file and the reason (issue 16, item 7). liboops.so declares the id 'oops'
+// names the refused file and the reason. liboops.so declares the id 'oops'
 // with a default out of range; no_id_given.so is refused before it gives an id, and is found by
 // its file name.
 TEST_F(CliWithOwnCache, UnknownSceneNamesTheRefusedPluginAndWhy) {
@@ -811,8 +811,7 @@ TEST_F(CliWithOwnCache, UnknownSceneNamesTheRefusedPluginAndWhy) {
 }
 
 // Off a terminal, bench says how far each run is every quarter, none skipped: three frames per run
-// report 0, 1/3 and 2/3 done and then the end, which passes 75% and 100% at once (issue 16,
-// item 13).
+// report 0, 1/3 and 2/3 done and then the end, which passes 75% and 100% at once.
 TEST_F(CliWithOwnCache, BenchProgressLinesNameEveryQuarterOfEveryRun) {
     const RunResult result = run_with({"bench", "mandelbulb", "--frames", "3", "--runs", "2",
                                        "--width", "16", "--height", "12", "-o",
@@ -830,7 +829,7 @@ TEST_F(CliWithOwnCache, BenchProgressLinesNameEveryQuarterOfEveryRun) {
 }
 
 // A view typed as --eye/--target/--up/--fov is the view a camera path file with the same numbers
-// gives at a keyframe: the same pixels, bit for bit (issue 16, item 12). The numbers are ones
+// gives at a keyframe: the same pixels, bit for bit. The numbers are ones
 // float and double round differently (0.1...), so a conversion on one side only would show.
 TEST_F(CliWithOwnCache, ViewpointOptionsRenderWhatTheSameCameraPathKeyframeRenders) {
     std::ofstream(dir() / "same.json") << R"({"format": "fgr-camera-path", "version": 1,

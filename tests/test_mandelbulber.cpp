@@ -1,4 +1,4 @@
-// fgr's formula library against Mandelbulber 2 (issue 20): for every case in
+// fgr's formula library against Mandelbulber 2: for every case in
 // bench/mandelbulber_formulas.json whose agreement is claimed, fgr renders the formula scene with
 // the case's parameters and camera, and its hit silhouette (`--alpha`) must cover the same
 // pixels as Mandelbulber 2's, kept in tests/fixtures/mandelbulber/ID.png (written by

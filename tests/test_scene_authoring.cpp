@@ -1,4 +1,4 @@
-// Scene authoring (issue 16): the kernel API versions (a scene says which one its source is
+// Scene authoring: the kernel API versions (a scene says which one its source is
 // written for; a frozen version-1 scene keeps compiling; version-2 names stay out of version 1),
 // the version-2 helpers that take what a vec3 parameter gives and the folds (checked by their
 // geometry, through the kernel, at packet widths 1 and 16), and the orbit-scene contract

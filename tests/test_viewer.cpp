@@ -659,7 +659,7 @@ TEST_F(ViewerTest, ExitAfterEndsCleanlyWithFrameStatistics) {
     EXPECT_TRUE(run.screenshots.empty());
 }
 
-// --eye, --target and --fov set the view the viewer opens at (issue 16, item 12): with no input,
+// --eye, --target and --fov set the view the viewer opens at: with no input,
 // the camera it reports on exit stands where --eye put it and looks at --target.
 TEST_F(ViewerTest, EyeAndTargetSetTheStartView) {
     const ViewerRun run = view("", {"mandelbulb", "--eye", "1.5,-2.5,0.5", "--target", "0,0,0.25",
