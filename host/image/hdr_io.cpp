@@ -29,6 +29,7 @@
 #include <vector>
 
 #include "util/atomic_file.hpp"
+#include "util/errors.hpp"
 
 namespace fgr {
 namespace {
@@ -57,8 +58,6 @@ struct ReadFailure : std::runtime_error {
 [[noreturn]] void fail_argument(const fs::path& path, const std::string& reason) {
     throw std::invalid_argument("cannot write " + quoted(path) + ": " + reason);
 }
-
-std::string errno_message(int error) { return std::generic_category().message(error); }
 
 // Library messages and names from callers may span lines; ours are one line each.
 std::string printable(std::string text) {

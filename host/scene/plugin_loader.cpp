@@ -1,6 +1,7 @@
 #include "scene/plugin_loader.hpp"
 
 #include <dlfcn.h>
+#include <spdlog/fmt/fmt.h>
 #include <unistd.h>
 
 #include <cerrno>
@@ -13,7 +14,7 @@
 #include <system_error>
 #include <utility>
 
-#include <spdlog/fmt/fmt.h>
+#include "util/errors.hpp"
 
 namespace fgr {
 namespace {
@@ -73,11 +74,11 @@ public:
             (std::filesystem::temp_directory_path() / "fgr-plugin-XXXXXX.so").string();
         const int descriptor = ::mkstemps(pattern.data(), 3);
         if (descriptor < 0) {
-            throw std::runtime_error("cannot create a temporary copy: " + errno_text());
+            throw std::runtime_error("cannot create a temporary copy: " + errno_message(errno));
         }
         path_ = pattern;
         const bool written = write_all(descriptor, bytes);
-        const std::string reason = errno_text();
+        const std::string reason = errno_message(errno);
         ::close(descriptor);
         if (!written) {
             remove();
@@ -94,7 +95,6 @@ private:
         std::error_code ignored;
         if (!path_.empty()) std::filesystem::remove(path_, ignored);
     }
-    static std::string errno_text() { return std::generic_category().message(errno); }
     static bool write_all(int descriptor, const std::string& bytes) {
         for (std::size_t done = 0; done < bytes.size();) {
             const ssize_t wrote = ::write(descriptor, bytes.data() + done, bytes.size() - done);

@@ -8,12 +8,12 @@
 #include <system_error>
 #include <utility>
 
+#include "util/errors.hpp"
+
 namespace fgr {
 namespace {
 
 namespace fs = std::filesystem;
-
-std::string errno_message(int error) { return std::generic_category().message(error); }
 
 // Beside the target, so the final rename stays within one file system and is atomic. The pid and
 // a counter keep concurrent writers (processes or threads) off each other's temporaries.

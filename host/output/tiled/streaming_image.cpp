@@ -2,14 +2,13 @@
 // library's own buffers (a few rows at most); the caller's band of rows is written and dropped.
 #include "output/tiled/streaming_image.hpp"
 
-#include <png.h>
-#include <tiffio.h>
-
 #include <ImfChannelList.h>
 #include <ImfFrameBuffer.h>
 #include <ImfHeader.h>
 #include <ImfOutputFile.h>
 #include <ImfStringAttribute.h>
+#include <png.h>
+#include <tiffio.h>
 
 #include <algorithm>
 #include <cerrno>
@@ -17,12 +16,12 @@
 #include <cstdarg>
 #include <cstdio>
 #include <stdexcept>
-#include <system_error>
 #include <utility>
 
-#include "util/atomic_file.hpp"
-#include "util/lower_case.hpp"
 #include "image/png_errors.hpp"
+#include "util/atomic_file.hpp"
+#include "util/errors.hpp"
+#include "util/lower_case.hpp"
 
 namespace fgr {
 namespace {
@@ -71,7 +70,7 @@ public:
         : pending_(path), width_(width), layout_(layout) {
         check_rgb_layout(path, layout, "PNG");
         h_.file = std::fopen(pending_.temporary().c_str(), "wb");
-        if (h_.file == nullptr) fail_write(path, std::generic_category().message(errno));
+        if (h_.file == nullptr) fail_write(path, errno_message(errno));
         h_.png = png_create_write_struct(PNG_LIBPNG_VER_STRING, &error_, record_png_error,
                                          ignore_png_warning);
         if (h_.png == nullptr || (h_.info = png_create_info_struct(h_.png)) == nullptr) {
