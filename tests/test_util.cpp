@@ -7,6 +7,7 @@
 #include <string>
 
 #include "util/errors.hpp"
+#include "util/strings.hpp"
 
 namespace fgr {
 namespace {
@@ -14,6 +15,13 @@ namespace {
 TEST(UtilErrors, ErrnoMessageIsTheCLibrarysText) {
     EXPECT_EQ(errno_message(ENOENT), "No such file or directory");
     EXPECT_EQ(errno_message(EACCES), "Permission denied");
+}
+
+// Messages quote a path as it is, between single quotes; a quote inside is not escaped.
+TEST(UtilStrings, QuotedPathIsItsTextBetweenSingleQuotes) {
+    EXPECT_EQ(quoted("out/mandel bulb.png"), "'out/mandel bulb.png'");
+    EXPECT_EQ(quoted("it's.exr"), "'it's.exr'");
+    EXPECT_EQ(quoted(""), "''");
 }
 
 }  // namespace

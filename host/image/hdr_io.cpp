@@ -30,6 +30,7 @@
 
 #include "util/atomic_file.hpp"
 #include "util/errors.hpp"
+#include "util/strings.hpp"
 
 namespace fgr {
 namespace {
@@ -42,8 +43,6 @@ constexpr std::uintmax_t kMaxFileBytes = std::numeric_limits<int>::max();
 constexpr int kMaxExrTileSide = 1024;
 // Longest channel name OpenEXR writes (its "long names" limit).
 constexpr std::size_t kMaxExrNameBytes = 255;
-
-std::string quoted(const fs::path& path) { return "'" + path.string() + "'"; }
 
 // What read_hdr_image throws for a bad file: a std::runtime_error of its own type, so the
 // handlers that turn library exceptions into messages pass it through unchanged.

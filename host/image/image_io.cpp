@@ -14,6 +14,7 @@
 #include "image/png_errors.hpp"
 #include "util/atomic_file.hpp"
 #include "util/errors.hpp"
+#include "util/strings.hpp"
 
 namespace fgr {
 namespace {
@@ -23,8 +24,6 @@ namespace fs = std::filesystem;
 // Refuse to allocate for absurd headers in files we read (2^28 pixels is 16k x 16k).
 constexpr std::size_t kMaxReadPixels = std::size_t{1} << 28;
 constexpr std::size_t kPngSignatureBytes = 8;
-
-std::string quoted(const fs::path& path) { return "'" + path.string() + "'"; }
 
 [[noreturn]] void fail_write(const fs::path& path, const std::string& reason) {
     throw std::runtime_error("cannot write " + quoted(path) + ": " + reason);
