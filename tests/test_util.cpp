@@ -4,6 +4,7 @@
 #include <gtest/gtest.h>
 
 #include <cerrno>
+#include <stdexcept>
 #include <string>
 
 #include "util/errors.hpp"
@@ -15,6 +16,15 @@ namespace {
 TEST(UtilErrors, ErrnoMessageIsTheCLibrarysText) {
     EXPECT_EQ(errno_message(ENOENT), "No such file or directory");
     EXPECT_EQ(errno_message(EACCES), "Permission denied");
+}
+
+TEST(UtilErrors, FailWriteThrowsTheWritersOneLineMessage) {
+    try {
+        fail_write("out/x.png", "No space left on device");
+        ADD_FAILURE() << "fail_write returned";
+    } catch (const std::runtime_error& error) {
+        EXPECT_STREQ(error.what(), "cannot write 'out/x.png': No space left on device");
+    }
 }
 
 // Messages quote a path as it is, between single quotes; a quote inside is not escaped.

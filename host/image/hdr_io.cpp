@@ -614,9 +614,7 @@ std::string encode_exr(const fs::path& temporary, int width, int height,
 void replace_or_throw(const fs::path& file,
                       const std::function<std::string(const fs::path&)>& write_temporary) {
     const std::string failure = replace_file_atomically(file, write_temporary);
-    if (!failure.empty()) {
-        throw std::runtime_error("cannot write " + quoted(file) + ": " + one_line(failure));
-    }
+    if (!failure.empty()) fail_write(file, one_line(failure));
 }
 
 }  // namespace

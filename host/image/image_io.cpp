@@ -25,10 +25,6 @@ namespace fs = std::filesystem;
 constexpr std::size_t kMaxReadPixels = std::size_t{1} << 28;
 constexpr std::size_t kPngSignatureBytes = 8;
 
-[[noreturn]] void fail_write(const fs::path& path, const std::string& reason) {
-    throw std::runtime_error("cannot write " + quoted(path) + ": " + reason);
-}
-
 [[noreturn]] void fail_read(const fs::path& path, const std::string& reason) {
     throw std::runtime_error("cannot read " + quoted(path) + ": " + reason);
 }
