@@ -4,11 +4,13 @@
 #include <gtest/gtest.h>
 
 #include <cerrno>
+#include <chrono>
 #include <stdexcept>
 #include <string>
 
 #include "util/errors.hpp"
 #include "util/strings.hpp"
+#include "util/timing.hpp"
 
 namespace fgr {
 namespace {
@@ -32,6 +34,19 @@ TEST(UtilStrings, QuotedPathIsItsTextBetweenSingleQuotes) {
     EXPECT_EQ(quoted("out/mandel bulb.png"), "'out/mandel bulb.png'");
     EXPECT_EQ(quoted("it's.exr"), "'it's.exr'");
     EXPECT_EQ(quoted(""), "''");
+}
+
+// A moment set back by a known amount: the figures are at least that, in their unit, and not
+// wildly more (the bound allows for a loaded machine; no test here times anything).
+TEST(UtilTiming, SecondsSinceAndElapsedMsCountFromTheStartInTheirUnits) {
+    using namespace std::chrono_literals;
+    const auto two_seconds_ago = std::chrono::steady_clock::now() - 2s;
+    const double seconds = seconds_since(two_seconds_ago);
+    EXPECT_GE(seconds, 2.0);
+    EXPECT_LT(seconds, 62.0);
+    const double ms = elapsed_ms(two_seconds_ago);
+    EXPECT_GE(ms, 2000.0);
+    EXPECT_LT(ms, 62000.0);
 }
 
 }  // namespace

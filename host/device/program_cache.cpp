@@ -12,6 +12,7 @@
 #include <spdlog/spdlog.h>
 
 #include "util/content_hash.hpp"
+#include "util/timing.hpp"
 
 namespace fgr {
 namespace {
@@ -35,11 +36,6 @@ constexpr const char* kBaseOptions = "-cl-std=CL1.2";
 
 std::string full_options(const AssembledProgram& program) {
     return fmt::format("{} {}", kBaseOptions, program.options);
-}
-
-double elapsed_ms(std::chrono::steady_clock::time_point since) {
-    return std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - since)
-        .count();
 }
 
 std::string build_log(const cl::Program& program, const cl::Device& device) {
