@@ -30,6 +30,7 @@
 
 #include "util/atomic_file.hpp"
 #include "util/errors.hpp"
+#include "util/files.hpp"
 #include "util/strings.hpp"
 
 namespace fgr {
@@ -72,13 +73,8 @@ std::string one_line(const std::string& message) {
     return line.empty() ? "unknown error" : line;
 }
 
-struct FileCloser {
-    void operator()(std::FILE* file) const { std::fclose(file); }
-};
-using FilePointer = std::unique_ptr<std::FILE, FileCloser>;
-
 // The whole file, after checking it is a regular file within the size limit.
-std::vector<unsigned char> read_file_bytes(const fs::path& path) {
+std::vector<unsigned char> read_image_file(const fs::path& path) {
     std::error_code error;
     const fs::file_status status = fs::status(path, error);
     if (error || !fs::exists(status)) {
@@ -87,19 +83,10 @@ std::vector<unsigned char> read_file_bytes(const fs::path& path) {
     }
     if (fs::is_directory(status)) fail_read(path, "is a directory");
     if (!fs::is_regular_file(status)) fail_read(path, "not a regular file");
-    FilePointer file(std::fopen(path.c_str(), "rb"));
-    if (file == nullptr) fail_read(path, errno_message(errno));
-    const std::uintmax_t size = fs::file_size(path, error);
-    if (error) fail_read(path, error.message());
-    if (size == 0) fail_read(path, "empty file");
-    if (size > kMaxFileBytes) {
-        fail_read(path, "file too large (" + std::to_string(size) + " bytes; the limit is " +
-                            std::to_string(kMaxFileBytes) + ")");
-    }
-    std::vector<unsigned char> bytes(static_cast<std::size_t>(size));
-    if (std::fread(bytes.data(), 1, bytes.size(), file.get()) != bytes.size()) {
-        fail_read(path, std::ferror(file.get()) ? errno_message(errno) : "file shrank while read");
-    }
+    std::vector<unsigned char> bytes;
+    const std::string failure = read_file_bytes(path, bytes, kMaxFileBytes);
+    if (!failure.empty()) fail_read(path, failure);
+    if (bytes.empty()) fail_read(path, "empty file");
     return bytes;
 }
 
@@ -620,7 +607,7 @@ void replace_or_throw(const fs::path& file,
 }  // namespace
 
 HdrImage read_hdr_image(const fs::path& file) {
-    const std::vector<unsigned char> bytes = read_file_bytes(file);
+    const std::vector<unsigned char> bytes = read_image_file(file);
     if (is_radiance(bytes)) return read_radiance(file, bytes);
     if (starts_with(bytes, kExrMagic)) return read_openexr(file, bytes);
     fail_read(file, describe_other(bytes));

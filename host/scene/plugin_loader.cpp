@@ -7,14 +7,13 @@
 #include <cerrno>
 #include <cstdlib>
 #include <exception>
-#include <fstream>
-#include <iterator>
 #include <stdexcept>
 #include <string_view>
 #include <system_error>
 #include <utility>
 
 #include "util/errors.hpp"
+#include "util/files.hpp"
 
 namespace fgr {
 namespace {
@@ -65,11 +64,10 @@ class TemporaryCopy {
 public:
     // Throws std::runtime_error when the copy cannot be made.
     explicit TemporaryCopy(const std::filesystem::path& original) {
-        std::ifstream in(original, std::ios::binary);
-        if (!in) throw std::runtime_error("cannot read the plugin file");
-        const std::string bytes((std::istreambuf_iterator<char>(in)),
-                                std::istreambuf_iterator<char>());
-        if (in.bad()) throw std::runtime_error("cannot read the plugin file");
+        std::string bytes;
+        if (!read_file_bytes(original, bytes).empty()) {
+            throw std::runtime_error("cannot read the plugin file");
+        }
         std::string pattern =
             (std::filesystem::temp_directory_path() / "fgr-plugin-XXXXXX.so").string();
         const int descriptor = ::mkstemps(pattern.data(), 3);
