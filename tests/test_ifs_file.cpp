@@ -401,7 +401,7 @@ std::vector<BadCase> bad_cases() {
     add("no format", format, "\"format\" is missing");
     json id = doc;
     id["id"] = "Bad Id";
-    add("id with space", id, "\"id\" 'Bad Id' must match [a-z][a-z0-9_-]*");
+    add("id with space", id, "\"id\" 'Bad Id' must match [a-z][a-z0-9_-]* (at most 63 characters)");
     id["id"] = "x\ny";
     add("id with newline", id, "\"id\" contains a control character");
     id.erase("id");
@@ -417,7 +417,8 @@ std::vector<BadCase> bad_cases() {
     camera["cameras"] = {{{"name", "front"}, {"position", {0, 0, 0}}, {"target", {0, 0, 0}}}};
     add("camera at its target", camera, "camera 'front':");
     camera["cameras"] = {{{"name", "Front"}, {"position", {0, 0, 5}}, {"target", {0, 0, 0}}}};
-    add("camera name", camera, "camera 0: name 'Front' must match [a-z0-9_-]+");
+    add("camera name", camera,
+        "camera 0: name 'Front' must match [a-z0-9_-]+ (at most 63 characters)");
     camera["cameras"] = {{{"name", "a"}, {"position", {0, 5, 0}}, {"target", {0, 0, 0}},
                           {"fov", 200}}};
     add("camera fov", camera, "camera 'a':");

@@ -29,6 +29,14 @@ TEST(Scaffold, RefusesIdsThePluginLoaderWouldRefuse) {
         EXPECT_THROW(scaffold_names(bad), UsageError) << "'" << bad << "'";
     }
     EXPECT_NO_THROW(scaffold_names(std::string(63, 'a')));
+    try {
+        scaffold_names("2d");
+        ADD_FAILURE() << "'2d' was taken for a scene id";
+    } catch (const UsageError& error) {
+        EXPECT_STREQ(error.what(),
+                     "scene name '2d' must be a scene id: a lowercase letter, then lowercase "
+                     "letters, digits, '-' or '_' (at most 63)");
+    }
 }
 
 TEST(Scaffold, FillsEveryPlaceholderAndLeavesOtherAtSignsAlone) {

@@ -1,14 +1,14 @@
 #include "camera/camera_path_file.hpp"
 
 #include <fstream>
+#include <nlohmann/json.hpp>
 #include <sstream>
 #include <stdexcept>
 
-#include <nlohmann/json.hpp>
-
-#include "util/atomic_file.hpp"
 #include "camera/view_json.hpp"
+#include "util/atomic_file.hpp"
 #include "util/json_fields.hpp"
+#include "util/strings.hpp"
 
 namespace fgr {
 namespace {
@@ -74,13 +74,13 @@ CameraPathFile parse_camera_path_json(const std::string& text) {
 
 CameraPathFile read_camera_path_file(const std::filesystem::path& file) {
     std::ifstream in(file, std::ios::binary);
-    if (!in) throw std::runtime_error("cannot read camera path '" + file.string() + "'");
+    if (!in) throw std::runtime_error("cannot read camera path " + quoted(file));
     std::ostringstream text;
     text << in.rdbuf();
     try {
         return parse_camera_path_json(text.str());
     } catch (const std::runtime_error& error) {
-        throw std::runtime_error("camera path '" + file.string() + "': " + error.what());
+        throw std::runtime_error("camera path " + quoted(file) + ": " + error.what());
     }
 }
 

@@ -29,6 +29,7 @@
 #include "output/tiled/tiled_still.hpp"
 #include "camera/view_validation.hpp"
 #include "tiled_render.hpp"
+#include "util/timing.hpp"
 
 namespace fgr {
 
@@ -341,7 +342,7 @@ int render_samples_across_ranks(Cluster& cluster, const Scene& scene, const Fram
     };
     const FarmOutcome outcome = run_farm(cluster, seeds, work, add);
     if (!cluster.coordinator()) return 0;
-    merged.render_ms = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - started).count();
+    merged.render_ms = elapsed_ms(started);
     merged.image = display_image(scene, request.params, merged.linear, merged.image.width, merged.image.height);
     fmt::print("seeds {} to {} (one a rank)\n", job.request.path.seed,
                job.request.path.seed + uint32_t(cluster.size() - 1));

@@ -7,6 +7,7 @@
 
 #include "util/atomic_file.hpp"
 #include "scene/parameters.hpp"
+#include "scene/scene_limits.hpp"
 #include "template_CMakeLists_txt.h"
 #include "template_README_md.h"
 #include "template_scene_c.h"
@@ -16,19 +17,6 @@ namespace fgr {
 namespace {
 
 namespace fs = std::filesystem;
-
-constexpr std::size_t kMaxIdLength = 63;  // as the plugin loader accepts
-
-bool valid_id(const std::string& id) {
-    if (id.empty() || id.size() > kMaxIdLength || !std::islower(static_cast<unsigned char>(id[0]))) {
-        return false;
-    }
-    for (const char c : id) {
-        const auto u = static_cast<unsigned char>(c);
-        if (!(std::islower(u) || std::isdigit(u) || c == '-' || c == '_')) return false;
-    }
-    return true;
-}
 
 struct TemplateFile {
     const char* text;
@@ -58,11 +46,11 @@ struct TemporaryDirectory {
 }  // namespace
 
 ScaffoldNames scaffold_names(const std::string& id) {
-    if (!valid_id(id)) {
+    if (!is_scene_id(id)) {
         throw UsageError(fmt::format(
             "scene name '{}' must be a scene id: a lowercase letter, then lowercase letters, "
-            "digits, '-' or '_' (at most 63)",
-            id));
+            "digits, '-' or '_' (at most {})",
+            id, scene_limits::kMaxIdLength));
     }
     ScaffoldNames names{id, id, ""};
     for (char& c : names.symbol) c = c == '-' ? '_' : c;

@@ -24,6 +24,7 @@
 #include "output/still_layers.hpp"
 #include "output/tiled/streaming_image.hpp"
 #include "output/tiled/tiled_still.hpp"
+#include "util/timing.hpp"
 
 namespace fgr {
 namespace {
@@ -132,7 +133,7 @@ int write_tiles(Cluster& cluster, const TiledRender& render, const TaskWork& wor
         file->add(index, tile_from_bytes(bytes));
         rays += plan.tile(index).pixels() * render.request().samples;
         ++done;
-        const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+        const double seconds = seconds_since(start);
         progress.update(done, plan.tiles(), done - resumed, seconds,
                         format_rate(seconds > 0.0 ? double(rays) / seconds : 0.0) + "rays/s");
     };
@@ -163,7 +164,7 @@ int write_tiles(Cluster& cluster, const TiledRender& render, const TaskWork& wor
                       options.output, store.string());
         return 130;
     }
-    const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+    const double seconds = seconds_since(start);
     fmt::print("render_ms {:.1f}\n", seconds * 1000.0);
     fmt::print("hits {}\n", file->hits());
     fmt::print("samples_per_pixel {}\n", render.request().samples);
@@ -257,8 +258,7 @@ int render_part_file(const Scene& scene, const FrameRequest& request, const Comp
     const std::string rows =
         fmt::format("rows {}..{}", rendered.y, rendered.y + rendered.height - 1);
     settings.on_progress = [&](long done, long total) {
-        const std::chrono::duration<double> seconds = std::chrono::steady_clock::now() - start;
-        progress.update(done, total, done, seconds.count(), rows);
+        progress.update(done, total, done, seconds_since(start), rows);
     };
     PartResult result;
     try {

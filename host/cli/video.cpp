@@ -27,6 +27,7 @@
 #include "output/video/video_frames.hpp"
 #include "output/video/video_timing.hpp"
 #include "camera/view_validation.hpp"
+#include "util/timing.hpp"
 
 namespace fgr {
 namespace {
@@ -275,8 +276,7 @@ int command_video(const VideoOptions& options) {
     InTaskOrder in_order([&](int64_t index, std::vector<uint8_t>&& bytes) {
         write_frame(frame_from_bytes(bytes), index);
         const long done = static_cast<long>(index) - first_frame + 1;
-        const double seconds =
-            std::chrono::duration<double>(std::chrono::steady_clock::now() - started).count();
+        const double seconds = seconds_since(started);
         progress.update(done, total_frames, done, seconds,
                         fmt::format("{:.2f} fps", seconds > 0.0 ? double(done) / seconds : 0.0));
     }, first_frame);

@@ -17,6 +17,7 @@
 #include "camera/camera.hpp"
 #include "scene/parameters.hpp"
 #include "render/renderer.hpp"
+#include "util/timing.hpp"
 
 namespace fgr {
 namespace {
@@ -121,7 +122,7 @@ RunFigures bench_run(const CameraPath& path, const Scene& scene, const BenchSett
     int double_frames = 0;
     auto start = Clock::now();
     for (;;) {
-        const double elapsed = std::chrono::duration<double>(Clock::now() - start).count();
+        const double elapsed = seconds_since(start);
         double fraction = 0.0;
         float time = start_time;
         if (settings.frames) {
@@ -158,8 +159,7 @@ RunFigures bench_run(const CameraPath& path, const Scene& scene, const BenchSett
         double_frames += in_double;
         if (settings.on_frame) settings.on_frame(request.view, time, frame_ms.back());
     }
-    RunFigures run =
-        summarise_run(frame_ms, std::chrono::duration<double>(Clock::now() - start).count());
+    RunFigures run = summarise_run(frame_ms, seconds_since(start));
     run.double_frames = double_frames;
     run.samples_per_second = run.seconds > 0.0 ? double(run.frames) * settings.samples *
                                                      settings.width * settings.height / run.seconds

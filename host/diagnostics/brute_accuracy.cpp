@@ -56,7 +56,7 @@ KernelSwitches switches_for(const Scene& scene, const ComputeDevice& device, Ren
 }
 
 // Text for inside a single-quoted gnuplot string, where a quote is written twice.
-std::string quoted(const std::string& text) {
+std::string gnuplot_escaped(const std::string& text) {
     std::string out;
     for (char c : text) {
         out += c;
@@ -162,8 +162,8 @@ std::string brute_convergence_gnuplot(const BruteConvergence& convergence,
         "set ylabel 'mean depth error where both hit (footprints)'\n"
         "plot '{5}' skip 1 using 1:7 with linespoints pt 7 title 'mean |t - t_{{ref}}|'\n"
         "unset multiplot\n",
-        quoted(scene_id), quoted(png), quoted(convergence.reference), kBruteAgreementFootprints,
-        convergence.reference_ms, quoted(csv));
+        gnuplot_escaped(scene_id), gnuplot_escaped(png), gnuplot_escaped(convergence.reference),
+        kBruteAgreementFootprints, convergence.reference_ms, gnuplot_escaped(csv));
 }
 
 }  // namespace fgr

@@ -29,6 +29,9 @@
 #include <vector>
 
 #include "util/atomic_file.hpp"
+#include "util/errors.hpp"
+#include "util/files.hpp"
+#include "util/strings.hpp"
 
 namespace fgr {
 namespace {
@@ -41,8 +44,6 @@ constexpr std::uintmax_t kMaxFileBytes = std::numeric_limits<int>::max();
 constexpr int kMaxExrTileSide = 1024;
 // Longest channel name OpenEXR writes (its "long names" limit).
 constexpr std::size_t kMaxExrNameBytes = 255;
-
-std::string quoted(const fs::path& path) { return "'" + path.string() + "'"; }
 
 // What read_hdr_image throws for a bad file: a std::runtime_error of its own type, so the
 // handlers that turn library exceptions into messages pass it through unchanged.
@@ -58,8 +59,6 @@ struct ReadFailure : std::runtime_error {
     throw std::invalid_argument("cannot write " + quoted(path) + ": " + reason);
 }
 
-std::string errno_message(int error) { return std::generic_category().message(error); }
-
 // Library messages and names from callers may span lines; ours are one line each.
 std::string printable(std::string text) {
     for (char& c : text) {
@@ -74,13 +73,8 @@ std::string one_line(const std::string& message) {
     return line.empty() ? "unknown error" : line;
 }
 
-struct FileCloser {
-    void operator()(std::FILE* file) const { std::fclose(file); }
-};
-using FilePointer = std::unique_ptr<std::FILE, FileCloser>;
-
 // The whole file, after checking it is a regular file within the size limit.
-std::vector<unsigned char> read_file_bytes(const fs::path& path) {
+std::vector<unsigned char> read_image_file(const fs::path& path) {
     std::error_code error;
     const fs::file_status status = fs::status(path, error);
     if (error || !fs::exists(status)) {
@@ -89,19 +83,10 @@ std::vector<unsigned char> read_file_bytes(const fs::path& path) {
     }
     if (fs::is_directory(status)) fail_read(path, "is a directory");
     if (!fs::is_regular_file(status)) fail_read(path, "not a regular file");
-    FilePointer file(std::fopen(path.c_str(), "rb"));
-    if (file == nullptr) fail_read(path, errno_message(errno));
-    const std::uintmax_t size = fs::file_size(path, error);
-    if (error) fail_read(path, error.message());
-    if (size == 0) fail_read(path, "empty file");
-    if (size > kMaxFileBytes) {
-        fail_read(path, "file too large (" + std::to_string(size) + " bytes; the limit is " +
-                            std::to_string(kMaxFileBytes) + ")");
-    }
-    std::vector<unsigned char> bytes(static_cast<std::size_t>(size));
-    if (std::fread(bytes.data(), 1, bytes.size(), file.get()) != bytes.size()) {
-        fail_read(path, std::ferror(file.get()) ? errno_message(errno) : "file shrank while read");
-    }
+    std::vector<unsigned char> bytes;
+    const std::string failure = read_file_bytes(path, bytes, kMaxFileBytes);
+    if (!failure.empty()) fail_read(path, failure);
+    if (bytes.empty()) fail_read(path, "empty file");
     return bytes;
 }
 
@@ -616,15 +601,13 @@ std::string encode_exr(const fs::path& temporary, int width, int height,
 void replace_or_throw(const fs::path& file,
                       const std::function<std::string(const fs::path&)>& write_temporary) {
     const std::string failure = replace_file_atomically(file, write_temporary);
-    if (!failure.empty()) {
-        throw std::runtime_error("cannot write " + quoted(file) + ": " + one_line(failure));
-    }
+    if (!failure.empty()) fail_write(file, one_line(failure));
 }
 
 }  // namespace
 
 HdrImage read_hdr_image(const fs::path& file) {
-    const std::vector<unsigned char> bytes = read_file_bytes(file);
+    const std::vector<unsigned char> bytes = read_image_file(file);
     if (is_radiance(bytes)) return read_radiance(file, bytes);
     if (starts_with(bytes, kExrMagic)) return read_openexr(file, bytes);
     fail_read(file, describe_other(bytes));

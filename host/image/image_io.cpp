@@ -1,10 +1,6 @@
 #include "image/image_io.hpp"
 
-#include "util/atomic_file.hpp"
-
 #include <png.h>
-
-#include "image/png_errors.hpp"
 
 #include <cerrno>
 #include <csetjmp>
@@ -12,9 +8,13 @@
 #include <cstdio>
 #include <stdexcept>
 #include <string>
-#include <system_error>
 #include <utility>
 #include <vector>
+
+#include "image/png_errors.hpp"
+#include "util/atomic_file.hpp"
+#include "util/errors.hpp"
+#include "util/strings.hpp"
 
 namespace fgr {
 namespace {
@@ -25,18 +25,9 @@ namespace fs = std::filesystem;
 constexpr std::size_t kMaxReadPixels = std::size_t{1} << 28;
 constexpr std::size_t kPngSignatureBytes = 8;
 
-std::string quoted(const fs::path& path) { return "'" + path.string() + "'"; }
-
-[[noreturn]] void fail_write(const fs::path& path, const std::string& reason) {
-    throw std::runtime_error("cannot write " + quoted(path) + ": " + reason);
-}
-
 [[noreturn]] void fail_read(const fs::path& path, const std::string& reason) {
     throw std::runtime_error("cannot read " + quoted(path) + ": " + reason);
 }
-
-std::string errno_message(int error) { return std::generic_category().message(error); }
-
 
 // The handles of one encode or decode. They live in the caller of the function that calls setjmp,
 // so a longjmp never skips their destructors and never leaves them indeterminate.

@@ -23,6 +23,7 @@
 #include "render/modes/mode_kernel.hpp"
 #include "render/camera_frame.hpp"
 #include "util/parallel_bands.hpp"
+#include "util/timing.hpp"
 #include "render/prepass/cone_prepass.hpp"
 
 namespace fgr {
@@ -212,11 +213,6 @@ Frame cancelled_frame() {
     Frame cancelled;
     cancelled.cancelled = true;
     return cancelled;
-}
-
-double elapsed_ms(std::chrono::steady_clock::time_point since) {
-    return std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - since)
-        .count();
 }
 
 }  // namespace

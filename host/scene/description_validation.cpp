@@ -63,22 +63,24 @@ constexpr std::size_t kV1_4SceneDescSize =
 constexpr std::size_t kV1_4BuiltinDefaultSize =
     offsetof(fgr_builtin_default, value) + sizeof(fgr_builtin_default::value);
 
-constexpr std::size_t kMaxIdLength = 63;
+// The limits a scene file has too are in scene_limits.hpp; these are a plugin's alone.
+using scene_limits::kMaxAngularRadiusDegrees;
+using scene_limits::kMaxCameraPaths;
+using scene_limits::kMaxCameras;
+using scene_limits::kMaxIdLength;
+using scene_limits::kMaxKeyframes;
+using scene_limits::kMaxLights;
+using scene_limits::kMaxTextLength;
+using scene_limits::kMinKeyframes;
+
 constexpr std::size_t kMaxSourceBytes = 4u << 20;
-// Host limits for free text (names, labels, descriptions, choices). They are not in the ABI;
-// they only bound how far strnlen reads when a plugin forgot a terminating NUL.
-constexpr std::size_t kMaxTextLength = 4096;
+// Like kMaxTextLength, not in the ABI: it only bounds how far strnlen reads when a plugin forgot
+// a terminating NUL.
 constexpr std::size_t kMaxChoicesLength = 64 * 1024;
 
 constexpr uint32_t kMaxParams = 1024;
-constexpr uint32_t kMaxLights = 16;
-constexpr uint32_t kMaxCameras = 256;
-constexpr uint32_t kMaxCameraPaths = 256;
-constexpr uint32_t kMinKeyframes = 2;
-constexpr uint32_t kMaxKeyframes = 10000;
 constexpr uint32_t kMaxMarchSteps = 100000;
 constexpr uint32_t kMaxDeIterations = 1000;
-constexpr float kMaxAngularRadiusDegrees = 45.0f;
 constexpr uint32_t kMaxBuiltinDefaults = 64;
 constexpr float kMinScale = 1e-6f;
 constexpr float kMaxScale = 1e6f;
@@ -327,7 +329,9 @@ CameraView copy_view(const float (&position)[3], const float (&target)[3], const
 
 std::string copy_name(const char* name, const std::string& where) {
     std::string copy = bounded_string(name, kMaxIdLength, where + " name");
-    if (!is_name(copy)) fail("{}: name '{}' must match [a-z0-9_-]+", where, printable(copy));
+    if (!is_name(copy)) {
+        fail("{}: name '{}' {}", where, printable(copy), scene_limits::kCameraNameRule);
+    }
     return copy;
 }
 
@@ -717,7 +721,7 @@ Scene copy_checked(const fgr_scene_desc& desc, std::string& declared_id) {
     Scene scene;
     scene.id = bounded_string(desc.id, kMaxIdLength, "scene id");
     if (!is_identifier(scene.id, true)) {
-        fail("scene id '{}' must match [a-z][a-z0-9_-]*", printable(scene.id));
+        fail("scene id '{}' {}", printable(scene.id), scene_limits::kSceneIdRule);
     }
     declared_id = scene.id;
     scene.name = bounded_string(desc.name, kMaxTextLength, "scene name");

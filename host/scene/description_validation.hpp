@@ -12,6 +12,7 @@
 
 #include "fgr/plugin.h"
 #include "scene/scene.hpp"
+#include "scene/scene_limits.hpp"
 
 namespace fgr {
 
@@ -34,12 +35,6 @@ LoadResult copy_scene_description(const fgr_scene_desc* desc);
 // (formula files), so that their colour parameters are a plugin's. Throws std::invalid_argument
 // (one line) for a description a plugin would be refused.
 std::vector<ParamInfo> copy_param_descriptions(std::span<const fgr_param_desc> descriptions);
-
-// The naming rules every scene follows, whatever it came from (a plugin or an IFS file):
-// scene ids match [a-z][a-z0-9_-]*, camera and camera path names [a-z0-9_-]+, both at most 63
-// characters.
-bool is_scene_id(std::string_view id);
-bool is_camera_name(std::string_view name);
 
 // `text` as it may appear in a one-line refusal: bytes outside printable ASCII become \xNN.
 std::string printable(std::string_view text);

@@ -1,19 +1,19 @@
 #include "scene/plugin_loader.hpp"
 
 #include <dlfcn.h>
+#include <spdlog/fmt/fmt.h>
 #include <unistd.h>
 
 #include <cerrno>
 #include <cstdlib>
 #include <exception>
-#include <fstream>
-#include <iterator>
 #include <stdexcept>
 #include <string_view>
 #include <system_error>
 #include <utility>
 
-#include <spdlog/fmt/fmt.h>
+#include "util/errors.hpp"
+#include "util/files.hpp"
 
 namespace fgr {
 namespace {
@@ -64,20 +64,19 @@ class TemporaryCopy {
 public:
     // Throws std::runtime_error when the copy cannot be made.
     explicit TemporaryCopy(const std::filesystem::path& original) {
-        std::ifstream in(original, std::ios::binary);
-        if (!in) throw std::runtime_error("cannot read the plugin file");
-        const std::string bytes((std::istreambuf_iterator<char>(in)),
-                                std::istreambuf_iterator<char>());
-        if (in.bad()) throw std::runtime_error("cannot read the plugin file");
+        std::string bytes;
+        if (!read_file_bytes(original, bytes).empty()) {
+            throw std::runtime_error("cannot read the plugin file");
+        }
         std::string pattern =
             (std::filesystem::temp_directory_path() / "fgr-plugin-XXXXXX.so").string();
         const int descriptor = ::mkstemps(pattern.data(), 3);
         if (descriptor < 0) {
-            throw std::runtime_error("cannot create a temporary copy: " + errno_text());
+            throw std::runtime_error("cannot create a temporary copy: " + errno_message(errno));
         }
         path_ = pattern;
         const bool written = write_all(descriptor, bytes);
-        const std::string reason = errno_text();
+        const std::string reason = errno_message(errno);
         ::close(descriptor);
         if (!written) {
             remove();
@@ -94,7 +93,6 @@ private:
         std::error_code ignored;
         if (!path_.empty()) std::filesystem::remove(path_, ignored);
     }
-    static std::string errno_text() { return std::generic_category().message(errno); }
     static bool write_all(int descriptor, const std::string& bytes) {
         for (std::size_t done = 0; done < bytes.size();) {
             const ssize_t wrote = ::write(descriptor, bytes.data() + done, bytes.size() - done);

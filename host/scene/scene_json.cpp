@@ -13,19 +13,27 @@
 #include <glm/trigonometric.hpp>
 
 #include "scene/description_validation.hpp"
+#include "scene/scene_limits.hpp"
 #include "camera/view_json.hpp"
 #include "util/json_fields.hpp"
 
 namespace fgr::scene_json {
 namespace {
 
-using nlohmann::json;
 using json_fields::check_keys;
-using json_fields::fail;
 using json_fields::dvec3_from;
+using json_fields::fail;
 using json_fields::finite_double;
 using json_fields::shown;
-
+using nlohmann::json;
+using scene_limits::kMaxAngularRadiusDegrees;
+using scene_limits::kMaxCameraPaths;
+using scene_limits::kMaxCameras;
+using scene_limits::kMaxIdLength;
+using scene_limits::kMaxKeyframes;
+using scene_limits::kMaxLights;
+using scene_limits::kMaxTextLength;
+using scene_limits::kMinKeyframes;
 
 std::vector<Keyframe> keyframes_from(const json& path, const std::string& where);
 Light light_from(const json& entry, std::size_t index);
@@ -84,8 +92,8 @@ Header header_from(const json& document) {
     Header header;
     header.id = text_from(document, "id", "", true);
     if (!is_scene_id(header.id)) {
-        fail("\"id\" '{}' must match [a-z][a-z0-9_-]* (at most 63 characters)",
-             printable(header.id));
+        fail("\"id\" '{}' {} (at most {} characters)", printable(header.id),
+             scene_limits::kSceneIdRule, kMaxIdLength);
     }
     header.name = text_from(document, "name", "", true);
     if (header.name.empty()) fail("\"name\" is empty");
@@ -131,8 +139,8 @@ void require_object(const json& value, const std::string& where) {
 std::string camera_name_from(const json& object, const std::string& where) {
     const std::string name = text_from(object, "name", where, true);
     if (!is_camera_name(name)) {
-        fail("{}: name '{}' must match [a-z0-9_-]+ (at most 63 characters)", where,
-             printable(name));
+        fail("{}: name '{}' {} (at most {} characters)", where, printable(name),
+             scene_limits::kCameraNameRule, kMaxIdLength);
     }
     return name;
 }

@@ -3,7 +3,7 @@
 // read the same way: the file itself (bounded in size), the header (format, version, id, name,
 // description), names and texts, cameras, camera paths and lights, and the defaults a file may
 // leave out. Each reader throws std::runtime_error with a one-line reason; the caller puts the
-// file's name in front. The numbers a plugin may have (description_validation.cpp) bound them.
+// file's name in front. The limits a plugin has (scene_limits.hpp) bound them.
 
 #include <cstddef>
 #include <filesystem>
@@ -35,15 +35,6 @@ Scene scene_of_file(const FileData& data, std::string source, const char* suffix
     scene.lights = data.lights;
     return scene;
 }
-
-// The limits plugins have (description_validation.cpp).
-inline constexpr std::size_t kMaxTextLength = 4096;
-inline constexpr std::size_t kMaxCameras = 256;
-inline constexpr std::size_t kMaxCameraPaths = 256;
-inline constexpr std::size_t kMinKeyframes = 2;
-inline constexpr std::size_t kMaxKeyframes = 10000;
-inline constexpr std::size_t kMaxLights = 16;
-inline constexpr double kMaxAngularRadiusDegrees = 45.0;
 
 // The file's bytes, refused (std::runtime_error "<file>: ...") past max_bytes without reading
 // more than one byte beyond; read in 64 KiB chunks, so a small file costs a small buffer.

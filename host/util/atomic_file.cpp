@@ -8,12 +8,12 @@
 #include <system_error>
 #include <utility>
 
+#include "util/errors.hpp"
+
 namespace fgr {
 namespace {
 
 namespace fs = std::filesystem;
-
-std::string errno_message(int error) { return std::generic_category().message(error); }
 
 // Beside the target, so the final rename stays within one file system and is atomic. The pid and
 // a counter keep concurrent writers (processes or threads) off each other's temporaries.
@@ -54,7 +54,7 @@ PendingFile::~PendingFile() {
 void PendingFile::commit() {
     std::error_code error;
     fs::rename(temporary_, target_, error);
-    if (error) throw std::runtime_error("cannot write '" + target_.string() + "': " + error.message());
+    if (error) fail_write(target_, error.message());
     committed_ = true;
 }
 
@@ -93,9 +93,7 @@ void write_text_file_atomically(const fs::path& target, std::string_view content
         }
         return close_durably(file);
     });
-    if (!failure.empty()) {
-        throw std::runtime_error("cannot write '" + target.string() + "': " + failure);
-    }
+    if (!failure.empty()) fail_write(target, failure);
 }
 
 }  // namespace fgr

@@ -16,6 +16,7 @@
 #include "render/renderer.hpp"
 #include "scene/scene_source.hpp"
 #include "camera/view_override.hpp"
+#include "util/timing.hpp"
 #include "viewer/viewer_util.hpp"
 
 namespace fgr::viewer {
@@ -27,10 +28,6 @@ constexpr double kUiFrameSeconds = 1.0 / 60.0;
 // The longest the window goes without being drawn (the status line's frame time and messages).
 constexpr double kMaxUndrawnSeconds = 0.1;
 constexpr size_t kMessagesKept = 6;
-
-double seconds_since(std::chrono::steady_clock::time_point start) {
-    return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-}
 
 }  // namespace
 

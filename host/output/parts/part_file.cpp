@@ -16,6 +16,7 @@
 #include <nlohmann/json.hpp>
 
 #include "util/lower_case.hpp"
+#include "util/timing.hpp"
 #include "output/tiled/streaming_image.hpp"
 #include "output/parts/render_identity.hpp"
 
@@ -86,10 +87,6 @@ float* put_pixel(const Frame& frame, size_t i, bool layers, float* out) {
     out = std::copy_n(&frame.normal[i * 3], 3, out);
     *out++ = frame.alpha[i];
     return std::copy_n(&frame.foreground[i * 3], 3, out);
-}
-
-double seconds_since(std::chrono::steady_clock::time_point start) {
-    return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
 }
 
 [[noreturn]] void not_a_part(const fs::path& path, const std::string& why) {

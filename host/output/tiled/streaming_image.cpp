@@ -2,14 +2,13 @@
 // library's own buffers (a few rows at most); the caller's band of rows is written and dropped.
 #include "output/tiled/streaming_image.hpp"
 
-#include <png.h>
-#include <tiffio.h>
-
 #include <ImfChannelList.h>
 #include <ImfFrameBuffer.h>
 #include <ImfHeader.h>
 #include <ImfOutputFile.h>
 #include <ImfStringAttribute.h>
+#include <png.h>
+#include <tiffio.h>
 
 #include <algorithm>
 #include <cerrno>
@@ -17,21 +16,18 @@
 #include <cstdarg>
 #include <cstdio>
 #include <stdexcept>
-#include <system_error>
 #include <utility>
 
-#include "util/atomic_file.hpp"
-#include "util/lower_case.hpp"
 #include "image/png_errors.hpp"
+#include "util/atomic_file.hpp"
+#include "util/errors.hpp"
+#include "util/lower_case.hpp"
+#include "util/strings.hpp"
 
 namespace fgr {
 namespace {
 
 namespace fs = std::filesystem;
-
-[[noreturn]] void fail_write(const fs::path& path, const std::string& reason) {
-    throw std::runtime_error("cannot write '" + path.string() + "': " + reason);
-}
 
 bool has_channels(const RowLayout& layout, std::initializer_list<const char*> names) {
     if (layout.channels.size() != names.size()) return false;
@@ -42,7 +38,7 @@ bool has_channels(const RowLayout& layout, std::initializer_list<const char*> na
 void check_rgb_layout(const fs::path& path, const RowLayout& layout, const char* format) {
     const bool rgb = has_channels(layout, {"R", "G", "B"}) || has_channels(layout, {"R", "G", "B", "A"});
     if (!rgb || layout.type == SampleType::F32) {
-        throw std::invalid_argument("cannot write '" + path.string() + "': " + format +
+        throw std::invalid_argument("cannot write " + quoted(path) + ": " + format +
                                     " output holds R, G, B and optionally A at 8 or 16 bits");
     }
 }
@@ -71,7 +67,7 @@ public:
         : pending_(path), width_(width), layout_(layout) {
         check_rgb_layout(path, layout, "PNG");
         h_.file = std::fopen(pending_.temporary().c_str(), "wb");
-        if (h_.file == nullptr) fail_write(path, std::generic_category().message(errno));
+        if (h_.file == nullptr) fail_write(path, errno_message(errno));
         h_.png = png_create_write_struct(PNG_LIBPNG_VER_STRING, &error_, record_png_error,
                                          ignore_png_warning);
         if (h_.png == nullptr || (h_.info = png_create_info_struct(h_.png)) == nullptr) {
@@ -146,8 +142,8 @@ public:
               const ExrPlacement& placement)
         : pending_(path), width_(width), x_(placement.x), layout_(layout) {
         if (layout.type != SampleType::F32) {
-            throw std::invalid_argument("cannot write '" + path.string() +
-                                        "': EXR output holds 32-bit float channels");
+            throw std::invalid_argument("cannot write " + quoted(path) +
+                                        ": EXR output holds 32-bit float channels");
         }
         // OpenEXR refuses headers past its global size limit, which fgr lowers while it reads
         // untrusted files; a tiled still may be larger, so the limit is the tiled one here (and
@@ -306,7 +302,7 @@ ImageFormat image_format_of(const fs::path& path) {
     if (extension == ".png") return ImageFormat::Png;
     if (extension == ".exr") return ImageFormat::Exr;
     if (extension == ".tif" || extension == ".tiff") return ImageFormat::Tiff;
-    throw std::invalid_argument("output '" + path.string() + "' must be a .png, .exr or .tif file");
+    throw std::invalid_argument("output " + quoted(path) + " must be a .png, .exr or .tif file");
 }
 
 std::unique_ptr<StreamingImageWriter> open_streaming_image(const fs::path& path,
@@ -314,17 +310,18 @@ std::unique_ptr<StreamingImageWriter> open_streaming_image(const fs::path& path,
                                                            int height, const RowLayout& layout,
                                                            const ExrPlacement& placement) {
     if (width < 1 || height < 1) {
-        throw std::invalid_argument("cannot write '" + path.string() + "': image is " +
+        throw std::invalid_argument("cannot write " + quoted(path) + ": image is " +
                                     std::to_string(width) + "x" + std::to_string(height));
     }
     if ((placement.placed() || !placement.attributes.empty()) && format != ImageFormat::Exr) {
-        throw std::invalid_argument("cannot write '" + path.string() +
-                                    "': only an EXR file holds a part of an image");
+        throw std::invalid_argument("cannot write " + quoted(path) +
+                                    ": only an EXR file holds a part of an image");
     }
     if (placement.placed() &&
         (placement.x < 0 || placement.y < 0 || placement.x + width > placement.image_width ||
          placement.y + height > placement.image_height)) {
-        throw std::invalid_argument("cannot write '" + path.string() + "': its rectangle lies "
+        throw std::invalid_argument("cannot write " + quoted(path) +
+                                    ": its rectangle lies "
                                     "outside the image");
     }
     switch (format) {

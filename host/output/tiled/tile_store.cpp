@@ -3,8 +3,6 @@
 #include <zlib.h>
 
 #include <cstring>
-#include <fstream>
-#include <iterator>
 #include <stdexcept>
 #include <string>
 
@@ -12,6 +10,7 @@
 #include <spdlog/spdlog.h>
 
 #include "util/atomic_file.hpp"
+#include "util/files.hpp"
 #include "output/parts/render_identity.hpp"
 
 namespace fgr {
@@ -39,11 +38,6 @@ std::string format_name(ImageFormat format) {
         case ImageFormat::Tiff: return "tiff";
     }
     return "?";
-}
-
-std::string read_file(const fs::path& path) {
-    std::ifstream in(path, std::ios::binary);
-    return std::string(std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>());
 }
 
 }  // namespace
@@ -82,7 +76,9 @@ TileStore::TileStore(fs::path directory, nlohmann::json identity, bool resume,
         }
         nlohmann::json kept;
         try {
-            kept = nlohmann::json::parse(read_file(manifest));
+            std::string text;
+            read_file_bytes(manifest, text);  // unreadable: empty, which does not parse
+            kept = nlohmann::json::parse(text);
         } catch (const std::exception&) {
             throw std::runtime_error(fmt::format(
                 "cannot resume from '{}': its render.json is missing or damaged (delete the "
@@ -134,7 +130,8 @@ std::optional<long> TileStore::load_band(int band, std::vector<uint8_t>& rows) c
     const fs::path path = band_path(band);
     std::error_code error;
     if (!fs::exists(path, error)) return std::nullopt;
-    const std::string bytes = read_file(path);
+    std::string bytes;
+    read_file_bytes(path, bytes);  // unreadable: empty, so damaged below
     BandHeader header{};
     const auto damaged = [&](const char* why) -> std::optional<long> {
         spdlog::warn("'{}' is damaged ({}): rendering that band again", path.string(), why);

@@ -16,6 +16,7 @@
 #include "output/still_layers.hpp"
 #include "output/tiled/row_encoder.hpp"
 #include "output/tiled/tile_store.hpp"
+#include "util/timing.hpp"
 
 namespace fgr {
 namespace {
@@ -27,10 +28,6 @@ constexpr int kBruteMaxReach = 256;
 int round_down_to_4(long value) { return static_cast<int>(value / 4 * 4); }
 
 using Rect = PixelRegion;
-
-double seconds_since(std::chrono::steady_clock::time_point start) {
-    return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-}
 
 }  // namespace
 

@@ -2,13 +2,14 @@
 // encoding in the FFmpeg module, loaded the first time a video is checked or written.
 #include "output/video/video_encoder.hpp"
 
+#include <fmt/format.h>
+
 #include <stdexcept>
 #include <system_error>
 
-#include <fmt/format.h>
-
-#include "scene/modules.hpp"
 #include "output/video/video_backend.hpp"
+#include "scene/modules.hpp"
+#include "util/errors.hpp"
 
 namespace fgr {
 namespace {
@@ -69,10 +70,7 @@ void VideoEncoder::finish() {
     state_->backend.finish(state_->encoder);
     std::error_code error;
     std::filesystem::rename(temporary_, output_, error);
-    if (error) {
-        throw std::runtime_error(
-            fmt::format("cannot write '{}': {}", output_.string(), error.message()));
-    }
+    if (error) fail_write(output_, error.message());
     finished_ = true;
 }
 

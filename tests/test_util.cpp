@@ -1,0 +1,99 @@
+// The small helpers in host/util that the host's concepts share: each does what its callers'
+// messages and figures rely on.
+
+#include <gtest/gtest.h>
+
+#include <cerrno>
+#include <chrono>
+#include <fstream>
+#include <stdexcept>
+#include <string>
+#include <vector>
+
+#include "child_process.hpp"
+#include "util/errors.hpp"
+#include "util/files.hpp"
+#include "util/strings.hpp"
+#include "util/timing.hpp"
+
+namespace fgr {
+namespace {
+
+TEST(UtilErrors, ErrnoMessageIsTheCLibrarysText) {
+    EXPECT_EQ(errno_message(ENOENT), "No such file or directory");
+    EXPECT_EQ(errno_message(EACCES), "Permission denied");
+}
+
+TEST(UtilErrors, FailWriteThrowsTheWritersOneLineMessage) {
+    try {
+        fail_write("out/x.png", "No space left on device");
+        ADD_FAILURE() << "fail_write returned";
+    } catch (const std::runtime_error& error) {
+        EXPECT_STREQ(error.what(), "cannot write 'out/x.png': No space left on device");
+    }
+}
+
+// Messages quote a path as it is, between single quotes; a quote inside is not escaped.
+TEST(UtilStrings, QuotedPathIsItsTextBetweenSingleQuotes) {
+    EXPECT_EQ(quoted("out/mandel bulb.png"), "'out/mandel bulb.png'");
+    EXPECT_EQ(quoted("it's.exr"), "'it's.exr'");
+    EXPECT_EQ(quoted(""), "''");
+}
+
+std::filesystem::path write_bytes(const std::filesystem::path& file, const std::string& bytes) {
+    std::ofstream(file, std::ios::binary) << bytes;
+    return file;
+}
+
+// Every byte comes back as it is on disk (NULs, high bytes, no newline translation), into either
+// container, and an empty file is no failure.
+TEST(UtilFiles, ReadFileBytesReadsTheWholeFile) {
+    const test::TempDir dir("fgr_util_files");
+    const std::string contents("a\0b\r\n\xff\x80 end", 11);
+    const auto file = write_bytes(dir.path() / "bytes.bin", contents);
+    std::string text = "left over";
+    EXPECT_EQ(read_file_bytes(file, text), "");
+    EXPECT_EQ(text, contents);
+    std::vector<unsigned char> bytes;
+    EXPECT_EQ(read_file_bytes(file, bytes), "");
+    EXPECT_EQ(bytes, std::vector<unsigned char>(contents.begin(), contents.end()));
+
+    const auto empty = write_bytes(dir.path() / "empty.bin", "");
+    EXPECT_EQ(read_file_bytes(empty, text), "");
+    EXPECT_EQ(text, "");
+}
+
+// Each failure gives the reason its callers put in their messages, and leaves nothing read.
+TEST(UtilFiles, ReadFileBytesSaysWhyAndLeavesNothingOnFailure) {
+    const test::TempDir dir("fgr_util_files");
+    std::string text = "left over";
+    EXPECT_EQ(read_file_bytes(dir.path() / "missing.bin", text), "No such file or directory");
+    EXPECT_EQ(text, "");
+
+    const auto file = write_bytes(dir.path() / "ten.bin", "0123456789");
+    std::vector<unsigned char> bytes{1, 2, 3};
+    EXPECT_EQ(read_file_bytes(file, bytes, 9), "file too large (10 bytes; the limit is 9)");
+    EXPECT_TRUE(bytes.empty());
+    EXPECT_EQ(read_file_bytes(file, bytes, 10), "");
+    EXPECT_EQ(bytes.size(), 10u);
+
+    text = "left over";
+    EXPECT_NE(read_file_bytes(dir.path(), text), "") << "a directory is no file to read";
+    EXPECT_EQ(text, "");
+}
+
+// A moment set back by a known amount: the figures are at least that, in their unit, and not
+// wildly more (the bound allows for a loaded machine; no test here times anything).
+TEST(UtilTiming, SecondsSinceAndElapsedMsCountFromTheStartInTheirUnits) {
+    using namespace std::chrono_literals;
+    const auto two_seconds_ago = std::chrono::steady_clock::now() - 2s;
+    const double seconds = seconds_since(two_seconds_ago);
+    EXPECT_GE(seconds, 2.0);
+    EXPECT_LT(seconds, 62.0);
+    const double ms = elapsed_ms(two_seconds_ago);
+    EXPECT_GE(ms, 2000.0);
+    EXPECT_LT(ms, 62000.0);
+}
+
+}  // namespace
+}  // namespace fgr
