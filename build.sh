@@ -37,9 +37,11 @@ build_packages=(
 )
 # And to test it: GoogleTest, Open MPI (optional to build fgr; with it, `mpirun -np N fgr render`
 # shares a render between ranks, and the tests run that), Mesa's software rasteriser under the
-# virtual X server the viewer tests run in, clinfo and gnuplot for the benchmark scripts.
+# virtual X server the viewer tests run in, clinfo and gnuplot for the benchmark scripts, and
+# clang-format for the style check.
 test_packages=(
     libgtest-dev libopenmpi-dev openmpi-bin libgl1-mesa-dri xvfb xauth clinfo gnuplot-nox
+    clang-format
 )
 
 # install_missing_packages PACKAGE...: apt-get installs those not installed yet.

@@ -25,7 +25,7 @@
 
 typedef struct orbit_trap {
     real point;      /* min |z|: distance to the origin */
-    real planes;     /* min over the orbit of min(|x|, |y|, |z|): distance to the coordinate planes */
+    real planes; /* min over the orbit of min(|x|, |y|, |z|): distance to the coordinate planes */
     real axes;       /* min distance to the x, y and z axes */
     real iterations; /* iterations the lane took (the escape-time colouring) */
 } orbit_trap;
@@ -44,7 +44,8 @@ inline orbit_trap trap_update(orbit_trap trap, vec3 z, mask active) {
     vec3 a = v3_abs(z);
     real to_point = v3_length(z);
     real to_planes = fmin(a.x, fmin(a.y, a.z));
-    real to_axes = sqrt(fmin(z.y * z.y + z.z * z.z, fmin(z.x * z.x + z.z * z.z, z.x * z.x + z.y * z.y)));
+    real to_axes =
+        sqrt(fmin(z.y * z.y + z.z * z.z, fmin(z.x * z.x + z.z * z.z, z.x * z.x + z.y * z.y)));
     trap.point = select(trap.point, fmin(trap.point, to_point), active);
     trap.planes = select(trap.planes, fmin(trap.planes, to_planes), active);
     trap.axes = select(trap.axes, fmin(trap.axes, to_axes), active);

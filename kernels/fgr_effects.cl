@@ -64,8 +64,9 @@ inline vec3 apply_fog(vec3 colour, real t, mask hit, float max_distance, PARAMS)
 /* Glow around the surface: rays that miss pick up glow_colour * glow_strength, fading as
  * exp(-closest / glow_radius) with the closest their march came to the surface. */
 inline vec3 apply_glow(vec3 colour, real closest, mask missed, PARAMS) {
-    real amount = select(fgr_real(0.0f),
-                         param_glow_strength * exp(-fmax(closest, 0.0f) / param_glow_radius), missed);
+    real amount =
+        select(fgr_real(0.0f), param_glow_strength * exp(-fmax(closest, 0.0f) / param_glow_radius),
+               missed);
     return v3_add(colour, v3_scale(param_glow_colour, amount));
 }
 #endif

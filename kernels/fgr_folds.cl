@@ -58,7 +58,8 @@ inline vec3 fold_menger(vec3 p) {
 /* Per-axis box fold (Mandelbox "ABox", Knighty's pseudo-Kleinian): coordinate i beyond +-limit.i
  * is reflected back about it. `limit` is a vec3, as a vec3 parameter gives it. An isometry. */
 inline vec3 fold_box_axes(vec3 p, vec3 limit) {
-    return v3(clamp(p.x, -limit.x, limit.x) * 2.0f - p.x, clamp(p.y, -limit.y, limit.y) * 2.0f - p.y,
+    return v3(clamp(p.x, -limit.x, limit.x) * 2.0f - p.x,
+              clamp(p.y, -limit.y, limit.y) * 2.0f - p.y,
               clamp(p.z, -limit.z, limit.z) * 2.0f - p.z);
 }
 
@@ -73,7 +74,8 @@ inline vec3 fold_box_axes(vec3 p, vec3 limit) {
 #define FGR_ICOSAHEDRAL_MIRROR_Y -0.80901699f
 #define FGR_ICOSAHEDRAL_MIRROR_Z 0.30901699f
 inline vec3 fold_icosahedral(vec3 p) {
-    const vec3 mirror = v3_splat(FGR_ICOSAHEDRAL_MIRROR_X, FGR_ICOSAHEDRAL_MIRROR_Y, FGR_ICOSAHEDRAL_MIRROR_Z);
+    const vec3 mirror =
+        v3_splat(FGR_ICOSAHEDRAL_MIRROR_X, FGR_ICOSAHEDRAL_MIRROR_Y, FGR_ICOSAHEDRAL_MIRROR_Z);
     for (int i = 0; i < 5; ++i) {
         p.x = fabs(p.x);
         p.y = fabs(p.y);
@@ -89,7 +91,8 @@ inline vec3 fold_icosahedral(vec3 p) {
 inline vec3 icosahedron_vertex(void) { return v3_splat(0.52573111f, 0.0f, 0.85065081f); }
 inline vec3 dodecahedron_vertex(void) { return v3_splat(0.0f, 0.35682209f, 0.93417236f); }
 
-/* Sphere inversion about `centre` with `radius`: p -> centre + radius^2 (p - centre) / |p - centre|^2,
+/* Sphere inversion about `centre` with `radius`:
+ *     p -> centre + radius^2 (p - centre) / |p - centre|^2,
  * the map of Kleinian and Apollonian fractals. |p - centre| is read as at least min_radius, so the
  * centre goes to a finite point and nothing divides by zero. Lengths near p scale by
  * radius^2 / |p - centre|^2: *dr is multiplied by it, so a DE divided by dr stays a bound. */

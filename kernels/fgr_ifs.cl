@@ -62,7 +62,7 @@ typedef struct ifs_hit {
     ifs_real t;
     int hit;
     int visited;    /* nodes taken out of the heap or stack */
-    int heap_peak;  /* most nodes the heap held (-1: it would have overflowed; traced depth first) */
+    int heap_peak; /* most nodes the heap held (-1: it would have overflowed; traced depth first) */
     ifs_node leaf;
 } ifs_hit;
 
@@ -319,7 +319,8 @@ inline ifs_hit ifs_trace_depth_first(ifs_real3 o, ifs_real3 d, ifs_real travelle
 inline ifs_hit ifs_retrace_depth_first(ifs_real3 o, ifs_real3 d, ifs_real travelled,
                                        ifs_real reach, float footprint, int max_depth,
                                        int max_nodes, int visited) {
-    ifs_hit exact = ifs_trace_depth_first(o, d, travelled, reach, footprint, max_depth, max_nodes, 0);
+    ifs_hit exact =
+        ifs_trace_depth_first(o, d, travelled, reach, footprint, max_depth, max_nodes, 0);
     exact.visited += visited;
     return exact;
 }

@@ -10,7 +10,7 @@
  *
  *     FGR_ORBIT(min(param_iterations, 30), FGR_NO_BAILOUT)   (once per point; in scope: vec3 c)
  *         const rotation3 turn = rotation_about_axis(param_axis, param_angle);
- *     FGR_ITERATE                                           (each step; also vec3 z, real dr, int i)
+ *     FGR_ITERATE                               (each step; also in scope: vec3 z, real dr, int i)
  *         z = fold_icosahedral(z);
  *         z = op_rotate(z, turn);
  *         z = scale_about(z, param_scale, icosahedron_vertex());
@@ -37,12 +37,13 @@
 /* No bailout: every lane runs every iteration (folding fractals: KIFS, Kleinian). */
 #define FGR_NO_BAILOUT INFINITY
 
-#define FGR_ORBIT(iterations, bailout)                                                          \
-    inline real fgr_scene_orbit(const vec3 c, PARAMS, const int fgr_record, orbit_trap* fgr_trap) { \
-        const int fgr_iterations = (iterations);                                               \
-        const float fgr_bailout = (bailout);                                                   \
-        const float fgr_bailout2 = fgr_bailout * fgr_bailout;                                  \
-        vec3 z = c;                                                                            \
+#define FGR_ORBIT(iterations, bailout)                                      \
+    inline real fgr_scene_orbit(const vec3 c, PARAMS, const int fgr_record, \
+                                orbit_trap* fgr_trap) {                     \
+        const int fgr_iterations = (iterations);                            \
+        const float fgr_bailout = (bailout);                                \
+        const float fgr_bailout2 = fgr_bailout * fgr_bailout;               \
+        vec3 z = c;                                                         \
         real dr = fgr_real(1.0f);
 
 /* Lanes whose |z| passed the bailout keep their z and dr (an escaped orbit's distance is read

@@ -27,7 +27,8 @@
  * Mandelbox's round the origin), the rays meet the solid within a few steps. */
 
 /* A ray starting on the surface steps at least this fraction of max_distance while it is in it:
- * enough to move a float eye several units from the origin, too little to skip a visible feature. */
+ * enough to move a float eye several units from the origin, too little to skip a visible
+ * feature. */
 #define FGR_ESCAPE_STEP 1e-5f
 
 typedef struct march_result {

@@ -14,8 +14,9 @@
 
  *
  * Arguments: those every mode takes (planes .. PARAMS, see fgr_camera.cl), then the lights (the
- * scene's and the sky's sun, FGR_PATH_LIGHT_FLOATS each, laid out by host/render/modes/path_mode.cpp),
- * the settings, and the environment (ENVIRONMENT, fgr_environment.cl).
+ * scene's and the sky's sun, FGR_PATH_LIGHT_FLOATS each, laid out by
+ * host/render/modes/path_mode.cpp), the settings, and the environment (ENVIRONMENT,
+ * fgr_environment.cl).
  *
  * Planes: 0-2 radiance (summed over samples), 3 depth of the first hit (sample 0), then the
  * auxiliary outputs summed over samples: 4-6 albedo of the first hit, 7-9 its normal, 10 alpha

@@ -40,9 +40,13 @@
 /* Blocks lie on the whole image's grid, not the region's, so a pixel's block, and with it where
  * its rays start, is the same whether the image renders whole or in tiles (bit for bit). The
  * region's blocks start at block (prepass_first_block_x, prepass_first_block_y). */
-inline int prepass_first_block_x(camera_frame camera) { return camera.region_x / FGR_PREPASS_BLOCK; }
+inline int prepass_first_block_x(camera_frame camera) {
+    return camera.region_x / FGR_PREPASS_BLOCK;
+}
 
-inline int prepass_first_block_y(camera_frame camera) { return camera.region_y / FGR_PREPASS_BLOCK; }
+inline int prepass_first_block_y(camera_frame camera) {
+    return camera.region_y / FGR_PREPASS_BLOCK;
+}
 
 inline int prepass_blocks_x(camera_frame camera) {
     return (camera.region_x + camera.region_width - 1) / FGR_PREPASS_BLOCK + 1 -
@@ -81,14 +85,14 @@ inline real march_start_of(__global const float* starts, tile_pixels pixels,
 #endif
 }
 
-/* Where camera rays start given a reprojected hint (render/prepass/reprojection.hpp: the viewer's previous
- * frame's depths seen from the new view, less a margin; 0 for none): at the hint, for the lanes
- * whose hint lies past `start` and where the DE there is more than twice the hit footprint
- * (outside the surface, and not where the march would stop at once), at `start` elsewhere. A
- * hint is not proof that the way to it is clear, as the cone is: render/prepass/reprojection.hpp keeps
- * hints away from holes and depth edges, where a surface the previous frame did not see may
- * come into view, and the viewer uses them only for previews while the camera moves. Costs one
- * DE evaluation per packet with a hint, counted in *evaluations. */
+/* Where camera rays start given a reprojected hint (render/prepass/reprojection.hpp: the viewer's
+ * previous frame's depths seen from the new view, less a margin; 0 for none): at the hint, for the
+ * lanes whose hint lies past `start` and where the DE there is more than twice the hit footprint
+ * (outside the surface, and not where the march would stop at once), at `start` elsewhere. A hint
+ * is not proof that the way to it is clear, as the cone is: render/prepass/reprojection.hpp keeps
+ * hints away from holes and depth edges, where a surface the previous frame did not see may come
+ * into view, and the viewer uses them only for previews while the camera moves. Costs one DE
+ * evaluation per packet with a hint, counted in *evaluations. */
 inline real march_start_with_hint(real start, real hint, vec3 origin, vec3 dir, mask active,
                                   march_limits limits, mask* evaluations, PARAMS) {
     const mask hinted = active & (hint > start) & (hint < limits.max_distance);
@@ -187,7 +191,8 @@ __kernel void fgr_prepass(__global float* starts, int block_plane, int packet_co
     /* Float storage must not round a start past what the cone cleared. */
     const real start = select(fgr_real(0.0f), t * (1.0f - 1e-6f), valid & one_eye);
     /* Lanes of blocks outside the image write nowhere. */
-    const int first = (packet / packets_x) * FGR_TILE_H * blocks_x + (packet % packets_x) * FGR_TILE_W;
+    const int first =
+        (packet / packets_x) * FGR_TILE_H * blocks_x + (packet % packets_x) * FGR_TILE_W;
     for (int lane = 0; lane < FGR_WIDTH; ++lane) {
         const int lx = lane % FGR_TILE_W, ly = lane / FGR_TILE_W;
         if ((packet % packets_x) * FGR_TILE_W + lx >= blocks_x) continue;

@@ -90,7 +90,8 @@ inline real sd_cone(vec3 p, float half_height, float bottom_radius, float top_ra
     real side_dz = p.z - half_height + side_z * t;
     /* Inside: left of the side segment and between the caps. */
     mask inside = (side_dx < 0.0f) & (cap_dz < 0.0f);
-    real dist2 = fmin(mad(cap_dx, cap_dx, cap_dz * cap_dz), mad(side_dx, side_dx, side_dz * side_dz));
+    real dist2 =
+        fmin(mad(cap_dx, cap_dx, cap_dz * cap_dz), mad(side_dx, side_dx, side_dz * side_dz));
     real dist = sqrt(dist2);
     return select(dist, -dist, inside);
 }

@@ -171,11 +171,11 @@ inline vec3 surface_albedo(march_result hit, vec3 p, PARAMS) {
 #endif
 }
 
-/* Linear colour of surface point p with normal n and albedo `albedo` seen along view_dir, reached after `travelled`
- * along the (possibly reflected) ray, for the lanes in `surface` (the others get a colour nobody
- * uses, and no shadow rays). `steps` feeds the cheap step-count ambient occlusion when the scene
- * asks for it; `with_shadows` lets reflections skip shadow rays. Shadow rays' DE evaluations are
- * added to *work. */
+/* Linear colour of surface point p with normal n and albedo `albedo` seen along view_dir, reached
+ * after `travelled` along the (possibly reflected) ray, for the lanes in `surface` (the others get
+ * a colour nobody uses, and no shadow rays). `steps` feeds the cheap step-count ambient occlusion
+ * when the scene asks for it; `with_shadows` lets reflections skip shadow rays. Shadow rays' DE
+ * evaluations are added to *work. */
 inline vec3 shade_surface(vec3 p, vec3 n, vec3 albedo, vec3 view_dir, real eps, mask steps,
                           real travelled, mask surface, int with_shadows, march_limits limits,
                           __constant const float* lights, int light_count, mask* work, PARAMS) {

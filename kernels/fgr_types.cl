@@ -25,7 +25,8 @@
  * fold_box_axes, fold_icosahedral/fold_dodecahedral, invert_sphere, scale_about, and the
  * iterate-function scenes (FGR_ITERATION ... FGR_END_ITERATION, FGR_ITERATED_SCENE). Version 3
  * added op_union_culled (a union that skips an object no lane can need). Names are only
- * ever added in a new version; a change to an existing one keeps the old form for older versions. */
+ * ever added in a new version; a change to an existing one keeps the old form for older
+ * versions. */
 #define FGR_KERNEL_API_LATEST 3
 #ifndef FGR_KERNEL_API
 #define FGR_KERNEL_API 1

@@ -11,14 +11,18 @@ inline vec3 v3(real x, real y, real z) {
 }
 
 /* The same point or direction in every lane. */
-inline vec3 v3_splat(float x, float y, float z) { return v3(fgr_real(x), fgr_real(y), fgr_real(z)); }
+inline vec3 v3_splat(float x, float y, float z) {
+    return v3(fgr_real(x), fgr_real(y), fgr_real(z));
+}
 
 inline vec3 v3_add(vec3 a, vec3 b) { return v3(a.x + b.x, a.y + b.y, a.z + b.z); }
 inline vec3 v3_sub(vec3 a, vec3 b) { return v3(a.x - b.x, a.y - b.y, a.z - b.z); }
 inline vec3 v3_mul(vec3 a, vec3 b) { return v3(a.x * b.x, a.y * b.y, a.z * b.z); }
 inline vec3 v3_scale(vec3 a, real s) { return v3(a.x * s, a.y * s, a.z * s); }
 /* a + b * s, the ray-point form. */
-inline vec3 v3_mad(vec3 a, vec3 b, real s) { return v3(mad(b.x, s, a.x), mad(b.y, s, a.y), mad(b.z, s, a.z)); }
+inline vec3 v3_mad(vec3 a, vec3 b, real s) {
+    return v3(mad(b.x, s, a.x), mad(b.y, s, a.y), mad(b.z, s, a.z));
+}
 inline vec3 v3_neg(vec3 a) { return v3(-a.x, -a.y, -a.z); }
 inline vec3 v3_abs(vec3 a) { return v3(fabs(a.x), fabs(a.y), fabs(a.z)); }
 inline vec3 v3_min(vec3 a, vec3 b) { return v3(fmin(a.x, b.x), fmin(a.y, b.y), fmin(a.z, b.z)); }

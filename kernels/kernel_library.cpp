@@ -4,23 +4,18 @@
 #include <string_view>
 
 #include "fgr_bsdf_cl.h"
+#include "fgr_camera_cl.h"
 #include "fgr_colour_cl.h"
-#include "fgr_environment_cl.h"
 #include "fgr_effects_cl.h"
+#include "fgr_environment_cl.h"
 #include "fgr_folds_cl.h"
-#include "formulas_boxes_cl.h"
-#include "formulas_bulbs_cl.h"
-#include "formulas_hypercomplex_cl.h"
-#include "formulas_kifs_cl.h"
-#include "formulas_kleinian_cl.h"
 #include "fgr_fractals_cl.h"
 #include "fgr_geometry_cl.h"
 #include "fgr_ifs_cl.h"
 #include "fgr_iterate_cl.h"
 #include "fgr_march_cl.h"
-#include "fgr_math_cl.h"
 #include "fgr_math_check_cl.h"
-#include "fgr_camera_cl.h"
+#include "fgr_math_cl.h"
 #include "fgr_mode_brute_cl.h"
 #include "fgr_mode_path_cl.h"
 #include "fgr_mode_shaded_cl.h"
@@ -31,6 +26,11 @@
 #include "fgr_shade_cl.h"
 #include "fgr_types_cl.h"
 #include "fgr_vec3_cl.h"
+#include "formulas_boxes_cl.h"
+#include "formulas_bulbs_cl.h"
+#include "formulas_hypercomplex_cl.h"
+#include "formulas_kifs_cl.h"
+#include "formulas_kleinian_cl.h"
 
 namespace fgr {
 
@@ -70,14 +70,10 @@ const KernelFile* formula_family(std::string_view family) {
 
 std::span<const KernelFile> kernel_postlude() {
     static constexpr std::array files{
-        KernelFile{"fgr_geometry.cl", fgr_geometry_cl},
-        KernelFile{"fgr_march.cl", fgr_march_cl},
-        KernelFile{"fgr_ifs.cl", fgr_ifs_cl},
-        KernelFile{"fgr_shade.cl", fgr_shade_cl},
-        KernelFile{"fgr_effects.cl", fgr_effects_cl},
-        KernelFile{"fgr_camera.cl", fgr_camera_cl},
-        KernelFile{"fgr_prepass.cl", fgr_prepass_cl},
-        KernelFile{"fgr_probe.cl", fgr_probe_cl},
+        KernelFile{"fgr_geometry.cl", fgr_geometry_cl}, KernelFile{"fgr_march.cl", fgr_march_cl},
+        KernelFile{"fgr_ifs.cl", fgr_ifs_cl},           KernelFile{"fgr_shade.cl", fgr_shade_cl},
+        KernelFile{"fgr_effects.cl", fgr_effects_cl},   KernelFile{"fgr_camera.cl", fgr_camera_cl},
+        KernelFile{"fgr_prepass.cl", fgr_prepass_cl},   KernelFile{"fgr_probe.cl", fgr_probe_cl},
     };
     return files;
 }

@@ -3,12 +3,11 @@
 // `--precision auto` must render in double.
 
 #include <cmath>
-
 #include <glm/geometric.hpp>
 #include <glm/trigonometric.hpp>
 
-#include "scene/scene.hpp"
 #include "mandelbulb_reference.hpp"
+#include "scene/scene.hpp"
 
 namespace fgr::test {
 

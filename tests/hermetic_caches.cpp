@@ -7,10 +7,10 @@
 //     was told otherwise). PoCL keys its entries by source and options; a cold one costs about
 //     8 s per kernel, far too much to pay in every test process.
 // Child processes (fgr render, fgr view, the SDK script) inherit all of it: nothing under ~/.cache.
+#include "hermetic_caches.hpp"
+
 #include <cstdlib>
 #include <filesystem>
-
-#include "hermetic_caches.hpp"
 
 #include "child_process.hpp"
 

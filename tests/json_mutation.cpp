@@ -24,22 +24,38 @@ void collect_pointers(const json& value, const json::json_pointer& at,
 
 json nasty_value(FuzzRng& rng) {
     switch (rng.below(16)) {
-        case 0: return 0;
-        case 1: return -1;
-        case 2: return 1e308;
-        case 3: return -1e308;
-        case 4: return 4.9e-324;
-        case 5: return 4294967297ull;
-        case 6: return 0.999999999999;
-        case 7: return 1.0000000001;
-        case 8: return "x\n\x1b[31m";
-        case 9: return nullptr;
-        case 10: return true;
-        case 11: return json::array();
-        case 12: return json::object();
-        case 13: return json::array({1e-300, 0.5, -2});
-        case 14: return static_cast<double>(rng.below(2000)) / 1000.0 - 1.0;
-        default: return std::string(rng.below(5000), 'a');
+        case 0:
+            return 0;
+        case 1:
+            return -1;
+        case 2:
+            return 1e308;
+        case 3:
+            return -1e308;
+        case 4:
+            return 4.9e-324;
+        case 5:
+            return 4294967297ull;
+        case 6:
+            return 0.999999999999;
+        case 7:
+            return 1.0000000001;
+        case 8:
+            return "x\n\x1b[31m";
+        case 9:
+            return nullptr;
+        case 10:
+            return true;
+        case 11:
+            return json::array();
+        case 12:
+            return json::object();
+        case 13:
+            return json::array({1e-300, 0.5, -2});
+        case 14:
+            return static_cast<double>(rng.below(2000)) / 1000.0 - 1.0;
+        default:
+            return std::string(rng.below(5000), 'a');
     }
 }
 

@@ -4,9 +4,8 @@
 // value (a number, string, array or object swapped for a nasty one, a number nudged, a key removed
 // or misspelt, an array grown).
 
-#include <string>
-
 #include <nlohmann/json.hpp>
+#include <string>
 
 #include "fuzz_rng.hpp"
 

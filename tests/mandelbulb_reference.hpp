@@ -4,7 +4,6 @@
 
 #include <algorithm>
 #include <cmath>
-
 #include <glm/geometric.hpp>
 #include <glm/vec3.hpp>
 
@@ -34,10 +33,10 @@ Real mandelbulb_de(Real px, Real py, Real pz, const BulbParams& bulb) {
         const Real r_pow = std::pow(r, n - 1);
         dr = n * r_pow * dr + 1;
         const Real r_n = r_pow * r;
-        const Real horizontal = bulb.form == BulbForm::Colatitude ? std::sin(n * theta)
-                                                                   : std::cos(n * theta);
-        const Real vertical = bulb.form == BulbForm::Colatitude ? std::cos(n * theta)
-                                                                 : std::sin(n * theta);
+        const Real horizontal =
+            bulb.form == BulbForm::Colatitude ? std::sin(n * theta) : std::cos(n * theta);
+        const Real vertical =
+            bulb.form == BulbForm::Colatitude ? std::cos(n * theta) : std::sin(n * theta);
         x = r_n * horizontal * std::cos(n * phi) + px;
         y = r_n * horizontal * std::sin(n * phi) + py;
         z = r_n * vertical + pz;
@@ -64,9 +63,9 @@ inline long canonical_view_hits(int width, int height, const BulbParams& bulb) {
             double t = 0.0;
             for (int step = 0; step < 256; ++step) {
                 const glm::dvec3 p = eye + dir * t;
-                const float dist = mandelbulb_de<float>(static_cast<float>(p.x),
-                                                        static_cast<float>(p.y),
-                                                        static_cast<float>(p.z), bulb);
+                const float dist =
+                    mandelbulb_de<float>(static_cast<float>(p.x), static_cast<float>(p.y),
+                                         static_cast<float>(p.z), bulb);
                 if (dist < t * pixel_angle) {
                     ++hits;
                     break;

@@ -1,10 +1,9 @@
 #pragma once
 // Reproducible test points: `count` points uniform in the cube [-extent, extent]^3, from `seed`.
 
+#include <glm/vec3.hpp>
 #include <random>
 #include <vector>
-
-#include <glm/vec3.hpp>
 
 namespace fgr::test {
 
@@ -12,7 +11,8 @@ inline std::vector<glm::vec3> random_points(int count, float extent, unsigned se
     std::mt19937 rng(seed);
     std::uniform_real_distribution<float> coordinate(-extent, extent);
     std::vector<glm::vec3> points;
-    for (int i = 0; i < count; ++i) points.emplace_back(coordinate(rng), coordinate(rng), coordinate(rng));
+    for (int i = 0; i < count; ++i)
+        points.emplace_back(coordinate(rng), coordinate(rng), coordinate(rng));
     return points;
 }
 

@@ -2,8 +2,8 @@
 // Small renders the tests ask of a scene: its default view at a test's size, and whether a point
 // is in its solid.
 
-#include "scene/parameters.hpp"
 #include "render/renderer.hpp"
+#include "scene/parameters.hpp"
 
 namespace fgr::test {
 

@@ -12,10 +12,10 @@
 #include <vector>
 
 #include "camera/camera.hpp"
-#include "scene/description_validation.hpp"
 #include "fgr/plugin.h"
-#include "scene/render_mode.hpp"
 #include "fgr/scene_helpers.h"
+#include "scene/description_validation.hpp"
+#include "scene/render_mode.hpp"
 
 namespace fgr {
 namespace {
@@ -959,7 +959,7 @@ TEST_F(CopyScene, RefusesTooSmallMarchStruct) {
     expect_refused("march settings struct too small");
 }
 
-// --- ABI 1.4: the scene's own built-in defaults, colour modes and scale ---------------------------
+// --- ABI 1.4: the scene's own built-in defaults, colour modes and scale --------------------------
 
 class CopyTunedScene : public CopyScene {
 protected:
@@ -1032,8 +1032,9 @@ TEST_F(CopyTunedScene, RefusesBadColourModes) {
     expect_refused("colour_modes 0x1 given, but the scene has no colour_mode enum parameter");
     name_colour_mode();
     built.desc.colour_modes = 0b101;  // leaves out the default, 1 ("normal")
-    expect_refused("parameter 'colour_mode': default 'normal' is not among the colour modes offered "
-                   "(orbit|flat)");
+    expect_refused(
+        "parameter 'colour_mode': default 'normal' is not among the colour modes offered "
+        "(orbit|flat)");
     built.desc.colour_modes = FGR_COLOUR_MODE_ITERATIONS;  // bit 3: the enum has three choices
     expect_refused("colour_modes 0x8: parameter 'colour_mode' has only 3 choices");
     built.desc.colour_modes = 0x10;

@@ -27,20 +27,20 @@
 #include <vector>
 
 #include "child_process.hpp"
-#include "scene/discovery.hpp"
 #include "device/opencl_device.hpp"
-#include "scene/parameters.hpp"
-#include "fgr/plugin.h"
-#include "scene/plugin_loader.hpp"
 #include "device/program_cache.hpp"
-#include "scene/render_mode.hpp"
-#include "render/renderer.hpp"
+#include "fgr/plugin.h"
 #include "fixtures/frozen_v1/frozen_layout.h"
 #include "fixtures/frozen_v1_1/frozen_layout_v1_1.h"
 #include "fixtures/frozen_v1_2/frozen_layout_v1_2.h"
 #include "fixtures/frozen_v1_3/frozen_layout_v1_3.h"
 #include "fixtures/frozen_v1_4/frozen_layout_v1_4.h"
+#include "render/renderer.hpp"
+#include "scene/discovery.hpp"
 #include "scene/ifs/ifs.hpp"
+#include "scene/parameters.hpp"
+#include "scene/plugin_loader.hpp"
+#include "scene/render_mode.hpp"
 
 namespace fgr {
 namespace {
@@ -489,9 +489,9 @@ TEST(AbiFreeze, FrozenV1_4PluginLoadsItsDefaultsColourModesAndScale) {
     ASSERT_TRUE(ao_radius && fog_colour && glow_radius && fog_density && colour_mode);
     EXPECT_FLOAT_EQ(ao_radius->default_value[0], 0.02f);
     EXPECT_TRUE(ao_radius->scene_default);
-    expect_vec3({fog_colour->default_value[0], fog_colour->default_value[1],
-                 fog_colour->default_value[2]},
-                {0.8f, 0.7f, 0.6f}, "fog_colour");
+    expect_vec3(
+        {fog_colour->default_value[0], fog_colour->default_value[1], fog_colour->default_value[2]},
+        {0.8f, 0.7f, 0.6f}, "fog_colour");
     EXPECT_TRUE(fog_colour->scene_default);
     // Scale 0.5: glow_radius 0.05 * 0.5, fog_density 0.15 / 0.5.
     EXPECT_FLOAT_EQ(glow_radius->default_value[0], 0.025f);

@@ -1,14 +1,14 @@
 // `fgr bench accuracy`: image error metrics, the Pareto front, and a sweep that measures every knob
 // against a reference render, with its CSV, gnuplot script and plot.
+#include <fmt/format.h>
+#include <gtest/gtest.h>
+
 #include <cmath>
 #include <cstdio>
 #include <filesystem>
 #include <set>
-#include <tuple>
 #include <sstream>
-
-#include <fmt/format.h>
-#include <gtest/gtest.h>
+#include <tuple>
 
 #include "child_process.hpp"
 #include "diagnostics/accuracy.hpp"
@@ -65,8 +65,8 @@ AccuracyPoint point(double ms, double rmse, double one_minus_ssim = 0.0,
 }
 
 TEST(ParetoFront, KeepsOnlyPointsNothingBeatsInTimeAndError) {
-    std::vector<AccuracyPoint> points = {point(10, 5), point(20, 3), point(15, 6), point(30, 3),
-                                         point(5, 9),  point(20, 3)};
+    std::vector<AccuracyPoint> points = {point(10, 5), point(20, 3), point(15, 6),
+                                         point(30, 3), point(5, 9),  point(20, 3)};
     mark_pareto_front(points);
     const std::vector<bool> expected = {true, true, false, false, true, true};
     for (size_t i = 0; i < points.size(); ++i) EXPECT_EQ(points[i].pareto, expected[i]) << i;
@@ -106,12 +106,11 @@ TEST(AccuracySweep, MeasuresEveryKnobAgainstTheReference) {
     settings.reference_samples = 32;
     settings.repeats = 1;
     int calls = 0;
-    const AccuracyReport report =
-        run_accuracy_sweep(scene, device, cache, settings,
-                           [&](int done, int total, const std::string&) {
-                               EXPECT_LE(done, total);
-                               ++calls;
-                           });
+    const AccuracyReport report = run_accuracy_sweep(scene, device, cache, settings,
+                                                     [&](int done, int total, const std::string&) {
+                                                         EXPECT_LE(done, total);
+                                                         ++calls;
+                                                     });
     ASSERT_GT(report.points.size(), 15u);
     EXPECT_EQ(report.points.front().knob, "default");
     // The two references, each point, done.
@@ -133,9 +132,9 @@ TEST(AccuracySweep, MeasuresEveryKnobAgainstTheReference) {
             << p.knob << p.value << " " << p.error.one_minus_ssim;
         EXPECT_EQ(p.reference, p.knob == "spp" ? "samples" : "geometry") << p.knob << p.value;
     }
-    std::set<std::string> expected_knobs = {"default",         "hit_threshold", "max_steps",
-                                            "iterations",      "step_factor",   "over_relaxation",
-                                            "normal_epsilon",  "spp"};
+    std::set<std::string> expected_knobs = {
+        "default",     "hit_threshold",   "max_steps",      "iterations",
+        "step_factor", "over_relaxation", "normal_epsilon", "spp"};
     // The float/double point and a double reference need cl_khr_fp64 (PoCL has it).
     if (device.info.has_fp64) expected_knobs.insert("precision");
     EXPECT_EQ(knobs, expected_knobs);
@@ -324,10 +323,10 @@ TEST(AccuracySweep, PathModeSweepsNoiseKnobsAgainstALongRender) {
 
 TEST(AccuracyCommand, WritesTheCsvScriptAndPlot) {
     test::TempDir dir("fgr_accuracy_test");
-    const test::RunResult run = test::run_fgr(
-        {"bench", "accuracy", "mandelbulb", "--width", "32", "--height", "24", "--reference-spp",
-         "2", "--repeats", "1", "-o", "acc"},
-        dir.path());
+    const test::RunResult run =
+        test::run_fgr({"bench", "accuracy", "mandelbulb", "--width", "32", "--height", "24",
+                       "--reference-spp", "2", "--repeats", "1", "-o", "acc"},
+                      dir.path());
     ASSERT_EQ(run.exit_code, 0) << run;
     EXPECT_NE(run.out.find("hit_threshold"), std::string::npos) << run;
     EXPECT_TRUE(std::filesystem::exists(dir.path() / "acc.csv"));

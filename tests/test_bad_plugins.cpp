@@ -5,6 +5,8 @@
 // validator, copy_scene_description, on descriptions mutated from valid random ones.
 
 #include <gtest/gtest.h>
+#include <spdlog/sinks/ostream_sink.h>
+#include <spdlog/spdlog.h>
 
 #include <algorithm>
 #include <array>
@@ -16,6 +18,7 @@
 #include <filesystem>
 #include <fstream>
 #include <functional>
+#include <glm/geometric.hpp>
 #include <limits>
 #include <map>
 #include <memory>
@@ -26,24 +29,20 @@
 #include <string>
 #include <vector>
 
-#include <glm/geometric.hpp>
-#include <spdlog/sinks/ostream_sink.h>
-#include <spdlog/spdlog.h>
-
 #include "camera/camera.hpp"
+#include "device/kernel_assembly.hpp"
+#include "device/opencl_device.hpp"
+#include "device/program_cache.hpp"
+#include "fgr/plugin.h"
+#include "fuzz_rng.hpp"
+#include "render/renderer.hpp"
 #include "scene/description_validation.hpp"
 #include "scene/discovery.hpp"
 #include "scene/ifs/ifs.hpp"
-#include "device/kernel_assembly.hpp"
-#include "device/opencl_device.hpp"
 #include "scene/parameters.hpp"
-#include "fgr/plugin.h"
 #include "scene/plugin_loader.hpp"
-#include "device/program_cache.hpp"
 #include "scene/render_mode.hpp"
 #include "scene/scene_file.hpp"
-#include "render/renderer.hpp"
-#include "fuzz_rng.hpp"
 
 namespace fgr {
 namespace {
@@ -108,8 +107,7 @@ const BrokenFixture kBrokenFixtures[] = {
     {"short_struct.so", "description struct too small (120 bytes)"},
     {"null_params.so", "parameter count is 1 but the array is NULL"},
     {"null_cameras.so", "camera count is 1 but the array is NULL"},
-    {"null_lights.so",
-     "light count is 1 but the array is NULL: a scene needs at least one light"},
+    {"null_lights.so", "light count is 1 but the array is NULL: a scene needs at least one light"},
     {"null_keyframes.so", "camera path 'orbit' keyframe count is 2 but the array is NULL"},
     {"wrapped_steps.so", "march settings: max_steps 4294967295 outside [1, 100000]"},
     {"negative_distance.so", "march settings: max_distance -5 must be finite and > 0"},
@@ -133,8 +131,9 @@ const BrokenFixture kBrokenFixtures[] = {
     {"ifs_too_deep.so", "ifs_max_depth 25 outside [0, 24]"},
     {"ifs_with_source.so", "IFS maps and a source: a scene with ifs_map_count 4 is an IFS scene"},
     {"ifs_with_params.so", "IFS scenes have no parameters of their own (param_count 1)"},
-    {"ifs_soft_shadows.so", "IFS scenes cannot have soft_shadows: exact IFS tracing has no "
-                            "distance estimate"},
+    {"ifs_soft_shadows.so",
+     "IFS scenes cannot have soft_shadows: exact IFS tracing has no "
+     "distance estimate"},
 };
 
 void PrintTo(const BrokenFixture& fixture, std::ostream* out) { *out << fixture.file; }
@@ -470,8 +469,7 @@ std::string any_text(Rng& rng) {
     }
 }
 
-// --- A random valid description, as plain vectors
-// -------------------------------------------------
+// --- A random valid description, as plain vectors ------------------------------------------------
 
 // An array as it will be laid out: its elements, the struct_size and abi_version their headers
 // get, optionally one element with a different header, or NULL with some count.
@@ -852,7 +850,8 @@ void mutate_ifs(Rng& rng, Arena& arena, DescSpec& spec) {
         if (rng.chance(0.85)) spec.params.elements.clear();
         if (rng.chance(0.85)) desc.effects &= FGR_EFFECT_SHADOWS | FGR_EFFECT_FOG;
         desc.ifs_default_depth = rng.chance(0.8) ? rng.below(8) : rng.below(40);
-        desc.ifs_max_depth = rng.chance(0.8) ? desc.ifs_default_depth + rng.below(8) : rng.below(40);
+        desc.ifs_max_depth =
+            rng.chance(0.8) ? desc.ifs_default_depth + rng.below(8) : rng.below(40);
     } else if (rng.chance(0.5)) {
         spec.ifs_maps.elements[rng.below(spec.ifs_maps.elements.size())] = random_ifs_map(rng);
     } else {
@@ -883,8 +882,8 @@ void mutate(Rng& rng, Arena& arena, DescSpec& spec) {
                 // ABI 1.1: a length within the string and its NUL (all that is behind it), or
                 // one over the limit (refused before anything is read).
                 const uint64_t bytes = std::strlen(desc.source) + 1;
-                desc.source_length = rng.chance(0.2) ? uint64_t{1} << rng.range(22, 40)
-                                                     : 1 + rng.below(bytes);
+                desc.source_length =
+                    rng.chance(0.2) ? uint64_t{1} << rng.range(22, 40) : 1 + rng.below(bytes);
             }
             break;
         case 4:
@@ -1000,8 +999,7 @@ void mutate(Rng& rng, Arena& arena, DescSpec& spec) {
     }
 }
 
-// --- Laying a spec out in memory as a plugin would
-// ------------------------------------------------
+// --- Laying a spec out in memory as a plugin would -----------------------------------------------
 
 // The array as the validator will walk it: element i at i * struct_size when that stride is
 // usable, so the memory behind it covers (count - 1) * struct_size + sizeof(T) either way. Gaps
@@ -1159,11 +1157,11 @@ void check_accepted(const Scene& scene, const fgr_scene_desc& desc) {
     EXPECT_LE(scene.source.size(), std::size_t{4} << 20);
     // ABI 1.1: at most source_length bytes when the struct has it, up to a NUL.
     const bool has_length = desc.header.struct_size >= offsetof(fgr_scene_desc, source_length) +
-                                                          sizeof(desc.source_length) &&
+                                                           sizeof(desc.source_length) &&
                             desc.source_length > 0;
-    EXPECT_EQ(scene.source, has_length ? std::string(desc.source, strnlen(desc.source,
-                                                                            desc.source_length))
-                                       : std::string(desc.source));
+    EXPECT_EQ(scene.source, has_length
+                                ? std::string(desc.source, strnlen(desc.source, desc.source_length))
+                                : std::string(desc.source));
     EXPECT_TRUE(scene.plugin_file.empty());
 
     // Parameters: the scene's own (valid, unique, not built-in names), then the built-ins.

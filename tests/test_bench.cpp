@@ -1,18 +1,18 @@
 // The benchmark protocol: figures from frame times, the choice of camera path, fixed-frame and
 // fixed-duration runs, the precision of each frame, and the JSON / CSV / command-line outputs.
+#include <gtest/gtest.h>
+
 #include <algorithm>
 #include <chrono>
-#include <numeric>
 #include <filesystem>
+#include <nlohmann/json.hpp>
+#include <numeric>
 #include <sstream>
 
-#include <gtest/gtest.h>
-#include <nlohmann/json.hpp>
-
-#include "child_process.hpp"
-#include "diagnostics/bench.hpp"
 #include "camera/camera.hpp"
+#include "child_process.hpp"
 #include "deep_zoom.hpp"
+#include "diagnostics/bench.hpp"
 #include "test_scenes.hpp"
 
 namespace fgr {
@@ -37,15 +37,16 @@ TEST(BenchFigures, SummariseAndAverage) {
     EXPECT_EQ(mean.frames, 4);  // 3.5, rounded
     EXPECT_DOUBLE_EQ(mean.mean_ms, 22.5);
     EXPECT_DOUBLE_EQ(mean.mean_fps, 10.0);
-    EXPECT_DOUBLE_EQ(mean.min_fps, 37.5);   // (25 + 50) / 2
-    EXPECT_DOUBLE_EQ(mean.max_fps, 75.0);   // (100 + 50) / 2
+    EXPECT_DOUBLE_EQ(mean.min_fps, 37.5);  // (25 + 50) / 2
+    EXPECT_DOUBLE_EQ(mean.max_fps, 75.0);  // (100 + 50) / 2
     EXPECT_DOUBLE_EQ(mean.seconds, 0.375);
 }
 
 Scene scene_with_paths(std::vector<std::string> names) {
     Scene scene = test::sphere_scene();
     for (const std::string& name : names) {
-        CameraPath path{name, {{0.0f, scene.cameras.front().view}, {2.0f, scene.cameras.front().view}}};
+        CameraPath path{name,
+                        {{0.0f, scene.cameras.front().view}, {2.0f, scene.cameras.front().view}}};
         path.keyframes[1].view.position.x = 1.0f;
         scene.camera_paths.push_back(path);
     }
@@ -80,7 +81,8 @@ struct Observed {
 };
 
 BenchReport observed_run(const Scene& scene, const ComputeDevice& device, ProgramCache& cache,
-                         BenchSettings settings, Observed* seen, const BenchProgress& progress = {}) {
+                         BenchSettings settings, Observed* seen,
+                         const BenchProgress& progress = {}) {
     settings.on_frame = [&](const CameraView& view, float time, double ms) {
         seen->views.push_back(view);
         seen->times.push_back(time);
@@ -145,7 +147,8 @@ TEST_F(BenchRun, FixedFramesPerRunWithConsistentFigures) {
     ASSERT_EQ(seen.times.size(), 10u);
     for (size_t i = 0; i < seen.times.size(); ++i) {
         EXPECT_FLOAT_EQ(seen.times[i], 0.5f * float(i % 5)) << i;
-        EXPECT_EQ(seen.views[i].position, evaluate_camera_path(scene_.camera_paths[0], seen.times[i]).position);
+        EXPECT_EQ(seen.views[i].position,
+                  evaluate_camera_path(scene_.camera_paths[0], seen.times[i]).position);
     }
     EXPECT_EQ(report.average.frames, 5);
     EXPECT_EQ(report.path, "benchmark");
@@ -187,9 +190,8 @@ TEST_F(BenchRun, FixedFramesPerRunWithConsistentFigures) {
 // Auto renders the deep one in double, building that kernel only then; float renders neither.
 TEST_F(BenchRun, EachFrameRendersInThePrecisionItsViewNeeds) {
     Scene bulb = test::built_scene("mandelbulb.so");
-    bulb.camera_paths = {{"dive",
-                          {{0.0f, bulb.cameras.front().view},
-                           {1.0f, test::mandelbulb_deep_zoom(bulb)}}}};
+    bulb.camera_paths = {
+        {"dive", {{0.0f, bulb.cameras.front().view}, {1.0f, test::mandelbulb_deep_zoom(bulb)}}}};
     BenchSettings settings;
     settings.width = 16;
     settings.height = 12;

@@ -9,20 +9,19 @@
 #include <cmath>
 #include <cstdio>
 #include <filesystem>
+#include <glm/geometric.hpp>
+#include <glm/trigonometric.hpp>
 #include <memory>
 #include <string>
 #include <vector>
 
-#include <glm/geometric.hpp>
-#include <glm/trigonometric.hpp>
-
-#include "diagnostics/brute_accuracy.hpp"
 #include "camera/camera.hpp"
-#include "scene/parameters.hpp"
-#include "fgr/plugin.h"
 #include "device/program_cache.hpp"
+#include "diagnostics/brute_accuracy.hpp"
+#include "fgr/plugin.h"
 #include "render/renderer.hpp"
 #include "render_probes.hpp"
+#include "scene/parameters.hpp"
 #include "test_scenes.hpp"
 
 namespace fgr {
@@ -125,7 +124,8 @@ TEST_F(BruteModeTest, DepthNeverIncreasesFromPassToPass) {
                     new_hits += frame.depth[i] >= 0.0f;
                     continue;
                 }
-                ASSERT_GE(frame.depth[i], 0.0f) << "pixel " << i << " lost its hit in pass " << pass;
+                ASSERT_GE(frame.depth[i], 0.0f)
+                    << "pixel " << i << " lost its hit in pass " << pass;
                 ASSERT_LE(frame.depth[i], previous[i]) << "pixel " << i << " in pass " << pass;
                 improved += frame.depth[i] < previous[i];
             }
@@ -136,8 +136,8 @@ TEST_F(BruteModeTest, DepthNeverIncreasesFromPassToPass) {
     EXPECT_GT(improved, 100);
     EXPECT_GT(new_hits, 10);
     // The passes of one call give the image of the passes made one call at a time.
-    const Frame whole = brute->render(request(scene, kW, kH, kPasses,
-                                              {"brute_samples=4", "brute_bisection=4"}));
+    const Frame whole =
+        brute->render(request(scene, kW, kH, kPasses, {"brute_samples=4", "brute_bisection=4"}));
     EXPECT_EQ(whole.depth, previous);
 }
 
@@ -183,8 +183,8 @@ TEST_F(BruteModeTest, BisectionHalvesTheDepthErrorPerStep) {
 // Screen-space shading.
 
 double degrees_between(glm::vec3 a, glm::vec3 b) {
-    return glm::degrees(std::acos(std::clamp(double(glm::dot(glm::normalize(a), glm::normalize(b))),
-                                             -1.0, 1.0)));
+    return glm::degrees(
+        std::acos(std::clamp(double(glm::dot(glm::normalize(a), glm::normalize(b))), -1.0, 1.0)));
 }
 
 // The ball of radius 1 seen from 3 away fills most of the frame: its normals vary smoothly.
@@ -208,7 +208,8 @@ TEST_F(BruteModeTest, ScreenSpaceNormalsMatchDeNormalsOnSmoothSurfaces) {
             const int i = y * kW + x;
             const glm::vec3 dir = primary_ray_direction(basis, kW, kH, float(x), float(y));
             points.push_back(glm::vec3(basis.eye) + dir * frame.depth[i]);
-            normals.push_back({frame.normal[i * 3], frame.normal[i * 3 + 1], frame.normal[i * 3 + 2]});
+            normals.push_back(
+                {frame.normal[i * 3], frame.normal[i * 3 + 1], frame.normal[i * 3 + 2]});
         }
     }
     ASSERT_GT(points.size(), 3000u);
@@ -265,8 +266,9 @@ TEST_F(BruteModeTest, ScreenSpaceOcclusionDarkensACreaseMoreThanAnOpenFace) {
         for (int x = 0; x < kW; ++x) {
             const int i = y * kW + x;
             if (plain.depth[i] < 0.0f) continue;
-            const glm::vec3 p = glm::vec3(basis.eye) +
-                                primary_ray_direction(basis, kW, kH, float(x), float(y)) * plain.depth[i];
+            const glm::vec3 p =
+                glm::vec3(basis.eye) +
+                primary_ray_direction(basis, kW, kH, float(x), float(y)) * plain.depth[i];
             // The DE's surface is taken a footprint (about 0.02 here) off the solid.
             const bool floor = std::abs(p.z + 0.5f) < 0.05f;
             // Floor just in front of the cube's front face (y = -0.4), and the middle of its top.
@@ -378,7 +380,8 @@ TEST_F(BruteModeTest, PacketWidthsAgreePerPixel) {
         const Frame reference = renderer(scene, RenderMode::Brute, scene.effects, 1)->render(req);
         for (int width : {4, 8, 16}) {
             SCOPED_TRACE(width);
-            const Frame frame = renderer(scene, RenderMode::Brute, scene.effects, width)->render(req);
+            const Frame frame =
+                renderer(scene, RenderMode::Brute, scene.effects, width)->render(req);
             long differing = 0;
             for (size_t i = 0; i < frame.depth.size(); ++i) {
                 const float a = frame.depth[i], b = reference.depth[i];
@@ -392,8 +395,8 @@ TEST_F(BruteModeTest, PacketWidthsAgreePerPixel) {
             EXPECT_EQ(differing, 0);
             int worst_level = 0;
             for (size_t i = 0; i < frame.image.rgb.size(); ++i) {
-                worst_level = std::max(worst_level,
-                                       std::abs(int(frame.image.rgb[i]) - int(reference.image.rgb[i])));
+                worst_level = std::max(
+                    worst_level, std::abs(int(frame.image.rgb[i]) - int(reference.image.rgb[i])));
             }
             EXPECT_LE(worst_level, 1);
         }

@@ -26,9 +26,9 @@
 #include <vector>
 
 #include "device/opencl_device.hpp"
-#include "render/precision.hpp"
 #include "device/program_cache.hpp"
 #include "kernel_test_program.hpp"
+#include "render/precision.hpp"
 
 namespace fgr {
 namespace {

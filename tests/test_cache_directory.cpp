@@ -2,6 +2,8 @@
 // size limit from FGR_CACHE_MAX_MB, eviction of the least recently used, clearing; and
 // ProgramCache keeping its disk entries that way (a disk hit marks the entry used, a store evicts
 // what the limit cannot hold).
+#include <gtest/gtest.h>
+
 #include <algorithm>
 #include <chrono>
 #include <cstdlib>
@@ -10,14 +12,12 @@
 #include <string>
 #include <vector>
 
-#include <gtest/gtest.h>
-
 #include "child_process.hpp"
 #include "device/cache_directory.hpp"
-#include "scene/scene_index.hpp"
 #include "device/kernel_assembly.hpp"
 #include "device/opencl_device.hpp"
 #include "device/program_cache.hpp"
+#include "scene/scene_index.hpp"
 #include "test_scenes.hpp"
 
 namespace fgr {
@@ -51,10 +51,10 @@ TEST(CacheDirectory, EntriesAreProgramsVerdictsAndTheSceneIndexOnly) {
     EXPECT_TRUE(is_cache_entry_name(kProgram));
     EXPECT_TRUE(is_cache_entry_name(kVerdict));
     EXPECT_TRUE(is_cache_entry_name(kSceneIndexName));
-    for (const char* name : {"0123456789abcdef.bin.tmp-12-0", "0123456789ABCDEF.bin",
-                             "scene-index.json.tmp-12-0", "scene-index.jsonx", "scenes.json",
-                             "0123456789abcde.bin", "notes.txt", "math-0123456789abcdef.bin",
-                             "0123456789abcdef.txt", "math-xyz.txt", ".bin"}) {
+    for (const char* name :
+         {"0123456789abcdef.bin.tmp-12-0", "0123456789ABCDEF.bin", "scene-index.json.tmp-12-0",
+          "scene-index.jsonx", "scenes.json", "0123456789abcde.bin", "notes.txt",
+          "math-0123456789abcdef.bin", "0123456789abcdef.txt", "math-xyz.txt", ".bin"}) {
         EXPECT_FALSE(is_cache_entry_name(name)) << name;
     }
 }
@@ -142,9 +142,9 @@ class ProgramCacheDisk : public ::testing::Test {
 protected:
     // A small program per radius, so each has its own key.
     AssembledProgram program(float radius) const {
-        const Scene scene = test::inline_scene(
-            "real scene_de(vec3 p, PARAMS) { return v3_length(p) - " + std::to_string(radius) +
-            "f; }");
+        const Scene scene =
+            test::inline_scene("real scene_de(vec3 p, PARAMS) { return v3_length(p) - " +
+                               std::to_string(radius) + "f; }");
         return assemble_program(scene, {4, 0});
     }
     fs::path entry(const AssembledProgram& built) const {

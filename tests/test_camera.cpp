@@ -3,11 +3,10 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <glm/geometric.hpp>
 #include <numbers>
 #include <stdexcept>
 #include <vector>
-
-#include <glm/geometric.hpp>
 
 #include "camera/camera.hpp"
 

@@ -1,12 +1,12 @@
 // Camera path JSON files: what the viewer saves is what `fgr render --camera-path FILE` reads back,
 // and every malformed file is refused with a one-line reason.
+#include <gtest/gtest.h>
+
 #include <filesystem>
 #include <fstream>
 #include <string>
 #include <utility>
 #include <vector>
-
-#include <gtest/gtest.h>
 
 #include "camera/camera.hpp"
 #include "camera/camera_path_file.hpp"
@@ -25,7 +25,8 @@ CameraPathFile sample_path() {
 }
 
 std::string keyframes_json(const std::string& keyframes) {
-    return R"({"format": "fgr-camera-path", "version": 1, "scene": "s", "name": "n", "keyframes": )" +
+    return R"({"format": "fgr-camera-path", "version": 1, "scene": "s", "name": "n", )"
+           R"("keyframes": )" +
            keyframes + "}";
 }
 
@@ -117,7 +118,8 @@ TEST(CameraPathFile, MalformedFilesAreRefusedWithTheReason) {
          "keyframe 1 \"time\" must be after"},
         {two_keyframes(R"({"time": 1, "position": [0, 1], "target": [0, 0, 0]})"),
          "keyframe 1 \"position\" must be an array of 3 numbers"},
-        {two_keyframes(R"({"time": 1, "target": [0, 0, 0]})"), "keyframe 1 \"position\" is missing"},
+        {two_keyframes(R"({"time": 1, "target": [0, 0, 0]})"),
+         "keyframe 1 \"position\" is missing"},
         {two_keyframes(R"({"time": 1, "position": [0, "a", 0], "target": [0, 0, 0]})"),
          "must be a number"},
         {two_keyframes(R"({"time": 1, "position": [0, 1e39, 0], "target": [0, 0, 0]})"),
@@ -185,8 +187,8 @@ TEST(CameraPathFile, VersionMustBeTheInteger1) {
                                   {"time": 1, "position": [0, 1, 0], "target": [0, 0, 0]}]})";
     };
     EXPECT_EQ(parse_camera_path_json(with_version("1")).path.keyframes.size(), 2u);
-    for (const std::string version : {"4294967297", "18446744073709551617", "1.5", "1.0",
-                                      "\"1\"", "-1", "0", "2", "true", "null", "[1]"}) {
+    for (const std::string version : {"4294967297", "18446744073709551617", "1.5", "1.0", "\"1\"",
+                                      "-1", "0", "2", "true", "null", "[1]"}) {
         try {
             parse_camera_path_json(with_version(version));
             ADD_FAILURE() << "version " << version << " accepted";

@@ -2,16 +2,10 @@
 // stderr, a non-zero exit and no output file; valid renders write an 8-bit RGB PNG of the asked
 // size and print render_ms and hits.
 
-#include <gtest/gtest.h>
-
-#include "child_process.hpp"
-#include "image/hdr_io.hpp"
-#include "image/image_io.hpp"
-
 #include <ImfChannelList.h>
 #include <ImfHeader.h>
 #include <ImfRgbaFile.h>
-
+#include <gtest/gtest.h>
 
 #include <algorithm>
 #include <array>
@@ -31,6 +25,10 @@
 #include <string>
 #include <vector>
 
+#include "child_process.hpp"
+#include "image/hdr_io.hpp"
+#include "image/image_io.hpp"
+
 namespace fgr {
 namespace {
 namespace fs = std::filesystem;
@@ -40,8 +38,8 @@ const fs::path kFgrExe = FGR_TEST_FGR_EXE;
 // --- Running fgr ---------------------------------------------------------------------------------
 
 using test::read_file;
-using test::RunResult;
 using test::run_fgr;
+using test::RunResult;
 
 std::string describe(const std::vector<std::string>& args) { return test::describe("fgr", args); }
 
@@ -255,22 +253,27 @@ const std::vector<BadInput> kBadInputs = {
     {"UnknownPrecision", render_args({"--precision", "half"}), 2, {"precision", "half"}},
     {"UnknownMode", render_args({"--mode", "raster"}), 2, {"mode", "raster"}},
     {"ViewUnknownMode", {"view", "--mode", "raster"}, 2, {"mode", "raster"}},
-    {"BenchUnknownMode", {"bench", "mandelbulb", "--frames", "1", "--mode", "raster"}, 2,
+    {"BenchUnknownMode",
+     {"bench", "mandelbulb", "--frames", "1", "--mode", "raster"},
+     2,
      {"mode", "raster"}},
     {"MissingEnvironmentFile",
      render_args({"--mode", "path", "--environment", "no_such_map.hdr"}),
      1,
      {"no_such_map.hdr"}},
-    {"EnvironmentNotAnImage", render_args({"--mode", "path", "--environment", "/etc/hostname"}),
-     1, {"hostname"}},
-    {"BadUniformRadiance", render_args({"--mode", "path", "--environment", "uniform:-1"}), 2,
+    {"EnvironmentNotAnImage",
+     render_args({"--mode", "path", "--environment", "/etc/hostname"}),
+     1,
+     {"hostname"}},
+    {"BadUniformRadiance",
+     render_args({"--mode", "path", "--environment", "uniform:-1"}),
+     2,
      {"uniform"}},
     {"SkyOptionWithoutSky",
      render_args({"--mode", "path", "--environment", "studio", "--turbidity", "3"}),
      2,
      {"turbidity", "sky"}},
-    {"TurbidityOutOfRange", render_args({"--mode", "path", "--turbidity", "40"}), 2,
-     {"turbidity"}},
+    {"TurbidityOutOfRange", render_args({"--mode", "path", "--turbidity", "40"}), 2, {"turbidity"}},
     {"NegativeClamp", render_args({"--mode", "path", "--clamp", "-1"}), 2, {"clamp"}},
     {"AovWithPng", render_args({"--aov", "albedo"}), 2, {"aov", ".exr"}},
     {"UnknownAov", render_args({"--aov", "velocity"}), 2, {"velocity"}, "out.exr"},
@@ -294,8 +297,8 @@ const std::vector<BadInput> kBadInputs = {
     // A scene with an inside test alone renders only by brute force; exact IFS tracing has
     // neither an inside test nor a DE for it.
     {"InsideOnlySceneInShadedMode",
-     {"render", "stereographic-julia", "-o", "{out}", "--width", "16", "--height", "12",
-      "--mode", "shaded"},
+     {"render", "stereographic-julia", "-o", "{out}", "--width", "16", "--height", "12", "--mode",
+      "shaded"},
      kAnyFailure,
      {"stereographic-julia", "no distance estimator", "--mode brute"}},
     {"IfsSceneInBruteMode",
@@ -305,22 +308,30 @@ const std::vector<BadInput> kBadInputs = {
      {"sierpinski-ifs", "brute"}},
     // --eye, --target, --up and --fov: malformed vectors, views that cannot
     // be rendered, and combinations that contradict each other.
-    {"EyeOfTwoNumbers", render_args({"--eye", "1,2", "--target", "0,0,0"}), 2,
+    {"EyeOfTwoNumbers",
+     render_args({"--eye", "1,2", "--target", "0,0,0"}),
+     2,
      {"--eye '1,2'", "three finite numbers X,Y,Z"}},
     {"EyeNotANumber", render_args({"--eye", "1,x,2"}), 2, {"--eye '1,x,2'"}},
     {"EyeOfFourNumbers", render_args({"--eye", "1,2,3,4"}), 2, {"--eye '1,2,3,4'"}},
     {"TargetNotFinite", render_args({"--target", "inf,0,0"}), 2, {"--target 'inf,0,0'"}},
     {"UpEmptyComponent", render_args({"--up", "0,,1"}), 2, {"--up '0,,1'"}},
-    {"EyeAtTarget", render_args({"--eye", "1,1,1", "--target", "1,1,1"}), 2,
+    {"EyeAtTarget",
+     render_args({"--eye", "1,1,1", "--target", "1,1,1"}),
+     2,
      {"position equals target", "eye 1,1,1, target 1,1,1"}},
-    {"UpParallelToView", render_args({"--eye", "0,0,3", "--target", "0,0,0", "--up", "0,0,-2"}), 2,
+    {"UpParallelToView",
+     render_args({"--eye", "0,0,3", "--target", "0,0,0", "--up", "0,0,-2"}),
+     2,
      {"up is zero or parallel to the view direction", "up 0,0,-2"}},
     {"UpZero", render_args({"--up", "0,0,0"}), 2, {"up is zero or parallel"}},
     {"FovZero", render_args({"--fov", "0"}), 2, {"--fov '0'", "between 0 and 180"}},
     {"FovHalfTurn", render_args({"--fov", "180"}), 2, {"--fov '180'"}},
     {"FovNotANumber", render_args({"--fov", "wide"}), 2, {"--fov 'wide'"}},
-    {"EyeWithCameraPath", render_args({"--camera-path", "orbit", "--time", "1", "--eye", "1,1,1"}),
-     2, {"--camera-path"}},
+    {"EyeWithCameraPath",
+     render_args({"--camera-path", "orbit", "--time", "1", "--eye", "1,1,1"}),
+     2,
+     {"--camera-path"}},
     {"FovWithAll", {"render", "--all", "-o", "{out}", "--fov", "30"}, 2, {"--all"}},
     {"BenchEyeWithPath",
      {"bench", "mandelbulb", "--frames", "1", "--path", "orbit", "--eye", "1,1,1"},
@@ -331,7 +342,9 @@ const std::vector<BadInput> kBadInputs = {
      2,
      {"position equals target"}},
     {"ViewMalformedEye", {"view", "--eye", "1;2;3"}, 2, {"--eye '1;2;3'"}},
-    {"ViewEyeAtTarget", {"view", "mandelbulb", "--eye", "0,0,0", "--target", "0,0,0"}, 2,
+    {"ViewEyeAtTarget",
+     {"view", "mandelbulb", "--eye", "0,0,0", "--target", "0,0,0"},
+     2,
      {"position equals target"}},
     {"UnknownSubcommand", {"frobnicate"}, 2, {"frobnicate"}},
     {"NoSubcommand", {}, kAnyFailure, {}},
@@ -417,8 +430,8 @@ TEST_F(CliTest, PrecisionDoubleRendersAndUnknownPrecisionIsRefused) {
     ASSERT_EQ(result.exit_code, 0) << result;
     EXPECT_NE(result.err.find(", double, effects"), std::string::npos) << result;
     EXPECT_GT(expect_render_report(result, kWidth, kHeight), 0);
-    const RunResult bad = run({"render", "mandelbulb", "-o", out_png().string(), "--precision",
-                               "half"});
+    const RunResult bad =
+        run({"render", "mandelbulb", "-o", out_png().string(), "--precision", "half"});
     EXPECT_EQ(bad.exit_code, 2) << bad;
 }
 
@@ -428,8 +441,8 @@ TEST_F(CliTest, PrecisionDoubleRendersAndUnknownPrecisionIsRefused) {
 TEST_F(CliTest, PathModeWritesAnExrWithItsLayersAndStopsAtATimeLimit) {
     const fs::path exr = dir() / "path.exr";
     const RunResult result =
-        run({"render", "mandelbulb", "--mode", "path", "--spp", "2", "-o", exr.string(),
-             "--width", "24", "--height", "16", "--aov", "albedo,normal,depth,alpha"});
+        run({"render", "mandelbulb", "--mode", "path", "--spp", "2", "-o", exr.string(), "--width",
+             "24", "--height", "16", "--aov", "albedo,normal,depth,alpha"});
     ASSERT_EQ(result.exit_code, 0) << result;
     EXPECT_NE(result.out.find("samples_per_pixel 2\n"), std::string::npos) << result;
     EXPECT_NE(result.err.find("environment: sky"), std::string::npos) << result;
@@ -445,8 +458,8 @@ TEST_F(CliTest, PathModeWritesAnExrWithItsLayersAndStopsAtATimeLimit) {
     for (float value : beauty.rgb) EXPECT_TRUE(std::isfinite(value) && value >= 0.0f);
 
     const RunResult limited =
-        run({"render", "mandelbulb", "--mode", "path", "--spp", "4096", "--time-limit", "0.5",
-             "-o", (dir() / "limited.png").string(), "--width", "24", "--height", "16"});
+        run({"render", "mandelbulb", "--mode", "path", "--spp", "4096", "--time-limit", "0.5", "-o",
+             (dir() / "limited.png").string(), "--width", "24", "--height", "16"});
     ASSERT_EQ(limited.exit_code, 0) << limited;
     EXPECT_NE(limited.err.find("--time-limit"), std::string::npos) << limited;
     EXPECT_EQ(limited.out.find("samples_per_pixel 4096"), std::string::npos) << limited;
@@ -628,7 +641,8 @@ TEST_F(CliTest, RenderAllWritesEveryListedSceneThePatternMatches) {
     for (const std::string& id : matching) expect_rgb_png(gallery / (id + ".png"), 24, 16);
     EXPECT_EQ(matching, (std::vector<std::string>{"sierpinski-box", "sierpinski-kifs",
                                                   "sierpinski-ifs", "sierpinski"}));
-    EXPECT_EQ(static_cast<int>(directory_listing(gallery).size()), static_cast<int>(matching.size()));
+    EXPECT_EQ(static_cast<int>(directory_listing(gallery).size()),
+              static_cast<int>(matching.size()));
 }
 
 TEST_F(CliTest, EffectChangesReachTheKernel) {
@@ -636,13 +650,14 @@ TEST_F(CliTest, EffectChangesReachTheKernel) {
     const fs::path shadowed = dir() / "shadowed.png";
     const RunResult first = run({"render", "mandelbulb", "-o", plain.string(), "--width", "48",
                                  "--height", "32", "--effects", "-ambient_occlusion"});
-    const RunResult second = run({"render", "mandelbulb", "-o", shadowed.string(), "--width",
-                                  "48", "--height", "32", "--effects", "+shadows"});
+    const RunResult second = run({"render", "mandelbulb", "-o", shadowed.string(), "--width", "48",
+                                  "--height", "32", "--effects", "+shadows"});
     ASSERT_EQ(first.exit_code, 0) << first;
     ASSERT_EQ(second.exit_code, 0) << second;
     EXPECT_NE(read_file(plain), read_file(shadowed));
     EXPECT_NE(first.err.find("effects: none"), std::string::npos) << first.err;
-    EXPECT_NE(second.err.find("effects: shadows,ambient_occlusion"), std::string::npos) << second.err;
+    EXPECT_NE(second.err.find("effects: shadows,ambient_occlusion"), std::string::npos)
+        << second.err;
 }
 
 TEST_F(CliTest, SixteenBitOutputIsLinear) {
@@ -813,9 +828,9 @@ TEST_F(CliWithOwnCache, UnknownSceneNamesTheRefusedPluginAndWhy) {
 // Off a terminal, bench says how far each run is every quarter, none skipped: three frames per run
 // report 0, 1/3 and 2/3 done and then the end, which passes 75% and 100% at once.
 TEST_F(CliWithOwnCache, BenchProgressLinesNameEveryQuarterOfEveryRun) {
-    const RunResult result = run_with({"bench", "mandelbulb", "--frames", "3", "--runs", "2",
-                                       "--width", "16", "--height", "12", "-o",
-                                       (dir() / "bench").string()});
+    const RunResult result =
+        run_with({"bench", "mandelbulb", "--frames", "3", "--runs", "2", "--width", "16",
+                  "--height", "12", "-o", (dir() / "bench").string()});
     ASSERT_EQ(result.exit_code, 0) << result;
     std::vector<std::string> progress;
     std::istringstream lines(result.err);
@@ -846,9 +861,9 @@ TEST_F(CliWithOwnCache, ViewpointOptionsRenderWhatTheSameCameraPathKeyframeRende
         EXPECT_EQ(result.exit_code, 0) << result;
         return expect_render_report(result, 40, 30);
     };
-    const long long typed_hits = render("typed.png", {"--eye", "1.7,-2.1,0.9", "--target",
-                                                      "0.1,0,-0.2", "--up", "0,0.3,1", "--fov",
-                                                      "47.5"});
+    const long long typed_hits = render(
+        "typed.png",
+        {"--eye", "1.7,-2.1,0.9", "--target", "0.1,0,-0.2", "--up", "0,0.3,1", "--fov", "47.5"});
     const long long file_hits = render("file.png", {"--camera-path", "same.json", "--time", "0"});
     const long long default_hits = render("default.png", {});
     ASSERT_TRUE(fs::exists(dir() / "typed.png") && fs::exists(dir() / "file.png"));
@@ -910,37 +925,37 @@ protected:
 // Each keyframe is fine, but the camera passes through its target half-way: that moment has no
 // view direction.
 TEST_F(CliUncomputable, CameraPathMomentWithoutAViewDirectionIsRefused) {
-    const std::string file = path_file(
-        "cross.json", R"({"time": 0, "position": [2, -2, 1], "target": [0, 0, 0]},
+    const std::string file =
+        path_file("cross.json", R"({"time": 0, "position": [2, -2, 1], "target": [0, 0, 0]},
                          {"time": 1, "position": [0, 0, 0], "target": [2, -2, 1]})");
-    const RunResult result = run_with({"render", "mandelbulb", "-o", out_png().string(), "--width",
-                                       "16", "--height", "12", "--camera-path", file, "--time",
-                                       "0.5"});
+    const RunResult result =
+        run_with({"render", "mandelbulb", "-o", out_png().string(), "--width", "16", "--height",
+                  "12", "--camera-path", file, "--time", "0.5"});
     expect_refused(result, 2, {"camera path 'cross.json' at time 0.5: position equals target"},
                    {"cross.json"});
     // Beside that moment the path renders.
-    const RunResult fine = run_with({"render", "mandelbulb", "-o", out_png().string(), "--width",
-                                     "16", "--height", "12", "--camera-path", file, "--time",
-                                     "0.25"});
+    const RunResult fine =
+        run_with({"render", "mandelbulb", "-o", out_png().string(), "--width", "16", "--height",
+                  "12", "--camera-path", file, "--time", "0.25"});
     EXPECT_EQ(fine.exit_code, 0) << fine;
 }
 
 TEST_F(CliUncomputable, KeyframesWhoseBasisWouldNotBeFiniteAreRefused) {
-    const std::string huge = path_file(
-        "huge.json",
-        R"({"time": 0, "position": [1e30, 1e30, 1e30], "target": [-1e30, -1e30, -1e30]},
+    const std::string huge =
+        path_file("huge.json",
+                  R"({"time": 0, "position": [1e30, 1e30, 1e30], "target": [-1e30, -1e30, -1e30]},
            {"time": 1, "position": [2, -2, 1], "target": [0, 0, 0]})");
-    const RunResult result = run_with({"render", "mandelbulb", "-o", out_png().string(), "--width",
-                                       "16", "--height", "12", "--camera-path", huge, "--time",
-                                       "1"});
+    const RunResult result =
+        run_with({"render", "mandelbulb", "-o", out_png().string(), "--width", "16", "--height",
+                  "12", "--camera-path", huge, "--time", "1"});
     expect_refused(result, 2, {"huge.json", "keyframe 0", "too far apart"}, {"huge.json"});
 
-    const std::string parallel = path_file(
-        "parallel.json", R"({"time": 0, "position": [0, 0, 3], "target": [0, 0, 0]},
+    const std::string parallel =
+        path_file("parallel.json", R"({"time": 0, "position": [0, 0, 3], "target": [0, 0, 0]},
                             {"time": 1, "position": [2, -2, 1], "target": [0, 0, 0]})");
-    const RunResult up = run_with({"render", "mandelbulb", "-o", out_png().string(), "--width",
-                                   "16", "--height", "12", "--camera-path", parallel, "--time",
-                                   "1"});
+    const RunResult up =
+        run_with({"render", "mandelbulb", "-o", out_png().string(), "--width", "16", "--height",
+                  "12", "--camera-path", parallel, "--time", "1"});
     expect_refused(up, 2, {"parallel.json", "keyframe 0", "up is zero or parallel"},
                    {"huge.json", "parallel.json"});
 }
@@ -950,9 +965,9 @@ TEST_F(CliUncomputable, VersionThatOnlyWrapsToOneIsRefused) {
         << R"({"format": "fgr-camera-path", "version": 4294967297, "keyframes": [
               {"time": 0, "position": [2, -2, 1], "target": [0, 0, 0]},
               {"time": 1, "position": [2, -2, 1.5], "target": [0, 0, 0]}]})";
-    const RunResult result = run_with({"render", "mandelbulb", "-o", out_png().string(), "--width",
-                                       "16", "--height", "12", "--camera-path", "v.json", "--time",
-                                       "0.5"});
+    const RunResult result =
+        run_with({"render", "mandelbulb", "-o", out_png().string(), "--width", "16", "--height",
+                  "12", "--camera-path", "v.json", "--time", "0.5"});
     expect_refused(result, 2, {"v.json", "unsupported \"version\" 4294967297"}, {"v.json"});
 }
 
@@ -960,9 +975,9 @@ TEST_F(CliUncomputable, VersionThatOnlyWrapsToOneIsRefused) {
 TEST_F(CliUncomputable, NonFinitePixelsAreAnErrorAndNoFile) {
     const fs::path plugins = fs::path(FGR_TEST_FIXTURE_DIR) / "bad" / "nan";
     ASSERT_TRUE(fs::exists(plugins / "nan_colour.so")) << plugins;
-    const RunResult result = run_with({"render", "bad-nan-colour", "-o", out_png().string(),
-                                       "--width", "16", "--height", "12"},
-                                      plugins);
+    const RunResult result = run_with(
+        {"render", "bad-nan-colour", "-o", out_png().string(), "--width", "16", "--height", "12"},
+        plugins);
     expect_refused(result, 1, {"bad-nan-colour", "non-finite colour or depth"}, {});
 }
 
@@ -972,8 +987,8 @@ class CliCache : public CliWithOwnCache {
 protected:
     RunResult render(const std::vector<std::string>& extra = {},
                      const Environment& environment = {}) {
-        std::vector<std::string> args{"render", "mandelbulb", "-o", out_png().string(), "--width",
-                                      "16", "--height", "12"};
+        std::vector<std::string> args{"render",  "mandelbulb", "-o",       out_png().string(),
+                                      "--width", "16",         "--height", "12"};
         args.insert(args.end(), extra.begin(), extra.end());
         return run_with(args, {}, environment);
     }
@@ -999,9 +1014,8 @@ TEST_F(CliCache, SizeReportsTheEntriesAndClearRemovesThemAll) {
     const auto [entries, bytes] = entries_and_bytes();
     ASSERT_GT(entries, 1) << "a program and the math self-test's verdicts";
     const bool has_verdict = std::any_of(
-        fs::directory_iterator(cache_dir()), fs::directory_iterator(), [](const auto& entry) {
-            return entry.path().filename().string().starts_with("math-");
-        });
+        fs::directory_iterator(cache_dir()), fs::directory_iterator(),
+        [](const auto& entry) { return entry.path().filename().string().starts_with("math-"); });
     EXPECT_TRUE(has_verdict) << joined(directory_listing(cache_dir()));
     EXPECT_TRUE(fs::exists(cache_dir() / "scene-index.json"))
         << "finding mandelbulb indexed the scene files: " << joined(directory_listing(cache_dir()));

@@ -5,14 +5,14 @@
 
 #include <chrono>
 #include <cstdlib>
-#include <fstream>
 #include <filesystem>
+#include <fstream>
 #include <optional>
 #include <string>
 #include <vector>
 
-#include "scene/discovery.hpp"
 #include "child_process.hpp"
+#include "scene/discovery.hpp"
 #include "scene/plugin_loader.hpp"
 #include "scene/scene_index.hpp"
 
@@ -141,7 +141,8 @@ TEST(LoadScenePlugin, RefusesMissingFile) {
 TEST(PluginSearchPath, EnvironmentThenExecutableThenHome) {
     const ScopedEnv plugin_path("FGR_PLUGIN_PATH", "/first::/second/dir:");
     const ScopedEnv home("HOME", "/home/tester");
-    const std::vector<fs::path> expected = {"/first", "/second/dir", "/opt/fgr/" FGR_TEST_LIBDIR "/fgr/plugins",
+    const std::vector<fs::path> expected = {"/first", "/second/dir",
+                                            "/opt/fgr/" FGR_TEST_LIBDIR "/fgr/plugins",
                                             "/home/tester/.local/share/fgr/plugins"};
     EXPECT_EQ(plugin_search_path("/opt/fgr/bin"), expected);
 }
@@ -149,7 +150,8 @@ TEST(PluginSearchPath, EnvironmentThenExecutableThenHome) {
 TEST(PluginSearchPath, WithoutEnvironment) {
     const ScopedEnv plugin_path("FGR_PLUGIN_PATH", nullptr);
     const ScopedEnv home("HOME", nullptr);
-    EXPECT_EQ(plugin_search_path("/opt/fgr/bin"), std::vector<fs::path>{"/opt/fgr/" FGR_TEST_LIBDIR "/fgr/plugins"});
+    EXPECT_EQ(plugin_search_path("/opt/fgr/bin"),
+              std::vector<fs::path>{"/opt/fgr/" FGR_TEST_LIBDIR "/fgr/plugins"});
 }
 
 TEST(PluginSearchPath, EnvironmentRestoredAfterScope) {
@@ -176,7 +178,8 @@ fs::path write_ifs_scene(const fs::path& directory, const std::string& name, con
     const fs::path file = directory / name;
     std::ofstream(file) << R"({"format": "fgr-ifs", "version": 1, "id": ")" << id
                         << R"(", "name": "Test", "maps": [{"scale": 0.5},)"
-                        << R"( {"scale": 0.5, "translate": [1, 0, 0]}]})" << std::string(padding, ' ');
+                        << R"( {"scale": 0.5, "translate": [1, 0, 0]}]})"
+                        << std::string(padding, ' ');
     return file;
 }
 
@@ -206,7 +209,7 @@ TEST(DiscoverScene, FindsTheFileDiscoveryWouldPickWithOrWithoutTheIndex) {
     SceneDirectories dirs;
     write_ifs_scene(dirs.first, "a.ifs.json", "other");
     const fs::path winner = write_ifs_scene(dirs.first, "b.ifs.json", "target");
-    write_ifs_scene(dirs.first, "c.ifs.json", "target");  // a duplicate later in the folder
+    write_ifs_scene(dirs.first, "c.ifs.json", "target");   // a duplicate later in the folder
     write_ifs_scene(dirs.second, "a.ifs.json", "target");  // and one in a later folder
     const Discovery all = discover_scenes(dirs.search_path());
     ASSERT_EQ(all.scenes.size(), 2u);

@@ -16,12 +16,12 @@
 #include <string>
 #include <vector>
 
-#include "device_suite.hpp"
 #include "camera/camera.hpp"
-#include "scene/parameters.hpp"
-#include "fgr/plugin.h"
 #include "device/program_cache.hpp"
+#include "device_suite.hpp"
+#include "fgr/plugin.h"
 #include "render/renderer.hpp"
+#include "scene/parameters.hpp"
 #include "test_scenes.hpp"
 
 namespace fgr {
@@ -55,7 +55,6 @@ protected:
         result.samples = samples;
         return result;
     }
-
 };
 
 glm::vec3 pixel_rgb(const Frame& frame, int pixel) {
@@ -237,7 +236,8 @@ TEST_F(EffectTest, AThinOccluderJustBeforeAPointLightShadowsAtAnyOverRelaxation)
 real scene_de(vec3 p, PARAMS) {
     (void)fgr_params;
     real ground = sd_plane(p, v3_splat(0.0f, 0.0f, 1.0f), -0.5f);
-    real plate = sd_box(op_translate(p, v3_splat(0.0f, 0.0f, 1.5f)), v3_splat(0.35f, 0.35f, 0.002f));
+    real plate = sd_box(op_translate(p, v3_splat(0.0f, 0.0f, 1.5f)),
+                        v3_splat(0.35f, 0.35f, 0.002f));
     return op_union(ground, plate);
 }
 )");
@@ -250,8 +250,8 @@ real scene_de(vec3 p, PARAMS) {
     // crosses z = 1.5 within 0.03 / 2.03 of its horizontal offset, far inside the plate's 0.35.
     const auto under = pixels_where(points, on_floor);
     ASSERT_GT(under.size(), 200u);
-    for (const char* relaxation : {"over_relaxation=1", "over_relaxation=1.6",
-                                   "over_relaxation=1.95"}) {
+    for (const char* relaxation :
+         {"over_relaxation=1", "over_relaxation=1.6", "over_relaxation=1.95"}) {
         for (uint64_t effect : {uint64_t{FGR_EFFECT_SHADOWS}, uint64_t{FGR_EFFECT_SOFT_SHADOWS}}) {
             SCOPED_TRACE(effect_names(effect) + " " + relaxation);
             const Frame shadowed = renderer(scene, effect)->render(request(scene, {relaxation}));
@@ -713,8 +713,10 @@ real scene_de(vec3 p, PARAMS) {
         const double mean = sum / n;
         const double standard_error = std::sqrt((sum_squares / n - mean * mean) / n);
         const double error = mean_squared_difference(image, a);
-        std::printf("%d spp: mse %.4g, excess over the 1/N prediction %.3g +- %.2g (%ld varying "
-                    "pixels)\n", count, error, mean, standard_error, varying);
+        std::printf(
+            "%d spp: mse %.4g, excess over the 1/N prediction %.3g +- %.2g (%ld varying "
+            "pixels)\n",
+            count, error, mean, standard_error, varying);
         EXPECT_LT(std::abs(mean), 4.0 * standard_error) << count << " spp";
         ASSERT_GT(varying, 5000) << "too few pixels vary between samples to judge";
         if (previous_error > 0.0) {
@@ -742,7 +744,8 @@ TEST_F(EffectTest, ReflectionsWithNoMirrorsRenderTheSameImageAsWithout) {
 // 0.5 -> 1.055 * 0.74915 - 0.055 = 0.73536 -> 187.516 -> 188; 0.9 -> 243.445 -> 243. A plain
 // 2.2 gamma would give 19, 117 and 186 at 0.0031308, 0.18 and 0.5.
 double srgb_code(double linear) {
-    const double v = linear <= 0.0031308 ? 12.92 * linear : 1.055 * std::pow(linear, 1.0 / 2.4) - 0.055;
+    const double v =
+        linear <= 0.0031308 ? 12.92 * linear : 1.055 * std::pow(linear, 1.0 / 2.4) - 0.055;
     return 255.0 * v;
 }
 
@@ -861,7 +864,6 @@ TEST_F(EffectTest, RefractionShowsWhatIsBehindTheGlassFlipped) {
               glm::length(pixel_rgb(lens, left_of_centre)) * 0.8f);
 }
 
-
 // A bubble (index 0.6 against its surroundings) seen from outside: a ray meeting it at impact
 // parameter b (distance from the centre to the ray's line) enters at sin(incidence) = b / R, so
 // beyond b = 0.6 R light cannot enter at all (total internal reflection on the dense side) and the
@@ -886,7 +888,8 @@ TEST_F(EffectTest, ABubbleShowsATotalReflectionRingAtTheCriticalAngle) {
             if (opaque.depth[pixel] < 0.0f || opaque.depth[pixel] > 3.0f) continue;  // sphere only
             const glm::vec3 dir = primary_ray_direction(basis, width, height, float(x), float(y));
             const float b = glm::length(glm::cross(-glm::vec3(basis.eye), dir)) / radius;
-            const bool same = glm::length(pixel_rgb(bubble, pixel) - pixel_rgb(opaque, pixel)) < 1e-5f;
+            const bool same =
+                glm::length(pixel_rgb(bubble, pixel) - pixel_rgb(opaque, pixel)) < 1e-5f;
             if (same) ring_start = std::min(ring_start, b);
             if (b > ior + 2.0f * b_step && b < 1.0f - 2.0f * b_step) {
                 ++ring;
@@ -948,9 +951,9 @@ real scene_transmission(vec3 p, PARAMS) {
     scene.params.insert(scene.params.begin(), scale);
     scene.lights = {directional({0.0f, -1.0f, 0.3f})};
     const auto render_at = [&](float s) {
-        FrameRequest req = request(scene, {"absorption=" + exact_text(2.0f / s),
-                                           "scale=" + exact_text(s),
-                                           "max_distance=" + exact_text(100.0f * s)});
+        FrameRequest req =
+            request(scene, {"absorption=" + exact_text(2.0f / s), "scale=" + exact_text(s),
+                            "max_distance=" + exact_text(100.0f * s)});
         req.view.position *= s;
         req.view.target *= s;
         return renderer(scene, FGR_EFFECT_REFRACTION)->render(req);
@@ -998,9 +1001,9 @@ real scene_de(vec3 p, PARAMS) { return param_scale * unit_de(v3_scale(p, 1.0f / 
         SCOPED_TRACE(effect_names(c.effect));
         const auto render_at = [&](float s) {
             Scene scaled = scene;
-            scaled.lights = {directional({0.3f, -0.4f, 1.0f}, 0.7f),
-                             Light{LightType::Point, point_light * s, {1.0f, 0.9f, 0.8f},
-                                   0.8f * s * s}};
+            scaled.lights = {
+                directional({0.3f, -0.4f, 1.0f}, 0.7f),
+                Light{LightType::Point, point_light * s, {1.0f, 0.9f, 0.8f}, 0.8f * s * s}};
             std::vector<std::string> assignments = {"scale=" + exact_text(s),
                                                     "max_distance=" + exact_text(50.0f * s)};
             for (const auto& [id, value] : c.lengths) {

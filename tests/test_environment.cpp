@@ -4,24 +4,24 @@
 // Carlo estimate of the map's integral, texels known by construction); the generated maps (the
 // Preetham sky and sun against published values and their symmetries, the studio); and the
 // tables' validation.
+#include <fmt/format.h>
+#include <gtest/gtest.h>
+
 #include <algorithm>
 #include <cmath>
 #include <filesystem>
+#include <glm/geometric.hpp>
 #include <limits>
 #include <numbers>
 #include <random>
 #include <string>
 #include <vector>
 
-#include <fmt/format.h>
-#include <glm/geometric.hpp>
-#include <gtest/gtest.h>
-
-#include "device_suite.hpp"
-#include "render/environment.hpp"
 #include "device/opencl_device.hpp"
 #include "device/program_cache.hpp"
+#include "device_suite.hpp"
 #include "kernel_test_program.hpp"
+#include "render/environment.hpp"
 
 namespace fgr {
 namespace {
@@ -213,7 +213,6 @@ protected:
         }
         return result;
     }
-
 };
 
 std::vector<float> uniforms(std::mt19937& random, size_t count) {

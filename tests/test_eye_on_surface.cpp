@@ -7,9 +7,9 @@
 #include <filesystem>
 
 #include "device/opencl_device.hpp"
-#include "scene/parameters.hpp"
 #include "device/program_cache.hpp"
 #include "render/renderer.hpp"
+#include "scene/parameters.hpp"
 #include "test_scenes.hpp"
 
 namespace fgr {
@@ -51,8 +51,8 @@ TEST(EyeOnSurface, MandelboxFromTheOriginRendersShadedWithoutRunningOutOfSteps) 
     const Frame frame = render_from(mandelbox, from_origin(), RenderMode::Shaded, true);
     ASSERT_TRUE(frame.stats.has_value());
     const MarchStats& stats = *frame.stats;
-    const int max_steps = static_cast<int>(
-        param_value(mandelbox, default_param_values(mandelbox), "max_steps"));
+    const int max_steps =
+        static_cast<int>(param_value(mandelbox, default_param_values(mandelbox), "max_steps"));
     EXPECT_GT(frame.hits, long{kWidth * kHeight} * 9 / 10) << "the origin is inside the solid";
     EXPECT_LT(stats.mean_steps, 0.5 * max_steps);
     EXPECT_LE(stats.out_of_steps, long{kWidth * kHeight} / 100);

@@ -4,15 +4,14 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <glm/geometric.hpp>
 #include <limits>
 #include <numbers>
 
-#include <glm/geometric.hpp>
-
 #include "deep_zoom.hpp"
-#include "viewer/fly_camera.hpp"
 #include "mandelbulb_reference.hpp"
 #include "test_scenes.hpp"
+#include "viewer/fly_camera.hpp"
 
 namespace fgr::viewer {
 namespace {

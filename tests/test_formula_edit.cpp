@@ -1,6 +1,6 @@
-// The hybrid editor's edits of a formula scene's sequence (scene/formulas/formula_edit.hpp): what each edit
-// does to the sequence, the settings that follow from it and the scene's parameters, what it
-// refuses, and that the user's values travel with their slots.
+// The hybrid editor's edits of a formula scene's sequence (scene/formulas/formula_edit.hpp): what
+// each edit does to the sequence, the settings that follow from it and the scene's parameters, what
+// it refuses, and that the user's values travel with their slots.
 #include <gtest/gtest.h>
 
 #include <filesystem>
@@ -95,7 +95,8 @@ TEST(FormulaEdit, RemovingASlotGivesBackTheSettingsOfTheRest) {
     EXPECT_EQ(alone.estimate, FormulaEstimate::Analytic);
     // A formula without an estimate makes the hybrid an inside test, and takes it away with it;
     // a bicomplex formula's own distance holds alone, not in a hybrid.
-    const FormulaScene lambda = with_formula_added(shipped("mandelbulb-formula"), library("lambdabulb"));
+    const FormulaScene lambda =
+        with_formula_added(shipped("mandelbulb-formula"), library("lambdabulb"));
     EXPECT_EQ(lambda.estimate, FormulaEstimate::Inside);
     EXPECT_EQ(with_slot_removed(lambda, 1).estimate, FormulaEstimate::Analytic);
     const FormulaScene bicomplex = with_formula_added(shipped("tetrabrot"), library("mandelbulb"));

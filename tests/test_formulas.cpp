@@ -1,33 +1,33 @@
-// The formula library and formula scene files (scene/formulas/formulas.hpp): every formula has its kernel
-// function; the shipped files load (30 formulas and 5 hybrids at least); bad files are refused in
-// one line naming the file, fuzzed ones too; a formula in two slots renders as the formula alone;
-// formulas that are the same map under two names give the same distances; the delta estimate
-// agrees with the analytic one where both exist. `fgr check` runs on every shipped file as its
-// own ctest (SceneCheck.*.formula.json).
+// The formula library and formula scene files (scene/formulas/formulas.hpp): every formula has its
+// kernel function; the shipped files load (30 formulas and 5 hybrids at least); bad files are
+// refused in one line naming the file, fuzzed ones too; a formula in two slots renders as the
+// formula alone; formulas that are the same map under two names give the same distances; the delta
+// estimate agrees with the analytic one where both exist. `fgr check` runs on every shipped file as
+// its own ctest (SceneCheck.*.formula.json).
+#include <gtest/gtest.h>
+
 #include <algorithm>
 #include <cmath>
 #include <complex>
 #include <cstdio>
 #include <filesystem>
+#include <glm/geometric.hpp>
 #include <map>
+#include <nlohmann/json.hpp>
 #include <set>
 #include <string>
 #include <vector>
 
-#include <glm/geometric.hpp>
-#include <gtest/gtest.h>
-#include <nlohmann/json.hpp>
-
 #include "child_process.hpp"
 #include "device_suite.hpp"
-#include "scene/formulas/formulas.hpp"
 #include "fgr/kernel_library.hpp"
-#include "scene/parameters.hpp"
-#include "render/renderer.hpp"
 #include "fuzz_rng.hpp"
 #include "json_mutation.hpp"
 #include "random_points.hpp"
+#include "render/renderer.hpp"
 #include "render_probes.hpp"
+#include "scene/formulas/formulas.hpp"
+#include "scene/parameters.hpp"
 
 namespace fgr {
 namespace {
@@ -37,7 +37,10 @@ using nlohmann::json;
 
 // A formula document of `sequence` (one slot's object, or an array of them).
 json document(const json& sequence) {
-    return {{"format", "fgr-formula"}, {"version", 1}, {"id", "test-formula"}, {"name", "Test"},
+    return {{"format", "fgr-formula"},
+            {"version", 1},
+            {"id", "test-formula"},
+            {"name", "Test"},
             {"sequence", sequence.is_object() ? json::array({sequence}) : sequence}};
 }
 
@@ -112,11 +115,14 @@ struct Refusal {
 TEST(FormulaFile, RefusesBadDocumentsInOneLineNamingTheFile) {
     const json bulb = {{"formula", "mandelbulb"}};
     std::vector<Refusal> cases = {
-        {"unknown formula", document({{{"formula", "mandelblub"}}}), "unknown formula 'mandelblub'"},
+        {"unknown formula", document({{{"formula", "mandelblub"}}}),
+         "unknown formula 'mandelblub'"},
         {"no sequence", document(json::array()), "\"sequence\" has 0 entries"},
         {"repeat zero", document({{{"formula", "mandelbulb"}, {"repeat", 0}}}), "\"repeat\" 0"},
-        {"repeat float", document({{{"formula", "mandelbulb"}, {"repeat", 1.5}}}), "\"repeat\" 1.5"},
-        {"unknown parameter", document({{{"formula", "mandelbulb"}, {"parameters", {{"powr", 8}}}}}),
+        {"repeat float", document({{{"formula", "mandelbulb"}, {"repeat", 1.5}}}),
+         "\"repeat\" 1.5"},
+        {"unknown parameter",
+         document({{{"formula", "mandelbulb"}, {"parameters", {{"powr", 8}}}}}),
          "has no parameter 'powr'"},
         {"parameter out of range",
          document({{{"formula", "mandelbulb"}, {"parameters", {{"power", 40}}}}}),
@@ -127,24 +133,60 @@ TEST(FormulaFile, RefusesBadDocumentsInOneLineNamingTheFile) {
         {"own distance in a hybrid", document({{{"formula", "pseudo_kleinian"}}, bulb}),
          "needs \"distance\""},
         {"bailout over what the power takes",
-         [&] { json d = document({bulb}); d["bailout"] = 1e6; return d; }(),
+         [&] {
+             json d = document({bulb});
+             d["bailout"] = 1e6;
+             return d;
+         }(),
          "\"bailout\" 1000000 outside [0.5, 64]"},
         {"delta estimate of an own distance",
-         [&] { json d = document({{{"formula", "menger"}}}); d["estimate"] = "delta"; return d; }(),
+         [&] {
+             json d = document({{{"formula", "menger"}}});
+             d["estimate"] = "delta";
+             return d;
+         }(),
          "\"estimate\": \"delta\" needs \"distance\""},
         {"analytic estimate of an inside-only formula",
-         [&] { json d = document({{{"formula", "lambdabulb"}}}); d["estimate"] = "analytic"; return d; }(),
+         [&] {
+             json d = document({{{"formula", "lambdabulb"}}});
+             d["estimate"] = "analytic";
+             return d;
+         }(),
          "\"estimate\" \"analytic\": lambdabulb has no distance estimate, only an inside test"},
         {"delta estimate of a hybrid with an inside-only formula",
-         [&] { json d = document({bulb, {{"formula", "lambdabulb"}}}); d["estimate"] = "delta"; return d; }(),
+         [&] {
+             json d = document({bulb, {{"formula", "lambdabulb"}}});
+             d["estimate"] = "delta";
+             return d;
+         }(),
          "lambdabulb has no distance estimate"},
-        {"unknown estimate", [&] { json d = document({bulb}); d["estimate"] = "exact"; return d; }(),
+        {"unknown estimate",
+         [&] {
+             json d = document({bulb});
+             d["estimate"] = "exact";
+             return d;
+         }(),
          "must be \"analytic\", \"delta\" or \"inside\""},
-        {"misspelt key", [&] { json d = document({bulb}); d["iteratons"] = 5; return d; }(),
+        {"misspelt key",
+         [&] {
+             json d = document({bulb});
+             d["iteratons"] = 5;
+             return d;
+         }(),
          "iteratons"},
-        {"wrong format", [&] { json d = document({bulb}); d["format"] = "fgr-ifs"; return d; }(),
+        {"wrong format",
+         [&] {
+             json d = document({bulb});
+             d["format"] = "fgr-ifs";
+             return d;
+         }(),
          "must be \"fgr-formula\""},
-        {"bad tag", [&] { json d = document({bulb}); d["tags"] = {"Bulb!"}; return d; }(),
+        {"bad tag",
+         [&] {
+             json d = document({bulb});
+             d["tags"] = {"Bulb!"};
+             return d;
+         }(),
          "\"tags\" entry 0"},
     };
     json many = json::array();
@@ -156,7 +198,8 @@ TEST(FormulaFile, RefusesBadDocumentsInOneLineNamingTheFile) {
             ADD_FAILURE() << refusal.name << ": accepted";
         } catch (const FormulaError& error) {
             const std::string message = error.what();
-            EXPECT_EQ(message.rfind("test.formula.json: ", 0), 0u) << refusal.name << ": " << message;
+            EXPECT_EQ(message.rfind("test.formula.json: ", 0), 0u)
+                << refusal.name << ": " << message;
             EXPECT_NE(message.find(refusal.says), std::string::npos)
                 << refusal.name << ": " << message;
             EXPECT_EQ(message.find('\n'), std::string::npos) << refusal.name << ": " << message;
@@ -321,7 +364,8 @@ TEST_F(FormulaScenes, TheSameMapUnderTwoNamesGivesTheSameDistances) {
     } pairs[] = {
         {{{"formula", "mandelbulb"}, {"parameters", {{"power", 8}}}},
          {{"formula", "xenodreambuie"}, {"parameters", {{"power", 8}, {"alpha", 0}, {"beta", 0}}}}},
-        {{{"formula", "mandelbulb"}, {"parameters", {{"power", 2}}}}, {{"formula", "white_nylander"}}},
+        {{{"formula", "mandelbulb"}, {"parameters", {{"power", 2}}}},
+         {{"formula", "white_nylander"}}},
     };
     for (const Pair& pair : pairs) {
         json a = document({pair.a}), b = document({pair.b});
@@ -413,7 +457,8 @@ TEST_F(FormulaScenes, TheTetrabrotIsTwoMandelbrotSetsInIdempotentCoordinates) {
     std::vector<glm::dvec3> points;
     std::vector<bool> expected;
     while (points.size() < 240) {
-        const glm::dvec3 p(rng.uniform(-1.9f, 0.4f), rng.uniform(-0.8f, 0.8f), rng.uniform(-0.8f, 0.8f));
+        const glm::dvec3 p(rng.uniform(-1.9f, 0.4f), rng.uniform(-0.8f, 0.8f),
+                           rng.uniform(-0.8f, 0.8f));
         std::complex<double> u(p.x, p.y - p.z), v(p.x, p.y + p.z);
         const std::complex<double> cu = u, cv = v;
         bool in = true, close = false;
@@ -437,8 +482,8 @@ TEST_F(FormulaScenes, TheTetrabrotIsTwoMandelbrotSetsInIdempotentCoordinates) {
     int in_count = 0;
     for (std::size_t i = 0; i < points.size(); ++i) {
         in_count += expected[i];
-        EXPECT_EQ(verdicts[i], expected[i]) << "at (" << points[i].x << ", " << points[i].y
-                                            << ", " << points[i].z << ")";
+        EXPECT_EQ(verdicts[i], expected[i])
+            << "at (" << points[i].x << ", " << points[i].y << ", " << points[i].z << ")";
     }
     EXPECT_GT(in_count, 20);  // both verdicts are tried
     EXPECT_LT(in_count, 220);
@@ -456,8 +501,8 @@ namespace {
 // wrong period, or none, moves the set under the translation.
 TEST_F(FormulaScenes, JosLeysKleinianIsInvariantUnderItsGroupsTranslations) {
     // Thick spheres, so that a fair share of the points is inside.
-    const Scene kleinian = scene_of(
-        document({{{"formula", "jos_kleinian"}, {"parameters", {{"thickness", 0.1}}}}}));
+    const Scene kleinian =
+        scene_of(document({{{"formula", "jos_kleinian"}, {"parameters", {{"thickness", 0.1}}}}}));
     ASSERT_TRUE(kleinian.inside_only());
     test::FuzzRng rng(1957);
     std::vector<glm::dvec3> points;
@@ -531,11 +576,12 @@ TEST_F(FormulaScenes, TheTetrabrotsDistanceIsALowerBound) {
         for (int k = 0; k < 24; ++k) {
             const glm::vec3 direction = glm::normalize(glm::vec3(
                 rng.uniform(-1.0f, 1.0f), rng.uniform(-1.0f, 1.0f), rng.uniform(-1.0f, 1.0f)));
-            const glm::dvec3 q = glm::dvec3(centres[i]) +
-                                 glm::dvec3(direction) * (0.9 * double(de[i]) * rng.uniform(0.5f, 1.0f));
+            const glm::dvec3 q =
+                glm::dvec3(centres[i]) +
+                glm::dvec3(direction) * (0.9 * double(de[i]) * rng.uniform(0.5f, 1.0f));
             ASSERT_FALSE(in_set(q)) << "distance " << de[i] << " at (" << centres[i].x << ", "
-                                    << centres[i].y << ", " << centres[i].z << ") reaches ("
-                                    << q.x << ", " << q.y << ", " << q.z << ") in the set";
+                                    << centres[i].y << ", " << centres[i].z << ") reaches (" << q.x
+                                    << ", " << q.y << ", " << q.z << ") in the set";
         }
     }
     EXPECT_GT(balls, 200);  // most points are outside, and their balls were tried

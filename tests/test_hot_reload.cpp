@@ -2,6 +2,8 @@
 // watched sources) once they hold still, never what was there at the start, and a new version of a
 // scene keeps the user's values of the parameters it still has. (The viewer reloading a rebuilt
 // plugin or an edited .cl file is tested end to end in test_viewer.cpp.)
+#include <gtest/gtest.h>
+
 #include <chrono>
 #include <cstdlib>
 #include <filesystem>
@@ -9,13 +11,11 @@
 #include <optional>
 #include <string>
 
-#include <gtest/gtest.h>
-
 #include "child_process.hpp"
 #include "scene/parameters.hpp"
 #include "scene/plugin_loader.hpp"
-#include "viewer/file_watcher.hpp"
 #include "test_scenes.hpp"
+#include "viewer/file_watcher.hpp"
 
 namespace fgr::viewer {
 namespace {

@@ -1,12 +1,13 @@
-// IFS scene files (scene/ifs/ifs.hpp): the shipped files (plugins/ifs/) parse and their geometry is what
-// it claims (bounding spheres that hold, attractors that match the DE scenes they copy), bad files
-// are refused with one line naming the file and the map, a seeded fuzz test of the reader, and
-// discovery of IFS files beside plugins.
+// IFS scene files (scene/ifs/ifs.hpp): the shipped files (plugins/ifs/) parse and their geometry is
+// what it claims (bounding spheres that hold, attractors that match the DE scenes they copy), bad
+// files are refused with one line naming the file and the map, a seeded fuzz test of the reader,
+// and discovery of IFS files beside plugins.
 //
 // Reproduce a fuzz failure with FGR_FUZZ_CASE=<case seed> (printed with it); FGR_FUZZ_CASES=<n>
 // runs more or fewer cases.
 
 #include <gtest/gtest.h>
+#include <spdlog/spdlog.h>
 
 #include <algorithm>
 #include <array>
@@ -15,24 +16,22 @@
 #include <cstdlib>
 #include <filesystem>
 #include <fstream>
+#include <glm/geometric.hpp>
+#include <glm/gtc/matrix_transform.hpp>
+#include <glm/mat3x3.hpp>
 #include <map>
+#include <nlohmann/json.hpp>
 #include <random>
 #include <set>
 #include <string>
 #include <vector>
 
-#include <glm/geometric.hpp>
-#include <glm/gtc/matrix_transform.hpp>
-#include <glm/mat3x3.hpp>
-#include <nlohmann/json.hpp>
-#include <spdlog/spdlog.h>
-
 #include "child_process.hpp"
+#include "fuzz_rng.hpp"
+#include "json_mutation.hpp"
 #include "scene/discovery.hpp"
 #include "scene/ifs/ifs.hpp"
 #include "scene/scene_file.hpp"
-#include "fuzz_rng.hpp"
-#include "json_mutation.hpp"
 
 namespace fgr {
 namespace {
@@ -83,7 +82,10 @@ glm::dmat3 rodrigues(glm::dvec3 axis, double degrees) {
 
 // A minimal valid file, with `maps` as given.
 json minimal(json maps) {
-    return {{"format", "fgr-ifs"}, {"version", 1}, {"id", "test-ifs"}, {"name", "Test"},
+    return {{"format", "fgr-ifs"},
+            {"version", 1},
+            {"id", "test-ifs"},
+            {"name", "Test"},
             {"maps", std::move(maps)}};
 }
 
@@ -252,13 +254,13 @@ TEST(IfsFile, ComposedScaleRotateTranslateEqualsTheMatrix) {
     for (int r = 0; r < 3; ++r) {
         matrix.push_back({expected[0][r], expected[1][r], expected[2][r], translate[r]});
     }
-    const json composed = minimal(json::array(
-        {{{"scale", {scale.x, scale.y, scale.z}},
-          {"rotate", {{"axis", {axis.x, axis.y, axis.z}}, {"degrees", degrees}}},
-          {"translate", {translate.x, translate.y, translate.z}}},
-         {{"matrix", matrix}},
-         // Another fixed point: two equal maps alone would make a single point.
-         {{"scale", 0.5}, {"translate", {1, 0, 0}}}}));
+    const json composed = minimal(
+        json::array({{{"scale", {scale.x, scale.y, scale.z}},
+                      {"rotate", {{"axis", {axis.x, axis.y, axis.z}}, {"degrees", degrees}}},
+                      {"translate", {translate.x, translate.y, translate.z}}},
+                     {{"matrix", matrix}},
+                     // Another fixed point: two equal maps alone would make a single point.
+                     {{"scale", 0.5}, {"translate", {1, 0, 0}}}}));
     const IfsScene ifs = parse_ifs_json(composed.dump(), "composed.ifs.json");
     ASSERT_EQ(ifs.maps.size(), 3u);
     for (int c = 0; c < 3; ++c) {
@@ -271,8 +273,7 @@ TEST(IfsFile, ComposedScaleRotateTranslateEqualsTheMatrix) {
     }
     // Each key alone, and a scalar scale.
     const IfsScene parts = parse_ifs_json(
-        minimal(json::array({{{"scale", 0.5}}, {{"scale", 0.5}, {"translate", {1, 0, 0}}}}))
-            .dump(),
+        minimal(json::array({{{"scale", 0.5}}, {{"scale", 0.5}, {"translate", {1, 0, 0}}}})).dump(),
         "parts.ifs.json");
     EXPECT_EQ(parts.maps[0].linear, glm::dmat3(0.5));
     EXPECT_EQ(parts.maps[1].offset, glm::dvec3(1, 0, 0));
@@ -298,8 +299,8 @@ TEST(IfsFile, SingularValuesOfKnownMatrices) {
     EXPECT_EQ(largest_singular_value(glm::dmat3(0.0)), 0.0);
     EXPECT_NEAR(largest_singular_value(glm::dmat3(-0.7)), 0.7, 1e-15);
     // Rank 2, and nearly so: the small value keeps its relative accuracy.
-    EXPECT_EQ(singular_values(glm::dmat3(glm::dvec3(1, 2, 3), glm::dvec3(2, 4, 6),
-                                         glm::dvec3(0, 1, 0)))[2],
+    EXPECT_EQ(singular_values(
+                  glm::dmat3(glm::dvec3(1, 2, 3), glm::dvec3(2, 4, 6), glm::dvec3(0, 1, 0)))[2],
               0.0);
     const glm::dmat3 thin = rotation * glm::dmat3(glm::dvec3(0.5, 0, 0), glm::dvec3(0, 0.4, 0),
                                                   glm::dvec3(0, 0, 1e-12));
@@ -334,7 +335,8 @@ std::vector<BadCase> bad_cases() {
 
     json grow = maps;
     grow[3] = {{"scale", 1.02}};
-    add("non-contractive", minimal(grow), "map 3 is not contractive (largest singular value 1.02 >= 1)");
+    add("non-contractive", minimal(grow),
+        "map 3 is not contractive (largest singular value 1.02 >= 1)");
     json flat = maps;
     flat[2] = {{"scale", {0.5, 0.5, 0.0}}};
     add("singular", minimal(flat), "map 2 is singular");
@@ -419,24 +421,25 @@ std::vector<BadCase> bad_cases() {
     camera["cameras"] = {{{"name", "Front"}, {"position", {0, 0, 5}}, {"target", {0, 0, 0}}}};
     add("camera name", camera,
         "camera 0: name 'Front' must match [a-z0-9_-]+ (at most 63 characters)");
-    camera["cameras"] = {{{"name", "a"}, {"position", {0, 5, 0}}, {"target", {0, 0, 0}},
-                          {"fov", 200}}};
+    camera["cameras"] = {
+        {{"name", "a"}, {"position", {0, 5, 0}}, {"target", {0, 0, 0}}, {"fov", 200}}};
     add("camera fov", camera, "camera 'a':");
     json path = doc;
-    path["camera_paths"] = {
-        {{"name", "p"},
-         {"keyframes",
-          {{{"time", 1}, {"position", {0, 5, 0}}, {"target", {0, 0, 0}}},
-           {{"time", 1}, {"position", {0, 6, 0}}, {"target", {0, 0, 0}}}}}}};
+    path["camera_paths"] = {{{"name", "p"},
+                             {"keyframes",
+                              {{{"time", 1}, {"position", {0, 5, 0}}, {"target", {0, 0, 0}}},
+                               {{"time", 1}, {"position", {0, 6, 0}}, {"target", {0, 0, 0}}}}}}};
     add("keyframe times not increasing", path, "camera path 'p' keyframe 1: time 1 not after 1");
     path["camera_paths"] = {
-        {{"name", "p"}, {"keyframes", {{{"time", 1}, {"position", {0, 5, 0}}, {"target", {0, 0, 0}}}}}}};
+        {{"name", "p"},
+         {"keyframes", {{{"time", 1}, {"position", {0, 5, 0}}, {"target", {0, 0, 0}}}}}}};
     add("one keyframe", path, "camera path 'p' \"keyframes\" has 1 entries; 2 to 10000 allowed");
     json light = doc;
     light["lights"] = {{{"type", "directional"}, {"direction", {0, 0, 0}}}};
     add("zero light direction", light, "light 0: zero direction");
     light["lights"] = {{{"type", "spot"}, {"position", {0, 0, 0}}}};
-    add("unknown light type", light, "light 0 \"type\" \"spot\" must be \"directional\" or \"point\"");
+    add("unknown light type", light,
+        "light 0 \"type\" \"spot\" must be \"directional\" or \"point\"");
     light["lights"] = {{{"type", "point"}, {"position", {0, 0, 2}}, {"intensity", -1}}};
     add("negative intensity", light, "light 0: negative intensity -1");
 
@@ -466,7 +469,8 @@ std::vector<BadCase> bad_cases() {
     cases.push_back({"truncated JSON", doc.dump().substr(0, 40), "not valid JSON"});
     cases.push_back({"not an object", "[1, 2, 3]", "must be a JSON object"});
     // 10^5 maps of 15 bytes each: under the size limit, over the map limit.
-    std::string many = R"({"format": "fgr-ifs", "version": 1, "id": "many", "name": "Many", "maps": [)";
+    std::string many =
+        R"({"format": "fgr-ifs", "version": 1, "id": "many", "name": "Many", "maps": [)";
     for (int i = 0; i < 100000; ++i) many += i == 0 ? R"({"scale": 0.5})" : R"(,{"scale": 0.5})";
     cases.push_back({"10^5 maps", many + "]}", "\"maps\" has 100000 entries; 1 to 64 allowed"});
     cases.push_back({"over 4 MiB", doc.dump() + std::string(kIfsMaxFileBytes, ' '),
@@ -585,7 +589,8 @@ TEST(IfsDiscovery, FindsGoodFilesAndSkipsBadOnesWithTheirReason) {
     for (const SkippedPlugin& skipped : found.skipped) {
         reasons[skipped.file.filename().string()] = skipped.reason;
     }
-    EXPECT_EQ(reasons["bad.ifs.json"], "map 2 is not contractive (largest singular value 1.5 >= 1)");
+    EXPECT_EQ(reasons["bad.ifs.json"],
+              "map 2 is not contractive (largest singular value 1.5 >= 1)");
     EXPECT_NE(reasons["again.ifs.json"].find("duplicate scene id 'sierpinski-ifs'"),
               std::string::npos)
         << reasons["again.ifs.json"];
@@ -663,7 +668,8 @@ void check_case(const std::string& text, uint64_t case_seed, bool& accepted) {
         ASSERT_EQ(scene.params.front().id, "ifs_depth") << "case " << case_seed;
     } catch (const IfsError& error) {
         const std::string message = error.what();
-        ASSERT_EQ(message.rfind("fuzz.ifs.json: ", 0), 0u) << "case " << case_seed << ": " << message;
+        ASSERT_EQ(message.rfind("fuzz.ifs.json: ", 0), 0u)
+            << "case " << case_seed << ": " << message;
         ASSERT_EQ(message.find('\n'), std::string::npos) << "case " << case_seed << ": " << message;
         ASSERT_GT(message.size(), std::string("fuzz.ifs.json: ").size()) << "case " << case_seed;
     }

@@ -11,15 +11,15 @@
 #include <filesystem>
 #include <string>
 
+#include "device/opencl_device.hpp"
+#include "device/program_cache.hpp"
+#include "fgr/plugin.h"
+#include "fgr/scene_helpers.h"
+#include "render/renderer.hpp"
 #include "scene/description_validation.hpp"
 #include "scene/ifs/ifs.hpp"
-#include "device/opencl_device.hpp"
 #include "scene/parameters.hpp"
-#include "fgr/plugin.h"
 #include "scene/plugin_loader.hpp"
-#include "device/program_cache.hpp"
-#include "render/renderer.hpp"
-#include "fgr/scene_helpers.h"
 
 namespace fgr {
 namespace {
@@ -154,7 +154,8 @@ const fgr_ifs_map kMaps[] = {
     FGR_IFS_SCALE_MAP(0.5f, 0.0f, 0.0f, 0.0f, 0.5f, 0.5f, 0.5f),
     FGR_IFS_SCALE_MAP(0.5f, 1.0f, 0.0f, 0.0f, 0.5f, 0.5f, 0.5f),
 };
-const fgr_camera kCameras[] = {FGR_CAMERA_Z_UP("front", 1.0f, -5.0f, 1.0f, 1.0f, 0.0f, 0.0f, 50.0f)};
+const fgr_camera kCameras[] = {
+    FGR_CAMERA_Z_UP("front", 1.0f, -5.0f, 1.0f, 1.0f, 0.0f, 0.0f, 50.0f)};
 const fgr_light kLights[] = {FGR_DIRECTIONAL_LIGHT(1.0f, -1.0f, 1.0f, 1.0f, 1.0f, 1.0f, 1.0f)};
 
 fgr_scene_desc ifs_description(uint32_t default_depth, uint32_t max_depth) {

@@ -1,22 +1,22 @@
 // Exact IFS ray tracing (kernels/fgr_ifs.cl): the kernel against the analytic bounding sphere and
 // against the double-precision reference traversal (trace_ifs_ray), at every packet width.
+#include <gtest/gtest.h>
+
 #include <cmath>
+#include <glm/geometric.hpp>
+#include <glm/trigonometric.hpp>
 #include <memory>
 #include <string>
 #include <vector>
 
-#include <gtest/gtest.h>
-#include <glm/geometric.hpp>
-#include <glm/trigonometric.hpp>
-
 #include "camera/camera.hpp"
-#include "scene/ifs/ifs.hpp"
-#include "fgr/plugin.h"
 #include "device/opencl_device.hpp"
-#include "scene/parameters.hpp"
 #include "device/program_cache.hpp"
+#include "fgr/plugin.h"
 #include "render/path_settings.hpp"
 #include "render/renderer.hpp"
+#include "scene/ifs/ifs.hpp"
+#include "scene/parameters.hpp"
 #include "test_scenes.hpp"
 
 namespace fgr {
@@ -29,8 +29,8 @@ IfsScene sierpinski() {
     ifs.id = "sierpinski-test";
     ifs.name = "Sierpinski test";
     const glm::dvec3 corners[4] = {{1, 1, 1}, {-1, -1, 1}, {1, -1, -1}, {-1, 1, -1}};
-    const glm::vec3 colours[4] = {{0.9f, 0.2f, 0.2f}, {0.2f, 0.9f, 0.2f}, {0.2f, 0.2f, 0.9f},
-                                  {0.9f, 0.9f, 0.2f}};
+    const glm::vec3 colours[4] = {
+        {0.9f, 0.2f, 0.2f}, {0.2f, 0.9f, 0.2f}, {0.2f, 0.2f, 0.9f}, {0.9f, 0.9f, 0.2f}};
     for (int i = 0; i < 4; ++i) {
         IfsMap map;
         map.linear = glm::dmat3(0.5);
@@ -42,7 +42,8 @@ IfsScene sierpinski() {
     ifs.bounds = {glm::dvec3(0.0), std::sqrt(3.0)};
     ifs.default_depth = 5;
     ifs.max_depth = 12;
-    ifs.cameras.push_back({"default", CameraView{{2.6, -4.1, 1.9}, {0.0, 0.0, 0.0}, {0, 0, 1}, 50}});
+    ifs.cameras.push_back(
+        {"default", CameraView{{2.6, -4.1, 1.9}, {0.0, 0.0, 0.0}, {0, 0, 1}, 50}});
     ifs.lights.push_back(Light{});
     return ifs;
 }
@@ -107,7 +108,6 @@ TEST_F(IfsRenderTest, DepthZeroIsTheBoundingSphereExactly) {
     EXPECT_GT(hits, width * height / 10);
 }
 
-
 // The kernel traces what the reference traversal (double precision, unbounded heap) traces: at
 // several depths, from afar and from close up (where the footprint rule stops detail), the same
 // pixels hit at the same distances, at every packet width. In double precision every pixel
@@ -139,14 +139,15 @@ TEST_F(IfsRenderTest, KernelHitsAndDistancesMatchTheReferenceTraversal) {
             for (const bool in_double : {true, false}) {
                 // Double lanes come 4 or more to a work-item (kMinDoublePacketWidth).
                 for (const int packet : {16, in_double ? 4 : 1}) {
-                    SCOPED_TRACE(::testing::Message() << "depth " << depth << (in_double ? " double" : " float")
-                                                      << " width " << packet);
+                    SCOPED_TRACE(::testing::Message()
+                                 << "depth " << depth << (in_double ? " double" : " float")
+                                 << " width " << packet);
                     const Frame frame = render(scene, request, packet, false, in_double);
                     long hits = 0, disagree = 0;
                     for (int y = 0; y < height; ++y) {
                         for (int x = 0; x < width; ++x) {
-                            const glm::dvec3 dir(primary_ray_direction(basis, width, height,
-                                                                       float(x), float(y)));
+                            const glm::dvec3 dir(
+                                primary_ray_direction(basis, width, height, float(x), float(y)));
                             const IfsRayHit expected =
                                 trace_ifs_ray(ifs, basis.eye, glm::normalize(dir), rules);
                             const float t = frame.depth[size_t(y * width + x)];
@@ -171,7 +172,6 @@ TEST_F(IfsRenderTest, KernelHitsAndDistancesMatchTheReferenceTraversal) {
     }
 }
 
-
 // Packets only group rays: each lane is traced alone, so the image is the same bytes at every
 // packet width, shadows included.
 TEST_F(IfsRenderTest, EveryPacketWidthRendersTheSameImage) {
@@ -189,7 +189,6 @@ TEST_F(IfsRenderTest, EveryPacketWidthRendersTheSameImage) {
     }
 }
 
-
 // The shipped Sierpinski and Menger IFS files draw the DE scenes' solids: at the same depth (the
 // DE's `iterations`), from the DE scene's camera, the same pixels hit (IoU >= 0.98) at the same
 // distances (within 1% on 98% of the pixels both hit). The DE marcher stops within hit_threshold
@@ -198,7 +197,7 @@ TEST_F(IfsRenderTest, EveryPacketWidthRendersTheSameImage) {
 // IoU of 0.72 to 0.84 at 192x144; measured 0.983 to 0.9985 at 0.02).
 TEST_F(IfsRenderTest, ShippedSierpinskiAndMengerMatchTheirDistanceEstimatedScenes) {
     for (const auto& [ifs_file, de_file] : {std::pair{"sierpinski.ifs.json", "sierpinski.so"},
-                                             std::pair{"menger.ifs.json", "menger.so"}}) {
+                                            std::pair{"menger.ifs.json", "menger.so"}}) {
         const Scene exact = scene_of(shipped(ifs_file));
         const Scene de = test::built_scene(de_file);
         const int width = 128, height = 96;
@@ -217,7 +216,8 @@ TEST_F(IfsRenderTest, ShippedSierpinskiAndMengerMatchTheirDistanceEstimatedScene
                 const bool hit_a = a.depth[i] >= 0.0f, hit_b = b.depth[i] >= 0.0f;
                 both += hit_a && hit_b;
                 either += hit_a || hit_b;
-                if (hit_a && hit_b) same_depth += std::abs(a.depth[i] - b.depth[i]) < 0.01f * b.depth[i];
+                if (hit_a && hit_b)
+                    same_depth += std::abs(a.depth[i] - b.depth[i]) < 0.01f * b.depth[i];
             }
             ASSERT_GT(either, width * height / 10);
             EXPECT_GE(double(both) / double(either), 0.98);
@@ -240,8 +240,8 @@ TEST(IfsNormals, AveragingLevelsBringsBallNormalsTowardsTheFaces) {
         long faces = 0;
         for (int y = 0; y < height; ++y) {
             for (int x = 0; x < width; ++x) {
-                const glm::dvec3 dir = glm::normalize(glm::dvec3(
-                    primary_ray_direction(basis, width, height, float(x), float(y))));
+                const glm::dvec3 dir = glm::normalize(
+                    glm::dvec3(primary_ray_direction(basis, width, height, float(x), float(y))));
                 IfsTraceRules rules;
                 rules.max_depth = sponge.max_depth;
                 rules.footprint = pixel_angle(basis, width);
@@ -306,7 +306,8 @@ TEST_F(IfsRenderTest, PathModeTracesIfsGeometry) {
                 primary_ray_direction(basis, request.width, request.height, float(x), float(y))));
             const double b = glm::dot(basis.eye, dir), c = glm::dot(basis.eye, basis.eye) - 3.0;
             if (b * b - c < 0.0) continue;
-            const glm::dvec3 expected = glm::normalize(basis.eye + (-b - std::sqrt(b * b - c)) * dir);
+            const glm::dvec3 expected =
+                glm::normalize(basis.eye + (-b - std::sqrt(b * b - c)) * dir);
             const glm::dvec3 normal(frame.normal[3 * pixel], frame.normal[3 * pixel + 1],
                                     frame.normal[3 * pixel + 2]);
             normal_errors.push_back(
@@ -378,8 +379,8 @@ TEST(IfsDistanceBound, IsALowerBoundThatTheViewerCanFlyBy) {
         x = map.linear * x + map.offset;
         if (i >= 100) points.push_back(x);
     }
-    const glm::dvec3 probes[] = {{3, 2, 1}, {0, 0.9, 0}, {0.1, -0.5, 0.05}, {1.2, 1.2, -1.3},
-                                 {0, 0, 5}};
+    const glm::dvec3 probes[] = {
+        {3, 2, 1}, {0, 0.9, 0}, {0.1, -0.5, 0.05}, {1.2, 1.2, -1.3}, {0, 0, 5}};
     for (const glm::dvec3& p : probes) {
         double nearest = 1e30;
         for (const glm::dvec3& q : points) nearest = std::min(nearest, glm::length(p - q));

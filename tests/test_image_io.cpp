@@ -253,8 +253,7 @@ TEST_F(ImageIo16, AlphaMakesAnRgbaFileWithTheSamplesAsGiven) {
     const PngSamples read16 = read_png_samples(file16);
     ASSERT_EQ(read16.channels, 4);
     ASSERT_EQ(read16.bit_depth, 16);
-    EXPECT_EQ(read16.samples,
-              (std::vector<uint16_t>{1, 256, 65535, 65535, 40000, 0, 3, 12345}));
+    EXPECT_EQ(read16.samples, (std::vector<uint16_t>{1, 256, 65535, 65535, 40000, 0, 3, 12345}));
 
     image8.alpha.pop_back();
     EXPECT_THROW(write_png(directory_ / "short.png", image8), std::invalid_argument);

@@ -1,11 +1,11 @@
-// Image metrics (diagnostics/image_metrics.hpp): SSIM against closed forms of its three terms, against
-// scikit-image's implementation on synthetic image pairs, and its properties; display luma, the
-// sRGB decoding of 8-bit images, and linear RMSE.
+// Image metrics (diagnostics/image_metrics.hpp): SSIM against closed forms of its three terms,
+// against scikit-image's implementation on synthetic image pairs, and its properties; display luma,
+// the sRGB decoding of 8-bit images, and linear RMSE.
+#include <gtest/gtest.h>
+
 #include <cmath>
 #include <functional>
 #include <stdexcept>
-
-#include <gtest/gtest.h>
 
 #include "diagnostics/image_metrics.hpp"
 

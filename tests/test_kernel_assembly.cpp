@@ -1,6 +1,9 @@
 // Kernel assembly: the switches a program is built with, the generated parameter accessors, build
 // errors mapped to the scene's own lines, the on-disk program cache, and parameters that change
 // without a rebuild.
+#include <fmt/format.h>
+#include <gtest/gtest.h>
+
 #include <cstdio>
 #include <cstdlib>
 #include <filesystem>
@@ -8,15 +11,12 @@
 #include <sstream>
 #include <utility>
 
-#include <fmt/format.h>
-#include <gtest/gtest.h>
-
 #include "device/kernel_assembly.hpp"
-#include "scene/parameters.hpp"
-#include "fgr/plugin.h"
 #include "device/program_cache.hpp"
-#include "render/renderer.hpp"
+#include "fgr/plugin.h"
 #include "hermetic_caches.hpp"
+#include "render/renderer.hpp"
+#include "scene/parameters.hpp"
 #include "test_scenes.hpp"
 
 namespace fgr {
@@ -58,7 +58,8 @@ TEST(KernelAssembly, EffectChangesAddAndRemoveByName) {
     EXPECT_EQ(apply_effect_changes(base, "none,+fog"), uint64_t{FGR_EFFECT_FOG});
     EXPECT_THROW(apply_effect_changes(base, "+glitter"), std::invalid_argument);
     EXPECT_THROW(apply_effect_changes(base, "-"), std::invalid_argument);
-    const std::string options = switch_options({16, apply_effect_changes(0, "soft_shadows,reflections")});
+    const std::string options =
+        switch_options({16, apply_effect_changes(0, "soft_shadows,reflections")});
     EXPECT_NE(options.find("-DFGR_EFFECT_SOFT_SHADOWS"), std::string::npos);
     EXPECT_NE(options.find("-DFGR_EFFECT_REFLECTIONS"), std::string::npos);
     EXPECT_EQ(options.find("-DFGR_EFFECT_SHADOWS"), std::string::npos);
@@ -80,7 +81,8 @@ std::string preprocessed(const AssembledProgram& program) {
     std::string output;
     if (FILE* pipe = ::popen(command.c_str(), "r")) {
         char buffer[4096];
-        for (size_t n; (n = std::fread(buffer, 1, sizeof buffer, pipe)) > 0;) output.append(buffer, n);
+        for (size_t n; (n = std::fread(buffer, 1, sizeof buffer, pipe)) > 0;)
+            output.append(buffer, n);
         ::pclose(pipe);
     }
     std::filesystem::remove(source);
@@ -110,7 +112,8 @@ TEST(KernelAssembly, DisabledEffectsLeaveNoCodeInTheProgram) {
 }
 
 TEST(KernelAssembly, AccessorsFollowTheBufferLayout) {
-    Scene scene = test::inline_scene("real scene_de(vec3 p, PARAMS) { return v3_length(p) - 1.0f; }");
+    Scene scene =
+        test::inline_scene("real scene_de(vec3 p, PARAMS) { return v3_length(p) - 1.0f; }");
     scene.params.insert(scene.params.begin(),
                         {ParamInfo{.id = "scale", .type = ParamType::Float},
                          ParamInfo{.id = "offset", .type = ParamType::Vec3},
@@ -118,7 +121,8 @@ TEST(KernelAssembly, AccessorsFollowTheBufferLayout) {
                          ParamInfo{.id = "enabled", .type = ParamType::Bool}});
     const std::string accessors = param_accessors(scene);
     EXPECT_NE(accessors.find("#define param_scale (fgr_params[0])"), std::string::npos);
-    EXPECT_NE(accessors.find("#define param_offset v3_splat(fgr_params[1], fgr_params[2], fgr_params[3])"),
+    EXPECT_NE(accessors.find(
+                  "#define param_offset v3_splat(fgr_params[1], fgr_params[2], fgr_params[3])"),
               std::string::npos);
     EXPECT_NE(accessors.find("#define param_count ((int)fgr_params[4])"), std::string::npos);
     EXPECT_NE(accessors.find("#define param_enabled (fgr_params[5] != 0.0f)"), std::string::npos);
@@ -141,7 +145,8 @@ TEST(KernelAssembly, SceneSourceIsTaggedWithItsOwnFileName) {
 TEST(KernelAssembly, ProgramsHoldTheFormulaFamiliesTheSceneCalls) {
     const auto families_in = [](const std::string& source) {
         const std::string program =
-            assemble_program(test::inline_scene("#define FGR_KERNEL_API 2\n" + source), {1, 0}).source;
+            assemble_program(test::inline_scene("#define FGR_KERNEL_API 2\n" + source), {1, 0})
+                .source;
         std::string found;
         for (const char* family : {"bulbs", "hypercomplex", "boxes", "kifs", "kleinian"}) {
             const size_t at = program.find(fmt::format("#line 1 \"formulas/{}.cl\"", family));
@@ -153,9 +158,10 @@ TEST(KernelAssembly, ProgramsHoldTheFormulaFamiliesTheSceneCalls) {
     };
     const std::string plain = "real scene_de(vec3 p, PARAMS) { return p.x; }\n";
     EXPECT_EQ(families_in(plain), "");
-    EXPECT_EQ(families_in(plain + "void f(vec3* z, real* w, real* dr, vec3 c) {\n"
-                                  "    formula_mandelbox (z, w, dr, c, 2.0f, 1.0f, 0.5f, 1.0f);\n}\n"),
-              "boxes");
+    EXPECT_EQ(
+        families_in(plain + "void f(vec3* z, real* w, real* dr, vec3 c) {\n"
+                            "    formula_mandelbox (z, w, dr, c, 2.0f, 1.0f, 0.5f, 1.0f);\n}\n"),
+        "boxes");
     EXPECT_EQ(families_in(plain + "real g(vec3 z, real w, real dr, vec3 c) {\n"
                                   "    return formula_menger_distance(z, w, dr, c, 3.0f, z);\n}\n"
                                   "void h(vec3* z, real* w, real* dr, vec3 c) {\n"
@@ -168,13 +174,15 @@ TEST(KernelAssembly, ProgramsHoldTheFormulaFamiliesTheSceneCalls) {
               "");
     // The library's families are kernel API 2: a scene of API 1 calling one is told so.
     try {
-        (void)assemble_program(test::inline_scene(plain + "void f(vec3* z, real* w, real* dr, vec3 c) "
-                                                          "{ formula_quaternion(z, w, dr, c); }\n"),
-                               {1, 0});
+        (void)assemble_program(
+            test::inline_scene(plain + "void f(vec3* z, real* w, real* dr, vec3 c) "
+                                       "{ formula_quaternion(z, w, dr, c); }\n"),
+            {1, 0});
         ADD_FAILURE() << "an API 1 scene calling a formula was assembled";
     } catch (const std::invalid_argument& error) {
-        EXPECT_NE(std::string(error.what()).find("needs kernel API 2: put `#define FGR_KERNEL_API 2`"),
-                  std::string::npos)
+        EXPECT_NE(
+            std::string(error.what()).find("needs kernel API 2: put `#define FGR_KERNEL_API 2`"),
+            std::string::npos)
             << error.what();
     }
 }
@@ -206,8 +214,10 @@ TEST(KernelAssembly, BuiltInScenesIterateTheLibrarysSteps) {
         const Scene scene = test::built_scene(plugin);
         const std::string program = assemble_program(scene, {1, 0}).source;
         EXPECT_NE(program.find(fmt::format("#line 1 \"{}\"", family)), std::string::npos) << plugin;
-        for (const char* copy : {"fold_box(", "quaternion_square(", "fold_menger(", "fold_sierpinski("}) {
-            EXPECT_EQ(code_of(scene.source).find(copy), std::string::npos) << plugin << " calls " << copy;
+        for (const char* copy :
+             {"fold_box(", "quaternion_square(", "fold_menger(", "fold_sierpinski("}) {
+            EXPECT_EQ(code_of(scene.source).find(copy), std::string::npos)
+                << plugin << " calls " << copy;
         }
     }
 }
@@ -243,7 +253,8 @@ protected:
 
 TEST_F(ProgramCacheTest, SecondBuildComesFromDiskAndADamagedEntryIsRebuilt) {
     const ComputeDevice device = open_device(-1);
-    const Scene scene = test::inline_scene("real scene_de(vec3 p, PARAMS) { return v3_length(p) - 0.5f; }");
+    const Scene scene =
+        test::inline_scene("real scene_de(vec3 p, PARAMS) { return v3_length(p) - 0.5f; }");
     const AssembledProgram program = assemble_program(scene, {4, 0});
     BuildReport report;
     ProgramCache(directory_).build(device, program, &report);
@@ -286,7 +297,8 @@ TEST(ProgramCacheKey, DependsOnSourceSwitchesAndDevice) {
     const AssembledProgram base = assemble_program(scene, {8, 0});
     const std::string key = ProgramCache::cache_key(device, base);
     EXPECT_EQ(key, ProgramCache::cache_key(device, base));
-    EXPECT_NE(key, ProgramCache::cache_key(device, assemble_program(scene, {8, FGR_EFFECT_SHADOWS})));
+    EXPECT_NE(key,
+              ProgramCache::cache_key(device, assemble_program(scene, {8, FGR_EFFECT_SHADOWS})));
     EXPECT_NE(key, ProgramCache::cache_key(device, assemble_program(scene, {16, 0})));
     ComputeDevice other = device;
     other.info.name = "device B";

@@ -3,21 +3,21 @@
 // packets: where a vector built-in lets one lane corrupt another (Debian's PoCL AVX-512 library
 // does, in double8/16 pow and float16 sin), this is where non-finite pixels show up. Inside-only
 // scenes (no DE) render in the brute-force mode, and their normals are its screen-space ones.
+#include <gtest/gtest.h>
+#include <spdlog/spdlog.h>
+
 #include <algorithm>
 #include <cmath>
+#include <glm/geometric.hpp>
 #include <ostream>
 #include <string>
 #include <vector>
 
-#include <glm/geometric.hpp>
-#include <gtest/gtest.h>
-#include <spdlog/spdlog.h>
-
 #include "camera/camera.hpp"
-#include "scene/discovery.hpp"
-#include "scene/parameters.hpp"
 #include "device/program_cache.hpp"
 #include "render/renderer.hpp"
+#include "scene/discovery.hpp"
+#include "scene/parameters.hpp"
 #include "test_scenes.hpp"
 
 namespace fgr {
@@ -66,7 +66,8 @@ TEST_P(LaneSafety, ColourDepthAndNormalsAreFiniteAtEveryWidth) {
     if (lane_case.double_precision && !device().info.has_fp64) GTEST_SKIP() << "no fp64";
     const Scene& scene = this->scene();
     FrameRequest request{64, 48, scene.cameras.front().view, default_param_values(scene)};
-    if (!lane_case.assignment.empty()) set_param_from_text(scene, request.params, lane_case.assignment);
+    if (!lane_case.assignment.empty())
+        set_param_from_text(scene, request.params, lane_case.assignment);
     const CameraBasis basis = camera_basis(request.view);
     const float footprint = pixel_angle(basis, request.width);
 
@@ -93,10 +94,10 @@ TEST_P(LaneSafety, ColourDepthAndNormalsAreFiniteAtEveryWidth) {
                     ++bad_depth;
                 } else if (t >= 0.0f) {
                     // Sample 0 is the pixel centre.
-                    hits.push_back(glm::vec3(basis.eye) + primary_ray_direction(basis, request.width,
-                                                                     request.height, float(x),
-                                                                     float(y)) *
-                                                   t);
+                    hits.push_back(glm::vec3(basis.eye) +
+                                   primary_ray_direction(basis, request.width, request.height,
+                                                         float(x), float(y)) *
+                                       t);
                     hit_depths.push_back(t);
                     if (brute) {
                         brute_normals.emplace_back(frame.normal[3 * pixel],
@@ -119,15 +120,17 @@ TEST_P(LaneSafety, ColourDepthAndNormalsAreFiniteAtEveryWidth) {
             bad_normals += !(std::isfinite(n.x) && std::isfinite(n.y) && std::isfinite(n.z)) ||
                            std::abs(glm::length(n) - 1.0f) > 1e-3f;
         }
-        EXPECT_EQ(bad_normals, 0) << "of " << normals.size() << " normals are not finite unit vectors";
+        EXPECT_EQ(bad_normals, 0) << "of " << normals.size()
+                                  << " normals are not finite unit vectors";
     }
 }
 
 INSTANTIATE_TEST_SUITE_P(Scenes, LaneSafety, ::testing::ValuesIn(lane_cases()),
                          [](const auto& test_info) {
-                             std::string name = test_info.param.scene_id +
-                                                (test_info.param.assignment.empty() ? "" : "_fractional") +
-                                                (test_info.param.double_precision ? "_double" : "_float");
+                             std::string name =
+                                 test_info.param.scene_id +
+                                 (test_info.param.assignment.empty() ? "" : "_fractional") +
+                                 (test_info.param.double_precision ? "_double" : "_float");
                              std::replace(name.begin(), name.end(), '-', '_');
                              return name;
                          });

@@ -1,18 +1,18 @@
 // The kernel's Mandelbulb DE (packets, complex powers for integer exponents) against a plain C++
 // DE written from the trigonometric formulas, in double precision, for both angle conventions.
+#include <gtest/gtest.h>
+
 #include <algorithm>
 #include <cmath>
+#include <glm/geometric.hpp>
 #include <random>
 #include <vector>
 
-#include <glm/geometric.hpp>
-#include <gtest/gtest.h>
-
-#include "scene/parameters.hpp"
 #include "device/program_cache.hpp"
-#include "render/renderer.hpp"
 #include "mandelbulb_reference.hpp"
 #include "random_points.hpp"
+#include "render/renderer.hpp"
+#include "scene/parameters.hpp"
 #include "test_scenes.hpp"
 
 namespace fgr {
@@ -69,7 +69,8 @@ TEST_P(MandelbulbDe, MatchesTheTrigonometricFormulas) {
     int close = 0;
     std::vector<double> relative_errors;
     for (size_t i = 0; i < points.size(); ++i) {
-        const double expected = test::mandelbulb_de<double>(points[i].x, points[i].y, points[i].z, bulb());
+        const double expected =
+            test::mandelbulb_de<double>(points[i].x, points[i].y, points[i].z, bulb());
         ASSERT_TRUE(std::isfinite(distances[i])) << "point " << i;
         const double error = std::abs(distances[i] - expected);
         relative_errors.push_back(error / std::max(std::abs(expected), 1e-3));
@@ -87,13 +88,13 @@ TEST_P(MandelbulbDe, FiniteAtSingularPoints) {
     const float tiny = 1e-30f;
     // The origin, signed zeros, the polar axis (rho = 0, where atan2(0, 0) decides the angle),
     // denormal-scale and exact-bailout points: all must agree with the reference DE.
-    const std::vector<glm::vec3> points{{0, 0, 0},     {-0.0f, 0, -0.0f}, {0, 0, 0.5f},
-                                        {0, 0, -0.5f}, {0.5f, 0, 0},      {0, 0.5f, 0},
-                                        {tiny, 0, 0},  {0, 0, tiny},      {2, 0, 0},
-                                        {0, 0, 2},     {1.2f, 0, 0},      {0, -1.1f, 0}};
+    const std::vector<glm::vec3> points{
+        {0, 0, 0},    {-0.0f, 0, -0.0f}, {0, 0, 0.5f}, {0, 0, -0.5f}, {0.5f, 0, 0}, {0, 0.5f, 0},
+        {tiny, 0, 0}, {0, 0, tiny},      {2, 0, 0},    {0, 0, 2},     {1.2f, 0, 0}, {0, -1.1f, 0}};
     const auto distances = kernel_de(points);
     for (size_t i = 0; i < points.size(); ++i) {
-        const double expected = test::mandelbulb_de<double>(points[i].x, points[i].y, points[i].z, bulb());
+        const double expected =
+            test::mandelbulb_de<double>(points[i].x, points[i].y, points[i].z, bulb());
         ASSERT_TRUE(std::isfinite(distances[i])) << "point " << i;
         EXPECT_NEAR(distances[i], expected, 1e-4 + 1e-3 * std::abs(expected)) << "point " << i;
     }
@@ -103,26 +104,28 @@ TEST_P(MandelbulbDe, FiniteAtSingularPoints) {
 
 TEST_P(MandelbulbDe, FarPointsAreFarNeverNaN) {
     const float huge = 1e30f;
-    const std::vector<glm::vec3> points{{huge, 0, 0}, {0, 0, -huge}, {huge, huge, huge},
-                                        {1e6f, -1e6f, 1e6f}, {-3e3f, 0, 0}};
+    const std::vector<glm::vec3> points{
+        {huge, 0, 0}, {0, 0, -huge}, {huge, huge, huge}, {1e6f, -1e6f, 1e6f}, {-3e3f, 0, 0}};
     for (float distance : kernel_de(points)) {
         EXPECT_FALSE(std::isnan(distance));
         EXPECT_GT(distance, 1.0f);  // +inf is an acceptable "very far"
     }
 }
 
-INSTANTIATE_TEST_SUITE_P(
-    Forms, MandelbulbDe,
-    ::testing::Values(DeCase{16, test::BulbForm::Colatitude, 8.0}, DeCase{1, test::BulbForm::Colatitude, 8.0},
-                      DeCase{16, test::BulbForm::Latitude, 8.0}, DeCase{8, test::BulbForm::Latitude, 8.0},
-                      DeCase{16, test::BulbForm::Colatitude, 7.5},
-                      DeCase{4, test::BulbForm::Latitude, 3.0}),
-    [](const auto& test_info) {
-        const DeCase& c = test_info.param;
-        return std::string(c.form == test::BulbForm::Colatitude ? "Colatitude" : "Latitude") +
-               "Power" + std::to_string(static_cast<int>(c.power * 10)) + "Width" +
-               std::to_string(c.packet_width);
-    });
+INSTANTIATE_TEST_SUITE_P(Forms, MandelbulbDe,
+                         ::testing::Values(DeCase{16, test::BulbForm::Colatitude, 8.0},
+                                           DeCase{1, test::BulbForm::Colatitude, 8.0},
+                                           DeCase{16, test::BulbForm::Latitude, 8.0},
+                                           DeCase{8, test::BulbForm::Latitude, 8.0},
+                                           DeCase{16, test::BulbForm::Colatitude, 7.5},
+                                           DeCase{4, test::BulbForm::Latitude, 3.0}),
+                         [](const auto& test_info) {
+                             const DeCase& c = test_info.param;
+                             return std::string(c.form == test::BulbForm::Colatitude ? "Colatitude"
+                                                                                     : "Latitude") +
+                                    "Power" + std::to_string(static_cast<int>(c.power * 10)) +
+                                    "Width" + std::to_string(c.packet_width);
+                         });
 
 }  // namespace
 }  // namespace fgr

@@ -8,19 +8,19 @@
 // The camera is built as the script builds it: Mandelbulber's fov 1 (tan of half the vertical
 // field of view 0.5), and the view turned half a pixel left and up, as Mandelbulber traces each
 // pixel's corner where fgr traces its centre.
+#include <fmt/format.h>
+#include <gtest/gtest.h>
+
 #include <algorithm>
 #include <cmath>
 #include <filesystem>
 #include <fstream>
+#include <glm/geometric.hpp>
+#include <glm/vec3.hpp>
+#include <nlohmann/json.hpp>
 #include <ostream>
 #include <string>
 #include <vector>
-
-#include <fmt/format.h>
-#include <glm/geometric.hpp>
-#include <glm/vec3.hpp>
-#include <gtest/gtest.h>
-#include <nlohmann/json.hpp>
 
 #include "child_process.hpp"
 #include "image/image_io.hpp"
@@ -78,11 +78,27 @@ std::vector<std::string> render_arguments(const json& item, const fs::path& outp
     const double pixel = 2.0 * kTanHalfVertical / kHeight * distance;
     target += 0.5 * pixel * (camera_up - right);
     const double fov = 2.0 * std::atan(kTanHalfVertical * kWidth / kHeight) * 180.0 / M_PI;
-    std::vector<std::string> args = {"render", item.at("fgr_scene").get<std::string>(),
-        "--width", std::to_string(kWidth), "--height", std::to_string(kHeight),
-        "--effects", "none", "--alpha", "--eye", text(eye), "--target", text(target),
-        "--up", text(up), "--fov", fmt::format("{:.12g}", fov),
-        "--set", fmt::format("max_distance={:.9g}", 10.0 * distance), "-o", output.string()};
+    std::vector<std::string> args = {"render",
+                                     item.at("fgr_scene").get<std::string>(),
+                                     "--width",
+                                     std::to_string(kWidth),
+                                     "--height",
+                                     std::to_string(kHeight),
+                                     "--effects",
+                                     "none",
+                                     "--alpha",
+                                     "--eye",
+                                     text(eye),
+                                     "--target",
+                                     text(target),
+                                     "--up",
+                                     text(up),
+                                     "--fov",
+                                     fmt::format("{:.12g}", fov),
+                                     "--set",
+                                     fmt::format("max_distance={:.9g}", 10.0 * distance),
+                                     "-o",
+                                     output.string()};
     for (const json& setting : item.at("fgr_set")) {
         args.push_back("--set");
         args.push_back(setting.get<std::string>());

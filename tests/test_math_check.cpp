@@ -1,17 +1,17 @@
 // The device math self-test: it passes where the built-ins are right, it catches a built-in that
 // corrupts one lane, its verdict is cached on disk, and a broken (precision, width) pair is
 // replaced by a narrower width that passes.
+#include <gtest/gtest.h>
+
 #include <filesystem>
 #include <fstream>
 #include <string>
 #include <vector>
 
-#include <gtest/gtest.h>
-
+#include "child_process.hpp"
 #include "device/math_check.hpp"
 #include "device/opencl_device.hpp"
 #include "device/program_cache.hpp"
-#include "child_process.hpp"
 
 namespace fgr {
 namespace {
@@ -47,8 +47,8 @@ TEST_F(MathCheckTest, ScalarAndFloatBuiltinsPass) {
 TEST_F(MathCheckTest, CatchesABuiltinThatCorruptsALane) {
     for (bool double_precision : precisions()) {
         for (int width : {4, 16}) {
-            const MathCheckReport report = run_math_check(*device_, cache_, double_precision,
-                                                          width, "-DFGR_CHECK_SWAP_EXP_LANES");
+            const MathCheckReport report = run_math_check(*device_, cache_, double_precision, width,
+                                                          "-DFGR_CHECK_SWAP_EXP_LANES");
             ASSERT_FALSE(report.passed());
             ASSERT_EQ(report.failures.size(), 1u) << report.failures.front();
             EXPECT_EQ(report.failures.front().rfind("exp: lane 0 of", 0), 0u)
@@ -63,11 +63,12 @@ TEST_F(MathCheckTest, TrustedWidthPassesTheCheck) {
     for (bool double_precision : precisions()) {
         for (int requested : {4, 8, 16}) {
             std::vector<std::string> warnings;
-            const int width = trusted_packet_width(
-                *device_, cache_, double_precision, requested,
-                [&](const std::string& line) { warnings.push_back(line); });
+            const int width =
+                trusted_packet_width(*device_, cache_, double_precision, requested,
+                                     [&](const std::string& line) { warnings.push_back(line); });
             EXPECT_LE(width, requested);
-            const MathCheckReport report = run_math_check(*device_, cache_, double_precision, width);
+            const MathCheckReport report =
+                run_math_check(*device_, cache_, double_precision, width);
             EXPECT_TRUE(report.passed()) << report.failures.front();
             EXPECT_EQ(warnings.size(), width == requested ? 0u : 1u);
             if (width != requested) {

@@ -48,11 +48,12 @@ size_t lines_in(const std::string& text) {
     return static_cast<size_t>(std::count(text.begin(), text.end(), '\n'));
 }
 
-const std::vector<std::string> kVideo = {"video", "mandelbulb", "--camera-path", "dive", "--width",
-                                         "32", "--height", "24", "-o", "out.mp4"};
+const std::vector<std::string> kVideo = {"video",   "mandelbulb", "--camera-path", "dive",
+                                         "--width", "32",         "--height",      "24",
+                                         "-o",      "out.mp4"};
 const std::vector<std::string> kView = {"view", "mandelbulb", "--exit-after", "1"};
-const std::vector<std::string> kRender = {"render", "mandelbulb", "--width", "32", "--height", "24",
-                                          "-o", "out.png"};
+const std::vector<std::string> kRender = {"render",   "mandelbulb", "--width", "32",
+                                          "--height", "24",         "-o",      "out.png"};
 
 TEST(Modules, FgrItselfLoadsNeitherFfmpegNorSdlNorMpi) {
     // The dynamic loader lists what a program needs and exits (what ldd does).
@@ -63,7 +64,8 @@ TEST(Modules, FgrItselfLoadsNeitherFfmpegNorSdlNorMpi) {
     ASSERT_NE(listed.out.find("libOpenCL"), std::string::npos) << "no library list:\n" << listed;
     for (const char* library : {"libavcodec", "libavformat", "libSDL2", "libOpenGL", "libmpi"}) {
         EXPECT_EQ(listed.out.find(library), std::string::npos)
-            << "fgr links " << library << " again:\n" << listed.out;
+            << "fgr links " << library << " again:\n"
+            << listed.out;
     }
 }
 

@@ -18,10 +18,10 @@
 #include <vector>
 
 #include "child_process.hpp"
-#include "video_decoding.hpp"
 #include "distributed/frame_wire.hpp"
 #include "distributed/task_farm.hpp"
 #include "image/hdr_io.hpp"
+#include "video_decoding.hpp"
 
 namespace fgr {
 namespace {
@@ -37,8 +37,13 @@ constexpr const char* kMpiexec = nullptr;
 // The options every run gets: as many ranks as asked on 2 cores, shared memory between them and
 // nothing else (no network), and root allowed (CI runs as root).
 std::vector<std::string> mpirun_options() {
-    return {"--oversubscribe", "--mca", "btl", "self,vader", "--mca",
-            "btl_vader_single_copy_mechanism", "none"};
+    return {"--oversubscribe",
+            "--mca",
+            "btl",
+            "self,vader",
+            "--mca",
+            "btl_vader_single_copy_mechanism",
+            "none"};
 }
 
 // Runs mpirun with the programs of `ranks` (MPMD: one fgr command line per rank), in `dir`.
@@ -72,7 +77,8 @@ std::map<int, long> tasks_by_rank(const std::string& out) {
     if (!std::regex_search(out, line, std::regex("mpi_tasks_by_rank ([0-9: ]+)"))) return tasks;
     const std::string text = line[1];
     const std::regex pair("([0-9]+):([0-9]+)");
-    for (auto it = std::sregex_iterator(text.begin(), text.end(), pair); it != std::sregex_iterator(); ++it) {
+    for (auto it = std::sregex_iterator(text.begin(), text.end(), pair);
+         it != std::sregex_iterator(); ++it) {
         tasks[std::stoi((*it)[1])] = std::stol((*it)[2]);
     }
     return tasks;
@@ -86,10 +92,12 @@ long printed_number(const std::string& out, const std::string& key) {
 
 TEST(InTaskOrder, HandsResultsOnInTaskOrderWhateverOrderTheyArriveIn) {
     std::vector<int64_t> handed;
-    InTaskOrder in_order([&](int64_t task, std::vector<uint8_t>&& result) {
-        EXPECT_EQ(result, std::vector<uint8_t>{uint8_t(task)});
-        handed.push_back(task);
-    }, 3);
+    InTaskOrder in_order(
+        [&](int64_t task, std::vector<uint8_t>&& result) {
+            EXPECT_EQ(result, std::vector<uint8_t>{uint8_t(task)});
+            handed.push_back(task);
+        },
+        3);
     for (int64_t task : {5, 3, 7, 4, 6}) in_order.add(task, {uint8_t(task)});
     EXPECT_EQ(handed, (std::vector<int64_t>{3, 4, 5, 6, 7}));
     EXPECT_EQ(in_order.held(), 0u);
@@ -148,7 +156,8 @@ protected:
 };
 
 TEST_F(MpiTest, AShadedStillOverThreeRanksEqualsTheSingleProcessRender) {
-    const std::vector<std::string> base = {"render", "mandelbulb", "--width", "200", "--height", "150"};
+    const std::vector<std::string> base = {"render", "mandelbulb", "--width",
+                                           "200",    "--height",   "150"};
     auto with = [&](std::vector<std::string> extra) {
         std::vector<std::string> args = base;
         args.insert(args.end(), extra.begin(), extra.end());
@@ -177,8 +186,9 @@ TEST_F(MpiTest, AShadedStillOverThreeRanksEqualsTheSingleProcessRender) {
 }
 
 std::vector<std::string> path_args(int spp, int seed, const std::string& output) {
-    return {"render", "mandelbulb", "--mode", "path", "--width", "96", "--height", "72", "--spp",
-            std::to_string(spp), "--seed", std::to_string(seed), "-o", output};
+    return {"render", "mandelbulb",         "--mode", "path",  "--width",
+            "96",     "--height",           "72",     "--spp", std::to_string(spp),
+            "--seed", std::to_string(seed), "-o",     output};
 }
 
 TEST_F(MpiTest, APathTracedStillOverThreeRanksHasTheirSamplesAdded) {
@@ -235,21 +245,23 @@ TEST_F(MpiTest, APathTracedStillOverThreeRanksHasTheirSamplesAdded) {
         const double standard_error = std::sqrt(variance / double(pixels));
         ASSERT_GT(standard_error, 0.0);
         EXPECT_LT(std::abs(mean) / standard_error, 3.0)
-            << "channel " << c << ": mean difference " << mean << ", standard error " << standard_error;
+            << "channel " << c << ": mean difference " << mean << ", standard error "
+            << standard_error;
     }
 }
 
 TEST_F(MpiTest, AVideoOverThreeRanksHasEveryFrameOnceInOrder) {
-    const std::vector<std::string> video = {"video", "mandelbulb", "--camera-path", "orbit",
-                                            "--duration", "1", "--fps", "8", "--width", "96",
-                                            "--height", "72"};
+    const std::vector<std::string> video = {"video",      "mandelbulb", "--camera-path", "orbit",
+                                            "--duration", "1",          "--fps",         "8",
+                                            "--width",    "96",         "--height",      "72"};
     auto with = [&](std::vector<std::string> extra) {
         std::vector<std::string> args = video;
         args.insert(args.end(), extra.begin(), extra.end());
         return args;
     };
     ASSERT_EQ(test::run_fgr(with({"--frames", "one", "-o", "one.mp4"}), dir()).exit_code, 0);
-    const test::RunResult shared = run_mpi_same(3, with({"--frames", "three", "-o", "three.mp4"}), dir(), false);
+    const test::RunResult shared =
+        run_mpi_same(3, with({"--frames", "three", "-o", "three.mp4"}), dir(), false);
     ASSERT_EQ(shared.exit_code, 0) << shared;
     const std::map<int, long> tasks = tasks_by_rank(shared.out);
     ASSERT_EQ(tasks.size(), 3u) << shared.out;
@@ -257,7 +269,8 @@ TEST_F(MpiTest, AVideoOverThreeRanksHasEveryFrameOnceInOrder) {
     long files = 0;
     for (const auto& entry : fs::directory_iterator(dir() / "three")) {
         ++files;
-        EXPECT_EQ(test::read_file(entry.path()), test::read_file(dir() / "one" / entry.path().filename()))
+        EXPECT_EQ(test::read_file(entry.path()),
+                  test::read_file(dir() / "one" / entry.path().filename()))
             << entry.path().filename();
     }
     EXPECT_EQ(files, 8);
@@ -274,15 +287,17 @@ TEST_F(MpiTest, AVideoOverThreeRanksHasEveryFrameOnceInOrder) {
         const std::vector<uint8_t>& a = one.frames[i].rgb;
         const std::vector<uint8_t>& b = three.frames[i].rgb;
         ASSERT_EQ(a.size(), b.size());
-        for (size_t k = 0; k < a.size(); ++k) squared += (double(a[k]) - b[k]) * (double(a[k]) - b[k]);
-        const double psnr = 10.0 * std::log10(255.0 * 255.0 * double(a.size()) / std::max(squared, 1e-9));
+        for (size_t k = 0; k < a.size(); ++k)
+            squared += (double(a[k]) - b[k]) * (double(a[k]) - b[k]);
+        const double psnr =
+            10.0 * std::log10(255.0 * 255.0 * double(a.size()) / std::max(squared, 1e-9));
         EXPECT_GT(psnr, 25.0) << "frame " << i;
     }
 }
 
 TEST_F(MpiTest, ARankThatFailsEndsTheJobWithOneMessageNamingIt) {
-    const std::vector<std::string> render = {"render", "mandelbulb", "--width", "96", "--height",
-                                             "72", "-o", "out.png"};
+    const std::vector<std::string> render = {"render",   "mandelbulb", "--width", "96",
+                                             "--height", "72",         "-o",      "out.png"};
     std::vector<std::string> bad_device = render;
     bad_device.insert(bad_device.end(), {"--device", "7"});
     const test::RunResult failed = run_mpi({render, bad_device, render}, dir());
@@ -304,7 +319,8 @@ TEST_F(MpiTest, CommandsThatDoNotShareWorkAreRefusedUnderMpirun) {
     const test::RunResult listed = run_mpi_same(2, {"list"}, dir());
     EXPECT_NE(listed.exit_code, 0);
     EXPECT_NE(listed.err.find("only `fgr render` and `fgr video` run across MPI ranks"),
-              std::string::npos) << listed.err;
+              std::string::npos)
+        << listed.err;
 }
 
 }  // namespace

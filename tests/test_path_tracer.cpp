@@ -4,32 +4,32 @@
 // and differ in variance, convergence at the Monte Carlo rate, finite output in hard cases and the
 // same bits for the same seed. Every mean is compared within 3 standard errors of the samples
 // themselves (pixel estimates are independent: each pixel scrambles its own sample sequence).
+#include <gtest/gtest.h>
+
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
+#include <glm/geometric.hpp>
 #include <map>
 #include <memory>
 #include <string>
 #include <vector>
 
-#include <glm/geometric.hpp>
-#include <gtest/gtest.h>
-
 #include "device/opencl_device.hpp"
-#include "scene/parameters.hpp"
-#include "render/path_settings.hpp"
 #include "device/program_cache.hpp"
+#include "render/path_settings.hpp"
 #include "render/renderer.hpp"
+#include "scene/parameters.hpp"
 #include "test_scenes.hpp"
 
 namespace fgr {
 namespace {
 
 // Shapes of the test scene (its `shape` parameter).
-constexpr int kSphere = 0;       // a unit sphere: convex, every scattered ray escapes
-constexpr int kInsideSphere = 1; // the camera at the centre of a hollow sphere of radius 3
-constexpr int kMandelbulb = 2;   // a fractal whose DE is an estimate (rays advance 0.8 of it)
-constexpr int kMenger = 3;       // a fractal whose DE is a true bound: crevices at every scale
+constexpr int kSphere = 0;        // a unit sphere: convex, every scattered ray escapes
+constexpr int kInsideSphere = 1;  // the camera at the centre of a hollow sphere of radius 3
+constexpr int kMandelbulb = 2;    // a fractal whose DE is an estimate (rays advance 0.8 of it)
+constexpr int kMenger = 3;        // a fractal whose DE is a true bound: crevices at every scale
 
 Scene material_scene() {
     Scene scene = test::inline_scene(R"CL(
@@ -360,8 +360,8 @@ TEST_F(PathTracer, SamplingStrategiesAgreeInMeanAndDifferInVariance) {
             expect_within(got, reference.mean, reference.standard_error, name);
             const double noise = noise_variance(shape, settings, 16);
             const double reference_noise = noise_variance(shape, reference_settings, 16);
-            std::printf("  noise variance %.5f vs %.5f with every strategy (ratio %.2f)\n",
-                        noise, reference_noise, noise / reference_noise);
+            std::printf("  noise variance %.5f vs %.5f with every strategy (ratio %.2f)\n", noise,
+                        reference_noise, noise / reference_noise);
             if (shape == kSphere && std::string(name) != "no MIS") {
                 EXPECT_GT(noise, 2.0 * reference_noise) << name;
             }
@@ -509,9 +509,9 @@ TEST_F(PathTracer, EveryPacketWidthRendersTheSameImage) {
     }
 }
 
-// The stability suite's hard camera placements (`fgr check`, host/diagnostics/scene_check.cpp) beside a scene's
-// own cameras: at the origin (inside most fractals), a centre ray through the origin, a narrow
-// view grazing the silhouette, and a camera 1000 times farther out.
+// The stability suite's hard camera placements (`fgr check`, host/diagnostics/scene_check.cpp)
+// beside a scene's own cameras: at the origin (inside most fractals), a centre ray through the
+// origin, a narrow view grazing the silhouette, and a camera 1000 times farther out.
 std::vector<std::pair<std::string, CameraView>> hard_views(const Scene& scene) {
     std::vector<std::pair<std::string, CameraView>> views;
     for (const NamedCamera& camera : scene.cameras) views.push_back({camera.name, camera.view});
@@ -524,8 +524,8 @@ std::vector<std::pair<std::string, CameraView>> hard_views(const Scene& scene) {
     through_origin.target = {0.0, 0.0, 0.0};
     views.push_back({"ray through the origin", through_origin});
     CameraView grazing = home;
-    const glm::dvec3 side = glm::normalize(glm::cross(home.target - home.position,
-                                                      glm::dvec3(home.up)));
+    const glm::dvec3 side =
+        glm::normalize(glm::cross(home.target - home.position, glm::dvec3(home.up)));
     grazing.target = home.target + side * glm::length(home.target - home.position) * 0.5;
     grazing.fov_degrees = 5.0f;
     views.push_back({"grazing", grazing});
@@ -567,9 +567,13 @@ void expect_every_scene_finite(bool double_precision) {
     }
 }
 
-TEST(PathTracerScenes, EveryBuiltSceneRendersFinitePixelsInFloat) { expect_every_scene_finite(false); }
+TEST(PathTracerScenes, EveryBuiltSceneRendersFinitePixelsInFloat) {
+    expect_every_scene_finite(false);
+}
 
-TEST(PathTracerScenes, EveryBuiltSceneRendersFinitePixelsInDouble) { expect_every_scene_finite(true); }
+TEST(PathTracerScenes, EveryBuiltSceneRendersFinitePixelsInDouble) {
+    expect_every_scene_finite(true);
+}
 
 }  // namespace
 }  // namespace fgr

@@ -4,9 +4,12 @@
 // deep zooms double's depths are a long-double march's. The assertions are about double: float's
 // figures are printed beside them, never required to be bad. And fgr render, fgr view and
 // fgr bench decide float or double alike.
+#include <gtest/gtest.h>
+
 #include <chrono>
 #include <cmath>
 #include <filesystem>
+#include <glm/vec2.hpp>
 #include <limits>
 #include <memory>
 #include <optional>
@@ -16,21 +19,18 @@
 #include <thread>
 #include <vector>
 
-#include <glm/vec2.hpp>
-#include <gtest/gtest.h>
-
-#include "child_process.hpp"
 #include "camera/camera.hpp"
-#include "diagnostics/bench.hpp"
 #include "camera/camera_path_file.hpp"
-#include "scene/parameters.hpp"
+#include "child_process.hpp"
+#include "deep_zoom.hpp"
+#include "diagnostics/bench.hpp"
+#include "mandelbulb_reference.hpp"
+#include "output/still_image.hpp"
 #include "render/precision.hpp"
 #include "render/renderer.hpp"
-#include "output/still_image.hpp"
-#include "viewer/render_worker.hpp"
-#include "deep_zoom.hpp"
-#include "mandelbulb_reference.hpp"
+#include "scene/parameters.hpp"
 #include "test_scenes.hpp"
+#include "viewer/render_worker.hpp"
 
 namespace fgr {
 namespace {
@@ -62,12 +62,13 @@ protected:
         const Frame in_double = renderer(true).render({width, height, view, params});
         const Frame in_float = renderer(false).render({width, height, view, params});
         const CameraBasis basis = camera_basis(view);
-        const long double footprint = param_value(*bulb_, params, "hit_threshold") * 2.0L *
-                                      basis.tan_half_fov / width;
+        const long double footprint =
+            param_value(*bulb_, params, "hit_threshold") * 2.0L * basis.tan_half_fov / width;
         std::vector<double> double_errors, float_errors;  // in footprints
         for (int py = 0; py < height; py += 2) {
             for (int px = 0; px < width; px += 2) {
-                const glm::vec3 dir = primary_ray_direction(basis, width, height, float(px), float(py));
+                const glm::vec3 dir =
+                    primary_ray_direction(basis, width, height, float(px), float(py));
                 long double t = 0.0L;
                 for (int step = 0; step < 1000; ++step) {
                     const long double de = test::mandelbulb_de<long double>(
@@ -83,14 +84,16 @@ protected:
             }
         }
         const auto median = [](std::vector<double> values) {
-            std::nth_element(values.begin(), values.begin() + long(values.size() / 2), values.end());
+            std::nth_element(values.begin(), values.begin() + long(values.size() / 2),
+                             values.end());
             return values[values.size() / 2];
         };
         const double worst = *std::max_element(double_errors.begin(), double_errors.end());
-        std::printf("depth against a long-double march, in footprints, over %zu pixels: double "
-                    "median %.3f largest %.3f; float median %.3f largest %.3g\n",
-                    double_errors.size(), median(double_errors), worst, median(float_errors),
-                    *std::max_element(float_errors.begin(), float_errors.end()));
+        std::printf(
+            "depth against a long-double march, in footprints, over %zu pixels: double "
+            "median %.3f largest %.3f; float median %.3f largest %.3g\n",
+            double_errors.size(), median(double_errors), worst, median(float_errors),
+            *std::max_element(float_errors.begin(), float_errors.end()));
         EXPECT_LT(worst, 2.0);
         EXPECT_LT(median(double_errors), 0.5);
     }
@@ -186,8 +189,8 @@ TEST_F(FloatAndDouble, RenderSwitchesToDoubleWhenTheHitsAreFinerThanFloat) {
              "--height", "48", "--precision", precision, "-o", "far.png"},
             dir.path());
         ASSERT_EQ(run.exit_code, 0) << run;
-        const bool switched = run.err.find("finer than float resolves: rendering in double") !=
-                              std::string::npos;
+        const bool switched =
+            run.err.find("finer than float resolves: rendering in double") != std::string::npos;
         EXPECT_EQ(switched, std::string(precision) == "auto") << run;
         EXPECT_EQ(run.err.find("work-item, double") != std::string::npos, switched) << run;
     }
@@ -226,7 +229,8 @@ TEST_F(FloatAndDouble, DoubleRendersAnOrdinaryViewLikeFloat) {
     const Frame in_float = renderer(false).render(canonical);
     for (int width : {4, 8, 16}) {
         const Frame in_double =
-            Renderer(*device_, cache_, *bulb_, {width, bulb_->effects, false, true}).render(canonical);
+            Renderer(*device_, cache_, *bulb_, {width, bulb_->effects, false, true})
+                .render(canonical);
         long both = 0;
         EXPECT_LT(float_depth_error(in_float, in_double, &both), 1e-4) << "width " << width;
         EXPECT_NEAR(double(in_double.hits), double(in_float.hits), 0.005 * double(in_float.hits))
@@ -273,8 +277,8 @@ TEST_F(FloatAndDouble, DoubleDeAgreesWithALongDoubleReference) {
     const std::vector<float> in_float = renderer(false).probe_de(points, params);
     double worst_double = 0.0, worst_float = 0.0;
     for (size_t i = 0; i < points.size(); ++i) {
-        const long double reference =
-            test::mandelbulb_de<long double>(points[i].x, points[i].y, points[i].z, test::BulbParams{});
+        const long double reference = test::mandelbulb_de<long double>(
+            points[i].x, points[i].y, points[i].z, test::BulbParams{});
         const double scale = double(reference) + 1e-3;
         worst_double = std::max(worst_double, double(std::abs(in_double[i] - reference)) / scale);
         worst_float = std::max(worst_float, double(std::abs(in_float[i] - reference)) / scale);
@@ -333,10 +337,11 @@ TEST_F(FloatAndDouble, DeepZoomInDoubleGivesNeighbouringRaysTheirOwnDepths) {
         ASSERT_EQ(in_double.hits, width * height) << "the view is filled by the surface";
         const DepthTexture fine = depth_texture(in_double, width, height);
         const DepthTexture coarse = depth_texture(renderer(false).render(request), width, height);
-        std::printf("%g across: equal neighbours double %.4f (float %.3f), roughness double %.3g "
-                    "(float %.3g)\n",
-                    across, fine.equal_neighbours, coarse.equal_neighbours, fine.median_roughness,
-                    coarse.median_roughness);
+        std::printf(
+            "%g across: equal neighbours double %.4f (float %.3f), roughness double %.3g "
+            "(float %.3g)\n",
+            across, fine.equal_neighbours, coarse.equal_neighbours, fine.median_roughness,
+            coarse.median_roughness);
         EXPECT_LT(fine.equal_neighbours, 0.01) << across;
     }
 }

@@ -10,20 +10,19 @@
 // real one: 0.08-0.45% of depths on these views at 240x180, 0.01-0.06% of hits. An unsafe cone
 // (narrowed on purpose) must fail the comparison by far, and tiles must render exactly the pixels
 // of the whole image.
+#include <fmt/format.h>
 #include <gtest/gtest.h>
 
 #include <algorithm>
 #include <cmath>
+#include <glm/geometric.hpp>
 #include <string>
 #include <vector>
 
-#include <fmt/format.h>
-#include <glm/geometric.hpp>
-
-#include "device_suite.hpp"
-#include "scene/parameters.hpp"
 #include "camera/projection.hpp"
+#include "device_suite.hpp"
 #include "render/renderer.hpp"
+#include "scene/parameters.hpp"
 #include "test_scenes.hpp"
 
 namespace fgr::test {
@@ -45,17 +44,18 @@ const Scene& scene_named(const std::string& id) {
 
 struct Agreement {
     long pixels = 0;
-    long hit_mismatches = 0;   // hit in one render, missed in the other
+    long hit_mismatches = 0;  // hit in one render, missed in the other
     long both_hit = 0;
-    long depth_outliers = 0;   // both hit, depths further apart than the footprint
+    long depth_outliers = 0;  // both hit, depths further apart than the footprint
     double hit_mismatch_fraction() const { return double(hit_mismatches) / double(pixels); }
     double depth_outlier_fraction() const {
         return both_hit ? double(depth_outliers) / double(both_hit) : 0.0;
     }
     std::string describe() const {
-        return fmt::format("{} of {} pixels hit in one render only; {} of {} depths differ by more "
-                           "than a footprint",
-                           hit_mismatches, pixels, depth_outliers, both_hit);
+        return fmt::format(
+            "{} of {} pixels hit in one render only; {} of {} depths differ by more "
+            "than a footprint",
+            hit_mismatches, pixels, depth_outliers, both_hit);
     }
 };
 
@@ -162,7 +162,8 @@ TEST_F(PrepassViews, EveryProjectionAgrees) {
         request.projection.kind = kind;
         const Pair pair = render_pair(scene, request);
         const Agreement agreement = compare(pair.plain, pair.started, request, pair.footprint);
-        SCOPED_TRACE(fmt::format("projection {}: {}", static_cast<int>(kind), agreement.describe()));
+        SCOPED_TRACE(
+            fmt::format("projection {}: {}", static_cast<int>(kind), agreement.describe()));
         EXPECT_LE(agreement.hit_mismatch_fraction(), kMaxHitDisagreement);
         EXPECT_LE(agreement.depth_outlier_fraction(), kMaxDepthDisagreement);
         EXPECT_GT(agreement.both_hit, agreement.pixels / 50);
@@ -238,7 +239,8 @@ TEST_F(PrepassViews, RegionsRenderTheWholeImagesPixels) {
                 static_cast<size_t>(y + part.region.y) * whole.width + x + part.region.x;
             differing += region.depth[in_region] != frame.depth[in_whole];
             for (int c = 0; c < 3; ++c) {
-                differing += region.image.rgb[in_region * 3 + c] != frame.image.rgb[in_whole * 3 + c];
+                differing +=
+                    region.image.rgb[in_region * 3 + c] != frame.image.rgb[in_whole * 3 + c];
             }
         }
     }

@@ -1,25 +1,25 @@
-// Cameras beyond the pinhole (camera/projection.hpp, kernels/fgr_camera.cl): small spheres placed in
-// known world directions must appear where the projection's own formulas (written out here, apart
-// from both implementations) put them, in the images the kernels render; stereo pairs must show
-// the parallax that separation, convergence and focal length predict; the hit threshold must
+// Cameras beyond the pinhole (camera/projection.hpp, kernels/fgr_camera.cl): small spheres placed
+// in known world directions must appear where the projection's own formulas (written out here,
+// apart from both implementations) put them, in the images the kernels render; stereo pairs must
+// show the parallax that separation, convergence and focal length predict; the hit threshold must
 // scale with the projection's pixel footprint; and the command line must refuse bad settings.
+#include <fmt/format.h>
+#include <gtest/gtest.h>
+
 #include <algorithm>
 #include <cmath>
 #include <filesystem>
+#include <glm/geometric.hpp>
 #include <string>
 #include <vector>
 
-#include <fmt/format.h>
-#include <glm/geometric.hpp>
-#include <gtest/gtest.h>
-
-#include "child_process.hpp"
-#include "device_suite.hpp"
-#include "scene/parameters.hpp"
-#include "device/program_cache.hpp"
 #include "camera/projection.hpp"
-#include "render/renderer.hpp"
+#include "child_process.hpp"
+#include "device/program_cache.hpp"
+#include "device_suite.hpp"
 #include "output/still_image.hpp"
+#include "render/renderer.hpp"
+#include "scene/parameters.hpp"
 #include "test_scenes.hpp"
 
 namespace fgr {
@@ -39,10 +39,12 @@ struct Ball {
     double radius;
 };
 Scene balls_scene(const std::vector<Ball>& balls) {
-    std::string de = "real scene_de(vec3 p, PARAMS) {\n    (void)fgr_params;\n    real d = 1e30f;\n";
+    std::string de =
+        "real scene_de(vec3 p, PARAMS) {\n    (void)fgr_params;\n    real d = 1e30f;\n";
     for (const Ball& ball : balls) {
         de += fmt::format(
-            "    d = fmin(d, v3_length(v3_sub(p, v3_splat({:.9e}f, {:.9e}f, {:.9e}f))) - {:.9e}f);\n",
+            "    d = fmin(d, v3_length(v3_sub(p, v3_splat({:.9e}f, {:.9e}f, {:.9e}f))) - "
+            "{:.9e}f);\n",
             ball.centre.x, ball.centre.y, ball.centre.z, ball.radius);
     }
     return test::inline_scene(de + "    return d;\n}\n");
@@ -51,9 +53,9 @@ Scene balls_scene(const std::vector<Ball>& balls) {
 // The point `distance` from the eye in the direction at `azimuth` (to the right of forward) and
 // `elevation` (above the horizon), in radians.
 glm::dvec3 seen_at(double azimuth, double elevation, double distance) {
-    const glm::dvec3 direction = std::cos(elevation) * (std::sin(azimuth) * kRight +
-                                                        std::cos(azimuth) * kForward) +
-                                 std::sin(elevation) * kUp;
+    const glm::dvec3 direction =
+        std::cos(elevation) * (std::sin(azimuth) * kRight + std::cos(azimuth) * kForward) +
+        std::sin(elevation) * kUp;
     return kEye + distance * direction;
 }
 
@@ -84,7 +86,8 @@ protected:
     Frame render(const Scene& scene, const Projection& projection, int width, int height,
                  RenderMode mode, const std::vector<std::string>& assignments = {},
                  bool stats = false) {
-        FrameRequest request{width, height, scene.cameras.front().view, default_param_values(scene)};
+        FrameRequest request{width, height, scene.cameras.front().view,
+                             default_param_values(scene)};
         request.projection = projection;
         if (mode == RenderMode::Brute) request.samples = kBrutePasses;
         for (const auto& assignment : assignments) {
@@ -119,9 +122,8 @@ TEST_P(ProjectionTest, PanoramaShowsKnownDirectionsAtTheirPixels) {
         const double y = (0.5 - c.latitude / 180.0) * height;
         // Each ball covers about 7 degrees; look in a window of 12 pixels around where it belongs.
         const int x0 = std::max(0, int(x) - 12), y0 = std::max(0, int(y) - 12);
-        const Centroid seen =
-            hit_centroid(frame, width, x0, y0, std::min(width, int(x) + 12),
-                         std::min(height, int(y) + 12));
+        const Centroid seen = hit_centroid(frame, width, x0, y0, std::min(width, int(x) + 12),
+                                           std::min(height, int(y) + 12));
         ASSERT_GT(seen.count, 10) << "no ball near pixel (" << x << ", " << y << ") for longitude "
                                   << c.longitude << ", latitude " << c.latitude;
         // A small disc's centroid is its centre's pixel up to second-order distortion (under
@@ -159,9 +161,9 @@ TEST_P(ProjectionTest, FisheyeShowsDirectionsAtRadiusProportionalToTheirAngle) {
         const double r = 100.0 * radians(c.theta) / half_fov;
         const double x = 120.0 + r * std::cos(radians(c.psi));
         const double y = 100.0 - r * std::sin(radians(c.psi));
-        const Centroid seen = hit_centroid(frame, width, std::max(0, int(x) - 10),
-                                           std::max(0, int(y) - 10), std::min(width, int(x) + 10),
-                                           std::min(height, int(y) + 10));
+        const Centroid seen =
+            hit_centroid(frame, width, std::max(0, int(x) - 10), std::max(0, int(y) - 10),
+                         std::min(width, int(x) + 10), std::min(height, int(y) + 10));
         ASSERT_GT(seen.count, 10) << "no ball near pixel (" << x << ", " << y << ") for theta "
                                   << c.theta;
         EXPECT_NEAR(seen.x, x, 0.5) << "theta " << c.theta << ", psi " << c.psi;
@@ -361,8 +363,8 @@ TEST(ProjectionCli, BadProjectionSettingsAreOneLineErrorsAndWriteNothing) {
         {"--projection", "pinhole", "--fisheye-fov", "90"},
     };
     for (const std::vector<std::string>& options : bad) {
-        std::vector<std::string> args{"render", "mandelbulb", "-o", "out.png", "--width", "16",
-                                      "--height", "16"};
+        std::vector<std::string> args{"render",  "mandelbulb", "-o",       "out.png",
+                                      "--width", "16",         "--height", "16"};
         args.insert(args.end(), options.begin(), options.end());
         const test::RunResult result = test::run_fgr(args, dir.path());
         const std::string where = test::describe("fgr", args);
@@ -380,8 +382,8 @@ TEST(ProjectionCli, RendersAPanoramaAndAStereoPair) {
     for (const std::vector<std::string>& options :
          {std::vector<std::string>{"--projection", "panorama"},
           std::vector<std::string>{"--stereo", "sbs", "--eye-separation", "0.1"}}) {
-        std::vector<std::string> args{"render", "mandelbulb", "-o", "out.png", "--width", "32",
-                                      "--height", "16"};
+        std::vector<std::string> args{"render",  "mandelbulb", "-o",       "out.png",
+                                      "--width", "32",         "--height", "16"};
         args.insert(args.end(), options.begin(), options.end());
         const test::RunResult result = test::run_fgr(args, dir.path());
         EXPECT_TRUE(result.exited && result.exit_code == 0) << result;

@@ -1,16 +1,16 @@
 // Rendering: the canonical view against a scalar C++ march, the same image at every packet width,
 // determinism, partial tiles, lighting, and parameters and camera paths reaching the image.
+#include <gtest/gtest.h>
+
 #include <cmath>
 #include <set>
 #include <string>
 
-#include <gtest/gtest.h>
-
 #include "camera/camera.hpp"
-#include "scene/parameters.hpp"
 #include "device/program_cache.hpp"
-#include "render/renderer.hpp"
 #include "mandelbulb_reference.hpp"
+#include "render/renderer.hpp"
+#include "scene/parameters.hpp"
 #include "test_scenes.hpp"
 
 namespace fgr {
@@ -29,8 +29,10 @@ protected:
 
     Frame render(const Scene& scene, int width, int height, int packet_width = 0,
                  const std::vector<std::string>& assignments = {}) {
-        FrameRequest request{width, height, scene.cameras.front().view, default_param_values(scene)};
-        for (const auto& assignment : assignments) set_param_from_text(scene, request.params, assignment);
+        FrameRequest request{width, height, scene.cameras.front().view,
+                             default_param_values(scene)};
+        for (const auto& assignment : assignments)
+            set_param_from_text(scene, request.params, assignment);
         return render(scene, request, packet_width);
     }
 
@@ -94,9 +96,10 @@ void expect_same_pixels(const Frame& packets, const Frame& scalar, const std::st
 TEST_F(RenderTest, PlainLiteralsWorkInFloatAndDouble) {
     const auto ball = [](const std::string& two, const std::string& half,
                          const std::string& radius) {
-        return test::inline_scene("real scene_de(vec3 p, PARAMS) {\n    (void)fgr_params;\n"
-                                  "    return v3_length(v3_scale(p, " + two + ")) * " + half +
-                                  " - " + radius + ";\n}\n");
+        return test::inline_scene(
+            "real scene_de(vec3 p, PARAMS) {\n    (void)fgr_params;\n"
+            "    return v3_length(v3_scale(p, " +
+            two + ")) * " + half + " - " + radius + ";\n}\n");
     };
     const Scene plain = ball("2.0", "0.5", "0.75");
     const Scene suffixed = ball("2.0f", "0.5f", "0.75f");
@@ -157,10 +160,10 @@ TEST_F(RenderTest, DefaultViewIsANonTrivialImage) {
     const double hit_fraction = double(frame.hits) / (80 * 60);
     EXPECT_GT(hit_fraction, 0.3);
     EXPECT_LT(hit_fraction, 0.8);
-    EXPECT_LT(frame.depth[0], 0.0f);                  // the corner sees the sky
-    EXPECT_GT(frame.depth[30 * 80 + 40], 0.0f);       // the centre sees the bulb
+    EXPECT_LT(frame.depth[0], 0.0f);             // the corner sees the sky
+    EXPECT_GT(frame.depth[30 * 80 + 40], 0.0f);  // the centre sees the bulb
     std::set<uint8_t> greys(frame.image.rgb.begin(), frame.image.rgb.end());
-    EXPECT_GT(greys.size(), 100u);                    // shaded, not flat
+    EXPECT_GT(greys.size(), 100u);  // shaded, not flat
     for (float depth : frame.depth) ASSERT_FALSE(std::isnan(depth));
 }
 
@@ -176,7 +179,8 @@ TEST_F(RenderTest, ParametersChangeTheImage) {
 TEST_F(RenderTest, CameraPathStartRendersItsFirstKeyframe) {
     const CameraPath* orbit = mandelbulb_->find_camera_path("orbit");
     ASSERT_NE(orbit, nullptr);
-    FrameRequest request{64, 48, evaluate_camera_path(*orbit, 0.0f), default_param_values(*mandelbulb_)};
+    FrameRequest request{64, 48, evaluate_camera_path(*orbit, 0.0f),
+                         default_param_values(*mandelbulb_)};
     const Frame start = render(*mandelbulb_, request);
     // Same view up to float rounding of the re-orthogonalised basis.
     EXPECT_LT(mean_abs_difference(start.image, render(*mandelbulb_, 64, 48).image), 0.1);
@@ -257,7 +261,10 @@ TEST_F(RenderTest, CancelStopsAFrameAndANeverCancellingHookChangesNothing) {
     EXPECT_TRUE(stopped.image.rgb.empty());
     EXPECT_EQ(polls, 4) << "polled once per band until it said stop";
     polls = 0;
-    request.cancel = [&] { ++polls; return false; };
+    request.cancel = [&] {
+        ++polls;
+        return false;
+    };
     const Frame banded = render(*mandelbulb_, request);
     EXPECT_FALSE(banded.cancelled);
     EXPECT_GT(polls, 4);
@@ -309,9 +316,8 @@ TEST_F(RenderTest, SecondaryRaysStartOnlyFromHits) {
     FrameRequest request{96, 72, mandelbulb_->cameras.front().view,
                          default_param_values(*mandelbulb_)};
     const int width = preferred_packet_width(device_->info);
-    for (const uint64_t effects :
-         {uint64_t{FGR_EFFECT_SHADOWS}, uint64_t{FGR_EFFECT_SOFT_SHADOWS},
-          uint64_t{FGR_EFFECT_SHADOWS | FGR_EFFECT_REFLECTIONS}}) {
+    for (const uint64_t effects : {uint64_t{FGR_EFFECT_SHADOWS}, uint64_t{FGR_EFFECT_SOFT_SHADOWS},
+                                   uint64_t{FGR_EFFECT_SHADOWS | FGR_EFFECT_REFLECTIONS}}) {
         SCOPED_TRACE(effects);
         Renderer counting(*device_, cache_, *mandelbulb_, {width, effects, true});
         const Frame counted = counting.render(request);

@@ -1,19 +1,20 @@
-// Split and merge for schedulers (output/parts/render_parts.hpp, fgr render --part/--tile, fgr merge,
-// fgr video --frame-range, fgr merge --frames): tiles merge into exactly the whole render (PNG
-// bytes, EXR floats, the brute mode's neighbour-reading shading included); parts of different
+// Split and merge for schedulers (output/parts/render_parts.hpp, fgr render --part/--tile, fgr
+// merge, fgr video --frame-range, fgr merge --frames): tiles merge into exactly the whole render
+// (PNG bytes, EXR floats, the brute mode's neighbour-reading shading included); parts of different
 // seeds merge into the sample-weighted mean with the summed samples; parts that do not make one
 // image are refused by name with nothing written; a frame range renders exactly those frames of
 // the whole video, and a frame directory encodes into a video of its frames.
-#include <gtest/gtest.h>
-
 #include <ImfChannelList.h>
 #include <ImfFrameBuffer.h>
 #include <ImfHeader.h>
 #include <ImfInputFile.h>
+#include <gtest/gtest.h>
 
 extern "C" {
 #include <libavformat/avformat.h>
 }
+
+#include <fmt/format.h>
 
 #include <algorithm>
 #include <cmath>
@@ -22,14 +23,12 @@ extern "C" {
 #include <string>
 #include <vector>
 
-#include <fmt/format.h>
-
 #include "child_process.hpp"
 #include "device_suite.hpp"
 #include "image/image_io.hpp"
-#include "scene/parameters.hpp"
 #include "output/parts/render_parts.hpp"
 #include "render/renderer.hpp"
+#include "scene/parameters.hpp"
 #include "test_scenes.hpp"
 
 namespace fgr {

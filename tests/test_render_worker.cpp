@@ -6,26 +6,25 @@
 // or the camera flown up to the surface) render in double under auto.
 #include <gtest/gtest.h>
 
-#include <glm/geometric.hpp>
-
 #include <chrono>
 #include <filesystem>
 #include <functional>
+#include <glm/geometric.hpp>
 #include <thread>
 
 #include "child_process.hpp"
-#include "scene/ifs/ifs.hpp"
-#include "image/image_io.hpp"
-#include "device/opencl_device.hpp"
-#include "scene/parameters.hpp"
-#include "fgr/plugin.h"
-#include "render/precision.hpp"
-#include "device/program_cache.hpp"
-#include "render/renderer.hpp"
-#include "viewer/render_worker.hpp"
 #include "deep_zoom.hpp"
+#include "device/opencl_device.hpp"
+#include "device/program_cache.hpp"
+#include "fgr/plugin.h"
+#include "image/image_io.hpp"
 #include "mandelbulb_reference.hpp"
+#include "render/precision.hpp"
+#include "render/renderer.hpp"
+#include "scene/ifs/ifs.hpp"
+#include "scene/parameters.hpp"
 #include "test_scenes.hpp"
+#include "viewer/render_worker.hpp"
 
 namespace fgr::viewer {
 namespace {
@@ -36,7 +35,8 @@ constexpr int kSphere = 0;
 constexpr int kBroken = 1;
 
 std::vector<std::shared_ptr<const Scene>> worker_scenes() {
-    Scene broken = test::inline_scene("real scene_de(vec3 p, PARAMS) { return undeclared_radius; }");
+    Scene broken =
+        test::inline_scene("real scene_de(vec3 p, PARAMS) { return undeclared_radius; }");
     broken.id = "broken";
     return {std::make_shared<const Scene>(test::sphere_scene()),
             std::make_shared<const Scene>(broken)};
@@ -99,10 +99,12 @@ protected:
 
     // `scene` rendered here, not by the worker: its default view at the sample cap (3).
     Frame render_directly(const Scene& scene, int width, int height) {
-        FrameRequest request{width, height, scene.cameras.front().view, default_param_values(scene)};
+        FrameRequest request{width, height, scene.cameras.front().view,
+                             default_param_values(scene)};
         request.samples = 3;
         ProgramCache cache{std::filesystem::path()};
-        return Renderer(device(), cache, scene, {preferred_packet_width(device().info), scene.effects})
+        return Renderer(device(), cache, scene,
+                        {preferred_packet_width(device().info), scene.effects})
             .render(request);
     }
 
@@ -145,7 +147,8 @@ TEST_F(RenderWorkerTest, StillViewIsRefinedToTheSampleCapThenLeftAlone) {
     const Image8 expected = renderer.render(request).image;
     int largest = 0;
     for (size_t i = 0; i < expected.rgb.size(); ++i) {
-        largest = std::max(largest, std::abs(int(expected.rgb[i]) - int(frames_.back().image.rgb[i])));
+        largest =
+            std::max(largest, std::abs(int(expected.rgb[i]) - int(frames_.back().image.rgb[i])));
     }
     EXPECT_LE(largest, 1);
     // Idle means idle: nothing more arrives for the same view.
@@ -189,7 +192,8 @@ TEST_F(RenderWorkerTest, MovingViewGetsPreviewsAtTheResolutionThatHoldsTheTarget
         ViewState moving = state(kSphere, 256, 192, generation, true);
         moving.view.position.x += 0.01f * static_cast<float>(generation);
         worker_->submit(moving);
-        ASSERT_TRUE(wait_for([&] { return !frames_.empty() && frames_.back().generation == generation; }));
+        ASSERT_TRUE(
+            wait_for([&] { return !frames_.empty() && frames_.back().generation == generation; }));
     }
     for (const DisplayFrame& frame : frames_) {
         EXPECT_LT(frame.scale, 1.0f);
@@ -211,7 +215,8 @@ TEST_F(RenderWorkerTest, ANewerViewAbandonsRefiningTheOlderOne) {
     ViewState moved = state(kSphere, 320, 240, 2);
     moved.view.position.z += 0.5f;
     worker_->submit(moved);
-    ASSERT_TRUE(wait_for([&] { return frames_.back().generation == 2 && frames_.back().samples >= 2; }));
+    ASSERT_TRUE(
+        wait_for([&] { return frames_.back().generation == 2 && frames_.back().samples >= 2; }));
     // Once the newer view shows, no frame of the older one follows; its refinement (1000
     // samples) was abandoned, or the test would have timed out waiting.
     bool seen_new = false;
@@ -361,12 +366,15 @@ protected:
         EXPECT_GT(apart, 10) << "this view cannot tell float from double";
         const bool like_float = pixels_over_one_level(frame->image, images[0]) == 0;
         const bool like_double = pixels_over_one_level(frame->image, images[1]) == 0;
-        EXPECT_NE(like_float, like_double) << "the image is neither float's nor double's ("
-                                           << apart << " pixels tell them apart)";
+        EXPECT_NE(like_float, like_double)
+            << "the image is neither float's nor double's (" << apart << " pixels tell them apart)";
         EXPECT_EQ(frame->double_precision, like_double) << "the frame's label is not what rendered";
-        std::printf("float and double differ in %ld pixels; the worker's image is %s's (label %s)\n",
-                    apart, like_double ? "double" : like_float ? "float" : "neither",
-                    frame->double_precision ? "double" : "float");
+        std::printf(
+            "float and double differ in %ld pixels; the worker's image is %s's (label %s)\n", apart,
+            like_double  ? "double"
+            : like_float ? "float"
+                         : "neither",
+            frame->double_precision ? "double" : "float");
         return like_double;
     }
 

@@ -1,26 +1,25 @@
-// Temporal reprojection (render/prepass/reprojection.hpp): the viewer's previews start camera rays from the
-// previous frame's depths seen from the new view. Hints must fall short of the surface the new
-// ray meets (a plane seen from a moved camera: every hint within the margin below the true
+// Temporal reprojection (render/prepass/reprojection.hpp): the viewer's previews start camera rays
+// from the previous frame's depths seen from the new view. Hints must fall short of the surface the
+// new ray meets (a plane seen from a moved camera: every hint within the margin below the true
 // distance, never past it), leave holes and depth edges alone, and a preview rendered from them
 // must find what the plain march finds (the cone prepass's tolerances, tests/test_prepass.cpp),
 // while a wrong reprojection is caught by the same comparison.
+#include <fmt/format.h>
 #include <gtest/gtest.h>
 
 #include <algorithm>
 #include <cmath>
+#include <glm/geometric.hpp>
 #include <optional>
 #include <string>
 #include <vector>
 
-#include <fmt/format.h>
-#include <glm/geometric.hpp>
-
-#include "device_suite.hpp"
 #include "camera/camera.hpp"
-#include "scene/parameters.hpp"
 #include "camera/projection.hpp"
-#include "render/renderer.hpp"
+#include "device_suite.hpp"
 #include "render/prepass/reprojection.hpp"
+#include "render/renderer.hpp"
+#include "scene/parameters.hpp"
 #include "test_scenes.hpp"
 
 namespace fgr::test {
@@ -62,8 +61,8 @@ TEST(Reprojection, HintsFallJustShortOfAPlaneSeenFromAMovedCamera) {
     // Forward, sideways and turned a little: the new frame is mostly inside the old one.
     CameraView after = looking_along_y({0.05, -0.8, 0.28});
     after.target += glm::dvec3(0.03, 0.0, 0.02);
-    const std::vector<float> hints = reproject_start_hints(before, after, Projection{}, width,
-                                                           height, kMargin);
+    const std::vector<float> hints =
+        reproject_start_hints(before, after, Projection{}, width, height, kMargin);
     long hinted = 0;
     for (int y = 0; y < height; ++y) {
         for (int x = 0; x < width; ++x) {
@@ -169,16 +168,16 @@ TEST_F(ReprojectionRender, HintedPreviewsFindWhatThePlainMarchFinds) {
         const Frame previous = renderer.render(earlier);
         FrameRequest request = dive_frame(scene, time);
         const Frame plain = renderer.render(request);
-        request.start_hints = reproject_start_hints(
-            DepthView{earlier.view, earlier.projection, earlier.width, earlier.height,
-                      previous.depth},
-            request.view, request.projection, request.width, request.height);
+        request.start_hints =
+            reproject_start_hints(DepthView{earlier.view, earlier.projection, earlier.width,
+                                            earlier.height, previous.depth},
+                                  request.view, request.projection, request.width, request.height);
         const Frame hinted = renderer.render(request);
         const float footprint = footprint_of(scene, request);
         const Counts counts = compare(plain, hinted, footprint);
-        SCOPED_TRACE(fmt::format("t = {}: {} of {} hit in one only, {} of {} depths apart",
-                                 time, counts.hit_mismatches, counts.pixels,
-                                 counts.depth_outliers, counts.both_hit));
+        SCOPED_TRACE(fmt::format("t = {}: {} of {} hit in one only, {} of {} depths apart", time,
+                                 counts.hit_mismatches, counts.pixels, counts.depth_outliers,
+                                 counts.both_hit));
         EXPECT_LE(counts.hit_mismatches, counts.pixels / 1000);
         EXPECT_LE(counts.depth_outliers, counts.both_hit / 200);
         plain_evaluations += plain.stats->de_evaluations;

@@ -5,6 +5,9 @@
 // dimensions are uncorrelated and uniform (z-scores and χ² at stated significance levels); a
 // smooth integrand converges much faster than with independent samples; the same inputs give the
 // same bits.
+#include <fmt/format.h>
+#include <gtest/gtest.h>
+
 #include <algorithm>
 #include <cmath>
 #include <cstdint>
@@ -17,14 +20,11 @@
 #include <utility>
 #include <vector>
 
-#include <fmt/format.h>
-#include <gtest/gtest.h>
-
-#include "device_suite.hpp"
 #include "device/opencl_device.hpp"
-#include "render/precision.hpp"
 #include "device/program_cache.hpp"
+#include "device_suite.hpp"
 #include "kernel_test_program.hpp"
+#include "render/precision.hpp"
 
 namespace fgr {
 namespace {
@@ -174,7 +174,6 @@ protected:
         EXPECT_EQ(outside, 0) << build.label() << ": values outside [0, 1)";
         return result;
     }
-
 };
 
 // Which of the 2^bits equal intervals of [0, 1) holds u.

@@ -1,14 +1,14 @@
 // `fgr new-scene`: names derived from the id, placeholders filled, the project written all at
 // once into a new or empty directory and never over anything else. (Building the result against
 // an installed fgr is tests/sdk_end_to_end.sh.)
+#include <gtest/gtest.h>
+
 #include <filesystem>
 #include <fstream>
 
-#include <gtest/gtest.h>
-
 #include "child_process.hpp"
-#include "scene/parameters.hpp"
 #include "cli/scaffold.hpp"
+#include "scene/parameters.hpp"
 
 namespace fgr {
 namespace {
@@ -23,8 +23,8 @@ TEST(Scaffold, NamesFollowFromTheId) {
 }
 
 TEST(Scaffold, RefusesIdsThePluginLoaderWouldRefuse) {
-    const std::vector<std::string> bad_ids = {"",    "My-scene", "2d",           "-x",
-                                              "a b", "a.b",      "caf\xc3\xa9", std::string(64, 'a')};
+    const std::vector<std::string> bad_ids = {
+        "", "My-scene", "2d", "-x", "a b", "a.b", "caf\xc3\xa9", std::string(64, 'a')};
     for (const std::string& bad : bad_ids) {
         EXPECT_THROW(scaffold_names(bad), UsageError) << "'" << bad << "'";
     }
@@ -91,15 +91,15 @@ TEST_F(ScaffoldProject, UsesAnEmptyDirectoryButNeverOverwrites) {
 TEST_F(ScaffoldProject, CommandLineReportsBadNamesOnOneLine) {
     test::ChildOptions options;
     options.working_dir = dir_.path();
-    const test::RunResult bad = test::run_child(FGR_TEST_FGR_EXE, {"new-scene", "Bad Name"}, options);
+    const test::RunResult bad =
+        test::run_child(FGR_TEST_FGR_EXE, {"new-scene", "Bad Name"}, options);
     EXPECT_EQ(bad.exit_code, 2) << bad;
     EXPECT_NE(bad.err.find("fgr: error: scene name 'Bad Name' must be a scene id"),
               std::string::npos)
         << bad;
     EXPECT_FALSE(fs::exists(dir_.path() / "Bad Name"));
-    const test::RunResult good = test::run_child(FGR_TEST_FGR_EXE, {"new-scene", "nice", "--dir",
-                                                                    "projects/nice"},
-                                                 options);
+    const test::RunResult good =
+        test::run_child(FGR_TEST_FGR_EXE, {"new-scene", "nice", "--dir", "projects/nice"}, options);
     EXPECT_EQ(good.exit_code, 0) << good;
     EXPECT_TRUE(fs::exists(dir_.path() / "projects/nice/nice.cl"));
     EXPECT_NE(good.out.find("cmake -S projects/nice -B projects/nice/build"), std::string::npos)

@@ -3,29 +3,29 @@
 // the version-2 helpers that take what a vec3 parameter gives and the folds (checked by their
 // geometry, through the kernel, at packet widths 1 and 16), and the orbit-scene contract
 // (kernels/fgr_iterate.cl) against the same maths written out by hand in packet form.
+#include <gtest/gtest.h>
+
 #include <algorithm>
 #include <array>
 #include <cmath>
 #include <filesystem>
+#include <glm/geometric.hpp>
+#include <glm/vec3.hpp>
 #include <regex>
 #include <sstream>
 #include <string>
 #include <string_view>
 #include <vector>
 
-#include <glm/geometric.hpp>
-#include <glm/vec3.hpp>
-#include <gtest/gtest.h>
-
 #include "child_process.hpp"
-#include "scene/kernel_api.hpp"
+#include "device/program_cache.hpp"
 #include "fgr/kernel_library.hpp"
+#include "random_points.hpp"
+#include "render/renderer.hpp"
+#include "render_probes.hpp"
+#include "scene/kernel_api.hpp"
 #include "scene/parameters.hpp"
 #include "scene/plugin_loader.hpp"
-#include "device/program_cache.hpp"
-#include "render/renderer.hpp"
-#include "random_points.hpp"
-#include "render_probes.hpp"
 #include "test_scenes.hpp"
 
 namespace fgr {
@@ -60,7 +60,8 @@ TEST(KernelApi, TheVersionIsReadFromTheSourcesOwnDefine) {
     EXPECT_EQ(declared_kernel_api("real scene_de(vec3 p, PARAMS) { return p.x; }"), 1);
     EXPECT_EQ(declared_kernel_api("#define FGR_KERNEL_API 2\nreal scene_de..."), 2);
     EXPECT_EQ(declared_kernel_api("  #  define   FGR_KERNEL_API 1  \n"), 1);
-    EXPECT_EQ(declared_kernel_api("/* #define FGR_KERNEL_API 2 */\n// #define FGR_KERNEL_API 2\n"), 1);
+    EXPECT_EQ(declared_kernel_api("/* #define FGR_KERNEL_API 2 */\n// #define FGR_KERNEL_API 2\n"),
+              1);
     for (const char* unknown : {"#define FGR_KERNEL_API 4\n", "#define FGR_KERNEL_API 0\n",
                                 "#define FGR_KERNEL_API two\n"}) {
         try {
@@ -75,12 +76,14 @@ TEST(KernelApi, TheVersionIsReadFromTheSourcesOwnDefine) {
 
 TEST(KernelApi, TheHostAndTheLibraryAgreeOnTheLatestVersion) {
     const auto prelude = kernel_prelude();
-    const auto types = std::find_if(prelude.begin(), prelude.end(),
-                                    [](const KernelFile& file) { return std::string_view(file.name) == "fgr_types.cl"; });
+    const auto types = std::find_if(prelude.begin(), prelude.end(), [](const KernelFile& file) {
+        return std::string_view(file.name) == "fgr_types.cl";
+    });
     ASSERT_NE(types, prelude.end());
     std::smatch match;
     const std::string text(types->source);
-    ASSERT_TRUE(std::regex_search(text, match, std::regex(R"(#define FGR_KERNEL_API_LATEST (\d+))")));
+    ASSERT_TRUE(
+        std::regex_search(text, match, std::regex(R"(#define FGR_KERNEL_API_LATEST (\d+))")));
     EXPECT_EQ(std::stoi(match[1].str()), kKernelApiLatest);
 }
 
@@ -133,10 +136,12 @@ TEST(KernelApi, EveryVersionOneHelperKeepsItsSignature) {
 // takes the rotation axis as a vec3 (what a parameter gives), not a float3.
 TEST(KernelApi, EachVersionSeesOnlyItsOwnNamesAndSignatures) {
     const std::string uses_v2_fold =
-        "real scene_de(vec3 p, PARAMS) { (void)fgr_params; return v3_length(fold_icosahedral(p)) - 1.0f; }\n";
+        "real scene_de(vec3 p, PARAMS) { (void)fgr_params; return v3_length(fold_icosahedral(p)) - "
+        "1.0f; }\n";
     const std::string uses_v1_rotation =
         "real scene_de(vec3 p, PARAMS) { (void)fgr_params;\n"
-        "  return v3_length(op_rotate(p, rotation_about_axis((float3)(0.0f, 0.0f, 1.0f), 30.0f))) - 1.0f; }\n";
+        "  return v3_length(op_rotate(p, rotation_about_axis((float3)(0.0f, 0.0f, 1.0f), 30.0f))) "
+        "- 1.0f; }\n";
     const auto builds = [](const std::string& source) {
         ProgramCache no_disk_cache{std::filesystem::path()};
         try {
@@ -243,7 +248,8 @@ std::vector<glm::vec3> cyclic_sign_permutations(float a, float b, float c) {
         for (int signs = 0; signs < 8; ++signs) {
             const glm::vec3 p(signs & 1 ? -base.x : base.x, signs & 2 ? -base.y : base.y,
                               signs & 4 ? -base.z : base.z);
-            if (std::none_of(out.begin(), out.end(), [&](glm::vec3 q) { return q == p; })) out.push_back(p);
+            if (std::none_of(out.begin(), out.end(), [&](glm::vec3 q) { return q == p; }))
+                out.push_back(p);
         }
     }
     return out;
@@ -261,7 +267,8 @@ TEST_P(Helpers, TheIcosahedralFoldFoldsBothPolyhedraOntoTheirCornerAndKeepsLengt
     auto icosahedron = cyclic_sign_permutations(1.0f, 0.0f, phi);
     ASSERT_EQ(icosahedron.size(), 12u);
     auto dodecahedron = cyclic_sign_permutations(0.0f, 1.0f / phi, phi);
-    for (const glm::vec3 cube : cyclic_sign_permutations(1.0f, 1.0f, 1.0f)) dodecahedron.push_back(cube);
+    for (const glm::vec3 cube : cyclic_sign_permutations(1.0f, 1.0f, 1.0f))
+        dodecahedron.push_back(cube);
     ASSERT_EQ(dodecahedron.size(), 20u);
     for (auto& p : icosahedron) p = glm::normalize(p);
     for (auto& p : dodecahedron) p = glm::normalize(p);
@@ -270,10 +277,12 @@ TEST_P(Helpers, TheIcosahedralFoldFoldsBothPolyhedraOntoTheirCornerAndKeepsLengt
     // Five reflections of unit vectors in float: a few ulps each.
     constexpr float kTolerance = 2e-6f;
     for (const glm::vec3 q : probe.run(0, icosahedron).points) {
-        EXPECT_LT(glm::length(q - icosahedron_corner), kTolerance) << q.x << " " << q.y << " " << q.z;
+        EXPECT_LT(glm::length(q - icosahedron_corner), kTolerance)
+            << q.x << " " << q.y << " " << q.z;
     }
     for (const glm::vec3 q : probe.run(0, dodecahedron).points) {
-        EXPECT_LT(glm::length(q - dodecahedron_corner), kTolerance) << q.x << " " << q.y << " " << q.z;
+        EXPECT_LT(glm::length(q - dodecahedron_corner), kTolerance)
+            << q.x << " " << q.y << " " << q.z;
     }
     const glm::vec3 mirror(-0.5f, -0.80901699f, 0.30901699f);
     const auto points = random_points(200, 3.0f, 7);
@@ -316,7 +325,8 @@ TEST_P(Helpers, SphereInversionMapsOutsideInWithItsScaleAndStopsAtTheMinimumRadi
     const auto once = probe.run(2, points);
     const auto twice = probe.run(2, once.points);
     for (size_t i = 0; i < points.size(); ++i) {
-        EXPECT_LT(glm::length(twice.points[i] - points[i]), 1e-4f * (1.0f + glm::length(points[i])));
+        EXPECT_LT(glm::length(twice.points[i] - points[i]),
+                  1e-4f * (1.0f + glm::length(points[i])));
         EXPECT_NEAR(once.dr[i] * twice.dr[i], 1.0f, 1e-4f);
     }
 }
@@ -331,12 +341,14 @@ TEST_P(Helpers, RotationsTakeTheirAxisFromAVec3ParameterOfAnyLength) {
         EXPECT_NEAR(q.z, 0.5f, 1e-6f);
     }
     // 120 degrees about (1, 1, 1) cycles the axes: x -> y -> z.
-    const auto cycled = probe.run(3, {{1.0f, 0.0f, 0.0f}}, {"axis=3,3,3", "angle=120"}).points.front();
+    const auto cycled =
+        probe.run(3, {{1.0f, 0.0f, 0.0f}}, {"axis=3,3,3", "angle=120"}).points.front();
     EXPECT_NEAR(cycled.x, 0.0f, 1e-6f);
     EXPECT_NEAR(cycled.y, 1.0f, 1e-6f);
     EXPECT_NEAR(cycled.z, 0.0f, 1e-6f);
     // A zero axis turns nothing.
-    const auto kept = probe.run(3, {{0.3f, -0.2f, 0.9f}}, {"axis=0,0,0", "angle=37"}).points.front();
+    const auto kept =
+        probe.run(3, {{0.3f, -0.2f, 0.9f}}, {"axis=0,0,0", "angle=37"}).points.front();
     EXPECT_EQ(kept, glm::vec3(0.3f, -0.2f, 0.9f));
 }
 
@@ -366,7 +378,8 @@ TEST(OrbitScenes, TheSdkExamplesRenderAsTheirHandWrittenPacketForms) {
                                      std::pair{"pseudo-kleinian", "pseudo_kleinian_packet.cl"}}) {
         const Scene example = sdk_example(id);
         Scene by_hand = example;
-        by_hand.source = read_file(std::filesystem::path(FGR_TEST_SOURCE_DIR) / "../bench/authoring" / packet);
+        by_hand.source =
+            read_file(std::filesystem::path(FGR_TEST_SOURCE_DIR) / "../bench/authoring" / packet);
         for (const int width : kWidths) {
             const Frame orbit = render_small(example, width);
             const Frame written = render_small(by_hand, width);
@@ -388,7 +401,8 @@ TEST(OrbitScenes, TheSdkExamplesRenderAsTheirHandWrittenPacketForms) {
 // The lines of an OpenCL source that hold code: comments removed, blank lines skipped, each line
 // stripped of surrounding blanks.
 std::vector<std::string> code_lines(const std::string& source) {
-    const std::string code = std::regex_replace(source, std::regex(R"(/\*[\s\S]*?\*/|//[^\n]*)"), "");
+    const std::string code =
+        std::regex_replace(source, std::regex(R"(/\*[\s\S]*?\*/|//[^\n]*)"), "");
     std::vector<std::string> lines;
     std::istringstream in(code);
     for (std::string line; std::getline(in, line);) {
@@ -430,7 +444,8 @@ FGR_ITERATE
     const real r7 = fgr_pown(r, 7);
     dr = 8.0f * r7 * dr + 1.0f;
     z = v3_add(bulb_power_integer(z, r, r7 * r, 8, 0), c);
-FGR_DISTANCE(select(0.5f * log(v3_length(z)) * v3_length(z) / dr, fgr_real(0.0f), v3_length(z) <= 0.0f))
+FGR_DISTANCE(select(0.5f * log(v3_length(z)) * v3_length(z) / dr, fgr_real(0.0f),
+                    v3_length(z) <= 0.0f))
 )";
     const std::string library_bulb = R"(
 real scene_de(vec3 p, PARAMS) {
@@ -443,12 +458,14 @@ real scene_de(vec3 p, PARAMS) {
     for (const int width : kWidths) {
         ProgramCache no_disk_cache{std::filesystem::path()};
         const Scene a = test::inline_scene(orbit_bulb), b = test::inline_scene(library_bulb);
-        Renderer ra(device(), no_disk_cache, a, {width, 0}), rb(device(), no_disk_cache, b, {width, 0});
+        Renderer ra(device(), no_disk_cache, a, {width, 0}),
+            rb(device(), no_disk_cache, b, {width, 0});
         const auto da = ra.probe_de(points, default_param_values(a));
         const auto db = rb.probe_de(points, default_param_values(b));
         for (size_t i = 0; i < points.size(); ++i) {
             EXPECT_NEAR(da[i], db[i], 1e-5f * (1.0f + std::abs(db[i])))
-                << "width " << width << " at " << points[i].x << " " << points[i].y << " " << points[i].z;
+                << "width " << width << " at " << points[i].x << " " << points[i].y << " "
+                << points[i].z;
         }
     }
 }

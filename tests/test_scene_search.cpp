@@ -1,4 +1,4 @@
-// The formula browser's search (fgr/viewer/scene_search.hpp): a scene is found by its id, name
+// The formula browser's search (viewer/scene_search.hpp): a scene is found by its id, name
 // and tags, a formula scene also by its formulas' names, titles and families; every word of the
 // query must be found, ignoring case.
 #include <gtest/gtest.h>

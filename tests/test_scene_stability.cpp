@@ -1,19 +1,20 @@
-// Numerical stability of scenes, through the checks `fgr check` runs (diagnostics/scene_check.hpp): the DE
-// never overestimates, nothing produces NaN or Inf in the hard cases (the origin, huge points, a
-// camera inside the fractal, every parameter at its extremes, every camera path), and each default
-// view is a real image. Every scene this build makes (plugins and IFS files) is checked by ctest
-// as `fgr check FILE` (SceneCheck.<file>, tests/CMakeLists.txt), with the tolerances argued in
-// host/diagnostics/scene_check.cpp. Here each check is shown to catch the fault it is for, on a small scene
-// broken in that one way, and to pass the same scene when it is right.
+// Numerical stability of scenes, through the checks `fgr check` runs (diagnostics/scene_check.hpp):
+// the DE never overestimates, nothing produces NaN or Inf in the hard cases (the origin, huge
+// points, a camera inside the fractal, every parameter at its extremes, every camera path), and
+// each default view is a real image. Every scene this build makes (plugins and IFS files) is
+// checked by ctest as `fgr check FILE` (SceneCheck.<file>, tests/CMakeLists.txt), with the
+// tolerances argued in host/diagnostics/scene_check.cpp. Here each check is shown to catch the
+// fault it is for, on a small scene broken in that one way, and to pass the same scene when it is
+// right.
 #include <gtest/gtest.h>
 
 #include <cmath>
 #include <string>
 
-#include "scene/parameters.hpp"
-#include "scene/plugin_loader.hpp"
 #include "device/program_cache.hpp"
 #include "diagnostics/scene_check.hpp"
+#include "scene/parameters.hpp"
+#include "scene/plugin_loader.hpp"
 #include "test_scenes.hpp"
 
 namespace fgr {

@@ -12,13 +12,13 @@
 #include <vector>
 
 #include "child_process.hpp"
-#include "scene/description_validation.hpp"
 #include "device/opencl_device.hpp"
-#include "scene/parameters.hpp"
-#include "fgr/plugin.h"
 #include "device/program_cache.hpp"
-#include "render/renderer.hpp"
+#include "fgr/plugin.h"
 #include "fgr/scene_helpers.h"
+#include "render/renderer.hpp"
+#include "scene/description_validation.hpp"
+#include "scene/parameters.hpp"
 #include "test_scenes.hpp"
 
 namespace fgr {
@@ -157,9 +157,10 @@ TEST(SceneTuning, KifsScenesDoNotOfferIterations) {
             set_param_from_text(scene, values, "colour_mode=iterations");
             ADD_FAILURE() << file << " accepted colour_mode=iterations";
         } catch (const UsageError& error) {
-            EXPECT_EQ(std::string(error.what()),
-                      "scene '" + scene.id +
-                          "' does not offer colour_mode 'iterations' (it offers point|planes|axes)");
+            EXPECT_EQ(
+                std::string(error.what()),
+                "scene '" + scene.id +
+                    "' does not offer colour_mode 'iterations' (it offers point|planes|axes)");
         }
         // By number too: 3 is iterations.
         EXPECT_THROW(set_param_from_text(scene, values, "colour_mode=3"), UsageError) << file;
@@ -191,10 +192,10 @@ TEST(SceneTuning, ReloadDropsAValueNoLongerOffered) {
 
 TEST(SceneTuning, FgrRenderRefusesAColourModeTheSceneDoesNotOfferInOneLine) {
     const test::TempDir dir("fgr_colour_modes");
-    const test::RunResult refused = test::run_fgr(
-        {"render", "menger", "--colour", "iterations", "--width", "8", "--height", "8", "-o",
-         (dir.path() / "menger.png").string()},
-        dir.path());
+    const test::RunResult refused =
+        test::run_fgr({"render", "menger", "--colour", "iterations", "--width", "8", "--height",
+                       "8", "-o", (dir.path() / "menger.png").string()},
+                      dir.path());
     ASSERT_TRUE(refused.exited) << refused;
     EXPECT_EQ(refused.exit_code, 2) << refused;
     EXPECT_NE(refused.err.find("scene 'menger' does not offer colour_mode 'iterations' (it offers "

@@ -2,12 +2,12 @@
 // Scenes for tests: built directly in C++ (no plugin) where a known, tiny DE is needed, or loaded
 // from the plugins this build made.
 
+#include <spdlog/spdlog.h>
+
 #include <filesystem>
 #include <stdexcept>
 #include <string>
 #include <vector>
-
-#include <spdlog/spdlog.h>
 
 #include "scene/discovery.hpp"
 #include "scene/formulas/formulas.hpp"
@@ -65,7 +65,8 @@ inline Scene inline_scene(std::string source) {
 
 // A sphere of radius `radius` at the origin.
 inline Scene sphere_scene() {
-    Scene scene = inline_scene("real scene_de(vec3 p, PARAMS) { return v3_length(p) - param_radius; }");
+    Scene scene =
+        inline_scene("real scene_de(vec3 p, PARAMS) { return v3_length(p) - param_radius; }");
     ParamInfo radius;
     radius.id = "radius";
     radius.type = ParamType::Float;

@@ -2,25 +2,25 @@
 // references: exact distance functions must match the true distance, bounds must never exceed it
 // and must agree with it on which side of the surface a point lies, and the non-rigid transforms
 // must stay 1-Lipschitz. Every scene is built at packet widths 1 and 16.
+#include <gtest/gtest.h>
+
 #include <algorithm>
 #include <array>
 #include <cmath>
 #include <functional>
+#include <glm/geometric.hpp>
+#include <glm/vec2.hpp>
+#include <glm/vec3.hpp>
 #include <random>
 #include <string>
 #include <tuple>
 #include <vector>
 
-#include <glm/geometric.hpp>
-#include <glm/vec2.hpp>
-#include <glm/vec3.hpp>
-#include <gtest/gtest.h>
-
+#include "device/program_cache.hpp"
+#include "random_points.hpp"
+#include "render/renderer.hpp"
 #include "scene/parameters.hpp"
 #include "scene/plugin_loader.hpp"
-#include "device/program_cache.hpp"
-#include "render/renderer.hpp"
-#include "random_points.hpp"
 #include "test_scenes.hpp"
 
 namespace fgr {
@@ -138,25 +138,30 @@ std::vector<std::array<dvec3, 3>> octahedron_faces(double s) {
     std::vector<std::array<dvec3, 3>> faces;
     for (double sx : {-s, s})
         for (double sy : {-s, s})
-            for (double sz : {-s, s}) faces.push_back({dvec3(sx, 0, 0), dvec3(0, sy, 0), dvec3(0, 0, sz)});
+            for (double sz : {-s, s})
+                faces.push_back({dvec3(sx, 0, 0), dvec3(0, sy, 0), dvec3(0, 0, sz)});
     return outward(faces);
 }
 
 std::vector<std::array<dvec3, 3>> tetrahedron_faces(double s) {
-    const std::array<dvec3, 4> v{dvec3(s, s, s), dvec3(s, -s, -s), dvec3(-s, s, -s), dvec3(-s, -s, s)};
-    return outward({{v[1], v[2], v[3]}, {v[0], v[2], v[3]}, {v[0], v[1], v[3]}, {v[0], v[1], v[2]}});
+    const std::array<dvec3, 4> v{dvec3(s, s, s), dvec3(s, -s, -s), dvec3(-s, s, -s),
+                                 dvec3(-s, -s, s)};
+    return outward(
+        {{v[1], v[2], v[3]}, {v[0], v[2], v[3]}, {v[0], v[1], v[3]}, {v[0], v[1], v[2]}});
 }
 
 // Right-handed rotation matrices applied to a vector (the object's motion).
 dvec3 rotate(dvec3 v, int axis, double angle) {
     const double c = std::cos(angle), s = std::sin(angle);
     switch (axis) {
-        case 0: return {v.x, c * v.y - s * v.z, s * v.y + c * v.z};
-        case 1: return {c * v.x + s * v.z, v.y, -s * v.x + c * v.z};
-        default: return {c * v.x - s * v.y, s * v.x + c * v.y, v.z};
+        case 0:
+            return {v.x, c * v.y - s * v.z, s * v.y + c * v.z};
+        case 1:
+            return {c * v.x + s * v.z, v.y, -s * v.x + c * v.z};
+        default:
+            return {c * v.x - s * v.y, s * v.x + c * v.y, v.z};
     }
 }
-
 
 // --- Checks
 
@@ -188,7 +193,8 @@ std::pair<std::vector<glm::vec3>, std::vector<glm::vec3>> random_pairs() {
     std::uniform_real_distribution<float> unit(-1.0f, 1.0f);
     std::vector<glm::vec3> second;
     for (const auto& p : first) {
-        const glm::vec3 direction = glm::normalize(glm::vec3(unit(rng), unit(rng), unit(rng)) + 1e-6f);
+        const glm::vec3 direction =
+            glm::normalize(glm::vec3(unit(rng), unit(rng), unit(rng)) + 1e-6f);
         second.push_back(p + direction * (1e-3f + 0.3f * (unit(rng) + 1.0f) * 0.5f));
     }
     return {first, second};
@@ -263,19 +269,22 @@ std::vector<dvec3> box_surface(dvec3 b, int n) {
 // --- Primitives
 
 TEST(SdfPrimitives, Sphere) {
-    check_case({"sd_sphere", "return sd_sphere(p, 0.8f);",
-                [](dvec3 p) { return glm::length(p) - 0.8; }});
+    check_case(
+        {"sd_sphere", "return sd_sphere(p, 0.8f);", [](dvec3 p) { return glm::length(p) - 0.8; }});
 }
 
 TEST(SdfPrimitives, Box) {
-    check_case({"sd_box", "return sd_box(p, v3_splat(0.9f, 0.5f, 0.3f));",
-                [](dvec3 p) { return box_distance(p, {0.9, 0.5, 0.3}); }});
+    check_case({"sd_box", "return sd_box(p, v3_splat(0.9f, 0.5f, 0.3f));", [](dvec3 p) {
+                    return box_distance(p, {0.9, 0.5, 0.3});
+                }});
 }
 
 TEST(SdfPrimitives, RoundBox) {
     // Rounding by r: the points within r of the box shrunk by r.
-    check_case({"sd_round_box", "return sd_round_box(p, v3_splat(0.9f, 0.5f, 0.4f), 0.15f);",
-                [](dvec3 p) { return box_distance(p, {0.75, 0.35, 0.25}) - 0.15; }});
+    check_case(
+        {"sd_round_box", "return sd_round_box(p, v3_splat(0.9f, 0.5f, 0.4f), 0.15f);", [](dvec3 p) {
+             return box_distance(p, {0.75, 0.35, 0.25}) - 0.15;
+         }});
 }
 
 TEST(SdfPrimitives, Torus) {
@@ -293,15 +302,19 @@ TEST(SdfPrimitives, Plane) {
 
 TEST(SdfPrimitives, Cylinder) {
     check_case({"sd_cylinder", "return sd_cylinder(p, 0.6f, 0.8f);", [](dvec3 p) {
-                    return revolution_distance(p, {{0, -0.8}, {0.6, -0.8}, {0.6, 0.8}, {0, 0.8}},
-                                               [](dvec2 q) { return q.x < 0.6 && std::abs(q.y) < 0.8; });
+                    return revolution_distance(
+                        p, {{0, -0.8}, {0.6, -0.8}, {0.6, 0.8}, {0, 0.8}},
+                        [](dvec2 q) { return q.x < 0.6 && std::abs(q.y) < 0.8; });
                 }});
 }
 
 TEST(SdfPrimitives, Capsule) {
-    check_case({"sd_capsule",
-                "return sd_capsule(p, v3_splat(-0.5f, 0.2f, -0.3f), v3_splat(0.4f, -0.1f, 0.6f), 0.3f);",
-                [](dvec3 p) { return segment_distance(p, {-0.5, 0.2, -0.3}, {0.4, -0.1, 0.6}) - 0.3; }});
+    check_case(
+        {"sd_capsule",
+         "return sd_capsule(p, v3_splat(-0.5f, 0.2f, -0.3f), v3_splat(0.4f, -0.1f, 0.6f), 0.3f);",
+         [](dvec3 p) {
+             return segment_distance(p, {-0.5, 0.2, -0.3}, {0.4, -0.1, 0.6}) - 0.3;
+         }});
 }
 
 TEST(SdfPrimitives, CappedCone) {
@@ -309,8 +322,9 @@ TEST(SdfPrimitives, CappedCone) {
     const auto radius_at = [](double z) { return 0.8 + (0.2 - 0.8) * (z + 0.7) / 1.4; };
     check_case({"sd_cone", "return sd_cone(p, 0.7f, 0.8f, 0.2f);", [radius_at](dvec3 p) {
                     return revolution_distance(
-                        p, {{0, -0.7}, {0.8, -0.7}, {0.2, 0.7}, {0, 0.7}},
-                        [radius_at](dvec2 q) { return std::abs(q.y) < 0.7 && q.x < radius_at(q.y); });
+                        p, {{0, -0.7}, {0.8, -0.7}, {0.2, 0.7}, {0, 0.7}}, [radius_at](dvec2 q) {
+                            return std::abs(q.y) < 0.7 && q.x < radius_at(q.y);
+                        });
                 }});
 }
 
@@ -321,11 +335,10 @@ TEST(SdfPrimitives, PointedConeAndInvertedCone) {
                     });
                 }});
     check_case({"sd_cone inverted", "return sd_cone(p, 0.5f, 0.1f, 0.9f);", [](dvec3 p) {
-                    return revolution_distance(p, {{0, -0.5}, {0.1, -0.5}, {0.9, 0.5}, {0, 0.5}},
-                                               [](dvec2 q) {
-                                                   return std::abs(q.y) < 0.5 &&
-                                                          q.x < 0.1 + 0.8 * (q.y + 0.5);
-                                               });
+                    return revolution_distance(
+                        p, {{0, -0.5}, {0.1, -0.5}, {0.9, 0.5}, {0, 0.5}}, [](dvec2 q) {
+                            return std::abs(q.y) < 0.5 && q.x < 0.1 + 0.8 * (q.y + 0.5);
+                        });
                 }});
 }
 
@@ -419,7 +432,8 @@ TEST(SdfCombinators, CulledUnionIsTheUnionAndEvaluatesTheObjectOnlyWhereALaneMay
 std::vector<glm::vec3> distance_pairs() {
     std::vector<glm::vec3> points;
     for (int i = -20; i <= 20; ++i) {
-        for (int j = -20; j <= 20; ++j) points.emplace_back(float(i) / 20.0f, float(j) / 20.0f, 0.0f);
+        for (int j = -20; j <= 20; ++j)
+            points.emplace_back(float(i) / 20.0f, float(j) / 20.0f, 0.0f);
     }
     return points;
 }
@@ -450,7 +464,8 @@ TEST(SdfCombinators, SmoothUnionIsBelowTheUnionByAtMostAQuarterOfK) {
     const auto wide = smooth_op_values("op_smooth_union(d1, d2, 0.5f)");
     const auto narrow = smooth_op_values("op_smooth_union(d1, d2, 0.25f)");
     const auto at = [&](const std::vector<float>& values, double d1, double d2) {
-        const size_t i = size_t(std::lround(d1 * 20.0) + 20) * 41 + size_t(std::lround(d2 * 20.0) + 20);
+        const size_t i =
+            size_t(std::lround(d1 * 20.0) + 20) * 41 + size_t(std::lround(d2 * 20.0) + 20);
         return double(values[i]);
     };
     for (size_t w = 0; w < wide.size(); ++w) {
@@ -495,7 +510,8 @@ TEST(SdfCombinators, SmoothIntersectionAndSubtractionAreAboveTheSharpOnesByAtMos
     const auto intersection = smooth_op_values("op_smooth_intersection(d1, d2, 0.5f)");
     const auto subtraction = smooth_op_values("op_smooth_subtraction(d1, d2, 0.5f)");
     const auto at = [&](const std::vector<float>& values, double d1, double d2) {
-        const size_t i = size_t(std::lround(d1 * 20.0) + 20) * 41 + size_t(std::lround(d2 * 20.0) + 20);
+        const size_t i =
+            size_t(std::lround(d1 * 20.0) + 20) * 41 + size_t(std::lround(d2 * 20.0) + 20);
         return double(values[i]);
     };
     for (size_t w = 0; w < intersection.size(); ++w) {
@@ -553,7 +569,8 @@ TEST(SdfCombinators, SmoothOperationsWithZeroRadiusAreSharp) {
 // --- Transforms
 
 TEST(SdfTransforms, TranslatedSphere) {
-    check_case({"op_translate", "return sd_sphere(op_translate(p, v3_splat(0.3f, -0.2f, 0.5f)), 0.7f);",
+    check_case({"op_translate",
+                "return sd_sphere(op_translate(p, v3_splat(0.3f, -0.2f, 0.5f)), 0.7f);",
                 [](dvec3 p) { return glm::length(p - dvec3(0.3, -0.2, 0.5)) - 0.7; }});
 }
 
@@ -571,8 +588,10 @@ TEST(SdfTransforms, RotatedSphereTurnsCounterClockwise) {
 }
 
 TEST(SdfTransforms, RotatedBox) {
-    check_case({"op_rotate_z box", "return sd_box(op_rotate_z(p, 0.5f), v3_splat(0.8f, 0.3f, 0.4f));",
-                [](dvec3 p) { return box_distance(rotate(p, 2, -0.5), {0.8, 0.3, 0.4}); }});
+    check_case({"op_rotate_z box",
+                "return sd_box(op_rotate_z(p, 0.5f), v3_splat(0.8f, 0.3f, 0.4f));", [](dvec3 p) {
+                    return box_distance(rotate(p, 2, -0.5), {0.8, 0.3, 0.4});
+                }});
 }
 
 TEST(SdfTransforms, ScaledSphere) {
@@ -594,8 +613,10 @@ TEST(SdfTransforms, ElongatedSphereIsARoundBox) {
 }
 
 TEST(SdfTransforms, RoundAndOnion) {
-    check_case({"op_round", "return op_round(sd_box(p, v3_splat(0.5f, 0.3f, 0.2f)), 0.2f);",
-                [](dvec3 p) { return box_distance(p, {0.5, 0.3, 0.2}) - 0.2; }});
+    check_case(
+        {"op_round", "return op_round(sd_box(p, v3_splat(0.5f, 0.3f, 0.2f)), 0.2f);", [](dvec3 p) {
+             return box_distance(p, {0.5, 0.3, 0.2}) - 0.2;
+         }});
     check_case({"op_onion", "return op_onion(sd_sphere(p, 0.8f), 0.1f);",
                 [](dvec3 p) { return std::abs(glm::length(p) - 0.8) - 0.1; }});
 }
@@ -613,14 +634,18 @@ double lattice_balls(dvec3 p, dvec3 period, glm::ivec3 limits, double r) {
 TEST(SdfTransforms, InfiniteRepetition) {
     // Period 0 on z: not repeated there. 20 cells either way covers the test points.
     check_case({"op_repeat", "return sd_sphere(op_repeat(p, v3_splat(0.8f, 1.1f, 0.0f)), 0.3f);",
-                [](dvec3 p) { return lattice_balls(p, {0.8, 1.1, 0.0}, {20, 20, 0}, 0.3); }});
+                [](dvec3 p) {
+                    return lattice_balls(p, {0.8, 1.1, 0.0}, {20, 20, 0}, 0.3);
+                }});
 }
 
 TEST(SdfTransforms, LimitedRepetition) {
     check_case({"op_repeat_limited",
                 "return sd_sphere(op_repeat_limited(p, v3_splat(0.6f, 0.7f, 0.5f), "
                 "v3_splat(2.0f, 1.0f, 0.0f)), 0.2f);",
-                [](dvec3 p) { return lattice_balls(p, {0.6, 0.7, 0.5}, {2, 1, 0}, 0.2); }});
+                [](dvec3 p) {
+                    return lattice_balls(p, {0.6, 0.7, 0.5}, {2, 1, 0}, 0.2);
+                }});
 }
 
 // The twisted box of the tests: half extents (0.3, 0.3, 0.8), 1.4 radians per unit of height,
@@ -638,7 +663,8 @@ TEST(SdfTransforms, TwistIsABound) {
     for (dvec3 s : box_surface({0.3, 0.3, 0.8}, 120)) surface.push_back(rotate(s, 2, rate * s.z));
     check_case({"op_twist", kTwistedBox,
                 [&surface, rate](dvec3 p) {
-                    const double sign = box_distance(rotate(p, 2, -rate * p.z), {0.3, 0.3, 0.8}) > 0 ? 1 : -1;
+                    const double sign =
+                        box_distance(rotate(p, 2, -rate * p.z), {0.3, 0.3, 0.8}) > 0 ? 1 : -1;
                     return sign * sampled_distance(p, surface);
                 },
                 Quality::Bound, true});
@@ -666,27 +692,32 @@ TEST(SdfTransforms, BendIsABound) {
     };
     std::vector<dvec3> surface;
     for (dvec3 s : box_surface({0.9, 0.25, 0.1}, 120)) surface.push_back(bend(s));
-    check_case({"op_bend", kBentBar,
-                [&](dvec3 p) {
-                    // Points beyond the bend's axis are far outside the bar.
-                    const bool inside = p.z < 1.0 / k && box_distance(unbend(p), {0.9, 0.25, 0.1}) < 0;
-                    return (inside ? -1 : 1) * sampled_distance(p, surface);
-                },
-                Quality::Bound, true});
+    check_case(
+        {"op_bend", kBentBar,
+         [&](dvec3 p) {
+             // Points beyond the bend's axis are far outside the bar.
+             const bool inside = p.z < 1.0 / k && box_distance(unbend(p), {0.9, 0.25, 0.1}) < 0;
+             return (inside ? -1 : 1) * sampled_distance(p, surface);
+         },
+         Quality::Bound, true});
 }
 
 TEST(SdfTransforms, SineDisplacement) {
     const std::string body = "return op_displace_sine(sd_sphere(p, 0.7f), p, 0.1f, 6.0f);";
-    check_case({"op_displace_sine", body, [](dvec3 p) {
+    check_case({"op_displace_sine", body,
+                [](dvec3 p) {
                     const double wave = std::sin(6 * p.x) * std::sin(6 * p.y) * std::sin(6 * p.z);
                     return (glm::length(p) - 0.7 + 0.1 * wave) / (1.0 + 0.1 * 6.0 * std::sqrt(3.0));
-                }, Quality::Exact, true});
-    check_case({"op_displace_sine strong",
-                "return op_displace_sine(sd_box(p, v3_splat(0.5f, 0.6f, 0.4f)), p, 0.3f, 9.0f);",
-                [](dvec3 p) {
-                    const double wave = std::sin(9 * p.x) * std::sin(9 * p.y) * std::sin(9 * p.z);
-                    return (box_distance(p, {0.5, 0.6, 0.4}) + 0.3 * wave) / (1.0 + 2.7 * std::sqrt(3.0));
-                }, Quality::Exact, true});
+                },
+                Quality::Exact, true});
+    check_case(
+        {"op_displace_sine strong",
+         "return op_displace_sine(sd_box(p, v3_splat(0.5f, 0.6f, 0.4f)), p, 0.3f, 9.0f);",
+         [](dvec3 p) {
+             const double wave = std::sin(9 * p.x) * std::sin(9 * p.y) * std::sin(9 * p.z);
+             return (box_distance(p, {0.5, 0.6, 0.4}) + 0.3 * wave) / (1.0 + 2.7 * std::sqrt(3.0));
+         },
+         Quality::Exact, true});
 }
 
 // --- Robustness
@@ -694,25 +725,31 @@ TEST(SdfTransforms, SineDisplacement) {
 // Degenerate shapes and parameters, summed so a NaN anywhere shows.
 const std::string kDegenerate =
     "real excess;\n"
-    "real d = sd_sphere(p, 0.0f) + sd_box(p, v3_splat(0, 0, 0)) + sd_round_box(p, v3_splat(0, 0, 0), 0.0f)\n"
-    "  + sd_torus(p, 0.0f, 0.0f) + sd_cylinder(p, 0.0f, 0.0f) + sd_capsule(p, v3_splat(0, 0, 0), v3_splat(0, 0, 0), 0.0f)\n"
+    "real d = sd_sphere(p, 0.0f) + sd_box(p, v3_splat(0, 0, 0)) + sd_round_box(p, v3_splat(0, 0, "
+    "0), 0.0f)\n"
+    "  + sd_torus(p, 0.0f, 0.0f) + sd_cylinder(p, 0.0f, 0.0f) + sd_capsule(p, v3_splat(0, 0, 0), "
+    "v3_splat(0, 0, 0), 0.0f)\n"
     "  + sd_cone(p, 0.0f, 0.0f, 0.0f) + sd_cone(p, 0.5f, 0.0f, 0.0f) + sd_octahedron(p, 0.0f)\n"
     "  + sd_tetrahedron(p, 0.0f) + sd_plane(p, v3_splat(0, 0, 1), 0.0f)\n"
     "  + op_smooth_union(p.x, p.y, 0.0f) + op_smooth_subtraction(p.x, p.y, 0.0f)\n"
     "  + op_smooth_intersection(p.x, p.y, 0.0f)\n"
-    "  + sd_sphere(op_repeat(p, v3_splat(0, 0, 0)), 0.1f) + sd_sphere(op_repeat_limited(p, v3_splat(0, 1, 0), v3_splat(0, 0, 0)), 0.1f)\n"
+    "  + sd_sphere(op_repeat(p, v3_splat(0, 0, 0)), 0.1f) + sd_sphere(op_repeat_limited(p, "
+    "v3_splat(0, 1, 0), v3_splat(0, 0, 0)), 0.1f)\n"
     "  + sd_sphere(op_elongate(p, v3_splat(0, 0, 0)), 0.1f) + op_onion(sd_sphere(p, 0.0f), 0.0f)\n"
-    "  + sd_box(op_twist(op_clamp_to_cylinder(p, 0.0f, 0.0f, &excess), 0.0f), v3_splat(0.1f, 0.1f, 0.1f)) / op_twist_lipschitz(0.0f, 0.0f)\n"
+    "  + sd_box(op_twist(op_clamp_to_cylinder(p, 0.0f, 0.0f, &excess), 0.0f), v3_splat(0.1f, 0.1f, "
+    "0.1f)) / op_twist_lipschitz(0.0f, 0.0f)\n"
     "  + op_extend_from_clamp(sd_sphere(op_clamp_to_ball(p, 0.0f, &excess), 0.0f), excess)\n"
-    "  + sd_sphere(op_bend(p, 0.0f), 0.5f) / op_bend_lipschitz(0.0f, 0.0f) + sd_sphere(op_bend(p, -2.0f), 0.2f)\n"
+    "  + sd_sphere(op_bend(p, 0.0f), 0.5f) / op_bend_lipschitz(0.0f, 0.0f) + sd_sphere(op_bend(p, "
+    "-2.0f), 0.2f)\n"
     "  + op_displace_sine(sd_sphere(p, 0.5f), p, 0.0f, 0.0f)\n"
     "  + sd_sphere(op_rotate_x(op_rotate_y(op_rotate_z(p, 0.0f), 3.14159265f), -1.0f), 0.3f);\n"
     "return d;";
 
 TEST(SdfRobustness, FiniteAtTheOriginAxesAndFarAwayForEveryWidth) {
-    std::vector<glm::vec3> points{{0, 0, 0}, {-0.0f, -0.0f, -0.0f}, {0, 0, 1},     {0, 0, -1},
-                                  {1, 0, 0}, {0, 1, 0},             {1e-30f, 0, 0}, {1e6f, 0, 0},
-                                  {0, -1e6f, 0}, {0, 0, 1e6f},       {1e6f, 1e6f, -1e6f}};
+    std::vector<glm::vec3> points{
+        {0, 0, 0},          {-0.0f, -0.0f, -0.0f}, {0, 0, 1},    {0, 0, -1},    {1, 0, 0},
+        {0, 1, 0},          {1e-30f, 0, 0},        {1e6f, 0, 0}, {0, -1e6f, 0}, {0, 0, 1e6f},
+        {1e6f, 1e6f, -1e6f}};
     const auto more = random_points(21, 2.0f, 17);  // not a multiple of any width: a partial packet
     points.insert(points.end(), more.begin(), more.end());
     std::vector<float> narrow;
@@ -746,10 +783,12 @@ TEST(SdfGallery, OneLipschitzAroundEveryObjectForEveryParameterExtreme) {
     std::uniform_real_distribution<float> unit(-1.0f, 1.0f);
     std::vector<glm::vec3> first, second;
     for (int slot = 0; slot < 24; ++slot) {
-        const glm::vec3 centre((float(slot % 6) - 2.5f) * 2.5f, (float(slot / 6) - 1.5f) * 2.5f, 1.05f);
+        const glm::vec3 centre((float(slot % 6) - 2.5f) * 2.5f, (float(slot / 6) - 1.5f) * 2.5f,
+                               1.05f);
         for (int i = 0; i < 60; ++i) {
             const glm::vec3 p = centre + 1.2f * glm::vec3(unit(rng), unit(rng), unit(rng));
-            const glm::vec3 direction = glm::normalize(glm::vec3(unit(rng), unit(rng), unit(rng)) + 1e-6f);
+            const glm::vec3 direction =
+                glm::normalize(glm::vec3(unit(rng), unit(rng), unit(rng)) + 1e-6f);
             first.push_back(p);
             second.push_back(p + direction * (2e-3f + 0.2f * (unit(rng) + 1.0f) * 0.5f));
         }
@@ -785,20 +824,23 @@ TEST(SdfGallery, OneLipschitzAroundEveryObjectForEveryParameterExtreme) {
 TEST(SdfGallery, TheBenchmarkScenesCulledUnionsChangeNoDistance) {
     const Scene culled = test::built_scene("benchmark.so");
     Scene plain = culled;
-    plain.source = "#undef op_union_culled\n#define op_union_culled(d, lower, object) fmin((d), (object))\n" +
-                   culled.source;
+    plain.source =
+        "#undef op_union_culled\n#define op_union_culled(d, lower, object) fmin((d), (object))\n" +
+        culled.source;
     std::mt19937 rng(59);
     std::uniform_real_distribution<float> unit(-1.0f, 1.0f);
-    const std::array<glm::vec3, 5> centres{glm::vec3(-1.7f, 0.5f, 0.72f), glm::vec3(1.5f, 0.7f, 0.62f),
-                                           glm::vec3(0.1f, -1.5f, 0.55f), glm::vec3(0.2f, 1.9f, 0.8f),
-                                           glm::vec3(0.0f, 0.0f, 0.8f)};
+    const std::array<glm::vec3, 5> centres{
+        glm::vec3(-1.7f, 0.5f, 0.72f), glm::vec3(1.5f, 0.7f, 0.62f), glm::vec3(0.1f, -1.5f, 0.55f),
+        glm::vec3(0.2f, 1.9f, 0.8f), glm::vec3(0.0f, 0.0f, 0.8f)};
     std::vector<glm::vec3> points;
     for (int cluster = 0; cluster < 2000; ++cluster) {
         // Round an object (the last centre: the whole scene, 3 units about).
         const size_t object = size_t(cluster) % centres.size();
         const float reach = object + 1 == centres.size() ? 3.0f : 1.3f;
-        const glm::vec3 centre = centres[object] + reach * glm::vec3(unit(rng), unit(rng), unit(rng));
-        for (int i = 0; i < 16; ++i) points.push_back(centre + 0.03f * glm::vec3(unit(rng), unit(rng), unit(rng)));
+        const glm::vec3 centre =
+            centres[object] + reach * glm::vec3(unit(rng), unit(rng), unit(rng));
+        for (int i = 0; i < 16; ++i)
+            points.push_back(centre + 0.03f * glm::vec3(unit(rng), unit(rng), unit(rng)));
     }
     for (int width : kWidths) {
         ProgramCache no_disk_cache{std::filesystem::path()};

@@ -2,34 +2,32 @@
 // gives a ball's analytic depth, normal and albedo, coverage 1 on it, 0 off it and the fraction of
 // hitting samples at its edge; the plain shaded kernel is untouched by the switch; and the CLI's
 // RGBA PNG and EXR hold the same coverage with the background removed.
-#include <gtest/gtest.h>
-
 #include <ImfChannelList.h>
 #include <ImfFrameBuffer.h>
 #include <ImfHeader.h>
 #include <ImfInputFile.h>
+#include <gtest/gtest.h>
 
 #include <algorithm>
 #include <cmath>
 #include <filesystem>
 #include <fstream>
+#include <glm/geometric.hpp>
+#include <glm/trigonometric.hpp>
 #include <limits>
 #include <string>
 #include <vector>
 
-#include <glm/geometric.hpp>
-#include <glm/trigonometric.hpp>
-
-#include "child_process.hpp"
-#include "device_suite.hpp"
 #include "camera/camera.hpp"
-#include "scene/ifs/ifs.hpp"
-#include "image/image_io.hpp"
-#include "scene/parameters.hpp"
+#include "child_process.hpp"
 #include "device/program_cache.hpp"
-#include "render/renderer.hpp"
+#include "device_suite.hpp"
+#include "image/image_io.hpp"
 #include "output/still_image.hpp"
 #include "output/still_layers.hpp"
+#include "render/renderer.hpp"
+#include "scene/ifs/ifs.hpp"
+#include "scene/parameters.hpp"
 #include "test_scenes.hpp"
 
 namespace fgr {

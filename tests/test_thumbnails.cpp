@@ -1,4 +1,4 @@
-// The formula browser's thumbnail cache (fgr/viewer/thumbnails.hpp): the key follows everything
+// The formula browser's thumbnail cache (viewer/thumbnails.hpp): the key follows everything
 // that decides a thumbnail's image, and thumbnails on disk come back as they were stored, in the
 // kernel cache's folder.
 #include <gtest/gtest.h>
@@ -9,8 +9,8 @@
 #include <string>
 
 #include "child_process.hpp"
-#include "scene/formulas/formulas.hpp"
 #include "device/program_cache.hpp"
+#include "scene/formulas/formulas.hpp"
 #include "viewer/thumbnails.hpp"
 
 namespace fgr::viewer {

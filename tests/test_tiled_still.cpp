@@ -1,17 +1,15 @@
-// Tiled stills (output/tiled/tiled_still.hpp): a tiled render equals the untiled one pixel for pixel in
-// every mode, including the brute-force mode whose shading reads neighbours across tile seams;
-// the streaming PNG, EXR and TIFF writers give files that read back as the frame; an interrupted
-// render resumed from its tile store equals an uninterrupted one, and a store of another render
-// is refused; peak memory does not grow with the image; bad input is a one-line error with
-// nothing written.
-#include <gtest/gtest.h>
-
-#include <tiffio.h>
-
+// Tiled stills (output/tiled/tiled_still.hpp): a tiled render equals the untiled one pixel for
+// pixel in every mode, including the brute-force mode whose shading reads neighbours across tile
+// seams; the streaming PNG, EXR and TIFF writers give files that read back as the frame; an
+// interrupted render resumed from its tile store equals an uninterrupted one, and a store of
+// another render is refused; peak memory does not grow with the image; bad input is a one-line
+// error with nothing written.
 #include <ImfChannelList.h>
 #include <ImfFrameBuffer.h>
 #include <ImfHeader.h>
 #include <ImfInputFile.h>
+#include <gtest/gtest.h>
+#include <tiffio.h>
 
 #include <cmath>
 #include <cstring>
@@ -21,17 +19,17 @@
 #include <string>
 #include <vector>
 
-#include "child_process.hpp"
-#include "device_suite.hpp"
-#include "scene/ifs/ifs.hpp"
-#include "image/image_io.hpp"
-#include "device/kernel_assembly.hpp"
-#include "scene/parameters.hpp"
-#include "device/program_cache.hpp"
 #include "camera/projection.hpp"
-#include "render/renderer.hpp"
+#include "child_process.hpp"
+#include "device/kernel_assembly.hpp"
+#include "device/program_cache.hpp"
+#include "device_suite.hpp"
+#include "image/image_io.hpp"
 #include "output/still_layers.hpp"
 #include "output/tiled/tiled_still.hpp"
+#include "render/renderer.hpp"
+#include "scene/ifs/ifs.hpp"
+#include "scene/parameters.hpp"
 #include "test_scenes.hpp"
 
 namespace fgr {
@@ -59,8 +57,8 @@ protected:
 
 // The named float channels of an EXR file, each as rows of width floats.
 std::vector<std::vector<float>> read_exr_channels(const fs::path& path,
-                                                  const std::vector<std::string>& names,
-                                                  int* width, int* height) {
+                                                  const std::vector<std::string>& names, int* width,
+                                                  int* height) {
     Imf::InputFile file(path.c_str());
     const Imath::Box2i window = file.header().dataWindow();
     *width = window.max.x - window.min.x + 1;
@@ -132,21 +130,24 @@ void expect_tiled_equals_untiled(Renderer& renderer, const FrameRequest& whole, 
     const Aovs aovs{true, true, true, true};
     TiledSettings settings;
     settings.tile_size = tile;
-    const TiledResult result = render_tiled_still(renderer, whole, exr_output(file, aovs), settings);
+    const TiledResult result =
+        render_tiled_still(renderer, whole, exr_output(file, aovs), settings);
     ASSERT_FALSE(result.interrupted);
     ASSERT_GT(result.tiles, 4) << "the image must span several tiles";
     EXPECT_EQ(result.hits, frame.hits);
     int width = 0, height = 0;
-    const auto read = read_exr_channels(
-        file, {"R", "G", "B", "albedo.R", "albedo.G", "albedo.B", "normal.X", "normal.Y",
-               "normal.Z", "depth.Z", "A"},
-        &width, &height);
+    const auto read = read_exr_channels(file,
+                                        {"R", "G", "B", "albedo.R", "albedo.G", "albedo.B",
+                                         "normal.X", "normal.Y", "normal.Z", "depth.Z", "A"},
+                                        &width, &height);
     ASSERT_EQ(width, whole.width);
     ASSERT_EQ(height, whole.height);
     // With alpha the colour is the premultiplied foreground (output/still_layers.hpp).
-    const std::vector<std::pair<const std::vector<float>*, int>> planes{
-        {&frame.foreground, 3}, {&frame.albedo, 3}, {&frame.normal, 3}, {&frame.depth, 1},
-        {&frame.alpha, 1}};
+    const std::vector<std::pair<const std::vector<float>*, int>> planes{{&frame.foreground, 3},
+                                                                        {&frame.albedo, 3},
+                                                                        {&frame.normal, 3},
+                                                                        {&frame.depth, 1},
+                                                                        {&frame.alpha, 1}};
     size_t channel = 0;
     for (const auto& [plane, count] : planes) {
         for (int c = 0; c < count; ++c, ++channel) {
@@ -170,11 +171,11 @@ TEST_F(TiledStillTest, TiledEqualsUntiledPerPixelInThePathMode) {
 }
 
 TEST_F(TiledStillTest, TiledEqualsUntiledPerPixelForAnIfsScene) {
-    const Scene scene = ifs_scene_to_scene(
-        read_ifs_file(fs::path(FGR_TEST_PLUGIN_DIR) / "sierpinski.ifs.json"), "sierpinski.ifs.json");
+    const Scene scene =
+        ifs_scene_to_scene(read_ifs_file(fs::path(FGR_TEST_PLUGIN_DIR) / "sierpinski.ifs.json"),
+                           "sierpinski.ifs.json");
     auto built = renderer(scene, RenderMode::Shaded);
-    expect_tiled_equals_untiled(*built, request(scene, 130, 100, 1), 32,
-                                temp_.path() / "ifs.exr");
+    expect_tiled_equals_untiled(*built, request(scene, 130, 100, 1), 32, temp_.path() / "ifs.exr");
 }
 
 // The brute mode shades from neighbouring pixels' depths up to 256 pixels away: tiles in the
@@ -363,8 +364,13 @@ double peak_memory(const test::RunResult& run) {
 std::vector<std::string> cli_args(const std::string& output, int width, int height) {
     // Looking away from the sponge: every ray leaves the scene in a few steps, so the render is
     // cheap and what grows with the image is only what is kept of it.
-    return {"render", "menger", "-o", output, "--width", std::to_string(width), "--height",
-            std::to_string(height), "--target", "0,-20,0", "--eye", "0,-10,0", "--tile-size", "256"};
+    return {"render",      "menger",
+            "-o",          output,
+            "--width",     std::to_string(width),
+            "--height",    std::to_string(height),
+            "--target",    "0,-20,0",
+            "--eye",       "0,-10,0",
+            "--tile-size", "256"};
 }
 
 // Peak memory with an image 36 times larger stays within 24 MiB: an untiled 6144x4608 image
@@ -377,8 +383,8 @@ TEST(TiledStillCli, PeakMemoryDoesNotGrowWithTheImage) {
     ASSERT_EQ(large.exit_code, 0) << large;
     const double small_mib = peak_memory(small), large_mib = peak_memory(large);
     ASSERT_GT(small_mib, 0.0) << small;
-    EXPECT_LT(large_mib - small_mib, 24.0) << "peak " << small_mib << " MiB at 1024x768, "
-                                           << large_mib << " MiB at 6144x4608";
+    EXPECT_LT(large_mib - small_mib, 24.0)
+        << "peak " << small_mib << " MiB at 1024x768, " << large_mib << " MiB at 6144x4608";
     const Image8 image = read_png(temp.path() / "large.png");
     EXPECT_EQ(image.width, 6144);
     EXPECT_EQ(image.height, 4608);
@@ -387,7 +393,8 @@ TEST(TiledStillCli, PeakMemoryDoesNotGrowWithTheImage) {
 // The size CI can afford beside its untiled twin: 3000x2000 in 256-pixel tiles.
 TEST(TiledStillCli, TiledPngAtThreeThousandPixelsEqualsTheUntiledRender) {
     test::TempDir temp("fgr_tiled_cli");
-    const std::vector<std::string> common{"render", "menger", "--width", "3000", "--height", "2000"};
+    const std::vector<std::string> common{"render", "menger",   "--width",
+                                          "3000",   "--height", "2000"};
     auto tiled = common;
     tiled.insert(tiled.end(), {"-o", "tiled.png", "--tile-size", "256"});
     auto untiled = common;
@@ -406,14 +413,15 @@ TEST(TiledStillCli, TiledPngAtThreeThousandPixelsEqualsTheUntiledRender) {
 // before the signal (a much faster machine) skips the test.
 TEST(TiledStillCli, CtrlCLeavesNoFileAndResumeFinishesTheSameImage) {
     test::TempDir temp("fgr_tiled_interrupt");
-    const std::vector<std::string> args{"render", "mandelbulb", "--width", "2400", "--height",
-                                        "1800", "--tile-size", "128"};
+    const std::vector<std::string> args{"render",   "mandelbulb", "--width",     "2400",
+                                        "--height", "1800",       "--tile-size", "128"};
     auto whole = args;
     whole.insert(whole.end(), {"-o", "whole.png"});
     ASSERT_EQ(test::run_fgr(whole, temp.path()).exit_code, 0);
 
     auto interrupted = args;
-    interrupted.insert(interrupted.begin(), {"--preserve-status", "-s", "INT", "3", FGR_TEST_FGR_EXE});
+    interrupted.insert(interrupted.begin(),
+                       {"--preserve-status", "-s", "INT", "3", FGR_TEST_FGR_EXE});
     interrupted.insert(interrupted.end(), {"-o", "out.png"});
     test::ChildOptions options;
     options.working_dir = temp.path();

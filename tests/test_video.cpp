@@ -3,6 +3,10 @@
 // same settings (PSNR for the lossy H.264, exact for PNG sequences), the frame count and duration
 // the container records, and bad input as one error line with nothing written.
 
+#include <ImfChannelList.h>
+#include <ImfHeader.h>
+#include <ImfInputFile.h>
+#include <fmt/format.h>
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -11,11 +15,6 @@
 #include <memory>
 #include <string>
 #include <vector>
-
-#include <ImfChannelList.h>
-#include <ImfHeader.h>
-#include <ImfInputFile.h>
-#include <fmt/format.h>
 
 extern "C" {
 #include <libavcodec/avcodec.h>

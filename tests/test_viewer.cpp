@@ -3,32 +3,30 @@
 // of the same view, recorded paths are saved and render from the command line, a scene whose
 // kernel fails to compile is survived, and the viewer exits cleanly with its statistics.
 #include <gtest/gtest.h>
-
 #include <unistd.h>
 
 #include <algorithm>
 #include <atomic>
-#include <functional>
-#include <thread>
+#include <chrono>
 #include <cmath>
 #include <cstdio>
-#include <chrono>
 #include <filesystem>
 #include <fstream>
+#include <functional>
+#include <glm/geometric.hpp>
 #include <map>
 #include <optional>
 #include <sstream>
 #include <string>
+#include <thread>
 #include <vector>
 
-#include <glm/geometric.hpp>
-
-#include "child_process.hpp"
 #include "camera/camera_path_file.hpp"
-#include "scene/formulas/formulas.hpp"
-#include "image/image_io.hpp"
-#include "viewer/thumbnails.hpp"
+#include "child_process.hpp"
 #include "hermetic_caches.hpp"
+#include "image/image_io.hpp"
+#include "scene/formulas/formulas.hpp"
+#include "viewer/thumbnails.hpp"
 
 namespace fgr {
 namespace {
@@ -95,7 +93,8 @@ protected:
         // a second shot within the same second gets "-2" appended, which sorts before ".png".
         std::sort(run.screenshots.begin(), run.screenshots.end(),
                   [](const fs::path& a, const fs::path& b) {
-                      return std::pair(fs::last_write_time(a), a) < std::pair(fs::last_write_time(b), b);
+                      return std::pair(fs::last_write_time(a), a) <
+                             std::pair(fs::last_write_time(b), b);
                   });
         return run;
     }
@@ -106,7 +105,8 @@ protected:
     void expect_still_view_accumulates(std::vector<std::string> warm,
                                        const std::vector<std::string>& extra) {
         warm.insert(warm.begin(), "render");
-        warm.insert(warm.end(), {"--spp", "1", "--width", "16", "--height", "12", "-o", "warm.png"});
+        warm.insert(warm.end(),
+                    {"--spp", "1", "--width", "16", "--height", "12", "-o", "warm.png"});
         const test::RunResult warmed = test::run_fgr(warm, dir());
         ASSERT_EQ(warmed.exit_code, 0) << warmed;
         fs::remove(dir() / "warm.png");
@@ -194,7 +194,9 @@ void drop_in(const fs::path& from, const fs::path& to) {
     fs::copy_file(from, to, fs::copy_options::overwrite_existing);
 }
 
-double length(const std::vector<double>& v) { return std::sqrt(v[0] * v[0] + v[1] * v[1] + v[2] * v[2]); }
+double length(const std::vector<double>& v) {
+    return std::sqrt(v[0] * v[0] + v[1] * v[1] + v[2] * v[2]);
+}
 
 // Pixels of two same-sized images with a channel more than one 8-bit level apart.
 long pixels_over_one_level(const Image8& a, const Image8& b) {
@@ -229,7 +231,8 @@ fs::path saved_path(const fs::path& directory) {
 }
 
 TEST_F(ViewerTest, FlyingAndLookingMoveTheCamera) {
-    const ViewerRun run = view(R"(# wait for the refined first view, shoot, fly forward, look right, shoot
+    const ViewerRun run =
+        view(R"(# wait for the refined first view, shoot, fly forward, look right, shoot
 0 wait_idle
 0 key F12
 0.3 key_down W
@@ -241,7 +244,7 @@ TEST_F(ViewerTest, FlyingAndLookingMoveTheCamera) {
 0 key F12
 0.2 quit
 )",
-                                {"--target-ms", "5"});
+             {"--target-ms", "5"});
     ASSERT_EQ(run.result.exit_code, 0) << run.result;
     ASSERT_EQ(run.screenshots.size(), 2u) << run.result;
     EXPECT_GT(stat_values(run.result.out, "frames_shown").at(0), 3) << run.result;
@@ -271,7 +274,8 @@ TEST_F(ViewerTest, FlyingAndLookingMoveTheCamera) {
 // view as a camera path, `fgr render` renders that, and every pixel agrees within one level. The
 // view is the scene's default camera.
 TEST_F(ViewerTest, ScreenshotIsTheFullResolutionImageFgrRenderGives) {
-    const ViewerRun run = view(std::string("0 wait_idle\n0 key F12\n") + kSaveViewAsPath + "0.2 quit\n");
+    const ViewerRun run =
+        view(std::string("0 wait_idle\n0 key F12\n") + kSaveViewAsPath + "0.2 quit\n");
     ASSERT_EQ(run.result.exit_code, 0) << run.result;
     ASSERT_EQ(run.screenshots.size(), 1u) << run.result;
     EXPECT_NE(run.result.err.find("screenshot: wrote"), std::string::npos) << run.result;
@@ -328,14 +332,16 @@ TEST_F(ViewerTest, FormulaBrowserFindsAScenePicksItAndCachesItsThumbnail) {
 0.2 quit
 )";
     const fs::path file = fs::path(FGR_TEST_FORMULA_DIR) / "bulb-box.formula.json";
-    const std::string key = viewer::thumbnail_key(formula_scene_to_scene(read_formula_file(file), file));
+    const std::string key =
+        viewer::thumbnail_key(formula_scene_to_scene(read_formula_file(file), file));
     const fs::path thumbnail = test::test_kernel_cache() / "thumbnails" / (key + ".png");
     fs::remove(thumbnail);
 
     const ViewerRun first = view(script);
     ASSERT_EQ(first.result.exit_code, 0) << first.result;
     EXPECT_EQ(stat_text(first.result.out, "scene"), "bulb-box") << first.result;
-    EXPECT_EQ(stat_text(first.result.out, "sequence"), "mandelbulb*1 amazing_box*1") << first.result;
+    EXPECT_EQ(stat_text(first.result.out, "sequence"), "mandelbulb*1 amazing_box*1")
+        << first.result;
     EXPECT_NE(first.result.err.find("thumbnail of 'bulb-box' rendered"), std::string::npos)
         << first.result;
     ASSERT_TRUE(fs::exists(thumbnail)) << "the thumbnail is cached on disk" << first.result;
@@ -374,7 +380,8 @@ TEST_F(ViewerTest, HybridEditRebuildsTheSceneAndKeepsTheOldImageWhileCompiling) 
 0 hybrid_save bulb-box-edited
 0 wait_idle
 0.2 quit
-)", {"bulb-box"});
+)",
+                               {"bulb-box"});
     ASSERT_EQ(run.result.exit_code, 0) << run.result;
     ASSERT_EQ(run.screenshots.size(), 3u) << run.result;
     const Image8 before = read_png(run.screenshots[0]);
@@ -426,10 +433,10 @@ TEST_F(ViewerTest, RecordedPathIsSavedAndRendersFromTheCommandLine) {
     EXPECT_EQ(saved.path.keyframes[1].time, 2.0f);  // the default keyframe spacing
     EXPECT_NE(saved.path.keyframes[0].view.position, saved.path.keyframes[1].view.position);
 
-    const test::RunResult rendered = test::run_fgr(
-        {"render", "mandelbulb", "--camera-path", paths[0].string(), "--time", "1", "-o",
-         "path.png", "--width", "64", "--height", "48"},
-        dir());
+    const test::RunResult rendered =
+        test::run_fgr({"render", "mandelbulb", "--camera-path", paths[0].string(), "--time", "1",
+                       "-o", "path.png", "--width", "64", "--height", "48"},
+                      dir());
     EXPECT_EQ(rendered.exit_code, 0) << rendered;
     EXPECT_TRUE(fs::exists(dir() / "path.png"));
 }
@@ -450,8 +457,9 @@ TEST_F(ViewerTest, ResizingRendersAtTheNewSizeAndPPlaysTheScenesPath) {
     // No movement keys: only the camera path moved the camera off its default (2, -2, 1).
     const std::vector<double> position = stat_values(run.result.out, "camera_position");
     ASSERT_EQ(position.size(), 3u) << run.result;
-    EXPECT_GT(std::abs(position[0] - 2.0) + std::abs(position[1] + 2.0) + std::abs(position[2] - 1.0),
-              0.05)
+    EXPECT_GT(
+        std::abs(position[0] - 2.0) + std::abs(position[1] + 2.0) + std::abs(position[2] - 1.0),
+        0.05)
         << run.result;
 }
 
@@ -503,10 +511,11 @@ TEST_F(ViewerTest, RebuiltPluginsAreReloadedAndBrokenUpdatesKeepTheWorkingVersio
     ViewerRun run;
     {
         AfterEachScreenshot changes(
-            dir(), {[&] { drop_in(fixtures / "reload" / "reload_bigger.so", plugins / "fixture.so"); },
-                    [&] { drop_in(fixtures / "reload" / "reload_broken.so", plugins / "fixture.so"); },
-                    [&] { drop_in(fixtures / "bad_param.so", plugins / "fixture.so"); },
-                    [&] { drop_in(fixtures / "reload" / "reload_other.so", plugins / "other.so"); }});
+            dir(),
+            {[&] { drop_in(fixtures / "reload" / "reload_bigger.so", plugins / "fixture.so"); },
+             [&] { drop_in(fixtures / "reload" / "reload_broken.so", plugins / "fixture.so"); },
+             [&] { drop_in(fixtures / "bad_param.so", plugins / "fixture.so"); },
+             [&] { drop_in(fixtures / "reload" / "reload_other.so", plugins / "other.so"); }});
         run = view(script, {"fixture-good"}, plugins);
     }
     ASSERT_EQ(run.result.exit_code, 0) << run.result;
@@ -569,7 +578,8 @@ TEST_F(ViewerTest, RebuiltPluginThatStaysLoadedIsReloadedAsRebuilt) {
 TEST_F(ViewerTest, DevModeReloadsAnEditedSourceAndKeepsTheLastOneThatCompiles) {
     const fs::path fixtures = FGR_TEST_FIXTURE_DIR;
     const fs::path source = fixtures / "dev" / "dev_scene.cl";  // the path the plugin names
-    std::ofstream(source) << "real scene_de(vec3 p, PARAMS) { return v3_length(p) - param_scale; }\n";
+    std::ofstream(source)
+        << "real scene_de(vec3 p, PARAMS) { return v3_length(p) - param_scale; }\n";
     const fs::path plugins = dir() / "plugins";
     fs::create_directory(plugins);
     fs::copy_file(fixtures / "dev" / "dev_scene.so", plugins / "dev_scene.so");
@@ -587,8 +597,9 @@ TEST_F(ViewerTest, DevModeReloadsAnEditedSourceAndKeepsTheLastOneThatCompiles) {
     {
         AfterEachScreenshot edits(
             dir(), {[&] {
-                        std::ofstream(source) << "real scene_de(vec3 p, PARAMS) {\n"
-                                                 "    return v3_length(p) - 1.5f * param_scale;\n}\n";
+                        std::ofstream(source)
+                            << "real scene_de(vec3 p, PARAMS) {\n"
+                               "    return v3_length(p) - 1.5f * param_scale;\n}\n";
                     },
                     [&] {
                         std::ofstream(source) << "real scene_de(vec3 p, PARAMS) {\n"
@@ -662,9 +673,9 @@ TEST_F(ViewerTest, ExitAfterEndsCleanlyWithFrameStatistics) {
 // --eye, --target and --fov set the view the viewer opens at: with no input,
 // the camera it reports on exit stands where --eye put it and looks at --target.
 TEST_F(ViewerTest, EyeAndTargetSetTheStartView) {
-    const ViewerRun run = view("", {"mandelbulb", "--eye", "1.5,-2.5,0.5", "--target", "0,0,0.25",
-                                    "--fov", "40"},
-                               std::nullopt, 2);
+    const ViewerRun run =
+        view("", {"mandelbulb", "--eye", "1.5,-2.5,0.5", "--target", "0,0,0.25", "--fov", "40"},
+             std::nullopt, 2);
     ASSERT_EQ(run.result.exit_code, 0) << run.result;
     const std::vector<double> position = stat_values(run.result.out, "camera_position");
     const std::vector<double> forward = stat_values(run.result.out, "camera_forward");
@@ -675,7 +686,8 @@ TEST_F(ViewerTest, EyeAndTargetSetTheStartView) {
     EXPECT_NEAR(position[1], -2.5, 1e-5);
     EXPECT_NEAR(position[2], 0.5, 1e-5);
     const glm::dvec3 expected = glm::normalize(glm::dvec3(-1.5, 2.5, -0.25));
-    for (int i = 0; i < 3; ++i) EXPECT_NEAR(forward[static_cast<std::size_t>(i)], expected[i], 1e-5);
+    for (int i = 0; i < 3; ++i)
+        EXPECT_NEAR(forward[static_cast<std::size_t>(i)], expected[i], 1e-5);
 }
 
 // Path mode refines a still view progressively past the shaded mode's sample cap (the viewer
@@ -710,11 +722,20 @@ TEST_F(ViewerTest, PrecisionDoubleRendersTheViewInDouble) {
     ASSERT_FALSE(path.empty()) << run.result;
     std::map<std::string, Image8> references;
     for (const std::string precision : {"double", "float"}) {
-        std::vector<std::string> args = {"render", "mandelbulb", "--camera-path", path.string(),
-                                         "--time", "0", "--precision", precision,
-                                         "--width", std::to_string(kWidth),
-                                         "--height", std::to_string(kHeight),
-                                         "-o", precision + ".png"};
+        std::vector<std::string> args = {"render",
+                                         "mandelbulb",
+                                         "--camera-path",
+                                         path.string(),
+                                         "--time",
+                                         "0",
+                                         "--precision",
+                                         precision,
+                                         "--width",
+                                         std::to_string(kWidth),
+                                         "--height",
+                                         std::to_string(kHeight),
+                                         "-o",
+                                         precision + ".png"};
         args.insert(args.end(), fine.begin(), fine.end());
         const test::RunResult rendered = test::run_fgr(args, dir());
         ASSERT_EQ(rendered.exit_code, 0) << rendered;
@@ -762,9 +783,17 @@ TEST_F(ViewerTest, ProjectionFromTheCommandLineShapesTheViewersFrames) {
         ASSERT_EQ(run.screenshots.size(), 1u) << run.result;
         const fs::path path = saved_path(dir());
         ASSERT_FALSE(path.empty()) << run.result;
-        std::vector<std::string> args = {"render", "mandelbulb", "--camera-path", path.string(),
-                                         "--time", "0", "--width", std::to_string(kWidth),
-                                         "--height", std::to_string(kHeight), "-o",
+        std::vector<std::string> args = {"render",
+                                         "mandelbulb",
+                                         "--camera-path",
+                                         path.string(),
+                                         "--time",
+                                         "0",
+                                         "--width",
+                                         std::to_string(kWidth),
+                                         "--height",
+                                         std::to_string(kHeight),
+                                         "-o",
                                          "reference.png"};
         args.insert(args.end(), projection.begin(), projection.end());
         const test::RunResult rendered = test::run_fgr(args, dir());

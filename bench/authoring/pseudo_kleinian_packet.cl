@@ -20,7 +20,8 @@ inline real kleinian_iterate(vec3 p, PARAMS, int record, orbit_trap* trap) {
         if (record) *trap = trap_update(*trap, z, FGR_TRUE);
     }
     const real rxy = sqrt(z.x * z.x + z.y * z.y);
-    return 0.5f * (fabs(rxy * z.z) - param_thickness) / sqrt(v3_length2(z) + param_thickness + 1e-20f) / dr;
+    return 0.5f * (fabs(rxy * z.z) - param_thickness) /
+           sqrt(v3_length2(z) + param_thickness + 1e-20f) / dr;
 }
 
 #define FGR_SCENE_HAS_COLOUR

@@ -3,12 +3,11 @@
 #include <algorithm>
 #include <cmath>
 #include <cstddef>
+#include <glm/geometric.hpp>
+#include <glm/trigonometric.hpp>
 #include <limits>
 #include <stdexcept>
 #include <vector>
-
-#include <glm/geometric.hpp>
-#include <glm/trigonometric.hpp>
 
 namespace fgr {
 namespace {
@@ -104,7 +103,6 @@ glm::vec3 least_aligned_axis(glm::vec3 direction) {
     return {0.0f, 0.0f, 1.0f};
 }
 
-
 bool up_defines_roll(glm::vec3 forward, glm::vec3 up) {
     const float up_length = glm::length(up);
     if (!(up_length > 0.0f) || !std::isfinite(up_length)) return false;
@@ -167,8 +165,8 @@ CameraView evaluate_camera_path(const CameraPath& path, double time) {
 }
 
 bool finer_than_float(float footprint, float magnitude) {
-    const float float_step =
-        std::max(magnitude, std::numeric_limits<float>::min()) * std::numeric_limits<float>::epsilon();
+    const float float_step = std::max(magnitude, std::numeric_limits<float>::min()) *
+                             std::numeric_limits<float>::epsilon();
     return footprint < 16.0f * float_step;
 }
 

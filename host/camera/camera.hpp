@@ -55,9 +55,10 @@ bool finer_than_float(float footprint, float magnitude);
 // and fov follow a uniform Catmull-Rom spline through the keyframes in each segment's local
 // parameter (position and target in double, so a path can fly a deep zoom), the end keyframes
 // doubling as their own outer neighbours; fov is kept in [1, 179], the lower bound lowered to half
-// the segment's narrower keyframe fov for deep zooms' narrow views. Up is a normalised lerp of the segment's ups, made orthogonal to the resulting view direction.
-// At a keyframe's time position, target and fov are that keyframe's, and the basis is the one the
-// keyframe itself gives. Throws std::invalid_argument for a path without keyframes.
+// the segment's narrower keyframe fov for deep zooms' narrow views. Up is a normalised lerp of the
+// segment's ups, made orthogonal to the resulting view direction. At a keyframe's time position,
+// target and fov are that keyframe's, and the basis is the one the keyframe itself gives. Throws
+// std::invalid_argument for a path without keyframes.
 CameraView evaluate_camera_path(const CameraPath& path, double time);
 
 }  // namespace fgr

@@ -1,14 +1,14 @@
 #include "camera/projection.hpp"
 
+#include <fmt/format.h>
+
 #include <algorithm>
 #include <array>
 #include <cmath>
-#include <stdexcept>
-#include <utility>
-
-#include <fmt/format.h>
 #include <glm/geometric.hpp>
 #include <glm/trigonometric.hpp>
+#include <stdexcept>
+#include <utility>
 
 namespace fgr {
 namespace {
@@ -77,15 +77,15 @@ bool is_stereo(ProjectionKind kind) {
 
 void check_projection(const Projection& projection) {
     if (!(projection.fisheye_fov_degrees > 0.0f && projection.fisheye_fov_degrees <= 360.0f)) {
-        throw std::invalid_argument(fmt::format(
-            "--fisheye-fov {} is out of range: expected degrees in (0, 360]",
-            projection.fisheye_fov_degrees));
+        throw std::invalid_argument(
+            fmt::format("--fisheye-fov {} is out of range: expected degrees in (0, 360]",
+                        projection.fisheye_fov_degrees));
     }
     if (projection.eye_separation &&
         !(*projection.eye_separation >= 0.0 && std::isfinite(*projection.eye_separation))) {
-        throw std::invalid_argument(fmt::format(
-            "--eye-separation {} is out of range: expected a distance >= 0",
-            *projection.eye_separation));
+        throw std::invalid_argument(
+            fmt::format("--eye-separation {} is out of range: expected a distance >= 0",
+                        *projection.eye_separation));
     }
     if (projection.convergence &&
         !(*projection.convergence > 0.0 && std::isfinite(*projection.convergence))) {
@@ -108,13 +108,15 @@ CameraModel camera_model(const CameraView& view, const Projection& projection) {
 
 float pixel_angle(const CameraModel& model, int width, int height) {
     switch (model.kind) {
-        case ProjectionKind::Equirectangular: return 2.0f * kPi / float(width);
+        case ProjectionKind::Equirectangular:
+            return 2.0f * kPi / float(width);
         case ProjectionKind::Fisheye:
             return 2.0f * model.fisheye_half_fov / float(std::min(width, height));
         case ProjectionKind::StereoSideBySide:
             return 2.0f * model.basis.tan_half_fov / (0.5f * float(width));
         case ProjectionKind::StereoTopBottom:
-        case ProjectionKind::Pinhole: break;
+        case ProjectionKind::Pinhole:
+            break;
     }
     return pixel_angle(model.basis, width);
 }

@@ -20,10 +20,9 @@
 // position, looking along the same forward direction with off-axis (asymmetric) frusta that meet
 // on the plane at distance `convergence`: zero parallax there, and no vertical parallax anywhere.
 
+#include <glm/vec3.hpp>
 #include <optional>
 #include <string>
-
-#include <glm/vec3.hpp>
 
 #include "camera/camera.hpp"
 #include "camera/view.hpp"

@@ -2,10 +2,9 @@
 // Where a camera stands and looks: a view, a named one, and a path of keyframed views. Plain data
 // that scenes carry and every front end edits; camera.hpp turns a view into rays.
 
+#include <glm/vec3.hpp>
 #include <string>
 #include <vector>
-
-#include <glm/vec3.hpp>
 
 namespace fgr {
 

@@ -2,10 +2,9 @@
 // Views in fgr's JSON files (camera path files, IFS and formula scene files): read and checked as
 // plugins' cameras are, and written so they read back exactly.
 
+#include <nlohmann/json.hpp>
 #include <string>
 #include <vector>
-
-#include <nlohmann/json.hpp>
 
 #include "camera/view.hpp"
 

@@ -1,12 +1,12 @@
 #include "camera/view_override.hpp"
 
+#include <spdlog/fmt/fmt.h>
+
 #include <cerrno>
 #include <cmath>
 #include <cstdlib>
 #include <stdexcept>
 #include <vector>
-
-#include <spdlog/fmt/fmt.h>
 
 #include "camera/view_validation.hpp"
 
@@ -50,7 +50,9 @@ glm::dvec3 parse_vector(const std::string& option, const std::string& text) {
     return vector;
 }
 
-std::string vector_text(const glm::dvec3& v) { return fmt::format("{:g},{:g},{:g}", v.x, v.y, v.z); }
+std::string vector_text(const glm::dvec3& v) {
+    return fmt::format("{:g},{:g},{:g}", v.x, v.y, v.z);
+}
 
 }  // namespace
 

@@ -2,10 +2,9 @@
 // A viewpoint typed on the command line (`--eye X,Y,Z --target X,Y,Z [--up X,Y,Z] [--fov DEG]`
 // of fgr render, view and bench): the texts parsed, and laid over a scene's camera.
 
+#include <glm/vec3.hpp>
 #include <optional>
 #include <string>
-
-#include <glm/vec3.hpp>
 
 #include "camera/view.hpp"
 
@@ -22,7 +21,7 @@ struct ViewOverrideText {
 };
 
 struct ViewOverride {
-    std::optional<glm::dvec3> eye;     // double, as camera path files keep positions
+    std::optional<glm::dvec3> eye;  // double, as camera path files keep positions
     std::optional<glm::dvec3> target;
     std::optional<glm::vec3> up;
     std::optional<float> fov_degrees;  // horizontal

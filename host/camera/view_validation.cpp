@@ -1,8 +1,8 @@
 #include "camera/view_validation.hpp"
 
-#include <cmath>
-
 #include <fmt/format.h>
+
+#include <cmath>
 #include <glm/geometric.hpp>
 
 #include "camera/camera.hpp"

@@ -1,14 +1,13 @@
 // fgr bench: the benchmark protocol along a camera path (the accuracy sweep, `fgr bench accuracy`,
 // is in bench_accuracy.cpp).
+#include <fmt/format.h>
+#include <spdlog/spdlog.h>
+#include <unistd.h>
+
 #include <algorithm>
 #include <cstdio>
 #include <filesystem>
 #include <string>
-
-#include <unistd.h>
-
-#include <fmt/format.h>
-#include <spdlog/spdlog.h>
 
 #include "commands.hpp"
 #include "device/program_cache.hpp"
@@ -68,11 +67,13 @@ void add_bench_command(CLI::App& app, BenchOptions& options) {
         ->check(CLI::Range(1, kMaxImageSide));
     bench->add_option("--height", options.settings.height, "image height (default 720)")
         ->check(CLI::Range(1, kMaxImageSide));
-    auto* duration = bench->add_option("--duration", options.settings.duration_seconds,
-                                       "seconds per run, the path played in real time (default 10)")
+    auto* duration = bench
+                         ->add_option("--duration", options.settings.duration_seconds,
+                                      "seconds per run, the path played in real time (default 10)")
                          ->check(CLI::Range(0.1, 3600.0));
-    bench->add_option("--frames", options.frames,
-                      "a fixed number of frames per run, spread evenly over the path")
+    bench
+        ->add_option("--frames", options.frames,
+                     "a fixed number of frames per run, spread evenly over the path")
         ->check(CLI::Range(1, 100000))
         ->excludes(duration);
     bench->add_option("--runs", options.settings.runs, "repeat and average (default 1)")
@@ -98,8 +99,9 @@ int command_bench(BenchOptions& options) {
     }
     if (options.scene.empty()) throw UsageError("bench needs a SCENE (see `fgr list`)");
     if (!options.view_override.empty() && !options.settings.path.empty()) {
-        throw UsageError("--path plays a camera path, --eye, --target, --up and --fov hold a still "
-                         "view: give one or the other");
+        throw UsageError(
+            "--path plays a camera path, --eye, --target, --up and --fov hold a still "
+            "view: give one or the other");
     }
     parsed_view_override(options.view_override);  // a malformed vector fails before any loading
     const Discovery found = discover_for(options.scene);

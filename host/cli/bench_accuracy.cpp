@@ -1,15 +1,15 @@
 // fgr bench accuracy: the accuracy-for-time knobs swept against a reference render, with a plot.
+#include <fmt/format.h>
+#include <spdlog/spdlog.h>
+
 #include <algorithm>
 #include <cstdlib>
 #include <filesystem>
 #include <string>
 
-#include <fmt/format.h>
-#include <spdlog/spdlog.h>
-
 #include "commands.hpp"
-#include "diagnostics/brute_accuracy.hpp"
 #include "device/program_cache.hpp"
+#include "diagnostics/brute_accuracy.hpp"
 #include "render/renderer.hpp"
 
 namespace fgr {
@@ -25,13 +25,15 @@ void add_bench_accuracy_command(CLI::App& bench, BenchOptions& options) {
         ->check(CLI::Range(16, 4096));
     accuracy->add_option("--height", sweep.settings.height, "image height (default 240)")
         ->check(CLI::Range(16, 4096));
-    accuracy->add_option("--reference-spp", sweep.settings.reference_samples,
-                         "samples per pixel of the samples reference, the one the spp points "
-                         "are measured against (default 64)")
+    accuracy
+        ->add_option("--reference-spp", sweep.settings.reference_samples,
+                     "samples per pixel of the samples reference, the one the spp points "
+                     "are measured against (default 64)")
         ->check(CLI::Range(1, kMaxSamples));
-    accuracy->add_option("--repeats", sweep.settings.repeats,
-                         "timing rounds over all settings (alternating); each setting's fastest "
-                         "render counts (default 5)")
+    accuracy
+        ->add_option("--repeats", sweep.settings.repeats,
+                     "timing rounds over all settings (alternating); each setting's fastest "
+                     "render counts (default 5)")
         ->check(CLI::Range(1, 20));
     accuracy->add_option("-o,--output", sweep.output,
                          "write PREFIX.csv, PREFIX.gp and PREFIX.png (default: accuracy-SCENE)");
@@ -53,8 +55,8 @@ void plot(const std::filesystem::path& csv, const std::filesystem::path& script,
           const std::filesystem::path& png) {
     fmt::print("wrote {} and {}\n", csv.string(), script.string());
     const std::string directory = csv.has_parent_path() ? csv.parent_path().string() : ".";
-    const std::string command = fmt::format("cd '{}' && gnuplot '{}' 2>&1", directory,
-                                            script.filename().string());
+    const std::string command =
+        fmt::format("cd '{}' && gnuplot '{}' 2>&1", directory, script.filename().string());
     if (std::system("command -v gnuplot > /dev/null 2>&1") != 0) {
         spdlog::warn("gnuplot not found: no plot (apt-get install gnuplot-nox, then gnuplot {})",
                      script.string());
@@ -75,8 +77,8 @@ void brute_accuracy(const Scene& scene, const AccuracySettings& settings,
     brute.width = settings.width;
     brute.height = settings.height;
     brute.repeats = settings.repeats;
-    const BruteConvergence result = run_brute_convergence(scene, device, cache, brute,
-                                                          report_progress);
+    const BruteConvergence result =
+        run_brute_convergence(scene, device, cache, brute, report_progress);
     fmt::print("reference: {} ({:.0f} ms)\n", result.reference, result.reference_ms);
     // Times against the sphere tracer's say what brute force costs; against a long brute-force
     // render they would say nothing.
@@ -84,11 +86,11 @@ void brute_accuracy(const Scene& scene, const AccuracySettings& settings,
         return result.sphere_traced ? fmt::format("{:.1f}", ms / result.reference_ms)
                                     : std::string("-");
     };
-    fmt::print("{:>6} {:>10} {:>10} {:>8} {:>12} {:>8} {:>10}\n", "passes", "render ms",
-               "x ref", "tests/px", "disagree %", "IoU", "err (fp)");
+    fmt::print("{:>6} {:>10} {:>10} {:>8} {:>12} {:>8} {:>10}\n", "passes", "render ms", "x ref",
+               "tests/px", "disagree %", "IoU", "err (fp)");
     for (const BrutePoint& point : result.points) {
-        fmt::print("{:>6} {:>10.1f} {:>10} {:>8.1f} {:>12.3f} {:>8.4f} {:>10.3f}\n",
-                   point.passes, point.render_ms, against_reference(point.render_ms),
+        fmt::print("{:>6} {:>10.1f} {:>10} {:>8.1f} {:>12.3f} {:>8.4f} {:>10.3f}\n", point.passes,
+                   point.render_ms, against_reference(point.render_ms),
                    point.inside_tests_per_pixel, point.agreement.disagreeing_percent(),
                    point.agreement.iou(), point.agreement.mean_footprints);
     }
@@ -100,10 +102,9 @@ void brute_accuracy(const Scene& scene, const AccuracySettings& settings,
     if (agreed != result.points.end()) {
         fmt::print("98% agreement after {} passes: {:.0f} ms{}\n", agreed->passes,
                    agreed->render_ms,
-                   result.sphere_traced
-                       ? fmt::format(", {:.1f}x the sphere tracer", agreed->render_ms /
-                                                                     result.reference_ms)
-                       : std::string());
+                   result.sphere_traced ? fmt::format(", {:.1f}x the sphere tracer",
+                                                      agreed->render_ms / result.reference_ms)
+                                        : std::string());
     } else {
         fmt::print("98% agreement not reached in {} passes\n", result.points.back().passes);
     }
@@ -119,7 +120,8 @@ int command_bench_accuracy(const AccuracyOptions& options, int device_index) {
     const Discovery found = discover_for(options.scene);
     const Scene& scene = find_scene(found, options.scene);
     const std::string prefix = options.output.empty() ? "accuracy-" + scene.id : options.output;
-    const std::filesystem::path csv = prefix + ".csv", script = prefix + ".gp", png = prefix + ".png";
+    const std::filesystem::path csv = prefix + ".csv", script = prefix + ".gp",
+                                png = prefix + ".png";
     check_output_directory(csv);
     const ComputeDevice device = open_requested_device(device_index);
     ProgramCache cache(ProgramCache::default_directory());
@@ -146,9 +148,9 @@ int command_bench_accuracy(const AccuracyOptions& options, int device_index) {
         const std::string front = std::string(point.pareto || point.pareto_ssim ? " " : "") +
                                   (point.pareto ? "r" : "") + (point.pareto_ssim ? "s" : "");
         fmt::print("{:<15} {:>19} {:>8} {:>9.1f} {:>8.2f} {:>8.3f} {:>8.4f} {:>6.2f} {:>9.3g}{}\n",
-                   point.knob, point.value, point.reference, point.render_ms,
-                   point.steps_per_pixel, point.error.rmse, point.error.one_minus_ssim,
-                   point.error.hit_mismatch_percent, point.error.mean_depth_error, front);
+                   point.knob, point.value, point.reference, point.render_ms, point.steps_per_pixel,
+                   point.error.rmse, point.error.one_minus_ssim, point.error.hit_mismatch_percent,
+                   point.error.mean_depth_error, front);
     }
     write_output(csv, accuracy_csv(report));
     write_output(script, accuracy_gnuplot(report, scene.id, csv.filename().string(),

@@ -1,11 +1,11 @@
 // fgr cache: the kernel cache directory's size (`fgr cache size`) and emptying it
 // (`fgr cache clear`). Programs and the math self-test's verdicts are its entries.
+#include <fmt/format.h>
+
 #include <cstdint>
 #include <cstdlib>
 #include <filesystem>
 #include <string>
-
-#include <fmt/format.h>
 
 #include "commands.hpp"
 #include "device/cache_directory.hpp"

@@ -1,6 +1,7 @@
-// fgr check: the numerical checks of diagnostics/scene_check.hpp on one scene, given by id or as a plugin
-// file, with a report a scene's author can act on; --compile only builds the kernel (what the SDK
-// template's build runs, so a typo in the .cl fails `cmake --build` with its file and line).
+// fgr check: the numerical checks of diagnostics/scene_check.hpp on one scene, given by id or as a
+// plugin file, with a report a scene's author can act on; --compile only builds the kernel (what
+// the SDK template's build runs, so a typo in the .cl fails `cmake --build` with its file and
+// line).
 #include <fmt/format.h>
 
 #include <cstdio>

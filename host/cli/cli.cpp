@@ -2,18 +2,18 @@
 // throws into a one-line error and an exit code.
 #include "cli.hpp"
 
-#include <cstdio>
-#include <exception>
-#include <string>
-
-#include <CLI/CLI.hpp>
 #include <fmt/format.h>
 #include <spdlog/sinks/stdout_color_sinks.h>
 #include <spdlog/spdlog.h>
 
+#include <CLI/CLI.hpp>
+#include <cstdio>
+#include <exception>
+#include <string>
+
 #include "commands.hpp"
-#include "distributed/cluster.hpp"
 #include "device/program_cache.hpp"
+#include "distributed/cluster.hpp"
 
 namespace fgr {
 namespace {
@@ -47,14 +47,17 @@ int report_error(const std::string& message, int code) {
 }
 
 // The commands that share one render between MPI ranks.
-bool runs_across_ranks(const std::string& command) { return command == "render" || command == "video"; }
+bool runs_across_ranks(const std::string& command) {
+    return command == "render" || command == "video";
+}
 
 }  // namespace
 
 int run_cli(int argc, char** argv) {
     const Cluster& cluster = Cluster::current();
     if (!cluster.unavailable().empty()) {
-        if (cluster.coordinator()) std::fprintf(stderr, "fgr: error: %s\n", cluster.unavailable().c_str());
+        if (cluster.coordinator())
+            std::fprintf(stderr, "fgr: error: %s\n", cluster.unavailable().c_str());
         return kExitFailure;
     }
     CLI::App app{"fgr: real-time ray marching of 3D fractals"};
@@ -63,8 +66,8 @@ int run_cli(int argc, char** argv) {
     app.add_flag("-v,--verbose", verbose, "debug logging");
     std::string list_scene;
     bool list_formulas = false;
-    CLI::App* list =
-        app.add_subcommand("list", "list the scenes found, with parameters, cameras and camera paths");
+    CLI::App* list = app.add_subcommand(
+        "list", "list the scenes found, with parameters, cameras and camera paths");
     list->add_option("scene", list_scene, "list this scene alone, describing each parameter");
     list->add_flag("--formulas", list_formulas,
                    "list the formula library instead: what formula scene files may iterate");
@@ -98,9 +101,9 @@ int run_cli(int argc, char** argv) {
             "new-scene, bench, cache, environment)",
             kExitUsage);
     }
-    if (const std::string first = argv[1]; !first.empty() && first.front() != '-' &&
-        first != "list" && first != "info" && first != "render" && first != "video" &&
-        first != "merge" && first != "view" &&
+    if (const std::string first = argv[1];
+        !first.empty() && first.front() != '-' && first != "list" && first != "info" &&
+        first != "render" && first != "video" && first != "merge" && first != "view" &&
         first != "check" && first != "new-scene" && first != "bench" && first != "cache" &&
         first != "environment") {
         return report_error(fmt::format("unknown command '{}' (commands: list, info, render, "
@@ -133,12 +136,15 @@ int run_cli(int argc, char** argv) {
     try {
         const std::string command = app.get_subcommands().front()->get_name();
         if (!cluster.alone() && !runs_across_ranks(command)) {
-            throw UsageError(fmt::format("only `fgr render` and `fgr video` run across MPI ranks: "
-                                         "run `fgr {}` without mpirun", command));
+            throw UsageError(
+                fmt::format("only `fgr render` and `fgr video` run across MPI ranks: "
+                            "run `fgr {}` without mpirun",
+                            command));
         }
         const int code = run_command(command);
         if (cluster.coordinator()) {
-            if (const std::string failure = Cluster::current().dismiss_workers(); !failure.empty()) {
+            if (const std::string failure = Cluster::current().dismiss_workers();
+                !failure.empty()) {
                 return report_error(failure, kExitFailure);
             }
         }

@@ -6,6 +6,7 @@
 // returns the exit code, throws UsageError for bad input (exit 2) and anything else for failures
 // while running (exit 1).
 
+#include <CLI/CLI.hpp>
 #include <exception>
 #include <filesystem>
 #include <future>
@@ -14,22 +15,20 @@
 #include <string>
 #include <vector>
 
-#include <CLI/CLI.hpp>
-
+#include "camera/projection.hpp"
+#include "camera/view_override.hpp"
+#include "device/opencl_device.hpp"
 #include "diagnostics/accuracy.hpp"
 #include "diagnostics/bench.hpp"
-#include "scene/discovery.hpp"
 #include "distributed/cluster.hpp"
 #include "distributed/task_farm.hpp"
-#include "device/opencl_device.hpp"
-#include "scene/parameters.hpp"
+#include "output/still_image.hpp"
 #include "render/path_settings.hpp"
 #include "render/precision.hpp"
-#include "camera/projection.hpp"
+#include "scene/discovery.hpp"
+#include "scene/parameters.hpp"
 #include "scene/render_mode.hpp"
 #include "scene/scene.hpp"
-#include "output/still_image.hpp"
-#include "camera/view_override.hpp"
 #include "viewer/viewer.hpp"
 
 namespace fgr {
@@ -85,9 +84,9 @@ void add_precision_option(CLI::App* command, Precision& precision, const std::st
 void add_prepass_option(CLI::App* command, bool& prepass);
 // --mode and the path tracer's options, shared by render, view and bench.
 struct ModeOptions {
-    std::optional<std::string> mode;  // default: the scene's (Scene::default_mode)
-    std::string environment = "sky";  // sky, studio, uniform[:RADIANCE] or an .hdr/.exr file
-    float environment_rotation = 0.0f;   // degrees about the up axis
+    std::optional<std::string> mode;    // default: the scene's (Scene::default_mode)
+    std::string environment = "sky";    // sky, studio, uniform[:RADIANCE] or an .hdr/.exr file
+    float environment_rotation = 0.0f;  // degrees about the up axis
     float environment_intensity = 1.0f;
     std::optional<float> turbidity;
     std::optional<float> sun_elevation;  // degrees above the horizon
@@ -169,21 +168,21 @@ struct RenderOptions {
     int device = -1;
     std::optional<int> samples;  // per pixel, jittered; default 1 (shaded), 64 (path)
     std::string kernel_source;   // OpenCL source instead of the scene's own; empty: its own
-    int bit_depth = 8;     // 8: tone-mapped sRGB; 16: linear (PNG only)
-    int packet_width = 0;  // 0: the device's preference
-    bool all = false;      // every scene's default view into the directory `output`
-    bool stats = false;    // print the primary rays' work: steps, DE evaluations, out of steps
+    int bit_depth = 8;           // 8: tone-mapped sRGB; 16: linear (PNG only)
+    int packet_width = 0;        // 0: the device's preference
+    bool all = false;            // every scene's default view into the directory `output`
+    bool stats = false;  // print the primary rays' work: steps, DE evaluations, out of steps
     Precision precision = Precision::Auto;
     std::string effect_changes;  // "+shadows,-ambient_occlusion": over the scene's own effects
     ModeOptions mode;
     std::optional<double> time_limit;  // seconds: stop adding samples after this long
     std::string aovs;                  // "albedo,normal,depth,alpha": EXR layers beside the image
     bool alpha = false;  // coverage as alpha: RGBA PNG (straight), EXR A (premultiplied colour)
-    bool dev = false;  // read the scene's .cl file from disk, not the plugin's embedded copy
+    bool dev = false;    // read the scene's .cl file from disk, not the plugin's embedded copy
     std::optional<int> tile_size;  // render in tiles of about this side (also implied by size)
     bool resume = false;           // continue an interrupted tiled render from its tile store
     ProjectionOptions projection;
-    bool part = false;                // write a part for `fgr merge` (output/parts/render_parts.hpp)
+    bool part = false;  // write a part for `fgr merge` (output/parts/render_parts.hpp)
     std::optional<std::string> tile;  // "I/N": the part is rows of tile I of N (implies --part)
     bool prepass = true;  // --prepass on|off: the cone-marched depth prepass (FrameRequest)
 };
@@ -224,7 +223,7 @@ struct VideoOptions {
     std::optional<double> start;     // path time of the first frame (default: first keyframe)
     std::optional<double> duration;  // seconds of path time (default: to the last keyframe)
     std::string codec;               // FFmpeg encoder name; "": the container's default
-    std::optional<int> crf;          // constant quality (x264, x265, VP9, AV1); default: the codec's
+    std::optional<int> crf;  // constant quality (x264, x265, VP9, AV1); default: the codec's
     std::optional<std::string> frame_range;  // "A:B": render frames A..B only (0-based, inclusive)
 };
 
@@ -269,7 +268,7 @@ int command_view(ViewCommandOptions& options);
 struct AccuracyOptions {
     std::string scene;
     AccuracySettings settings;
-    ModeOptions mode;  // --mode path sweeps the path tracer's noise knobs instead
+    ModeOptions mode;    // --mode path sweeps the path tracer's noise knobs instead
     std::string output;  // prefix of the .csv, .gp and .png files
 };
 
@@ -277,7 +276,7 @@ struct BenchOptions {
     std::string scene;
     BenchSettings settings;
     int frames = 0;
-    std::string output;  // prefix of the .json and .csv files
+    std::string output;         // prefix of the .json and .csv files
     std::string kernel_source;  // OpenCL source to time instead of the scene's own; empty: its own
     int device = -1;
     ModeOptions mode;
@@ -292,7 +291,7 @@ void add_bench_accuracy_command(CLI::App& bench, BenchOptions& options);
 int command_bench(BenchOptions& options);
 int command_bench_accuracy(const AccuracyOptions& options, int device_index);
 
-// --- fgr check ------------------------------------------------------------------------------------
+// --- fgr check -----------------------------------------------------------------------------------
 
 struct CheckOptions {
     std::string scene;  // an id, or a plugin file

@@ -1,17 +1,17 @@
+#include <fmt/format.h>
+#include <spdlog/spdlog.h>
+
 #include <algorithm>
 #include <string>
 #include <vector>
 
-#include <fmt/format.h>
-#include <spdlog/spdlog.h>
-
 #include "commands.hpp"
-#include "util/atomic_file.hpp"
-#include "distributed/cluster.hpp"
 #include "device/program_cache.hpp"
+#include "distributed/cluster.hpp"
 #include "render/renderer.hpp"
 #include "scene/scene_index.hpp"
 #include "scene/scene_source.hpp"
+#include "util/atomic_file.hpp"
 
 namespace fgr {
 Discovery discover() { return discover_scenes(plugin_search_path(executable_dir())); }
@@ -30,9 +30,10 @@ const Scene& find_scene(const Discovery& found, const std::string& id) {
 }
 
 void add_kernel_source_option(CLI::App* command, std::string& file) {
-    command->add_option("--kernel-source", file,
-                        "FILE.cl: the scene with this OpenCL source instead of its own (try or time "
-                        "a variant of its DE without rebuilding the plugin)");
+    command->add_option(
+        "--kernel-source", file,
+        "FILE.cl: the scene with this OpenCL source instead of its own (try or time "
+        "a variant of its DE without rebuilding the plugin)");
 }
 
 Scene with_kernel_source(Scene scene, const std::string& file) {
@@ -70,7 +71,8 @@ ComputeDevice open_requested_device(int index) {
         // One device a rank where a node has several of the default's kind (GPUs, say): the
         // ranks on a node take them in turn by their local rank.
         std::vector<int> candidates;
-        const bool any_gpu = std::any_of(devices.begin(), devices.end(), [](const DeviceInfo& d) { return d.is_gpu; });
+        const bool any_gpu = std::any_of(devices.begin(), devices.end(),
+                                         [](const DeviceInfo& d) { return d.is_gpu; });
         for (const DeviceInfo& device : devices) {
             if (device.is_gpu == any_gpu) candidates.push_back(device.index);
         }
@@ -110,8 +112,9 @@ void print_mpi_figures(const Cluster& cluster, const FarmOutcome& outcome) {
 void add_device_options(CLI::App* command, int& device, int& packet_width) {
     command->add_option("--device", device, "OpenCL device index (see `fgr info`)")
         ->check(CLI::NonNegativeNumber);
-    command->add_option("--packet-width", packet_width,
-                        "rays per work-item (default: 16 on CPUs, 1 on GPUs)")
+    command
+        ->add_option("--packet-width", packet_width,
+                     "rays per work-item (default: 16 on CPUs, 1 on GPUs)")
         ->check(CLI::IsMember({1, 4, 8, 16}));
 }
 
@@ -150,46 +153,56 @@ void add_mode_options(CLI::App* command, ModeOptions& options) {
                      "default: the scene's own")
         ->check(CLI::IsMember(names));
     const std::string path = "Path tracing (--mode path)";
-    command->add_option("--environment", options.environment,
-                        "what lights the scene: sky (default), studio, uniform[:RADIANCE or R,G,B] "
-                        "or an equirectangular .hdr/.exr file")
+    command
+        ->add_option("--environment", options.environment,
+                     "what lights the scene: sky (default), studio, uniform[:RADIANCE or R,G,B] "
+                     "or an equirectangular .hdr/.exr file")
         ->group(path);
-    command->add_option("--environment-rotation", options.environment_rotation,
-                        "turn the environment about the up axis, degrees")
+    command
+        ->add_option("--environment-rotation", options.environment_rotation,
+                     "turn the environment about the up axis, degrees")
         ->group(path);
-    command->add_option("--environment-intensity", options.environment_intensity,
-                        "scale the environment's radiance")
+    command
+        ->add_option("--environment-intensity", options.environment_intensity,
+                     "scale the environment's radiance")
         ->check(CLI::NonNegativeNumber)
         ->group(path);
     command->add_option("--turbidity", options.turbidity, "sky haze, 2 (clear) to 10 (hazy)")
         ->check(CLI::Range(1.7f, 10.0f))
         ->group(path);
-    command->add_option("--sun-elevation", options.sun_elevation,
-                        "sun above the horizon, degrees (default: the scene's key light)")
+    command
+        ->add_option("--sun-elevation", options.sun_elevation,
+                     "sun above the horizon, degrees (default: the scene's key light)")
         ->check(CLI::Range(-10.0f, 90.0f))
         ->group(path);
-    command->add_option("--sun-azimuth", options.sun_azimuth,
-                        "sun's compass angle, degrees (default: the scene's key light)")
+    command
+        ->add_option("--sun-azimuth", options.sun_azimuth,
+                     "sun's compass angle, degrees (default: the scene's key light)")
         ->group(path);
     command->add_option("--bounces", options.bounces, "scattering events per path at most")
         ->check(CLI::Range(0, kMaxBounces))
         ->group(path);
-    command->add_option("--roulette-depth", options.roulette_depth,
-                        "Russian roulette from this bounce on (unbiased); 0: never")
+    command
+        ->add_option("--roulette-depth", options.roulette_depth,
+                     "Russian roulette from this bounce on (unbiased); 0: never")
         ->check(CLI::Range(0, kMaxBounces))
         ->group(path);
-    command->add_option("--clamp", options.radiance_clamp,
-                        "clamp each sample's radiance to this (removes fireflies, biased); 0: off")
+    command
+        ->add_option("--clamp", options.radiance_clamp,
+                     "clamp each sample's radiance to this (removes fireflies, biased); 0: off")
         ->check(CLI::NonNegativeNumber)
         ->group(path);
-    command->add_flag("--no-light-sampling", options.no_light_sampling,
-                      "find lights by BSDF sampling alone (no next-event estimation)")
+    command
+        ->add_flag("--no-light-sampling", options.no_light_sampling,
+                   "find lights by BSDF sampling alone (no next-event estimation)")
         ->group(path);
-    command->add_flag("--no-mis", options.no_mis,
-                      "no multiple importance sampling between light and BSDF sampling")
+    command
+        ->add_flag("--no-mis", options.no_mis,
+                   "no multiple importance sampling between light and BSDF sampling")
         ->group(path);
-    command->add_flag("--no-scene-lights", options.no_scene_lights,
-                      "light the scene by the environment alone")
+    command
+        ->add_flag("--no-scene-lights", options.no_scene_lights,
+                   "light the scene by the environment alone")
         ->group(path);
     command->add_option("--seed", options.seed, "noise pattern of the path tracer")->group(path);
 }
@@ -272,25 +285,30 @@ void add_view_override_options(CLI::App* command, ViewOverrideText& text) {
 
 void add_projection_options(CLI::App* command, ProjectionOptions& options) {
     const std::string group = "Projection (panoramas, fisheye, stereo pairs)";
-    command->add_option("--projection", options.projection,
-                        "pinhole (default), equirectangular (alias panorama: the whole sphere, "
-                        "best at 2:1), fisheye (equidistant), stereo-sbs or stereo-tb (a stereo "
-                        "pair side by side, left eye left, or top/bottom, left eye on top)")
+    command
+        ->add_option("--projection", options.projection,
+                     "pinhole (default), equirectangular (alias panorama: the whole sphere, "
+                     "best at 2:1), fisheye (equidistant), stereo-sbs or stereo-tb (a stereo "
+                     "pair side by side, left eye left, or top/bottom, left eye on top)")
         ->group(group);
-    command->add_option("--stereo", options.stereo,
-                        "sbs or tb: a stereo pair, the same as --projection stereo-sbs/stereo-tb")
+    command
+        ->add_option("--stereo", options.stereo,
+                     "sbs or tb: a stereo pair, the same as --projection stereo-sbs/stereo-tb")
         ->group(group);
-    command->add_option("--fisheye-fov", options.fisheye_fov,
-                        "fisheye field of view across the image circle, degrees in (0, 360] "
-                        "(default 180)")
+    command
+        ->add_option("--fisheye-fov", options.fisheye_fov,
+                     "fisheye field of view across the image circle, degrees in (0, 360] "
+                     "(default 180)")
         ->group(group);
-    command->add_option("--eye-separation", options.eye_separation,
-                        "stereo: distance between the eyes, >= 0 (default: 1/30 of the distance "
-                        "to the target)")
+    command
+        ->add_option("--eye-separation", options.eye_separation,
+                     "stereo: distance between the eyes, >= 0 (default: 1/30 of the distance "
+                     "to the target)")
         ->group(group);
-    command->add_option("--convergence", options.convergence,
-                        "stereo: distance to the zero-parallax plane, > 0 (default: the distance "
-                        "to the target)")
+    command
+        ->add_option("--convergence", options.convergence,
+                     "stereo: distance to the zero-parallax plane, > 0 (default: the distance "
+                     "to the target)")
         ->group(group);
 }
 

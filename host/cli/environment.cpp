@@ -1,12 +1,13 @@
 // fgr environment: writes one of the environment maps fgr generates (the studio, the daylight
 // sky) as an equirectangular .hdr or .exr file, to look at, edit, or light other renderers with.
-#include <filesystem>
-#include <string>
+#include "render/environment.hpp"
 
 #include <fmt/format.h>
 
+#include <filesystem>
+#include <string>
+
 #include "commands.hpp"
-#include "render/environment.hpp"
 #include "image/hdr_io.hpp"
 #include "util/lower_case.hpp"
 
@@ -23,8 +24,7 @@ void add_environment_command(CLI::App& app, EnvironmentOptions& options) {
         ->check(CLI::Range(8, 16384));
     command->add_option("--turbidity", options.turbidity, "sky haze, 2 (clear) to 10 (hazy)")
         ->check(CLI::Range(1.7f, 10.0f));
-    command->add_option("--sun-elevation", options.sun_elevation,
-                        "sun above the horizon, degrees")
+    command->add_option("--sun-elevation", options.sun_elevation, "sun above the horizon, degrees")
         ->check(CLI::Range(-10.0f, 90.0f));
     command->add_option("--sun-azimuth", options.sun_azimuth, "sun's compass angle, degrees");
 }

@@ -30,12 +30,15 @@ void print_math_check(const DeviceInfo& info) {
 int command_info(bool math_check) {
     const auto devices = list_devices();
     if (devices.empty()) {
-        throw RuntimeFailure("no OpenCL device found (install an OpenCL driver, e.g. pocl-opencl-icd)");
+        throw RuntimeFailure(
+            "no OpenCL device found (install an OpenCL driver, e.g. pocl-opencl-icd)");
     }
     for (const auto& device : devices) {
         fmt::print("device {}: {}\n", device.index, device.name);
         fmt::print("  platform:       {}\n", device.platform);
-        fmt::print("  type:           {}\n", device.is_gpu ? "GPU" : device.is_cpu ? "CPU" : "other");
+        fmt::print("  type:           {}\n", device.is_gpu   ? "GPU"
+                                             : device.is_cpu ? "CPU"
+                                                             : "other");
         fmt::print("  version:        {} (driver {}, {})\n", device.version, device.driver_version,
                    device.opencl_c_version);
         fmt::print("  compute units:  {}\n", device.compute_units);

@@ -1,15 +1,15 @@
 // fgr list: every scene found, with its parameters, cameras, camera paths and effects; fgr list
 // SCENE: that scene, each parameter with its description.
-#include <string>
-
 #include <fmt/format.h>
 #include <fmt/ranges.h>
 
+#include <string>
+
 #include "commands.hpp"
-#include "scene/formulas/formulas.hpp"
-#include "scene/render_mode.hpp"
-#include "scene/ifs/ifs.hpp"
 #include "device/kernel_assembly.hpp"
+#include "scene/formulas/formulas.hpp"
+#include "scene/ifs/ifs.hpp"
+#include "scene/render_mode.hpp"
 
 namespace fgr {
 namespace {
@@ -23,7 +23,8 @@ std::string range_text(const ParamInfo& param) {
 
 std::string value_text(const ParamInfo& param) {
     const auto& value = param.default_value;
-    if (param_components(param.type) == 3) return fmt::format("{},{},{}", value[0], value[1], value[2]);
+    if (param_components(param.type) == 3)
+        return fmt::format("{},{},{}", value[0], value[1], value[2]);
     if (!param.choices.empty()) {
         return param.choices.at(static_cast<size_t>(value[0] - param.min_value));
     }
@@ -41,12 +42,12 @@ void print_scene(const Scene& scene, bool described) {
     fmt::print("{}  {} - {}\n", scene.id, scene.name, scene.description);
     if (scene.ifs) {
         // An IFS file, or a plugin that handed over maps (ABI 1.3).
-        fmt::print("  {}: {} ({} maps; bounding sphere centre {:.4g} {:.4g} {:.4g}, radius "
-                   "{:.4g})\n",
-                   is_ifs_file_name(scene.plugin_file) ? "IFS file" : "IFS plugin",
-                   scene.plugin_file.string(), scene.ifs->maps.size(), scene.ifs->bounds.centre.x,
-                   scene.ifs->bounds.centre.y, scene.ifs->bounds.centre.z,
-                   scene.ifs->bounds.radius);
+        fmt::print(
+            "  {}: {} ({} maps; bounding sphere centre {:.4g} {:.4g} {:.4g}, radius "
+            "{:.4g})\n",
+            is_ifs_file_name(scene.plugin_file) ? "IFS file" : "IFS plugin",
+            scene.plugin_file.string(), scene.ifs->maps.size(), scene.ifs->bounds.centre.x,
+            scene.ifs->bounds.centre.y, scene.ifs->bounds.centre.z, scene.ifs->bounds.radius);
     } else if (is_formula_file_name(scene.plugin_file)) {
         fmt::print("  formula file: {}\n", scene.plugin_file.string());
     } else {
@@ -54,15 +55,16 @@ void print_scene(const Scene& scene, bool described) {
     }
     if (!scene.tags.empty()) fmt::print("  tags: {}\n", fmt::join(scene.tags, ", "));
     if (scene.scale != 1.0f) {
-        fmt::print("  scale: {} (the default ao_radius, glow_radius, aperture, fog_density and "
-                   "absorption follow it)\n",
-                   scene.scale);
+        fmt::print(
+            "  scale: {} (the default ao_radius, glow_radius, aperture, fog_density and "
+            "absorption follow it)\n",
+            scene.scale);
     }
     fmt::print("  parameters:\n");
     for (const auto& param : scene.params) {
         fmt::print("    {:<20} {:<7} {:<30} default {:<16} {} ({})\n", param.id,
-                   param_type_name(param.type), range_text(param), default_text(param),
-                   param.label, param.group);
+                   param_type_name(param.type), range_text(param), default_text(param), param.label,
+                   param.group);
         if (described && !param.description.empty()) {
             fmt::print("        {}\n", param.description);
         }
@@ -79,7 +81,7 @@ void print_scene(const Scene& scene, bool described) {
     fmt::print("  camera paths: {}\n", paths.empty() ? "none" : paths);
     fmt::print("  effects: {}\n", effect_names(scene.effects));
     // What renders the surface, and so which modes the scene has.
-    const char* surface = scene.ifs            ? "IFS maps, traced exactly (shaded, path)"
+    const char* surface = scene.ifs             ? "IFS maps, traced exactly (shaded, path)"
                           : scene.inside_only() ? "inside test only, no DE (brute)"
                                                 : "distance estimator (shaded, path, brute)";
     fmt::print("  surface: {}; default mode {}\n", surface, render_mode_name(scene.default_mode));
@@ -89,9 +91,12 @@ void print_scene(const Scene& scene, bool described) {
 
 const char* distance_name(FormulaDistance distance) {
     switch (distance) {
-        case FormulaDistance::Logarithmic: return "logarithmic";
-        case FormulaDistance::Linear: return "linear";
-        case FormulaDistance::Own: return "its own";
+        case FormulaDistance::Logarithmic:
+            return "logarithmic";
+        case FormulaDistance::Linear:
+            return "linear";
+        case FormulaDistance::Own:
+            return "its own";
     }
     return "";
 }
@@ -144,7 +149,8 @@ int command_list(const std::string& scene_id, bool formulas) {
     }
     if (found.scenes.empty()) {
         fmt::print("no scenes found; searched:\n");
-        for (const auto& dir : plugin_search_path(executable_dir())) fmt::print("  {}\n", dir.string());
+        for (const auto& dir : plugin_search_path(executable_dir()))
+            fmt::print("  {}\n", dir.string());
         return 0;
     }
     for (size_t i = 0; i < found.scenes.size(); ++i) {

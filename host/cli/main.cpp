@@ -2,7 +2,7 @@
 #include "distributed/cluster.hpp"
 
 int main(int argc, char** argv) {
-    // Joins the MPI job when mpirun started fgr on several ranks (fgr/distributed/cluster.hpp).
+    // Joins the MPI job when mpirun started fgr on several ranks (distributed/cluster.hpp).
     fgr::ClusterSession session(&argc, &argv);
     return fgr::run_cli(argc, argv);
 }

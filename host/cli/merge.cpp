@@ -1,6 +1,9 @@
 // fgr merge: parts rendered apart (fgr render --part, --tile I/N, --seed S; on a farm) joined into
 // one image file, or a directory of frames (fgr video --frames DIR --frame-range A:B, on many
 // machines) encoded into one video.
+#include <fmt/format.h>
+#include <spdlog/spdlog.h>
+
 #include <algorithm>
 #include <filesystem>
 #include <map>
@@ -8,9 +11,6 @@
 #include <set>
 #include <string>
 #include <vector>
-
-#include <fmt/format.h>
-#include <spdlog/spdlog.h>
 
 #include "commands.hpp"
 #include "image/image_io.hpp"

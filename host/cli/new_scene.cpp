@@ -1,12 +1,12 @@
 // fgr new-scene: a scene plugin project from the SDK template, ready to build.
+#include <fmt/format.h>
+
 #include <filesystem>
 #include <string>
 #include <vector>
 
-#include <fmt/format.h>
-
-#include "commands.hpp"
 #include "cli/scaffold.hpp"
+#include "commands.hpp"
 
 namespace fgr {
 
@@ -21,16 +21,18 @@ int command_new_scene(const NewSceneOptions& options) {
     const std::filesystem::path directory =
         std::filesystem::path(options.directory.empty() ? options.name : options.directory);
     const std::filesystem::path prefix = executable_dir().parent_path();
-    const std::vector<std::filesystem::path> files = scaffold_scene(options.name, directory, prefix);
+    const std::vector<std::filesystem::path> files =
+        scaffold_scene(options.name, directory, prefix);
     fmt::print("created scene '{}' in {}:\n", options.name, directory.string());
     for (const auto& file : files) fmt::print("  {}\n", file.string());
     const std::string dir = directory.string();
-    fmt::print("next:\n"
-               "  cmake -S {0} -B {0}/build && cmake --build {0}/build\n"
-               "  mkdir -p ~/.local/share/fgr/plugins && cp {0}/build/{1}.so "
-               "~/.local/share/fgr/plugins/\n"
-               "  fgr render {1} -o {1}.png\n",
-               dir, options.name);
+    fmt::print(
+        "next:\n"
+        "  cmake -S {0} -B {0}/build && cmake --build {0}/build\n"
+        "  mkdir -p ~/.local/share/fgr/plugins && cp {0}/build/{1}.so "
+        "~/.local/share/fgr/plugins/\n"
+        "  fgr render {1} -o {1}.png\n",
+        dir, options.name);
     return 0;
 }
 

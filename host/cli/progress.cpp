@@ -1,11 +1,10 @@
 #include "cli/progress.hpp"
 
+#include <fmt/format.h>
 #include <unistd.h>
 
 #include <algorithm>
 #include <cmath>
-
-#include <fmt/format.h>
 
 namespace fgr {
 
@@ -35,8 +34,7 @@ void ProgressLine::update(long done, long total, long fresh, double seconds,
     const bool last = done >= total;
     if (terminal_) {
         if (!last && now - last_draw_ < std::chrono::milliseconds(250)) return;
-    } else if (!last && tenth == last_tenth_ &&
-               now - last_draw_ < std::chrono::seconds(30)) {
+    } else if (!last && tenth == last_tenth_ && now - last_draw_ < std::chrono::seconds(30)) {
         return;
     }
     last_draw_ = now;

@@ -1,4 +1,8 @@
 // fgr render: one image of a scene to a PNG file, or every scene's default view (--all).
+#include <fmt/format.h>
+#include <fnmatch.h>  // POSIX: the shell's wildcards for --all's scene pattern
+#include <spdlog/spdlog.h>
+
 #include <algorithm>
 #include <cctype>
 #include <chrono>
@@ -8,26 +12,21 @@
 #include <string>
 #include <vector>
 
-#include <fnmatch.h>  // POSIX: the shell's wildcards for --all's scene pattern
-
-#include <fmt/format.h>
-#include <spdlog/spdlog.h>
-
-#include "commands.hpp"
 #include "camera/camera.hpp"
 #include "camera/camera_path_file.hpp"
+#include "camera/view_validation.hpp"
+#include "commands.hpp"
+#include "device/kernel_assembly.hpp"
+#include "device/program_cache.hpp"
 #include "distributed/cluster.hpp"
 #include "distributed/frame_wire.hpp"
 #include "distributed/task_farm.hpp"
 #include "output/parts/frame_merge.hpp"
-#include "scene/ifs/ifs.hpp"
-#include "device/kernel_assembly.hpp"
-#include "device/program_cache.hpp"
-#include "render/renderer.hpp"
 #include "output/still_image.hpp"
 #include "output/tiled/streaming_image.hpp"
 #include "output/tiled/tiled_still.hpp"
-#include "camera/view_validation.hpp"
+#include "render/renderer.hpp"
+#include "scene/ifs/ifs.hpp"
 #include "tiled_render.hpp"
 #include "util/timing.hpp"
 
@@ -49,8 +48,8 @@ CameraPath find_camera_path(const Scene& scene, const std::string& argument) {
     }
     const CameraPath* path = scene.find_camera_path(argument);
     if (!path) {
-        throw UsageError(fmt::format("scene '{}' has no camera path '{}' (see `fgr list`)",
-                                     scene.id, argument));
+        throw UsageError(
+            fmt::format("scene '{}' has no camera path '{}' (see `fgr list`)", scene.id, argument));
     }
     return *path;
 }
@@ -114,10 +113,12 @@ void check_render_options(const RenderOptions& options) {
         if (options.dev) throw UsageError("--dev is for one scene: give a SCENE, not --all");
         if (!options.assignments.empty() || options.colour || options.camera ||
             options.camera_path || options.time || !options.view_override.empty()) {
-            throw UsageError("--all renders each scene's default view: no --set, --colour, "
-                             "--camera, --eye... or --time");
+            throw UsageError(
+                "--all renders each scene's default view: no --set, --colour, "
+                "--camera, --eye... or --time");
         }
-        if (!options.kernel_source.empty()) throw UsageError("--kernel-source is for one SCENE, not --all");
+        if (!options.kernel_source.empty())
+            throw UsageError("--kernel-source is for one SCENE, not --all");
         if (part_render_wanted(options)) {
             throw UsageError("--part and --tile are for one SCENE, not --all");
         }
@@ -128,8 +129,9 @@ void check_render_options(const RenderOptions& options) {
     if (options.time && !options.camera_path) throw UsageError("--time needs --camera-path");
     if (options.camera_path && !options.time) throw UsageError("--camera-path needs --time");
     if (options.camera_path && !options.view_override.empty()) {
-        throw UsageError("--eye, --target, --up and --fov set a still view: not with --camera-path "
-                         "(they change --camera, or the scene's default camera)");
+        throw UsageError(
+            "--eye, --target, --up and --fov set a still view: not with --camera-path "
+            "(they change --camera, or the scene's default camera)");
     }
     parsed_view_override(options.view_override);  // a malformed vector fails before any loading
     check_output_path(options.output);
@@ -207,8 +209,10 @@ StillJob still_job(const Scene& scene, const FrameRequest& request, const Render
     if (settings.mode == RenderMode::Path) {
         reported.path = chosen_path_settings(options.mode, scene);
         if (reported.path.radiance_clamp > 0.0f) {
-            spdlog::warn("radiance clamped to {:g} per sample: fireflies go, and so does some "
-                         "energy (the image is biased)", reported.path.radiance_clamp);
+            spdlog::warn(
+                "radiance clamped to {:g} per sample: fireflies go, and so does some "
+                "energy (the image is biased)",
+                reported.path.radiance_clamp);
         }
     }
     return StillJob{settings, reported, aovs};
@@ -232,11 +236,12 @@ void report_and_write(const Scene& scene, const FrameRequest& request, const Ren
     fmt::print("samples_per_pixel {}\n", frame.samples);
     if (options.time_limit && frame.samples < request.samples * Cluster::current().size()) {
         spdlog::info("--time-limit {:g} s reached after {} of {} samples per pixel",
-                     *options.time_limit, frame.samples, request.samples * Cluster::current().size());
+                     *options.time_limit, frame.samples,
+                     request.samples * Cluster::current().size());
     }
-    fmt::print("samples_per_second {:.0f}\n",
-               double(frame.samples) * request.width * request.height /
-                   std::max(frame.render_ms / 1000.0, 1e-9));
+    fmt::print("samples_per_second {:.0f}\n", double(frame.samples) * request.width *
+                                                  request.height /
+                                                  std::max(frame.render_ms / 1000.0, 1e-9));
     if (frame.lane_stats) {
         fmt::print("lane_utilisation {:.3f} ({} rays per work-item)\n",
                    frame.lane_stats->utilisation(), frame.lane_stats->packet_width);
@@ -263,17 +268,19 @@ void report_and_write(const Scene& scene, const FrameRequest& request, const Ren
     } else if (frame.stats) {
         const MarchStats& stats = *frame.stats;
         fmt::print("steps_per_pixel {:.2f} (max {})\n", stats.mean_steps, stats.max_steps);
-        fmt::print("de_evaluations {} ({:.2f} per pixel: cone prepass, primary march and "
-                   "normals)\n",
-                   stats.de_evaluations, double(stats.de_evaluations) / double(stats.pixels));
+        fmt::print(
+            "de_evaluations {} ({:.2f} per pixel: cone prepass, primary march and "
+            "normals)\n",
+            stats.de_evaluations, double(stats.de_evaluations) / double(stats.pixels));
         fmt::print("prepass_de_evaluations {} ({:.3f} per pixel)\n", stats.prepass_de_evaluations,
                    double(stats.prepass_de_evaluations) / double(stats.pixels));
         if (stats.packet_steps > 0) {
-            fmt::print("primary_lane_utilisation {:.1f}% ({} lane steps in {} packet steps of {} "
-                       "lanes)\n",
-                       100.0 * double(stats.lane_steps) /
-                           (double(stats.packet_steps) * stats.packet_width),
-                       stats.lane_steps, stats.packet_steps, stats.packet_width);
+            fmt::print(
+                "primary_lane_utilisation {:.1f}% ({} lane steps in {} packet steps of {} "
+                "lanes)\n",
+                100.0 * double(stats.lane_steps) /
+                    (double(stats.packet_steps) * stats.packet_width),
+                stats.lane_steps, stats.packet_steps, stats.packet_width);
         }
         if (stats.secondary_packet_steps > 0) {
             fmt::print("secondary_lane_utilisation {:.1f}% ({} lane steps in {} packet steps)\n",
@@ -283,10 +290,11 @@ void report_and_write(const Scene& scene, const FrameRequest& request, const Ren
         }
         fmt::print("out_of_steps {:.3f}% ({} of {} pixels)\n", stats.out_of_steps_percent(),
                    stats.out_of_steps, stats.pixels);
-        fmt::print("secondary_de_evaluations {} ({:.2f} per pixel: shadow, reflection and "
-                   "refraction rays)\n",
-                   stats.secondary_de_evaluations,
-                   double(stats.secondary_de_evaluations) / double(stats.pixels));
+        fmt::print(
+            "secondary_de_evaluations {} ({:.2f} per pixel: shadow, reflection and "
+            "refraction rays)\n",
+            stats.secondary_de_evaluations,
+            double(stats.secondary_de_evaluations) / double(stats.pixels));
     }
     try {
         write_still(output, frame,
@@ -343,7 +351,8 @@ int render_samples_across_ranks(Cluster& cluster, const Scene& scene, const Fram
     const FarmOutcome outcome = run_farm(cluster, seeds, work, add);
     if (!cluster.coordinator()) return 0;
     merged.render_ms = elapsed_ms(started);
-    merged.image = display_image(scene, request.params, merged.linear, merged.image.width, merged.image.height);
+    merged.image = display_image(scene, request.params, merged.linear, merged.image.width,
+                                 merged.image.height);
     fmt::print("seeds {} to {} (one a rank)\n", job.request.path.seed,
                job.request.path.seed + uint32_t(cluster.size() - 1));
     report_and_write(scene, job.request, options, job.aovs, merged, options.output);
@@ -356,12 +365,14 @@ int render_across_ranks(Cluster& cluster, const Scene& scene, const FrameRequest
                         const ComputeDevice& device, ProgramCache& cache,
                         const RenderOptions& options) {
     if (chosen_mode(options.mode, scene) == RenderMode::Path && !tiled_render_wanted(options)) {
-        if (options.stats) throw UsageError("--stats is for renders of one process (without mpirun)");
+        if (options.stats)
+            throw UsageError("--stats is for renders of one process (without mpirun)");
         return render_samples_across_ranks(cluster, scene, request, device, cache, options);
     }
     if (options.stats || options.time_limit) {
-        throw UsageError("under mpirun a shaded or brute-force still is shared out in tiles: no "
-                         "--stats or --time-limit (those are for one process, or --mode path)");
+        throw UsageError(
+            "under mpirun a shaded or brute-force still is shared out in tiles: no "
+            "--stats or --time-limit (those are for one process, or --mode path)");
     }
     return render_tiled(scene, request, device, cache, options);
 }
@@ -417,13 +428,15 @@ void add_frame_options(CLI::App* command, RenderOptions& options, int max_side) 
     command->add_option("--colour", options.colour,
                         "colour mode: point, planes, axes or iterations, those the scene offers "
                         "(see `fgr list`); the same as --set colour_mode=MODE");
-    command->add_option("--spp", options.samples,
-                        "samples per pixel, jittered and averaged: anti-aliasing, depth of field, "
-                        "and the path tracer's estimate (default 1; 64 with --mode path); with "
-                        "--mode brute, passes of sampling along each ray (default 16)")
+    command
+        ->add_option("--spp", options.samples,
+                     "samples per pixel, jittered and averaged: anti-aliasing, depth of field, "
+                     "and the path tracer's estimate (default 1; 64 with --mode path); with "
+                     "--mode brute, passes of sampling along each ray (default 16)")
         ->check(CLI::Range(1, kMaxSamples));
-    command->add_option("--bit-depth", options.bit_depth,
-                        "8: tone-mapped sRGB PNG (default); 16: linear 16-bit PNG (exposure only)")
+    command
+        ->add_option("--bit-depth", options.bit_depth,
+                     "8: tone-mapped sRGB PNG (default); 16: linear 16-bit PNG (exposure only)")
         ->check(CLI::IsMember({8, 16}));
     command->add_option("--aov", options.aovs,
                         "EXR layers beside the linear image, in every mode: albedo,normal,depth,"
@@ -449,24 +462,29 @@ void add_render_command(CLI::App& app, RenderOptions& options) {
     CLI::App* render = app.add_subcommand(
         "render",
         "render one image of a scene to a PNG, EXR or TIFF file, or every scene's default view");
-    render->add_option("scene", options.scene,
-                       "scene id (see `fgr list`); with --all, a wildcard pattern of ids (e.g. 'mandel*')");
+    render->add_option(
+        "scene", options.scene,
+        "scene id (see `fgr list`); with --all, a wildcard pattern of ids (e.g. 'mandel*')");
     render->add_flag("--all", options.all,
                      "render every scene's default view (or those the scene pattern matches) into "
                      "the directory -o");
-    render->add_option("-o,--output", options.output,
-                       "output .png or .tif (tone-mapped) or .exr (linear) file; a directory with --all")
+    render
+        ->add_option(
+            "-o,--output", options.output,
+            "output .png or .tif (tone-mapped) or .exr (linear) file; a directory with --all")
         ->required();
-    render->add_option("--tile-size", options.tile_size,
-                       "render in tiles of about this many pixels a side, streaming the file a "
-                       "band of rows at a time (default for images over 16 Mpx: 512)")
+    render
+        ->add_option("--tile-size", options.tile_size,
+                     "render in tiles of about this many pixels a side, streaming the file a "
+                     "band of rows at a time (default for images over 16 Mpx: 512)")
         ->check(CLI::Range(16, 8192));
     render->add_flag("--resume", options.resume,
                      "continue an interrupted tiled render from the tiles it finished (kept in "
                      "OUTPUT.fgr-tiles)");
     auto* camera = render->add_option("--camera", options.camera, "named camera of the scene");
-    auto* path = render->add_option("--camera-path", options.camera_path,
-                                    "camera path of the scene, or a .json file saved by `fgr view`");
+    auto* path =
+        render->add_option("--camera-path", options.camera_path,
+                           "camera path of the scene, or a .json file saved by `fgr view`");
     path->excludes(camera);
     render->add_option("--time", options.time, "time along the camera path, in seconds");
     add_view_override_options(render, options.view_override);
@@ -477,8 +495,9 @@ void add_render_command(CLI::App& app, RenderOptions& options) {
     render->add_option("--tile", options.tile,
                        "I/N: render rows floor((I-1)*H/N) .. floor(I*H/N)-1 of the image as a part "
                        "(implies --part); `fgr merge` joins the N tiles");
-    render->add_option("--time-limit", options.time_limit,
-                       "stop adding samples after this many seconds and write what is done")
+    render
+        ->add_option("--time-limit", options.time_limit,
+                     "stop adding samples after this many seconds and write what is done")
         ->check(CLI::PositiveNumber);
     render->add_flag("--stats", options.stats,
                      "print steps per pixel, DE evaluations and rays that ran out of steps");
@@ -491,16 +510,17 @@ int command_render(const RenderOptions& options) {
     std::future<Discovery> finding = discover_meanwhile(options.scene);
     DeviceOpenedAhead device_opening(options.device);
     const Discovery found = finding.get();
-    const Scene scene = with_kernel_source(scene_as_used(find_scene(found, options.scene), options.dev),
-                                           options.kernel_source);
+    const Scene scene = with_kernel_source(
+        scene_as_used(find_scene(found, options.scene), options.dev), options.kernel_source);
     FrameRequest request = scene_request(scene, options);
     request.view = choose_view(scene, options);
     const ComputeDevice device = device_opening.take();
     ProgramCache cache(ProgramCache::default_directory());
     if (part_render_wanted(options)) {
         if (!Cluster::current().alone()) {
-            throw UsageError("--part and --tile make one part a process, for a scheduler: run "
-                             "them without mpirun");
+            throw UsageError(
+                "--part and --tile make one part a process, for a scheduler: run "
+                "them without mpirun");
         }
         return render_part_file(scene, request, device, cache, options);
     }

@@ -1,17 +1,17 @@
 #include "cli/scaffold.hpp"
 
+#include <fmt/format.h>
+
 #include <cctype>
 #include <system_error>
 
-#include <fmt/format.h>
-
-#include "util/atomic_file.hpp"
 #include "scene/parameters.hpp"
 #include "scene/scene_limits.hpp"
 #include "template_CMakeLists_txt.h"
 #include "template_README_md.h"
 #include "template_scene_c.h"
 #include "template_scene_cl.h"
+#include "util/atomic_file.hpp"
 
 namespace fgr {
 namespace {
@@ -28,8 +28,8 @@ void check_target(const fs::path& directory) {
     std::error_code error;
     if (!fs::exists(directory, error)) return;
     if (!fs::is_directory(directory, error) || !fs::is_empty(directory, error)) {
-        throw UsageError(fmt::format("'{}' already exists and is not an empty directory",
-                                     directory.string()));
+        throw UsageError(
+            fmt::format("'{}' already exists and is not an empty directory", directory.string()));
     }
 }
 

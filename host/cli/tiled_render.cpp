@@ -1,5 +1,7 @@
 #include "tiled_render.hpp"
 
+#include <fmt/format.h>
+#include <spdlog/spdlog.h>
 #include <sys/resource.h>
 
 #include <algorithm>
@@ -11,19 +13,16 @@
 #include <regex>
 #include <utility>
 
-#include <fmt/format.h>
-#include <spdlog/spdlog.h>
-
+#include "cli/progress.hpp"
 #include "distributed/cluster.hpp"
 #include "distributed/frame_wire.hpp"
 #include "distributed/task_farm.hpp"
-#include "scene/parameters.hpp"
-#include "render/precision.hpp"
-#include "cli/progress.hpp"
 #include "output/parts/render_parts.hpp"
 #include "output/still_layers.hpp"
 #include "output/tiled/streaming_image.hpp"
 #include "output/tiled/tiled_still.hpp"
+#include "render/precision.hpp"
+#include "scene/parameters.hpp"
 #include "util/timing.hpp"
 
 namespace fgr {
@@ -74,8 +73,10 @@ std::pair<int, int> part_tile(const RenderOptions& options) {
     }
     const int index = std::stoi(match[1]), count = std::stoi(match[2]);
     if (index < 1 || index > count || count > options.height) {
-        throw UsageError(fmt::format("--tile {} must be I/N with 1 <= I <= N <= the image height "
-                                     "({})", text, options.height));
+        throw UsageError(
+            fmt::format("--tile {} must be I/N with 1 <= I <= N <= the image height "
+                        "({})",
+                        text, options.height));
     }
     return {index, count};
 }
@@ -85,19 +86,21 @@ std::pair<int, int> part_tile(const RenderOptions& options) {
 bool tiled_render_wanted(const RenderOptions& options) {
     if (options.all) return false;
     return options.tile_size || options.resume ||
-           image_format_of(options.output) == ImageFormat::Tiff ||
-           options.width > kMaxImageSide || options.height > kMaxImageSide ||
+           image_format_of(options.output) == ImageFormat::Tiff || options.width > kMaxImageSide ||
+           options.height > kMaxImageSide ||
            long(options.width) * long(options.height) > kTiledFromPixels;
 }
 
 void check_tiled_options(const RenderOptions& options) {
     if (options.stats) {
-        throw UsageError("--stats is for untiled renders (at most 16384 a side and 16 Mpx, no "
-                         "--tile-size, PNG or EXR)");
+        throw UsageError(
+            "--stats is for untiled renders (at most 16384 a side and 16 Mpx, no "
+            "--tile-size, PNG or EXR)");
     }
     if (options.time_limit) {
-        throw UsageError("a tiled render takes the same samples in every tile: give --spp, not "
-                         "--time-limit");
+        throw UsageError(
+            "a tiled render takes the same samples in every tile: give --spp, not "
+            "--time-limit");
     }
 }
 
@@ -112,7 +115,7 @@ int tile_size_for(const RenderOptions& options, int ranks) {
     return std::clamp(static_cast<int>(side) / 4 * 4, 64, kDefaultTileSize);
 }
 
-// Rank 0 (or the one process): hands the tiles out (fgr/distributed/task_farm.hpp), places them
+// Rank 0 (or the one process): hands the tiles out (distributed/task_farm.hpp), places them
 // as they come back and streams the file, with a progress line.
 int write_tiles(Cluster& cluster, const TiledRender& render, const TaskWork& work,
                 const TiledOutput& output, const RenderOptions& options) {
@@ -159,9 +162,10 @@ int write_tiles(Cluster& cluster, const TiledRender& render, const TaskWork& wor
     if (!outcome.finished || InterruptCatcher::caught()) {
         const std::filesystem::path store = file->store_path();
         file.reset();  // removes the unfinished file, keeps the store
-        spdlog::error("interrupted: nothing written to '{}'; the finished bands are kept in '{}': "
-                      "run the same command with --resume to continue",
-                      options.output, store.string());
+        spdlog::error(
+            "interrupted: nothing written to '{}'; the finished bands are kept in '{}': "
+            "run the same command with --resume to continue",
+            options.output, store.string());
         return 130;
     }
     const double seconds = seconds_since(start);
@@ -201,7 +205,8 @@ int render_tiled(const Scene& scene, const FrameRequest& request, const ComputeD
     tile_request.cancel = [] { return InterruptCatcher::caught(); };
     const TiledRender render = [&] {
         try {
-            return TiledRender(renderer, tile_request, output, tile_size_for(options, cluster.size()));
+            return TiledRender(renderer, tile_request, output,
+                               tile_size_for(options, cluster.size()));
         } catch (const std::invalid_argument& error) {
             throw UsageError(error.what());
         }
@@ -222,8 +227,8 @@ bool part_render_wanted(const RenderOptions& options) { return options.part || o
 
 void check_part_options(const RenderOptions& options) {
     if (image_format_of(options.output) != ImageFormat::Exr) {
-        throw UsageError(fmt::format("a part is an OpenEXR file: give -o NAME.exr (got '{}')",
-                                     options.output));
+        throw UsageError(
+            fmt::format("a part is an OpenEXR file: give -o NAME.exr (got '{}')", options.output));
     }
     if (options.resume) throw UsageError("--resume is for tiled stills, not parts: rerun the part");
     if (options.stats) throw UsageError("--stats is for untiled renders, not parts");

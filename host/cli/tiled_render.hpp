@@ -1,12 +1,12 @@
 #pragma once
 // fgr render in tiles: what makes a render tiled, and the tiled render itself (the progress
-// line, Ctrl-C, --resume), on top of output/tiled/tiled_still.hpp. Under mpirun the tiles are shared out
-// over the ranks (fgr/distributed/task_farm.hpp) and rank 0 writes the file.
+// line, Ctrl-C, --resume), on top of output/tiled/tiled_still.hpp. Under mpirun the tiles are
+// shared out over the ranks (distributed/task_farm.hpp) and rank 0 writes the file.
 
 #include "commands.hpp"
 #include "device/program_cache.hpp"
-#include "render/renderer.hpp"
 #include "output/still_image.hpp"
+#include "render/renderer.hpp"
 
 namespace fgr {
 

@@ -1,6 +1,10 @@
 // fgr video: a scene's camera path rendered frame by frame and encoded in-process (FFmpeg's
 // libraries) into a video file, and/or written as a PNG or EXR frame sequence. Frame i is
 // `fgr render --camera-path P --time t` at t = start + i / fps with the same options.
+#include <fmt/format.h>
+#include <spdlog/spdlog.h>
+#include <unistd.h>
+
 #include <atomic>
 #include <chrono>
 #include <csignal>
@@ -12,21 +16,17 @@
 #include <utility>
 #include <vector>
 
-#include <fmt/format.h>
-#include <spdlog/spdlog.h>
-#include <unistd.h>
-
-#include "commands.hpp"
 #include "camera/camera.hpp"
+#include "camera/view_validation.hpp"
+#include "cli/progress.hpp"
+#include "commands.hpp"
+#include "device/program_cache.hpp"
 #include "distributed/cluster.hpp"
 #include "distributed/frame_wire.hpp"
 #include "distributed/task_farm.hpp"
-#include "device/program_cache.hpp"
-#include "cli/progress.hpp"
 #include "output/video/video_encoder.hpp"
 #include "output/video/video_frames.hpp"
 #include "output/video/video_timing.hpp"
-#include "camera/view_validation.hpp"
 #include "util/timing.hpp"
 
 namespace fgr {
@@ -64,8 +64,10 @@ std::pair<int, int> parse_frame_range(const std::string& text) {
     const std::regex form(R"((\d{1,9}):(\d{1,9}))");
     std::smatch match;
     if (!std::regex_match(text, match, form)) {
-        throw UsageError(fmt::format("--frame-range '{}' must be A:B, the first and last frame "
-                                     "(0-based), e.g. 0:99", text));
+        throw UsageError(
+            fmt::format("--frame-range '{}' must be A:B, the first and last frame "
+                        "(0-based), e.g. 0:99",
+                        text));
     }
     const int first = std::stoi(match[1]), last = std::stoi(match[2]);
     if (first > last) {
@@ -80,9 +82,10 @@ std::pair<int, int> frames_to_render(const VideoOptions& options, int frame_coun
     if (!options.frame_range) return {0, frame_count - 1};
     const auto [first, last] = parse_frame_range(*options.frame_range);
     if (last >= frame_count) {
-        throw UsageError(fmt::format("--frame-range {} goes past the last frame: this video has "
-                                     "{} frames, 0:{}", *options.frame_range, frame_count,
-                                     frame_count - 1));
+        throw UsageError(
+            fmt::format("--frame-range {} goes past the last frame: this video has "
+                        "{} frames, 0:{}",
+                        *options.frame_range, frame_count, frame_count - 1));
     }
     return {first, last};
 }
@@ -118,9 +121,10 @@ void check_video_options(const VideoOptions& options) {
     }
     if (options.frame_range) {
         if (options.frames_directory.empty() || !options.output.empty()) {
-            throw UsageError("--frame-range renders some frames of a sequence: give --frames DIR "
-                             "and no -o (encode the whole directory with fgr merge --frames DIR "
-                             "-o FILE)");
+            throw UsageError(
+                "--frame-range renders some frames of a sequence: give --frames DIR "
+                "and no -o (encode the whole directory with fgr merge --frames DIR "
+                "-o FILE)");
         }
         parse_frame_range(*options.frame_range);  // a malformed range fails before any loading
     }
@@ -216,7 +220,7 @@ int command_video(const VideoOptions& options) {
     InterruptGuard interrupt_guard;
     job.request.cancel = [] { return interrupted != 0; };
     const bool keep_planes = !options.frames_directory.empty();
-    // Any rank renders any frame (fgr/distributed/task_farm.hpp); what travels is what rank 0
+    // Any rank renders any frame (distributed/task_farm.hpp); what travels is what rank 0
     // writes: the display image, and the planes too when it writes frame files.
     const TaskWork work = [&](int64_t index) {
         FrameRequest request = job.request;
@@ -247,8 +251,8 @@ int command_video(const VideoOptions& options) {
                                              options.frames_directory, error.message()));
         }
     }
-    spdlog::info("{} frames at {:g} fps: path time {:g} to {:g} s, {}{}{}", views.size(), timing.fps,
-                 timing.start, timing.frame_time(timing.frame_count() - 1),
+    spdlog::info("{} frames at {:g} fps: path time {:g} to {:g} s, {}{}{}", views.size(),
+                 timing.fps, timing.start, timing.frame_time(timing.frame_count() - 1),
                  in_double ? "double" : "float",
                  encoder ? ", encoding " + encoder->description() : "",
                  cluster.alone() ? "" : fmt::format(", over {} MPI ranks", cluster.size()));
@@ -273,13 +277,16 @@ int command_video(const VideoOptions& options) {
         }
     };
     // Frames go into the file in order, whichever rank finished first.
-    InTaskOrder in_order([&](int64_t index, std::vector<uint8_t>&& bytes) {
-        write_frame(frame_from_bytes(bytes), index);
-        const long done = static_cast<long>(index) - first_frame + 1;
-        const double seconds = seconds_since(started);
-        progress.update(done, total_frames, done, seconds,
-                        fmt::format("{:.2f} fps", seconds > 0.0 ? double(done) / seconds : 0.0));
-    }, first_frame);
+    InTaskOrder in_order(
+        [&](int64_t index, std::vector<uint8_t>&& bytes) {
+            write_frame(frame_from_bytes(bytes), index);
+            const long done = static_cast<long>(index) - first_frame + 1;
+            const double seconds = seconds_since(started);
+            progress.update(
+                done, total_frames, done, seconds,
+                fmt::format("{:.2f} fps", seconds > 0.0 ? double(done) / seconds : 0.0));
+        },
+        first_frame);
     const ResultSink collect = [&](int64_t index, std::vector<uint8_t>&& bytes) {
         in_order.add(index, std::move(bytes));
     };

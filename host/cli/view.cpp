@@ -1,4 +1,6 @@
 // fgr view: the interactive viewer (fgr_viewer) with the command line's options.
+#include <fmt/format.h>
+
 #include <filesystem>
 #include <map>
 #include <string>
@@ -6,25 +8,22 @@
 #include <utility>
 #include <vector>
 
-#include <fmt/format.h>
-
-#include "commands.hpp"
 #include "camera/camera_path_file.hpp"
-#include "image/hdr_io.hpp"
+#include "commands.hpp"
 #include "device/kernel_assembly.hpp"
-#include "scene/modules.hpp"
+#include "image/hdr_io.hpp"
 #include "render/renderer.hpp"
+#include "scene/modules.hpp"
 
 namespace fgr {
 namespace {
 
 // Window sizes offered by --preset and in the viewer's panel.
 const std::map<std::string, std::pair<int, int>>& window_presets() {
-    static const std::map<std::string, std::pair<int, int>> presets = {
-        {"1366x768", {1366, 768}},
-        {"1920x1080", {1920, 1080}},
-        {"2560x1440", {2560, 1440}},
-        {"3840x2160", {3840, 2160}}};
+    static const std::map<std::string, std::pair<int, int>> presets = {{"1366x768", {1366, 768}},
+                                                                       {"1920x1080", {1920, 1080}},
+                                                                       {"2560x1440", {2560, 1440}},
+                                                                       {"3840x2160", {3840, 2160}}};
     return presets;
 }
 
@@ -41,8 +40,7 @@ void add_view_command(CLI::App& app, ViewCommandOptions& options) {
         ->check(CLI::Range(64, kMaxImageSide));
     std::vector<std::string> names;
     for (const auto& [name, size] : window_presets()) names.push_back(name);
-    view->add_option("--preset", options.preset, "window size preset")
-        ->check(CLI::IsMember(names));
+    view->add_option("--preset", options.preset, "window size preset")->check(CLI::IsMember(names));
     view->add_flag("--fullscreen", viewer.fullscreen, "start fullscreen (F11 toggles)");
     view->add_option("--target-ms", viewer.target_ms,
                      "frame time to hold while moving, in ms (default 33)")
@@ -122,13 +120,13 @@ int command_view(ViewCommandOptions& options) {
     if (options.exit_after > 0.0) viewer.exit_after_seconds = options.exit_after;
     std::error_code error;
     if (!std::filesystem::is_directory(viewer.output_dir, error)) {
-        throw UsageError(fmt::format("--output-dir '{}' is not a directory",
-                                     viewer.output_dir.string()));
+        throw UsageError(
+            fmt::format("--output-dir '{}' is not a directory", viewer.output_dir.string()));
     }
-    // The viewer module (fgr/viewer/viewer.hpp), loaded now that a window is wanted.
-    const auto& module = module_table<viewer::ViewerModule>(
-        viewer::kViewerModuleName, viewer::kViewerModuleEntry, viewer::kViewerModuleVersion,
-        "the viewer");
+    // The viewer module (viewer/viewer.hpp), loaded now that a window is wanted.
+    const auto& module =
+        module_table<viewer::ViewerModule>(viewer::kViewerModuleName, viewer::kViewerModuleEntry,
+                                           viewer::kViewerModuleVersion, "the viewer");
     return module.run(viewer);
 }
 

@@ -1,5 +1,7 @@
 #include "device/cache_directory.hpp"
 
+#include <spdlog/spdlog.h>
+
 #include <algorithm>
 #include <atomic>
 #include <charconv>
@@ -7,10 +9,8 @@
 #include <exception>
 #include <system_error>
 
-#include <spdlog/spdlog.h>
-
-#include "util/atomic_file.hpp"
 #include "scene/scene_index.hpp"
+#include "util/atomic_file.hpp"
 
 namespace fgr {
 namespace {
@@ -47,9 +47,10 @@ std::uintmax_t cache_size_limit() {
     if (const std::optional<std::uintmax_t> limit = parse_cache_limit(text)) return *limit;
     static std::atomic<bool> warned{false};
     if (!warned.exchange(true)) {
-        spdlog::warn("{}='{}' is not a whole number of MiB >= 1: keeping the kernel cache under "
-                     "the default {} MiB",
-                     kCacheLimitVariable, text, kDefaultCacheLimitBytes >> 20);
+        spdlog::warn(
+            "{}='{}' is not a whole number of MiB >= 1: keeping the kernel cache under "
+            "the default {} MiB",
+            kCacheLimitVariable, text, kDefaultCacheLimitBytes >> 20);
     }
     return kDefaultCacheLimitBytes;
 }

@@ -1,5 +1,7 @@
 #include "device/kernel_assembly.hpp"
 
+#include <fmt/format.h>
+
 #include <algorithm>
 #include <array>
 #include <stdexcept>
@@ -7,16 +9,13 @@
 #include <string_view>
 #include <vector>
 
-#include <fmt/format.h>
-
-#include "scene/kernel_api.hpp"
 #include "fgr/kernel_library.hpp"
-#include "scene/parameters.hpp"
 #include "fgr/plugin.h"
+#include "scene/kernel_api.hpp"
+#include "scene/parameters.hpp"
 
 namespace fgr {
 namespace {
-
 
 // A file name is quoted in #line, so quotes, backslashes and newlines in it are replaced.
 std::string line_directive_name(std::string name) {
@@ -45,7 +44,8 @@ std::vector<std::string> family_functions(std::string_view family_source) {
         if (at > 0 && family_source[at - 1] != '\n') continue;
         const size_t name = family_source.find("formula_", at);
         const size_t open = family_source.find('(', at);
-        if (name == std::string_view::npos || open == std::string_view::npos || name > open) continue;
+        if (name == std::string_view::npos || open == std::string_view::npos || name > open)
+            continue;
         names.emplace_back(family_source.substr(name, open - name));
     }
     return names;
@@ -57,7 +57,8 @@ bool calls(std::string_view source, const std::string& function) {
          at = source.find(function, at + 1)) {
         if (at > 0 && is_identifier_char(source[at - 1])) continue;
         std::string_view rest = source.substr(at + function.size());
-        while (!rest.empty() && (rest.front() == ' ' || rest.front() == '\t')) rest.remove_prefix(1);
+        while (!rest.empty() && (rest.front() == ' ' || rest.front() == '\t'))
+            rest.remove_prefix(1);
         if (rest.starts_with("(")) return true;
     }
     return false;
@@ -88,14 +89,17 @@ std::vector<const KernelFile*> formula_families_called(std::string_view source) 
 std::string accessor(const ParamInfo& param, int offset) {
     const std::string slot = fmt::format("fgr_params[{}]", offset);
     switch (param.type) {
-        case ParamType::Float: return fmt::format("#define param_{} ({})\n", param.id, slot);
-        case ParamType::Int: return fmt::format("#define param_{} ((int){})\n", param.id, slot);
+        case ParamType::Float:
+            return fmt::format("#define param_{} ({})\n", param.id, slot);
+        case ParamType::Int:
+            return fmt::format("#define param_{} ((int){})\n", param.id, slot);
         case ParamType::Bool:
             return fmt::format("#define param_{} ({} != 0.0f)\n", param.id, slot);
         case ParamType::Vec3:
         case ParamType::Colour:
-            return fmt::format("#define param_{} v3_splat(fgr_params[{}], fgr_params[{}], fgr_params[{}])\n",
-                               param.id, offset, offset + 1, offset + 2);
+            return fmt::format(
+                "#define param_{} v3_splat(fgr_params[{}], fgr_params[{}], fgr_params[{}])\n",
+                param.id, offset, offset + 1, offset + 2);
     }
     return {};
 }
@@ -132,16 +136,17 @@ AssembledProgram assemble_program(const Scene& scene, const KernelSwitches& swit
     std::string& source = program.source;
     // The library shows the scene the names of the kernel API version its source is written for.
     const int kernel_api = declared_kernel_api(scene.source);
-    append_file(source, "<kernel API>", fmt::format("#define FGR_KERNEL_API {}\n", kernel_api).c_str());
+    append_file(source, "<kernel API>",
+                fmt::format("#define FGR_KERNEL_API {}\n", kernel_api).c_str());
     for (const auto& file : kernel_prelude()) append_file(source, file.name, file.source);
     append_file(source, fmt::format("<parameters of {}>", scene.id),
                 param_accessors(scene).c_str());
     const std::vector<const KernelFile*> families = formula_families_called(scene.source);
     if (!families.empty() && kernel_api < 2) {
-        throw std::invalid_argument(fmt::format(
-            "scene '{}' calls the formula library ({}), which needs kernel API 2: put "
-            "`#define FGR_KERNEL_API 2` on a line of its own in {}",
-            scene.id, families.front()->name, scene.source_name));
+        throw std::invalid_argument(
+            fmt::format("scene '{}' calls the formula library ({}), which needs kernel API 2: put "
+                        "`#define FGR_KERNEL_API 2` on a line of its own in {}",
+                        scene.id, families.front()->name, scene.source_name));
     }
     for (const KernelFile* family : families) append_file(source, family->name, family->source);
     append_file(source, scene.source_name, scene.source.c_str());

@@ -8,8 +8,8 @@
 #include <string_view>
 
 #include "fgr/plugin.h"
-#include "scene/render_mode.hpp"
 #include "scene/effects.hpp"
+#include "scene/render_mode.hpp"
 #include "scene/scene.hpp"
 
 namespace fgr {
@@ -19,7 +19,7 @@ struct KernelSwitches {
     int packet_width = 1;  // rays per work-item: 1, 4, 8 or 16
     uint64_t effects = 0;  // fgr_effect_flag bits compiled in
     bool stats = false;    // also record each pixel's march steps and whether it ran out of them
-    bool double_precision = false;  // march and shade in double (needs cl_khr_fp64)
+    bool double_precision = false;         // march and shade in double (needs cl_khr_fp64)
     RenderMode mode = RenderMode::Shaded;  // which entry point (kernels/fgr_mode_<name>.cl)
     // Also write what a still's alpha and layers need (Frame::albedo, normal, alpha, foreground)
     // where the mode does not always write it: the shaded mode's layers, the path mode's

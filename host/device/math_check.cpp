@@ -1,5 +1,8 @@
 #include "device/math_check.hpp"
 
+#include <fmt/format.h>
+#include <spdlog/spdlog.h>
+
 #include <cmath>
 #include <cstdlib>
 #include <fstream>
@@ -8,9 +11,6 @@
 #include <mutex>
 #include <stdexcept>
 #include <tuple>
-
-#include <fmt/format.h>
-#include <spdlog/spdlog.h>
 
 #include "device/cache_directory.hpp"
 #include "device/kernel_assembly.hpp"
@@ -42,12 +42,12 @@ double in_precision(bool as_float, double a, double b, F&& f) {
     return f(a, b);
 }
 
-#define FGR_REFERENCE(expression)                                                    \
-    [](double a, double b, bool as_float) {                                          \
-        return in_precision(as_float, a, b, [](auto x, auto y) {                     \
-            (void)y;                                                                 \
-            return static_cast<decltype(x)>(expression);                             \
-        });                                                                          \
+#define FGR_REFERENCE(expression)                                \
+    [](double a, double b, bool as_float) {                      \
+        return in_precision(as_float, a, b, [](auto x, auto y) { \
+            (void)y;                                             \
+            return static_cast<decltype(x)>(expression);         \
+        });                                                      \
     }
 
 // Tolerances are the OpenCL full profile's worst case for the function (16 ulp for pow, 4 for
@@ -83,8 +83,8 @@ std::vector<double> edge_values(bool as_float) {
 }
 
 bool is_denormal(double value, bool as_float) {
-    const double smallest = as_float ? double(std::numeric_limits<float>::min())
-                                     : std::numeric_limits<double>::min();
+    const double smallest =
+        as_float ? double(std::numeric_limits<float>::min()) : std::numeric_limits<double>::min();
     return value != 0.0 && std::fabs(value) < smallest;
 }
 
@@ -99,15 +99,15 @@ bool close_enough(double expected, double got, double ulps, bool as_float) {
     if (std::isnan(expected)) return std::isnan(got);
     if (std::isinf(expected)) return got == expected;
     if (!std::isfinite(got)) return false;
-    const double ulp = as_float ? double(std::nextafter(float(std::fabs(expected)),
-                                                        std::numeric_limits<float>::infinity())) -
-                                      std::fabs(expected)
-                                : std::nextafter(std::fabs(expected),
-                                                 std::numeric_limits<double>::infinity()) -
-                                      std::fabs(expected);
+    const double ulp =
+        as_float ? double(std::nextafter(float(std::fabs(expected)),
+                                         std::numeric_limits<float>::infinity())) -
+                       std::fabs(expected)
+                 : std::nextafter(std::fabs(expected), std::numeric_limits<double>::infinity()) -
+                       std::fabs(expected);
     double tolerance = ulps * ulp;
-    const double smallest = as_float ? double(std::numeric_limits<float>::min())
-                                     : std::numeric_limits<double>::min();
+    const double smallest =
+        as_float ? double(std::numeric_limits<float>::min()) : std::numeric_limits<double>::min();
     if (std::fabs(expected) < smallest) tolerance = std::max(tolerance, smallest);
     return std::fabs(got - expected) <= tolerance;
 }
@@ -135,8 +135,9 @@ struct CaseInputs {
     size_t cases() const { return first_case.back(); }
 };
 
-// For each function the precision uses: ordinary lanes, then for each edge value and each lane position (and each
-// argument of a two-argument function) one case with that lane set to the edge value.
+// For each function the precision uses: ordinary lanes, then for each edge value and each lane
+// position (and each argument of a two-argument function) one case with that lane set to the edge
+// value.
 CaseInputs case_inputs(int width, bool as_float) {
     CaseInputs inputs;
     Lcg random;
@@ -213,20 +214,18 @@ std::string first_failure(const MathFunction& function, size_t function_index,
         const double expected = function.reference(a, b, as_float);
         const double expected_flushed =
             function.reference(flushed(a, as_float), flushed(b, as_float), as_float);
-        const double ulps =
-            function.power && std::isfinite(std::log(a) * b)
-                ? function.ulps + 2.0 * std::fabs(b * std::log(a))
-                : function.ulps;
+        const double ulps = function.power && std::isfinite(std::log(a) * b)
+                                ? function.ulps + 2.0 * std::fabs(b * std::log(a))
+                                : function.ulps;
         const bool right = close_enough(expected, got[i], ulps, as_float) ||
                            close_enough(expected_flushed, got[i], ulps, as_float);
         if (!right) {
             const size_t first = i - i % size_t(width);
-            return fmt::format("{}: lane {} of {}{} gave {:.6g}, libm {:.6g}", function.name,
-                               i % size_t(width), lanes_text(inputs.a, first, width),
-                               function.arity == 2
-                                   ? " and " + lanes_text(inputs.b, first, width)
-                                   : std::string(),
-                               got[i], expected);
+            return fmt::format(
+                "{}: lane {} of {}{} gave {:.6g}, libm {:.6g}", function.name, i % size_t(width),
+                lanes_text(inputs.a, first, width),
+                function.arity == 2 ? " and " + lanes_text(inputs.b, first, width) : std::string(),
+                got[i], expected);
         }
     }
     return {};
@@ -275,9 +274,8 @@ MathCheckReport run_math_check(const ComputeDevice& device, ProgramCache& cache,
     cl::Program program = cache.build(device, check);
     const bool as_float = !double_precision;
     const CaseInputs inputs = case_inputs(packet_width, as_float);
-    const std::vector<double> got = double_precision
-                                        ? run_cases<cl_double>(device, program, inputs)
-                                        : run_cases<cl_float>(device, program, inputs);
+    const std::vector<double> got = double_precision ? run_cases<cl_double>(device, program, inputs)
+                                                     : run_cases<cl_float>(device, program, inputs);
     report.lanes_checked = static_cast<int>(got.size());
     for (size_t index = 0; index < functions().size(); ++index) {
         std::string failure =
@@ -314,9 +312,9 @@ std::string math_check_verdict(const ComputeDevice& device, ProgramCache& cache,
     for (const std::string& failure : report.failures) {
         verdict += verdict.empty() ? failure : ", " + failure.substr(0, failure.find(':'));
     }
-    spdlog::debug("math self-test {} on {}: {} lanes, {}", precision_label(double_precision,
-                  packet_width), device.info.name, report.lanes_checked,
-                  verdict.empty() ? "pass" : verdict);
+    spdlog::debug("math self-test {} on {}: {} lanes, {}",
+                  precision_label(double_precision, packet_width), device.info.name,
+                  report.lanes_checked, verdict.empty() ? "pass" : verdict);
     if (!file.empty()) {
         // An entry of the kernel cache like the programs: atomic, and under its size limit.
         const std::string failure = store_cache_entry(
@@ -338,18 +336,19 @@ int trusted_packet_width(const ComputeDevice& device, ProgramCache& cache, bool 
         if (width >= requested || width < minimum) continue;
         if (math_check_verdict(device, cache, double_precision, width).empty()) {
             if (warn) {
-                warn(fmt::format("{} built-ins on {} failed the math self-test ({}): using "
-                                 "{}-ray packets",
-                                 precision_label(double_precision, requested), device.info.name,
-                                 broken, width));
+                warn(fmt::format(
+                    "{} built-ins on {} failed the math self-test ({}): using "
+                    "{}-ray packets",
+                    precision_label(double_precision, requested), device.info.name, broken, width));
             }
             return width;
         }
     }
     if (warn) {
-        warn(fmt::format("{} built-ins on {} failed the math self-test ({}) and no narrower "
-                         "packet passed: some pixels may be wrong",
-                         precision_label(double_precision, requested), device.info.name, broken));
+        warn(
+            fmt::format("{} built-ins on {} failed the math self-test ({}) and no narrower "
+                        "packet passed: some pixels may be wrong",
+                        precision_label(double_precision, requested), device.info.name, broken));
     }
     return requested;
 }

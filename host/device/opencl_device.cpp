@@ -1,8 +1,8 @@
 #include "device/opencl_device.hpp"
 
-#include <stdexcept>
-
 #include <spdlog/spdlog.h>
+
+#include <stdexcept>
 
 namespace fgr {
 namespace {
@@ -110,23 +110,56 @@ int preferred_packet_width(const DeviceInfo& info) { return info.is_cpu ? 16 : 1
 std::string cl_error_name(int code) {
     const char* name = "unknown OpenCL error";
     switch (code) {
-        case CL_DEVICE_NOT_FOUND: name = "CL_DEVICE_NOT_FOUND"; break;
-        case CL_DEVICE_NOT_AVAILABLE: name = "CL_DEVICE_NOT_AVAILABLE"; break;
-        case CL_COMPILER_NOT_AVAILABLE: name = "CL_COMPILER_NOT_AVAILABLE"; break;
-        case CL_MEM_OBJECT_ALLOCATION_FAILURE: name = "CL_MEM_OBJECT_ALLOCATION_FAILURE"; break;
-        case CL_OUT_OF_RESOURCES: name = "CL_OUT_OF_RESOURCES"; break;
-        case CL_OUT_OF_HOST_MEMORY: name = "CL_OUT_OF_HOST_MEMORY"; break;
-        case CL_BUILD_PROGRAM_FAILURE: name = "CL_BUILD_PROGRAM_FAILURE"; break;
-        case CL_INVALID_VALUE: name = "CL_INVALID_VALUE"; break;
-        case CL_INVALID_BINARY: name = "CL_INVALID_BINARY"; break;
-        case CL_INVALID_BUILD_OPTIONS: name = "CL_INVALID_BUILD_OPTIONS"; break;
-        case CL_INVALID_KERNEL_NAME: name = "CL_INVALID_KERNEL_NAME"; break;
-        case CL_INVALID_KERNEL_ARGS: name = "CL_INVALID_KERNEL_ARGS"; break;
-        case CL_INVALID_ARG_SIZE: name = "CL_INVALID_ARG_SIZE"; break;
-        case CL_INVALID_WORK_GROUP_SIZE: name = "CL_INVALID_WORK_GROUP_SIZE"; break;
-        case CL_INVALID_BUFFER_SIZE: name = "CL_INVALID_BUFFER_SIZE"; break;
-        case -1001: name = "CL_PLATFORM_NOT_FOUND_KHR"; break;
-        default: break;
+        case CL_DEVICE_NOT_FOUND:
+            name = "CL_DEVICE_NOT_FOUND";
+            break;
+        case CL_DEVICE_NOT_AVAILABLE:
+            name = "CL_DEVICE_NOT_AVAILABLE";
+            break;
+        case CL_COMPILER_NOT_AVAILABLE:
+            name = "CL_COMPILER_NOT_AVAILABLE";
+            break;
+        case CL_MEM_OBJECT_ALLOCATION_FAILURE:
+            name = "CL_MEM_OBJECT_ALLOCATION_FAILURE";
+            break;
+        case CL_OUT_OF_RESOURCES:
+            name = "CL_OUT_OF_RESOURCES";
+            break;
+        case CL_OUT_OF_HOST_MEMORY:
+            name = "CL_OUT_OF_HOST_MEMORY";
+            break;
+        case CL_BUILD_PROGRAM_FAILURE:
+            name = "CL_BUILD_PROGRAM_FAILURE";
+            break;
+        case CL_INVALID_VALUE:
+            name = "CL_INVALID_VALUE";
+            break;
+        case CL_INVALID_BINARY:
+            name = "CL_INVALID_BINARY";
+            break;
+        case CL_INVALID_BUILD_OPTIONS:
+            name = "CL_INVALID_BUILD_OPTIONS";
+            break;
+        case CL_INVALID_KERNEL_NAME:
+            name = "CL_INVALID_KERNEL_NAME";
+            break;
+        case CL_INVALID_KERNEL_ARGS:
+            name = "CL_INVALID_KERNEL_ARGS";
+            break;
+        case CL_INVALID_ARG_SIZE:
+            name = "CL_INVALID_ARG_SIZE";
+            break;
+        case CL_INVALID_WORK_GROUP_SIZE:
+            name = "CL_INVALID_WORK_GROUP_SIZE";
+            break;
+        case CL_INVALID_BUFFER_SIZE:
+            name = "CL_INVALID_BUFFER_SIZE";
+            break;
+        case -1001:
+            name = "CL_PLATFORM_NOT_FOUND_KHR";
+            break;
+        default:
+            break;
     }
     return std::string(name) + " (" + std::to_string(code) + ")";
 }

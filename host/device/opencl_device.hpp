@@ -2,11 +2,10 @@
 // OpenCL platforms and devices: enumeration for `fgr info`, and opening one device with a
 // context and an in-order queue for rendering.
 
+#include <CL/opencl.hpp>
 #include <cstdint>
 #include <string>
 #include <vector>
-
-#include <CL/opencl.hpp>
 
 namespace fgr {
 
@@ -15,7 +14,7 @@ struct DeviceInfo {
     std::string platform;
     std::string name;
     std::string vendor;
-    std::string version;           // e.g. "OpenCL 3.0 PoCL ..."
+    std::string version;  // e.g. "OpenCL 3.0 PoCL ..."
     std::string driver_version;
     std::string opencl_c_version;  // e.g. "OpenCL C 1.2 PoCL"
     bool is_cpu = false;

@@ -1,13 +1,13 @@
 #include "device/program_cache.hpp"
 
+#include <fmt/format.h>
+#include <spdlog/spdlog.h>
+
 #include <chrono>
 #include <cstdlib>
 #include <exception>
 #include <string_view>
 #include <vector>
-
-#include <fmt/format.h>
-#include <spdlog/spdlog.h>
 
 #include "util/content_hash.hpp"
 #include "util/files.hpp"
@@ -50,9 +50,9 @@ std::filesystem::path ProgramCache::default_directory() {
 
 std::string ProgramCache::cache_key(const ComputeDevice& device, const AssembledProgram& program) {
     const std::string options = full_options(program);
-    const std::string_view parts[] = {program.source,           options,
-                                      device.info.platform,     device.info.name,
-                                      device.info.version,      device.info.driver_version};
+    const std::string_view parts[] = {program.source,       options,
+                                      device.info.platform, device.info.name,
+                                      device.info.version,  device.info.driver_version};
     ContentHash hash;
     for (std::string_view part : parts) hash.add(part);
     return hash.hex();

@@ -8,8 +8,8 @@
 #include <stdexcept>
 
 #include "diagnostics/image_metrics.hpp"
-#include "scene/parameters.hpp"
 #include "render/precision.hpp"
+#include "scene/parameters.hpp"
 
 namespace fgr {
 namespace {

@@ -10,17 +10,17 @@
 //   which no geometry knob changes, is no error);
 // - samples per pixel (anti-aliasing) against the "samples" reference: the scene's default
 //   geometry at many samples per pixel, so the curve shows what samples buy.
-// Errors are RMSE of the 8-bit image and 1 - SSIM of its display luma (diagnostics/image_metrics.hpp).
-// Among the points measured against one reference, those no other beats in both time and error
-// form its Pareto front.
+// Errors are RMSE of the 8-bit image and 1 - SSIM of its display luma
+// (diagnostics/image_metrics.hpp). Among the points measured against one reference, those no other
+// beats in both time and error form its Pareto front.
 
 #include <functional>
 #include <string>
 #include <vector>
 
 #include "device/opencl_device.hpp"
-#include "render/path_settings.hpp"
 #include "device/program_cache.hpp"
+#include "render/path_settings.hpp"
 #include "render/renderer.hpp"
 #include "scene/scene.hpp"
 

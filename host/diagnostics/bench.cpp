@@ -1,22 +1,21 @@
 #include "diagnostics/bench.hpp"
 
+#include <fmt/format.h>
+#include <spdlog/spdlog.h>
 #include <sys/utsname.h>
 
 #include <algorithm>
 #include <chrono>
 #include <cmath>
 #include <fstream>
+#include <nlohmann/json.hpp>
 #include <numeric>
 #include <stdexcept>
 #include <thread>
 
-#include <fmt/format.h>
-#include <nlohmann/json.hpp>
-#include <spdlog/spdlog.h>
-
 #include "camera/camera.hpp"
-#include "scene/parameters.hpp"
 #include "render/renderer.hpp"
+#include "scene/parameters.hpp"
 #include "util/timing.hpp"
 
 namespace fgr {
@@ -52,9 +51,14 @@ std::string operating_system() {
 }
 
 json figures_json(const RunFigures& run) {
-    return {{"frames", run.frames},     {"seconds", run.seconds},   {"min_ms", run.min_ms},
-            {"max_ms", run.max_ms},     {"mean_ms", run.mean_ms},   {"mean_fps", run.mean_fps},
-            {"min_fps", run.min_fps},   {"max_fps", run.max_fps},
+    return {{"frames", run.frames},
+            {"seconds", run.seconds},
+            {"min_ms", run.min_ms},
+            {"max_ms", run.max_ms},
+            {"mean_ms", run.mean_ms},
+            {"mean_fps", run.mean_fps},
+            {"min_fps", run.min_fps},
+            {"max_fps", run.max_fps},
             {"double_frames", run.double_frames},
             {"samples_per_second", run.samples_per_second}};
 }
@@ -63,8 +67,8 @@ std::string csv_row(const std::string& label, const BenchReport& report, const R
     return fmt::format(
         "{},{},{},{},{},{:.3f},{:.3f},{:.3f},{:.3f},{:.3f},{:.3f},{:.3f},{:.1f},{},{},{:.1f},{},"
         "{:.0f}\n",
-        report.scene, label, report.settings.width, report.settings.height, run.frames,
-        run.seconds, run.min_ms, run.max_ms, run.mean_ms, run.mean_fps, run.min_fps, run.max_fps,
+        report.scene, label, report.settings.width, report.settings.height, run.frames, run.seconds,
+        run.min_ms, run.max_ms, run.mean_ms, run.mean_fps, run.min_fps, run.max_fps,
         report.build_ms, precision_name(report.settings.precision), run.double_frames,
         report.double_build_ms, render_mode_name(report.settings.render_mode),
         run.samples_per_second);
@@ -72,9 +76,12 @@ std::string csv_row(const std::string& label, const BenchReport& report, const R
 
 std::string origin_name(BuildReport::Origin origin) {
     switch (origin) {
-        case BuildReport::Origin::Compiled: return "compiled";
-        case BuildReport::Origin::Disk: return "disk cache";
-        case BuildReport::Origin::Memory: break;
+        case BuildReport::Origin::Compiled:
+            return "compiled";
+        case BuildReport::Origin::Disk:
+            return "disk cache";
+        case BuildReport::Origin::Memory:
+            break;
     }
     return "memory cache";
 }
@@ -84,10 +91,10 @@ std::string origin_name(BuildReport::Origin origin) {
 struct BenchRenderers {
     BenchRenderers(const Scene& scene, const ComputeDevice& device, ProgramCache& cache,
                    const BenchSettings& settings)
-        : renderers(device, cache, scene,
-                    {settings.packet_width ? settings.packet_width
-                                           : preferred_packet_width(device.info),
-                     scene.effects, false, false, settings.render_mode}),
+        : renderers(
+              device, cache, scene,
+              {settings.packet_width ? settings.packet_width : preferred_packet_width(device.info),
+               scene.effects, false, false, settings.render_mode}),
           chooser(device.info, [](const std::string& warning) { spdlog::warn("{}", warning); }) {}
 
     PrecisionRenderers renderers;
@@ -135,9 +142,8 @@ RunFigures bench_run(const CameraPath& path, const Scene& scene, const BenchSett
             fraction = std::min(1.0, elapsed / settings.duration_seconds);
             if (elapsed >= settings.duration_seconds) break;
             // Real time: where the path is now (looping), as an interactive session sees it.
-            time += path.duration() > 0.0f
-                        ? std::fmod(static_cast<float>(elapsed), path.duration())
-                        : 0.0f;
+            time += path.duration() > 0.0f ? std::fmod(static_cast<float>(elapsed), path.duration())
+                                           : 0.0f;
         }
         progress(fraction);
         request.view = evaluate_camera_path(path, time);
@@ -208,7 +214,8 @@ RunFigures average_runs(const std::vector<RunFigures>& runs) {
 
 const CameraPath& bench_path(const Scene& scene, const std::string& name) {
     std::string names;
-    for (const CameraPath& path : scene.camera_paths) names += (names.empty() ? "" : ", ") + path.name;
+    for (const CameraPath& path : scene.camera_paths)
+        names += (names.empty() ? "" : ", ") + path.name;
     if (scene.camera_paths.empty()) {
         throw std::invalid_argument(
             fmt::format("scene '{}' has no camera path to benchmark along", scene.id));
@@ -251,10 +258,9 @@ BenchReport run_benchmark(const Scene& scene, const ComputeDevice& device, Progr
 
     BenchRenderers renderers(scene, device, cache, settings);
     for (int run = 0; run < settings.runs; ++run) {
-        report.runs.push_back(bench_run(path, scene, settings, renderers, report,
-                                        [&](double done) {
-                                            if (progress) progress(run, done);
-                                        }));
+        report.runs.push_back(bench_run(path, scene, settings, renderers, report, [&](double done) {
+            if (progress) progress(run, done);
+        }));
         if (progress) progress(run, 1.0);
     }
     report.average = average_runs(report.runs);
@@ -338,20 +344,19 @@ std::string bench_table(const BenchReport& report) {
         "OpenCL: {} / {} ({}, {} compute units, {} MiB)\n\n",
         report.scene, report.path, report.path_seconds, report.settings.width,
         report.settings.height, render_mode_name(report.settings.render_mode),
-        report.settings.samples,
-        precision_name(report.settings.precision), kernel_builds(report), system.os, system.cpu,
-        system.cpu_threads, double(system.memory_bytes) / double(1ull << 30),
+        report.settings.samples, precision_name(report.settings.precision), kernel_builds(report),
+        system.os, system.cpu, system.cpu_threads, double(system.memory_bytes) / double(1ull << 30),
         system.device.platform, system.device.name, system.device.version,
         system.device.compute_units, system.device.global_memory_bytes >> 20);
     table += fmt::format("{:>8} {:>7} {:>8} {:>9} {:>9} {:>9} {:>8} {:>8} {:>8} {:>7} {:>12}\n",
                          "run", "frames", "seconds", "min ms", "mean ms", "max ms", "avg fps",
                          "min fps", "max fps", "double", "samples/s");
     const auto row = [&](const std::string& label, const RunFigures& run) {
-        table += fmt::format("{:>8} {:>7} {:>8.2f} {:>9.1f} {:>9.1f} {:>9.1f} {:>8.2f} {:>8.2f} "
-                             "{:>8.2f} {:>7} {:>12.0f}\n",
-                             label, run.frames, run.seconds, run.min_ms, run.mean_ms, run.max_ms,
-                             run.mean_fps, run.min_fps, run.max_fps, run.double_frames,
-                             run.samples_per_second);
+        table += fmt::format(
+            "{:>8} {:>7} {:>8.2f} {:>9.1f} {:>9.1f} {:>9.1f} {:>8.2f} {:>8.2f} "
+            "{:>8.2f} {:>7} {:>12.0f}\n",
+            label, run.frames, run.seconds, run.min_ms, run.mean_ms, run.max_ms, run.mean_fps,
+            run.min_fps, run.max_fps, run.double_frames, run.samples_per_second);
     };
     for (size_t i = 0; i < report.runs.size(); ++i) row(std::to_string(i + 1), report.runs[i]);
     if (report.runs.size() > 1) row("average", report.average);

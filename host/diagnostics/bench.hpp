@@ -15,9 +15,9 @@
 #include <vector>
 
 #include "device/opencl_device.hpp"
+#include "device/program_cache.hpp"
 #include "render/path_settings.hpp"
 #include "render/precision.hpp"
-#include "device/program_cache.hpp"
 #include "scene/render_mode.hpp"
 #include "scene/scene.hpp"
 
@@ -29,12 +29,12 @@ struct BenchSettings {
     double duration_seconds = 10.0;  // per run, when frames is not set
     std::optional<int> frames;       // a fixed frame count per run instead
     int runs = 1;
-    int samples = 1;                 // per pixel
-    int packet_width = 0;            // 0: the device's preference
+    int samples = 1;       // per pixel
+    int packet_width = 0;  // 0: the device's preference
     Precision precision = Precision::Auto;
     RenderMode render_mode = RenderMode::Shaded;
-    PathSettings path_tracing;       // render_mode Path: bounces, strategies, environment
-    std::string path;                // camera path; empty: "benchmark" if the scene has it, else the first
+    PathSettings path_tracing;  // render_mode Path: bounces, strategies, environment
+    std::string path;  // camera path; empty: "benchmark" if the scene has it, else the first
     // Called after every frame with the view rendered, its time on the camera path (in the
     // keyframes' seconds) and its render time in ms, when set: what was played, for tests.
     std::function<void(const CameraView&, float, double)> on_frame{};
@@ -44,17 +44,17 @@ struct RunFigures {
     int frames = 0;
     double seconds = 0.0;  // wall time of the run
     double min_ms = 0.0, max_ms = 0.0, mean_ms = 0.0;
-    double mean_fps = 0.0;  // frames / seconds
-    double min_fps = 0.0;   // 1000 / max_ms
-    double max_fps = 0.0;   // 1000 / min_ms
-    int double_frames = 0;  // frames rendered in double
+    double mean_fps = 0.0;            // frames / seconds
+    double min_fps = 0.0;             // 1000 / max_ms
+    double max_fps = 0.0;             // 1000 / min_ms
+    int double_frames = 0;            // frames rendered in double
     double samples_per_second = 0.0;  // pixel samples (frames x spp x pixels) per second
 };
 
 struct SystemInfo {
-    std::string os;          // e.g. "Debian GNU/Linux 12 (bookworm), Linux 6.1.0"
-    std::string cpu;         // model name
-    int cpu_threads = 0;     // logical CPUs
+    std::string os;       // e.g. "Debian GNU/Linux 12 (bookworm), Linux 6.1.0"
+    std::string cpu;      // model name
+    int cpu_threads = 0;  // logical CPUs
     uint64_t memory_bytes = 0;
     DeviceInfo device;
 };
@@ -64,12 +64,12 @@ struct BenchReport {
     std::string path;
     double path_seconds = 0.0;
     BenchSettings settings;
-    double build_ms = 0.0;  // float kernel build (or cache load) and warm-up; 0 if never needed
+    double build_ms = 0.0;     // float kernel build (or cache load) and warm-up; 0 if never needed
     std::string build_origin;  // "compiled", "disk cache" or "memory cache"; empty if never built
     double double_build_ms = 0.0;  // the same for the double kernel
     std::string double_build_origin;
     std::vector<RunFigures> runs;
-    RunFigures average;     // each figure averaged over the runs
+    RunFigures average;  // each figure averaged over the runs
     SystemInfo system;
 };
 

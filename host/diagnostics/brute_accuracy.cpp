@@ -1,19 +1,18 @@
 #include "diagnostics/brute_accuracy.hpp"
 
+#include <fmt/format.h>
+
 #include <algorithm>
 #include <cmath>
 #include <stdexcept>
-
-#include <fmt/format.h>
 
 #include "camera/camera.hpp"
 #include "scene/parameters.hpp"
 
 namespace fgr {
 
-DepthAgreement depth_agreement(const std::vector<float>& depth,
-                               const std::vector<float>& reference, float pixel_angle,
-                               float tolerance_footprints) {
+DepthAgreement depth_agreement(const std::vector<float>& depth, const std::vector<float>& reference,
+                               float pixel_angle, float tolerance_footprints) {
     if (depth.size() != reference.size()) {
         throw std::invalid_argument("depth agreement: the buffers differ in size");
     }
@@ -72,8 +71,8 @@ BruteConvergence run_brute_convergence(
     const BruteConvergenceSettings& settings,
     const std::function<void(int, int, const std::string&)>& progress) {
     if (scene.ifs) {
-        throw std::invalid_argument(fmt::format(
-            "the IFS scene '{}' has no brute-force rendering to measure", scene.id));
+        throw std::invalid_argument(
+            fmt::format("the IFS scene '{}' has no brute-force rendering to measure", scene.id));
     }
     std::vector<int> passes;
     for (int n = 1; n <= std::max(settings.max_passes, 1); n *= 2) passes.push_back(n);

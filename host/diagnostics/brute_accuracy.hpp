@@ -19,9 +19,9 @@ namespace fgr {
 // How a depth buffer agrees with a reference of the same size, in pixel footprints (a pixel's
 // angle times the reference's depth there: what one pixel covers at the surface).
 struct DepthAgreement {
-    long either = 0;            // pixels hit in either
-    long both = 0;              // pixels hit in both
-    long within = 0;            // of those, the ones within the tolerance
+    long either = 0;               // pixels hit in either
+    long both = 0;                 // pixels hit in both
+    long within = 0;               // of those, the ones within the tolerance
     double mean_footprints = 0.0;  // mean |t - t_ref| over `both`, in footprints
     double iou() const { return either ? double(both) / double(either) : 1.0; }
     double within_fraction() const { return both ? double(within) / double(both) : 1.0; }
@@ -31,9 +31,8 @@ struct DepthAgreement {
     }
 };
 
-DepthAgreement depth_agreement(const std::vector<float>& depth,
-                               const std::vector<float>& reference, float pixel_angle,
-                               float tolerance_footprints);
+DepthAgreement depth_agreement(const std::vector<float>& depth, const std::vector<float>& reference,
+                               float pixel_angle, float tolerance_footprints);
 
 // The tolerance the sweep measures agreement at: a DE surface is taken where the DE falls below
 // one footprint, which a sphere tracer approaches to within about one more.
@@ -49,15 +48,15 @@ struct BrutePoint {
 struct BruteConvergence {
     std::string reference;  // what the points are compared with, in words
     double reference_ms = 0.0;
-    bool sphere_traced = false;  // the reference is the sphere tracer's (a DE scene's)
+    bool sphere_traced = false;      // the reference is the sphere tracer's (a DE scene's)
     std::vector<BrutePoint> points;  // passes ascending
 };
 
 struct BruteConvergenceSettings {
     int width = 320;
     int height = 240;
-    int repeats = 3;         // timing rounds, alternating over the points
-    int max_passes = 128;    // the points: 1, 2, 4, ... up to this
+    int repeats = 3;              // timing rounds, alternating over the points
+    int max_passes = 128;         // the points: 1, 2, 4, ... up to this
     int reference_passes = 1024;  // inside-only scenes' reference
 };
 

@@ -1,11 +1,11 @@
 #include "diagnostics/image_metrics.hpp"
 
+#include <fmt/format.h>
+
 #include <array>
 #include <cmath>
 #include <stdexcept>
 #include <string>
-
-#include <fmt/format.h>
 
 namespace fgr {
 namespace {

@@ -1,11 +1,11 @@
 // `fgr bench accuracy SCENE --mode path`: what the path tracer's noise costs in time. Every
 // point renders the scene's first camera with one knob changed from the given settings and is
 // compared with a long render (see run_path_accuracy_sweep in accuracy.hpp).
+#include <fmt/format.h>
+
 #include <algorithm>
 #include <string>
 #include <vector>
-
-#include <fmt/format.h>
 
 #include "diagnostics/accuracy.hpp"
 #include "diagnostics/image_metrics.hpp"
@@ -68,12 +68,11 @@ FrameRequest path_request(const Scene& scene, const AccuracySettings& settings,
 
 AccuracyReport run_path_accuracy_sweep(const Scene& scene, const ComputeDevice& device,
                                        ProgramCache& cache, const AccuracySettings& settings,
-                                       const PathSettings& base,
-                                       const AccuracyProgress& progress) {
+                                       const PathSettings& base, const AccuracyProgress& progress) {
     if (settings.width < kSsimWindow || settings.height < kSsimWindow) {
-        throw std::invalid_argument(fmt::format(
-            "accuracy sweep: {}x{} is smaller than SSIM's {}x{} window", settings.width,
-            settings.height, kSsimWindow, kSsimWindow));
+        throw std::invalid_argument(
+            fmt::format("accuracy sweep: {}x{} is smaller than SSIM's {}x{} window", settings.width,
+                        settings.height, kSsimWindow, kSsimWindow));
     }
     KernelSwitches switches;
     switches.packet_width = preferred_packet_width(device.info);
@@ -108,8 +107,8 @@ AccuracyReport run_path_accuracy_sweep(const Scene& scene, const ComputeDevice& 
             const Frame frame =
                 renderer.render(path_request(scene, settings, point.settings, point.samples));
             if (round == 0) {
-                report.points.push_back({point.knob, point.value, kPathReference,
-                                         frame.render_ms, 0.0, compare_frames(frame, truth)});
+                report.points.push_back({point.knob, point.value, kPathReference, frame.render_ms,
+                                         0.0, compare_frames(frame, truth)});
             } else {
                 report.points[i].render_ms = std::min(report.points[i].render_ms, frame.render_ms);
             }

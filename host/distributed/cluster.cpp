@@ -1,5 +1,6 @@
 #include "distributed/cluster.hpp"
 
+#include <fmt/format.h>
 #include <unistd.h>
 
 #include <chrono>
@@ -8,8 +9,6 @@
 #include <stdexcept>
 #include <string_view>
 #include <thread>
-
-#include <fmt/format.h>
 
 #include "distributed/transport.hpp"
 
@@ -96,8 +95,8 @@ std::optional<Message> Cluster::try_receive(int from) {
     if (!arrived) return std::nullopt;
     auto& [sender, bytes] = *arrived;
     if (bytes.size() < sizeof(Header)) {
-        throw std::runtime_error(fmt::format("a message of {} bytes from rank {} is too short",
-                                             bytes.size(), sender));
+        throw std::runtime_error(
+            fmt::format("a message of {} bytes from rank {} is too short", bytes.size(), sender));
     }
     Header header{};
     std::memcpy(&header, bytes.data(), sizeof header);
@@ -112,7 +111,8 @@ std::optional<Message> Cluster::try_receive(int from) {
         if (message.kind == MessageKind::Failure) finished_[size_t(sender)] = true;
         // A worker that asked waits for the answer; if rank 0 fails before giving it,
         // dismiss_workers does.
-        owed_reply_[size_t(sender)] = message.kind == MessageKind::Ready || message.kind == MessageKind::Result;
+        owed_reply_[size_t(sender)] =
+            message.kind == MessageKind::Ready || message.kind == MessageKind::Result;
     }
     return message;
 }
@@ -145,7 +145,8 @@ std::string Cluster::dismiss_workers() {
     while (any_active()) {
         const Message message = receive();
         if (message.kind == MessageKind::Failure) {
-            if (failure.empty()) failure = std::string(message.payload.begin(), message.payload.end());
+            if (failure.empty())
+                failure = std::string(message.payload.begin(), message.payload.end());
         } else if (worker_active(message.from)) {
             send(message.from, MessageKind::Done, -1);
         }

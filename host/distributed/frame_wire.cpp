@@ -38,7 +38,8 @@ public:
     template <typename T>
     std::vector<T> array() {
         const auto count = value<uint64_t>();
-        if (count > (bytes_.size() - offset_) / sizeof(T)) throw std::runtime_error("a frame message is cut short");
+        if (count > (bytes_.size() - offset_) / sizeof(T))
+            throw std::runtime_error("a frame message is cut short");
         std::vector<T> values(count);
         take(values.data(), count * sizeof(T));
         return values;
@@ -47,7 +48,8 @@ public:
 
 private:
     void take(void* out, size_t size) {
-        if (size > bytes_.size() - offset_) throw std::runtime_error("a frame message is cut short");
+        if (size > bytes_.size() - offset_)
+            throw std::runtime_error("a frame message is cut short");
         if (size > 0) std::memcpy(out, bytes_.data() + offset_, size);
         offset_ += size;
     }

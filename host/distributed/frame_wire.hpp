@@ -6,8 +6,8 @@
 #include <span>
 #include <vector>
 
-#include "render/renderer.hpp"
 #include "output/tiled/tiled_still.hpp"
+#include "render/renderer.hpp"
 
 namespace fgr {
 

@@ -4,8 +4,8 @@
 #include <stdexcept>
 
 #include "distributed/cluster.hpp"
-#include "scene/modules.hpp"
 #include "distributed/transport.hpp"
+#include "scene/modules.hpp"
 
 namespace fgr {
 

@@ -1,8 +1,7 @@
 // fgr built without MPI: every process is a job of its own. Started by mpirun on several ranks,
 // it says so (rank 0 only) instead of letting N copies race to write the same file.
-#include "distributed/transport.hpp"
-
 #include "distributed/cluster.hpp"
+#include "distributed/transport.hpp"
 
 namespace fgr {
 

@@ -1,17 +1,17 @@
 #include "distributed/task_farm.hpp"
 
+#include <fmt/format.h>
+
 #include <chrono>
-#include <cstdlib>
-#include <string_view>
 #include <condition_variable>
+#include <cstdlib>
 #include <deque>
 #include <exception>
 #include <mutex>
 #include <optional>
+#include <string_view>
 #include <thread>
 #include <unordered_map>
-
-#include <fmt/format.h>
 
 namespace fgr {
 namespace {
@@ -92,8 +92,8 @@ void run_worker(Cluster& cluster, const TaskWork& work) {
         const Message message = cluster.receive(0);
         if (message.kind == MessageKind::Done) return;
         if (message.kind != MessageKind::Task) {
-            throw std::runtime_error(fmt::format("unexpected message {} from rank 0",
-                                                 static_cast<int>(message.kind)));
+            throw std::runtime_error(
+                fmt::format("unexpected message {} from rank 0", static_cast<int>(message.kind)));
         }
         const std::vector<uint8_t> result = work(message.task);
         cluster.send(0, MessageKind::Result, message.task, result);
@@ -103,7 +103,8 @@ void run_worker(Cluster& cluster, const TaskWork& work) {
 // Rank 0's bookkeeping: which tasks went out, which came back, who waits for one.
 class Schedule {
 public:
-    Schedule(const std::vector<int64_t>& tasks, int window) : tasks_(tasks), window_(size_t(window)), done_(tasks.size()) {
+    Schedule(const std::vector<int64_t>& tasks, int window)
+        : tasks_(tasks), window_(size_t(window)), done_(tasks.size()) {
         for (size_t i = 0; i < tasks.size(); ++i) position_[tasks[i]] = i;
     }
     bool all_handed_out() const { return next_ >= tasks_.size(); }
@@ -163,7 +164,9 @@ FarmOutcome run_coordinator(Cluster& cluster, const std::vector<int64_t>& tasks,
         while (std::optional<Message> message = cluster.try_receive()) {
             busy = true;
             switch (message->kind) {
-                case MessageKind::Ready: serve(message->from); break;
+                case MessageKind::Ready:
+                    serve(message->from);
+                    break;
                 case MessageKind::Result:
                     schedule.returned(message->task);
                     ++outcome.tasks_by_rank[size_t(message->from)];
@@ -172,10 +175,12 @@ FarmOutcome run_coordinator(Cluster& cluster, const std::vector<int64_t>& tasks,
                     serve(message->from);
                     break;
                 case MessageKind::Failure:
-                    throw RankFailure(std::string(message->payload.begin(), message->payload.end()));
+                    throw RankFailure(
+                        std::string(message->payload.begin(), message->payload.end()));
                 default:
                     throw std::runtime_error(fmt::format("unexpected message {} from rank {}",
-                                                         static_cast<int>(message->kind), message->from));
+                                                         static_cast<int>(message->kind),
+                                                         message->from));
             }
         }
         if (auto finished = local.take_finished()) {

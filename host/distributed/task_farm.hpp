@@ -36,15 +36,16 @@ struct FarmSettings {
 
 // What a farm did (rank 0's view).
 struct FarmOutcome {
-    bool finished = false;                // every result went to the sink (not interrupted)
-    std::vector<long> tasks_by_rank;      // results each rank delivered
+    bool finished = false;            // every result went to the sink (not interrupted)
+    std::vector<long> tasks_by_rank;  // results each rank delivered
 };
 
 // Results that arrive in any order handed on in task order (first, first + 1, ...): frames into
 // a video, seeds into a sum that must come out the same run to run. Holds the early ones.
 class InTaskOrder {
 public:
-    explicit InTaskOrder(ResultSink next, int64_t first = 0) : next_(std::move(next)), expected_(first) {}
+    explicit InTaskOrder(ResultSink next, int64_t first = 0)
+        : next_(std::move(next)), expected_(first) {}
     void add(int64_t task, std::vector<uint8_t>&& result);
     int64_t delivered_up_to() const { return expected_; }  // the next task to hand on
     size_t held() const { return early_.size(); }
@@ -68,6 +69,6 @@ struct RankFailure : std::runtime_error {
 // has no more tasks for them. Throws RankFailure (rank 0) for a failed worker; whatever
 // `work` or `sink` throws propagates on the rank it was thrown on.
 FarmOutcome run_farm(Cluster& cluster, const std::vector<int64_t>& tasks, const TaskWork& work,
-              const ResultSink& sink, const FarmSettings& settings = {});
+                     const ResultSink& sink, const FarmSettings& settings = {});
 
 }  // namespace fgr

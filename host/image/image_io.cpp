@@ -66,9 +66,9 @@ struct PngPixels {
     int width = 0;
     int height = 0;
     int bit_depth = 8;
-    int channels = 3;               // 4: RGBA
-    bool linear = false;            // gAMA 1.0 instead of sRGB
-    std::vector<uint8_t> storage;   // interleaved RGBA, or 16-bit samples big-endian as PNG has
+    int channels = 3;              // 4: RGBA
+    bool linear = false;           // gAMA 1.0 instead of sRGB
+    std::vector<uint8_t> storage;  // interleaved RGBA, or 16-bit samples big-endian as PNG has
     const uint8_t* bytes = nullptr;
     std::size_t row_bytes() const {
         return std::size_t(width) * std::size_t(channels) * std::size_t(bit_depth / 8);
@@ -206,8 +206,8 @@ bool decode(PngReader& reader, Image8& image, std::vector<png_bytep>& rows) {
     return true;
 }
 
-void read_samples(png_structp png, png_infop info, PngSamples& image,
-                  std::vector<uint8_t>& bytes, std::vector<png_bytep>& rows) {
+void read_samples(png_structp png, png_infop info, PngSamples& image, std::vector<uint8_t>& bytes,
+                  std::vector<png_bytep>& rows) {
     png_read_info(png, info);
     const int type = png_get_color_type(png, info);
     if (type != PNG_COLOR_TYPE_RGB && type != PNG_COLOR_TYPE_RGB_ALPHA) {
@@ -327,8 +327,8 @@ PngSamples read_png_samples(const fs::path& path) {
     const bool wide = image.bit_depth == 16;
     image.samples.resize(bytes.size() / (wide ? 2 : 1));
     for (std::size_t i = 0; i < image.samples.size(); ++i) {
-        image.samples[i] = wide ? static_cast<uint16_t>(bytes[2 * i] << 8 | bytes[2 * i + 1])
-                                : bytes[i];
+        image.samples[i] =
+            wide ? static_cast<uint16_t>(bytes[2 * i] << 8 | bytes[2 * i + 1]) : bytes[i];
     }
     return image;
 }

@@ -12,7 +12,7 @@ namespace fgr {
 struct Image8 {
     int width = 0;
     int height = 0;
-    std::vector<uint8_t> rgb;  // tightly packed rows, top row first, 3 bytes a pixel
+    std::vector<uint8_t> rgb;      // tightly packed rows, top row first, 3 bytes a pixel
     std::vector<uint8_t> alpha{};  // empty: opaque (an RGB file); else a byte a pixel (RGBA)
 };
 
@@ -20,7 +20,7 @@ struct Image8 {
 struct Image16 {
     int width = 0;
     int height = 0;
-    std::vector<uint16_t> rgb;  // tightly packed rows, top row first, 3 samples a pixel
+    std::vector<uint16_t> rgb;      // tightly packed rows, top row first, 3 samples a pixel
     std::vector<uint16_t> alpha{};  // empty: opaque (an RGB file); else a sample a pixel (RGBA)
 };
 
@@ -28,15 +28,16 @@ struct Image16 {
 struct PngSamples {
     int width = 0;
     int height = 0;
-    int channels = 0;   // 3 (RGB) or 4 (RGBA)
-    int bit_depth = 0;  // 8 or 16
+    int channels = 0;               // 3 (RGB) or 4 (RGBA)
+    int bit_depth = 0;              // 8 or 16
     std::vector<uint16_t> samples;  // rows top first, `channels` a pixel
 };
 
-// Writes `image` as an 8-bit RGB PNG tagged sRGB (RGBA when it has alpha). The file is written beside `path` under a temporary name and
-// renamed over it only when complete, so `path` holds either its old content or the whole new
-// image, never a partial file. Throws std::invalid_argument for non-positive dimensions or a pixel
-// buffer of the wrong size, std::runtime_error ("cannot write '<path>': <reason>") otherwise.
+// Writes `image` as an 8-bit RGB PNG tagged sRGB (RGBA when it has alpha). The file is written
+// beside `path` under a temporary name and renamed over it only when complete, so `path` holds
+// either its old content or the whole new image, never a partial file. Throws std::invalid_argument
+// for non-positive dimensions or a pixel buffer of the wrong size, std::runtime_error ("cannot
+// write '<path>': <reason>") otherwise.
 void write_png(const std::filesystem::path& path, const Image8& image);
 
 // Writes `image` as a 16-bit RGB PNG tagged linear (gAMA 1.0), RGBA when it has alpha,

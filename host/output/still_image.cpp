@@ -1,27 +1,31 @@
 #include "output/still_image.hpp"
 
-#include <algorithm>
-#include <cmath>
-#include <limits>
-#include <vector>
-#include <cstddef>
-#include <stdexcept>
-#include <string>
-
 #include <fmt/format.h>
 #include <spdlog/spdlog.h>
 
+#include <algorithm>
+#include <cmath>
+#include <cstddef>
+#include <limits>
+#include <stdexcept>
+#include <string>
+#include <vector>
+
+#include "camera/view_validation.hpp"
+#include "device/kernel_assembly.hpp"
 #include "image/hdr_io.hpp"
 #include "image/image_io.hpp"
-#include "device/kernel_assembly.hpp"
 #include "util/lower_case.hpp"
-#include "camera/view_validation.hpp"
 
 namespace fgr {
 
 KernelSwitches still_switches(const ComputeDevice& device, const StillSettings& settings) {
     return {settings.packet_width ? settings.packet_width : preferred_packet_width(device.info),
-            settings.effects, settings.stats, false, settings.mode, settings.aovs};
+            settings.effects,
+            settings.stats,
+            false,
+            settings.mode,
+            settings.aovs};
 }
 
 Renderer& build_still_renderer(PrecisionRenderers& renderers, const Scene& scene,
@@ -66,7 +70,8 @@ Renderer& choose_still_renderer(PrecisionRenderers& renderers, const Scene& scen
 Frame render_still(const Scene& scene, const FrameRequest& request, const ComputeDevice& device,
                    ProgramCache& cache, const StillSettings& settings) {
     PrecisionRenderers renderers(device, cache, scene, still_switches(device, settings));
-    Frame frame = choose_still_renderer(renderers, scene, request, device, settings).render(request);
+    Frame frame =
+        choose_still_renderer(renderers, scene, request, device, settings).render(request);
     check_finite_frame(scene, frame);
     return frame;
 }
@@ -74,9 +79,9 @@ Frame render_still(const Scene& scene, const FrameRequest& request, const Comput
 void check_finite_frame(const Scene& scene, const Frame& frame) {
     // A pixel the kernel could not compute must not reach a file as if it were an image.
     if (const long broken = non_finite_pixels(frame); broken > 0) {
-        throw std::runtime_error(fmt::format(
-            "rendering '{}' gave non-finite colour or depth at {} of {} pixels", scene.id, broken,
-            frame.depth.size()));
+        throw std::runtime_error(
+            fmt::format("rendering '{}' gave non-finite colour or depth at {} of {} pixels",
+                        scene.id, broken, frame.depth.size()));
     }
 }
 
@@ -107,9 +112,8 @@ Aovs parse_aovs(std::string_view list) {
         } else if (name == "alpha") {
             aovs.alpha = true;
         } else {
-            throw std::invalid_argument(
-                fmt::format("unknown --aov layer '{}' (choose from albedo,normal,depth,alpha)",
-                            name));
+            throw std::invalid_argument(fmt::format(
+                "unknown --aov layer '{}' (choose from albedo,normal,depth,alpha)", name));
         }
     }
     return aovs;
@@ -155,8 +159,7 @@ void write_png_still(const std::filesystem::path& path, const Frame& frame,
 
 }  // namespace
 
-void write_still(const std::filesystem::path& path, const Frame& frame,
-                 const StillOutput& output) {
+void write_still(const std::filesystem::path& path, const Frame& frame, const StillOutput& output) {
     if (lower_extension(path) == ".exr") {
         Aovs aovs = output.aovs;
         aovs.alpha = aovs.alpha || output.alpha;

@@ -8,22 +8,22 @@
 #include <string_view>
 
 #include "device/opencl_device.hpp"
-#include "render/precision.hpp"
 #include "device/program_cache.hpp"
-#include "scene/render_mode.hpp"
-#include "render/renderer.hpp"
-#include "scene/scene.hpp"
 #include "output/still_layers.hpp"
+#include "render/precision.hpp"
+#include "render/renderer.hpp"
+#include "scene/render_mode.hpp"
+#include "scene/scene.hpp"
 
 namespace fgr {
 
 struct StillSettings {
-    int packet_width = 0;   // rays per work-item; 0: the device's preference
-    uint64_t effects = 0;   // fgr_effect_flag bits compiled in
-    bool stats = false;     // count the primary rays' work (Frame::stats)
+    int packet_width = 0;  // rays per work-item; 0: the device's preference
+    uint64_t effects = 0;  // fgr_effect_flag bits compiled in
+    bool stats = false;    // count the primary rays' work (Frame::stats)
     Precision precision = Precision::Auto;
     RenderMode mode = RenderMode::Shaded;
-    bool aovs = false;      // also render alpha, albedo and normal (KernelSwitches::aovs)
+    bool aovs = false;  // also render alpha, albedo and normal (KernelSwitches::aovs)
 };
 
 // Samples per pixel a path-traced still takes unless told otherwise.
@@ -62,7 +62,8 @@ Frame render_still(const Scene& scene, const FrameRequest& request, const Comput
 
 // Pixels of `frame` whose linear colour or depth is NaN or infinite.
 long non_finite_pixels(const Frame& frame);
-// Throws std::runtime_error naming `scene` when `frame` has non-finite pixels (render_still's check).
+// Throws std::runtime_error naming `scene` when `frame` has non-finite pixels (render_still's
+// check).
 void check_finite_frame(const Scene& scene, const Frame& frame);
 
 // How a still is written (see still_layers.hpp for what alpha does to the colour).

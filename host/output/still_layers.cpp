@@ -1,12 +1,12 @@
 #include "output/still_layers.hpp"
 
+#include <fmt/format.h>
+
 #include <algorithm>
 #include <cmath>
 #include <limits>
 #include <stdexcept>
 #include <string>
-
-#include <fmt/format.h>
 
 #include "scene/parameters.hpp"
 
@@ -103,14 +103,17 @@ void straight_rgba_rows(const Frame& frame, RowBand band, std::span<Sample> out,
 
 void rgba8_rows(const Frame& frame, const DisplayTransform& display, RowBand band,
                 std::span<uint8_t> out) {
-    straight_rgba_rows(frame, band, out, [&](float linear) {
-        return encode_srgb(tone_map(linear * display.exposure, display.tone_map));
-    }, to_unorm8);
+    straight_rgba_rows(
+        frame, band, out,
+        [&](float linear) {
+            return encode_srgb(tone_map(linear * display.exposure, display.tone_map));
+        },
+        to_unorm8);
 }
 
 void rgba16_linear_rows(const Frame& frame, float exposure, RowBand band, std::span<uint16_t> out) {
-    straight_rgba_rows(frame, band, out, [&](float linear) { return to_unorm16(linear * exposure); },
-                       to_unorm16);
+    straight_rgba_rows(
+        frame, band, out, [&](float linear) { return to_unorm16(linear * exposure); }, to_unorm16);
 }
 
 std::vector<ExrLayer> exr_layers(const Frame& frame, const Aovs& aovs, RowBand band) {

@@ -1,15 +1,15 @@
 #include "render/environment.hpp"
 
+#include <fmt/format.h>
+
 #include <algorithm>
 #include <array>
 #include <climits>
 #include <cmath>
+#include <glm/geometric.hpp>
 #include <numbers>
 #include <stdexcept>
 #include <string>
-
-#include <fmt/format.h>
-#include <glm/geometric.hpp>
 
 namespace fgr {
 namespace {

@@ -15,11 +15,10 @@
 // (what the map shows at phi is seen at phi + R).
 
 #include <cstdint>
-#include <string_view>
-#include <vector>
-
 #include <glm/vec2.hpp>
 #include <glm/vec3.hpp>
+#include <string_view>
+#include <vector>
 
 #include "image/hdr_image.hpp"
 

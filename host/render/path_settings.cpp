@@ -1,12 +1,12 @@
 #include "render/path_settings.hpp"
 
+#include <fmt/format.h>
+
 #include <algorithm>
 #include <cmath>
+#include <glm/geometric.hpp>
 #include <stdexcept>
 #include <string>
-
-#include <fmt/format.h>
-#include <glm/geometric.hpp>
 
 #include "image/hdr_io.hpp"
 
@@ -35,7 +35,8 @@ glm::vec3 parse_radiance(std::string_view text) {
     if (first == std::string_view::npos) return glm::vec3(parse_float(text, what));
     const size_t second = text.find(',', first + 1);
     if (second == std::string_view::npos || text.find(',', second + 1) != std::string_view::npos) {
-        throw std::invalid_argument(fmt::format("{}: give one value or R,G,B, not '{}'", what, text));
+        throw std::invalid_argument(
+            fmt::format("{}: give one value or R,G,B, not '{}'", what, text));
     }
     return {parse_float(text.substr(0, first), what),
             parse_float(text.substr(first + 1, second - first - 1), what),
@@ -96,18 +97,18 @@ std::shared_ptr<const PreparedEnvironment> prepare_environment(const Environment
                     glm::normalize(glm::dvec3(key->vector)), -choice.rotation_degrees);
                 const glm::dvec2 uv = environment_coordinates(towards);
                 sky.sun_azimuth_degrees = static_cast<float>(uv.x * 360.0);
-                sky.sun_elevation_degrees = static_cast<float>(
-                    std::clamp(90.0 - uv.y * 180.0, 0.0, 90.0));
+                sky.sun_elevation_degrees =
+                    static_cast<float>(std::clamp(90.0 - uv.y * 180.0, 0.0, 90.0));
             }
             validate_sky(sky);
             map = preetham_sky(sky);
             SunDisc sun = preetham_sun(sky);
-            sun.direction = glm::vec3(rotate_environment_direction(glm::dvec3(sun.direction),
-                                                                   choice.rotation_degrees));
+            sun.direction = glm::vec3(
+                rotate_environment_direction(glm::dvec3(sun.direction), choice.rotation_degrees));
             prepared->sun = sun;
-            prepared->description = fmt::format(
-                "sky (turbidity {:g}, sun {:.0f} deg above the horizon)", sky.turbidity,
-                sky.sun_elevation_degrees);
+            prepared->description =
+                fmt::format("sky (turbidity {:g}, sun {:.0f} deg above the horizon)", sky.turbidity,
+                            sky.sun_elevation_degrees);
             break;
         }
         case EnvironmentKind::Studio:
@@ -116,14 +117,14 @@ std::shared_ptr<const PreparedEnvironment> prepare_environment(const Environment
             break;
         case EnvironmentKind::Uniform:
             map = uniform_environment(choice.radiance);
-            prepared->description = fmt::format("uniform radiance {:g} {:g} {:g}",
-                                                choice.radiance.r, choice.radiance.g,
-                                                choice.radiance.b);
+            prepared->description =
+                fmt::format("uniform radiance {:g} {:g} {:g}", choice.radiance.r, choice.radiance.g,
+                            choice.radiance.b);
             break;
         case EnvironmentKind::File:
             map = read_hdr_image(choice.file);
-            prepared->description = fmt::format("{} ({}x{})", choice.file.string(), map.width,
-                                                map.height);
+            prepared->description =
+                fmt::format("{} ({}x{})", choice.file.string(), map.width, map.height);
             break;
     }
     prepared->tables = environment_tables(
@@ -135,8 +136,7 @@ std::shared_ptr<const PreparedEnvironment> prepare_environment(const Environment
 
 void check_path_settings(const PathSettings& settings) {
     if (settings.max_bounces < 0 || settings.max_bounces > kMaxBounces) {
-        throw std::invalid_argument(
-            fmt::format("bounces must be between 0 and {}", kMaxBounces));
+        throw std::invalid_argument(fmt::format("bounces must be between 0 and {}", kMaxBounces));
     }
     if (settings.roulette_depth < 0 || settings.roulette_depth > kMaxBounces) {
         throw std::invalid_argument(

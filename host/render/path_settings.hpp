@@ -4,13 +4,12 @@
 
 #include <cstdint>
 #include <filesystem>
+#include <glm/vec3.hpp>
 #include <memory>
 #include <optional>
 #include <string>
 #include <string_view>
 #include <vector>
-
-#include <glm/vec3.hpp>
 
 #include "render/environment.hpp"
 #include "scene/scene.hpp"
@@ -57,17 +56,17 @@ std::shared_ptr<const PreparedEnvironment> prepare_environment(const Environment
                                                                const Scene& scene);
 
 struct PathSettings {
-    int max_bounces = 8;         // scattering events after the camera ray, at most
-    int roulette_depth = 3;      // Russian roulette from this bounce on (unbiased)
-    float radiance_clamp = 0.0f; // > 0 clamps each sample's radiance (removes fireflies, biased)
-    bool light_sampling = true;  // next-event estimation towards the environment and lights
-    bool mis = true;             // power-heuristic weights between light and BSDF sampling
+    int max_bounces = 8;          // scattering events after the camera ray, at most
+    int roulette_depth = 3;       // Russian roulette from this bounce on (unbiased)
+    float radiance_clamp = 0.0f;  // > 0 clamps each sample's radiance (removes fireflies, biased)
+    bool light_sampling = true;   // next-event estimation towards the environment and lights
+    bool mis = true;              // power-heuristic weights between light and BSDF sampling
     bool environment_importance = true;  // sample the environment by its luminance
-    bool scene_lights = true;    // the scene's own lights shine besides the environment
+    bool scene_lights = true;            // the scene's own lights shine besides the environment
     // Stratified samples (scrambled Sobol per pixel); false draws independent random ones, to
     // measure what stratification buys (the error then falls exactly as 1 / sqrt(samples)).
     bool stratified = true;
-    uint32_t seed = 0;           // another seed, another noise pattern
+    uint32_t seed = 0;  // another seed, another noise pattern
     // What lights the scene; null renders with the default sky.
     std::shared_ptr<const PreparedEnvironment> environment;
     // The environment compares by identity: a prepared environment is never changed in place.

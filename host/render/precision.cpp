@@ -1,16 +1,16 @@
 #include "render/precision.hpp"
 
-#include "scene/ifs/ifs.hpp"
-#include "scene/parameters.hpp"
+#include <fmt/format.h>
 
 #include <algorithm>
 #include <cmath>
+#include <glm/geometric.hpp>
 #include <span>
 #include <stdexcept>
 #include <utility>
 
-#include <fmt/format.h>
-#include <glm/geometric.hpp>
+#include "scene/ifs/ifs.hpp"
+#include "scene/parameters.hpp"
 
 namespace fgr {
 
@@ -24,9 +24,12 @@ Precision parse_precision(std::string_view text) {
 
 std::string_view precision_name(Precision precision) {
     switch (precision) {
-        case Precision::Float: return "float";
-        case Precision::Double: return "double";
-        case Precision::Auto: break;
+        case Precision::Float:
+            return "float";
+        case Precision::Double:
+            return "double";
+        case Precision::Auto:
+            break;
     }
     return "auto";
 }
@@ -98,8 +101,9 @@ bool PrecisionChooser::in_double(Precision precision, const CameraView& view, in
     if (!warned_ && double_wanted && precision == Precision::Auto && !device_.has_fp64) {
         warned_ = true;
         if (warn_) {
-            warn_(fmt::format("this view needs double precision, which {} lacks: rendering in float",
-                              device_.name));
+            warn_(
+                fmt::format("this view needs double precision, which {} lacks: rendering in float",
+                            device_.name));
         }
     }
     return double_wanted && device_.has_fp64;

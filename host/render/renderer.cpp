@@ -1,30 +1,30 @@
 #include "render/renderer.hpp"
 
+#include <fmt/format.h>
+#include <spdlog/spdlog.h>
+
 #include <algorithm>
 #include <array>
 #include <atomic>
 #include <chrono>
 #include <cmath>
+#include <glm/geometric.hpp>
 #include <mutex>
 #include <set>
 #include <span>
 #include <stdexcept>
 #include <string>
 
-#include <fmt/format.h>
-#include <glm/geometric.hpp>
-#include <spdlog/spdlog.h>
-
 #include "camera/camera.hpp"
-#include "device/math_check.hpp"
-#include "scene/parameters.hpp"
 #include "camera/projection.hpp"
 #include "camera/view_validation.hpp"
-#include "render/modes/mode_kernel.hpp"
+#include "device/math_check.hpp"
 #include "render/camera_frame.hpp"
+#include "render/modes/mode_kernel.hpp"
+#include "render/prepass/cone_prepass.hpp"
+#include "scene/parameters.hpp"
 #include "util/parallel_bands.hpp"
 #include "util/timing.hpp"
-#include "render/prepass/cone_prepass.hpp"
 
 namespace fgr {
 namespace {
@@ -39,8 +39,8 @@ void check_size(const FrameRequest& request) {
     }
     if (request.width < 1 || request.height < 1 || request.width > kMaxTiledImageSide ||
         request.height > kMaxTiledImageSide) {
-        throw std::invalid_argument(fmt::format(
-            "tiled image size must be between 1x1 and {0}x{0}", kMaxTiledImageSide));
+        throw std::invalid_argument(
+            fmt::format("tiled image size must be between 1x1 and {0}x{0}", kMaxTiledImageSide));
     }
     const PixelRegion& r = request.region;
     if (r.width < 1 || r.height < 1 || r.width > kMaxImageSide || r.height > kMaxImageSide ||
@@ -75,8 +75,8 @@ const std::array<uint8_t, 4097>& srgb_table() {
         std::array<uint8_t, 4097> values{};
         for (size_t i = 0; i < values.size(); ++i) {
             const double linear = static_cast<double>(i) / 4096.0;
-            const double encoded = linear <= 0.0031308 ? 12.92 * linear
-                                                        : 1.055 * std::pow(linear, 1.0 / 2.4) - 0.055;
+            const double encoded =
+                linear <= 0.0031308 ? 12.92 * linear : 1.055 * std::pow(linear, 1.0 / 2.4) - 0.055;
             values[i] = static_cast<uint8_t>(std::lround(std::clamp(encoded, 0.0, 1.0) * 255.0));
         }
         return values;
@@ -122,9 +122,11 @@ void encode_display(const std::vector<float>& linear, float exposure, Curve curv
 class MappedPlanes {
 public:
     MappedPlanes(const cl::CommandQueue& queue, const cl::Buffer& buffer, size_t count)
-        : queue_(queue), buffer_(buffer), count_(count),
-          data_(static_cast<float*>(queue.enqueueMapBuffer(buffer, CL_TRUE, CL_MAP_READ, 0,
-                                                            count * sizeof(float)))) {}
+        : queue_(queue),
+          buffer_(buffer),
+          count_(count),
+          data_(static_cast<float*>(
+              queue.enqueueMapBuffer(buffer, CL_TRUE, CL_MAP_READ, 0, count * sizeof(float)))) {}
     MappedPlanes(const MappedPlanes&) = delete;
     MappedPlanes& operator=(const MappedPlanes&) = delete;
     ~MappedPlanes() {
@@ -159,23 +161,24 @@ void unpack_common_planes(std::span<const float> planes, const TileLayout& layou
     const std::vector<int> columns = layout.column_offsets(region.width);
     const size_t width = static_cast<size_t>(region.width);
     std::atomic<long> hits = 0;
-    in_parallel_bands(static_cast<size_t>(region.height), kMinHostBand / std::max<size_t>(width, 1),
-                      [&](size_t first_row, size_t last_row) {
-        long band_hits = 0;
-        for (size_t y = first_row; y < last_row; ++y) {
-            const size_t row = static_cast<size_t>(layout.row_offset(static_cast<int>(y)));
-            for (size_t x = 0; x < width; ++x) {
-                const size_t source = row + static_cast<size_t>(columns[x]);
-                const size_t pixel = y * width + x;
-                for (size_t c = 0; c < 3; ++c) {
-                    frame.linear[pixel * 3 + c] = planes[c * plane + source] * average;
+    in_parallel_bands(
+        static_cast<size_t>(region.height), kMinHostBand / std::max<size_t>(width, 1),
+        [&](size_t first_row, size_t last_row) {
+            long band_hits = 0;
+            for (size_t y = first_row; y < last_row; ++y) {
+                const size_t row = static_cast<size_t>(layout.row_offset(static_cast<int>(y)));
+                for (size_t x = 0; x < width; ++x) {
+                    const size_t source = row + static_cast<size_t>(columns[x]);
+                    const size_t pixel = y * width + x;
+                    for (size_t c = 0; c < 3; ++c) {
+                        frame.linear[pixel * 3 + c] = planes[c * plane + source] * average;
+                    }
+                    frame.depth[pixel] = planes[3 * plane + source];
+                    band_hits += frame.depth[pixel] >= 0.0f;
                 }
-                frame.depth[pixel] = planes[3 * plane + source];
-                band_hits += frame.depth[pixel] >= 0.0f;
             }
-        }
-        hits += band_hits;
-    });
+            hits += band_hits;
+        });
     frame.hits = hits;
 }
 
@@ -203,9 +206,9 @@ void warn_once(const std::string& message) {
 // The probes evaluate the DE: an inside-only scene has none (std::logic_error, saying `to_do`).
 void require_distance_estimator(const Scene& scene, const char* to_do) {
     if (scene.inside_only()) {
-        throw std::logic_error(fmt::format(
-            "scene '{}' has no distance estimator to {} (it defines only scene_inside)", scene.id,
-            to_do));
+        throw std::logic_error(
+            fmt::format("scene '{}' has no distance estimator to {} (it defines only scene_inside)",
+                        scene.id, to_do));
     }
 }
 
@@ -245,9 +248,12 @@ Image16 linear_image16(const Frame& frame, float exposure) {
 
 float tone_map(float linear, ToneMap op) {
     switch (op) {
-        case ToneMap::Clamp: return clamp_curve(linear);
-        case ToneMap::Reinhard: return reinhard_curve(linear);
-        case ToneMap::Aces: return aces_curve(linear);
+        case ToneMap::Clamp:
+            return clamp_curve(linear);
+        case ToneMap::Reinhard:
+            return reinhard_curve(linear);
+        case ToneMap::Aces:
+            return aces_curve(linear);
     }
     return 0.0f;
 }
@@ -266,9 +272,15 @@ void fill_display_image(const Scene& scene, const std::vector<float>& params,
     }
     const float exposure = param_value(scene, params, "exposure") * scale;
     switch (static_cast<ToneMap>(param_value(scene, params, "tone_map"))) {
-        case ToneMap::Clamp: encode_display(linear, exposure, clamp_curve, image.rgb); break;
-        case ToneMap::Reinhard: encode_display(linear, exposure, reinhard_curve, image.rgb); break;
-        case ToneMap::Aces: encode_display(linear, exposure, aces_curve, image.rgb); break;
+        case ToneMap::Clamp:
+            encode_display(linear, exposure, clamp_curve, image.rgb);
+            break;
+        case ToneMap::Reinhard:
+            encode_display(linear, exposure, reinhard_curve, image.rgb);
+            break;
+        case ToneMap::Aces:
+            encode_display(linear, exposure, aces_curve, image.rgb);
+            break;
     }
 }
 
@@ -363,8 +375,8 @@ Frame Renderer::render(const FrameRequest& request) {
     const int plane_count = kCommonPlanes + mode_->extra_planes(switches_);
     cl::Buffer planes(device_.context, CL_MEM_READ_WRITE, sizeof(float) * plane_count * plane);
     const int tiles = layout.tiles_x * layout.tiles_y;
-    const CameraFrame camera = camera_frame(request.view, request.projection, request.width,
-                                            request.height, region);
+    const CameraFrame camera =
+        camera_frame(request.view, request.projection, request.width, request.height, region);
     const int group = work_group_size(device_);
     const cl::Buffer starts = prepass_->starts(request, camera, params, group);
     int has_hints = 0;
@@ -477,8 +489,8 @@ std::vector<float> Renderer::probe_de(std::span<const glm::dvec3> points,
     require_distance_estimator(scene_, "probe");
     if (points.empty()) return {};
     int plane = 0;
-    std::vector<float> distances =
-        run_probe(probe_kernel_, points, params, 1, [](cl::Kernel&) {}, &plane);
+    std::vector<float> distances = run_probe(
+        probe_kernel_, points, params, 1, [](cl::Kernel&) {}, &plane);
     distances.resize(points.size());
     return distances;
 }

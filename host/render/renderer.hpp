@@ -3,19 +3,18 @@
 // program once, then renders frames whose camera and parameters change freely without a rebuild.
 
 #include <functional>
+#include <glm/vec3.hpp>
 #include <memory>
 #include <optional>
 #include <span>
 #include <vector>
 
-#include <glm/vec3.hpp>
-
-#include "image/image_io.hpp"
+#include "camera/projection.hpp"
 #include "device/kernel_assembly.hpp"
-#include "render/path_settings.hpp"
 #include "device/opencl_device.hpp"
 #include "device/program_cache.hpp"
-#include "camera/projection.hpp"
+#include "image/image_io.hpp"
+#include "render/path_settings.hpp"
 #include "scene/scene.hpp"
 
 namespace fgr {
@@ -55,8 +54,8 @@ struct FrameRequest {
     int first_sample = 0;
     // Called after each finished sample with (samples done, samples in all), when set.
     std::function<void(int, int)> on_sample{};
-    // Polled between bands of tiles, when set: returning true abandons the frame (Frame::cancelled),
-    // so an interactive caller never waits for a slow frame it no longer wants.
+    // Polled between bands of tiles, when set: returning true abandons the frame
+    // (Frame::cancelled), so an interactive caller never waits for a slow frame it no longer wants.
     std::function<bool()> cancel{};
     // Render mode "path" only: bounces, strategies and the environment.
     PathSettings path{};
@@ -71,8 +70,8 @@ struct FrameRequest {
     PixelRegion region{};
     PrepassSettings prepass{};
     // Per pixel of the region, row-major: how far each camera ray may start, reprojected from an
-    // earlier frame (render/prepass/reprojection.hpp; 0: no hint), taken where the prepass applies and the
-    // DE at the hinted point is clear of the surface. Empty: none.
+    // earlier frame (render/prepass/reprojection.hpp; 0: no hint), taken where the prepass applies
+    // and the DE at the hinted point is clear of the surface. Empty: none.
     std::vector<float> start_hints{};
 };
 
@@ -93,7 +92,7 @@ struct MarchStats {
     // The same for the secondary rays (shadow, reflection, refraction) of DE scenes: their lane
     // steps are secondary_de_evaluations.
     long secondary_packet_steps = 0;
-    long out_of_steps = 0;    // rays that used max_steps without hitting or leaving the scene
+    long out_of_steps = 0;  // rays that used max_steps without hitting or leaving the scene
     // Shaded mode: DE evaluations of shadow, reflection and refraction rays, summed over the
     // lanes that took part, and the part of them spent for pixels whose camera ray missed
     // (none: secondary rays start only from hits).
@@ -103,7 +102,9 @@ struct MarchStats {
     // overflowed (kIfsHeapCapacity) and were traced depth first instead.
     int heap_peak = 0;
     long heap_overflows = 0;
-    double out_of_steps_percent() const { return pixels ? 100.0 * double(out_of_steps) / double(pixels) : 0.0; }
+    double out_of_steps_percent() const {
+        return pixels ? 100.0 * double(out_of_steps) / double(pixels) : 0.0;
+    }
 };
 
 // How busy the lanes of a packet are (path mode with stats): the DE evaluations lanes took part
@@ -128,16 +129,16 @@ struct IfsLevels {
 };
 
 struct Frame {
-    Image8 image;               // sRGB, gamma-encoded; the region's size when one was asked for
-    std::vector<float> linear;  // row-major linear RGB, averaged over samples, before exposure
-    std::vector<float> depth;   // row-major distance along the ray; -1 where the ray missed
-                                // (written by sample 0 only: all -1 when first_sample > 0)
-    long hits = 0;              // pixels whose ray met the surface
-    double render_ms = 0.0;     // kernel, read-back and encoding; no build, no file output
-    bool cancelled = false;     // FrameRequest::cancel stopped it: no pixels
+    Image8 image;                   // sRGB, gamma-encoded; the region's size when one was asked for
+    std::vector<float> linear;      // row-major linear RGB, averaged over samples, before exposure
+    std::vector<float> depth;       // row-major distance along the ray; -1 where the ray missed
+                                    // (written by sample 0 only: all -1 when first_sample > 0)
+    long hits = 0;                  // pixels whose ray met the surface
+    double render_ms = 0.0;         // kernel, read-back and encoding; no build, no file output
+    bool cancelled = false;         // FrameRequest::cancel stopped it: no pixels
     bool double_precision = false;  // rendered with double lanes (KernelSwitches)
     std::optional<MarchStats> stats;  // when the renderer was built with stats
-    int samples = 0;            // per pixel in this frame (fewer than asked when `enough` said so)
+    int samples = 0;  // per pixel in this frame (fewer than asked when `enough` said so)
     // The first hit's albedo and shading normal (row-major RGB / XYZ), coverage (the fraction of
     // the samples whose camera ray met the surface) and the foreground (linear RGB of those
     // samples alone, summed and divided by all samples: the colour without the background,
@@ -225,7 +226,7 @@ private:
     cl::Kernel render_kernel_;
     cl::Kernel probe_kernel_;
     cl::Kernel normal_kernel_;
-    std::unique_ptr<ModeKernel> mode_;  // the render mode's own arguments and planes
+    std::unique_ptr<ModeKernel> mode_;      // the render mode's own arguments and planes
     std::unique_ptr<ConePrepass> prepass_;  // where camera rays start
 };
 

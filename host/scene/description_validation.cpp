@@ -1,11 +1,15 @@
 #include "scene/description_validation.hpp"
 
+#include <spdlog/fmt/fmt.h>
+
 #include <algorithm>
 #include <cmath>
 #include <cstddef>
 #include <cstring>
 #include <exception>
 #include <filesystem>
+#include <glm/geometric.hpp>
+#include <glm/vec3.hpp>
 #include <numbers>
 #include <optional>
 #include <set>
@@ -13,15 +17,11 @@
 #include <string_view>
 #include <utility>
 
-#include <glm/geometric.hpp>
-#include <glm/vec3.hpp>
-#include <spdlog/fmt/fmt.h>
-
+#include "camera/view_validation.hpp"
+#include "scene/effects.hpp"
 #include "scene/ifs/ifs.hpp"
 #include "scene/kernel_api.hpp"
-#include "scene/effects.hpp"
 #include "scene/render_mode.hpp"
-#include "camera/view_validation.hpp"
 
 namespace fgr {
 namespace {
@@ -54,8 +54,7 @@ constexpr std::size_t kV1_2LightSize =
 // ABI 1.3 appended IFS maps to the scene description; fgr_ifs_map came with it.
 constexpr std::size_t kV1_3SceneDescSize =
     offsetof(fgr_scene_desc, ifs_max_depth) + sizeof(fgr_scene_desc::ifs_max_depth);
-constexpr std::size_t kV1_3IfsMapSize =
-    offsetof(fgr_ifs_map, colour) + sizeof(fgr_ifs_map::colour);
+constexpr std::size_t kV1_3IfsMapSize = offsetof(fgr_ifs_map, colour) + sizeof(fgr_ifs_map::colour);
 // ABI 1.4 appended built-in defaults, colour modes and the length scale to the scene description;
 // fgr_builtin_default came with it.
 constexpr std::size_t kV1_4SceneDescSize =
@@ -438,9 +437,10 @@ std::vector<Light> copy_lights(const fgr_scene_desc& desc) {
     // (FGR_SCENE over an empty list, or a list forgotten), is refused saying what is missing.
     if (desc.light_count == 0) fail("light count is 0: a scene needs at least one light");
     if (desc.lights == nullptr) {
-        fail("light count is {} but the array is NULL: a scene needs at least one light (point "
-             "`lights` at an array of them)",
-             desc.light_count);
+        fail(
+            "light count is {} but the array is NULL: a scene needs at least one light (point "
+            "`lights` at an array of them)",
+            desc.light_count);
     }
     check_count(desc.light_count, 1, kMaxLights, "light");
     const StructArray<fgr_light> array(desc.lights, desc.light_count, kV1LightSize, "light");
@@ -591,8 +591,10 @@ void copy_builtin_defaults(const fgr_scene_desc& desc, Scene& scene) {
         const std::string id =
             bounded_string(array[i].id, kMaxIdLength, fmt::format("built-in default {} id", i));
         if (is_march_builtin_id(id)) {
-            fail("built-in parameter '{}': its default comes from the march settings, not "
-                 "builtin_defaults", id);
+            fail(
+                "built-in parameter '{}': its default comes from the march settings, not "
+                "builtin_defaults",
+                id);
         }
         ParamInfo& param = builtin_named(scene, id, i);
         if (!seen.insert(id).second) fail("built-in parameter '{}': default given twice", id);
@@ -611,8 +613,10 @@ void copy_colour_modes(const fgr_scene_desc& desc, Scene& scene) {
         return !p.builtin && p.id == "colour_mode";
     });
     if (param == scene.params.end() || param->choices.empty()) {
-        fail("colour_modes {:#x} given, but the scene has no colour_mode enum parameter "
-             "(FGR_COLOUR_PARAMS)", modes);
+        fail(
+            "colour_modes {:#x} given, but the scene has no colour_mode enum parameter "
+            "(FGR_COLOUR_PARAMS)",
+            modes);
     }
     if ((modes >> param->choices.size()) != 0) {
         fail("colour_modes {:#x}: parameter 'colour_mode' has only {} choices", modes,
@@ -666,14 +670,16 @@ IfsMap copy_ifs_map(const fgr_ifs_map& given) {
 // not used (IFS scenes are traced, not marched); effects are those exact tracing supports.
 Scene copy_ifs_checked(const fgr_scene_desc& desc, Scene named) {
     if (desc.source != nullptr && !copy_source(desc).empty()) {
-        fail("IFS maps and a source: a scene with ifs_map_count {} is an IFS scene, whose source "
-             "must be NULL or empty",
-             desc.ifs_map_count);
+        fail(
+            "IFS maps and a source: a scene with ifs_map_count {} is an IFS scene, whose source "
+            "must be NULL or empty",
+            desc.ifs_map_count);
     }
     if (desc.param_count != 0) {
-        fail("IFS scenes have no parameters of their own (param_count {}): they get ifs_depth and "
-             "the built-in ones",
-             desc.param_count);
+        fail(
+            "IFS scenes have no parameters of their own (param_count {}): they get ifs_depth and "
+            "the built-in ones",
+            desc.param_count);
     }
     IfsScene ifs;
     ifs.id = named.id;
@@ -700,9 +706,10 @@ Scene copy_ifs_checked(const fgr_scene_desc& desc, Scene named) {
     ifs.lights = copy_lights(desc);
     const uint64_t effects = copy_effects(desc.effects);
     if (const uint64_t unsupported = effects & ~kIfsEffects) {
-        fail("IFS scenes cannot have {}: exact IFS tracing has no distance estimate (they can "
-             "have {})",
-             effect_names(unsupported), effect_names(kIfsEffects));
+        fail(
+            "IFS scenes cannot have {}: exact IFS tracing has no distance estimate (they can "
+            "have {})",
+            effect_names(unsupported), effect_names(kIfsEffects));
     }
     (void)copy_march(desc.march);
     const RenderMode mode = copy_default_mode(desc);
@@ -743,8 +750,9 @@ Scene copy_checked(const fgr_scene_desc& desc, std::string& declared_id) {
     if (scene.inside_only()) {
         // An inside test alone renders only by brute force, whatever the description asks.
         if (scene.default_mode == RenderMode::Path) {
-            fail("default_mode 'path' needs a distance estimator: this source defines "
-                 "FGR_SCENE_INSIDE_ONLY (use \"brute\" or NULL)");
+            fail(
+                "default_mode 'path' needs a distance estimator: this source defines "
+                "FGR_SCENE_INSIDE_ONLY (use \"brute\" or NULL)");
         }
         scene.default_mode = RenderMode::Brute;
     }

@@ -1,5 +1,7 @@
 #include "scene/discovery.hpp"
 
+#include <spdlog/spdlog.h>
+
 #include <algorithm>
 #include <cstdlib>
 #include <map>
@@ -7,8 +9,6 @@
 #include <set>
 #include <string_view>
 #include <system_error>
-
-#include <spdlog/spdlog.h>
 
 #include "scene/scene_file.hpp"
 #include "scene/scene_index.hpp"
@@ -74,10 +74,10 @@ private:
 };
 
 void warn_skipped(const SkippedPlugin& skipped) {
-    spdlog::warn("skipping plugin {}: {}{}", skipped.file.string(),
-                 skipped.declared_id.empty() ? ""
-                                             : fmt::format("scene '{}': ", skipped.declared_id),
-                 skipped.reason);
+    spdlog::warn(
+        "skipping plugin {}: {}{}", skipped.file.string(),
+        skipped.declared_id.empty() ? "" : fmt::format("scene '{}': ", skipped.declared_id),
+        skipped.reason);
 }
 
 class SceneCollector {
@@ -200,8 +200,8 @@ std::string unknown_scene_message(const Discovery& found, std::string_view id) {
         constexpr std::size_t kShown = 3;
         message += "; refused:";
         for (std::size_t i = 0; i < std::min(found.skipped.size(), kShown); ++i) {
-            message += fmt::format("{} {} ({})", i == 0 ? "" : ",",
-                                   found.skipped[i].file.string(), found.skipped[i].reason);
+            message += fmt::format("{} {} ({})", i == 0 ? "" : ",", found.skipped[i].file.string(),
+                                   found.skipped[i].reason);
         }
         if (found.skipped.size() > kShown) {
             message += fmt::format(" and {} more", found.skipped.size() - kShown);

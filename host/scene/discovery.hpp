@@ -29,9 +29,9 @@ struct Discovery {
     std::vector<SkippedPlugin> skipped;
 };
 
-// Loads every *.so plugin and *.ifs.json IFS file (scene/ifs/ifs.hpp) in each directory, sorted together
-// by name within a directory; missing directories are ignored. Each skipped file gets one warning
-// log line naming the file and the reason.
+// Loads every *.so plugin and *.ifs.json IFS file (scene/ifs/ifs.hpp) in each directory, sorted
+// together by name within a directory; missing directories are ignored. Each skipped file gets one
+// warning log line naming the file and the reason.
 Discovery discover_scenes(const std::vector<std::filesystem::path>& directories);
 
 // Scene `id` alone, as discover_scenes(directories) would find it (the first file in search

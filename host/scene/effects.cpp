@@ -1,11 +1,11 @@
 #include "scene/effects.hpp"
 
+#include <fmt/format.h>
+
 #include <algorithm>
 #include <array>
 #include <stdexcept>
 #include <string>
-
-#include <fmt/format.h>
 
 #include "scene/scene.hpp"
 
@@ -38,9 +38,7 @@ std::string effect_names(uint64_t effects) {
     return names.empty() ? "none" : names;
 }
 
-uint64_t supported_effects(const Scene& scene) {
-    return scene.ifs ? kIfsEffects : ~uint64_t{0};
-}
+uint64_t supported_effects(const Scene& scene) { return scene.ifs ? kIfsEffects : ~uint64_t{0}; }
 
 uint64_t apply_effect_changes(uint64_t effects, std::string_view changes) {
     size_t start = 0;
@@ -55,11 +53,12 @@ uint64_t apply_effect_changes(uint64_t effects, std::string_view changes) {
         }
         const bool remove = item.front() == '-';
         if (item.front() == '-' || item.front() == '+') item.remove_prefix(1);
-        const auto known = std::find_if(kEffectSwitches.begin(), kEffectSwitches.end(),
-                                         [&](const EffectSwitch& effect) { return item == effect.name; });
+        const auto known =
+            std::find_if(kEffectSwitches.begin(), kEffectSwitches.end(),
+                         [&](const EffectSwitch& effect) { return item == effect.name; });
         if (known == kEffectSwitches.end()) {
-            throw std::invalid_argument(fmt::format("unknown effect '{}' (known: {})", item,
-                                                    effect_names(~uint64_t{0})));
+            throw std::invalid_argument(
+                fmt::format("unknown effect '{}' (known: {})", item, effect_names(~uint64_t{0})));
         }
         effects = remove ? (effects & ~known->bit) : (effects | known->bit);
     }

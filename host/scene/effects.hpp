@@ -36,9 +36,8 @@ constexpr uint64_t kIfsEffects =
 // The effects the brute-force mode renders (in screen space, or with its inside test); it ignores
 // the others, which need a distance estimate or a traced ray.
 constexpr uint64_t kBruteModeEffects = FGR_EFFECT_SHADOWS | FGR_EFFECT_SOFT_SHADOWS |
-                                       FGR_EFFECT_AMBIENT_OCCLUSION |
-                                       FGR_EFFECT_SAMPLED_OCCLUSION | FGR_EFFECT_GLOW |
-                                       FGR_EFFECT_FOG;
+                                       FGR_EFFECT_AMBIENT_OCCLUSION | FGR_EFFECT_SAMPLED_OCCLUSION |
+                                       FGR_EFFECT_GLOW | FGR_EFFECT_FOG;
 
 // The effects `scene` can be built with: all for DE scenes, kIfsEffects for IFS scenes.
 uint64_t supported_effects(const Scene& scene);
@@ -48,8 +47,8 @@ uint64_t supported_effects(const Scene& scene);
 void check_supported_effects(const Scene& scene, uint64_t effects);
 
 // Applies a comma-separated list of changes to `effects`: "+name" or "name" adds an effect,
-// "-name" removes it, "none" removes all, e.g. "+shadows,-ambient_occlusion" or "none,+fog". Throws std::invalid_argument naming an
-// unknown effect and listing the known ones.
+// "-name" removes it, "none" removes all, e.g. "+shadows,-ambient_occlusion" or "none,+fog". Throws
+// std::invalid_argument naming an unknown effect and listing the known ones.
 uint64_t apply_effect_changes(uint64_t effects, std::string_view changes);
 
 }  // namespace fgr

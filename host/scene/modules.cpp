@@ -1,11 +1,10 @@
 #include "scene/modules.hpp"
 
 #include <dlfcn.h>
-
-#include <stdexcept>
-
 #include <fmt/format.h>
 #include <spdlog/spdlog.h>
+
+#include <stdexcept>
 
 #include "scene/discovery.hpp"
 
@@ -23,9 +22,8 @@ void* module_entry(const std::string& file_name, const std::string& entry,
     void* module = dlopen(path.c_str(), RTLD_NOW | RTLD_LOCAL);
     if (!module) {
         const char* why = dlerror();
-        throw std::runtime_error(
-            fmt::format("{} needs fgr's module {}: {}", needed_for, file_name,
-                        why ? why : "cannot load it"));
+        throw std::runtime_error(fmt::format("{} needs fgr's module {}: {}", needed_for, file_name,
+                                             why ? why : "cannot load it"));
     }
     void* address = dlsym(module, entry.c_str());
     if (!address) {

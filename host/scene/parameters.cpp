@@ -1,10 +1,11 @@
 #include "scene/parameters.hpp"
 
+#include <fmt/format.h>
+
 #include <algorithm>
 #include <cctype>
 #include <charconv>
 #include <cmath>
-#include <fmt/format.h>
 
 namespace fgr {
 namespace {
@@ -46,13 +47,15 @@ float parse_int(const ParamInfo& param, std::string_view text) {
     for (size_t i = 0; i < param.choices.size(); ++i) {
         if (param.choices[i] == trim(text)) return param.min_value + static_cast<float>(i);
     }
-    if (!param.choices.empty() && !text.empty() && std::isalpha(static_cast<unsigned char>(trim(text).front()))) {
+    if (!param.choices.empty() && !text.empty() &&
+        std::isalpha(static_cast<unsigned char>(trim(text).front()))) {
         throw UsageError(fmt::format("parameter '{}' takes {} or a number, not '{}'", param.id,
                                      joined_choices(param), trim(text)));
     }
     const float value = parse_number(param, text);
     if (value != std::floor(value)) {
-        throw UsageError(fmt::format("parameter '{}' takes whole numbers, not {}", param.id, value));
+        throw UsageError(
+            fmt::format("parameter '{}' takes whole numbers, not {}", param.id, value));
     }
     return value;
 }
@@ -67,7 +70,8 @@ float parse_bool(const ParamInfo& param, std::string_view text) {
 std::vector<std::string_view> split_components(std::string_view text) {
     std::vector<std::string_view> parts;
     size_t start = 0;
-    for (size_t comma; (comma = text.find(',', start)) != std::string_view::npos; start = comma + 1) {
+    for (size_t comma; (comma = text.find(',', start)) != std::string_view::npos;
+         start = comma + 1) {
         parts.push_back(text.substr(start, comma - start));
     }
     parts.push_back(text.substr(start));
@@ -121,13 +125,17 @@ void set_param_from_text(const Scene& scene, std::vector<float>& values,
         if (param.id != id) continue;
         float* slot = values.data() + offsets[i];
         switch (param.type) {
-            case ParamType::Float: slot[0] = parse_number(param, text); break;
+            case ParamType::Float:
+                slot[0] = parse_number(param, text);
+                break;
             case ParamType::Int:
                 slot[0] = parse_int(param, text);
                 check_range(param, slot[0]);
                 check_offered(scene, param, slot[0]);
                 break;
-            case ParamType::Bool: slot[0] = parse_bool(param, text); break;
+            case ParamType::Bool:
+                slot[0] = parse_bool(param, text);
+                break;
             case ParamType::Vec3:
             case ParamType::Colour: {
                 const auto parts = split_components(text);
@@ -141,7 +149,8 @@ void set_param_from_text(const Scene& scene, std::vector<float>& values,
         for (int c = 0; c < param_components(param.type); ++c) check_range(param, slot[c]);
         return;
     }
-    throw UsageError(fmt::format("scene '{}' has no parameter '{}' (see `fgr list`)", scene.id, id));
+    throw UsageError(
+        fmt::format("scene '{}' has no parameter '{}' (see `fgr list`)", scene.id, id));
 }
 
 float param_value(const Scene& scene, const std::vector<float>& values, std::string_view id) {
@@ -161,8 +170,8 @@ std::vector<float> carry_param_values(const Scene& from, const std::vector<float
         const ParamInfo& param = to.params[i];
         const ParamInfo* old = from.find_param(param.id);
         if (old == nullptr || old->type != param.type) continue;
-        const auto old_offset = static_cast<size_t>(
-            from_offsets[static_cast<size_t>(old - from.params.data())]);
+        const auto old_offset =
+            static_cast<size_t>(from_offsets[static_cast<size_t>(old - from.params.data())]);
         const int components = param_components(param.type);
         bool edited = false;
         for (int c = 0; c < components; ++c) {

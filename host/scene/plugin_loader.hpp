@@ -4,8 +4,8 @@
 
 #include <filesystem>
 
-#include "scene/description_validation.hpp"
 #include "fgr/plugin.h"
+#include "scene/description_validation.hpp"
 
 namespace fgr {
 

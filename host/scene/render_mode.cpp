@@ -1,9 +1,9 @@
 #include "scene/render_mode.hpp"
 
+#include <fmt/format.h>
+
 #include <array>
 #include <stdexcept>
-
-#include <fmt/format.h>
 
 namespace fgr {
 

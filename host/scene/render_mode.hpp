@@ -1,9 +1,9 @@
 #pragma once
 // Render modes: how a frame's pixels are computed from the scene. Each mode is one kernel file
 // (kernels/fgr_mode_<name>.cl, entry point fgr_render) and one host module
-// (host/render/modes/<name>_mode.cpp) that sets the kernel's own arguments and reads back its planes;
-// host/render/modes/mode_registry.cpp lists them. A new mode adds an enumerator here, a row there, its
-// kernel file and its module, and touches no other mode.
+// (host/render/modes/<name>_mode.cpp) that sets the kernel's own arguments and reads back its
+// planes; host/render/modes/mode_registry.cpp lists them. A new mode adds an enumerator here, a row
+// there, its kernel file and its module, and touches no other mode.
 
 #include <span>
 #include <string>

@@ -1,12 +1,12 @@
 #include "scene/scene.hpp"
 
+#include <fmt/format.h>
+
 #include <algorithm>
+#include <glm/geometric.hpp>
 #include <regex>
 #include <stdexcept>
 #include <string_view>
-
-#include <fmt/format.h>
-#include <glm/geometric.hpp>
 
 #include "scene/kernel_api.hpp"
 
@@ -70,11 +70,12 @@ ParamInfo builtin_param(std::string id, std::string label, ParamType type, float
 
 ParamInfo effect_param(std::string id, std::string label, ParamType type, float min_value,
                        float max_value, float default_value, std::string description) {
-    return builtin_param(std::move(id), std::move(label), type, min_value, max_value,
-                         default_value, std::move(description), "Effects");
+    return builtin_param(std::move(id), std::move(label), type, min_value, max_value, default_value,
+                         std::move(description), "Effects");
 }
 
-ParamInfo colour_param(std::string id, std::string label, glm::vec3 value, std::string description) {
+ParamInfo colour_param(std::string id, std::string label, glm::vec3 value,
+                       std::string description) {
     ParamInfo param = effect_param(std::move(id), std::move(label), ParamType::Colour, 0.0f, 1.0f,
                                    0.0f, std::move(description));
     param.default_value = {value.r, value.g, value.b};
@@ -89,7 +90,7 @@ struct ScaledBuiltin {
     bool per_length;  // a rate per unit length (fog_density, absorption): divided by the scale
 };
 constexpr ScaledBuiltin kScaledBuiltins[] = {
-    {"ao_radius", false}, {"glow_radius", false}, {"aperture", false},
+    {"ao_radius", false},  {"glow_radius", false}, {"aperture", false},
     {"fog_density", true}, {"absorption", true},
 };
 
@@ -113,8 +114,9 @@ void add_effect_params(Scene& scene) {
     params.push_back(std::move(tone_map));
     params.push_back(effect_param("shadow_sharpness", "Shadow sharpness", ParamType::Float, 1.0f,
                                   128.0f, 12.0f, "soft shadows: higher is a narrower penumbra"));
-    params.push_back(effect_param("ao_radius", "Occlusion radius", ParamType::Float, 1e-9f,
-                                  100.0f, 0.1f, "sampled occlusion: how far along the normal it probes; brute "
+    params.push_back(effect_param("ao_radius", "Occlusion radius", ParamType::Float, 1e-9f, 100.0f,
+                                  0.1f,
+                                  "sampled occlusion: how far along the normal it probes; brute "
                                   "mode: the screen-space occlusion's radius"));
     params.push_back(colour_param("glow_colour", "Glow colour", {0.45f, 0.65f, 1.0f},
                                   "colour rays that miss pick up near the surface"));
@@ -124,24 +126,25 @@ void add_effect_params(Scene& scene) {
                                   0.05f, "distance over which glow falls to 1/e"));
     params.push_back(colour_param("fog_colour", "Fog colour", {0.10f, 0.12f, 0.17f},
                                   "colour distant surfaces fade to"));
-    params.push_back(effect_param("fog_density", "Fog density", ParamType::Float, 0.0f, 1e9f,
-                                  0.15f, "fog: fraction of light lost per unit distance"));
+    params.push_back(effect_param("fog_density", "Fog density", ParamType::Float, 0.0f, 1e9f, 0.15f,
+                                  "fog: fraction of light lost per unit distance"));
     params.push_back(effect_param("reflection_bounces", "Reflection bounces", ParamType::Int, 1.0f,
                                   8.0f, 1.0f, "mirror bounces followed per ray"));
     params.push_back(effect_param("transmission", "Transmission", ParamType::Float, 0.0f, 1.0f,
-                                  0.6f, "refraction: light passing into surfaces (scenes may set "
-                                        "it per material)"));
-    params.push_back(effect_param("ior", "Index of refraction", ParamType::Float, 0.25f, 3.0f,
-                                  1.5f, "refraction: 1.33 water, 1.5 glass, 2.4 diamond; below 1 "
-                                        "the solid is the thinner medium (0.75: air in water)"));
+                                  0.6f,
+                                  "refraction: light passing into surfaces (scenes may set "
+                                  "it per material)"));
+    params.push_back(effect_param("ior", "Index of refraction", ParamType::Float, 0.25f, 3.0f, 1.5f,
+                                  "refraction: 1.33 water, 1.5 glass, 2.4 diamond; below 1 "
+                                  "the solid is the thinner medium (0.75: air in water)"));
     // Lengths (and per-length rates) reach down (and up) to deep-zoom scales: a scene a
     // thousandth the size needs a thousandth the radius and a thousand times the density.
     params.push_back(effect_param("absorption", "Absorption", ParamType::Float, 0.0f, 1e9f, 1.0f,
                                   "refraction: light absorbed per unit length inside, tinted"));
     params.push_back(effect_param("aperture", "Aperture", ParamType::Float, 0.0f, 10.0f, 0.05f,
                                   "depth of field: lens radius"));
-    params.push_back(effect_param("focus_distance", "Focus distance", ParamType::Float, 1e-9f,
-                                  1e5f, default_focus_distance(scene),
+    params.push_back(effect_param("focus_distance", "Focus distance", ParamType::Float, 1e-9f, 1e5f,
+                                  default_focus_distance(scene),
                                   "depth of field: distance of the sharp plane"));
 }
 
@@ -190,8 +193,8 @@ int declared_kernel_api(std::string_view source) {
     if (!std::regex_search(code, match, directive)) return 1;
     const std::string value = match[1].str();
     const bool is_number = value.size() <= 3 && std::all_of(value.begin(), value.end(), [](char c) {
-        return c >= '0' && c <= '9';
-    });
+                               return c >= '0' && c <= '9';
+                           });
     const int version = is_number ? std::stoi(value) : 0;
     if (version < 1 || version > kKernelApiLatest) {
         throw std::invalid_argument(fmt::format(
@@ -206,20 +209,19 @@ namespace {
 // The knobs of the brute-force mode (kernels/fgr_mode_brute.cl); other modes never read them.
 void add_brute_force_params(Scene& scene) {
     const std::string group = "Brute force";
-    scene.params.push_back(builtin_param("brute_samples", "Samples per pass", ParamType::Int,
-                                         1.0f, 1024.0f, 24.0f,
+    scene.params.push_back(builtin_param("brute_samples", "Samples per pass", ParamType::Int, 1.0f,
+                                         1024.0f, 24.0f,
                                          "brute force: inside tests along each ray per pass, "
                                          "stratified between near and the best hit so far",
                                          group));
-    scene.params.push_back(builtin_param("brute_bisection", "Bisection steps", ParamType::Int,
-                                         0.0f, 40.0f, 24.0f,
+    scene.params.push_back(builtin_param("brute_bisection", "Bisection steps", ParamType::Int, 0.0f,
+                                         40.0f, 24.0f,
                                          "brute force: steps refining each new hit, each halving "
                                          "its depth's uncertainty",
                                          group));
-    scene.params.push_back(builtin_param("brute_near", "Near distance", ParamType::Float, 0.0f,
-                                         1e6f, 0.0f,
-                                         "brute force: sampling starts this far from the camera",
-                                         group));
+    scene.params.push_back(
+        builtin_param("brute_near", "Near distance", ParamType::Float, 0.0f, 1e6f, 0.0f,
+                      "brute force: sampling starts this far from the camera", group));
     ParamInfo solid = builtin_param("brute_solid", "Solid", ParamType::Int, 0.0f, 2.0f, 0.0f,
                                     "brute force: what rays hit: auto (the state they do not "
                                     "start in), the set, or its complement (interior renderings)",
@@ -271,8 +273,8 @@ bool is_builtin_param_id(std::string_view id) {
 }
 
 bool is_march_builtin_id(std::string_view id) {
-    for (const std::string_view march : {"max_steps", "max_distance", "hit_threshold", "iterations",
-                                         "step_factor"}) {
+    for (const std::string_view march :
+         {"max_steps", "max_distance", "hit_threshold", "iterations", "step_factor"}) {
         if (id == march) return true;
     }
     return false;
@@ -284,8 +286,9 @@ void set_scene_scale(Scene& scene, float scale) {
     add_effect_params(unit);
     for (const ScaledBuiltin& scaled : kScaledBuiltins) {
         const ParamInfo* unit_param = unit.find_param(std::string(scaled.id));
-        auto param = std::find_if(scene.params.begin(), scene.params.end(),
-                                  [&](const ParamInfo& p) { return p.builtin && p.id == scaled.id; });
+        auto param =
+            std::find_if(scene.params.begin(), scene.params.end(),
+                         [&](const ParamInfo& p) { return p.builtin && p.id == scaled.id; });
         if (unit_param == nullptr || param == scene.params.end()) continue;
         const float unit_default = unit_param->default_value[0];
         const float value = scaled.per_length ? unit_default / scale : unit_default * scale;

@@ -5,12 +5,11 @@
 #include <array>
 #include <cstdint>
 #include <filesystem>
+#include <glm/vec3.hpp>
 #include <memory>
 #include <string>
 #include <string_view>
 #include <vector>
-
-#include <glm/vec3.hpp>
 
 #include "camera/view.hpp"
 #include "scene/render_mode.hpp"
@@ -23,16 +22,16 @@ enum class ParamType { Float, Int, Bool, Vec3, Colour };
 
 struct ParamInfo {
     std::string id;
-    std::string label{};        // optional: the loader falls back to the id
-    std::string group{};        // optional: the loader falls back to "Scene"
+    std::string label{};  // optional: the loader falls back to the id
+    std::string group{};  // optional: the loader falls back to "Scene"
     std::string description{};
     ParamType type = ParamType::Float;
     float min_value = 0.0f;
     float max_value = 1.0f;
     std::array<float, 3> default_value{};
     std::vector<std::string> choices{};  // Int only: names of min..max, empty when not an enum
-    bool builtin = false;              // a quality knob the host adds to every scene
-    bool scene_default = false;        // builtin whose default the scene gave (ABI 1.4)
+    bool builtin = false;                // a quality knob the host adds to every scene
+    bool scene_default = false;          // builtin whose default the scene gave (ABI 1.4)
     // Enums only: which choices the scene offers (ABI 1.4 colour_modes), empty when all are. A
     // value not offered is refused and not listed, but keeps its number (the kernel's).
     std::vector<bool> offered{};
@@ -78,7 +77,7 @@ struct Scene {
     std::string source;       // OpenCL C source of the DE or inside test (and optional colour)
     std::string source_name;  // file name shown in compiler messages
     std::filesystem::path plugin_file;
-    std::vector<ParamInfo> params;  // the scene's own, then the built-in quality knobs
+    std::vector<ParamInfo> params;     // the scene's own, then the built-in quality knobs
     std::vector<NamedCamera> cameras;  // [0] is the default view
     std::vector<CameraPath> camera_paths;
     std::vector<Light> lights;
@@ -88,7 +87,8 @@ struct Scene {
     // The scene's length scale (ABI 1.4): the distance-like built-ins' defaults follow it (see
     // set_scene_scale). 1 unless the scene gives one.
     float scale = 1.0f;
-    // The maps of a scene read from an IFS file (scene/ifs/ifs.hpp); null for distance-estimated scenes.
+    // The maps of a scene read from an IFS file (scene/ifs/ifs.hpp); null for distance-estimated
+    // scenes.
     std::shared_ptr<const IfsScene> ifs;
 
     // Whether the source defines only an inside test (`#define FGR_SCENE_INSIDE_ONLY`, see

@@ -34,8 +34,8 @@ LoadResult load_data_scene(const std::filesystem::path& file, Load load) {
 }  // namespace
 
 LoadResult load_ifs_scene(const std::filesystem::path& file) {
-    return load_data_scene<IfsError>(
-        file, [&] { return ifs_scene_to_scene(read_ifs_file(file), file); });
+    return load_data_scene<IfsError>(file,
+                                     [&] { return ifs_scene_to_scene(read_ifs_file(file), file); });
 }
 
 LoadResult load_formula_scene(const std::filesystem::path& file) {

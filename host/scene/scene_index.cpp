@@ -1,14 +1,13 @@
 #include "scene/scene_index.hpp"
 
+#include <spdlog/spdlog.h>
 #include <sys/stat.h>
 
 #include <exception>
-
 #include <nlohmann/json.hpp>
-#include <spdlog/spdlog.h>
 
-#include "util/atomic_file.hpp"
 #include "scene/scene_json.hpp"
+#include "util/atomic_file.hpp"
 
 namespace fgr {
 namespace fs = std::filesystem;

@@ -38,7 +38,7 @@ public:
     // The id `file` held when indexed with this stamp; nothing when it is not indexed or has
     // changed since.
     std::optional<std::string> id_of(const std::filesystem::path& file,
-                                      const FileStamp& stamp) const;
+                                     const FileStamp& stamp) const;
     void record(const std::filesystem::path& file, const FileStamp& stamp, const std::string& id);
     void forget(const std::filesystem::path& file);
     // Forgets the files of `directory` that are not in `present` (files since removed).

@@ -1,20 +1,20 @@
 #include "scene/scene_json.hpp"
 
+#include <fmt/format.h>
+
 #include <algorithm>
 #include <array>
 #include <cmath>
 #include <fstream>
+#include <glm/geometric.hpp>
+#include <glm/trigonometric.hpp>
 #include <numbers>
 #include <set>
 #include <stdexcept>
 
-#include <fmt/format.h>
-#include <glm/geometric.hpp>
-#include <glm/trigonometric.hpp>
-
+#include "camera/view_json.hpp"
 #include "scene/description_validation.hpp"
 #include "scene/scene_limits.hpp"
-#include "camera/view_json.hpp"
 #include "util/json_fields.hpp"
 
 namespace fgr::scene_json {
@@ -105,8 +105,8 @@ Header header_from(const json& document) {
 // `fgr list` and the one-line messages that quote them).
 std::string text_from(const json& object, const char* key, const std::string& where,
                       bool required) {
-    const std::string what = where.empty() ? fmt::format("\"{}\"", key)
-                                           : fmt::format("{} \"{}\"", where, key);
+    const std::string what =
+        where.empty() ? fmt::format("\"{}\"", key) : fmt::format("{} \"{}\"", where, key);
     if (!object.contains(key)) {
         if (required) fail("{} is missing", what);
         return {};
@@ -160,11 +160,10 @@ std::vector<Keyframe> keyframes_from(const json& path, const std::string& where)
         if (!entry.contains("time")) fail("{} \"time\" is missing", keyframe_where);
         Keyframe keyframe;
         // Times are floats in a Scene: read as the plugins' are, then compared as stored.
-        keyframe.time = static_cast<float>(
-            finite_double(entry.at("time"), keyframe_where + " \"time\"", 1e30));
+        keyframe.time =
+            static_cast<float>(finite_double(entry.at("time"), keyframe_where + " \"time\"", 1e30));
         if (!keyframes.empty() && !(keyframe.time > keyframes.back().time)) {
-            fail("{}: time {} not after {}", keyframe_where, keyframe.time,
-                 keyframes.back().time);
+            fail("{}: time {} not after {}", keyframe_where, keyframe.time, keyframes.back().time);
         }
         keyframe.view = json_fields::view_from(entry, keyframe_where);
         keyframes.push_back(keyframe);
@@ -213,7 +212,8 @@ Light light_from(const json& entry, std::size_t index) {
         light.colour = glm::vec3(colour);
     }
     if (entry.contains("intensity")) {
-        const double intensity = finite_double(entry.at("intensity"), where + " \"intensity\"", 1e6);
+        const double intensity =
+            finite_double(entry.at("intensity"), where + " \"intensity\"", 1e6);
         if (intensity < 0.0) fail("{}: negative intensity {}", where, intensity);
         light.intensity = static_cast<float>(intensity);
     }
@@ -244,8 +244,8 @@ std::vector<NamedCamera> cameras_from(const json& document) {
 std::vector<CameraPath> camera_paths_from(const json& document) {
     std::vector<CameraPath> paths;
     if (!document.contains("camera_paths")) return paths;
-    const json& array = array_from(document, "camera_paths", 0, kMaxCameraPaths,
-                                   "\"camera_paths\"");
+    const json& array =
+        array_from(document, "camera_paths", 0, kMaxCameraPaths, "\"camera_paths\"");
     std::set<std::string> names;
     for (std::size_t i = 0; i < array.size(); ++i) {
         const json& entry = array[i];

@@ -1,11 +1,11 @@
 #include "util/json_fields.hpp"
 
+#include <fmt/format.h>
+
 #include <algorithm>
 #include <cmath>
 #include <limits>
 #include <stdexcept>
-
-#include <fmt/format.h>
 
 namespace fgr::json_fields {
 namespace {
@@ -25,8 +25,7 @@ double finite_double(const json& value, const std::string& what, double limit) {
     return number;
 }
 
-glm::dvec3 dvec3_from(const json& object, const char* key, const std::string& where,
-                      double limit) {
+glm::dvec3 dvec3_from(const json& object, const char* key, const std::string& where, double limit) {
     const std::string what = where + " \"" + key + "\"";
     if (!object.contains(key)) fail(what + " is missing");
     const json& value = object.at(key);
@@ -39,7 +38,8 @@ bool integer_in(const json& value, std::int64_t low, std::int64_t high, std::int
     std::int64_t number = 0;
     if (value.is_number_unsigned()) {
         const auto unsigned_number = value.get<std::uint64_t>();
-        if (unsigned_number > static_cast<std::uint64_t>(std::numeric_limits<std::int64_t>::max())) {
+        if (unsigned_number >
+            static_cast<std::uint64_t>(std::numeric_limits<std::int64_t>::max())) {
             return false;
         }
         number = static_cast<std::int64_t>(unsigned_number);
@@ -63,8 +63,6 @@ void check_version(const json& document, int version) {
 }
 
 json vec3_json(glm::dvec3 v) { return json::array({v.x, v.y, v.z}); }
-
-
 
 void check_keys(const json& object, std::initializer_list<std::string_view> known,
                 const std::string& where) {

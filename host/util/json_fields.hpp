@@ -1,20 +1,20 @@
 #pragma once
 // Reading fgr's JSON files (camera path files, IFS and formula scene files): the checks their
-// fields share, so a number or a version is read and refused the same way in every file. Each throws
-// std::runtime_error with a one-line reason that starts with `what` or `where` (callers add the
-// file's name in front).
+// fields share, so a number or a version is read and refused the same way in every file. Each
+// throws std::runtime_error with a one-line reason that starts with `what` or `where` (callers add
+// the file's name in front).
+
+#include <fmt/format.h>
 
 #include <cstdint>
-#include <stdexcept>
+#include <glm/vec3.hpp>
 #include <initializer_list>
+#include <nlohmann/json.hpp>
+#include <stdexcept>
 #include <string>
 #include <string_view>
 #include <utility>
 #include <vector>
-
-#include <fmt/format.h>
-#include <glm/vec3.hpp>
-#include <nlohmann/json.hpp>
 
 namespace fgr::json_fields {
 

@@ -14,9 +14,8 @@ constexpr std::size_t kMaxBands = 8;
 void in_parallel_bands(std::size_t count, std::size_t min_band,
                        const std::function<void(std::size_t, std::size_t)>& work) {
     const std::size_t threads = std::max<std::size_t>(1, std::thread::hardware_concurrency());
-    const std::size_t bands =
-        std::clamp<std::size_t>(count / std::max<std::size_t>(min_band, 1), 1,
-                                std::min(threads, kMaxBands));
+    const std::size_t bands = std::clamp<std::size_t>(count / std::max<std::size_t>(min_band, 1), 1,
+                                                      std::min(threads, kMaxBands));
     std::vector<std::jthread> helpers;
     helpers.reserve(bands - 1);
     for (std::size_t band = 0; band + 1 < bands; ++band) {

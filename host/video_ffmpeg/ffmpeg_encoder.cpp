@@ -1,15 +1,15 @@
 // FFmpeg's side of `fgr video` and `fgr merge`'s videos: the module fgr loads on first use (see
 // host/output/video/video_backend.hpp for why it is not linked in).
-#include "output/video/video_backend.hpp"
+#include <fmt/format.h>
+#include <spdlog/spdlog.h>
 
 #include <array>
-#include <cstdarg>
 #include <cctype>
+#include <cstdarg>
 #include <stdexcept>
 #include <system_error>
 
-#include <fmt/format.h>
-#include <spdlog/spdlog.h>
+#include "output/video/video_backend.hpp"
 
 extern "C" {
 #include <libavcodec/avcodec.h>

@@ -26,8 +26,8 @@ float lowest_scale(const QualitySettings& settings) {
 
 QualityController::QualityController(QualitySettings settings) : settings_(settings) {}
 
-RenderPass QualityController::next_pass(bool interactive, int samples_done,
-                                        int64_t full_pixels, int sample_cap) const {
+RenderPass QualityController::next_pass(bool interactive, int samples_done, int64_t full_pixels,
+                                        int sample_cap) const {
     RenderPass pass;
     if (interactive) {
         pass.kind = RenderPass::Kind::Preview;

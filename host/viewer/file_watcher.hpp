@@ -1,7 +1,8 @@
 #pragma once
 // Notices new and changed files by polling their modification time and size: the plugin folders
-// (every scene file in them: *.so plugins and *.ifs.json IFS files) and single files (a scene's .cl source in `fgr view --dev`). Polling is
-// portable and cheap at the viewer's rate (a stat per file, twice a second).
+// (every scene file in them: *.so plugins and *.ifs.json IFS files) and single files (a scene's .cl
+// source in `fgr view --dev`). Polling is portable and cheap at the viewer's rate (a stat per file,
+// twice a second).
 
 #include <cstdint>
 #include <filesystem>

@@ -1,12 +1,11 @@
 #include "viewer/fly_camera.hpp"
 
-#include "camera/camera.hpp"
-
 #include <algorithm>
 #include <cmath>
+#include <glm/geometric.hpp>
 #include <numbers>
 
-#include <glm/geometric.hpp>
+#include "camera/camera.hpp"
 
 namespace fgr::viewer {
 namespace {
@@ -68,8 +67,7 @@ FlyCamera FlyCamera::from_view(const CameraView& view) {
         camera.target_distance = distance;
     }
     // Without a target direction, look along the horizon.
-    const glm::vec3 direction =
-        has_direction ? glm::vec3(to_target / distance) : glm::vec3(0.0f);
+    const glm::vec3 direction = has_direction ? glm::vec3(to_target / distance) : glm::vec3(0.0f);
     camera.forward = join_direction(split_direction(direction, camera.world_up), camera.world_up);
     return camera;
 }

@@ -13,9 +13,9 @@ namespace fgr::viewer {
 constexpr float kMinPoleAngle = 0.0175f;
 
 struct FlyCamera {
-    glm::dvec3 position{0.0};              // double: it flies deep zooms, steps far below float's
+    glm::dvec3 position{0.0};  // double: it flies deep zooms, steps far below float's
     // resolution of the coordinates
-    glm::vec3 forward{0.0f, 1.0f, 0.0f};  // unit length
+    glm::vec3 forward{0.0f, 1.0f, 0.0f};   // unit length
     glm::vec3 world_up{0.0f, 0.0f, 1.0f};  // unit length
     float fov_degrees = 60.0f;             // horizontal
     double target_distance = 1.0;          // how far ahead to_view() puts the target (> 0)

@@ -13,10 +13,10 @@
 
 #include "scene/formulas/formulas.hpp"
 #include "scene/scene.hpp"
-#include "viewer/replay.hpp"
-#include "viewer/thumbnails.hpp"
 #include "viewer/gl_handles.hpp"
+#include "viewer/replay.hpp"
 #include "viewer/scene_set.hpp"
+#include "viewer/thumbnails.hpp"
 
 namespace fgr::viewer {
 

@@ -1,11 +1,11 @@
 #include "viewer/frame_stats.hpp"
 
+#include <fmt/format.h>
+
 #include <algorithm>
 #include <cmath>
 #include <cstddef>
 #include <numeric>
-
-#include <fmt/format.h>
 
 namespace fgr::viewer {
 namespace {

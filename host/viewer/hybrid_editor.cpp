@@ -10,9 +10,9 @@
 #include <utility>
 #include <vector>
 
-#include "util/atomic_file.hpp"
 #include "scene/formulas/formula_edit.hpp"
 #include "scene/parameters.hpp"
+#include "util/atomic_file.hpp"
 #include "viewer/viewer_util.hpp"
 
 namespace fgr::viewer {

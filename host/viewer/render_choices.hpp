@@ -7,9 +7,9 @@
 #include <optional>
 #include <string>
 
+#include "camera/projection.hpp"
 #include "render/path_settings.hpp"
 #include "render/precision.hpp"
-#include "camera/projection.hpp"
 #include "scene/render_mode.hpp"
 #include "scene/scene.hpp"
 #include "viewer/adaptive_quality.hpp"

@@ -1,11 +1,11 @@
 #include "viewer/render_worker.hpp"
 
+#include <fmt/format.h>
+#include <spdlog/spdlog.h>
+
 #include <algorithm>
 #include <cmath>
-
-#include <fmt/format.h>
 #include <glm/geometric.hpp>
-#include <spdlog/spdlog.h>
 
 #include "scene/parameters.hpp"
 
@@ -33,7 +33,8 @@ RenderWorker::RenderWorker(int device_index, int packet_width, QualitySettings q
     : device_(open_device(device_index)),
       packet_width_(packet_width ? packet_width : preferred_packet_width(device_.info)),
       cache_(ProgramCache::default_directory()),
-      precision_chooser_(device_.info, [this](const std::string& warning) { post_message(warning); }),
+      precision_chooser_(device_.info,
+                         [this](const std::string& warning) { post_message(warning); }),
       quality_(quality) {
     thread_ = std::thread([this] { run(); });
 }
@@ -183,8 +184,8 @@ void RenderWorker::run() {
     }
 }
 
-Renderer* RenderWorker::build_renderer(const std::shared_ptr<const Scene>& scene,
-                                       uint64_t effects, bool double_precision, RenderMode mode,
+Renderer* RenderWorker::build_renderer(const std::shared_ptr<const Scene>& scene, uint64_t effects,
+                                       bool double_precision, RenderMode mode,
                                        std::pair<std::string, std::string>* failure) {
     const RendererKey key{scene.get(), effects, double_precision, mode};
     if (auto found = renderers_.find(key); found != renderers_.end()) {
@@ -274,8 +275,8 @@ Renderer* RenderWorker::renderer_for(const ViewState& state, bool double_precisi
 void RenderWorker::reload(const ReloadRequest& request) {
     std::pair<std::string, std::string> failure;
     // The float kernel decides: a deep view builds the double one when it first needs it.
-    const bool ok = build_renderer(request.candidate, request.effects, false,
-                                   RenderMode::Shaded, &failure) != nullptr;
+    const bool ok = build_renderer(request.candidate, request.effects, false, RenderMode::Shaded,
+                                   &failure) != nullptr;
     std::lock_guard lock(mutex_);
     reload_results_.push_back({request, ok, failure.first, failure.second});
     status_.pending_reloads = static_cast<int>(reloads_.size());
@@ -290,13 +291,18 @@ void RenderWorker::render_pass(Renderer& renderer, const ViewState& state) {
     {
         std::lock_guard lock(mutex_);
         pass = quality_.next_pass(state.interactive, accumulated_samples_,
-                                  int64_t{state.width} * state.height,
-                                  mode_sample_cap(state.mode));
+                                  int64_t{state.width} * state.height, mode_sample_cap(state.mode));
     }
     switch (pass.kind) {
-        case RenderPass::Kind::Preview: render_preview(renderer, state, pass.scale); break;
-        case RenderPass::Kind::Refine: refine(renderer, state, pass.sample); break;
-        case RenderPass::Kind::Idle: mark_idle(state.generation); break;
+        case RenderPass::Kind::Preview:
+            render_preview(renderer, state, pass.scale);
+            break;
+        case RenderPass::Kind::Refine:
+            refine(renderer, state, pass.sample);
+            break;
+        case RenderPass::Kind::Idle:
+            mark_idle(state.generation);
+            break;
     }
 }
 
@@ -308,8 +314,9 @@ void RenderWorker::render_preview(Renderer& renderer, const ViewState& state, fl
     FrameRequest request = frame_request(state, width, height);
     request.start_hints = preview_start_hints(renderer, state, width, height);
     Frame frame = renderer.render(request);
-    last_preview_ = LastPreview{state.scene, &renderer, state.params,
-                                DepthView{state.view, state.projection, width, height, frame.depth}};
+    last_preview_ =
+        LastPreview{state.scene, &renderer, state.params,
+                    DepthView{state.view, state.projection, width, height, frame.depth}};
     {
         std::lock_guard lock(mutex_);
         quality_.record_frame(int64_t{width} * height, frame.render_ms);

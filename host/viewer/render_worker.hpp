@@ -21,14 +21,14 @@
 #include <utility>
 #include <vector>
 
-#include "image/image_io.hpp"
 #include "device/opencl_device.hpp"
+#include "device/program_cache.hpp"
+#include "image/image_io.hpp"
 #include "render/path_settings.hpp"
 #include "render/precision.hpp"
-#include "device/program_cache.hpp"
-#include "scene/render_mode.hpp"
-#include "render/renderer.hpp"
 #include "render/prepass/reprojection.hpp"
+#include "render/renderer.hpp"
+#include "scene/render_mode.hpp"
 #include "scene/scene.hpp"
 #include "viewer/adaptive_quality.hpp"
 
@@ -42,11 +42,11 @@ struct ViewState {
     CameraView view;
     Projection projection;
     std::vector<float> params;
-    int width = 1;   // full resolution
+    int width = 1;  // full resolution
     int height = 1;
     Precision precision = Precision::Auto;
     RenderMode mode = RenderMode::Shaded;
-    PathSettings path;  // mode Path: bounces, strategies, the environment (null: the sky)
+    PathSettings path;         // mode Path: bounces, strategies, the environment (null: the sky)
     bool interactive = false;  // the view is changing: preview frames, no refinement
     uint64_t generation = 0;
     bool operator==(const ViewState&) const = default;
@@ -61,14 +61,16 @@ constexpr int kBrutePassCap = 256;
 
 // How many samples (passes) a still view accumulates in `mode` (0: the quality settings' cap).
 constexpr int mode_sample_cap(RenderMode mode) {
-    return mode == RenderMode::Path ? kPathSampleCap : mode == RenderMode::Brute ? kBrutePassCap : 0;
+    return mode == RenderMode::Path    ? kPathSampleCap
+           : mode == RenderMode::Brute ? kBrutePassCap
+                                       : 0;
 }
 
 struct DisplayFrame {
-    Image8 image;  // tone-mapped sRGB at the rendered size
-    float scale = 1.0f;    // rendered size / full size
-    int samples = 1;       // samples per pixel averaged into it
-    double render_ms = 0;  // the pass that produced it
+    Image8 image;                   // tone-mapped sRGB at the rendered size
+    float scale = 1.0f;             // rendered size / full size
+    int samples = 1;                // samples per pixel averaged into it
+    double render_ms = 0;           // the pass that produced it
     double samples_per_second = 0;  // pixel samples per second of that pass
     bool double_precision = false;  // rendered with double lanes
     uint64_t generation = 0;
@@ -77,13 +79,13 @@ struct DisplayFrame {
 
 struct WorkerStatus {
     bool compiling = false;
-    std::string compiling_scene;  // id of the scene being built
+    std::string compiling_scene;    // id of the scene being built
     bool compiling_double = false;  // ... its double-precision kernel
-    std::string error;            // build failure of the shown (scene, effects), one line
-    std::string error_log;        // the compiler's output for it
-    float de_at_camera = -1.0f;   // < 0 until known
-    bool idle = false;            // the posted state is fully refined (or failed to build)
-    uint64_t idle_generation = 0; // ... for this generation
+    std::string error;              // build failure of the shown (scene, effects), one line
+    std::string error_log;          // the compiler's output for it
+    float de_at_camera = -1.0f;     // < 0 until known
+    bool idle = false;              // the posted state is fully refined (or failed to build)
+    uint64_t idle_generation = 0;   // ... for this generation
     int pending_screenshots = 0;
     int pending_reloads = 0;
 };
@@ -196,7 +198,7 @@ private:
     // Refinement of the current generation (render thread only).
     uint64_t accumulated_generation_ = UINT64_MAX;
     int accumulated_samples_ = 0;
-    int ifs_depth_reached_ = -1;  // of the last frame that reported it (sample 0 or a preview)
+    int ifs_depth_reached_ = -1;       // of the last frame that reported it (sample 0 or a preview)
     std::vector<float> accumulation_;  // sum of linear RGB over the samples
     // The last preview's depths and what they were rendered with: the next preview starts its
     // rays from them, reprojected (render/prepass/reprojection.hpp), when only the camera moved.

@@ -1,5 +1,7 @@
 #include "viewer/replay.hpp"
 
+#include <fmt/format.h>
+
 #include <algorithm>
 #include <array>
 #include <charconv>
@@ -11,8 +13,6 @@
 #include <string_view>
 #include <system_error>
 #include <utility>
-
-#include <fmt/format.h>
 
 namespace fgr::viewer {
 namespace {
@@ -177,7 +177,9 @@ void read_arguments(const LineParser& parser, const std::vector<std::string>& ar
             event.text = args[0] == "-" ? std::string() : key_name(args[0]);
             break;
         case ReplayAction::HybridAdd:
-        case ReplayAction::HybridSave: event.text = args[0]; break;
+        case ReplayAction::HybridSave:
+            event.text = args[0];
+            break;
         case ReplayAction::BrowserPick:
             event.count = parser.integer(args[0], "N", 1, kMaxPick) - 1;
             break;

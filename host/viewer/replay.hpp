@@ -64,17 +64,17 @@ enum class ReplayAction {
 struct ReplayEvent {
     double delay_seconds = 0.0;  // after the previous event
     ReplayAction action = ReplayAction::Quit;
-    std::string key;             // key events: the SDL key name, underscores turned to spaces
-    int button = 0;              // mouse buttons: 1 left, 2 middle, 3 right (SDL numbering)
-    bool has_position = false;   // mouse_down / mouse_up with X Y
-    int x = 0, y = 0;            // mouse_down / mouse_up position; mouse_move: DX DY; resize: W H
-    int wheel = 0;               // wheel steps
-    std::string text;            // browser_search: the text; hybrid_add: the formula's name;
-                                 // hybrid_save: the new scene's id
-    int slot = 0;                // hybrid edits: the formula's place, 0 the first
-    int count = 0;               // browser_pick: the scene, 0 the first; hybrid_move: the offset;
-                                 // hybrid_repeat: the repeat count
-    int line = 0;                // line number in the file, for messages
+    std::string key;            // key events: the SDL key name, underscores turned to spaces
+    int button = 0;             // mouse buttons: 1 left, 2 middle, 3 right (SDL numbering)
+    bool has_position = false;  // mouse_down / mouse_up with X Y
+    int x = 0, y = 0;           // mouse_down / mouse_up position; mouse_move: DX DY; resize: W H
+    int wheel = 0;              // wheel steps
+    std::string text;           // browser_search: the text; hybrid_add: the formula's name;
+                                // hybrid_save: the new scene's id
+    int slot = 0;               // hybrid edits: the formula's place, 0 the first
+    int count = 0;              // browser_pick: the scene, 0 the first; hybrid_move: the offset;
+                                // hybrid_repeat: the repeat count
+    int line = 0;               // line number in the file, for messages
 };
 
 // Parses a replay script. `source_name` prefixes error messages ("FILE:LINE: reason"), which are

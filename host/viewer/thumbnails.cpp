@@ -1,17 +1,17 @@
 #include "viewer/thumbnails.hpp"
 
-#include <cstring>
-#include <string_view>
-
 #include <fmt/format.h>
 #include <spdlog/spdlog.h>
 
-#include "util/content_hash.hpp"
+#include <cstring>
+#include <string_view>
+
 #include "device/kernel_assembly.hpp"
 #include "device/opencl_device.hpp"
-#include "scene/parameters.hpp"
 #include "device/program_cache.hpp"
 #include "render/renderer.hpp"
+#include "scene/parameters.hpp"
+#include "util/content_hash.hpp"
 
 namespace fgr::viewer {
 namespace {
@@ -44,7 +44,9 @@ std::string thumbnail_key(const Scene& scene) {
     for (int i = 0; i < 3; ++i) {
         hash.add_bytes_of(view.position[i]).add_bytes_of(view.target[i]).add_bytes_of(view.up[i]);
     }
-    hash.add_bytes_of(view.fov_degrees).add_bytes_of(scene.effects).add_bytes_of(scene.default_mode);
+    hash.add_bytes_of(view.fov_degrees)
+        .add_bytes_of(scene.effects)
+        .add_bytes_of(scene.default_mode);
     hash.add(fmt::format("{}x{}", kThumbnailWidth, kThumbnailHeight));
     return hash.hex();
 }

@@ -7,23 +7,23 @@
 #include <string>
 #include <vector>
 
+#include "camera/projection.hpp"
+#include "camera/view_override.hpp"
 #include "render/path_settings.hpp"
 #include "render/precision.hpp"
-#include "camera/projection.hpp"
 #include "scene/render_mode.hpp"
-#include "camera/view_override.hpp"
 
 namespace fgr::viewer {
 
 struct ViewerOptions {
-    std::string scene;              // id to open first; empty: mandelbulb, else the first found
-    int width = 1280;               // window size in pixels
+    std::string scene;  // id to open first; empty: mandelbulb, else the first found
+    int width = 1280;   // window size in pixels
     int height = 720;
     bool fullscreen = false;
-    double target_ms = 33.0;        // frame time to hold while the view changes
-    int sample_cap = 16;            // samples per pixel accumulated while still, and for F12
-    int device = -1;                // OpenCL device index, -1: first GPU, else first device
-    int packet_width = 0;           // 0: the device's preference
+    double target_ms = 33.0;  // frame time to hold while the view changes
+    int sample_cap = 16;      // samples per pixel accumulated while still, and for F12
+    int device = -1;          // OpenCL device index, -1: first GPU, else first device
+    int packet_width = 0;     // 0: the device's preference
     Precision precision = Precision::Auto;  // float, double or per view; the panel changes it
     std::optional<RenderMode> mode;         // shaded or path; default: each scene's own
     PathSettings path;                      // path mode's settings (its environment unset)
@@ -33,12 +33,12 @@ struct ViewerOptions {
     std::optional<std::filesystem::path> camera_path_file;  // load (and list) a recorded path
     std::string path_name;  // --path: the first scene's path P plays (default: its first)
     std::optional<ViewOverride> start_view;  // --eye, --target, --up, --fov: the first view
-    Projection projection;  // --projection and its settings; the panel changes it
+    Projection projection;                   // --projection and its settings; the panel changes it
     std::filesystem::path output_dir = ".";  // screenshots and saved camera paths
     std::optional<std::filesystem::path> replay;  // scripted input (see replay.hpp)
     std::optional<double> exit_after_seconds;
-    bool print_stats = false;       // frame-time statistics and the final camera on stdout
-    bool dev = false;               // also watch scenes' .cl sources and reload them on change
+    bool print_stats = false;  // frame-time statistics and the final camera on stdout
+    bool dev = false;          // also watch scenes' .cl sources and reload them on change
 };
 
 // Runs the viewer until the window is closed, Escape, --exit-after or the replay's quit.
@@ -46,9 +46,9 @@ struct ViewerOptions {
 // std::runtime_error for failures (no display, no OpenCL device...).
 int run_viewer(const ViewerOptions& options);
 
-// The viewer is also fgr's module libfgr_viewer.so (scene/modules.hpp), which `fgr view` loads: SDL,
-// OpenGL and the ~50 libraries they pull in are loaded only by the process that opens a window.
-// Its entry point kViewerModuleEntry returns this table.
+// The viewer is also fgr's module libfgr_viewer.so (scene/modules.hpp), which `fgr view` loads:
+// SDL, OpenGL and the ~50 libraries they pull in are loaded only by the process that opens a
+// window. Its entry point kViewerModuleEntry returns this table.
 struct ViewerModule {
     int version;  // kViewerModuleVersion of the tree the module was built from
     int (*run)(const ViewerOptions& options);

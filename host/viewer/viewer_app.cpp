@@ -9,13 +9,13 @@
 #include <stdexcept>
 #include <utility>
 
-#include "scene/discovery.hpp"
+#include "camera/view_override.hpp"
 #include "device/kernel_assembly.hpp"
-#include "scene/parameters.hpp"
 #include "render/precision.hpp"
 #include "render/renderer.hpp"
+#include "scene/discovery.hpp"
+#include "scene/parameters.hpp"
 #include "scene/scene_source.hpp"
-#include "camera/view_override.hpp"
 #include "util/timing.hpp"
 #include "viewer/viewer_util.hpp"
 

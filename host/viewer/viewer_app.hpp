@@ -13,19 +13,19 @@
 #include <string>
 #include <vector>
 
-#include "viewer/camera_paths.hpp"
 #include "scene/scene.hpp"
-#include "viewer/render_worker.hpp"
-#include "viewer/viewer.hpp"
+#include "viewer/camera_paths.hpp"
 #include "viewer/formula_browser.hpp"
 #include "viewer/gl_handles.hpp"
 #include "viewer/hot_reloader.hpp"
 #include "viewer/hybrid_editor.hpp"
 #include "viewer/input_handler.hpp"
 #include "viewer/render_choices.hpp"
+#include "viewer/render_worker.hpp"
 #include "viewer/replay_driver.hpp"
 #include "viewer/scene_set.hpp"
 #include "viewer/view_tracker.hpp"
+#include "viewer/viewer.hpp"
 #include "viewer/viewer_panel.hpp"
 #include "viewer/viewer_statistics.hpp"
 #include "viewer/viewer_window.hpp"

@@ -7,11 +7,11 @@
 #include <array>
 #include <cmath>
 
+#include "camera/projection.hpp"
 #include "device/kernel_assembly.hpp"
-#include "scene/parameters.hpp"
 #include "fgr/plugin.h"
 #include "render/precision.hpp"
-#include "camera/projection.hpp"
+#include "scene/parameters.hpp"
 #include "scene/render_mode.hpp"
 #include "viewer/viewer_util.hpp"
 

@@ -11,10 +11,10 @@
 #include <string>
 #include <utility>
 
-#include "viewer/camera_paths.hpp"
 #include "device/opencl_device.hpp"
-#include "viewer/render_worker.hpp"
+#include "viewer/camera_paths.hpp"
 #include "viewer/render_choices.hpp"
+#include "viewer/render_worker.hpp"
 #include "viewer/scene_set.hpp"
 #include "viewer/viewer_window.hpp"
 

@@ -6,8 +6,8 @@
 #include <ctime>
 #include <string>
 
-#include "scene/formulas/formulas.hpp"
 #include "render/precision.hpp"
+#include "scene/formulas/formulas.hpp"
 
 namespace fgr::viewer {
 

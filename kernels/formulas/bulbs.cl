@@ -74,7 +74,8 @@ inline void formula_white_nylander(vec3* z, real* w, real* dr, const vec3 c) {
     const real rho = sqrt(rho2);
     const real inv_rho = select(1.0f / rho, fgr_real(0.0f), rho <= 0.0f);
     /* On the z axis the azimuth is 0 (as atan2(0, 0)): (2 z rho, 0, z^2 - rho^2) with rho = 0. */
-    const real cos2 = select((p.x * p.x - p.y * p.y) * inv_rho * inv_rho, fgr_real(1.0f), rho <= 0.0f);
+    const real cos2 =
+        select((p.x * p.x - p.y * p.y) * inv_rho * inv_rho, fgr_real(1.0f), rho <= 0.0f);
     const real sin2 = 2.0f * p.x * p.y * inv_rho * inv_rho;
     const real horizontal = 2.0f * p.z * rho;
     *dr = 2.0f * v3_length(p) * *dr + 1.0f;

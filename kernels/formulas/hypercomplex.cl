@@ -197,10 +197,12 @@ inline real formula_bicomplex_julia_distance(vec3 z, real w, real dr, vec3 c, ve
     (void)w;
     (void)dr;
     const real julia_w_packet = fgr_real(julia_w);
-    const real du = complex_set_distance(idempotent_u(c, fgr_real(0.0f)),
-                                         idempotent_u(julia, julia_w_packet), 0, iterations, bailout);
-    const real dv = complex_set_distance(idempotent_v(c, fgr_real(0.0f)),
-                                         idempotent_v(julia, julia_w_packet), 0, iterations, bailout);
+    const real du =
+        complex_set_distance(idempotent_u(c, fgr_real(0.0f)), idempotent_u(julia, julia_w_packet),
+                             0, iterations, bailout);
+    const real dv =
+        complex_set_distance(idempotent_v(c, fgr_real(0.0f)), idempotent_v(julia, julia_w_packet),
+                             0, iterations, bailout);
     /* Where both orbits stay bounded the point is in the set: 0, not the estimates' negative
      * values (orbits ending inside the unit circle). */
     return fmax(fmax(du, dv), fgr_real(0.0f)) * M_SQRT1_2_F;

@@ -8,8 +8,16 @@ static const fgr_param_desc params[] = {
                     "mirror reflectivity of the floor at normal incidence"),
     FGR_ENUM_PARAM("palette", "Bulb palette", "Materials", 5, 0, "ember|ocean|forest|pastel|mono",
                    "colour ramp of the Mandelbulb"),
-    {FGR_HEADER(fgr_param_desc), "base_colour", "Bulb tint", "Materials", FGR_PARAM_COLOUR, 0.0f,
-     1.0f, {1.0f, 0.95f, 0.9f}, NULL, "tint multiplying the bulb's palette"},
+    {FGR_HEADER(fgr_param_desc),
+     "base_colour",
+     "Bulb tint",
+     "Materials",
+     FGR_PARAM_COLOUR,
+     0.0f,
+     1.0f,
+     {1.0f, 0.95f, 0.9f},
+     NULL,
+     "tint multiplying the bulb's palette"},
 };
 
 static const fgr_camera cameras[] = {
@@ -35,12 +43,12 @@ static const fgr_light lights[] = {
     FGR_POINT_LIGHT(-1.2f, -2.6f, 2.4f, 0.55f, 0.7f, 1.0f, 5.0f),
 };
 
-static const fgr_scene_desc scene = FGR_SCENE(
-    "benchmark", "Benchmark",
-    "Mandelbulb, Menger sponge and primitives on a mirror floor: every effect at once",
-    benchmark_cl, "benchmark.cl", params, cameras, paths, lights,
-    FGR_EFFECT_AMBIENT_OCCLUSION | FGR_EFFECT_SOFT_SHADOWS | FGR_EFFECT_REFLECTIONS,
-    /* The bulb's DE is an estimate (see plugins/mandelbulb): advance 0.8 DE. */
-    FGR_MARCH(256u, 30.0f, 1.0f, 8u, 0.8f));
+static const fgr_scene_desc scene =
+    FGR_SCENE("benchmark", "Benchmark",
+              "Mandelbulb, Menger sponge and primitives on a mirror floor: every effect at once",
+              benchmark_cl, "benchmark.cl", params, cameras, paths, lights,
+              FGR_EFFECT_AMBIENT_OCCLUSION | FGR_EFFECT_SOFT_SHADOWS | FGR_EFFECT_REFLECTIONS,
+              /* The bulb's DE is an estimate (see plugins/mandelbulb): advance 0.8 DE. */
+              FGR_MARCH(256u, 30.0f, 1.0f, 8u, 0.8f));
 
 FGR_PLUGIN_EXPORT const fgr_scene_desc* fgr_scene_entry(void) { return &scene; }

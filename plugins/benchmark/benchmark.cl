@@ -144,8 +144,9 @@ vec3 scene_colour(vec3 p, PARAMS) {
     if (fgr_any(id == 1.0f)) {
         orbit_trap trap = trap_init();
         bench_bulb(p, PARAMS_PASS, 1, &trap);
-        colour = v3_select(colour, trap_colour(trap, FGR_TRAP_POINT, param_palette, param_base_colour),
-                           id == 1.0f);
+        colour =
+            v3_select(colour, trap_colour(trap, FGR_TRAP_POINT, param_palette, param_base_colour),
+                      id == 1.0f);
     }
     colour = v3_select(colour, v3_splat(0.55f, 0.62f, 0.75f), id == 2.0f);
     colour = v3_select(colour, v3_splat(0.80f, 0.25f, 0.18f), id == 3.0f);

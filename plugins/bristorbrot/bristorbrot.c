@@ -67,7 +67,6 @@ static const fgr_scene_desc scene = FGR_SCENE_WITH_MODE(
     "Doug Bristor's non-conformal quadratic map of R^3, Julia or Mandelbrot form (inside-only)",
     bristorbrot_cl, "bristorbrot.cl", params, cameras, paths, lights,
     FGR_EFFECT_AMBIENT_OCCLUSION | FGR_EFFECT_GLOW | FGR_EFFECT_SHADOWS,
-    FGR_MARCH(256u, 5.5f, 1.0f, 12u, 1.0f),
-    "brute");
+    FGR_MARCH(256u, 5.5f, 1.0f, 12u, 1.0f), "brute");
 
 FGR_PLUGIN_EXPORT const fgr_scene_desc* fgr_scene_entry(void) { return &scene; }

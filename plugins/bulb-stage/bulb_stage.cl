@@ -14,9 +14,13 @@ inline real stage_bulb(vec3 p, PARAMS) {
 inline real stage_floor(vec3 p, PARAMS) { return p.z - param_floor_height; }
 
 /* Which lanes' points belong to the floor (nearer to it than to the bulb). */
-inline mask on_floor(vec3 p, PARAMS) { return stage_floor(p, PARAMS_PASS) < stage_bulb(p, PARAMS_PASS); }
+inline mask on_floor(vec3 p, PARAMS) {
+    return stage_floor(p, PARAMS_PASS) < stage_bulb(p, PARAMS_PASS);
+}
 
-real scene_de(vec3 p, PARAMS) { return fmin(stage_bulb(p, PARAMS_PASS), stage_floor(p, PARAMS_PASS)); }
+real scene_de(vec3 p, PARAMS) {
+    return fmin(stage_bulb(p, PARAMS_PASS), stage_floor(p, PARAMS_PASS));
+}
 
 /* Tiles of side `tile`, every other one a little darker. */
 inline vec3 floor_colour(vec3 p, PARAMS) {

@@ -57,9 +57,8 @@ static const fgr_light lights[] = {
 
 static const fgr_scene_desc scene = FGR_SCENE(
     "julia", "Quaternion Julia",
-    "3D slice of the quaternion Julia set q -> q^2 + c, analytic running-derivative DE",
-    julia_cl, "julia.cl", params, cameras, paths, lights,
-    FGR_EFFECT_AMBIENT_OCCLUSION | FGR_EFFECT_SHADOWS,
+    "3D slice of the quaternion Julia set q -> q^2 + c, analytic running-derivative DE", julia_cl,
+    "julia.cl", params, cameras, paths, lights, FGR_EFFECT_AMBIENT_OCCLUSION | FGR_EFFECT_SHADOWS,
     FGR_MARCH(256u, 10.0f, 1.0f, 12u, JULIA_STEP_FACTOR));
 
 FGR_PLUGIN_EXPORT const fgr_scene_desc* fgr_scene_entry(void) { return &scene; }

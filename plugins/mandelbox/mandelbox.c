@@ -58,8 +58,7 @@ static const fgr_light lights[] = {
 #define MANDELBOX_STEP_FACTOR 0.9f
 
 static const fgr_scene_desc scene = FGR_SCENE(
-    "mandelbox", "Mandelbox",
-    "Mandelbox: box fold, sphere fold and scale, running-derivative DE",
+    "mandelbox", "Mandelbox", "Mandelbox: box fold, sphere fold and scale, running-derivative DE",
     mandelbox_cl, "mandelbox.cl", params, cameras, paths, lights,
     FGR_EFFECT_AMBIENT_OCCLUSION | FGR_EFFECT_SHADOWS,
     FGR_MARCH(256u, 60.0f, 1.0f, 16u, MANDELBOX_STEP_FACTOR));

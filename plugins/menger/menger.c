@@ -57,8 +57,7 @@ static const fgr_light lights[] = {
 };
 
 static const fgr_scene_desc scene = FGR_SCENE_TUNED(
-    "menger", "Menger sponge",
-    "kaleidoscopic IFS of cube folds, with scale, offset and twist",
+    "menger", "Menger sponge", "kaleidoscopic IFS of cube folds, with scale, offset and twist",
     menger_cl, "menger.cl", params, cameras, paths, lights,
     FGR_EFFECT_AMBIENT_OCCLUSION | FGR_EFFECT_SHADOWS,
     /* Level-6 cubes (3^-6 of the sponge) are about a pixel wide at 640 pixels from the corner

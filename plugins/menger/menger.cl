@@ -33,7 +33,8 @@ inline real menger_iterate(vec3 p, PARAMS, int record, orbit_trap* trap) {
     const float scale = param_scale;
     const vec3 offset = param_offset;
     /* The twist turns about the cube's diagonal, through the corner cube being blown up. */
-    const rotation3 twist = rotation_about_axis(v3_splat(0.57735027f, 0.57735027f, 0.57735027f), param_twist);
+    const rotation3 twist =
+        rotation_about_axis(v3_splat(0.57735027f, 0.57735027f, 0.57735027f), param_twist);
     vec3 w = p;        /* the orbit point z_i times scale^-i */
     float size = 1.0f; /* scale^-i: the half-size of one level-i cube */
     for (int i = 0; i < param_iterations; ++i) {

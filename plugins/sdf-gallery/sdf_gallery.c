@@ -62,12 +62,12 @@ static const fgr_light lights[] = {
     FGR_DIRECTIONAL_LIGHT(0.6f, 0.5f, 0.45f, 0.55f, 0.65f, 0.9f, 0.4f),
 };
 
-static const fgr_scene_desc scene = FGR_SCENE(
-    "sdf-gallery", "SDF gallery",
-    "the kernel library's distance functions: primitives, combinators and transforms",
-    sdf_gallery_cl, "sdf_gallery.cl", params, cameras, paths, lights,
-    FGR_EFFECT_AMBIENT_OCCLUSION | FGR_EFFECT_SHADOWS,
-    /* 40 units covers the whole platform from any camera above; iterations are unused. */
-    FGR_MARCH(256u, 40.0f, 1.0f, 1u, 1.0f));
+static const fgr_scene_desc scene =
+    FGR_SCENE("sdf-gallery", "SDF gallery",
+              "the kernel library's distance functions: primitives, combinators and transforms",
+              sdf_gallery_cl, "sdf_gallery.cl", params, cameras, paths, lights,
+              FGR_EFFECT_AMBIENT_OCCLUSION | FGR_EFFECT_SHADOWS,
+              /* 40 units covers the whole platform from any camera above; iterations are unused. */
+              FGR_MARCH(256u, 40.0f, 1.0f, 1u, 1.0f));
 
 FGR_PLUGIN_EXPORT const fgr_scene_desc* fgr_scene_entry(void) { return &scene; }

@@ -58,8 +58,9 @@ inline real object_rounded_cross(vec3 p, PARAMS) {
     /* Three bars, unioned (exact outside), then grown by the rounding radius. */
     const float bar = 0.6f - param_rounding, thin = 0.1f;
     vec3 q = op_rotate_z(op_rotate_x(p, 0.4f), 0.6f);
-    real d = op_union(sd_box(q, v3_splat(bar, thin, thin)),
-                      op_union(sd_box(q, v3_splat(thin, bar, thin)), sd_box(q, v3_splat(thin, thin, bar))));
+    real d = op_union(
+        sd_box(q, v3_splat(bar, thin, thin)),
+        op_union(sd_box(q, v3_splat(thin, bar, thin)), sd_box(q, v3_splat(thin, thin, bar))));
     return op_round(d, 0.1f + param_rounding);
 }
 
@@ -67,7 +68,8 @@ inline real object_rounded_cross(vec3 p, PARAMS) {
 
 inline real object_union(vec3 p) {
     real ball = sd_sphere(op_translate(p, v3_splat(-0.25f, 0.0f, 0.25f)), 0.5f);
-    real block = sd_box(op_translate(p, v3_splat(0.22f, 0.0f, -0.22f)), v3_splat(0.38f, 0.38f, 0.38f));
+    real block =
+        sd_box(op_translate(p, v3_splat(0.22f, 0.0f, -0.22f)), v3_splat(0.38f, 0.38f, 0.38f));
     return op_union(ball, block);
 }
 
@@ -169,11 +171,14 @@ inline real object_de(int index, vec3 p, PARAMS) {
         case 2: return object_round_box(p, PARAMS_PASS);
         case 3: return object_torus(p);
         case 4: return sd_cylinder(p, 0.55f, 0.75f);
-        case 5: return sd_capsule(p, v3_splat(-0.35f, 0.15f, -0.55f), v3_splat(0.35f, -0.15f, 0.55f), 0.3f);
+        case 5:
+            return sd_capsule(p, v3_splat(-0.35f, 0.15f, -0.55f), v3_splat(0.35f, -0.15f, 0.55f),
+                              0.3f);
         case 6: return sd_cone(p, 0.75f, 0.65f, 0.12f);
         case 7: return sd_octahedron(op_rotate_z(p, 0.3f), 0.9f);
         case 8: return sd_tetrahedron(op_rotate_z(p, 0.785398f), 0.5f);
-        case 9: return sd_sphere(op_elongate(op_rotate_z(p, 0.5f), v3_splat(0.35f, 0.0f, 0.3f)), 0.4f);
+        case 9:
+            return sd_sphere(op_elongate(op_rotate_z(p, 0.5f), v3_splat(0.35f, 0.0f, 0.3f)), 0.4f);
         case 10: return object_onion(p);
         case 11: return object_rounded_cross(p, PARAMS_PASS);
         case 12: return object_union(p);

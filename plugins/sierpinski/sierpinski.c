@@ -60,8 +60,8 @@ static const fgr_light lights[] = {
 
 static const fgr_scene_desc scene = FGR_SCENE_TUNED(
     "sierpinski", "Sierpinski tetrahedron",
-    "kaleidoscopic IFS of tetrahedral folds, with scale, offset and twist",
-    sierpinski_cl, "sierpinski.cl", params, cameras, paths, lights,
+    "kaleidoscopic IFS of tetrahedral folds, with scale, offset and twist", sierpinski_cl,
+    "sierpinski.cl", params, cameras, paths, lights,
     FGR_EFFECT_AMBIENT_OCCLUSION | FGR_EFFECT_SHADOWS,
     /* 2^-10 tetrahedra are about a pixel wide at 640 pixels from the front view. The DE is a
      * strict bound, so rays take full steps (step factor 1). */

@@ -41,7 +41,8 @@ inline real sierpinski_iterate(vec3 p, PARAMS, int record, orbit_trap* trap) {
     const float scale = param_scale;
     const vec3 offset = param_offset;
     /* The twist turns about the diagonal (world z), through the corner being blown up. */
-    const rotation3 twist = rotation_about_axis(v3_splat(SIERPINSKI_INV_SQRT3, SIERPINSKI_INV_SQRT3, SIERPINSKI_INV_SQRT3), param_twist);
+    const rotation3 twist = rotation_about_axis(
+        v3_splat(SIERPINSKI_INV_SQRT3, SIERPINSKI_INV_SQRT3, SIERPINSKI_INV_SQRT3), param_twist);
     vec3 w = tetrahedron_frame(p); /* the orbit point z_i times scale^-i */
     float size = 1.0f;             /* scale^-i: the size of one level-i tetrahedron */
     for (int i = 0; i < param_iterations; ++i) {

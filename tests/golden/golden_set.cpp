@@ -1,8 +1,7 @@
 #include "golden_set.hpp"
 
-#include <nlohmann/json.hpp>
-
 #include <fstream>
+#include <nlohmann/json.hpp>
 #include <sstream>
 #include <stdexcept>
 
@@ -62,11 +61,11 @@ std::vector<GoldenCase> golden_cases(const std::vector<std::string>& ids) {
     for (const std::string& id : ids) {
         for (const char* mode : kModes) {
             for (const char* precision : kPrecisions) {
-                cases.push_back({gtest_name(id + "_" + mode + "_" + precision),
-                                 {"render", id, "-o", "out.png", "--width",
-                                  std::to_string(kGoldenWidth), "--height",
-                                  std::to_string(kGoldenHeight), "--mode", mode, "--precision",
-                                  precision, "--stats"}});
+                cases.push_back(
+                    {gtest_name(id + "_" + mode + "_" + precision),
+                     {"render", id, "-o", "out.png", "--width", std::to_string(kGoldenWidth),
+                      "--height", std::to_string(kGoldenHeight), "--mode", mode, "--precision",
+                      precision, "--stats"}});
             }
         }
     }
@@ -95,7 +94,8 @@ Observation observe(const GoldenCase& golden_case) {
     Observation observation;
     observation.exit_code = run.exited ? run.exit_code : 128 + run.term_signal;
     const fs::path output = folder.path() / "out.png";
-    if (fs::exists(output)) observation.output_hash = ContentHash().add(test::read_file(output)).hex();
+    if (fs::exists(output))
+        observation.output_hash = ContentHash().add(test::read_file(output)).hex();
     for (const std::string& line : lines_of(run.out)) {
         if (!is_timing(figure_key(line))) observation.figures.push_back(line);
     }
@@ -121,9 +121,8 @@ void write_records(const fs::path& file, const std::vector<GoldenRecord>& record
                          {"errors", seen.errors},
                          {"device", seen.device}});
     }
-    const nlohmann::ordered_json set = {{"format", "fgr golden set"},
-                                        {"version", kFormatVersion},
-                                        {"cases", cases}};
+    const nlohmann::ordered_json set = {
+        {"format", "fgr golden set"}, {"version", kFormatVersion}, {"cases", cases}};
     const fs::path temporary = file.string() + ".tmp";
     {
         std::ofstream out(temporary, std::ios::binary | std::ios::trunc);
@@ -137,7 +136,8 @@ std::vector<GoldenRecord> read_records(const fs::path& file) {
     try {
         const nlohmann::json set = nlohmann::json::parse(test::read_file(file));
         if (set.at("format") != "fgr golden set" || set.at("version") != kFormatVersion) {
-            throw std::runtime_error("not a golden set of version " + std::to_string(kFormatVersion));
+            throw std::runtime_error("not a golden set of version " +
+                                     std::to_string(kFormatVersion));
         }
         std::vector<GoldenRecord> records;
         for (const nlohmann::json& entry : set.at("cases")) {

@@ -1,13 +1,12 @@
 // The MPI transport: MPI_COMM_WORLD, point-to-point byte messages of one tag. Only the main
 // thread calls MPI (MPI_THREAD_FUNNELED): rank 0's own renderer thread never does. Built as the
 // module libfgr_mpi.so (transport.hpp), which calls nothing of fgr's but this file.
+#include <fmt/format.h>
 #include <mpi.h>
 #include <unistd.h>
 
 #include <climits>
 #include <stdexcept>
-
-#include <fmt/format.h>
 
 #include "distributed/transport.hpp"
 
@@ -21,7 +20,8 @@ void check(int status, const char* what) {
         char text[MPI_MAX_ERROR_STRING];
         int length = 0;
         MPI_Error_string(status, text, &length);
-        throw std::runtime_error(fmt::format("MPI {} failed: {}", what, std::string(text, size_t(length))));
+        throw std::runtime_error(
+            fmt::format("MPI {} failed: {}", what, std::string(text, size_t(length))));
     }
 }
 
@@ -29,11 +29,12 @@ class MpiTransport final : public Transport {
 public:
     void send(int to, std::span<const uint8_t> bytes) override {
         if (bytes.size() > size_t(INT_MAX)) {
-            throw std::runtime_error(fmt::format("a message of {} bytes is more than MPI sends at once",
-                                                 bytes.size()));
+            throw std::runtime_error(
+                fmt::format("a message of {} bytes is more than MPI sends at once", bytes.size()));
         }
         check(MPI_Send(bytes.data(), static_cast<int>(bytes.size()), MPI_BYTE, to, kTag,
-                       MPI_COMM_WORLD), "send");
+                       MPI_COMM_WORLD),
+              "send");
     }
 
     std::optional<std::pair<int, std::vector<uint8_t>>> try_receive(int from) override {
@@ -46,7 +47,8 @@ public:
         MPI_Get_count(&status, MPI_BYTE, &count);
         std::vector<uint8_t> bytes(static_cast<size_t>(count));
         check(MPI_Recv(bytes.data(), count, MPI_BYTE, status.MPI_SOURCE, kTag, MPI_COMM_WORLD,
-                       MPI_STATUS_IGNORE), "receive");
+                       MPI_STATUS_IGNORE),
+              "receive");
         return std::make_pair(status.MPI_SOURCE, std::move(bytes));
     }
 
@@ -63,7 +65,8 @@ Transport* join(int* argc, char*** argv, Membership& membership) {
     MPI_Comm_rank(MPI_COMM_WORLD, &membership.rank);
     MPI_Comm_size(MPI_COMM_WORLD, &membership.size);
     MPI_Comm node;
-    MPI_Comm_split_type(MPI_COMM_WORLD, MPI_COMM_TYPE_SHARED, membership.rank, MPI_INFO_NULL, &node);
+    MPI_Comm_split_type(MPI_COMM_WORLD, MPI_COMM_TYPE_SHARED, membership.rank, MPI_INFO_NULL,
+                        &node);
     MPI_Comm_rank(node, &membership.local_rank);
     MPI_Comm_free(&node);
     char name[MPI_MAX_PROCESSOR_NAME];

@@ -1,18 +1,20 @@
 #include "output/parts/frame_merge.hpp"
 
+#include <fmt/format.h>
+
 #include <stdexcept>
 #include <vector>
-
-#include <fmt/format.h>
 
 namespace fgr {
 namespace {
 
 // merged = (merged * n_merged + part * n_part) / (n_merged + n_part), in double.
-void weighted_mean(std::vector<float>& merged, const std::vector<float>& part, double merged_share) {
+void weighted_mean(std::vector<float>& merged, const std::vector<float>& part,
+                   double merged_share) {
     const double part_share = 1.0 - merged_share;
     for (size_t i = 0; i < merged.size(); ++i) {
-        merged[i] = static_cast<float>(double(merged[i]) * merged_share + double(part[i]) * part_share);
+        merged[i] =
+            static_cast<float>(double(merged[i]) * merged_share + double(part[i]) * part_share);
     }
 }
 
@@ -21,9 +23,9 @@ void check_same_planes(const Frame& merged, const Frame& part) {
         return a.size() != b.size();
     };
     if (merged.image.width != part.image.width || merged.image.height != part.image.height) {
-        throw std::invalid_argument(fmt::format("cannot add samples of a {}x{} frame to a {}x{} one",
-                                                part.image.width, part.image.height,
-                                                merged.image.width, merged.image.height));
+        throw std::invalid_argument(
+            fmt::format("cannot add samples of a {}x{} frame to a {}x{} one", part.image.width,
+                        part.image.height, merged.image.width, merged.image.height));
     }
     if (differ(merged.linear, part.linear) || differ(merged.albedo, part.albedo) ||
         differ(merged.normal, part.normal) || differ(merged.alpha, part.alpha) ||

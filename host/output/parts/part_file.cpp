@@ -1,4 +1,5 @@
-// Part files (output/parts/render_parts.hpp): rendering a region into one, reading one's header and rows.
+// Part files (output/parts/render_parts.hpp): rendering a region into one, reading one's header and
+// rows.
 #include "output/parts/part_file.hpp"
 
 #include <ImfChannelList.h>
@@ -6,19 +7,18 @@
 #include <ImfHeader.h>
 #include <ImfInputFile.h>
 #include <ImfStringAttribute.h>
+#include <fmt/format.h>
 
 #include <algorithm>
 #include <chrono>
 #include <cstring>
+#include <nlohmann/json.hpp>
 #include <stdexcept>
 
-#include <fmt/format.h>
-#include <nlohmann/json.hpp>
-
+#include "output/parts/render_identity.hpp"
+#include "output/tiled/streaming_image.hpp"
 #include "util/lower_case.hpp"
 #include "util/timing.hpp"
-#include "output/tiled/streaming_image.hpp"
-#include "output/parts/render_identity.hpp"
 
 namespace fgr {
 namespace {

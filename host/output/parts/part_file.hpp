@@ -1,6 +1,6 @@
 #pragma once
-// A part file's channels and its reader (output/parts/render_parts.hpp), shared by rendering a part and
-// merging parts.
+// A part file's channels and its reader (output/parts/render_parts.hpp), shared by rendering a part
+// and merging parts.
 
 #include <ImfForward.h>
 

@@ -1,5 +1,7 @@
-// Merging parts (output/parts/render_parts.hpp): the checks that they make one image, and the band by band
-// merge into an output file.
+// Merging parts (output/parts/render_parts.hpp): the checks that they make one image, and the band
+// by band merge into an output file.
+#include <fmt/format.h>
+
 #include <algorithm>
 #include <map>
 #include <memory>
@@ -7,13 +9,11 @@
 #include <stdexcept>
 #include <tuple>
 
-#include <fmt/format.h>
-
 #include "output/parts/frame_merge.hpp"
-#include "output/parts/render_parts.hpp"
-#include "output/tiled/streaming_image.hpp"
 #include "output/parts/part_file.hpp"
+#include "output/parts/render_parts.hpp"
 #include "output/tiled/row_encoder.hpp"
+#include "output/tiled/streaming_image.hpp"
 
 namespace fgr {
 namespace {

@@ -1,11 +1,11 @@
 #include "output/parts/render_identity.hpp"
 
-#include <cstdint>
-
 #include <fmt/format.h>
 
-#include "device/kernel_assembly.hpp"
+#include <cstdint>
+
 #include "camera/projection.hpp"
+#include "device/kernel_assembly.hpp"
 #include "scene/render_mode.hpp"
 
 namespace fgr {

@@ -8,8 +8,8 @@
 #include <utility>
 #include <vector>
 
-#include "render/renderer.hpp"
 #include "output/still_layers.hpp"
+#include "render/renderer.hpp"
 
 namespace fgr {
 

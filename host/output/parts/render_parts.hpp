@@ -23,9 +23,9 @@
 #include <utility>
 #include <vector>
 
-#include "render/renderer.hpp"
 #include "output/still_layers.hpp"
 #include "output/tiled/tiled_still.hpp"
+#include "render/renderer.hpp"
 
 namespace fgr {
 

@@ -1,14 +1,14 @@
 #pragma once
 // A frame's pixels encoded into an output file's interleaved samples a row at a time, through the
-// conversions whole-image stills use (output/still_layers.hpp), so a file streamed in pieces (a tiled
-// still, merged parts) holds what an untiled one would.
+// conversions whole-image stills use (output/still_layers.hpp), so a file streamed in pieces (a
+// tiled still, merged parts) holds what an untiled one would.
 
 #include <cstdint>
 #include <vector>
 
-#include "render/renderer.hpp"
 #include "output/tiled/streaming_image.hpp"
 #include "output/tiled/tiled_still.hpp"
+#include "render/renderer.hpp"
 
 namespace fgr {
 

@@ -1,5 +1,5 @@
-// Row-streaming PNG, OpenEXR and TIFF writers (output/tiled/streaming_image.hpp). Each holds only the
-// library's own buffers (a few rows at most); the caller's band of rows is written and dropped.
+// Row-streaming PNG, OpenEXR and TIFF writers (output/tiled/streaming_image.hpp). Each holds only
+// the library's own buffers (a few rows at most); the caller's band of rows is written and dropped.
 #include "output/tiled/streaming_image.hpp"
 
 #include <ImfChannelList.h>
@@ -36,7 +36,8 @@ bool has_channels(const RowLayout& layout, std::initializer_list<const char*> na
 
 // PNG and TIFF hold RGB or RGBA as 8-bit (sRGB) or 16-bit (linear) samples.
 void check_rgb_layout(const fs::path& path, const RowLayout& layout, const char* format) {
-    const bool rgb = has_channels(layout, {"R", "G", "B"}) || has_channels(layout, {"R", "G", "B", "A"});
+    const bool rgb =
+        has_channels(layout, {"R", "G", "B"}) || has_channels(layout, {"R", "G", "B", "A"});
     if (!rgb || layout.type == SampleType::F32) {
         throw std::invalid_argument("cannot write " + quoted(path) + ": " + format +
                                     " output holds R, G, B and optionally A at 8 or 16 bits");
@@ -44,7 +45,6 @@ void check_rgb_layout(const fs::path& path, const RowLayout& layout, const char*
 }
 
 // --- PNG -----------------------------------------------------------------------------------
-
 
 // libpng's handles and the file, released however the writer ends (also when its constructor
 // throws, which runs no destructor of the writer itself).
@@ -290,9 +290,12 @@ private:
 
 size_t sample_bytes(SampleType type) {
     switch (type) {
-        case SampleType::U8: return 1;
-        case SampleType::U16: return 2;
-        case SampleType::F32: return 4;
+        case SampleType::U8:
+            return 1;
+        case SampleType::U16:
+            return 2;
+        case SampleType::F32:
+            return 4;
     }
     return 1;
 }
@@ -305,9 +308,9 @@ ImageFormat image_format_of(const fs::path& path) {
     throw std::invalid_argument("output " + quoted(path) + " must be a .png, .exr or .tif file");
 }
 
-std::unique_ptr<StreamingImageWriter> open_streaming_image(const fs::path& path,
-                                                           ImageFormat format, int width,
-                                                           int height, const RowLayout& layout,
+std::unique_ptr<StreamingImageWriter> open_streaming_image(const fs::path& path, ImageFormat format,
+                                                           int width, int height,
+                                                           const RowLayout& layout,
                                                            const ExrPlacement& placement) {
     if (width < 1 || height < 1) {
         throw std::invalid_argument("cannot write " + quoted(path) + ": image is " +
@@ -325,10 +328,12 @@ std::unique_ptr<StreamingImageWriter> open_streaming_image(const fs::path& path,
                                     "outside the image");
     }
     switch (format) {
-        case ImageFormat::Png: return std::make_unique<PngStream>(path, width, height, layout);
+        case ImageFormat::Png:
+            return std::make_unique<PngStream>(path, width, height, layout);
         case ImageFormat::Exr:
             return std::make_unique<ExrStream>(path, width, height, layout, placement);
-        case ImageFormat::Tiff: return std::make_unique<TiffStream>(path, width, height, layout);
+        case ImageFormat::Tiff:
+            return std::make_unique<TiffStream>(path, width, height, layout);
     }
     throw std::invalid_argument("unknown image format");
 }

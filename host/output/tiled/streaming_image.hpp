@@ -47,9 +47,9 @@ public:
 // (OpenEXR's display window is the whole image, its data window the rows written), and text
 // attributes for its header (fgr's part files, output/parts/render_parts.hpp).
 struct ExrPlacement {
-    int image_width = 0;   // the whole image; 0: the rows written are the whole image
+    int image_width = 0;  // the whole image; 0: the rows written are the whole image
     int image_height = 0;
-    int x = 0;             // the written rectangle's top-left corner in the whole image
+    int x = 0;  // the written rectangle's top-left corner in the whole image
     int y = 0;
     std::vector<std::pair<std::string, std::string>> attributes;  // name, value
     bool placed() const { return image_width > 0; }

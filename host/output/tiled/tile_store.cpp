@@ -1,17 +1,16 @@
 #include "output/tiled/tile_store.hpp"
 
+#include <fmt/format.h>
+#include <spdlog/spdlog.h>
 #include <zlib.h>
 
 #include <cstring>
 #include <stdexcept>
 #include <string>
 
-#include <fmt/format.h>
-#include <spdlog/spdlog.h>
-
+#include "output/parts/render_identity.hpp"
 #include "util/atomic_file.hpp"
 #include "util/files.hpp"
-#include "output/parts/render_identity.hpp"
 
 namespace fgr {
 namespace {
@@ -33,9 +32,12 @@ struct BandHeader {
 
 std::string format_name(ImageFormat format) {
     switch (format) {
-        case ImageFormat::Png: return "png";
-        case ImageFormat::Exr: return "exr";
-        case ImageFormat::Tiff: return "tiff";
+        case ImageFormat::Png:
+            return "png";
+        case ImageFormat::Exr:
+            return "exr";
+        case ImageFormat::Tiff:
+            return "tiff";
     }
     return "?";
 }
@@ -50,15 +52,16 @@ nlohmann::json render_identity(const Renderer& renderer, const FrameRequest& req
         identity[key] = value;
     }
     std::string channels;
-    for (const std::string& name : layout.channels) channels += (channels.empty() ? "" : ",") + name;
+    for (const std::string& name : layout.channels)
+        channels += (channels.empty() ? "" : ",") + name;
     identity["samples"] = request.samples;
     identity["seed"] = request.path.seed;
     identity["tiles"] = fmt::format("{} rows a band, {} columns a tile, {} padding", plan.band_rows,
                                     plan.tile_width, plan.padding);
-    identity["output"] = fmt::format("{} {} {}-bit exposure {:.9g} tone map {}",
-                                     format_name(output.format), channels,
-                                     8 * sample_bytes(layout.type), output.display.exposure,
-                                     static_cast<int>(output.display.tone_map));
+    identity["output"] =
+        fmt::format("{} {} {}-bit exposure {:.9g} tone map {}", format_name(output.format),
+                    channels, 8 * sample_bytes(layout.type), output.display.exposure,
+                    static_cast<int>(output.display.tone_map));
     return identity;
 }
 
@@ -82,11 +85,14 @@ TileStore::TileStore(fs::path directory, nlohmann::json identity, bool resume,
         } catch (const std::exception&) {
             throw std::runtime_error(fmt::format(
                 "cannot resume from '{}': its render.json is missing or damaged (delete the "
-                "directory to start again)", directory_.string()));
+                "directory to start again)",
+                directory_.string()));
         }
         if (kept.value("fgr_tile_store", 0) != kStoreVersion || !kept.contains("render")) {
-            throw std::runtime_error(fmt::format("cannot resume from '{}': not a tile store of "
-                                                 "this fgr version", directory_.string()));
+            throw std::runtime_error(
+                fmt::format("cannot resume from '{}': not a tile store of "
+                            "this fgr version",
+                            directory_.string()));
         }
         for (const auto& [key, value] : identity.items()) {
             if (!kept["render"].contains(key) || kept["render"][key] != value) {
@@ -102,11 +108,13 @@ TileStore::TileStore(fs::path directory, nlohmann::json identity, bool resume,
                      bands_kept());
         return;
     }
-    if (resume) spdlog::info("nothing to resume in '{}': starting from the first tile", directory_.string());
+    if (resume)
+        spdlog::info("nothing to resume in '{}': starting from the first tile",
+                     directory_.string());
     fs::create_directories(directory_, error);
     if (error) {
-        throw std::runtime_error(fmt::format("cannot create '{}': {}", directory_.string(),
-                                             error.message()));
+        throw std::runtime_error(
+            fmt::format("cannot create '{}': {}", directory_.string(), error.message()));
     }
     const nlohmann::json contents = {{"fgr_tile_store", kStoreVersion}, {"render", identity}};
     write_text_file_atomically(manifest, contents.dump(2) + "\n");
@@ -143,13 +151,14 @@ std::optional<long> TileStore::load_band(int band, std::vector<uint8_t>& rows) c
         header.band != uint32_t(band)) {
         return damaged("not this band");
     }
-    if (header.raw_bytes != rows.size() || header.compressed_bytes != bytes.size() - sizeof header) {
+    if (header.raw_bytes != rows.size() ||
+        header.compressed_bytes != bytes.size() - sizeof header) {
         return damaged("wrong size");
     }
     uLongf size = static_cast<uLongf>(rows.size());
-    const int status = uncompress(rows.data(), &size,
-                                  reinterpret_cast<const Bytef*>(bytes.data() + sizeof header),
-                                  static_cast<uLong>(header.compressed_bytes));
+    const int status =
+        uncompress(rows.data(), &size, reinterpret_cast<const Bytef*>(bytes.data() + sizeof header),
+                   static_cast<uLong>(header.compressed_bytes));
     if (status != Z_OK || size != rows.size()) return damaged("does not decompress");
     return header.hits;
 }
@@ -176,7 +185,9 @@ void TileStore::save_band(int band, const std::vector<uint8_t>& rows, long hits)
 void TileStore::remove() {
     std::error_code error;
     fs::remove_all(directory_, error);
-    if (error) spdlog::warn("could not remove the tile store '{}': {}", directory_.string(), error.message());
+    if (error)
+        spdlog::warn("could not remove the tile store '{}': {}", directory_.string(),
+                     error.message());
 }
 
 }  // namespace fgr

@@ -1,6 +1,9 @@
-// Tiled stills (output/tiled/tiled_still.hpp): the plan, the loop over bands and tiles, and the encoding
-// of a tile's pixels into the output's samples. The tile store is in tile_store.cpp.
+// Tiled stills (output/tiled/tiled_still.hpp): the plan, the loop over bands and tiles, and the
+// encoding of a tile's pixels into the output's samples. The tile store is in tile_store.cpp.
 #include "output/tiled/tiled_still.hpp"
+
+#include <fmt/format.h>
+#include <spdlog/spdlog.h>
 
 #include <algorithm>
 #include <chrono>
@@ -8,9 +11,6 @@
 #include <cstring>
 #include <stdexcept>
 #include <vector>
-
-#include <fmt/format.h>
-#include <spdlog/spdlog.h>
 
 #include "device/kernel_assembly.hpp"
 #include "output/still_layers.hpp"
@@ -42,8 +42,10 @@ RowLayout output_row_layout(const TiledOutput& output) {
     layout.type = SampleType::F32;
     // In the order exr_layers gives them.
     layout.channels = {"R", "G", "B"};
-    if (output.aovs.albedo) layout.channels.insert(layout.channels.end(), {"albedo.R", "albedo.G", "albedo.B"});
-    if (output.aovs.normal) layout.channels.insert(layout.channels.end(), {"normal.X", "normal.Y", "normal.Z"});
+    if (output.aovs.albedo)
+        layout.channels.insert(layout.channels.end(), {"albedo.R", "albedo.G", "albedo.B"});
+    if (output.aovs.normal)
+        layout.channels.insert(layout.channels.end(), {"normal.X", "normal.Y", "normal.Z"});
     if (output.aovs.depth) layout.channels.push_back("depth.Z");
     if (output.aovs.alpha) layout.channels.push_back("A");
     return layout;
@@ -66,9 +68,11 @@ TilePlan plan_tiles(int width, int height, int tile_size, size_t pixel_bytes, in
     // What one launch may render: a side of kMaxImageSide with the padding on both sides.
     const int max_side = round_down_to_4(kMaxImageSide - 2 * padding);
     const long budget_rows = long(kBandBudgetBytes / (size_t(width) * pixel_bytes));
-    plan.band_rows = std::max(4, round_down_to_4(std::min<long>({tile_size, budget_rows, max_side})));
+    plan.band_rows =
+        std::max(4, round_down_to_4(std::min<long>({tile_size, budget_rows, max_side})));
     const long area = long(tile_size) * tile_size;
-    plan.tile_width = std::max(4, round_down_to_4(std::min<long>(area / plan.band_rows + 3, max_side)));
+    plan.tile_width =
+        std::max(4, round_down_to_4(std::min<long>(area / plan.band_rows + 3, max_side)));
     return plan;
 }
 
@@ -85,10 +89,11 @@ std::filesystem::path tile_store_path(const std::filesystem::path& output) {
     return output.parent_path() / (output.filename().string() + ".fgr-tiles");
 }
 
-TiledRender::TiledRender(Renderer& renderer, const FrameRequest& request,
-                         const TiledOutput& output, int tile_size)
+TiledRender::TiledRender(Renderer& renderer, const FrameRequest& request, const TiledOutput& output,
+                         int tile_size)
     : renderer_(renderer), request_(request), output_(output), layout_(output_row_layout(output)) {
-    if (!request.region.whole()) throw std::invalid_argument("a tiled still renders the whole image");
+    if (!request.region.whole())
+        throw std::invalid_argument("a tiled still renders the whole image");
     plan_ = plan_tiles(request.width, request.height, tile_size, layout_.pixel_bytes(),
                        region_padding(renderer.switches().mode));
 }
@@ -111,9 +116,12 @@ std::optional<EncodedTile> TiledRender::render(long index) const {
     encoded.rows.resize(row_bytes * size_t(tile.height));
     for (int y = 0; y < tile.height; ++y) {
         const int fy = tile.y - region.y + y;
-        encoder.encode(fy, tile.x - region.x, tile.width, encoded.rows.data() + size_t(y) * row_bytes);
+        encoder.encode(fy, tile.x - region.x, tile.width,
+                       encoded.rows.data() + size_t(y) * row_bytes);
         for (int x = 0; x < tile.width; ++x) {
-            encoded.hits += frame.depth[size_t(fy) * size_t(region.width) + size_t(tile.x - region.x + x)] >= 0.0f;
+            encoded.hits +=
+                frame.depth[size_t(fy) * size_t(region.width) + size_t(tile.x - region.x + x)] >=
+                0.0f;
         }
     }
     return encoded;
@@ -124,9 +132,11 @@ TiledFile::TiledFile(const TiledRender& render, const TiledOutput& output, bool 
       pixel_bytes_(render.layout().pixel_bytes()),
       store_path_(tile_store_path(output.path)) {
     // The file first: if it cannot be written, no tile store is made either.
-    writer_ = open_streaming_image(output.path, output.format, plan_.width, plan_.height, render.layout());
+    writer_ = open_streaming_image(output.path, output.format, plan_.width, plan_.height,
+                                   render.layout());
     store_ = std::make_unique<TileStore>(
-        store_path_, render_identity(render.renderer(), render.request(), output, render.layout(), plan_),
+        store_path_,
+        render_identity(render.renderer(), render.request(), output, render.layout(), plan_),
         resume, output.path);
     band_in_store_.assign(size_t(plan_.bands()), false);
     std::vector<uint8_t> scratch;
@@ -153,7 +163,8 @@ void TiledFile::add(long index, const EncodedTile& tile) {
     const int band = static_cast<int>(index / plan_.tiles_per_band());
     const Rect rect = plan_.tile(index);
     const size_t row_bytes = pixel_bytes_ * size_t(rect.width);
-    if (band < next_band_ || band_in_store_[size_t(band)] || tile.rows.size() != row_bytes * size_t(rect.height)) {
+    if (band < next_band_ || band_in_store_[size_t(band)] ||
+        tile.rows.size() != row_bytes * size_t(rect.height)) {
         throw std::logic_error(fmt::format("tile {} does not belong in the open bands", index));
     }
     auto [it, opened] = open_.try_emplace(band);
@@ -179,7 +190,8 @@ void TiledFile::write_ready_bands() {
         if (band_in_store_[size_t(b)]) {
             kept.resize(pixel_bytes_ * size_t(plan_.width) * size_t(band_rows(b)));
             const std::optional<long> hits = store_->load_band(b, kept);
-            if (!hits) throw std::runtime_error(fmt::format("band {} of the tile store vanished", b));
+            if (!hits)
+                throw std::runtime_error(fmt::format("band {} of the tile store vanished", b));
             hits_ += *hits;
             writer_->write_rows(kept.data(), band_rows(b));
         } else {
@@ -196,7 +208,8 @@ void TiledFile::write_ready_bands() {
 
 void TiledFile::finish() {
     if (next_band_ < plan_.bands()) {
-        throw std::logic_error(fmt::format("band {} of {} was never completed", next_band_, plan_.bands()));
+        throw std::logic_error(
+            fmt::format("band {} of {} was never completed", next_band_, plan_.bands()));
     }
     writer_->finish();
     store_->remove();

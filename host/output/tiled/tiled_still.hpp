@@ -22,10 +22,10 @@
 #include <string>
 #include <vector>
 
-#include "render/renderer.hpp"
 #include "output/still_image.hpp"
 #include "output/still_layers.hpp"
 #include "output/tiled/streaming_image.hpp"
+#include "render/renderer.hpp"
 
 namespace fgr {
 
@@ -33,9 +33,9 @@ namespace fgr {
 struct TiledOutput {
     std::filesystem::path path;
     ImageFormat format = ImageFormat::Png;
-    int bit_depth = 8;    // PNG and TIFF: 8 (tone-mapped sRGB) or 16 (linear, exposure only)
-    bool alpha = false;   // PNG and TIFF: straight alpha of coverage (EXR: aovs.alpha)
-    Aovs aovs{};          // EXR: layers beside R, G, B
+    int bit_depth = 8;           // PNG and TIFF: 8 (tone-mapped sRGB) or 16 (linear, exposure only)
+    bool alpha = false;          // PNG and TIFF: straight alpha of coverage (EXR: aovs.alpha)
+    Aovs aovs{};                 // EXR: layers beside R, G, B
     DisplayTransform display{};  // exposure and tone map (8-bit); exposure (16-bit linear)
 };
 
@@ -46,9 +46,9 @@ RowLayout output_row_layout(const TiledOutput& output);
 struct TilePlan {
     int width = 0;
     int height = 0;
-    int band_rows = 0;    // rows per band (the last may have fewer)
-    int tile_width = 0;   // columns per tile (the last of a band may have fewer)
-    int padding = 0;      // pixels rendered around each tile for neighbour-reading shading
+    int band_rows = 0;   // rows per band (the last may have fewer)
+    int tile_width = 0;  // columns per tile (the last of a band may have fewer)
+    int padding = 0;     // pixels rendered around each tile for neighbour-reading shading
     int bands() const { return (height + band_rows - 1) / band_rows; }
     int tiles_per_band() const { return (width + tile_width - 1) / tile_width; }
     long tiles() const { return long(bands()) * tiles_per_band(); }
@@ -79,10 +79,10 @@ int region_padding(RenderMode mode);
 PixelRegion padded_region(const PixelRegion& tile, int padding, int width, int height);
 
 struct TiledProgress {
-    long tiles_done = 0;      // including those taken from an earlier run
+    long tiles_done = 0;  // including those taken from an earlier run
     long tiles_total = 0;
-    long tiles_resumed = 0;   // taken from the tile store, not rendered now
-    double seconds = 0.0;     // since this run started
+    long tiles_resumed = 0;        // taken from the tile store, not rendered now
+    double seconds = 0.0;          // since this run started
     double rays_per_second = 0.0;  // camera rays (pixels x samples) rendered by this run
 };
 
@@ -98,9 +98,9 @@ struct TiledResult {
     bool interrupted = false;  // stopped by TiledSettings::interrupted: no file was written
     long tiles = 0;
     long tiles_resumed = 0;
-    long hits = 0;             // pixels whose camera ray met the surface (rendered now)
-    int samples = 0;           // per pixel
-    double render_ms = 0.0;    // rendering, encoding and writing, this run
+    long hits = 0;           // pixels whose camera ray met the surface (rendered now)
+    int samples = 0;         // per pixel
+    double render_ms = 0.0;  // rendering, encoding and writing, this run
     TilePlan plan;
     std::filesystem::path store;  // the tile store (kept when interrupted)
 };

@@ -16,9 +16,9 @@ namespace {
 
 // Loaded once per process (the module stays loaded: FFmpeg keeps global state).
 const video_backend::Table& backend() {
-    static const video_backend::Table& table = module_table<video_backend::Table>(
-        video_backend::kModuleName, video_backend::kEntryPoint, video_backend::kVersion,
-        "video encoding");
+    static const video_backend::Table& table =
+        module_table<video_backend::Table>(video_backend::kModuleName, video_backend::kEntryPoint,
+                                           video_backend::kVersion, "video encoding");
     return table;
 }
 

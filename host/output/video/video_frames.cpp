@@ -1,11 +1,11 @@
 #include "output/video/video_frames.hpp"
 
-#include <stdexcept>
-
 #include <spdlog/spdlog.h>
 
-#include "device/kernel_assembly.hpp"
+#include <stdexcept>
+
 #include "camera/view_validation.hpp"
+#include "device/kernel_assembly.hpp"
 
 namespace fgr {
 

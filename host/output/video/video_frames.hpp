@@ -6,8 +6,8 @@
 #include <vector>
 
 #include "camera/camera.hpp"
-#include "render/precision.hpp"
 #include "output/still_image.hpp"
+#include "render/precision.hpp"
 
 namespace fgr {
 

@@ -1,10 +1,10 @@
 #include "output/video/video_timing.hpp"
 
+#include <fmt/format.h>
+
 #include <algorithm>
 #include <cmath>
 #include <stdexcept>
-
-#include <fmt/format.h>
 
 namespace fgr {
 

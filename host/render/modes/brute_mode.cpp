@@ -24,8 +24,8 @@ int BruteMode::extra_planes(const KernelSwitches& switches) const {
 void BruteMode::bind(cl::Kernel& kernel, const FrameRequest& request, const TileLayout& layout) {
     const int floats = layout.plane_size();
     const PixelRegion region = rendered_region(request);
-    const bool same_image = floats == state_floats_ && region.width == state_width_ &&
-                            region.height == state_height_;
+    const bool same_image =
+        floats == state_floats_ && region.width == state_width_ && region.height == state_height_;
     if (!same_image) {
         state_ = cl::Buffer(device_.context, CL_MEM_READ_WRITE, sizeof(float) * floats);
         state_floats_ = floats;

@@ -27,9 +27,9 @@ private:
     cl::Kernel shade_kernel_;
     cl::Buffer lights_;
     cl_int light_count_;
-    bool stats_;  // KernelSwitches::stats: the inside tests' plane
-    bool aovs_;   // KernelSwitches::aovs: coverage and foreground, from the depth on the host
-    cl::Buffer state_;      // each pixel's best depth, tile-major; -1: no hit yet
+    bool stats_;        // KernelSwitches::stats: the inside tests' plane
+    bool aovs_;         // KernelSwitches::aovs: coverage and foreground, from the depth on the host
+    cl::Buffer state_;  // each pixel's best depth, tile-major; -1: no hit yet
     int state_floats_ = 0;  // its size
     int state_width_ = 0, state_height_ = 0;
 };

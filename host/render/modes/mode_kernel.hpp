@@ -8,8 +8,8 @@
 #include <vector>
 
 #include "device/opencl_device.hpp"
-#include "scene/render_mode.hpp"
 #include "render/renderer.hpp"
+#include "scene/render_mode.hpp"
 #include "scene/scene.hpp"
 
 namespace fgr {

@@ -1,12 +1,11 @@
 // Which host module serves which render mode.
+#include <glm/geometric.hpp>
+#include <stdexcept>
+
 #include "render/modes/brute_mode.hpp"
 #include "render/modes/mode_kernel.hpp"
 #include "render/modes/path_mode.hpp"
 #include "render/modes/shaded_mode.hpp"
-
-#include <stdexcept>
-
-#include <glm/geometric.hpp>
 
 namespace fgr {
 
@@ -42,9 +41,9 @@ std::vector<float> scene_light_values(const Scene& scene) {
     for (const Light& light : scene.lights) {
         const glm::vec3 vector =
             light.type == LightType::Directional ? glm::normalize(light.vector) : light.vector;
-        values.insert(values.end(), {light.type == LightType::Point ? 1.0f : 0.0f, vector.x,
-                                     vector.y, vector.z, light.colour.r, light.colour.g,
-                                     light.colour.b, light.intensity});
+        values.insert(values.end(),
+                      {light.type == LightType::Point ? 1.0f : 0.0f, vector.x, vector.y, vector.z,
+                       light.colour.r, light.colour.g, light.colour.b, light.intensity});
     }
     return values;
 }
@@ -53,8 +52,10 @@ std::unique_ptr<ModeKernel> make_mode_kernel(const KernelSwitches& switches,
                                              const ComputeDevice& device,
                                              const cl::Program& program, const Scene& scene) {
     switch (switches.mode) {
-        case RenderMode::Shaded: return std::make_unique<ShadedMode>(device, scene, switches);
-        case RenderMode::Path: return std::make_unique<PathMode>(device, scene, switches);
+        case RenderMode::Shaded:
+            return std::make_unique<ShadedMode>(device, scene, switches);
+        case RenderMode::Path:
+            return std::make_unique<PathMode>(device, scene, switches);
         case RenderMode::Brute:
             return std::make_unique<BruteMode>(device, program, scene, switches);
     }

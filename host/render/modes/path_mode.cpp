@@ -2,7 +2,6 @@
 
 #include <algorithm>
 #include <cmath>
-
 #include <glm/geometric.hpp>
 #include <glm/trigonometric.hpp>
 
@@ -37,7 +36,7 @@ enum PathFlags : cl_int {
 float luminance(glm::vec3 rgb) { return 0.2126f * rgb.r + 0.7152f * rgb.g + 0.0722f * rgb.b; }
 
 struct LightList {
-    std::vector<float> values;    // kPathLightFloats per light
+    std::vector<float> values;  // kPathLightFloats per light
     float environment_pick = 1.0f;
 };
 
@@ -154,7 +153,8 @@ void PathMode::bind(cl::Kernel& kernel, const FrameRequest& request, const TileL
     prepare(settings);
     PathSettingsArgument argument{};
     argument.max_bounces = settings.max_bounces;
-    argument.roulette_depth = settings.roulette_depth > 0 ? settings.roulette_depth : kMaxBounces + 1;
+    argument.roulette_depth =
+        settings.roulette_depth > 0 ? settings.roulette_depth : kMaxBounces + 1;
     argument.radiance_clamp = settings.radiance_clamp;
     argument.flags = (settings.light_sampling ? kLightSampling : 0) | (settings.mis ? kMis : 0) |
                      (settings.environment_importance ? kEnvironmentImportance : 0) |
@@ -166,8 +166,7 @@ void PathMode::bind(cl::Kernel& kernel, const FrameRequest& request, const TileL
     kernel.setArg(kFirstModeArgument + 1, argument);
     kernel.setArg(kFirstModeArgument + 2, environment_data_);
     kernel.setArg(kFirstModeArgument + 3,
-                  environment_info(bound_environment_->tables,
-                                   bound_environment_->rotation_degrees,
+                  environment_info(bound_environment_->tables, bound_environment_->rotation_degrees,
                                    bound_environment_->intensity));
 }
 

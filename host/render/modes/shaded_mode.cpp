@@ -62,14 +62,15 @@ MarchStats march_stats(std::span<const float> planes, const TileLayout& layout, 
 }
 
 // The deepest and mean level of the IFS nodes the pixels hit (plane `index`; -1 where missed).
-IfsLevels hit_levels(std::span<const float> planes, const TileLayout& layout, int index,
-                     int width, int height) {
+IfsLevels hit_levels(std::span<const float> planes, const TileLayout& layout, int index, int width,
+                     int height) {
     const size_t offset = static_cast<size_t>(index) * static_cast<size_t>(layout.plane_size());
     IfsLevels levels;
     long sum = 0, hits = 0;
     for (int y = 0; y < height; ++y) {
         for (int x = 0; x < width; ++x) {
-            const int level = static_cast<int>(planes[offset + static_cast<size_t>(layout.index(x, y))]);
+            const int level =
+                static_cast<int>(planes[offset + static_cast<size_t>(layout.index(x, y))]);
             if (level < 0) continue;
             levels.deepest = std::max(levels.deepest, level);
             sum += level;
@@ -93,8 +94,7 @@ ShadedMode::ShadedMode(const ComputeDevice& device, const Scene& scene,
 int ShadedMode::extra_planes(const KernelSwitches& switches) const {
     // With stats: steps, out of steps, secondary rays' steps, IFS heap; IFS scenes: their level;
     // with aovs: the layers.
-    return (switches.stats ? kStatsPlanes : 0) + (ifs_ ? 1 : 0) +
-           (switches.aovs ? kAovPlanes : 0);
+    return (switches.stats ? kStatsPlanes : 0) + (ifs_ ? 1 : 0) + (switches.aovs ? kAovPlanes : 0);
 }
 
 void ShadedMode::bind(cl::Kernel& kernel, const FrameRequest&, const TileLayout&) {

@@ -15,7 +15,7 @@ public:
 private:
     cl::Buffer lights_;
     cl_int light_count_;
-    bool ifs_;  // an IFS scene: one more plane, the level each pixel's hit reached
+    bool ifs_;    // an IFS scene: one more plane, the level each pixel's hit reached
     bool stats_;  // KernelSwitches::stats: four planes of the primary rays' work
     bool aovs_;   // KernelSwitches::aovs: ten planes of layers (kAovPlanes)
 };

@@ -88,8 +88,8 @@ long ConePrepass::evaluations(const cl::Buffer& starts, const CameraFrame& camer
     if (!ran_) return 0;
     const int blocks = block_count(camera);
     std::vector<float> steps(static_cast<size_t>(blocks));
-    device_.queue.enqueueReadBuffer(starts, CL_TRUE, sizeof(float) * blocks,
-                                    sizeof(float) * blocks, steps.data());
+    device_.queue.enqueueReadBuffer(starts, CL_TRUE, sizeof(float) * blocks, sizeof(float) * blocks,
+                                    steps.data());
     return std::accumulate(steps.begin(), steps.end(), 0L,
                            [](long sum, float value) { return sum + static_cast<long>(value); });
 }

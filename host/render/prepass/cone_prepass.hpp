@@ -3,13 +3,12 @@
 // of pixels finds how far the block's camera rays can start from the eye; the render kernel reads
 // the distances (its argument `march_starts`).
 
+#include <CL/opencl.hpp>
 #include <vector>
 
-#include <CL/opencl.hpp>
-
-#include "render/camera_frame.hpp"
 #include "device/kernel_assembly.hpp"
 #include "device/opencl_device.hpp"
+#include "render/camera_frame.hpp"
 #include "render/renderer.hpp"
 #include "scene/scene.hpp"
 

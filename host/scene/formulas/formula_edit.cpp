@@ -1,17 +1,17 @@
 // Edits of a formula scene's sequence (scene/formulas/formula_edit.hpp).
 #include "scene/formulas/formula_edit.hpp"
 
+#include <fmt/format.h>
+
 #include <algorithm>
+#include <nlohmann/json.hpp>
 #include <numbers>
 #include <set>
 #include <string>
 
-#include <fmt/format.h>
-#include <nlohmann/json.hpp>
-
 #include "camera/view_json.hpp"
-#include "util/json_fields.hpp"
 #include "scene/parameters.hpp"
+#include "util/json_fields.hpp"
 
 namespace fgr {
 namespace {

@@ -1,39 +1,37 @@
 // Formula scene files (`NAME.formula.json`): reading and checking. The format is in sdk/README.md
 // ("Formula scenes and hybrids"); what it shares with IFS files (header, cameras, paths, lights)
 // is read by scene_json.
+#include <fmt/format.h>
+
 #include <algorithm>
 #include <cmath>
+#include <nlohmann/json.hpp>
 #include <set>
 #include <string_view>
 
-#include <fmt/format.h>
-#include <nlohmann/json.hpp>
-
-#include "util/json_fields.hpp"
-#include "scene/scene_json.hpp"
+#include "camera/view_validation.hpp"
 #include "scene/description_validation.hpp"
 #include "scene/formulas/formulas.hpp"
-#include "camera/view_validation.hpp"
+#include "scene/scene_json.hpp"
+#include "util/json_fields.hpp"
 
 namespace fgr {
 namespace {
 
-using nlohmann::json;
 using json_fields::check_keys;
 using json_fields::fail;
 using json_fields::finite_double;
 using json_fields::shown;
+using nlohmann::json;
 
 constexpr const char* kFormat = "fgr-formula";
 constexpr std::string_view kSuffix = ".formula.json";
 constexpr std::size_t kMaxTags = 16;
 
-
 bool is_tag(std::string_view tag) {
-    return !tag.empty() && tag.size() <= 32 &&
-           std::all_of(tag.begin(), tag.end(), [](char c) {
-               return (c >= 'a' && c <= 'z') || (c >= '0' && c <= '9') || c == '-';
-           });
+    return !tag.empty() && tag.size() <= 32 && std::all_of(tag.begin(), tag.end(), [](char c) {
+        return (c >= 'a' && c <= 'z') || (c >= '0' && c <= '9') || c == '-';
+    });
 }
 
 std::string known_formulas() {
@@ -90,7 +88,8 @@ FormulaSlot slot_from(const json& entry, std::size_t index) {
     if (entry.contains("repeat")) {
         slot.repeat = integer_from(entry, "repeat", 1, kFormulaMaxRepeat, where);
     }
-    for (const FormulaParam& param : slot.formula->params) slot.values.push_back(param.default_value);
+    for (const FormulaParam& param : slot.formula->params)
+        slot.values.push_back(param.default_value);
     if (entry.contains("parameters")) {
         const json& given = entry.at("parameters");
         const std::string params_where = fmt::format("{} ({})", where, slot.formula->name);
@@ -139,19 +138,22 @@ FormulaDistance distance_from(const json& document, const std::vector<FormulaSlo
         return s.formula->distance == FormulaDistance::Own;
     });
     if (own != sequence.end() && sequence.size() > 1) {
-        fail("a hybrid with {} (a formula with a distance of its own) needs \"distance\": "
-             "\"linear\" or \"logarithmic\"",
-             own->formula->name);
+        fail(
+            "a hybrid with {} (a formula with a distance of its own) needs \"distance\": "
+            "\"linear\" or \"logarithmic\"",
+            own->formula->name);
     }
     return sequence_distance(sequence);
 }
 
-// The strongest estimate the sequence allows (strongest_estimate); a file may ask for a weaker one (the delta estimate,
-// or an inside test), not a stronger one its formulas do not have.
+// The strongest estimate the sequence allows (strongest_estimate); a file may ask for a weaker one
+// (the delta estimate, or an inside test), not a stronger one its formulas do not have.
 FormulaEstimate estimate_from(const json& document, const FormulaScene& scene) {
-    const FormulaSlot& weakest = *std::max_element(
-        scene.sequence.begin(), scene.sequence.end(),
-        [](const FormulaSlot& a, const FormulaSlot& b) { return a.formula->estimate < b.formula->estimate; });
+    const FormulaSlot& weakest =
+        *std::max_element(scene.sequence.begin(), scene.sequence.end(),
+                          [](const FormulaSlot& a, const FormulaSlot& b) {
+                              return a.formula->estimate < b.formula->estimate;
+                          });
     const FormulaEstimate available = strongest_estimate(scene.sequence);
     if (!document.contains("estimate")) return available;
     const json& value = document.at("estimate");
@@ -172,8 +174,10 @@ FormulaEstimate estimate_from(const json& document, const FormulaScene& scene) {
              available == FormulaEstimate::Delta ? "\"delta\" or \"inside\"" : "\"inside\"");
     }
     if (asked == FormulaEstimate::Delta && scene.distance == FormulaDistance::Own) {
-        fail("\"estimate\": \"delta\" needs \"distance\" \"logarithmic\" or \"linear\" ({} "
-             "has a distance of its own)", scene.sequence[0].formula->name);
+        fail(
+            "\"estimate\": \"delta\" needs \"distance\" \"logarithmic\" or \"linear\" ({} "
+            "has a distance of its own)",
+            scene.sequence[0].formula->name);
     }
     return asked;
 }
@@ -193,18 +197,18 @@ void march_from(const json& document, FormulaScene& scene) {
     }
     bailout = std::min(bailout, max_bailout);
     if (document.contains("bailout")) {
-        bailout = static_cast<float>(
-            number_in(document.at("bailout"), 0.5, max_bailout, "\"bailout\""));
+        bailout =
+            static_cast<float>(number_in(document.at("bailout"), 0.5, max_bailout, "\"bailout\""));
     }
     if (document.contains("step_factor")) {
-        step_factor = static_cast<float>(
-            number_in(document.at("step_factor"), kFormulaMinStepFactor, kFormulaMaxStepFactor,
-                      "\"step_factor\""));
+        step_factor =
+            static_cast<float>(number_in(document.at("step_factor"), kFormulaMinStepFactor,
+                                         kFormulaMaxStepFactor, "\"step_factor\""));
     }
     if (document.contains("max_distance")) {
-        max_distance = static_cast<float>(
-            number_in(document.at("max_distance"), kFormulaMinMaxDistance, kFormulaMaxMaxDistance,
-                      "\"max_distance\""));
+        max_distance =
+            static_cast<float>(number_in(document.at("max_distance"), kFormulaMinMaxDistance,
+                                         kFormulaMaxMaxDistance, "\"max_distance\""));
     }
     scene.iterations = iterations;
     scene.bailout = bailout;
@@ -221,9 +225,9 @@ FormulaScene parse_checked(const std::string& text) {
     }
     const json document = scene_json::parse_object(text);
     check_keys(document,
-               {"format", "version", "id", "name", "description", "tags", "sequence",
-                "iterations", "bailout", "distance", "estimate", "step_factor", "max_distance",
-                "cameras", "camera_paths", "lights"},
+               {"format", "version", "id", "name", "description", "tags", "sequence", "iterations",
+                "bailout", "distance", "estimate", "step_factor", "max_distance", "cameras",
+                "camera_paths", "lights"},
                "top level");
     scene_json::check_format(document, kFormat, kFormulaFormatVersion);
     FormulaScene scene;

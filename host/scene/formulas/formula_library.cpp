@@ -10,8 +10,9 @@ namespace {
 
 FormulaParam scalar(const char* id, const char* label, float min_value, float max_value,
                     float default_value, const char* description) {
-    return {id, label, ParamType::Float, min_value, max_value,
-            {default_value, default_value, default_value}, description};
+    return {id,         label,     ParamType::Float,
+            min_value,  max_value, {default_value, default_value, default_value},
+            description};
 }
 
 FormulaParam vector(const char* id, const char* label, float min_value, float max_value, float x,
@@ -35,8 +36,8 @@ FormulaParam julia_w(float w) {
 // The rotation's parameters, last: axis and angle (degrees).
 void add_rotation(Formula& formula, float x, float y, float z, float degrees) {
     formula.rotation = true;
-    formula.params.push_back(vector("axis", "Rotation axis", -1.0f, 1.0f, x, y, z,
-                                    "the axis each step turns about"));
+    formula.params.push_back(
+        vector("axis", "Rotation axis", -1.0f, 1.0f, x, y, z, "the axis each step turns about"));
     formula.params.push_back(scalar("angle", "Rotation angle", -180.0f, 180.0f, degrees,
                                     "the turn each step adds, degrees"));
 }
@@ -135,45 +136,53 @@ std::vector<Formula> build_library() {
     std::vector<Formula> all;
     // --- bulbs ---
     all.push_back(bulb(formula("mandelbulb", "Mandelbulb", "bulbs", {"bulb", "power"},
-        "z^n + c in spherical coordinates, polar angle from +z",
-        "Daniel White and Paul Nylander, 2009 (skytopia.com)", D::Logarithmic, {power(8.0f)})));
-    all.push_back(bulb(formula("mandelbulb_latitude", "Mandelbulb (latitude)", "bulbs",
-        {"bulb", "power", "mandelbulber"},
+                               "z^n + c in spherical coordinates, polar angle from +z",
+                               "Daniel White and Paul Nylander, 2009 (skytopia.com)",
+                               D::Logarithmic, {power(8.0f)})));
+    all.push_back(bulb(formula(
+        "mandelbulb_latitude", "Mandelbulb (latitude)", "bulbs", {"bulb", "power", "mandelbulber"},
         "z^n + c with the polar angle from the xy-plane: Mandelbulber 2's Mandelbulb",
         "Mandelbulber 2 (Krzysztof Marczak et al.)", D::Logarithmic, {power(8.0f)})));
     all.push_back(bulb(formula("juliabulb", "Juliabulb", "bulbs", {"bulb", "power", "julia"},
-        "the Mandelbulb's step with a fixed constant: its Julia sets",
-        "Daniel White and Paul Nylander, 2009", D::Logarithmic,
-        {power(8.0f), julia(0.45f, 0.5f, 0.0f)})));
-    all.push_back(bulb(formula("juliabulb_latitude", "Juliabulb (latitude)", "bulbs",
-        {"bulb", "power", "julia", "mandelbulber"},
-        "the latitude-form Mandelbulb's step with a fixed constant",
-        "after White and Nylander, 2009, in Mandelbulber 2's angle convention", D::Logarithmic,
-        {power(8.0f), julia(0.45f, 0.5f, 0.0f)})));
-    all.push_back(low_power(bulb(formula("white_nylander", "White-Nylander power 2", "bulbs",
-        {"bulb", "polynomial"},
-        "the power-2 bulb written out as a polynomial: no trigonometry",
-        "Daniel White, 2009 (skytopia.com)", D::Logarithmic, {}))));
-    all.push_back(bulb(formula("mandelbar_bulb", "Mandelbar bulb", "bulbs",
-        {"bulb", "power", "tricorn"},
-        "the Mandelbulb of the mirror image (x, -y, z), the tricorn's conjugate in 3D",
-        "after Crowe, Hasson, Rippon and Strain-Clark, 1989 (the Mandelbar)", D::Logarithmic,
-        {power(8.0f)})));
-    all.push_back(bulb(formula("xenodreambuie", "Xenodreambuie", "bulbs", {"bulb", "power"},
+                               "the Mandelbulb's step with a fixed constant: its Julia sets",
+                               "Daniel White and Paul Nylander, 2009", D::Logarithmic,
+                               {power(8.0f), julia(0.45f, 0.5f, 0.0f)})));
+    all.push_back(
+        bulb(formula("juliabulb_latitude", "Juliabulb (latitude)", "bulbs",
+                     {"bulb", "power", "julia", "mandelbulber"},
+                     "the latitude-form Mandelbulb's step with a fixed constant",
+                     "after White and Nylander, 2009, in Mandelbulber 2's angle convention",
+                     D::Logarithmic, {power(8.0f), julia(0.45f, 0.5f, 0.0f)})));
+    all.push_back(low_power(
+        bulb(formula("white_nylander", "White-Nylander power 2", "bulbs", {"bulb", "polynomial"},
+                     "the power-2 bulb written out as a polynomial: no trigonometry",
+                     "Daniel White, 2009 (skytopia.com)", D::Logarithmic, {}))));
+    all.push_back(
+        bulb(formula("mandelbar_bulb", "Mandelbar bulb", "bulbs", {"bulb", "power", "tricorn"},
+                     "the Mandelbulb of the mirror image (x, -y, z), the tricorn's conjugate in 3D",
+                     "after Crowe, Hasson, Rippon and Strain-Clark, 1989 (the Mandelbar)",
+                     D::Logarithmic, {power(8.0f)})));
+    all.push_back(bulb(formula(
+        "xenodreambuie", "Xenodreambuie", "bulbs", {"bulb", "power"},
         "the Mandelbulb with both angles turned after multiplying",
         "Xenodreambuie, fractalforums.com 2009 (Mandelbulber 2)", D::Logarithmic,
         {power(8.0f),
          scalar("alpha", "Azimuth turn", -180.0f, 180.0f, 0.0f, "added to n phi, degrees"),
          scalar("beta", "Polar turn", -180.0f, 180.0f, 45.0f, "added to n theta, degrees")})));
-    all.push_back(stepping(low_power(bulb(formula("makin", "Makin 3D", "bulbs", {"bulb", "polynomial", "revolution"},
-        "(x^2 - y^2 - z^2, 2xy, 2xz) + c: the Mandelbrot set turned about the real axis",
-        "David Makin, fractalforums.com 2009", D::Logarithmic, {}))), 0.7f));
-    all.push_back(stepping(low_power(bulb(formula("benesi_pine_tree", "Benesi pine tree", "bulbs",
-        {"bulb", "polynomial", "benesi"},
-        "x^2 - y^2 - z^2, and (y, z) turned by 2x / |(y, z)|: Benesi's pine tree",
-        "Matt Benesi, fractalforums.com 2010 (Mandelbulber 2)", D::Logarithmic, {}))), 0.7f));
-    Formula lambdabulb = inside_only(bulb(formula("lambdabulb", "Lambdabulb", "bulbs",
-        {"bulb", "power", "julia", "lambda"},
+    all.push_back(stepping(
+        low_power(bulb(formula(
+            "makin", "Makin 3D", "bulbs", {"bulb", "polynomial", "revolution"},
+            "(x^2 - y^2 - z^2, 2xy, 2xz) + c: the Mandelbrot set turned about the real axis",
+            "David Makin, fractalforums.com 2009", D::Logarithmic, {}))),
+        0.7f));
+    all.push_back(stepping(
+        low_power(bulb(formula(
+            "benesi_pine_tree", "Benesi pine tree", "bulbs", {"bulb", "polynomial", "benesi"},
+            "x^2 - y^2 - z^2, and (y, z) turned by 2x / |(y, z)|: Benesi's pine tree",
+            "Matt Benesi, fractalforums.com 2010 (Mandelbulber 2)", D::Logarithmic, {}))),
+        0.7f));
+    Formula lambdabulb = inside_only(bulb(formula(
+        "lambdabulb", "Lambdabulb", "bulbs", {"bulb", "power", "julia", "lambda"},
         "the logistic map lambda (z - z^n) in triplex numbers: the Mandelbulb's Lambda form",
         "Paul Nylander (bugman123.com) and fractalrebels, fractalforums.com 2011 (Mandelbulber 2's "
         "Mandelbulb Lambda), after Mandelbrot's lambda map (1980)",
@@ -182,12 +191,11 @@ std::vector<Formula> build_library() {
                              "the constant the difference is multiplied by")})));
     lambdabulb.view = view(2.8, -3.2, 1.8, 0.3, 0.0, 0.0, 50.0f);
     all.push_back(lambdabulb);
-    Formula riemann = inside_only(bulb(formula("riemann_sphere", "Riemann sphere", "bulbs",
-        {"bulb", "sphere", "stereographic"},
+    Formula riemann = inside_only(bulb(formula(
+        "riemann_sphere", "Riemann sphere", "bulbs", {"bulb", "sphere", "stereographic"},
         "stereographic projection, a sine fold in the plane and back, radius |z|^(2 (1 + s^2 + "
         "t^2))",
-        "msltoe, fractalforums.com 2011 (Mandelbulber 2's Riemann Sphere Msltoe)",
-        D::Logarithmic,
+        "msltoe, fractalforums.com 2011 (Mandelbulber 2's Riemann Sphere Msltoe)", D::Logarithmic,
         {scalar("scale", "Scale", 0.5f, 2.0f, 1.0f, "the sphere z is scaled onto"),
          scalar("shift_s", "Shift s", -3.14159f, 3.14159f, 0.0f, "the fold's phase along s"),
          scalar("shift_t", "Shift t", -3.14159f, 3.14159f, 0.0f, "the fold's phase along t")})));
@@ -195,9 +203,11 @@ std::vector<Formula> build_library() {
     riemann.view = view(4.0, -4.6, 2.8, 0.0, 0.0, 0.0, 50.0f);
     all.push_back(riemann);
     // --- hypercomplex ---
-    const Formula quaternion_plain = low_power(bulb(formula("quaternion", "Quaternion Mandelbrot",
-        "hypercomplex", {"hypercomplex", "quaternion"}, "q^2 + c in the quaternions, slice w = 0",
-        "Hart, Sandin and Kauffman, SIGGRAPH 1989", D::Logarithmic, {}), 12));
+    const Formula quaternion_plain = low_power(
+        bulb(formula("quaternion", "Quaternion Mandelbrot", "hypercomplex",
+                     {"hypercomplex", "quaternion"}, "q^2 + c in the quaternions, slice w = 0",
+                     "Hart, Sandin and Kauffman, SIGGRAPH 1989", D::Logarithmic, {}),
+             12));
     // the quaternions' squares are not conformal: `fgr check` measured 1.3x overestimates
     const Formula quaternion_base = stepping(quaternion_plain, 0.7f);
     all.push_back(quaternion_base);
@@ -207,14 +217,14 @@ std::vector<Formula> build_library() {
     quaternion_julia.origin = "Alan Norton, 1982; Hart, Sandin and Kauffman, SIGGRAPH 1989";
     quaternion_julia.params = {julia(-0.2f, 0.6f, 0.2f), julia_w(0.2f)};
     all.push_back(quaternion_julia);
-    Formula cubic = variant(quaternion_base, "quaternion_cubic", "Cubic quaternion Mandelbrot",
-                            {"hypercomplex", "quaternion", "cubic"},
-                            "q^3 + c in the quaternions, slice w = 0");
+    Formula cubic =
+        variant(quaternion_base, "quaternion_cubic", "Cubic quaternion Mandelbrot",
+                {"hypercomplex", "quaternion", "cubic"}, "q^3 + c in the quaternions, slice w = 0");
     all.push_back(cubic);
-    Formula cubic_julia = variant(quaternion_base, "quaternion_cubic_julia",
-                                  "Cubic quaternion Julia",
-                                  {"hypercomplex", "quaternion", "cubic", "julia"},
-                                  "q^3 + k for a fixed quaternion k, slice w = 0");
+    Formula cubic_julia =
+        variant(quaternion_base, "quaternion_cubic_julia", "Cubic quaternion Julia",
+                {"hypercomplex", "quaternion", "cubic", "julia"},
+                "q^3 + k for a fixed quaternion k, slice w = 0");
     cubic_julia.params = {julia(-0.5f, 0.4f, 0.2f), julia_w(0.0f)};
     all.push_back(cubic_julia);
     Formula qpower = variant(quaternion_base, "quaternion_power", "Quaternion power",
@@ -231,10 +241,10 @@ std::vector<Formula> build_library() {
     qpower_julia.params = {scalar("power", "Power", 2.0f, 8.0f, 3.0f, "the exponent n"),
                            julia(-0.2f, 0.6f, 0.2f), julia_w(0.0f)};
     all.push_back(qpower_julia);
-    Formula tetrabrot = inside_only(low_power(bulb(formula("tetrabrot", "Tetrabrot",
-        "hypercomplex", {"hypercomplex", "bicomplex"},
-        "the bicomplex Mandelbrot set z^2 + c, slice w = 0",
-        "Dominic Rochon, 2000, in Corrado Segre's bicomplex numbers (1892)", D::Own, {}),
+    Formula tetrabrot = inside_only(low_power(bulb(
+        formula("tetrabrot", "Tetrabrot", "hypercomplex", {"hypercomplex", "bicomplex"},
+                "the bicomplex Mandelbrot set z^2 + c, slice w = 0",
+                "Dominic Rochon, 2000, in Corrado Segre's bicomplex numbers (1892)", D::Own, {}),
         12)));
     tetrabrot.distance_reiterates = true;
     tetrabrot.view = view(1.4, -2.6, 1.6, -0.6, 0.0, 0.0, 50.0f);
@@ -255,99 +265,119 @@ std::vector<Formula> build_library() {
         scalar("min_radius", "Min radius", 0.1f, 1.5f, 0.5f, "the sphere fold's inner radius"),
         scalar("fixed_radius", "Fixed radius", 0.5f, 1.5f, 1.0f, "the sphere fold's outer radius")};
     all.push_back(box(formula("mandelbox", "Mandelbox", "boxes", {"box", "folding"},
-        "scale * sphere_fold(box_fold(z)) + c", "Tom Lowe, fractalforums.com 2010", D::Linear,
-        mandelbox_params), 16.0));
+                              "scale * sphere_fold(box_fold(z)) + c",
+                              "Tom Lowe, fractalforums.com 2010", D::Linear, mandelbox_params),
+                      16.0));
     std::vector<FormulaParam> julia_box = mandelbox_params;
     julia_box.push_back(julia(1.0f, 1.0f, 1.0f));
-    all.push_back(box(formula("mandelbox_julia", "Mandelbox Julia", "boxes",
-        {"box", "folding", "julia"}, "the Mandelbox's step with a fixed constant",
-        "after Tom Lowe, 2010", D::Linear, julia_box)));
-    Formula amazing = box(formula("amazing_box", "Amazing Box", "boxes",
-        {"box", "folding", "rotation"}, "the Mandelbox with a turn after the folds",
-        "Tglad's Amazing Box, fractalforums.com 2010 (Mandelbulber 2)", D::Linear,
-        mandelbox_params), 16.0);
+    all.push_back(
+        box(formula("mandelbox_julia", "Mandelbox Julia", "boxes", {"box", "folding", "julia"},
+                    "the Mandelbox's step with a fixed constant", "after Tom Lowe, 2010", D::Linear,
+                    julia_box)));
+    Formula amazing =
+        box(formula("amazing_box", "Amazing Box", "boxes", {"box", "folding", "rotation"},
+                    "the Mandelbox with a turn after the folds",
+                    "Tglad's Amazing Box, fractalforums.com 2010 (Mandelbulber 2)", D::Linear,
+                    mandelbox_params),
+            16.0);
     add_rotation(amazing, 0.3f, 0.4f, 1.0f, 12.0f);
     all.push_back(amazing);
-    Formula surf = box(formula("amazing_surf", "Amazing Surf", "boxes",
-        {"box", "folding", "surface", "rotation"},
-        "box fold on x and y only, sphere fold, scale: a surface along z",
-        "Kali and M. Benesi, fractalforums.com 2011 (Mandelbulber 2)", D::Linear,
-        {scalar("scale", "Scale", -3.0f, 3.0f, 1.8f, "the step's scale (|scale| at least 1.2)"),
-         vector("fold", "Fold", 0.0f, 2.0f, 1.0f, 1.0f, 0.0f,
-                "the box fold's limits on x and y (z is not folded)"),
-         scalar("min_radius", "Min radius", 0.1f, 1.0f, 0.5f, "the sphere fold's inner radius"),
-         scalar("c_scale", "c scale", 0.0f, 2.0f, 1.0f, "how much of the point is added")}), 6.0);
+    Formula surf = box(
+        formula(
+            "amazing_surf", "Amazing Surf", "boxes", {"box", "folding", "surface", "rotation"},
+            "box fold on x and y only, sphere fold, scale: a surface along z",
+            "Kali and M. Benesi, fractalforums.com 2011 (Mandelbulber 2)", D::Linear,
+            {scalar("scale", "Scale", -3.0f, 3.0f, 1.8f, "the step's scale (|scale| at least 1.2)"),
+             vector("fold", "Fold", 0.0f, 2.0f, 1.0f, 1.0f, 0.0f,
+                    "the box fold's limits on x and y (z is not folded)"),
+             scalar("min_radius", "Min radius", 0.1f, 1.0f, 0.5f, "the sphere fold's inner radius"),
+             scalar("c_scale", "c scale", 0.0f, 2.0f, 1.0f, "how much of the point is added")}),
+        6.0);
     add_rotation(surf, 0.0f, 0.0f, 1.0f, 0.0f);
     all.push_back(surf);
-    all.push_back(box(formula("abox", "ABox (per-axis folds)", "boxes", {"box", "folding"},
-        "the Mandelbox with a folding limit per axis",
-        "after Tglad's box fold (Mandelbulber 2's ABox Mod)", D::Linear,
-        {scalar("scale", "Scale", -3.0f, 3.0f, 2.0f, "the step's scale (|scale| at least 1.2)"),
-         vector("limits", "Folding limits", 0.5f, 1.5f, 1.0f, 1.0f, 1.3f, "per-axis box fold"),
-         scalar("min_radius", "Min radius", 0.1f, 1.5f, 0.5f, "the sphere fold's inner radius"),
-         scalar("fixed_radius", "Fixed radius", 0.5f, 1.5f, 1.0f,
-                "the sphere fold's outer radius")}), 16.0));
-    all.push_back(box(formula("abox_julia", "ABox Julia", "boxes", {"box", "folding", "julia"},
-        "the ABox's step with a fixed constant", "after Tglad's box fold (Mandelbulber 2's ABox Mod)",
-        D::Linear,
-        {scalar("scale", "Scale", -3.0f, 3.0f, 2.0f, "the step's scale (|scale| at least 1.2)"),
-         vector("limits", "Folding limits", 0.5f, 1.5f, 1.0f, 1.0f, 1.3f, "per-axis box fold"),
-         scalar("min_radius", "Min radius", 0.1f, 1.5f, 0.5f, "the sphere fold's inner radius"),
-         scalar("fixed_radius", "Fixed radius", 0.5f, 1.5f, 1.0f, "the sphere fold's outer radius"),
-         julia(1.0f, 1.0f, 1.0f)}), 9.0));
+    all.push_back(box(
+        formula(
+            "abox", "ABox (per-axis folds)", "boxes", {"box", "folding"},
+            "the Mandelbox with a folding limit per axis",
+            "after Tglad's box fold (Mandelbulber 2's ABox Mod)", D::Linear,
+            {scalar("scale", "Scale", -3.0f, 3.0f, 2.0f, "the step's scale (|scale| at least 1.2)"),
+             vector("limits", "Folding limits", 0.5f, 1.5f, 1.0f, 1.0f, 1.3f, "per-axis box fold"),
+             scalar("min_radius", "Min radius", 0.1f, 1.5f, 0.5f, "the sphere fold's inner radius"),
+             scalar("fixed_radius", "Fixed radius", 0.5f, 1.5f, 1.0f,
+                    "the sphere fold's outer radius")}),
+        16.0));
+    all.push_back(box(
+        formula(
+            "abox_julia", "ABox Julia", "boxes", {"box", "folding", "julia"},
+            "the ABox's step with a fixed constant",
+            "after Tglad's box fold (Mandelbulber 2's ABox Mod)", D::Linear,
+            {scalar("scale", "Scale", -3.0f, 3.0f, 2.0f, "the step's scale (|scale| at least 1.2)"),
+             vector("limits", "Folding limits", 0.5f, 1.5f, 1.0f, 1.0f, 1.3f, "per-axis box fold"),
+             scalar("min_radius", "Min radius", 0.1f, 1.5f, 0.5f, "the sphere fold's inner radius"),
+             scalar("fixed_radius", "Fixed radius", 0.5f, 1.5f, 1.0f,
+                    "the sphere fold's outer radius"),
+             julia(1.0f, 1.0f, 1.0f)}),
+        9.0));
     std::vector<FormulaParam> amazing_julia_params = mandelbox_params;
     amazing_julia_params.push_back(julia(1.0f, 0.6f, 0.8f));
     Formula amazing_julia = box(formula("amazing_box_julia", "Amazing Box Julia", "boxes",
-        {"box", "folding", "rotation", "julia"},
-        "the Amazing Box's step with a fixed constant",
-        "after Tglad's Amazing Box, fractalforums.com 2010", D::Linear, amazing_julia_params), 9.0);
+                                        {"box", "folding", "rotation", "julia"},
+                                        "the Amazing Box's step with a fixed constant",
+                                        "after Tglad's Amazing Box, fractalforums.com 2010",
+                                        D::Linear, amazing_julia_params),
+                                9.0);
     add_rotation(amazing_julia, 0.3f, 0.4f, 1.0f, 12.0f);
     all.push_back(amazing_julia);
     // --- kaleidoscopic IFS ---
-    Formula menger = kifs(formula("menger", "Menger sponge (KIFS)", "kifs", {"kifs", "cube"},
+    Formula menger = kifs(formula(
+        "menger", "Menger sponge (KIFS)", "kifs", {"kifs", "cube"},
         "the cube's fold and a scale of 3 about (1, 1, 1)", "Knighty, fractalforums.com 2010",
         D::Own,
         {scalar("scale", "Scale", 2.0f, 4.0f, 3.0f, "the step's scale"),
          vector("offset", "Offset", 0.0f, 2.0f, 1.0f, 1.0f, 1.0f, "the vertex scaled about")}));
     add_rotation(menger, 0.0f, 0.0f, 1.0f, 0.0f);
     all.push_back(menger);
-    Formula sierpinski = kifs(formula("sierpinski", "Sierpinski tetrahedron (KIFS)", "kifs",
-        {"kifs", "tetrahedron"}, "the tetrahedron's fold and a scale of 2 about (1, 1, 1)",
+    Formula sierpinski = kifs(formula(
+        "sierpinski", "Sierpinski tetrahedron (KIFS)", "kifs", {"kifs", "tetrahedron"},
+        "the tetrahedron's fold and a scale of 2 about (1, 1, 1)",
         "Knighty, fractalforums.com 2010", D::Own,
         {scalar("scale", "Scale", 1.5f, 3.0f, 2.0f, "the step's scale"),
          vector("offset", "Offset", 0.0f, 2.0f, 1.0f, 1.0f, 1.0f, "the vertex scaled about")}));
     add_rotation(sierpinski, 0.0f, 0.0f, 1.0f, 0.0f);
     all.push_back(sierpinski);
-    Formula octahedral = kifs(formula("octahedral", "Octahedral KIFS", "kifs",
-        {"kifs", "octahedron"}, "the octahedron's fold and a scale of 2 about a vertex",
-        "Knighty, fractalforums.com 2010", D::Own,
+    Formula octahedral = kifs(formula(
+        "octahedral", "Octahedral KIFS", "kifs", {"kifs", "octahedron"},
+        "the octahedron's fold and a scale of 2 about a vertex", "Knighty, fractalforums.com 2010",
+        D::Own,
         {scalar("scale", "Scale", 1.5f, 3.0f, 2.0f, "the step's scale"),
          vector("offset", "Offset", 0.0f, 2.0f, 1.0f, 0.0f, 0.0f, "the vertex scaled about")}));
     add_rotation(octahedral, 0.0f, 0.0f, 1.0f, 0.0f);
     all.push_back(octahedral);
-    Formula icosahedral = kifs(formula("icosahedral", "Icosahedral KIFS", "kifs",
-        {"kifs", "icosahedron"}, "the icosahedral fold and a scale about the icosahedron's vertex",
+    Formula icosahedral = kifs(formula(
+        "icosahedral", "Icosahedral KIFS", "kifs", {"kifs", "icosahedron"},
+        "the icosahedral fold and a scale about the icosahedron's vertex",
         "Knighty, fractalforums.com 2010", D::Own,
         {scalar("scale", "Scale", 1.5f, 4.0f, 3.0f, "the step's scale"),
          scalar("size", "Size", 0.5f, 2.0f, 1.0f, "the vertex's distance from the centre")}));
     add_rotation(icosahedral, 0.2f, 0.5f, 1.0f, 8.0f);
     all.push_back(icosahedral);
-    Formula dodecahedral = kifs(formula("dodecahedral", "Dodecahedral KIFS", "kifs",
-        {"kifs", "dodecahedron"},
+    Formula dodecahedral = kifs(formula(
+        "dodecahedral", "Dodecahedral KIFS", "kifs", {"kifs", "dodecahedron"},
         "the icosahedral fold and a scale about the dodecahedron's vertex",
         "Knighty, fractalforums.com 2010", D::Own,
         {scalar("scale", "Scale", 1.5f, 4.0f, 2.618034f, "the step's scale"),
          scalar("size", "Size", 0.5f, 2.0f, 1.0f, "the vertex's distance from the centre")}));
     add_rotation(dodecahedral, 0.0f, 0.0f, 1.0f, 0.0f);
     all.push_back(dodecahedral);
-    all.push_back(kifs(formula("cantor_dust", "Cantor dust (KIFS)", "kifs", {"kifs", "cube", "dust"},
+    all.push_back(kifs(formula(
+        "cantor_dust", "Cantor dust (KIFS)", "kifs", {"kifs", "cube", "dust"},
         "the octant's fold and a scale of 3 about (1, 1, 1): eight cubes of eight cubes",
         "Georg Cantor's set, 1883, in three dimensions; Knighty's KIFS form", D::Own,
         {scalar("scale", "Scale", 2.2f, 4.0f, 3.0f, "the step's scale"),
          vector("offset", "Offset", 0.0f, 2.0f, 1.0f, 1.0f, 1.0f, "the vertex scaled about")})));
     // --- Kleinian ---
-    Formula kleinian = formula("pseudo_kleinian", "Pseudo-Kleinian", "kleinian",
-        {"kleinian", "inversion", "interior"},
+    Formula kleinian = formula(
+        "pseudo_kleinian", "Pseudo-Kleinian", "kleinian", {"kleinian", "inversion", "interior"},
         "a per-axis box fold and a sphere inversion: a Kleinian group's limit set, nearly",
         "Knighty, fractalforums.com 2011", D::Own,
         {vector("box", "Box size", 0.5f, 2.0f, 1.0f, 1.0f, 1.3f, "the box fold's half sizes"),
@@ -360,7 +390,8 @@ std::vector<Formula> build_library() {
     kleinian.max_distance = 8.0f;
     kleinian.view = view(1.7, -1.5, 0.95, 0.0, 0.5, 0.2, 70.0f);
     all.push_back(kleinian);
-    Formula apollonian = formula("apollonian", "Apollonian packing", "kleinian",
+    Formula apollonian = formula(
+        "apollonian", "Apollonian packing", "kleinian",
         {"kleinian", "inversion", "spheres", "interior"},
         "the unit cell folded and inverted over and over: a packing of spheres, cut to one cell",
         "after Paul Nylander and Knighty, fractalforums.com 2010", D::Own,
@@ -371,8 +402,8 @@ std::vector<Formula> build_library() {
     apollonian.max_distance = 6.0f;
     apollonian.view = view(2.2, -2.8, 1.7, 0.0, 0.0, 0.0, 50.0f);
     all.push_back(apollonian);
-    Formula jos = inside_only(formula("jos_kleinian", "Jos Leys' Kleinian", "kleinian",
-        {"kleinian", "inversion", "mandelbulber"},
+    Formula jos = inside_only(formula(
+        "jos_kleinian", "Jos Leys' Kleinian", "kleinian", {"kleinian", "inversion", "mandelbulber"},
         "a slab wrapped into a box, a half turn above a waving line and a Moebius inversion: "
         "the limit set of a Kleinian group",
         "Jos Leys, fractalforums.com 2015 (after Knighty), in Mandelbulber 2's form", D::Linear,
@@ -428,9 +459,12 @@ float sequence_max_bailout(const std::vector<FormulaSlot>& sequence) {
 
 const char* formula_estimate_name(FormulaEstimate estimate) {
     switch (estimate) {
-        case FormulaEstimate::Analytic: return "analytic";
-        case FormulaEstimate::Delta: return "delta";
-        case FormulaEstimate::Inside: return "inside";
+        case FormulaEstimate::Analytic:
+            return "analytic";
+        case FormulaEstimate::Delta:
+            return "delta";
+        case FormulaEstimate::Inside:
+            return "inside";
     }
     return "analytic";
 }

@@ -1,14 +1,14 @@
 // A formula scene as the host renders it: its parameters and the OpenCL source written from the
 // sequence (scene/formulas/formulas.hpp).
-#include <algorithm>
-
 #include <fmt/format.h>
 
-#include "scene/scene_json.hpp"
-#include "scene/description_validation.hpp"
-#include "scene/formulas/formulas.hpp"
+#include <algorithm>
+
 #include "fgr/plugin.h"
 #include "fgr/scene_helpers.h"
+#include "scene/description_validation.hpp"
+#include "scene/formulas/formulas.hpp"
+#include "scene/scene_json.hpp"
 
 namespace fgr {
 namespace {
@@ -69,10 +69,9 @@ std::string distance_expression(const FormulaScene& scene) {
             return "select(r / fabs(dr), fgr_real(0.0f), dr == 0.0f)";
         case FormulaDistance::Own: {
             const Formula& formula = *scene.sequence[0].formula;
-            return fmt::format("formula_{}_distance({}{})", formula.name,
-                               arguments(scene, 0, false),
-                               formula.distance_reiterates ? ", param_iterations, param_bailout"
-                                                          : "");
+            return fmt::format(
+                "formula_{}_distance({}{})", formula.name, arguments(scene, 0, false),
+                formula.distance_reiterates ? ", param_iterations, param_bailout" : "");
         }
     }
     return "r";
@@ -92,7 +91,8 @@ std::string delta_distance(const FormulaScene& scene) {
         "        vec3 zn;\n"
         "        real wn, drn;\n"
         "        mask stepsn;\n"
-        "        formula_scene_iterate(v3_add(c, nudge), PARAMS_PASS, steps, INFINITY, 0, &unused,\n"
+        "        formula_scene_iterate(v3_add(c, nudge), PARAMS_PASS, steps, INFINITY, 0, "
+        "&unused,\n"
         "                              &zn, &wn, &drn, &stepsn);\n"
         "        const real slope = (sqrt(v3_length2(zn) + wn * wn) - r) / FORMULA_DELTA;\n"
         "        gradient2 += slope * slope;\n"
@@ -118,76 +118,84 @@ std::string formula_kernel_source(const FormulaScene& scene) {
     if (scene.estimate == FormulaEstimate::Inside) source += "#define FGR_SCENE_INSIDE_ONLY\n";
     source += fmt::format("#line 1 \"{}.formula.cl\"\n", scene.id);
     if (scene.estimate == FormulaEstimate::Delta) {
-        source += "/* the nudge of the delta estimate: small against the features, large against\n"
-                  " * float rounding of |z| after the steps */\n"
-                  "#define FORMULA_DELTA 1e-4f\n";
+        source +=
+            "/* the nudge of the delta estimate: small against the features, large against\n"
+            " * float rounding of |z| after the steps */\n"
+            "#define FORMULA_DELTA 1e-4f\n";
     }
     // The orbit of c: at most `limit` steps per lane, stopping once past the bailout; the final
     // z, w, dr and the steps each lane took.
-    source += "inline void formula_scene_iterate(const vec3 c, PARAMS, const mask limit,\n"
-              "                                  const float bailout2, const int record,\n"
-              "                                  orbit_trap* trap, vec3* z_out, real* w_out,\n"
-              "                                  real* dr_out, mask* steps_out) {\n";
+    source +=
+        "inline void formula_scene_iterate(const vec3 c, PARAMS, const mask limit,\n"
+        "                                  const float bailout2, const int record,\n"
+        "                                  orbit_trap* trap, vec3* z_out, real* w_out,\n"
+        "                                  real* dr_out, mask* steps_out) {\n";
     for (std::size_t slot = 0; slot < scene.sequence.size(); ++slot) {
         const Formula& formula = *scene.sequence[slot].formula;
         if (!formula.rotation) continue;
-        source += fmt::format("    const rotation3 turn_{} = rotation_about_axis({}, {});\n",
-                              slot + 1,
-                              "param_" + formula_param_id(scene.sequence.size(), slot, "axis"),
-                              "param_" + formula_param_id(scene.sequence.size(), slot, "angle"));
+        source +=
+            fmt::format("    const rotation3 turn_{} = rotation_about_axis({}, {});\n", slot + 1,
+                        "param_" + formula_param_id(scene.sequence.size(), slot, "axis"),
+                        "param_" + formula_param_id(scene.sequence.size(), slot, "angle"));
     }
-    source += "    vec3 z = c;\n"
-              "    real w = fgr_real(0.0f);\n"
-              "    real dr = fgr_real(1.0f);\n"
-              "    mask steps = (mask)(0);\n"
-              "    for (int i = 0; i < param_iterations; ++i) {\n"
-              "        const mask active = !(v3_length2(z) + w * w > bailout2) & (i < limit);\n"
-              "        if (!fgr_any(active)) break;\n"
-              "        const vec3 z_before = z;\n"
-              "        const real w_before = w, dr_before = dr;\n";
+    source +=
+        "    vec3 z = c;\n"
+        "    real w = fgr_real(0.0f);\n"
+        "    real dr = fgr_real(1.0f);\n"
+        "    mask steps = (mask)(0);\n"
+        "    for (int i = 0; i < param_iterations; ++i) {\n"
+        "        const mask active = !(v3_length2(z) + w * w > bailout2) & (i < limit);\n"
+        "        if (!fgr_any(active)) break;\n"
+        "        const vec3 z_before = z;\n"
+        "        const real w_before = w, dr_before = dr;\n";
     source += loop_body(scene);
-    source += "        z = v3_select(z_before, z, active);\n"
-              "        w = select(w_before, w, active);\n"
-              "        dr = select(dr_before, dr, active);\n"
-              "        steps = select(steps, steps + 1, active);\n"
-              "        if (record) *trap = trap_update(*trap, z, active);\n"
-              "    }\n"
-              "    *z_out = z;\n"
-              "    *w_out = w;\n"
-              "    *dr_out = dr;\n"
-              "    *steps_out = steps;\n"
-              "}\n";
+    source +=
+        "        z = v3_select(z_before, z, active);\n"
+        "        w = select(w_before, w, active);\n"
+        "        dr = select(dr_before, dr, active);\n"
+        "        steps = select(steps, steps + 1, active);\n"
+        "        if (record) *trap = trap_update(*trap, z, active);\n"
+        "    }\n"
+        "    *z_out = z;\n"
+        "    *w_out = w;\n"
+        "    *dr_out = dr;\n"
+        "    *steps_out = steps;\n"
+        "}\n";
     if (scene.estimate == FormulaEstimate::Inside) {
-        source += "inline mask formula_scene_inside(const vec3 c, PARAMS, const int record,\n"
-                  "                                 orbit_trap* trap) {\n"
-                  "    const float bailout2 = param_bailout * param_bailout;\n"
-                  "    vec3 z;\n"
-                  "    real w, dr;\n"
-                  "    mask steps;\n"
-                  "    formula_scene_iterate(c, PARAMS_PASS, (mask)(param_iterations), bailout2,\n"
-                  "                          record, trap, &z, &w, &dr, &steps);\n"
-                  "    (void)dr;\n"
-                  "    (void)steps;\n";
+        source +=
+            "inline mask formula_scene_inside(const vec3 c, PARAMS, const int record,\n"
+            "                                 orbit_trap* trap) {\n"
+            "    const float bailout2 = param_bailout * param_bailout;\n"
+            "    vec3 z;\n"
+            "    real w, dr;\n"
+            "    mask steps;\n"
+            "    formula_scene_iterate(c, PARAMS_PASS, (mask)(param_iterations), bailout2,\n"
+            "                          record, trap, &z, &w, &dr, &steps);\n"
+            "    (void)dr;\n"
+            "    (void)steps;\n";
         const Formula& first = *scene.sequence[0].formula;
         if (scene.sequence.size() == 1 && first.own_inside) {
             source += fmt::format("    return formula_{}_inside({}) != 0;\n", first.name,
                                   arguments(scene, 0, false));
         } else {
-            source += "    return v3_length2(z) + w * w <= bailout2;  /* a NaN orbit is outside */\n";
+            source +=
+                "    return v3_length2(z) + w * w <= bailout2;  /* a NaN orbit is outside */\n";
         }
-        source += "}\n"
-                  "FGR_TRAP_COLOURED_INSIDE_SCENE(formula_scene_inside)\n";
+        source +=
+            "}\n"
+            "FGR_TRAP_COLOURED_INSIDE_SCENE(formula_scene_inside)\n";
         return source;
     }
-    source += "inline real formula_scene_orbit(const vec3 c, PARAMS, const int record,\n"
-              "                                orbit_trap* trap) {\n"
-              "    vec3 z;\n"
-              "    real w, dr;\n"
-              "    mask steps;\n"
-              "    formula_scene_iterate(c, PARAMS_PASS, (mask)(param_iterations),\n"
-              "                          param_bailout * param_bailout, record, trap, &z, &w, &dr,\n"
-              "                          &steps);\n"
-              "    const real r = sqrt(v3_length2(z) + w * w);\n";
+    source +=
+        "inline real formula_scene_orbit(const vec3 c, PARAMS, const int record,\n"
+        "                                orbit_trap* trap) {\n"
+        "    vec3 z;\n"
+        "    real w, dr;\n"
+        "    mask steps;\n"
+        "    formula_scene_iterate(c, PARAMS_PASS, (mask)(param_iterations),\n"
+        "                          param_bailout * param_bailout, record, trap, &z, &w, &dr,\n"
+        "                          &steps);\n"
+        "    const real r = sqrt(v3_length2(z) + w * w);\n";
     if (scene.estimate == FormulaEstimate::Delta) {
         source += delta_distance(scene);
     } else {
@@ -204,8 +212,8 @@ Scene formula_scene_to_scene(const FormulaScene& formula_scene, const std::files
     scene.tags = formula_scene.tags;
     scene.effects = FGR_EFFECT_AMBIENT_OCCLUSION | FGR_EFFECT_SOFT_SHADOWS;
     scene.march = formula_scene.march;
-    scene.default_mode = formula_scene.estimate == FormulaEstimate::Inside ? RenderMode::Brute
-                                                                          : RenderMode::Shaded;
+    scene.default_mode =
+        formula_scene.estimate == FormulaEstimate::Inside ? RenderMode::Brute : RenderMode::Shaded;
     const std::size_t slots = formula_scene.sequence.size();
     for (std::size_t slot = 0; slot < slots; ++slot) {
         const FormulaSlot& entry = formula_scene.sequence[slot];

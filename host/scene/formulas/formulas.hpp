@@ -46,9 +46,9 @@ struct FormulaParam {
 };
 
 struct Formula {
-    std::string name;     // formula_NAME in the kernel library; the name scene files use
-    std::string title;    // "Amazing Surf"
-    std::string family;   // kernels/formulas/<family>.cl
+    std::string name;    // formula_NAME in the kernel library; the name scene files use
+    std::string title;   // "Amazing Surf"
+    std::string family;  // kernels/formulas/<family>.cl
     std::vector<std::string> tags;
     std::string summary;  // what it does, one line
     std::string origin;   // where it comes from (author, year, place)

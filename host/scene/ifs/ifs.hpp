@@ -6,14 +6,13 @@
 
 #include <cstddef>
 #include <filesystem>
+#include <glm/mat3x3.hpp>
+#include <glm/vec3.hpp>
 #include <optional>
 #include <stdexcept>
 #include <string>
 #include <string_view>
 #include <vector>
-
-#include <glm/mat3x3.hpp>
-#include <glm/vec3.hpp>
 
 #include "scene/scene.hpp"
 
@@ -42,7 +41,7 @@ struct IfsMap {
     glm::dmat3 linear{1.0};  // column-major, as glm: linear[c][r]
     glm::dvec3 offset{0.0};
     glm::vec3 colour{0.75f, 0.72f, 0.68f};  // linear RGB albedo of the points this map makes
-    double contraction = 0.0;  // largest singular value of `linear`, < 1
+    double contraction = 0.0;               // largest singular value of `linear`, < 1
 };
 
 // A ball B = {x : |x - centre| <= radius} with w_i(B) inside B for every map, so the attractor
@@ -125,12 +124,12 @@ IfsBounds ifs_bounding_sphere(const std::vector<IfsMap>& maps);
 // precision and without a heap limit: the reference its tests compare the kernel with.
 struct IfsRayHit {
     bool hit = false;
-    double t = 0.0;            // along the ray, where it enters the leaf
-    int depth = 0;             // the leaf's level (0: the bounding ball)
-    int top_map = -1;          // the first map on the leaf's path (-1 at the root)
-    glm::dvec3 normal{0.0};    // averaged over the leaf's deepest levels, as the kernel does
-    long visited = 0;          // nodes taken out of the heap
-    long heap_peak = 0;        // the most nodes the heap held
+    double t = 0.0;          // along the ray, where it enters the leaf
+    int depth = 0;           // the leaf's level (0: the bounding ball)
+    int top_map = -1;        // the first map on the leaf's path (-1 at the root)
+    glm::dvec3 normal{0.0};  // averaged over the leaf's deepest levels, as the kernel does
+    long visited = 0;        // nodes taken out of the heap
+    long heap_peak = 0;      // the most nodes the heap held
 };
 
 // The IFS ray's rules (the kernel's): a node is a leaf at `max_depth` or once its size bound
@@ -151,8 +150,8 @@ IfsRayHit trace_ifs_ray(const IfsScene& ifs, const glm::dvec3& origin, const glm
 // A lower bound of the distance from p to the attractor, at least two thirds of the true distance
 // (or of the distance to the `max_depth` level's balls): the smallest distance to a node's
 // bounding ball, found best first over the node tree, stopping at a node whose radius is at most
-// a quarter of its distance. Zero inside a node at the depth limit. What the viewer's fly speed and the auto
-// precision rule read as "the DE at the camera" for IFS scenes, whose kernel has no DE.
+// a quarter of its distance. Zero inside a node at the depth limit. What the viewer's fly speed and
+// the auto precision rule read as "the DE at the camera" for IFS scenes, whose kernel has no DE.
 double ifs_distance_bound(const IfsScene& ifs, const glm::dvec3& p, int max_depth);
 
 // The fgr scene an IFS file describes: its cameras, paths and lights, the built-in parameters

@@ -1,11 +1,18 @@
 // IFS scene files (`NAME.ifs.json`): reading, validating, and the bounding sphere of the maps.
 // The format is documented in sdk/README.md ("IFS scenes").
+#include <fmt/format.h>
+
 #include <algorithm>
 #include <array>
 #include <cmath>
 #include <cstdint>
 #include <fstream>
+#include <glm/geometric.hpp>
+#include <glm/gtc/matrix_transform.hpp>
+#include <glm/mat3x3.hpp>
+#include <glm/matrix.hpp>
 #include <limits>
+#include <nlohmann/json.hpp>
 #include <numbers>
 #include <optional>
 #include <set>
@@ -13,28 +20,21 @@
 #include <string_view>
 #include <utility>
 
-#include <fmt/format.h>
-#include <glm/geometric.hpp>
-#include <glm/gtc/matrix_transform.hpp>
-#include <glm/mat3x3.hpp>
-#include <glm/matrix.hpp>
-#include <nlohmann/json.hpp>
-
-#include "util/json_fields.hpp"
-#include "scene/scene_json.hpp"
+#include "camera/view_validation.hpp"
 #include "scene/description_validation.hpp"
 #include "scene/ifs/ifs.hpp"
-#include "camera/view_validation.hpp"
+#include "scene/scene_json.hpp"
+#include "util/json_fields.hpp"
 
 namespace fgr {
 namespace {
 
-using nlohmann::json;
 using json_fields::check_keys;
-using json_fields::fail;
 using json_fields::dvec3_from;
+using json_fields::fail;
 using json_fields::finite_double;
 using json_fields::shown;
+using nlohmann::json;
 using scene_json::array_from;
 using scene_json::require_object;
 using scene_json::text_from;
@@ -99,9 +99,8 @@ void compose_map(const json& entry, const std::string& where, IfsMap& map) {
     }
     map.linear = rotation * glm::dmat3(glm::dvec3(scale.x, 0, 0), glm::dvec3(0, scale.y, 0),
                                        glm::dvec3(0, 0, scale.z));
-    map.offset = entry.contains("translate")
-                     ? dvec3_from(entry, "translate", where, kMaxMapNumber)
-                     : glm::dvec3(0.0);
+    map.offset = entry.contains("translate") ? dvec3_from(entry, "translate", where, kMaxMapNumber)
+                                             : glm::dvec3(0.0);
 }
 
 // "matrix": three rows [a, b, c, t]: the linear part's row and the translation's component.
@@ -166,9 +165,10 @@ void check_map(IfsMap& map, const std::string& where) {
         fail("{} is not contractive (largest singular value {:.6g} >= 1)", where, sigma[0]);
     }
     if (!(sigma[2] > kSingularRatio * sigma[0])) {
-        fail("{} is singular (smallest singular value {:.3g}, largest {:.3g}): every map must be "
-             "invertible",
-             where, sigma[2], sigma[0]);
+        fail(
+            "{} is singular (smallest singular value {:.3g}, largest {:.3g}): every map must be "
+            "invertible",
+            where, sigma[2], sigma[0]);
     }
     map.contraction = sigma[0];
 }
@@ -182,7 +182,8 @@ void check_maps(IfsScene& scene, std::string_view map_word) {
         check_map(scene.maps[i], fmt::format("{} {}", map_word, i));
     }
     for (const int depth : {scene.default_depth, scene.max_depth}) {
-        if (depth < 0 || depth > kIfsMaxDepth) fail("depth {} outside [0, {}]", depth, kIfsMaxDepth);
+        if (depth < 0 || depth > kIfsMaxDepth)
+            fail("depth {} outside [0, {}]", depth, kIfsMaxDepth);
     }
     if (scene.default_depth > scene.max_depth) {
         fail("default depth {} is above the maximum {}", scene.default_depth, scene.max_depth);
@@ -192,15 +193,17 @@ void check_maps(IfsScene& scene, std::string_view map_word) {
     // One map, or maps that all fix the same point: the attractor is that point, nothing to draw
     // (and a ball of radius 0 to trace).
     if (!(scene.bounds.radius > 1e-9 * std::max(1.0, glm::length(scene.bounds.centre)))) {
-        fail("the attractor is a single point ({:.4g} {:.4g} {:.4g}): the {}s must not all fix "
-             "the same point",
-             scene.bounds.centre.x, scene.bounds.centre.y, scene.bounds.centre.z, map_word);
+        fail(
+            "the attractor is a single point ({:.4g} {:.4g} {:.4g}): the {}s must not all fix "
+            "the same point",
+            scene.bounds.centre.x, scene.bounds.centre.y, scene.bounds.centre.z, map_word);
     }
     if (!(extent <= kMaxExtent)) {
-        fail("the attractor's bounding sphere (centre {:.4g} {:.4g} {:.4g}, radius {:.4g}) reaches "
-             "beyond {:g} from the origin",
-             scene.bounds.centre.x, scene.bounds.centre.y, scene.bounds.centre.z,
-             scene.bounds.radius, kMaxExtent);
+        fail(
+            "the attractor's bounding sphere (centre {:.4g} {:.4g} {:.4g}, radius {:.4g}) reaches "
+            "beyond {:g} from the origin",
+            scene.bounds.centre.x, scene.bounds.centre.y, scene.bounds.centre.z,
+            scene.bounds.radius, kMaxExtent);
     }
 }
 
@@ -257,7 +260,8 @@ IfsLeaf leaf_from(const json& document, const IfsBounds& bounds) {
         const glm::dvec3 low = dvec3_from(entry, "min", "\"leaf\"", kMaxMapNumber);
         const glm::dvec3 high = dvec3_from(entry, "max", "\"leaf\"", kMaxMapNumber);
         for (int axis = 0; axis < 3; ++axis) {
-            if (!(low[axis] < high[axis])) fail("\"leaf\" box: \"min\" must be below \"max\" on every axis");
+            if (!(low[axis] < high[axis]))
+                fail("\"leaf\" box: \"min\" must be below \"max\" on every axis");
             glm::dvec3 n(0.0);
             n[axis] = 1.0;
             leaf.planes.push_back({n, high[axis]});
@@ -276,9 +280,10 @@ IfsLeaf leaf_from(const json& document, const IfsBounds& bounds) {
                                                       fmt::format("\"leaf\" vertex {}", i),
                                                       kMaxMapNumber));
         }
-        const double volume = std::abs(glm::dot(corners[1] - corners[0],
-                                                glm::cross(corners[2] - corners[0],
-                                                           corners[3] - corners[0]))) / 6.0;
+        const double volume =
+            std::abs(glm::dot(corners[1] - corners[0],
+                              glm::cross(corners[2] - corners[0], corners[3] - corners[0]))) /
+            6.0;
         const double size = glm::length(corners[1] - corners[0]);
         if (!(volume > 1e-9 * size * size * size)) fail("\"leaf\" tetrahedron is flat");
         for (int face = 0; face < 4; ++face) {
@@ -286,14 +291,16 @@ IfsLeaf leaf_from(const json& document, const IfsBounds& bounds) {
                                                 corners[(face + 3) % 4], corners[face]));
         }
     } else {
-        fail("\"leaf\" \"shape\" '{}' must be \"ball\", \"box\" or \"tetrahedron\"", printable(leaf.shape));
+        fail("\"leaf\" \"shape\" '{}' must be \"ball\", \"box\" or \"tetrahedron\"",
+             printable(leaf.shape));
     }
     for (const glm::dvec3& corner : corners) {
         if (glm::length(corner - bounds.centre) > bounds.radius * (1.0 + 1e-6)) {
-            fail("\"leaf\" {} corner ({:.4g} {:.4g} {:.4g}) lies outside the maps' bounding sphere "
-                 "(centre {:.4g} {:.4g} {:.4g}, radius {:.4g}), which must hold it",
-                 leaf.shape, corner.x, corner.y, corner.z, bounds.centre.x, bounds.centre.y,
-                 bounds.centre.z, bounds.radius);
+            fail(
+                "\"leaf\" {} corner ({:.4g} {:.4g} {:.4g}) lies outside the maps' bounding sphere "
+                "(centre {:.4g} {:.4g} {:.4g}, radius {:.4g}), which must hold it",
+                leaf.shape, corner.x, corner.y, corner.z, bounds.centre.x, bounds.centre.y,
+                bounds.centre.z, bounds.radius);
         }
     }
     return leaf;
@@ -343,15 +350,16 @@ IfsScene parse_checked(const std::string& text) {
     scene.description = header.description;
     depth_from(document, scene);
     if (!document.contains("maps")) fail("\"maps\" is missing");
-    const json& maps = array_from(document, "maps", 1, static_cast<std::size_t>(kIfsMaxMaps),
-                                  "\"maps\"");
+    const json& maps =
+        array_from(document, "maps", 1, static_cast<std::size_t>(kIfsMaxMaps), "\"maps\"");
     for (std::size_t i = 0; i < maps.size(); ++i) scene.maps.push_back(map_from(maps[i], i));
     check_maps(scene, "map");
     scene.leaf = leaf_from(document, scene.bounds);
     scene.cameras = scene_json::cameras_from(document);
     if (scene.cameras.empty()) scene.cameras.push_back(default_camera(scene.bounds));
     scene.camera_paths = scene_json::camera_paths_from(document);
-    if (scene.camera_paths.empty()) scene.camera_paths.push_back(scene_json::default_orbit(scene.cameras[0]));
+    if (scene.camera_paths.empty())
+        scene.camera_paths.push_back(scene_json::default_orbit(scene.cameras[0]));
     scene.lights = scene_json::lights_from(document);
     if (scene.lights.empty()) scene.lights.push_back(scene_json::default_light());
     return scene;
@@ -422,8 +430,8 @@ glm::dvec3 minimise_radius(const std::vector<Contraction>& maps, glm::dvec3 star
             }
         }
     }
-    return points[static_cast<std::size_t>(
-        std::min_element(values.begin(), values.end()) - values.begin())];
+    return points[static_cast<std::size_t>(std::min_element(values.begin(), values.end()) -
+                                           values.begin())];
 }
 
 }  // namespace

@@ -1,14 +1,13 @@
 // An IFS file's scene as the rest of fgr sees it: a Scene with the maps attached (Scene::ifs), the
 // depth slider, and kernel source generated from the maps (ifs_source.hpp).
 #include <algorithm>
+#include <glm/geometric.hpp>
 #include <memory>
 
-#include <glm/geometric.hpp>
-
-#include "scene/scene_json.hpp"
-#include "scene/ifs/ifs.hpp"
 #include "fgr/plugin.h"
+#include "scene/ifs/ifs.hpp"
 #include "scene/ifs/ifs_source.hpp"
+#include "scene/scene_json.hpp"
 
 namespace fgr {
 namespace {

@@ -2,11 +2,10 @@
 // unbounded heap, for tests and host-side queries.
 #include <algorithm>
 #include <cmath>
-#include <queue>
-#include <vector>
-
 #include <glm/geometric.hpp>
 #include <glm/matrix.hpp>
+#include <queue>
+#include <vector>
 
 #include "scene/ifs/ifs.hpp"
 
@@ -49,8 +48,8 @@ bool enter(const Node& node, const IfsBounds& ball, const glm::dvec3& o, const g
 
 // Where the ray enters a leaf's polytope, and through which plane (kernels/fgr_ifs.cl's
 // ifs_polytope_enter).
-bool enter_polytope(const Node& node, const IfsLeaf& leaf, const glm::dvec3& o,
-                    const glm::dvec3& d, double& entry, int& face) {
+bool enter_polytope(const Node& node, const IfsLeaf& leaf, const glm::dvec3& o, const glm::dvec3& d,
+                    double& entry, int& face) {
     const glm::dvec3 ol = node.linear * o + node.offset;
     const glm::dvec3 dl = node.linear * d;
     double enter = -INFINITY, leave = INFINITY;
@@ -219,7 +218,8 @@ IfsRayHit trace_ifs_ray(const IfsScene& ifs, const glm::dvec3& origin, const glm
         }
         if (is_leaf(node, rules)) {
             double t = 0.0;
-            if (!leaf_hit(node, ifs, rules, origin, dir, t) || !(t > 0.0) || t > rules.reach) continue;
+            if (!leaf_hit(node, ifs, rules, origin, dir, t) || !(t > 0.0) || t > rules.reach)
+                continue;
             node.entry = t;
             node.resolved = true;
             heap.push(std::move(node));

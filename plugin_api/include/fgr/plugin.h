@@ -22,11 +22,11 @@
  * contractive affine maps (fgr_ifs_map) that the host ray traces exactly, as it does IFS scene
  * files (*.ifs.json). See fgr_scene_desc::ifs_maps.
  *
- * Ownership: every pointer in these structs is owned by the plugin and must stay valid and unchanged
- * from the moment fgr_scene_entry returns until the host unloads the library. The host copies
- * everything it keeps while validating the description, so it never writes through these pointers
- * and never frees them. All strings are NUL-terminated UTF-8, except that the scene's `source` may
- * instead be given a length (fgr_scene_desc::source_length, ABI 1.1).
+ * Ownership: every pointer in these structs is owned by the plugin and must stay valid and
+ * unchanged from the moment fgr_scene_entry returns until the host unloads the library. The host
+ * copies everything it keeps while validating the description, so it never writes through these
+ * pointers and never frees them. All strings are NUL-terminated UTF-8, except that the scene's
+ * `source` may instead be given a length (fgr_scene_desc::source_length, ABI 1.1).
  *
  * This header is C11 and compiles unchanged as C++.
  */
@@ -156,10 +156,10 @@ typedef enum fgr_effect_flag {
     FGR_EFFECT_GLOW = 1u << 5,              /* rays that miss glow by how near they passed */
     FGR_EFFECT_FOG = 1u << 6,               /* exponential distance fog */
     FGR_EFFECT_DEPTH_OF_FIELD = 1u << 7,    /* thin lens; converges over samples (--spp) */
-    FGR_EFFECT_REFRACTION = 1u << 8         /* transparency: refraction through solids, absorption */
+    FGR_EFFECT_REFRACTION = 1u << 8 /* transparency: refraction through solids, absorption */
 } fgr_effect_flag;
-#define FGR_EFFECT_ALL_V1                                                          \
-    (FGR_EFFECT_SHADOWS | FGR_EFFECT_AMBIENT_OCCLUSION | FGR_EFFECT_SOFT_SHADOWS |      \
+#define FGR_EFFECT_ALL_V1                                                                       \
+    (FGR_EFFECT_SHADOWS | FGR_EFFECT_AMBIENT_OCCLUSION | FGR_EFFECT_SOFT_SHADOWS |              \
      FGR_EFFECT_REFLECTIONS | FGR_EFFECT_SAMPLED_OCCLUSION | FGR_EFFECT_GLOW | FGR_EFFECT_FOG | \
      FGR_EFFECT_DEPTH_OF_FIELD | FGR_EFFECT_REFRACTION)
 
@@ -168,9 +168,9 @@ typedef enum fgr_effect_flag {
  * recompiles. */
 typedef struct fgr_march_settings {
     fgr_struct_header header;
-    uint32_t max_steps;   /* DE evaluations per ray at most, >= 1 */
-    float max_distance;   /* rays stop beyond this distance from the camera, > 0 */
-    float hit_threshold;  /* a ray hits when DE < hit_threshold * t * pixel_angle; > 0 */
+    uint32_t max_steps;     /* DE evaluations per ray at most, >= 1 */
+    float max_distance;     /* rays stop beyond this distance from the camera, > 0 */
+    float hit_threshold;    /* a ray hits when DE < hit_threshold * t * pixel_angle; > 0 */
     uint32_t de_iterations; /* default of the built-in `iterations` parameter, >= 1 */
     float step_factor;      /* rays advance step_factor * DE, in (0, 1] (0 means 1): below 1 for
                                DEs that are estimates rather than strict bounds (escape-time
@@ -213,7 +213,7 @@ typedef enum fgr_colour_mode_flag {
     FGR_COLOUR_MODE_AXES = 1u << 2,      /* ... to the coordinate axes */
     FGR_COLOUR_MODE_ITERATIONS = 1u << 3 /* iterations before escape (flat for KIFS scenes) */
 } fgr_colour_mode_flag;
-#define FGR_COLOUR_MODES_ALL_V1_4                                                \
+#define FGR_COLOUR_MODES_ALL_V1_4                                            \
     (FGR_COLOUR_MODE_POINT | FGR_COLOUR_MODE_PLANES | FGR_COLOUR_MODE_AXES | \
      FGR_COLOUR_MODE_ITERATIONS)
 

@@ -10,51 +10,50 @@
 #include "fgr/plugin.h"
 
 /* A float parameter. */
-#define FGR_FLOAT_PARAM(id, label, group, min, max, value, description)                     \
-    {                                                                                      \
-        FGR_HEADER(fgr_param_desc), id, label, group, FGR_PARAM_FLOAT, min, max, {value, 0.0f, \
-                                                                                 0.0f},     \
-            NULL, description                                                              \
+#define FGR_FLOAT_PARAM(id, label, group, min, max, value, description)          \
+    {                                                                            \
+        FGR_HEADER(fgr_param_desc), id, label, group, FGR_PARAM_FLOAT, min, max, \
+            {value, 0.0f, 0.0f}, NULL, description                               \
     }
 
 /* An integer parameter. */
-#define FGR_INT_PARAM(id, label, group, min, max, value, description)                         \
-    {                                                                                        \
+#define FGR_INT_PARAM(id, label, group, min, max, value, description)                            \
+    {                                                                                            \
         FGR_HEADER(fgr_param_desc), id, label, group, FGR_PARAM_INT, (float)(min), (float)(max), \
-            {(float)(value), 0.0f, 0.0f}, NULL, description                                  \
+            {(float)(value), 0.0f, 0.0f}, NULL, description                                      \
     }
 
 /* An enumeration: an int parameter 0 .. n-1 whose values are named by "a|b|c". */
-#define FGR_ENUM_PARAM(id, label, group, count, value, choices, description)                  \
-    {                                                                                        \
+#define FGR_ENUM_PARAM(id, label, group, count, value, choices, description)                   \
+    {                                                                                          \
         FGR_HEADER(fgr_param_desc), id, label, group, FGR_PARAM_INT, 0.0f, (float)((count)-1), \
-            {(float)(value), 0.0f, 0.0f}, choices, description                               \
+            {(float)(value), 0.0f, 0.0f}, choices, description                                 \
     }
 
 /* A vec3 parameter, every component in [min, max]. */
-#define FGR_VEC3_PARAM(id, label, group, min, max, x, y, z, description)                     \
-    {                                                                                       \
+#define FGR_VEC3_PARAM(id, label, group, min, max, x, y, z, description)                         \
+    {                                                                                            \
         FGR_HEADER(fgr_param_desc), id, label, group, FGR_PARAM_VEC3, min, max, {x, y, z}, NULL, \
-            description                                                                     \
+            description                                                                          \
     }
 
 /* A linear RGB colour with components in [0, 1]. */
-#define FGR_COLOUR_PARAM(id, label, group, r, g, b, description)                                 \
-    {                                                                                            \
-        FGR_HEADER(fgr_param_desc), id, label, group, FGR_PARAM_COLOUR, 0.0f, 1.0f, {r, g, b}, NULL, \
-            description                                                                          \
+#define FGR_COLOUR_PARAM(id, label, group, r, g, b, description)                               \
+    {                                                                                          \
+        FGR_HEADER(fgr_param_desc), id, label, group, FGR_PARAM_COLOUR, 0.0f, 1.0f, {r, g, b}, \
+            NULL, description                                                                  \
     }
 
 /* The three colouring parameters kernels/fgr_colour.cl's trap_colour() reads:
  * colour_mode (which orbit trap), palette (which ramp) and base_colour (the scene's tint). */
-#define FGR_COLOUR_PARAMS(mode, palette, r, g, b)                                              \
+#define FGR_COLOUR_PARAMS(mode, palette, r, g, b)                                                 \
     FGR_ENUM_PARAM("colour_mode", "Colour by", "Colour", 4, mode, "point|planes|axes|iterations", \
-                   "orbit trap that drives the palette"),                                     \
-        FGR_ENUM_PARAM("palette", "Palette", "Colour", 5, palette,                             \
-                       "ember|ocean|forest|pastel|mono", "colour ramp"),                        \
-    {                                                                                           \
-        FGR_HEADER(fgr_param_desc), "base_colour", "Base colour", "Colour", FGR_PARAM_COLOUR,   \
-            0.0f, 1.0f, {r, g, b}, NULL, "tint multiplying the palette"                         \
+                   "orbit trap that drives the palette"),                                         \
+        FGR_ENUM_PARAM("palette", "Palette", "Colour", 5, palette,                                \
+                       "ember|ocean|forest|pastel|mono", "colour ramp"),                          \
+    {                                                                                             \
+        FGR_HEADER(fgr_param_desc), "base_colour", "Base colour", "Colour", FGR_PARAM_COLOUR,     \
+            0.0f, 1.0f, {r, g, b}, NULL, "tint multiplying the palette"                           \
     }
 
 /* The colour modes of a KIFS scene (ABI 1.4 colour_modes): all but "iterations", which is one
@@ -106,13 +105,13 @@ constexpr uint32_t fgr_light_count_of_size() {
 }
 #define FGR_LIGHT_COUNT(lights) fgr_light_count_of_size<sizeof(lights)>()
 #else
-#define FGR_LIGHT_COUNT(lights)                                                                  \
-    ((uint32_t)(sizeof(lights) / sizeof(fgr_light)) +                                            \
-     0u * (uint32_t)sizeof(struct {                                                              \
-         _Static_assert(sizeof(lights) / sizeof(fgr_light) > 0,                                  \
-                        "a scene needs at least one light: pass a non-empty static array of "    \
-                        "fgr_light (not NULL, not a pointer) as FGR_SCENE's lights");            \
-         int fgr_unused;                                                                         \
+#define FGR_LIGHT_COUNT(lights)                                                               \
+    ((uint32_t)(sizeof(lights) / sizeof(fgr_light)) +                                         \
+     0u * (uint32_t)sizeof(struct {                                                           \
+         _Static_assert(sizeof(lights) / sizeof(fgr_light) > 0,                               \
+                        "a scene needs at least one light: pass a non-empty static array of " \
+                        "fgr_light (not NULL, not a pointer) as FGR_SCENE's lights");         \
+         int fgr_unused;                                                                      \
      }))
 #endif
 
@@ -126,82 +125,93 @@ constexpr uint32_t fgr_light_count_of_size() {
  * source ends there), 0 ("NUL-terminated") for a pointer, whose size says nothing. */
 #ifdef __cplusplus
 template <typename T>
-constexpr uint64_t fgr_source_length(const T&) { return 0; }
+constexpr uint64_t fgr_source_length(const T&) {
+    return 0;
+}
 template <size_t N>
-constexpr uint64_t fgr_source_length(const char (&)[N]) { return N; }
+constexpr uint64_t fgr_source_length(const char (&)[N]) {
+    return N;
+}
 #define FGR_SOURCE_LENGTH(source) fgr_source_length(source)
 #else
-#define FGR_SOURCE_LENGTH(source)                                  \
-    _Generic(&(source), const char(*)[sizeof(source)]: (uint64_t)sizeof(source), \
-             char(*)[sizeof(source)]: (uint64_t)sizeof(source), default: (uint64_t)0)
+#define FGR_SOURCE_LENGTH(source)                                \
+    _Generic(&(source), const char(*)[sizeof(source)]            \
+             : (uint64_t)sizeof(source), char(*)[sizeof(source)] \
+             : (uint64_t)sizeof(source), default                 \
+             : (uint64_t)0)
 #endif
 
 /* A whole scene description from static arrays of params, cameras, camera paths and lights. It
  * asks for no render mode (default_mode NULL: fgr renders it shaded unless told otherwise, or in
  * the brute mode if its source is inside-only, see FGR_SCENE_INSIDE_ONLY in fgr's SDK guide). */
-#define FGR_SCENE(id, name, description, source, source_name, params, cameras, paths, lights,   \
+#define FGR_SCENE(id, name, description, source, source_name, params, cameras, paths, lights,     \
                   effects, march)                                                                 \
     {                                                                                             \
         FGR_HEADER(fgr_scene_desc), id, name, description, source, source_name, params,           \
             FGR_COUNT(params), cameras, FGR_COUNT(cameras), paths, FGR_COUNT(paths), lights,      \
-            FGR_LIGHT_COUNT(lights), effects, march, FGR_SOURCE_LENGTH(source), NULL, NULL, 0, 0,\
-            0, NULL, 0, 0, 0.0f                                                               \
+            FGR_LIGHT_COUNT(lights), effects, march, FGR_SOURCE_LENGTH(source), NULL, NULL, 0, 0, \
+            0, NULL, 0, 0, 0.0f                                                                   \
     }
 
 /* The same, asking for a render mode by default: "shaded", "path" or "brute" (ABI 1.2: any mode
  * the host has; an inside-only source renders brute whatever it asks, "path" is refused). (Not
  * written with FGR_SCENE's help: `march` is usually FGR_MARCH(...), whose commas would split the
  * arguments of a macro it is passed on to.) */
-#define FGR_SCENE_WITH_MODE(id, name, description, source, source_name, params, cameras, paths,  \
-                            lights, effects, march, default_mode)                                 \
-    {                                                                                             \
-        FGR_HEADER(fgr_scene_desc), id, name, description, source, source_name, params,           \
-            FGR_COUNT(params), cameras, FGR_COUNT(cameras), paths, FGR_COUNT(paths), lights,      \
-            FGR_LIGHT_COUNT(lights), effects, march, FGR_SOURCE_LENGTH(source), default_mode, \
-            NULL, 0, 0, 0, NULL, 0, 0, 0.0f                                                   \
+#define FGR_SCENE_WITH_MODE(id, name, description, source, source_name, params, cameras, paths, \
+                            lights, effects, march, default_mode)                               \
+    {                                                                                           \
+        FGR_HEADER(fgr_scene_desc), id, name, description, source, source_name, params,         \
+            FGR_COUNT(params), cameras, FGR_COUNT(cameras), paths, FGR_COUNT(paths), lights,    \
+            FGR_LIGHT_COUNT(lights), effects, march, FGR_SOURCE_LENGTH(source), default_mode,   \
+            NULL, 0, 0, 0, NULL, 0, 0, 0.0f                                                     \
     }
 
 /* A built-in parameter's own default in this scene (ABI 1.4), e.g.
  * FGR_BUILTIN_DEFAULT("ao_radius", 0.002f): in the parameter's units and range. */
-#define FGR_BUILTIN_DEFAULT(id, value) \
-    { FGR_HEADER(fgr_builtin_default), id, {value, 0.0f, 0.0f} }
+#define FGR_BUILTIN_DEFAULT(id, value)                             \
+    {                                                              \
+        FGR_HEADER(fgr_builtin_default), id, { value, 0.0f, 0.0f } \
+    }
 
 /* The same for a colour built-in, e.g.
  * FGR_BUILTIN_COLOUR_DEFAULT("fog_colour", 0.8f, 0.8f, 0.9f). */
-#define FGR_BUILTIN_COLOUR_DEFAULT(id, r, g, b) \
-    { FGR_HEADER(fgr_builtin_default), id, {r, g, b} }
+#define FGR_BUILTIN_COLOUR_DEFAULT(id, r, g, b)          \
+    {                                                    \
+        FGR_HEADER(fgr_builtin_default), id, { r, g, b } \
+    }
 
 /* A scene tuned beyond fgr's defaults (ABI 1.4): FGR_SCENE_WITH_MODE's fields (default_mode may
  * be NULL), then the scene's defaults for built-in parameters as a pointer and a count (an array
  * of FGR_BUILTIN_DEFAULT and FGR_COUNT(array), or NULL and 0), the colour modes it offers (an OR
  * of FGR_COLOUR_MODE_*, 0 for all) and its length scale (0 for 1; see fgr_scene_desc::scale). */
-#define FGR_SCENE_TUNED(id, name, description, source, source_name, params, cameras, paths,      \
-                        lights, effects, march, default_mode, builtin_defaults,                  \
-                        builtin_default_count, colour_modes, scale)                              \
-    {                                                                                             \
-        FGR_HEADER(fgr_scene_desc), id, name, description, source, source_name, params,           \
-            FGR_COUNT(params), cameras, FGR_COUNT(cameras), paths, FGR_COUNT(paths), lights,      \
+#define FGR_SCENE_TUNED(id, name, description, source, source_name, params, cameras, paths,   \
+                        lights, effects, march, default_mode, builtin_defaults,               \
+                        builtin_default_count, colour_modes, scale)                           \
+    {                                                                                         \
+        FGR_HEADER(fgr_scene_desc), id, name, description, source, source_name, params,       \
+            FGR_COUNT(params), cameras, FGR_COUNT(cameras), paths, FGR_COUNT(paths), lights,  \
             FGR_LIGHT_COUNT(lights), effects, march, FGR_SOURCE_LENGTH(source), default_mode, \
             NULL, 0, 0, 0, builtin_defaults, builtin_default_count, colour_modes, scale       \
     }
 
 /* An IFS map x -> scale x + (tx, ty, tz): a uniform scaling towards a point (ABI 1.3). */
-#define FGR_IFS_SCALE_MAP(scale, tx, ty, tz, r, g, b)                                       \
-    {                                                                                        \
-        FGR_HEADER(fgr_ifs_map), {scale, 0.0f, 0.0f, tx, 0.0f, scale, 0.0f, ty, 0.0f, 0.0f, \
-                                  scale, tz},                                                \
-            {r, g, b}                                                                        \
+#define FGR_IFS_SCALE_MAP(scale, tx, ty, tz, r, g, b)                                \
+    {                                                                                \
+        FGR_HEADER(fgr_ifs_map),                                                     \
+            {scale, 0.0f, 0.0f, tx, 0.0f, scale, 0.0f, ty, 0.0f, 0.0f, scale, tz}, { \
+            r, g, b                                                                  \
+        }                                                                            \
     }
 
 /* A whole IFS scene description (ABI 1.3): no source and no parameters of its own, the maps of a
  * static array, the depth slider's default and maximum (0: fgr's defaults, 6 and 12). */
-#define FGR_IFS_SCENE(id, name, description, maps, default_depth, max_depth, cameras, paths,     \
-                      lights, effects)                                                           \
-    {                                                                                            \
-        FGR_HEADER(fgr_scene_desc), id, name, description, NULL, NULL, NULL, 0, cameras,         \
-            FGR_COUNT(cameras), paths, FGR_COUNT(paths), lights, FGR_LIGHT_COUNT(lights),        \
-            effects, FGR_MARCH(1u, 100.0f, 1.0f, 1u, 1.0f), 0, NULL, maps, FGR_COUNT(maps),     \
-            default_depth, max_depth, NULL, 0, 0, 0.0f                                           \
+#define FGR_IFS_SCENE(id, name, description, maps, default_depth, max_depth, cameras, paths,       \
+                      lights, effects)                                                             \
+    {                                                                                              \
+        FGR_HEADER(fgr_scene_desc), id, name, description, NULL, NULL, NULL, 0, cameras,           \
+            FGR_COUNT(cameras), paths, FGR_COUNT(paths), lights, FGR_LIGHT_COUNT(lights), effects, \
+            FGR_MARCH(1u, 100.0f, 1.0f, 1u, 1.0f), 0, NULL, maps, FGR_COUNT(maps), default_depth,  \
+            max_depth, NULL, 0, 0, 0.0f                                                            \
     }
 
 #endif /* FGR_SCENE_HELPERS_H */

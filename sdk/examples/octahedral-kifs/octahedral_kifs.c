@@ -37,8 +37,8 @@ static const fgr_light lights[] = {
 
 static const fgr_scene_desc scene = FGR_SCENE_TUNED(
     "octahedral-kifs", "Octahedral KIFS",
-    "octahedra of octahedra, twisted per level: the SDK guide's worked example",
-    octahedral_kifs_cl, octahedral_kifs_cl_path, params, cameras, paths, lights,
+    "octahedra of octahedra, twisted per level: the SDK guide's worked example", octahedral_kifs_cl,
+    octahedral_kifs_cl_path, params, cameras, paths, lights,
     FGR_EFFECT_SOFT_SHADOWS | FGR_EFFECT_AMBIENT_OCCLUSION,
     /* A strict bound: full steps. Level 9 octahedra (2^-9) are about a pixel at 640 wide. */
     FGR_MARCH(200u, 12.0f, 1.0f, 9u, 1.0f),

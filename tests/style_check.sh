@@ -1,0 +1,38 @@
+#!/usr/bin/env bash
+# style_check.sh REPO: the style the tree keeps (.clang-format, ../shared/STYLE.md), checked so a
+# change that breaks it fails. Prints every offence and exits 1, or exits 0 when there is none:
+#   - C and C++ sources are as clang-format writes them (includes sorted, 100 columns);
+#   - no OpenCL C line is over 100 columns;
+#   - comments and user docs say why, not when: no "issue N" (git log keeps the history).
+# Frozen copies of old ABI headers and kernel libraries are left as they were frozen.
+set -euo pipefail
+cd "$1"
+frozen='^tests/(abi_v1[^/]*|fixtures/frozen_v1[^/]*|fixtures/kernel_api_v1)/'
+failures=0
+
+report=$(mktemp)
+trap 'rm -f "$report"' EXIT
+mapfile -t sources < <(git ls-files '*.c' '*.h' '*.cpp' '*.hpp' | grep -Ev "$frozen")
+if ! clang-format --dry-run --Werror "${sources[@]}" 2>"$report"; then
+    grep -E '^[^ ].*(warning|error):' "$report" | head -n 40 || true
+    echo "clang-format would change $(grep -c 'error:' "$report") places: run"
+    echo "  clang-format -i \$(git ls-files '*.c' '*.h' '*.cpp' '*.hpp' | grep -Ev '$frozen')"
+    failures=$((failures + 1))
+fi
+
+mapfile -t kernels < <(git ls-files '*.cl' | grep -Ev "$frozen")
+if long=$(awk 'length > 100 { print FILENAME ":" FNR ": " length " columns" }' "${kernels[@]}") &&
+    [[ -n $long ]]; then
+    echo "$long"
+    failures=$((failures + 1))
+fi
+
+if history=$(git grep -nE '\b[Ii]ssue [0-9]+' -- host kernels plugin_api plugins sdk tests docs \
+    README.md CMakeLists.txt cmake build.sh bench ':!tests/style_check.sh') && [[ -n $history ]]; then
+    echo "$history"
+    echo "say why, not which issue: the history is in git log"
+    failures=$((failures + 1))
+fi
+
+((failures == 0)) || exit 1
+echo "style: clang-format clean, kernel lines within 100 columns, no issue numbers"
