@@ -1,7 +1,7 @@
 /* @SCENE_NAME@ (@SCENE_ID@): the scene's description. Its distance estimator and colour are in
  * @SCENE_SYMBOL@.cl. Every field is explained in fgr's SDK guide (share/fgr/sdk/README.md). */
-#include "@SCENE_SYMBOL@_cl.h" /* @SCENE_SYMBOL@_cl: the OpenCL source, embedded at build time */
 #include "fgr/scene_helpers.h"
+#include "@SCENE_SYMBOL@_cl.h" /* @SCENE_SYMBOL@_cl: the OpenCL source, embedded at build time */
 
 /* Each parameter is readable in the .cl file as param_<id>; users change them with
  * `fgr render --set id=value` or in the viewer's panel, without recompiling. */
@@ -43,11 +43,11 @@ static const fgr_light lights[] = {
 
 /* FGR_SCENE asks for no render mode (default_mode NULL): fgr renders shaded unless the user
  * names a mode. FGR_SCENE_WITH_MODE(..., "path") makes the path tracer the scene's default. */
-static const fgr_scene_desc scene =
-    FGR_SCENE("@SCENE_ID@", "@SCENE_NAME@", "a bumpy ball: the scene fgr new-scene starts from",
-              @SCENE_SYMBOL @_cl, @SCENE_SYMBOL @_cl_path, params, cameras, paths, lights,
-              FGR_EFFECT_SHADOWS | FGR_EFFECT_AMBIENT_OCCLUSION,
-              /* max steps, max distance, hit threshold (pixels), DE iterations, step factor */
-              FGR_MARCH(160u, 12.0f, 1.0f, 8u, 1.0f));
+static const fgr_scene_desc scene = FGR_SCENE(
+    "@SCENE_ID@", "@SCENE_NAME@", "a bumpy ball: the scene fgr new-scene starts from",
+    @SCENE_SYMBOL@_cl, @SCENE_SYMBOL@_cl_path, params, cameras, paths, lights,
+    FGR_EFFECT_SHADOWS | FGR_EFFECT_AMBIENT_OCCLUSION,
+    /* max steps, max distance, hit threshold (pixels), DE iterations, step factor */
+    FGR_MARCH(160u, 12.0f, 1.0f, 8u, 1.0f));
 
 FGR_PLUGIN_EXPORT const fgr_scene_desc* fgr_scene_entry(void) { return &scene; }
