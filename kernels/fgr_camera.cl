@@ -34,43 +34,11 @@
 #endif
 #define FGR_TILE_H (FGR_WIDTH / FGR_TILE_W)
 
-/* The camera as the host sends it: eye, then the orthonormal basis, each padded to a float4. The
- * host keeps the eye in double and sends it split, eye = hi + lo: hi (eye.xyz) is the nearest
- * float, lo the float nearest the rest, carried in the otherwise unused w components
- * (eye.w, forward.w, right.w). Double lanes see the eye to about 2^-48 of its size, so a deep
- * zoom's eye can move by less than float's step.
- *
- * The projection (host/camera/projection.hpp describes each layout) maps pixels to rays:
- * pinhole, equirectangular (the whole sphere), equidistant fisheye, or a stereo pair of
- * off-axis pinholes side by side or top/bottom. */
-#define FGR_PROJECTION_PINHOLE 0
-#define FGR_PROJECTION_EQUIRECTANGULAR 1
-#define FGR_PROJECTION_FISHEYE 2
-#define FGR_PROJECTION_STEREO_SBS 3
-#define FGR_PROJECTION_STEREO_TB 4
-
-typedef struct camera_frame {
-    float4 eye;
-    float4 forward;
-    float4 right;
-    float4 up;
-    float tan_half_fov;
-    float pixel_angle; /* one pixel's angular footprint, as the projection gives it (host's
-                        * pixel_angle in projection.cpp): pinhole 2 tan_half_fov / width */
-    int width; /* of the whole image: directions and footprints follow it */
-    int height;
-    int projection;         /* FGR_PROJECTION_* */
-    float fisheye_half_fov; /* radians from the axis at the image circle's rim */
-    float eye_separation;   /* stereo: world distance between the eyes */
-    float convergence;      /* stereo: distance of the zero-parallax plane */
-    /* The rectangle of the image this launch renders (tiled stills render the image a region at
-     * a time): tiles and planes cover the region, pixel coordinates stay the whole image's, so
-     * every pixel gets exactly the ray, samples and random numbers of an untiled render. */
-    int region_x;
-    int region_y;
-    int region_width;
-    int region_height;
-} camera_frame;
+/* The camera arrives as a camera_frame (shared/fgr_layout_camera.h): the eye, split into hi + lo
+ * for double lanes, the basis, the projection and the region rendered. The projection
+ * (host/camera/projection.hpp describes each layout) maps pixels to rays: pinhole,
+ * equirectangular (the whole sphere), equidistant fisheye, or a stereo pair of off-axis pinholes
+ * side by side or top/bottom. */
 
 inline vec3 splat_float4(float4 v) { return v3_splat(v.x, v.y, v.z); }
 

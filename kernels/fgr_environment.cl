@@ -15,15 +15,7 @@
  *
  * Kernel arguments: ENVIRONMENT in a parameter list, ENVIRONMENT_PASS in a call:
  *     env_data  the tables' flat buffer (texels, marginal CDF, conditional CDFs)
- *     env       environment_info by value (mirrored by fgr::EnvironmentInfo on the host) */
-
-typedef struct environment_info {
-    float4 transform; /* x: rotation in turns, y: intensity, z, w: 0 */
-    int width;
-    int height;
-    int marginal_offset;    /* into env_data: height + 1 floats */
-    int conditional_offset; /* into env_data: height rows of width + 1 floats */
-} environment_info;
+ *     env       environment_info by value (shared/fgr_layout_environment.h) */
 
 #define ENVIRONMENT __global const float *env_data, environment_info env
 #define ENVIRONMENT_PASS env_data, env

@@ -15,7 +15,8 @@
  *
  * Arguments: those every mode takes (planes .. PARAMS, see fgr_camera.cl), then the lights (the
  * scene's and the sky's sun, FGR_PATH_LIGHT_FLOATS each, laid out by
- * host/render/modes/path_mode.cpp), the settings, and the environment (ENVIRONMENT,
+ * host/render/modes/path_mode.cpp), the settings (path_settings, shared/fgr_layout_path.h), and
+ * the environment (ENVIRONMENT,
  * fgr_environment.cl).
  *
  * Planes: 0-2 radiance (summed over samples), 3 depth of the first hit (sample 0), then the
@@ -36,24 +37,6 @@
  * point: intensity, W/sr-like), the cosine of a disc's angular radius (1: a delta light), and
  * the cumulative probability of picking lights 0..this one for next-event estimation. */
 #define FGR_PATH_LIGHT_FLOATS 10
-
-/* Set bits of path_settings.flags. */
-#define FGR_PATH_LIGHT_SAMPLING 1  /* next-event estimation */
-#define FGR_PATH_MIS 2             /* weigh light and BSDF sampling by the power heuristic */
-#define FGR_PATH_ENVIRONMENT_IS 4  /* sample the environment by importance, not uniformly */
-#define FGR_PATH_INDEPENDENT 8     /* independent random samples instead of stratified ones */
-
-/* Mirrors PathSettingsArgument in host/render/modes/path_mode.cpp. */
-typedef struct path_settings {
-    int max_bounces;       /* scattering events after the camera ray at most */
-    int roulette_depth;    /* Russian roulette from this bounce on */
-    float radiance_clamp;  /* > 0: each sample's radiance is clamped to it (biased); 0: off */
-    int flags;
-    uint seed;             /* the render's seed: another seed, another noise */
-    int light_count;
-    float environment_pick; /* probability of sampling the environment rather than a light */
-    int padding;
-} path_settings;
 
 #ifndef FGR_SCENE_HAS_MATERIAL
 /* A scene without its own materials is diffuse, coloured by scene_colour. */

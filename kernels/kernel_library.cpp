@@ -13,6 +13,10 @@
 #include "fgr_geometry_cl.h"
 #include "fgr_ifs_cl.h"
 #include "fgr_iterate_cl.h"
+#include "fgr_layout_camera_h.h"
+#include "fgr_layout_environment_h.h"
+#include "fgr_layout_path_h.h"
+#include "fgr_layout_types_h.h"
 #include "fgr_march_cl.h"
 #include "fgr_math_check_cl.h"
 #include "fgr_math_cl.h"
@@ -66,6 +70,16 @@ const KernelFile* formula_family(std::string_view family) {
         if (name.substr(9, name.size() - 12) == family) return &file;
     }
     return nullptr;
+}
+
+std::span<const KernelFile> kernel_layout() {
+    static constexpr std::array files{
+        KernelFile{"shared/fgr_layout_types.h", fgr_layout_types_h},
+        KernelFile{"shared/fgr_layout_camera.h", fgr_layout_camera_h},
+        KernelFile{"shared/fgr_layout_environment.h", fgr_layout_environment_h},
+        KernelFile{"shared/fgr_layout_path.h", fgr_layout_path_h},
+    };
+    return files;
 }
 
 std::span<const KernelFile> kernel_postlude() {

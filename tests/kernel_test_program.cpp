@@ -16,6 +16,7 @@ std::string library_test_source(std::string_view test_source) {
     };
     // No scene: the library's scene-facing helpers need no scene_de until the postlude.
     for (const KernelFile& file : kernel_prelude()) append(file.name, file.source);
+    for (const KernelFile& file : kernel_layout()) append(file.name, file.source);
     for (const KernelFile& file : path_library()) append(file.name, file.source);
     append("<test kernel>", test_source);
     return source;

@@ -11,9 +11,10 @@
 
 namespace fgr::test {
 
-// The prelude (types, lane-safe maths, vec3, SDF toolkit...), then the path library
-// (fgr_sampler.cl, fgr_bsdf.cl, fgr_environment.cl), then `test_source`, built with the switches
-// a render at `packet_width` and `double_precision` gets. Throws KernelBuildError with the log.
+// The prelude (types, lane-safe maths, vec3, SDF toolkit...), the layouts the host shares
+// (shared/fgr_layout_*.h), then the path library (fgr_sampler.cl, fgr_bsdf.cl,
+// fgr_environment.cl), then `test_source`, built with the switches a render at `packet_width`
+// and `double_precision` gets. Throws KernelBuildError with the log.
 cl::Program build_library_test_program(const ComputeDevice& device, ProgramCache& cache,
                                        std::string_view test_source, int packet_width,
                                        bool double_precision);

@@ -26,16 +26,17 @@
 
 #include "camera/camera.hpp"
 #include "camera/view.hpp"
+#include "fgr_layout_camera.h"
 
 namespace fgr {
 
-// Values as the kernel's FGR_PROJECTION_* (fgr_camera.cl).
+// The kernel's camera_frame.projection (kernels/shared/fgr_layout_camera.h).
 enum class ProjectionKind {
-    Pinhole = 0,
-    Equirectangular = 1,
-    Fisheye = 2,
-    StereoSideBySide = 3,
-    StereoTopBottom = 4,
+    Pinhole = FGR_PROJECTION_PINHOLE,
+    Equirectangular = FGR_PROJECTION_EQUIRECTANGULAR,
+    Fisheye = FGR_PROJECTION_FISHEYE,
+    StereoSideBySide = FGR_PROJECTION_STEREO_SBS,
+    StereoTopBottom = FGR_PROJECTION_STEREO_TB,
 };
 
 constexpr float kDefaultFisheyeFovDegrees = 180.0f;

@@ -150,6 +150,7 @@ AssembledProgram assemble_program(const Scene& scene, const KernelSwitches& swit
     }
     for (const KernelFile* family : families) append_file(source, family->name, family->source);
     append_file(source, scene.source_name, scene.source.c_str());
+    for (const auto& file : kernel_layout()) append_file(source, file.name, file.source);
     for (const auto& file : kernel_postlude()) append_file(source, file.name, file.source);
     for (const auto& file : mode_files(render_mode_name(switches.mode))) {
         append_file(source, file.name, file.source);

@@ -513,8 +513,8 @@ EnvironmentInfo environment_info(const EnvironmentTables& tables, double rotatio
     double turns = std::fmod(rotation_degrees / 360.0, 1.0);
     if (turns < 0.0) turns += 1.0;
     EnvironmentInfo info{};
-    info.transform[0] = float(turns);
-    info.transform[1] = intensity;
+    info.transform.s[0] = float(turns);
+    info.transform.s[1] = intensity;
     info.width = tables.width;
     info.height = tables.height;
     info.marginal_offset = tables.marginal_offset;

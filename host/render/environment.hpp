@@ -20,6 +20,7 @@
 #include <string_view>
 #include <vector>
 
+#include "device/kernel_layout.hpp"
 #include "image/hdr_image.hpp"
 
 namespace fgr {
@@ -123,15 +124,9 @@ struct EnvironmentTables {
 EnvironmentTables environment_tables(const HdrImage& map,
                                      std::string_view name = "environment map");
 
-// environment_info in kernels/fgr_environment.cl, passed by value as a kernel argument.
-struct alignas(16) EnvironmentInfo {
-    float transform[4];  // rotation in turns, intensity, 0, 0
-    std::int32_t width;
-    std::int32_t height;
-    std::int32_t marginal_offset;
-    std::int32_t conditional_offset;
-};
-static_assert(sizeof(EnvironmentInfo) == 32, "must match environment_info in fgr_environment.cl");
+// `environment_info` of kernels/shared/fgr_layout_environment.h, passed by value as a kernel
+// argument beside `data`.
+using EnvironmentInfo = layout::environment_info;
 
 // The kernel's view of `tables` turned by `rotation_degrees` (see above) and scaled by
 // `intensity` (finite, non-negative; std::invalid_argument otherwise).

@@ -5,6 +5,8 @@
 #include <glm/geometric.hpp>
 #include <glm/trigonometric.hpp>
 
+#include "device/kernel_layout.hpp"
+
 namespace fgr {
 namespace {
 
@@ -12,26 +14,6 @@ constexpr int kPathLightFloats = 10;  // FGR_PATH_LIGHT_FLOATS in fgr_mode_path.
 constexpr int kAuxiliaryPlanes = 7;   // albedo (3), normal (3), alpha
 constexpr int kStatsPlanes = 2;       // lane and packet DE evaluations
 constexpr int kForegroundPlanes = 3;  // with aovs: radiance of the samples that hit
-
-// Mirrors `path_settings` in kernels/fgr_mode_path.cl.
-struct PathSettingsArgument {
-    cl_int max_bounces;
-    cl_int roulette_depth;
-    cl_float radiance_clamp;
-    cl_int flags;
-    cl_uint seed;
-    cl_int light_count;
-    cl_float environment_pick;
-    cl_int padding;
-};
-static_assert(sizeof(PathSettingsArgument) == 32, "must match path_settings in fgr_mode_path.cl");
-
-enum PathFlags : cl_int {
-    kLightSampling = 1,
-    kMis = 2,
-    kEnvironmentImportance = 4,
-    kIndependentSamples = 8,
-};
 
 float luminance(glm::vec3 rgb) { return 0.2126f * rgb.r + 0.7152f * rgb.g + 0.0722f * rgb.b; }
 
@@ -151,14 +133,15 @@ void PathMode::bind(cl::Kernel& kernel, const FrameRequest& request, const TileL
     const PathSettings& settings = request.path;
     check_path_settings(settings);
     prepare(settings);
-    PathSettingsArgument argument{};
+    layout::path_settings argument{};
     argument.max_bounces = settings.max_bounces;
     argument.roulette_depth =
         settings.roulette_depth > 0 ? settings.roulette_depth : kMaxBounces + 1;
     argument.radiance_clamp = settings.radiance_clamp;
-    argument.flags = (settings.light_sampling ? kLightSampling : 0) | (settings.mis ? kMis : 0) |
-                     (settings.environment_importance ? kEnvironmentImportance : 0) |
-                     (settings.stratified ? 0 : kIndependentSamples);
+    argument.flags = (settings.light_sampling ? FGR_PATH_LIGHT_SAMPLING : 0) |
+                     (settings.mis ? FGR_PATH_MIS : 0) |
+                     (settings.environment_importance ? FGR_PATH_ENVIRONMENT_IS : 0) |
+                     (settings.stratified ? 0 : FGR_PATH_INDEPENDENT);
     argument.seed = settings.seed;
     argument.light_count = light_count_;
     argument.environment_pick = environment_pick_;

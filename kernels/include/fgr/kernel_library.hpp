@@ -1,7 +1,7 @@
 #pragma once
 // The OpenCL C kernel library, embedded in the binary. A scene's program is
 //   switches + prelude files + parameter accessors + the formula families the scene calls
-//   + scene source + postlude files + the render mode's files.
+//   + scene source + layout headers + postlude files + the render mode's files.
 
 #include <span>
 #include <string_view>
@@ -16,6 +16,10 @@ struct KernelFile {
 // Types and maths a scene's source may use: packet types, vec3 maths, materials and their BSDFs,
 // the SDF toolkit (primitives, combinators, transforms), IFS folds and orbit-trap colouring.
 std::span<const KernelFile> kernel_prelude();
+// What the host and the kernels exchange, in headers the host includes too
+// (shared/fgr_layout_*.h). After the scene's source, so a scene sees none of it; before
+// everything that uses it.
+std::span<const KernelFile> kernel_layout();
 // Marching, shading, the camera and the probe kernels, which call the scene's functions.
 std::span<const KernelFile> kernel_postlude();
 

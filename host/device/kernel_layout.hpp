@@ -1,0 +1,57 @@
+#pragma once
+// What the host and the kernels exchange, as the kernels declare it (kernels/shared/): structs
+// passed by value, the light lists' layouts, which plane holds what and each kernel argument's
+// index. Both sides compile the same headers; here the host checks that its compiler lays the
+// structs out as OpenCL C does (each field aligned to its size, a float4 to 16 bytes, a struct
+// to its largest field and padded to a multiple of it). tests/test_device_layout.cpp has the
+// device report the same figures.
+
+#include <cstddef>
+
+#include "fgr_layout_camera.h"
+#include "fgr_layout_environment.h"
+#include "fgr_layout_path.h"
+#include "fgr_layout_types.h"
+
+namespace fgr::layout {
+
+static_assert(sizeof(fgr_layout_int) == 4 && sizeof(fgr_layout_uint) == 4 &&
+              sizeof(fgr_layout_float) == 4);
+static_assert(sizeof(fgr_layout_float4) == 16 && alignof(fgr_layout_float4) == 16);
+
+static_assert(sizeof(camera_frame) == 112 && alignof(camera_frame) == 16);
+static_assert(offsetof(camera_frame, eye) == 0);
+static_assert(offsetof(camera_frame, forward) == 16);
+static_assert(offsetof(camera_frame, right) == 32);
+static_assert(offsetof(camera_frame, up) == 48);
+static_assert(offsetof(camera_frame, tan_half_fov) == 64);
+static_assert(offsetof(camera_frame, pixel_angle) == 68);
+static_assert(offsetof(camera_frame, width) == 72);
+static_assert(offsetof(camera_frame, height) == 76);
+static_assert(offsetof(camera_frame, projection) == 80);
+static_assert(offsetof(camera_frame, fisheye_half_fov) == 84);
+static_assert(offsetof(camera_frame, eye_separation) == 88);
+static_assert(offsetof(camera_frame, convergence) == 92);
+static_assert(offsetof(camera_frame, region_x) == 96);
+static_assert(offsetof(camera_frame, region_y) == 100);
+static_assert(offsetof(camera_frame, region_width) == 104);
+static_assert(offsetof(camera_frame, region_height) == 108);
+
+static_assert(sizeof(environment_info) == 32 && alignof(environment_info) == 16);
+static_assert(offsetof(environment_info, transform) == 0);
+static_assert(offsetof(environment_info, width) == 16);
+static_assert(offsetof(environment_info, height) == 20);
+static_assert(offsetof(environment_info, marginal_offset) == 24);
+static_assert(offsetof(environment_info, conditional_offset) == 28);
+
+static_assert(sizeof(path_settings) == 32 && alignof(path_settings) == 4);
+static_assert(offsetof(path_settings, max_bounces) == 0);
+static_assert(offsetof(path_settings, roulette_depth) == 4);
+static_assert(offsetof(path_settings, radiance_clamp) == 8);
+static_assert(offsetof(path_settings, flags) == 12);
+static_assert(offsetof(path_settings, seed) == 16);
+static_assert(offsetof(path_settings, light_count) == 20);
+static_assert(offsetof(path_settings, environment_pick) == 24);
+static_assert(offsetof(path_settings, padding) == 28);
+
+}  // namespace fgr::layout
