@@ -24,7 +24,8 @@
  *
  * Arguments of both: those every mode takes (planes .. PARAMS, see fgr_camera.cl), then `state`
  * (each pixel's best depth, tile-major like the planes; -1: none yet); fgr_brute_shade then takes
- * the scene's lights (FGR_LIGHT_FLOATS floats each) and their count. */
+ * the scene's lights (FGR_LIGHT_FLOATS floats each, shared/fgr_layout_lights.h) and their
+ * count. */
 
 /* Planes after the common four: the shading's albedo and normal (for EXR layers and tests), then
  * with FGR_STATS the inside tests. */
@@ -336,12 +337,13 @@ inline vec3 brute_lighting(vec3 eye, vec3 dir, real depth, vec3 p, vec3 n, vec3 
         const vec3 half_vector = v3_normalize(v3_add(l, to_eye));
         const real specular = FGR_SPECULAR * fgr_pown(fmax(v3_dot(n, half_vector), 0.0f),
                                                       FGR_SHININESS);
-        real strength = light[7] * falloff * select(fgr_real(0.0f), fgr_real(1.0f), diffuse > 0.0f);
+        real strength = light[FGR_LIGHT_INTENSITY] * falloff *
+                        select(fgr_real(0.0f), fgr_real(1.0f), diffuse > 0.0f);
 #if defined(FGR_EFFECT_SHADOWS) || defined(FGR_EFFECT_SOFT_SHADOWS)
         strength *= brute_visibility(eye, dir, depth, l, reach, hit & (diffuse > 0.0f), target, px,
                                      py, i, camera, PARAMS_PASS);
 #endif
-        const vec3 light_colour = v3_splat(light[4], light[5], light[6]);
+        const vec3 light_colour = light_vec3(light, FGR_LIGHT_COLOUR);
         const vec3 lit = v3(albedo.x * diffuse + specular, albedo.y * diffuse + specular,
                             albedo.z * diffuse + specular);
         colour = v3_add(colour, v3_scale(v3_mul(lit, light_colour), strength));

@@ -14,9 +14,8 @@
 
  *
  * Arguments: those every mode takes (planes .. PARAMS, see fgr_camera.cl), then the lights (the
- * scene's and the sky's sun, FGR_PATH_LIGHT_FLOATS each, laid out by
- * host/render/modes/path_mode.cpp), the settings (path_settings, shared/fgr_layout_path.h), and
- * the environment (ENVIRONMENT,
+ * scene's and the sky's sun, FGR_PATH_LIGHT_FLOATS each, shared/fgr_layout_lights.h), the
+ * settings (path_settings, shared/fgr_layout_path.h), and the environment (ENVIRONMENT,
  * fgr_environment.cl).
  *
  * Planes: 0-2 radiance (summed over samples), 3 depth of the first hit (sample 0), then the
@@ -31,12 +30,6 @@
 #else
 #define FGR_PATH_FOREGROUND_PLANE 11
 #endif
-
-/* A light as the path tracer reads it: type (FGR_LIGHT_POINT or directional), the unit direction
- * towards a directional light or a point light's position, radiance (directional: of its disc;
- * point: intensity, W/sr-like), the cosine of a disc's angular radius (1: a delta light), and
- * the cumulative probability of picking lights 0..this one for next-event estimation. */
-#define FGR_PATH_LIGHT_FLOATS 10
 
 #ifndef FGR_SCENE_HAS_MATERIAL
 /* A scene without its own materials is diffuse, coloured by scene_colour. */
@@ -118,17 +111,18 @@ inline vec3 escaped_radiance(vec3 dir, mask light_sampled, bool mis, real bsdf_p
     float picked_before = settings.environment_pick;
     for (int i = 0; i < settings.light_count; ++i) {
         __constant const float* light = lights + i * FGR_PATH_LIGHT_FLOATS;
-        const float pick = light[8] - picked_before;
-        picked_before = light[8];
-        const float cos_max = light[7];
-        if ((int)light[0] == FGR_LIGHT_POINT || cos_max >= 1.0f) continue; /* delta lights */
-        const mask in_disc = v3_dot(dir, v3_splat(light[1], light[2], light[3])) >= cos_max;
+        const float pick = light[FGR_PATH_LIGHT_PICK_UNTIL] - picked_before;
+        picked_before = light[FGR_PATH_LIGHT_PICK_UNTIL];
+        const float cos_max = light[FGR_PATH_LIGHT_COS_MAX];
+        if ((int)light[FGR_PATH_LIGHT_KIND] == FGR_LIGHT_KIND_POINT || cos_max >= 1.0f) {
+            continue; /* delta lights */
+        }
+        const mask in_disc = v3_dot(dir, light_vec3(light, FGR_PATH_LIGHT_VECTOR)) >= cos_max;
         if (!fgr_any(in_disc)) continue;
         const real w = escaped_weight(light_sampled, mis, bsdf_pdf,
                                       fgr_real(pick * cone_pdf(cos_max)));
-        radiance = v3_add(radiance, v3_select(v3_splat(0.0f, 0.0f, 0.0f),
-                                              v3_scale(v3_splat(light[4], light[5], light[6]), w),
-                                              in_disc));
+        const vec3 disc = v3_scale(light_vec3(light, FGR_PATH_LIGHT_RADIANCE), w);
+        radiance = v3_add(radiance, v3_select(v3_splat(0.0f, 0.0f, 0.0f), disc, in_disc));
     }
     return radiance;
 }
@@ -156,17 +150,18 @@ inline light_sample sample_light(vec3 p, real u_pick, real u1, real u2,
     float picked_before = settings.environment_pick;
     for (int i = 0; i < settings.light_count; ++i) {
         __constant const float* light = lights + i * FGR_PATH_LIGHT_FLOATS;
-        const float pick = light[8] - picked_before;
-        const mask chosen = (u_pick >= picked_before) & (u_pick < light[8]);
-        picked_before = light[8];
+        const float pick = light[FGR_PATH_LIGHT_PICK_UNTIL] - picked_before;
+        const mask chosen =
+            (u_pick >= picked_before) & (u_pick < light[FGR_PATH_LIGHT_PICK_UNTIL]);
+        picked_before = light[FGR_PATH_LIGHT_PICK_UNTIL];
         if (!fgr_any(chosen)) continue;
-        const vec3 vector = v3_splat(light[1], light[2], light[3]);
-        const vec3 colour = v3_splat(light[4], light[5], light[6]);
-        const float cos_max = light[7];
+        const vec3 vector = light_vec3(light, FGR_PATH_LIGHT_VECTOR);
+        const vec3 colour = light_vec3(light, FGR_PATH_LIGHT_RADIANCE);
+        const float cos_max = light[FGR_PATH_LIGHT_COS_MAX];
         vec3 dir;
         vec3 radiance;
         real pdf, reach;
-        if ((int)light[0] == FGR_LIGHT_POINT) {
+        if ((int)light[FGR_PATH_LIGHT_KIND] == FGR_LIGHT_KIND_POINT) {
             const vec3 to_light = v3_sub(vector, p);
             const real dist2 = fmax(v3_length2(to_light), FGR_MIN_LENGTH * FGR_MIN_LENGTH);
             dir = v3_scale(to_light, rsqrt(dist2));

@@ -3,7 +3,7 @@
  * pixel and sample. The fast mode, and the one the viewer previews with.
  *
  * Arguments: those every mode takes (planes .. PARAMS, see fgr_camera.cl), then the scene's
- * lights (FGR_LIGHT_FLOATS floats each, see fgr_shade.cl) and their count. */
+ * lights (FGR_LIGHT_FLOATS floats each, shared/fgr_layout_lights.h) and their count. */
 
 #ifdef FGR_STATS
 #define FGR_SHADED_STATS_PLANES 4

@@ -1,9 +1,10 @@
 /* fgr kernel library: lighting. Blinn-Phong with the scene's lights, in linear RGB; the host
- * encodes to sRGB afterwards. Lights arrive as FGR_LIGHT_FLOATS floats each:
- * type, vector.xyz, colour.rgb, intensity (see host/render/renderer.cpp). */
+ * encodes to sRGB afterwards. Lights arrive as FGR_LIGHT_FLOATS floats each: type, vector,
+ * colour, intensity (shared/fgr_layout_lights.h). */
 
-#define FGR_LIGHT_FLOATS 8
-#define FGR_LIGHT_POINT 1
+/* The three floats of a light from `first` on (a vector or a colour), in every lane. */
+#define light_vec3(light, first) \
+    v3_splat((light)[first], (light)[(first) + 1], (light)[(first) + 2])
 #define FGR_AMBIENT 0.06f
 #define FGR_SPECULAR 0.35f
 #define FGR_SHININESS 32 /* an integer: fgr_pown, five multiplications */
@@ -27,8 +28,8 @@ inline vec3 background(vec3 dir) {
  * how far a shadow ray must look for occluders (to the light, or max_distance for the sun). */
 inline vec3 light_direction(__constant const float* light, vec3 p, float max_distance,
                             real* falloff, real* reach) {
-    vec3 v = v3_splat(light[1], light[2], light[3]);
-    if ((int)light[0] == FGR_LIGHT_POINT) {
+    vec3 v = light_vec3(light, FGR_LIGHT_VECTOR);
+    if ((int)light[FGR_LIGHT_KIND] == FGR_LIGHT_KIND_POINT) {
         vec3 to_light = v3_sub(v, p);
         /* The floor only keeps a point on the light from dividing by zero: far below any
          * footprint at every scale the precision resolves. */
@@ -199,7 +200,8 @@ inline vec3 shade_surface(vec3 p, vec3 n, vec3 albedo, vec3 view_dir, real eps, 
         vec3 half_vector = v3_normalize(v3_add(l, to_eye));
         real specular = FGR_SPECULAR * fgr_pown(fmax(v3_dot(n, half_vector), 0.0f),
                                                   FGR_SHININESS);
-        real strength = light[7] * falloff * select(fgr_real(0.0f), fgr_real(1.0f), diffuse > 0.0f);
+        real strength = light[FGR_LIGHT_INTENSITY] * falloff *
+                        select(fgr_real(0.0f), fgr_real(1.0f), diffuse > 0.0f);
 #if defined(FGR_EFFECT_SHADOWS) || defined(FGR_EFFECT_SOFT_SHADOWS)
         if (with_shadows) {
             vec3 start = leave_surface(p, n, travelled, limits);
@@ -207,7 +209,7 @@ inline vec3 shade_surface(vec3 p, vec3 n, vec3 albedo, vec3 view_dir, real eps, 
                                          limits, work, PARAMS_PASS);
         }
 #endif
-        vec3 light_colour = v3_splat(light[4], light[5], light[6]);
+        vec3 light_colour = light_vec3(light, FGR_LIGHT_COLOUR);
         vec3 lit = v3(albedo.x * diffuse + specular, albedo.y * diffuse + specular,
                  albedo.z * diffuse + specular);
         colour = v3_add(colour, v3_scale(v3_mul(lit, light_colour), strength));

@@ -15,6 +15,7 @@
 #include "fgr_iterate_cl.h"
 #include "fgr_layout_camera_h.h"
 #include "fgr_layout_environment_h.h"
+#include "fgr_layout_lights_h.h"
 #include "fgr_layout_path_h.h"
 #include "fgr_layout_types_h.h"
 #include "fgr_march_cl.h"
@@ -78,6 +79,7 @@ std::span<const KernelFile> kernel_layout() {
         KernelFile{"shared/fgr_layout_camera.h", fgr_layout_camera_h},
         KernelFile{"shared/fgr_layout_environment.h", fgr_layout_environment_h},
         KernelFile{"shared/fgr_layout_path.h", fgr_layout_path_h},
+        KernelFile{"shared/fgr_layout_lights.h", fgr_layout_lights_h},
     };
     return files;
 }

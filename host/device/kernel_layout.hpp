@@ -10,6 +10,7 @@
 
 #include "fgr_layout_camera.h"
 #include "fgr_layout_environment.h"
+#include "fgr_layout_lights.h"
 #include "fgr_layout_path.h"
 #include "fgr_layout_types.h"
 
@@ -53,5 +54,9 @@ static_assert(offsetof(path_settings, seed) == 16);
 static_assert(offsetof(path_settings, light_count) == 20);
 static_assert(offsetof(path_settings, environment_pick) == 24);
 static_assert(offsetof(path_settings, padding) == 28);
+
+// Each light's last field lies inside it.
+static_assert(FGR_LIGHT_INTENSITY < FGR_LIGHT_FLOATS &&
+              FGR_PATH_LIGHT_PICK_UNTIL < FGR_PATH_LIGHT_FLOATS);
 
 }  // namespace fgr::layout

@@ -7,6 +7,7 @@
 #include <span>
 #include <vector>
 
+#include "device/kernel_layout.hpp"
 #include "device/opencl_device.hpp"
 #include "render/renderer.hpp"
 #include "scene/render_mode.hpp"
@@ -63,7 +64,7 @@ std::vector<float> planes_in_rows(std::span<const float> planes, const TileLayou
 cl::Buffer upload_floats(const ComputeDevice& device, const std::vector<float>& values);
 
 // The scene's lights as fgr_shade.cl reads them: FGR_LIGHT_FLOATS floats each (type, vector with
-// directions normalised, colour, intensity).
+// directions normalised, colour, intensity; kernels/shared/fgr_layout_lights.h).
 std::vector<float> scene_light_values(const Scene& scene);
 
 // The module for switches.mode, for a program built with `switches`.

@@ -7,6 +7,11 @@
 #include "render/modes/path_mode.hpp"
 #include "render/modes/shaded_mode.hpp"
 
+#include <array>
+#include <stdexcept>
+
+#include <glm/geometric.hpp>
+
 namespace fgr {
 
 cl::Buffer upload_floats(const ComputeDevice& device, const std::vector<float>& values) {
@@ -35,15 +40,20 @@ std::vector<float> planes_in_rows(std::span<const float> planes, const TileLayou
 }
 
 std::vector<float> scene_light_values(const Scene& scene) {
-    constexpr size_t kLightFloats = 8;  // FGR_LIGHT_FLOATS in fgr_shade.cl
     std::vector<float> values;
-    values.reserve(scene.lights.size() * kLightFloats);
+    values.reserve(scene.lights.size() * FGR_LIGHT_FLOATS);
     for (const Light& light : scene.lights) {
         const glm::vec3 vector =
             light.type == LightType::Directional ? glm::normalize(light.vector) : light.vector;
-        values.insert(values.end(),
-                      {light.type == LightType::Point ? 1.0f : 0.0f, vector.x, vector.y, vector.z,
-                       light.colour.r, light.colour.g, light.colour.b, light.intensity});
+        std::array<float, FGR_LIGHT_FLOATS> floats{};
+        floats[FGR_LIGHT_KIND] = static_cast<float>(
+            light.type == LightType::Point ? FGR_LIGHT_KIND_POINT : FGR_LIGHT_KIND_DIRECTIONAL);
+        for (int c = 0; c < 3; ++c) {
+            floats[FGR_LIGHT_VECTOR + c] = vector[c];
+            floats[FGR_LIGHT_COLOUR + c] = light.colour[c];
+        }
+        floats[FGR_LIGHT_INTENSITY] = light.intensity;
+        values.insert(values.end(), floats.begin(), floats.end());
     }
     return values;
 }

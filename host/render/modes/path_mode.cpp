@@ -1,6 +1,7 @@
 #include "render/modes/path_mode.hpp"
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <glm/geometric.hpp>
 #include <glm/trigonometric.hpp>
@@ -10,7 +11,6 @@
 namespace fgr {
 namespace {
 
-constexpr int kPathLightFloats = 10;  // FGR_PATH_LIGHT_FLOATS in fgr_mode_path.cl
 constexpr int kAuxiliaryPlanes = 7;   // albedo (3), normal (3), alpha
 constexpr int kStatsPlanes = 2;       // lane and packet DE evaluations
 constexpr int kForegroundPlanes = 3;  // with aovs: radiance of the samples that hit
@@ -18,7 +18,7 @@ constexpr int kForegroundPlanes = 3;  // with aovs: radiance of the samples that
 float luminance(glm::vec3 rgb) { return 0.2126f * rgb.r + 0.7152f * rgb.g + 0.0722f * rgb.b; }
 
 struct LightList {
-    std::vector<float> values;  // kPathLightFloats per light
+    std::vector<float> values;  // FGR_PATH_LIGHT_FLOATS per light
     float environment_pick = 1.0f;
 };
 
@@ -93,10 +93,16 @@ LightList light_list(const Scene& scene, const PreparedEnvironment& environment,
         cumulative += total > 0.0f ? light.weight / total : 0.0f;
         // The last light closes the distribution at exactly 1, whatever rounding left.
         const float pick_until = i + 1 == lights.size() ? 1.0f : cumulative;
-        list.values.insert(list.values.end(),
-                           {light.point ? 1.0f : 0.0f, light.vector.x, light.vector.y,
-                            light.vector.z, light.radiance.r, light.radiance.g, light.radiance.b,
-                            light.cos_max, pick_until, 0.0f});
+        std::array<float, FGR_PATH_LIGHT_FLOATS> values{};
+        values[FGR_PATH_LIGHT_KIND] =
+            static_cast<float>(light.point ? FGR_LIGHT_KIND_POINT : FGR_LIGHT_KIND_DIRECTIONAL);
+        for (int c = 0; c < 3; ++c) {
+            values[FGR_PATH_LIGHT_VECTOR + c] = light.vector[c];
+            values[FGR_PATH_LIGHT_RADIANCE + c] = light.radiance[c];
+        }
+        values[FGR_PATH_LIGHT_COS_MAX] = light.cos_max;
+        values[FGR_PATH_LIGHT_PICK_UNTIL] = pick_until;
+        list.values.insert(list.values.end(), values.begin(), values.end());
     }
     return list;
 }
@@ -123,7 +129,7 @@ void PathMode::prepare(const PathSettings& settings) {
     environment_data_ = upload_floats(device_, environment->tables.data);
     const LightList lights = light_list(scene_, *environment, settings.scene_lights);
     lights_ = upload_floats(device_, lights.values);
-    light_count_ = static_cast<int>(lights.values.size() / kPathLightFloats);
+    light_count_ = static_cast<int>(lights.values.size() / FGR_PATH_LIGHT_FLOATS);
     environment_pick_ = lights.environment_pick;
     bound_environment_ = environment;
     bound_scene_lights_ = settings.scene_lights;
