@@ -3,36 +3,47 @@
  *
  * Work decomposition: work-item g renders tile g, FGR_TILE_W x FGR_TILE_H pixels in the lanes of
  * one packet (a 1x1 tile when FGR_WIDTH is 1). Neighbouring pixels march nearly the same path, so
- * the lanes of a packet stay busy together. Results are stored tile-major in planes
- * (r, g, b, depth), each lane at tile * FGR_WIDTH + lane, with vector stores; the host re-orders
- * them into rows while encoding the image. */
+ * the lanes of a packet stay busy together. Results are stored tile-major in planes, each lane at
+ * tile * FGR_WIDTH + lane, with vector stores; the host re-orders them into rows while encoding
+ * the image. The tiles' shape and what each plane holds are shared with the host
+ * (shared/fgr_layout_planes.h). */
 
+#define FGR_TILE_W FGR_TILE_WIDTH(FGR_WIDTH)
+#define FGR_TILE_H FGR_TILE_HEIGHT(FGR_WIDTH)
+/* Each lane's column and row in its tile. */
 #if FGR_WIDTH == 1
-#define FGR_TILE_W 1
 #define FGR_LANE_X ((real)(0.0f))
 #define FGR_LANE_Y ((real)(0.0f))
 #define fgr_store(value, tile, plane) ((plane)[tile] = convert_float_lanes(value))
 #define fgr_load(tile, plane) convert_real((plane)[tile])
 #elif FGR_WIDTH == 4
-#define FGR_TILE_W 2
 #define FGR_LANE_X ((real)(0, 1, 0, 1))
 #define FGR_LANE_Y ((real)(0, 0, 1, 1))
 #define fgr_store(value, tile, plane) vstore4(convert_float_lanes(value), (tile), (plane))
 #define fgr_load(tile, plane) convert_real(vload4((tile), (plane)))
 #elif FGR_WIDTH == 8
-#define FGR_TILE_W 4
 #define FGR_LANE_X ((real)(0, 1, 2, 3, 0, 1, 2, 3))
 #define FGR_LANE_Y ((real)(0, 0, 0, 0, 1, 1, 1, 1))
 #define fgr_store(value, tile, plane) vstore8(convert_float_lanes(value), (tile), (plane))
 #define fgr_load(tile, plane) convert_real(vload8((tile), (plane)))
 #elif FGR_WIDTH == 16
-#define FGR_TILE_W 4
 #define FGR_LANE_X ((real)(0, 1, 2, 3, 0, 1, 2, 3, 0, 1, 2, 3, 0, 1, 2, 3))
 #define FGR_LANE_Y ((real)(0, 0, 0, 0, 1, 1, 1, 1, 2, 2, 2, 2, 3, 3, 3, 3))
 #define fgr_store(value, tile, plane) vstore16(convert_float_lanes(value), (tile), (plane))
 #define fgr_load(tile, plane) convert_real(vload16((tile), (plane)))
 #endif
-#define FGR_TILE_H (FGR_WIDTH / FGR_TILE_W)
+
+/* The switches as 0 or 1, for the plane layouts that depend on them (fgr_layout_planes.h). */
+#ifdef FGR_STATS
+#define FGR_STATS_ON 1
+#else
+#define FGR_STATS_ON 0
+#endif
+#ifdef FGR_GEOMETRY_IFS
+#define FGR_IFS_ON 1
+#else
+#define FGR_IFS_ON 0
+#endif
 
 /* The camera arrives as a camera_frame (shared/fgr_layout_camera.h): the eye, split into hi + lo
  * for double lanes, the basis, the projection and the region rendered. The projection

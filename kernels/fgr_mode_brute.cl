@@ -3,8 +3,8 @@
  * its DE's sign against the hit threshold, see fgr_geometry.cl), so this mode renders sets no DE
  * is known for.
  *
- * Two kernels (planes: colour, depth, then the albedo and normal the shading used, then with
- * FGR_STATS each pixel's inside tests):
+ * Two kernels (planes, FGR_BRUTE_*_PLANE in shared/fgr_layout_planes.h: colour, depth, then the
+ * albedo and normal the shading used, then with FGR_STATS each pixel's inside tests):
  *   fgr_render       one pass of sampling along each pixel's ray. The pass draws
  *                    brute_samples stratified samples between brute_near and the pixel's best
  *                    depth so far (max_distance before the first hit), stops at the first sample
@@ -26,12 +26,6 @@
  * (each pixel's best depth, tile-major like the planes; -1: none yet); fgr_brute_shade then takes
  * the scene's lights (FGR_LIGHT_FLOATS floats each, shared/fgr_layout_lights.h) and their
  * count. */
-
-/* Planes after the common four: the shading's albedo and normal (for EXR layers and tests), then
- * with FGR_STATS the inside tests. */
-#define FGR_BRUTE_ALBEDO_PLANE 4
-#define FGR_BRUTE_NORMAL_PLANE 7
-#define FGR_BRUTE_STATS_PLANE 10
 
 #define FGR_BRUTE_SOLID_AUTO 0
 #define FGR_BRUTE_SOLID_SET 1
@@ -139,7 +133,7 @@ inline real brute_pass(vec3 eye, vec3 dir, float footprint, real best, mask acti
 }
 
 /* Renders pass `sample` of every pixel of the tile: refines `state` and writes the depth so far
- * to plane 3 (and with FGR_STATS, the pass's inside tests, summed over passes, to
+ * to FGR_DEPTH_PLANE (and with FGR_STATS, the pass's inside tests, summed over passes, to
  * FGR_BRUTE_STATS_PLANE). The colour planes are left to fgr_brute_shade. */
 __kernel void fgr_render(FGR_RENDER_ARGS, __global float* state) {
     const int tile = get_global_id(0);
@@ -152,7 +146,7 @@ __kernel void fgr_render(FGR_RENDER_ARGS, __global float* state) {
     const real best = brute_pass(eye, dir, brute_footprint(camera, PARAMS_PASS), previous,
                                  pixels.inside, pixels.px, pixels.py, sample, &tests, PARAMS_PASS);
     fgr_store(best, tile, state);
-    fgr_store(best, tile, planes + 3 * plane_size);
+    fgr_store(best, tile, planes + FGR_DEPTH_PLANE * plane_size);
 #ifdef FGR_STATS
     accumulate_plane(convert_real(tests), sample, tile,
                      planes + FGR_BRUTE_STATS_PLANE * plane_size);
@@ -166,11 +160,6 @@ __kernel void fgr_render(FGR_RENDER_ARGS, __global float* state) {
  * step), not a continuation of this one. At 640 pixels across a 45 degree view this only rejects
  * surfaces seen within about 1.5 degrees of grazing. */
 #define FGR_BRUTE_DISCONTINUITY 0.05f
-/* The farthest any pixel's screen-space shading reads from it, in pixels: the occlusion disc's
- * and the glow's radius are capped here (only images over 1024 pixels wide reach the occlusion
- * cap, over 12288 the glow's), so a tile of a gigapixel still needs this much padding and no
- * more. Mirrored by kBruteMaxReach in host/render/modes/brute_mode.hpp. */
-#define FGR_BRUTE_MAX_REACH 256
 /* Samples of the screen-space occlusion's disc, and the glow's. */
 #define FGR_SSAO_SAMPLES 16
 /* Ambient light: higher than the shaded mode's, since occlusion here darkens everything. */
@@ -375,7 +364,8 @@ inline vec3 brute_glow(vec3 colour, __global const float* state, camera_frame ca
 #endif
 
 /* Shades every pixel of the tile from the depth buffer `state` once the passes are done: writes
- * the colour planes 0 to 2 and the depth plane 3 (-1 where nothing was hit). */
+ * the colour and depth planes (depth -1 where nothing was hit), and the shading's albedo and
+ * normal. */
 __kernel void fgr_brute_shade(FGR_RENDER_ARGS, __global const float* state,
                               __constant const float* lights, int light_count) {
     (void)sample;
@@ -414,10 +404,10 @@ __kernel void fgr_brute_shade(FGR_RENDER_ARGS, __global const float* state,
 #endif
     /* Pixels the projection does not cover (outside a fisheye's circle) are black. */
     colour = v3_select(v3_splat(0.0f, 0.0f, 0.0f), colour, pixels.inside);
-    fgr_store(colour.x, tile, planes);
-    fgr_store(colour.y, tile, planes + plane_size);
-    fgr_store(colour.z, tile, planes + 2 * plane_size);
-    fgr_store(select(fgr_real(-1.0f), depth, hit), tile, planes + 3 * plane_size);
+    fgr_store(colour.x, tile, planes + FGR_COLOUR_PLANE * plane_size);
+    fgr_store(colour.y, tile, planes + (FGR_COLOUR_PLANE + 1) * plane_size);
+    fgr_store(colour.z, tile, planes + (FGR_COLOUR_PLANE + 2) * plane_size);
+    fgr_store(select(fgr_real(-1.0f), depth, hit), tile, planes + FGR_DEPTH_PLANE * plane_size);
     fgr_store(albedo.x, tile, planes + FGR_BRUTE_ALBEDO_PLANE * plane_size);
     fgr_store(albedo.y, tile, planes + (FGR_BRUTE_ALBEDO_PLANE + 1) * plane_size);
     fgr_store(albedo.z, tile, planes + (FGR_BRUTE_ALBEDO_PLANE + 2) * plane_size);

@@ -18,18 +18,13 @@
  * settings (path_settings, shared/fgr_layout_path.h), and the environment (ENVIRONMENT,
  * fgr_environment.cl).
  *
- * Planes: 0-2 radiance (summed over samples), 3 depth of the first hit (sample 0), then the
- * auxiliary outputs summed over samples: 4-6 albedo of the first hit, 7-9 its normal, 10 alpha
- * (1 where the camera ray met the surface); with FGR_STATS 11 the DE evaluations each lane took
- * part in and 12 those its packet made (for lane utilisation), summed over samples; with
- * FGR_AOVS (a still that writes alpha) then the radiance of the samples whose camera ray met the
- * surface (3 planes, FGR_PATH_FOREGROUND_PLANE): the foreground without the environment seen
- * past it, for straight or premultiplied alpha. */
-#ifdef FGR_STATS
-#define FGR_PATH_FOREGROUND_PLANE 13
-#else
-#define FGR_PATH_FOREGROUND_PLANE 11
-#endif
+ * Planes (FGR_PATH_*_PLANE, shared/fgr_layout_planes.h): radiance (summed over samples), depth
+ * of the first hit (sample 0), then the auxiliary outputs summed over samples: albedo of the
+ * first hit, its normal, alpha (1 where the camera ray met the surface); with FGR_STATS the DE
+ * evaluations each lane took part in and those its packet made (for lane utilisation), summed
+ * over samples; with FGR_AOVS (a still that writes alpha) then the radiance of the samples whose
+ * camera ray met the surface: the foreground without the environment seen past it, for straight
+ * or premultiplied alpha. */
 
 #ifndef FGR_SCENE_HAS_MATERIAL
 /* A scene without its own materials is diffuse, coloured by scene_colour. */
@@ -350,24 +345,30 @@ __kernel void fgr_render(FGR_RENDER_ARGS, __constant const float* lights, path_s
                                   largest > settings.radiance_clamp);
         radiance = v3_scale(radiance, scale);
     }
-    accumulate_plane(radiance.x, sample, tile, planes);
-    accumulate_plane(radiance.y, sample, tile, planes + plane_size);
-    accumulate_plane(radiance.z, sample, tile, planes + 2 * plane_size);
-    if (sample == 0) fgr_store(depth, tile, planes + 3 * plane_size);
-    accumulate_plane(first_albedo.x, sample, tile, planes + 4 * plane_size);
-    accumulate_plane(first_albedo.y, sample, tile, planes + 5 * plane_size);
-    accumulate_plane(first_albedo.z, sample, tile, planes + 6 * plane_size);
-    accumulate_plane(first_normal.x, sample, tile, planes + 7 * plane_size);
-    accumulate_plane(first_normal.y, sample, tile, planes + 8 * plane_size);
-    accumulate_plane(first_normal.z, sample, tile, planes + 9 * plane_size);
-    accumulate_plane(alpha, sample, tile, planes + 10 * plane_size);
+    __global float* colour_planes = planes + FGR_COLOUR_PLANE * plane_size;
+    accumulate_plane(radiance.x, sample, tile, colour_planes);
+    accumulate_plane(radiance.y, sample, tile, colour_planes + plane_size);
+    accumulate_plane(radiance.z, sample, tile, colour_planes + 2 * plane_size);
+    if (sample == 0) fgr_store(depth, tile, planes + FGR_DEPTH_PLANE * plane_size);
+    __global float* albedo_planes = planes + FGR_PATH_ALBEDO_PLANE * plane_size;
+    accumulate_plane(first_albedo.x, sample, tile, albedo_planes);
+    accumulate_plane(first_albedo.y, sample, tile, albedo_planes + plane_size);
+    accumulate_plane(first_albedo.z, sample, tile, albedo_planes + 2 * plane_size);
+    __global float* normal_planes = planes + FGR_PATH_NORMAL_PLANE * plane_size;
+    accumulate_plane(first_normal.x, sample, tile, normal_planes);
+    accumulate_plane(first_normal.y, sample, tile, normal_planes + plane_size);
+    accumulate_plane(first_normal.z, sample, tile, normal_planes + 2 * plane_size);
+    accumulate_plane(alpha, sample, tile, planes + FGR_PATH_ALPHA_PLANE * plane_size);
 #ifdef FGR_STATS
-    accumulate_plane(convert_real(lane_steps), sample, tile, planes + 11 * plane_size);
-    accumulate_plane(fgr_real((float)packet_steps), sample, tile, planes + 12 * plane_size);
+    accumulate_plane(convert_real(lane_steps), sample, tile,
+                     planes + FGR_PATH_LANE_STEPS_PLANE * plane_size);
+    accumulate_plane(fgr_real((float)packet_steps), sample, tile,
+                     planes + FGR_PATH_PACKET_STEPS_PLANE * plane_size);
 #endif
 #ifdef FGR_AOVS
     /* alpha is 1 or 0 for one sample: the whole radiance of a sample whose camera ray hit. */
-    __global float* foreground = planes + FGR_PATH_FOREGROUND_PLANE * plane_size;
+    __global float* foreground =
+        planes + FGR_PATH_FOREGROUND_PLANE(FGR_STATS_ON) * plane_size;
     accumulate_plane(radiance.x * alpha, sample, tile, foreground);
     accumulate_plane(radiance.y * alpha, sample, tile, foreground + plane_size);
     accumulate_plane(radiance.z * alpha, sample, tile, foreground + 2 * plane_size);

@@ -3,50 +3,42 @@
  * pixel and sample. The fast mode, and the one the viewer previews with.
  *
  * Arguments: those every mode takes (planes .. PARAMS, see fgr_camera.cl), then the scene's
- * lights (FGR_LIGHT_FLOATS floats each, shared/fgr_layout_lights.h) and their count. */
-
-#ifdef FGR_STATS
-#define FGR_SHADED_STATS_PLANES 4
-#else
-#define FGR_SHADED_STATS_PLANES 0
-#endif
-#ifdef FGR_GEOMETRY_IFS
-/* IFS scenes also write the level of the node each pixel hit (-1: missed), after the stats
- * planes: how deep the footprint and the depth slider let the image go. */
-#define FGR_IFS_LEVEL_PLANE (4 + FGR_SHADED_STATS_PLANES)
-#define FGR_SHADED_AOV_PLANE (FGR_IFS_LEVEL_PLANE + 1)
-#else
-#define FGR_SHADED_AOV_PLANE (4 + FGR_SHADED_STATS_PLANES)
-#endif
+ * lights (FGR_LIGHT_FLOATS floats each, shared/fgr_layout_lights.h) and their count.
+ *
+ * Planes (FGR_SHADED_*, shared/fgr_layout_planes.h): colour and depth; with FGR_STATS the work
+ * behind each pixel; for IFS scenes the level each pixel's hit reached; with FGR_AOVS (a still
+ * that writes alpha or layers) the layers. */
 
 #ifdef FGR_AOVS
-/* With FGR_AOVS (a still that writes alpha or layers), from FGR_SHADED_AOV_PLANE on, summed over
- * samples like the colour: the first hit's albedo (3 planes) and shading normal (3), coverage
- * (1 for a sample whose camera ray met the surface), and the colour of those samples alone (3:
- * the foreground without the background, for straight or premultiplied alpha). Zero for a sample
- * that missed, as in the path mode. */
+/* The layers, summed over samples like the colour: the first hit's albedo and shading normal,
+ * coverage (1 for a sample whose camera ray met the surface), and the colour of those samples
+ * alone (the foreground without the background, for straight or premultiplied alpha). Zero for a
+ * sample that missed, as in the path mode. */
 inline void store_aovs(vec3 albedo, vec3 normal, mask hit, vec3 colour, int sample, int tile,
                        __global float* planes, int plane_size) {
     const vec3 none = v3_splat(0.0f, 0.0f, 0.0f);
     const vec3 foreground = v3_select(none, colour, hit);
     const real coverage = select(fgr_real(0.0f), fgr_real(1.0f), hit);
-    __global float* aov = planes + FGR_SHADED_AOV_PLANE * plane_size;
-    accumulate_plane(albedo.x, sample, tile, aov);
-    accumulate_plane(albedo.y, sample, tile, aov + plane_size);
-    accumulate_plane(albedo.z, sample, tile, aov + 2 * plane_size);
-    accumulate_plane(normal.x, sample, tile, aov + 3 * plane_size);
-    accumulate_plane(normal.y, sample, tile, aov + 4 * plane_size);
-    accumulate_plane(normal.z, sample, tile, aov + 5 * plane_size);
-    accumulate_plane(coverage, sample, tile, aov + 6 * plane_size);
-    accumulate_plane(foreground.x, sample, tile, aov + 7 * plane_size);
-    accumulate_plane(foreground.y, sample, tile, aov + 8 * plane_size);
-    accumulate_plane(foreground.z, sample, tile, aov + 9 * plane_size);
+    __global float* aov = planes + FGR_SHADED_AOV_PLANE(FGR_STATS_ON, FGR_IFS_ON) * plane_size;
+    __global float* albedo_planes = aov + FGR_SHADED_AOV_ALBEDO * plane_size;
+    accumulate_plane(albedo.x, sample, tile, albedo_planes);
+    accumulate_plane(albedo.y, sample, tile, albedo_planes + plane_size);
+    accumulate_plane(albedo.z, sample, tile, albedo_planes + 2 * plane_size);
+    __global float* normal_planes = aov + FGR_SHADED_AOV_NORMAL * plane_size;
+    accumulate_plane(normal.x, sample, tile, normal_planes);
+    accumulate_plane(normal.y, sample, tile, normal_planes + plane_size);
+    accumulate_plane(normal.z, sample, tile, normal_planes + 2 * plane_size);
+    accumulate_plane(coverage, sample, tile, aov + FGR_SHADED_AOV_COVERAGE * plane_size);
+    __global float* foreground_planes = aov + FGR_SHADED_AOV_FOREGROUND * plane_size;
+    accumulate_plane(foreground.x, sample, tile, foreground_planes);
+    accumulate_plane(foreground.y, sample, tile, foreground_planes + plane_size);
+    accumulate_plane(foreground.z, sample, tile, foreground_planes + 2 * plane_size);
 }
 #endif
 
 /* Renders sample `sample` of every pixel of the tile. Sample 0 writes the planes; later samples
  * add to them (the host divides by the sample count), and only sample 0 writes depth (and, with
- * FGR_STATS, the step count, out-of-steps, secondary-ray work and heap planes 4 to 7). */
+ * FGR_STATS, the stats planes, and the IFS level plane). */
 __kernel void fgr_render(FGR_RENDER_ARGS, __constant const float* lights, int light_count) {
     const int tile = get_global_id(0);
     if (tile >= tile_count) return;
@@ -103,16 +95,18 @@ __kernel void fgr_render(FGR_RENDER_ARGS, __constant const float* lights, int li
 #endif
     /* Pixels the projection does not cover (outside a fisheye's circle) are black. */
     colour = v3_select(v3_splat(0.0f, 0.0f, 0.0f), colour, inside);
-    accumulate_plane(colour.x, sample, tile, planes);
-    accumulate_plane(colour.y, sample, tile, planes + plane_size);
-    accumulate_plane(colour.z, sample, tile, planes + 2 * plane_size);
-    if (sample == 0) fgr_store(depth, tile, planes + 3 * plane_size);
+    __global float* colour_planes = planes + FGR_COLOUR_PLANE * plane_size;
+    accumulate_plane(colour.x, sample, tile, colour_planes);
+    accumulate_plane(colour.y, sample, tile, colour_planes + plane_size);
+    accumulate_plane(colour.z, sample, tile, colour_planes + 2 * plane_size);
+    if (sample == 0) fgr_store(depth, tile, planes + FGR_DEPTH_PLANE * plane_size);
 #ifdef FGR_AOVS
     store_aovs(first_albedo, first_normal, hit.hit, colour, sample, tile, planes, plane_size);
 #endif
 #ifdef FGR_GEOMETRY_IFS
     if (sample == 0) {
-        fgr_store(convert_real(hit.leaf_depth), tile, planes + FGR_IFS_LEVEL_PLANE * plane_size);
+        fgr_store(convert_real(hit.leaf_depth), tile,
+                  planes + FGR_SHADED_LEVEL_PLANE(FGR_STATS_ON) * plane_size);
     }
 #endif
 #ifdef FGR_STATS
@@ -123,17 +117,20 @@ __kernel void fgr_render(FGR_RENDER_ARGS, __constant const float* lights, int li
     if (sample == 0) {
 #ifdef FGR_GEOMETRY_IFS
         const int step_cap = limits.max_steps * FGR_IFS_NODES_PER_STEP;
-        fgr_store(convert_real(hit.heap_peak), tile, planes + 7 * plane_size);
+        fgr_store(convert_real(hit.heap_peak), tile,
+                  planes + FGR_SHADED_HEAP_PEAK_PLANE * plane_size);
 #else
         const int step_cap = limits.max_steps;
-        fgr_store(convert_real(secondary_steps[1]), tile, planes + 7 * plane_size);
+        fgr_store(convert_real(secondary_steps[1]), tile,
+                  planes + FGR_SHADED_SECONDARY_PACKET_STEPS_PLANE * plane_size);
 #endif
         mask exhausted = inside & !hit.hit & (hit.steps >= step_cap) &
                          (hit.t <= limits.max_distance);
-        fgr_store(convert_real(hit.steps), tile, planes + 4 * plane_size);
+        fgr_store(convert_real(hit.steps), tile, planes + FGR_SHADED_STEPS_PLANE * plane_size);
         fgr_store(select(fgr_real(0.0f), fgr_real(1.0f), exhausted), tile,
-                  planes + 5 * plane_size);
-        fgr_store(convert_real(secondary_steps[0]), tile, planes + 6 * plane_size);
+                  planes + FGR_SHADED_OUT_OF_STEPS_PLANE * plane_size);
+        fgr_store(convert_real(secondary_steps[0]), tile,
+                  planes + FGR_SHADED_SECONDARY_STEPS_PLANE * plane_size);
     }
 #endif
 }

@@ -28,10 +28,10 @@
  * field (rays leave the lens), glow (it needs the closest approach along the whole ray), IFS
  * scenes (traced exactly) and the brute-force mode (no DE). `cone_scale` scales k: 1 is the
  * safe cone; the tests narrow it on purpose to see that a cone too narrow for its block is
- * caught. */
-
-/* Pixels per block side. host/render/prepass/cone_prepass.hpp has the same value. */
-#define FGR_PREPASS_BLOCK 8
+ * caught.
+ *
+ * The block's size, FGR_PREPASS_BLOCK pixels a side, and the layout of the kernel's buffer (its
+ * planes FGR_PREPASS_*_PLANE) are shared with the host (shared/fgr_layout_planes.h). */
 
 /* A cone stops once its step falls below this fraction of its own width at that distance (the
  * margin t (k + s f)): from there it would creep on in ever smaller steps. */
@@ -128,8 +128,8 @@ inline vec3 prepass_direction(camera_frame camera, real px, real py, real pixel_
 
 #ifndef FGR_GEOMETRY_IFS
 /* One cone per lane; the lanes of a packet are neighbouring blocks laid out like a tile's pixels.
- * Writes the start distance of each block to starts[block] and the DE evaluations its cone took
- * to starts[block_plane + block]. */
+ * Writes the start distance of each block to plane FGR_PREPASS_STARTS_PLANE of `starts`, and the
+ * DE evaluations its cone took to plane FGR_PREPASS_EVALUATIONS_PLANE (block_plane floats each). */
 __kernel void fgr_prepass(__global float* starts, int block_plane, int packet_count,
                           camera_frame camera, PARAMS, float cone_scale) {
     const int packet = get_global_id(0);
@@ -199,11 +199,11 @@ __kernel void fgr_prepass(__global float* starts, int block_plane, int packet_co
         if ((packet / packets_x) * FGR_TILE_H + ly >= blocks_y) continue;
         const int block = first + ly * blocks_x + lx;
 #if FGR_WIDTH == 1
-        starts[block] = (float)start;
-        starts[block_plane + block] = (float)steps;
+        starts[FGR_PREPASS_STARTS_PLANE * block_plane + block] = (float)start;
+        starts[FGR_PREPASS_EVALUATIONS_PLANE * block_plane + block] = (float)steps;
 #else
-        starts[block] = (float)start[lane];
-        starts[block_plane + block] = (float)steps[lane];
+        starts[FGR_PREPASS_STARTS_PLANE * block_plane + block] = (float)start[lane];
+        starts[FGR_PREPASS_EVALUATIONS_PLANE * block_plane + block] = (float)steps[lane];
 #endif
     }
 }

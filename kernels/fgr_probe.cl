@@ -1,16 +1,18 @@
 /* fgr kernel library: probes that evaluate the scene's DE and normals at given points, for
  * tests and for the host's tools (the DE at the camera decides auto precision). They share the
- * image layout macros of fgr_camera.cl. */
+ * image layout macros of fgr_camera.cl; their planes (FGR_PROBE_*_PLANE) are shared with the
+ * host (shared/fgr_layout_planes.h). */
 
 /* A probe's points: planes x, y, z of floats, then x, y, z of what those miss of the host's double
  * points, which double lanes add back (float lanes cannot use them). */
 inline vec3 load_probe_point(__global const float* points, int plane_size, int packet) {
-    vec3 p = v3(fgr_load(packet, points), fgr_load(packet, points + plane_size),
-                fgr_load(packet, points + 2 * plane_size));
+    __global const float* hi = points + FGR_PROBE_POINT_PLANE * plane_size;
+    vec3 p = v3(fgr_load(packet, hi), fgr_load(packet, hi + plane_size),
+                fgr_load(packet, hi + 2 * plane_size));
 #ifdef FGR_DOUBLE
-    p = v3_add(p, v3(fgr_load(packet, points + 3 * plane_size),
-                     fgr_load(packet, points + 4 * plane_size),
-                     fgr_load(packet, points + 5 * plane_size)));
+    __global const float* rest = points + FGR_PROBE_POINT_REST_PLANE * plane_size;
+    p = v3_add(p, v3(fgr_load(packet, rest), fgr_load(packet, rest + plane_size),
+                     fgr_load(packet, rest + 2 * plane_size)));
 #endif
     return p;
 }

@@ -17,6 +17,7 @@
 #include "fgr_layout_environment_h.h"
 #include "fgr_layout_lights_h.h"
 #include "fgr_layout_path_h.h"
+#include "fgr_layout_planes_h.h"
 #include "fgr_layout_types_h.h"
 #include "fgr_march_cl.h"
 #include "fgr_math_check_cl.h"
@@ -80,6 +81,7 @@ std::span<const KernelFile> kernel_layout() {
         KernelFile{"shared/fgr_layout_environment.h", fgr_layout_environment_h},
         KernelFile{"shared/fgr_layout_path.h", fgr_layout_path_h},
         KernelFile{"shared/fgr_layout_lights.h", fgr_layout_lights_h},
+        KernelFile{"shared/fgr_layout_planes.h", fgr_layout_planes_h},
     };
     return files;
 }

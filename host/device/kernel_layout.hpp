@@ -12,6 +12,7 @@
 #include "fgr_layout_environment.h"
 #include "fgr_layout_lights.h"
 #include "fgr_layout_path.h"
+#include "fgr_layout_planes.h"
 #include "fgr_layout_types.h"
 
 namespace fgr::layout {
@@ -55,8 +56,22 @@ static_assert(offsetof(path_settings, light_count) == 20);
 static_assert(offsetof(path_settings, environment_pick) == 24);
 static_assert(offsetof(path_settings, padding) == 28);
 
-// Each light's last field lies inside it.
+// Each count covers the planes it counts, one block after the other.
+static_assert(FGR_COLOUR_PLANE + FGR_COLOUR_PLANES == FGR_DEPTH_PLANE &&
+              FGR_DEPTH_PLANE + 1 == FGR_COMMON_PLANES);
+static_assert(FGR_SHADED_STEPS_PLANE == FGR_COMMON_PLANES &&
+              FGR_SHADED_HEAP_PEAK_PLANE + 1 == FGR_COMMON_PLANES + FGR_SHADED_STATS_PLANES &&
+              FGR_SHADED_SECONDARY_PACKET_STEPS_PLANE == FGR_SHADED_HEAP_PEAK_PLANE);
+static_assert(FGR_SHADED_AOV_FOREGROUND + 3 == FGR_SHADED_AOV_PLANES);
+static_assert(FGR_PATH_ALBEDO_PLANE == FGR_COMMON_PLANES &&
+              FGR_PATH_ALPHA_PLANE + 1 == FGR_COMMON_PLANES + FGR_PATH_AUXILIARY_PLANES &&
+              FGR_PATH_LANE_STEPS_PLANE == FGR_PATH_ALPHA_PLANE + 1 &&
+              FGR_PATH_PACKET_STEPS_PLANE + 1 == FGR_PATH_LANE_STEPS_PLANE + FGR_PATH_STATS_PLANES);
+static_assert(FGR_BRUTE_ALBEDO_PLANE == FGR_COMMON_PLANES &&
+              FGR_BRUTE_STATS_PLANE == FGR_COMMON_PLANES + FGR_BRUTE_SURFACE_PLANES);
 static_assert(FGR_LIGHT_INTENSITY < FGR_LIGHT_FLOATS &&
               FGR_PATH_LIGHT_PICK_UNTIL < FGR_PATH_LIGHT_FLOATS);
+static_assert(FGR_PREPASS_EVALUATIONS_PLANE < FGR_PREPASS_PLANES &&
+              FGR_PROBE_POINT_REST_PLANE + 3 == FGR_PROBE_POINT_PLANES);
 
 }  // namespace fgr::layout

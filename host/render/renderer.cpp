@@ -18,6 +18,7 @@
 #include "camera/camera.hpp"
 #include "camera/projection.hpp"
 #include "camera/view_validation.hpp"
+#include "device/kernel_layout.hpp"
 #include "device/math_check.hpp"
 #include "render/camera_frame.hpp"
 #include "render/modes/mode_kernel.hpp"
@@ -161,61 +162,61 @@ void unpack_common_planes(std::span<const float> planes, const TileLayout& layou
     const std::vector<int> columns = layout.column_offsets(region.width);
     const size_t width = static_cast<size_t>(region.width);
     std::atomic<long> hits = 0;
-    in_parallel_bands(
-        static_cast<size_t>(region.height), kMinHostBand / std::max<size_t>(width, 1),
-        [&](size_t first_row, size_t last_row) {
-            long band_hits = 0;
-            for (size_t y = first_row; y < last_row; ++y) {
-                const size_t row = static_cast<size_t>(layout.row_offset(static_cast<int>(y)));
-                for (size_t x = 0; x < width; ++x) {
-                    const size_t source = row + static_cast<size_t>(columns[x]);
-                    const size_t pixel = y * width + x;
-                    for (size_t c = 0; c < 3; ++c) {
-                        frame.linear[pixel * 3 + c] = planes[c * plane + source] * average;
-                    }
-                    frame.depth[pixel] = planes[3 * plane + source];
-                    band_hits += frame.depth[pixel] >= 0.0f;
+    in_parallel_bands(static_cast<size_t>(region.height), kMinHostBand / std::max<size_t>(width, 1),
+                      [&](size_t first_row, size_t last_row) {
+        long band_hits = 0;
+        for (size_t y = first_row; y < last_row; ++y) {
+            const size_t row = static_cast<size_t>(layout.row_offset(static_cast<int>(y)));
+            for (size_t x = 0; x < width; ++x) {
+                const size_t source = row + static_cast<size_t>(columns[x]);
+                const size_t pixel = y * width + x;
+                for (size_t c = 0; c < 3; ++c) {
+                    frame.linear[pixel * 3 + c] =
+                        planes[(FGR_COLOUR_PLANE + c) * plane + source] * average;
                 }
+                frame.depth[pixel] = planes[FGR_DEPTH_PLANE * plane + source];
+                band_hits += frame.depth[pixel] >= 0.0f;
             }
             hits += band_hits;
         });
-    frame.hits = hits;
+        frame.hits = hits;
 }
 
 // Work-items per work-group. Fixed rather than left to the driver so that the warm-up launch in
 // the constructor compiles exactly the work-group function later frames use (PoCL specialises
 // its code per local size), keeping JIT time out of render_ms.
-int work_group_size(const ComputeDevice& device) { return device.info.is_cpu ? 8 : 64; }
+int work_group_size(const ComputeDevice& device) {
+        return device.info.is_cpu ? 8 : 64; }
 
 // A cancellable frame runs in this many launches.
 constexpr int kCancelBands = 32;
 
 cl::NDRange global_range(int items, int group) {
-    return cl::NDRange(static_cast<size_t>((items + group - 1) / group) * group);
+        return cl::NDRange(static_cast<size_t>((items + group - 1) / group) * group);
 }
 
 // Logs each distinct warning once per process: every renderer on a device meets the same
 // self-test verdict.
 void warn_once(const std::string& message) {
-    static std::mutex mutex;
-    static std::set<std::string> said;
-    std::lock_guard lock(mutex);
-    if (said.insert(message).second) spdlog::warn("{}", message);
+        static std::mutex mutex;
+        static std::set<std::string> said;
+        std::lock_guard lock(mutex);
+        if (said.insert(message).second) spdlog::warn("{}", message);
 }
 
 // The probes evaluate the DE: an inside-only scene has none (std::logic_error, saying `to_do`).
 void require_distance_estimator(const Scene& scene, const char* to_do) {
-    if (scene.inside_only()) {
-        throw std::logic_error(
-            fmt::format("scene '{}' has no distance estimator to {} (it defines only scene_inside)",
-                        scene.id, to_do));
-    }
+        if (scene.inside_only()) {
+            throw std::logic_error(fmt::format(
+                "scene '{}' has no distance estimator to {} (it defines only scene_inside)",
+                scene.id, to_do));
+        }
 }
 
 Frame cancelled_frame() {
-    Frame cancelled;
-    cancelled.cancelled = true;
-    return cancelled;
+        Frame cancelled;
+        cancelled.cancelled = true;
+        return cancelled;
 }
 
 }  // namespace
@@ -298,8 +299,8 @@ PixelRegion rendered_region(const FrameRequest& request) {
 }
 
 TileLayout tile_layout(int packet_width, int width, int height) {
-    const int tile_w = packet_width == 1 ? 1 : packet_width == 4 ? 2 : 4;
-    const int tile_h = packet_width / tile_w;
+    const int tile_w = FGR_TILE_WIDTH(packet_width);
+    const int tile_h = FGR_TILE_HEIGHT(packet_width);
     return {packet_width, tile_w, tile_h, (width + tile_w - 1) / tile_w,
             (height + tile_h - 1) / tile_h};
 }
@@ -372,7 +373,7 @@ Frame Renderer::render(const FrameRequest& request) {
     const auto start = std::chrono::steady_clock::now();
 
     cl::Buffer params = upload(request.params);
-    const int plane_count = kCommonPlanes + mode_->extra_planes(switches_);
+    const int plane_count = FGR_COMMON_PLANES + mode_->extra_planes(switches_);
     cl::Buffer planes(device_.context, CL_MEM_READ_WRITE, sizeof(float) * plane_count * plane);
     const int tiles = layout.tiles_x * layout.tiles_y;
     const CameraFrame camera =
@@ -397,12 +398,13 @@ Frame Renderer::render(const FrameRequest& request) {
     // Samples accumulate in the planes, one launch each, in order (in-order queue). Sample 0
     // overwrites them; a request starting later starts from zeroed planes instead.
     if (request.first_sample > 0) {
-        device_.queue.enqueueFillBuffer(planes, 0.0f, 0, sizeof(float) * 3 * plane);
-        device_.queue.enqueueFillBuffer(planes, -1.0f, sizeof(float) * 3 * plane,
-                                        sizeof(float) * plane);
-        if (plane_count > kCommonPlanes) {
-            device_.queue.enqueueFillBuffer(planes, 0.0f, sizeof(float) * kCommonPlanes * plane,
-                                            sizeof(float) * (plane_count - kCommonPlanes) * plane);
+        const auto bytes = [plane](int count) { return sizeof(float) * count * plane; };
+        device_.queue.enqueueFillBuffer(planes, 0.0f, bytes(FGR_COLOUR_PLANE),
+                                        bytes(FGR_COLOUR_PLANES));
+        device_.queue.enqueueFillBuffer(planes, -1.0f, bytes(FGR_DEPTH_PLANE), bytes(1));
+        if (plane_count > FGR_COMMON_PLANES) {
+            device_.queue.enqueueFillBuffer(planes, 0.0f, bytes(FGR_COMMON_PLANES),
+                                            bytes(plane_count - FGR_COMMON_PLANES));
         }
     }
     int done = 0;
@@ -443,12 +445,13 @@ cl::Buffer Renderer::upload_points(std::span<const glm::dvec3> points, int* pack
     const int width = switches_.packet_width;
     *packets = static_cast<int>((points.size() + width - 1) / width);
     *plane = *packets * width;
-    std::vector<float> coordinates(static_cast<size_t>(*plane) * 6, 0.0f);
+    std::vector<float> coordinates(static_cast<size_t>(*plane) * FGR_PROBE_POINT_PLANES, 0.0f);
     for (size_t i = 0; i < points.size(); ++i) {
         for (int c = 0; c < 3; ++c) {
             const auto hi = static_cast<float>(points[i][c]);
-            coordinates[c * *plane + i] = hi;
-            coordinates[(c + 3) * *plane + i] = static_cast<float>(points[i][c] - double(hi));
+            coordinates[(FGR_PROBE_POINT_PLANE + c) * *plane + i] = hi;
+            coordinates[(FGR_PROBE_POINT_REST_PLANE + c) * *plane + i] =
+                static_cast<float>(points[i][c] - double(hi));
         }
     }
     return upload(coordinates);
@@ -490,7 +493,7 @@ std::vector<float> Renderer::probe_de(std::span<const glm::dvec3> points,
     if (points.empty()) return {};
     int plane = 0;
     std::vector<float> distances = run_probe(
-        probe_kernel_, points, params, 1, [](cl::Kernel&) {}, &plane);
+        probe_kernel_, points, params, FGR_PROBE_DE_PLANES, [](cl::Kernel&) {}, &plane);
     distances.resize(points.size());
     return distances;
 }
@@ -502,8 +505,8 @@ std::vector<glm::vec3> Renderer::probe_normals(std::span<const glm::vec3> points
     int plane = 0;
     const std::vector<glm::dvec3> wide(points.begin(), points.end());
     const std::vector<float> planes = run_probe(
-        normal_kernel_, wide, params, 3, [eps](cl::Kernel& kernel) { kernel.setArg(5, eps); },
-        &plane);
+        normal_kernel_, wide, params, FGR_PROBE_NORMAL_PLANES,
+        [eps](cl::Kernel& kernel) { kernel.setArg(5, eps); }, &plane);
     std::vector<glm::vec3> normals(points.size());
     for (size_t i = 0; i < points.size(); ++i) {
         normals[i] = {planes[i], planes[plane + i], planes[2 * static_cast<size_t>(plane) + i]};

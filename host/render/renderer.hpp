@@ -208,8 +208,9 @@ private:
     // when `cancel` (if set) asked to stop.
     bool launch_tiles(cl::Kernel& kernel, int tiles, int group,
                       const std::function<bool()>& cancel);
-    // Points as planes x, y, z (the nearest floats) then x, y, z of the rest (what the floats
-    // miss of the double points), padded to whole packets, and the packet count.
+    // Points as the probes take them (FGR_PROBE_POINT_PLANES: x, y, z as the nearest floats,
+    // then x, y, z of what the floats miss of the double points), padded to whole packets, and
+    // the packet count.
     cl::Buffer upload_points(std::span<const glm::dvec3> points, int* packets, int* plane);
     // Runs a probe kernel (points, plane, packets, output, params, [own args]) over `points`;
     // returns its `outputs` planes of *plane floats each.

@@ -13,6 +13,7 @@
 #include <vector>
 
 #include "device/kernel_assembly.hpp"
+#include "device/kernel_layout.hpp"
 #include "output/still_layers.hpp"
 #include "output/tiled/row_encoder.hpp"
 #include "output/tiled/tile_store.hpp"
@@ -20,10 +21,6 @@
 
 namespace fgr {
 namespace {
-
-// The brute-force mode's screen-space shading reads up to FGR_BRUTE_MAX_REACH pixels away
-// (kernels/fgr_mode_brute.cl).
-constexpr int kBruteMaxReach = 256;
 
 int round_down_to_4(long value) { return static_cast<int>(value / 4 * 4); }
 
@@ -83,7 +80,9 @@ PixelRegion padded_region(const PixelRegion& tile, int padding, int width, int h
     return {x0, y0, x1 - x0, y1 - y0};
 }
 
-int region_padding(RenderMode mode) { return mode == RenderMode::Brute ? kBruteMaxReach : 0; }
+// The brute-force mode's screen-space shading reads up to FGR_BRUTE_MAX_REACH pixels away
+// (kernels/fgr_mode_brute.cl), so its tiles are rendered with that much padding.
+int region_padding(RenderMode mode) { return mode == RenderMode::Brute ? FGR_BRUTE_MAX_REACH : 0; }
 
 std::filesystem::path tile_store_path(const std::filesystem::path& output) {
     return output.parent_path() / (output.filename().string() + ".fgr-tiles");

@@ -11,14 +11,8 @@ BruteMode::BruteMode(const ComputeDevice& device, const cl::Program& program, co
       stats_(switches.stats),
       aovs_(switches.aovs) {}
 
-namespace {
-
-constexpr int kSurfacePlanes = 6;  // albedo (3) and normal (3): FGR_BRUTE_ALBEDO_PLANE onwards
-
-}  // namespace
-
 int BruteMode::extra_planes(const KernelSwitches& switches) const {
-    return kSurfacePlanes + (switches.stats ? 1 : 0);
+    return FGR_BRUTE_SURFACE_PLANES + (switches.stats ? FGR_BRUTE_STATS_PLANES : 0);
 }
 
 void BruteMode::bind(cl::Kernel& kernel, const FrameRequest& request, const TileLayout& layout) {
@@ -43,8 +37,8 @@ void BruteMode::bind(cl::Kernel& kernel, const FrameRequest& request, const Tile
 void BruteMode::read_back(std::span<const float> planes, const TileLayout& layout,
                           const FrameRequest&, int, Frame& frame) const {
     const int width = frame.image.width, height = frame.image.height;  // the region's
-    frame.albedo = planes_in_rows(planes, layout, kCommonPlanes, 3, width, height);
-    frame.normal = planes_in_rows(planes, layout, kCommonPlanes + 3, 3, width, height);
+    frame.albedo = planes_in_rows(planes, layout, FGR_BRUTE_ALBEDO_PLANE, 3, width, height);
+    frame.normal = planes_in_rows(planes, layout, FGR_BRUTE_NORMAL_PLANE, 3, width, height);
     if (aovs_) {
         // Every pass samples the pixel's centre: it is covered or not, and its colour is the
         // surface's where covered.
@@ -60,7 +54,7 @@ void BruteMode::read_back(std::span<const float> planes, const TileLayout& layou
         }
     }
     const size_t plane = static_cast<size_t>(layout.plane_size());
-    const size_t stats_plane = kCommonPlanes + kSurfacePlanes;
+    const size_t stats_plane = FGR_BRUTE_STATS_PLANE;
     if (!stats_) return;
     double tests = 0.0;
     for (int y = 0; y < height; ++y) {

@@ -9,8 +9,8 @@ namespace fgr {
 // one render call to the next (a call starting at sample 0 starts it afresh; a later first sample
 // continues it, as the viewer does while the view stands still). Once the passes are done,
 // fgr_brute_shade shades the depth buffer in screen space. Beyond colour and depth it writes the
-// shading's albedo and normal (planes 4 to 9, for EXR layers) and with stats each pixel's inside
-// tests (plane 10).
+// shading's albedo and normal (FGR_BRUTE_ALBEDO_PLANE and FGR_BRUTE_NORMAL_PLANE, for EXR layers)
+// and with stats each pixel's inside tests (FGR_BRUTE_STATS_PLANE).
 class BruteMode final : public ModeKernel {
 public:
     BruteMode(const ComputeDevice& device, const cl::Program& program, const Scene& scene,

@@ -24,14 +24,11 @@ constexpr int kMarchStartsArgument = 6;
 constexpr int kMarchHintsArgument = 7;
 constexpr int kHasHintsArgument = 8;
 
-// The planes every mode writes: r, g, b (summed over samples) and depth (sample 0).
-constexpr int kCommonPlanes = 4;
-
 class ModeKernel {
 public:
     virtual ~ModeKernel() = default;
 
-    // Planes the kernel writes after the common four, with these switches.
+    // Planes the kernel writes after the FGR_COMMON_PLANES, with these switches.
     virtual int extra_planes(const KernelSwitches& switches) const = 0;
 
     // Sets the kernel's arguments from kFirstModeArgument on, for this frame (and those of its

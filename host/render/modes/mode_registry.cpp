@@ -1,4 +1,5 @@
 // Which host module serves which render mode.
+#include <array>
 #include <glm/geometric.hpp>
 #include <stdexcept>
 
@@ -6,11 +7,6 @@
 #include "render/modes/mode_kernel.hpp"
 #include "render/modes/path_mode.hpp"
 #include "render/modes/shaded_mode.hpp"
-
-#include <array>
-#include <stdexcept>
-
-#include <glm/geometric.hpp>
 
 namespace fgr {
 

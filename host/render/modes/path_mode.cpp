@@ -11,10 +11,6 @@
 namespace fgr {
 namespace {
 
-constexpr int kAuxiliaryPlanes = 7;   // albedo (3), normal (3), alpha
-constexpr int kStatsPlanes = 2;       // lane and packet DE evaluations
-constexpr int kForegroundPlanes = 3;  // with aovs: radiance of the samples that hit
-
 float luminance(glm::vec3 rgb) { return 0.2126f * rgb.r + 0.7152f * rgb.g + 0.0722f * rgb.b; }
 
 struct LightList {
@@ -113,8 +109,8 @@ PathMode::PathMode(const ComputeDevice& device, const Scene& scene, const Kernel
     : device_(device), scene_(scene), stats_(switches.stats), aovs_(switches.aovs) {}
 
 int PathMode::extra_planes(const KernelSwitches& switches) const {
-    return kAuxiliaryPlanes + (switches.stats ? kStatsPlanes : 0) +
-           (switches.aovs ? kForegroundPlanes : 0);
+    return FGR_PATH_AUXILIARY_PLANES + (switches.stats ? FGR_PATH_STATS_PLANES : 0) +
+           (switches.aovs ? FGR_PATH_FOREGROUND_PLANES : 0);
 }
 
 void PathMode::prepare(const PathSettings& settings) {
@@ -163,13 +159,12 @@ void PathMode::read_back(std::span<const float> planes, const TileLayout& layout
                          const FrameRequest&, int samples, Frame& frame) const {
     const int width = frame.image.width, height = frame.image.height;  // the region's
     const float average = 1.0f / static_cast<float>(std::max(samples, 1));
-    frame.albedo = planes_in_rows(planes, layout, kCommonPlanes, 3, width, height, average);
-    frame.normal = planes_in_rows(planes, layout, kCommonPlanes + 3, 3, width, height, average);
-    frame.alpha = planes_in_rows(planes, layout, kCommonPlanes + 6, 1, width, height, average);
-    const int stats_plane = kCommonPlanes + kAuxiliaryPlanes;
+    frame.albedo = planes_in_rows(planes, layout, FGR_PATH_ALBEDO_PLANE, 3, width, height, average);
+    frame.normal = planes_in_rows(planes, layout, FGR_PATH_NORMAL_PLANE, 3, width, height, average);
+    frame.alpha = planes_in_rows(planes, layout, FGR_PATH_ALPHA_PLANE, 1, width, height, average);
     if (aovs_) {
-        const int first = stats_plane + (stats_ ? kStatsPlanes : 0);
-        frame.foreground = planes_in_rows(planes, layout, first, 3, width, height, average);
+        frame.foreground = planes_in_rows(planes, layout, FGR_PATH_FOREGROUND_PLANE(stats_),
+                                          FGR_PATH_FOREGROUND_PLANES, width, height, average);
     }
     const size_t plane = static_cast<size_t>(layout.plane_size());
     if (!stats_) return;
@@ -177,8 +172,8 @@ void PathMode::read_back(std::span<const float> planes, const TileLayout& layout
     // lanes, so it is taken once per tile (from its first lane).
     LaneStats stats;
     stats.packet_width = layout.packet_width;
-    const size_t lanes = plane * static_cast<size_t>(stats_plane);
-    const size_t packets = lanes + plane;
+    const size_t lanes = plane * FGR_PATH_LANE_STEPS_PLANE;
+    const size_t packets = plane * FGR_PATH_PACKET_STEPS_PLANE;
     for (int y = 0; y < height; ++y) {
         for (int x = 0; x < width; ++x) {
             stats.lane_evaluations += planes[lanes + static_cast<size_t>(layout.index(x, y))];

@@ -23,7 +23,7 @@ private:
 
     const ComputeDevice& device_;
     const Scene& scene_;
-    bool stats_;  // KernelSwitches::stats: kStatsPlanes after the auxiliary ones
+    bool stats_;  // KernelSwitches::stats: FGR_PATH_STATS_PLANES after the auxiliary ones
     bool aovs_;   // KernelSwitches::aovs: the foreground's three planes after those
     std::shared_ptr<const PreparedEnvironment> default_environment_;  // the sky, made once
     std::shared_ptr<const PreparedEnvironment> bound_environment_;

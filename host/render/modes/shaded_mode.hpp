@@ -16,8 +16,8 @@ private:
     cl::Buffer lights_;
     cl_int light_count_;
     bool ifs_;    // an IFS scene: one more plane, the level each pixel's hit reached
-    bool stats_;  // KernelSwitches::stats: four planes of the primary rays' work
-    bool aovs_;   // KernelSwitches::aovs: ten planes of layers (kAovPlanes)
+    bool stats_;  // KernelSwitches::stats: the primary rays' work (FGR_SHADED_STATS_PLANES)
+    bool aovs_;   // KernelSwitches::aovs: the layers (FGR_SHADED_AOV_PLANES)
 };
 
 }  // namespace fgr

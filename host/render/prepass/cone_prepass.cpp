@@ -9,7 +9,7 @@ namespace {
 
 // Blocks lie on the whole image's grid (see fgr_prepass.cl): those a span of pixels touches.
 int blocks_along(int first_pixel, int pixels) {
-    return (first_pixel + pixels - 1) / kPrepassBlock + 1 - first_pixel / kPrepassBlock;
+    return (first_pixel + pixels - 1) / FGR_PREPASS_BLOCK + 1 - first_pixel / FGR_PREPASS_BLOCK;
 }
 
 int blocks_across(const CameraFrame& camera) {
@@ -42,11 +42,11 @@ ConePrepass::ConePrepass(const ComputeDevice& device, const cl::Program& program
 cl::Buffer ConePrepass::starts(const FrameRequest& request, const CameraFrame& camera,
                                const cl::Buffer& params, int group) {
     const int blocks = block_count(camera);
-    // Starts, then the cones' DE evaluations.
-    cl::Buffer buffer(device_.context, CL_MEM_READ_WRITE, sizeof(float) * 2 * blocks);
+    const size_t bytes = sizeof(float) * FGR_PREPASS_PLANES * blocks;
+    cl::Buffer buffer(device_.context, CL_MEM_READ_WRITE, bytes);
     ran_ = available_ && request.prepass.enabled;
     if (!ran_) {
-        device_.queue.enqueueFillBuffer(buffer, 0.0f, 0, sizeof(float) * 2 * blocks);
+        device_.queue.enqueueFillBuffer(buffer, 0.0f, 0, bytes);
         return buffer;
     }
     const TileLayout layout =
@@ -88,8 +88,9 @@ long ConePrepass::evaluations(const cl::Buffer& starts, const CameraFrame& camer
     if (!ran_) return 0;
     const int blocks = block_count(camera);
     std::vector<float> steps(static_cast<size_t>(blocks));
-    device_.queue.enqueueReadBuffer(starts, CL_TRUE, sizeof(float) * blocks, sizeof(float) * blocks,
-                                    steps.data());
+    device_.queue.enqueueReadBuffer(starts, CL_TRUE,
+                                    sizeof(float) * FGR_PREPASS_EVALUATIONS_PLANE * blocks,
+                                    sizeof(float) * blocks, steps.data());
     return std::accumulate(steps.begin(), steps.end(), 0L,
                            [](long sum, float value) { return sum + static_cast<long>(value); });
 }

@@ -1,21 +1,19 @@
 #pragma once
-// The cone-marched depth prepass (kernels/fgr_prepass.cl) for Renderer: one cone per 8x8 block
-// of pixels finds how far the block's camera rays can start from the eye; the render kernel reads
-// the distances (its argument `march_starts`).
+// The cone-marched depth prepass (kernels/fgr_prepass.cl) for Renderer: one cone per block of
+// FGR_PREPASS_BLOCK x FGR_PREPASS_BLOCK pixels finds how far the block's camera rays can start
+// from the eye; the render kernel reads the distances (its argument `march_starts`).
 
 #include <CL/opencl.hpp>
 #include <vector>
 
 #include "device/kernel_assembly.hpp"
+#include "device/kernel_layout.hpp"
 #include "device/opencl_device.hpp"
 #include "render/camera_frame.hpp"
 #include "render/renderer.hpp"
 #include "scene/scene.hpp"
 
 namespace fgr {
-
-// Pixels per block side: FGR_PREPASS_BLOCK in kernels/fgr_prepass.cl.
-constexpr int kPrepassBlock = 8;
 
 // Whether the prepass can serve a program built with `switches` for `scene`: the DE modes' camera
 // rays from one eye, no depth of field (rays leave the lens), no glow (it needs the whole ray's
@@ -27,8 +25,9 @@ public:
     ConePrepass(const ComputeDevice& device, const cl::Program& program, const Scene& scene,
                 const KernelSwitches& switches);
 
-    // The per-block start distances for this frame (and, after them, each cone's DE
-    // evaluations): marched when the prepass applies and the request wants it, zeros otherwise.
+    // The per-block start distances for this frame (FGR_PREPASS_STARTS_PLANE, and each cone's DE
+    // evaluations, FGR_PREPASS_EVALUATIONS_PLANE): marched when the prepass applies and the
+    // request wants it, zeros otherwise.
     cl::Buffer starts(const FrameRequest& request, const CameraFrame& camera,
                       const cl::Buffer& params, int group);
 
