@@ -209,8 +209,9 @@ inline camera_ray camera_ray_through(camera_frame camera, real px, real py, came
     return ray;
 }
 
-/* The arguments every render mode's entry point `fgr_render` starts with, in this order (the host
- * sets them in host/render/renderer.cpp; a mode's own arguments follow from index 9):
+/* The arguments every render mode's entry point `fgr_render` starts with, in the order of
+ * FGR_RENDER_ARG_* (shared/fgr_layout_arguments.h), by which the host sets them
+ * (host/render/renderer.cpp); a mode's own arguments follow from FGR_RENDER_ARGS_COUNT:
  *   planes      the output: plane p of the image at planes + p * plane_size, tile-major
  *   plane_size  floats per plane (whole tiles)
  *   tile_count  tiles in the image; the global size is rounded up past it

@@ -22,10 +22,10 @@
  * set's interior as the seed's reversed inside() does). Pixels are sampled at their centres:
  * depth is a minimum over passes, and jittering rays would dilate silhouettes.
  *
- * Arguments of both: those every mode takes (planes .. PARAMS, see fgr_camera.cl), then `state`
- * (each pixel's best depth, tile-major like the planes; -1: none yet); fgr_brute_shade then takes
- * the scene's lights (FGR_LIGHT_FLOATS floats each, shared/fgr_layout_lights.h) and their
- * count. */
+ * Arguments of both (FGR_BRUTE_ARG_*, FGR_BRUTE_SHADE_ARG_*, shared/fgr_layout_arguments.h):
+ * those every mode takes (planes .. has_hints, see fgr_camera.cl), then `state` (each pixel's
+ * best depth, tile-major like the planes; -1: none yet); fgr_brute_shade then takes the scene's
+ * lights (FGR_LIGHT_FLOATS floats each, shared/fgr_layout_lights.h) and their count. */
 
 #define FGR_BRUTE_SOLID_AUTO 0
 #define FGR_BRUTE_SOLID_SET 1

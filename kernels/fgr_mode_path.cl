@@ -13,10 +13,10 @@
  * (fgr_sampler.cl) is indexed by dimension, so every decision draws its own stratified numbers.
 
  *
- * Arguments: those every mode takes (planes .. PARAMS, see fgr_camera.cl), then the lights (the
- * scene's and the sky's sun, FGR_PATH_LIGHT_FLOATS each, shared/fgr_layout_lights.h), the
- * settings (path_settings, shared/fgr_layout_path.h), and the environment (ENVIRONMENT,
- * fgr_environment.cl).
+ * Arguments (FGR_PATH_ARG_*, shared/fgr_layout_arguments.h): those every mode takes (planes ..
+ * has_hints, see fgr_camera.cl), then the lights (the scene's and the sky's sun,
+ * FGR_PATH_LIGHT_FLOATS each, shared/fgr_layout_lights.h), the settings (path_settings,
+ * shared/fgr_layout_path.h), and the environment (ENVIRONMENT, fgr_environment.cl).
  *
  * Planes (FGR_PATH_*_PLANE, shared/fgr_layout_planes.h): radiance (summed over samples), depth
  * of the first hit (sample 0), then the auxiliary outputs summed over samples: albedo of the

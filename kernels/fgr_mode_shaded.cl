@@ -2,8 +2,9 @@
  * (shadows, occlusion, reflections, refraction, glow, fog, depth of field), one primary ray per
  * pixel and sample. The fast mode, and the one the viewer previews with.
  *
- * Arguments: those every mode takes (planes .. PARAMS, see fgr_camera.cl), then the scene's
- * lights (FGR_LIGHT_FLOATS floats each, shared/fgr_layout_lights.h) and their count.
+ * Arguments (FGR_SHADED_ARG_*, shared/fgr_layout_arguments.h): those every mode takes (planes ..
+ * has_hints, see fgr_camera.cl), then the scene's lights (FGR_LIGHT_FLOATS floats each,
+ * shared/fgr_layout_lights.h) and their count.
  *
  * Planes (FGR_SHADED_*, shared/fgr_layout_planes.h): colour and depth; with FGR_STATS the work
  * behind each pixel; for IFS scenes the level each pixel's hit reached; with FGR_AOVS (a still

@@ -30,8 +30,9 @@
  * safe cone; the tests narrow it on purpose to see that a cone too narrow for its block is
  * caught.
  *
- * The block's size, FGR_PREPASS_BLOCK pixels a side, and the layout of the kernel's buffer (its
- * planes FGR_PREPASS_*_PLANE) are shared with the host (shared/fgr_layout_planes.h). */
+ * The block's size, FGR_PREPASS_BLOCK pixels a side, the layout of the kernel's buffer (its
+ * planes FGR_PREPASS_*_PLANE) and its arguments (FGR_PREPASS_ARG_*) are shared with the host
+ * (shared/fgr_layout_planes.h, shared/fgr_layout_arguments.h). */
 
 /* A cone stops once its step falls below this fraction of its own width at that distance (the
  * margin t (k + s f)): from there it would creep on in ever smaller steps. */

@@ -1,7 +1,8 @@
 /* fgr kernel library: probes that evaluate the scene's DE and normals at given points, for
  * tests and for the host's tools (the DE at the camera decides auto precision). They share the
- * image layout macros of fgr_camera.cl; their planes (FGR_PROBE_*_PLANE) are shared with the
- * host (shared/fgr_layout_planes.h). */
+ * image layout macros of fgr_camera.cl; their planes (FGR_PROBE_*_PLANE) and arguments
+ * (FGR_PROBE_ARG_*) are shared with the host (shared/fgr_layout_planes.h,
+ * shared/fgr_layout_arguments.h). */
 
 /* A probe's points: planes x, y, z of floats, then x, y, z of what those miss of the host's double
  * points, which double lanes add back (float lanes cannot use them). */

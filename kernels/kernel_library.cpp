@@ -13,6 +13,7 @@
 #include "fgr_geometry_cl.h"
 #include "fgr_ifs_cl.h"
 #include "fgr_iterate_cl.h"
+#include "fgr_layout_arguments_h.h"
 #include "fgr_layout_camera_h.h"
 #include "fgr_layout_environment_h.h"
 #include "fgr_layout_lights_h.h"
@@ -82,6 +83,7 @@ std::span<const KernelFile> kernel_layout() {
         KernelFile{"shared/fgr_layout_path.h", fgr_layout_path_h},
         KernelFile{"shared/fgr_layout_lights.h", fgr_layout_lights_h},
         KernelFile{"shared/fgr_layout_planes.h", fgr_layout_planes_h},
+        KernelFile{"shared/fgr_layout_arguments.h", fgr_layout_arguments_h},
     };
     return files;
 }

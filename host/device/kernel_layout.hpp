@@ -8,6 +8,7 @@
 
 #include <cstddef>
 
+#include "fgr_layout_arguments.h"
 #include "fgr_layout_camera.h"
 #include "fgr_layout_environment.h"
 #include "fgr_layout_lights.h"

@@ -385,14 +385,14 @@ Frame Renderer::render(const FrameRequest& request) {
     cl::Kernel* resolve = mode_->resolve_kernel();
     for (cl::Kernel* kernel : {&render_kernel_, resolve}) {
         if (kernel == nullptr) continue;
-        kernel->setArg(0, planes);
-        kernel->setArg(1, plane);
-        kernel->setArg(2, tiles);
-        kernel->setArg(3, camera);
-        kernel->setArg(5, params);
-        kernel->setArg(kMarchStartsArgument, starts);
-        kernel->setArg(kMarchHintsArgument, hints);
-        kernel->setArg(kHasHintsArgument, has_hints);
+        kernel->setArg(FGR_RENDER_ARG_PLANES, planes);
+        kernel->setArg(FGR_RENDER_ARG_PLANE_SIZE, plane);
+        kernel->setArg(FGR_RENDER_ARG_TILE_COUNT, tiles);
+        kernel->setArg(FGR_RENDER_ARG_CAMERA, camera);
+        kernel->setArg(FGR_RENDER_ARG_PARAMS, params);
+        kernel->setArg(FGR_RENDER_ARG_MARCH_STARTS, starts);
+        kernel->setArg(FGR_RENDER_ARG_MARCH_HINTS, hints);
+        kernel->setArg(FGR_RENDER_ARG_HAS_HINTS, has_hints);
     }
     mode_->bind(render_kernel_, request, layout);
     // Samples accumulate in the planes, one launch each, in order (in-order queue). Sample 0
@@ -409,7 +409,7 @@ Frame Renderer::render(const FrameRequest& request) {
     }
     int done = 0;
     while (done < request.samples) {
-        render_kernel_.setArg(4, request.first_sample + done);
+        render_kernel_.setArg(FGR_RENDER_ARG_SAMPLE, request.first_sample + done);
         if (!launch_tiles(render_kernel_, tiles, group, request.cancel)) return cancelled_frame();
         ++done;
         if (request.on_sample || request.enough) {
@@ -419,7 +419,7 @@ Frame Renderer::render(const FrameRequest& request) {
         }
     }
     if (resolve != nullptr) {
-        resolve->setArg(4, request.first_sample + done);
+        resolve->setArg(FGR_RENDER_ARG_SAMPLE, request.first_sample + done);
         if (!launch_tiles(*resolve, tiles, group, request.cancel)) return cancelled_frame();
     }
     // The frame's host memory is claimed while the device renders: zeroing fresh pages (a page
@@ -466,12 +466,12 @@ std::vector<float> Renderer::run_probe(cl::Kernel& kernel, std::span<const glm::
     cl::Buffer params_buffer = upload(params);
     const size_t output_floats = static_cast<size_t>(*plane) * outputs;
     cl::Buffer output(device_.context, CL_MEM_WRITE_ONLY, sizeof(float) * output_floats);
-    kernel.setArg(0, input);
-    kernel.setArg(1, *plane);
-    kernel.setArg(2, packets);
-    kernel.setArg(3, output);
-    kernel.setArg(4, params_buffer);
-    set_extra_args(kernel);  // the kernel's own arguments, from index 5
+    kernel.setArg(FGR_PROBE_ARG_POINTS, input);
+    kernel.setArg(FGR_PROBE_ARG_PLANE_SIZE, *plane);
+    kernel.setArg(FGR_PROBE_ARG_PACKET_COUNT, packets);
+    kernel.setArg(FGR_PROBE_ARG_OUT, output);
+    kernel.setArg(FGR_PROBE_ARG_PARAMS, params_buffer);
+    set_extra_args(kernel);  // the kernel's own arguments, after those
     const int group = work_group_size(device_);
     device_.queue.enqueueNDRangeKernel(kernel, cl::NullRange, global_range(packets, group),
                                        cl::NDRange(group));
@@ -506,7 +506,7 @@ std::vector<glm::vec3> Renderer::probe_normals(std::span<const glm::vec3> points
     const std::vector<glm::dvec3> wide(points.begin(), points.end());
     const std::vector<float> planes = run_probe(
         normal_kernel_, wide, params, FGR_PROBE_NORMAL_PLANES,
-        [eps](cl::Kernel& kernel) { kernel.setArg(5, eps); }, &plane);
+        [eps](cl::Kernel& kernel) { kernel.setArg(FGR_PROBE_ARG_EPS, eps); }, &plane);
     std::vector<glm::vec3> normals(points.size());
     for (size_t i = 0; i < points.size(); ++i) {
         normals[i] = {planes[i], planes[plane + i], planes[2 * static_cast<size_t>(plane) + i]};

@@ -212,8 +212,8 @@ private:
     // then x, y, z of what the floats miss of the double points), padded to whole packets, and
     // the packet count.
     cl::Buffer upload_points(std::span<const glm::dvec3> points, int* packets, int* plane);
-    // Runs a probe kernel (points, plane, packets, output, params, [own args]) over `points`;
-    // returns its `outputs` planes of *plane floats each.
+    // Runs a probe kernel (its arguments FGR_PROBE_ARG_*, the kernel's own set by
+    // `set_extra_args`) over `points`; returns its `outputs` planes of *plane floats each.
     std::vector<float> run_probe(cl::Kernel& kernel, std::span<const glm::dvec3> points,
                                  const std::vector<float>& params, int outputs,
                                  const std::function<void(cl::Kernel&)>& set_extra_args,

@@ -28,10 +28,10 @@ void BruteMode::bind(cl::Kernel& kernel, const FrameRequest& request, const Tile
         // A continued render (first sample > 0) of a new size has nothing to continue from.
         device_.queue.enqueueFillBuffer(state_, -1.0f, 0, sizeof(float) * floats);
     }
-    kernel.setArg(kFirstModeArgument, state_);
-    shade_kernel_.setArg(kFirstModeArgument, state_);
-    shade_kernel_.setArg(kFirstModeArgument + 1, lights_);
-    shade_kernel_.setArg(kFirstModeArgument + 2, light_count_);
+    kernel.setArg(FGR_BRUTE_ARG_STATE, state_);
+    shade_kernel_.setArg(FGR_BRUTE_SHADE_ARG_STATE, state_);
+    shade_kernel_.setArg(FGR_BRUTE_SHADE_ARG_LIGHTS, lights_);
+    shade_kernel_.setArg(FGR_BRUTE_SHADE_ARG_LIGHT_COUNT, light_count_);
 }
 
 void BruteMode::read_back(std::span<const float> planes, const TileLayout& layout,

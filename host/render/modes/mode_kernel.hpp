@@ -1,7 +1,8 @@
 #pragma once
-// What a render mode's host module does for Renderer: the kernel's own arguments (after the nine
-// every mode takes, see FGR_RENDER_ARGS in kernels/fgr_camera.cl) and the planes it writes beyond
-// colour and depth. One implementation per mode, in this folder; mode_registry.cpp makes them.
+// What a render mode's host module does for Renderer: the kernel's own arguments (after the
+// FGR_RENDER_ARGS_COUNT every mode takes, see device/kernel_layout.hpp) and the planes it writes
+// beyond colour and depth. One implementation per mode, in this folder; mode_registry.cpp makes
+// them.
 
 #include <memory>
 #include <span>
@@ -15,15 +16,6 @@
 
 namespace fgr {
 
-// Index of a mode's first own argument of fgr_render (after FGR_RENDER_ARGS).
-constexpr int kFirstModeArgument = 9;
-
-// Indices of fgr_render's `march_starts` (the cone prepass's distances), `march_hints` and
-// `has_hints` (reprojected start hints), see FGR_RENDER_ARGS.
-constexpr int kMarchStartsArgument = 6;
-constexpr int kMarchHintsArgument = 7;
-constexpr int kHasHintsArgument = 8;
-
 class ModeKernel {
 public:
     virtual ~ModeKernel() = default;
@@ -31,7 +23,7 @@ public:
     // Planes the kernel writes after the FGR_COMMON_PLANES, with these switches.
     virtual int extra_planes(const KernelSwitches& switches) const = 0;
 
-    // Sets the kernel's arguments from kFirstModeArgument on, for this frame (and those of its
+    // Sets the kernel's arguments from FGR_RENDER_ARGS_COUNT on, for this frame (and those of its
     // resolve kernel, if it has one).
     virtual void bind(cl::Kernel& kernel, const FrameRequest& request,
                       const TileLayout& layout) = 0;

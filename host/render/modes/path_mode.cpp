@@ -147,10 +147,10 @@ void PathMode::bind(cl::Kernel& kernel, const FrameRequest& request, const TileL
     argument.seed = settings.seed;
     argument.light_count = light_count_;
     argument.environment_pick = environment_pick_;
-    kernel.setArg(kFirstModeArgument, lights_);
-    kernel.setArg(kFirstModeArgument + 1, argument);
-    kernel.setArg(kFirstModeArgument + 2, environment_data_);
-    kernel.setArg(kFirstModeArgument + 3,
+    kernel.setArg(FGR_PATH_ARG_LIGHTS, lights_);
+    kernel.setArg(FGR_PATH_ARG_SETTINGS, argument);
+    kernel.setArg(FGR_PATH_ARG_ENV_DATA, environment_data_);
+    kernel.setArg(FGR_PATH_ARG_ENVIRONMENT,
                   environment_info(bound_environment_->tables, bound_environment_->rotation_degrees,
                                    bound_environment_->intensity));
 }

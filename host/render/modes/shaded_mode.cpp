@@ -102,8 +102,8 @@ int ShadedMode::extra_planes(const KernelSwitches& switches) const {
 }
 
 void ShadedMode::bind(cl::Kernel& kernel, const FrameRequest&, const TileLayout&) {
-    kernel.setArg(kFirstModeArgument, lights_);
-    kernel.setArg(kFirstModeArgument + 1, light_count_);
+    kernel.setArg(FGR_SHADED_ARG_LIGHTS, lights_);
+    kernel.setArg(FGR_SHADED_ARG_LIGHT_COUNT, light_count_);
 }
 
 void ShadedMode::read_back(std::span<const float> planes, const TileLayout& layout,

@@ -52,12 +52,12 @@ cl::Buffer ConePrepass::starts(const FrameRequest& request, const CameraFrame& c
     const TileLayout layout =
         tile_layout(packet_width_, blocks_across(camera), blocks_down(camera));
     const int packets = layout.tiles_x * layout.tiles_y;
-    kernel_.setArg(0, buffer);
-    kernel_.setArg(1, blocks);
-    kernel_.setArg(2, packets);
-    kernel_.setArg(3, camera);
-    kernel_.setArg(4, params);
-    kernel_.setArg(5, request.prepass.cone_scale);
+    kernel_.setArg(FGR_PREPASS_ARG_STARTS, buffer);
+    kernel_.setArg(FGR_PREPASS_ARG_BLOCK_PLANE, blocks);
+    kernel_.setArg(FGR_PREPASS_ARG_PACKET_COUNT, packets);
+    kernel_.setArg(FGR_PREPASS_ARG_CAMERA, camera);
+    kernel_.setArg(FGR_PREPASS_ARG_PARAMS, params);
+    kernel_.setArg(FGR_PREPASS_ARG_CONE_SCALE, request.prepass.cone_scale);
     const size_t global = static_cast<size_t>((packets + group - 1) / group) * group;
     device_.queue.enqueueNDRangeKernel(kernel_, cl::NullRange, cl::NDRange(global),
                                        cl::NDRange(group));
