@@ -20,7 +20,8 @@ typedef FGR_LANES(float, double) lane_scalar;
 /* One kernel per function, each over its own run of cases starting at first_case. (A single
  * kernel switching over all of them took minutes to build at 16 double lanes, where each alone
  * takes a fraction of a second.) One work-item per group keeps PoCL from compiling a work-item
- * loop around each. Kernel names: keep in step with host/device/math_check.cpp. */
+ * loop around each. Kernel names: keep in step with host/device/math_check.cpp; arguments in the
+ * order of FGR_MATH_CHECK_ARG_* (shared/fgr_layout_arguments.h). */
 #define FGR_CHECK_KERNEL(name, expression)                                                      \
     __kernel __attribute__((reqd_work_group_size(1, 1, 1))) void fgr_check_##name(             \
         __global const lane_scalar* a, __global const lane_scalar* b, __global lane_scalar* out, \

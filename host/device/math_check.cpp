@@ -14,6 +14,7 @@
 
 #include "device/cache_directory.hpp"
 #include "device/kernel_assembly.hpp"
+#include "device/kernel_layout.hpp"
 #include "fgr/kernel_library.hpp"
 
 namespace fgr {
@@ -191,10 +192,10 @@ std::vector<double> run_cases(const ComputeDevice& device, const cl::Program& pr
         const size_t count = inputs.first_case[index + 1] - inputs.first_case[index];
         if (count == 0) continue;
         cl::Kernel kernel(program, fmt::format("fgr_check_{}", functions()[index].kernel).c_str());
-        kernel.setArg(0, a_buffer);
-        kernel.setArg(1, b_buffer);
-        kernel.setArg(2, out_buffer);
-        kernel.setArg(3, cl_int(inputs.first_case[index]));
+        kernel.setArg(FGR_MATH_CHECK_ARG_A, a_buffer);
+        kernel.setArg(FGR_MATH_CHECK_ARG_B, b_buffer);
+        kernel.setArg(FGR_MATH_CHECK_ARG_OUT, out_buffer);
+        kernel.setArg(FGR_MATH_CHECK_ARG_FIRST_CASE, cl_int(inputs.first_case[index]));
         device.queue.enqueueNDRangeKernel(kernel, cl::NullRange, cl::NDRange(count),
                                           cl::NDRange(1));
     }

@@ -164,59 +164,60 @@ void unpack_common_planes(std::span<const float> planes, const TileLayout& layou
     std::atomic<long> hits = 0;
     in_parallel_bands(static_cast<size_t>(region.height), kMinHostBand / std::max<size_t>(width, 1),
                       [&](size_t first_row, size_t last_row) {
-        long band_hits = 0;
-        for (size_t y = first_row; y < last_row; ++y) {
-            const size_t row = static_cast<size_t>(layout.row_offset(static_cast<int>(y)));
-            for (size_t x = 0; x < width; ++x) {
-                const size_t source = row + static_cast<size_t>(columns[x]);
-                const size_t pixel = y * width + x;
-                for (size_t c = 0; c < 3; ++c) {
-                    frame.linear[pixel * 3 + c] =
-                        planes[(FGR_COLOUR_PLANE + c) * plane + source] * average;
-                }
-                frame.depth[pixel] = planes[FGR_DEPTH_PLANE * plane + source];
-                band_hits += frame.depth[pixel] >= 0.0f;
-            }
-            hits += band_hits;
-        });
-        frame.hits = hits;
+                          long band_hits = 0;
+                          for (size_t y = first_row; y < last_row; ++y) {
+                              const size_t row =
+                                  static_cast<size_t>(layout.row_offset(static_cast<int>(y)));
+                              for (size_t x = 0; x < width; ++x) {
+                                  const size_t source = row + static_cast<size_t>(columns[x]);
+                                  const size_t pixel = y * width + x;
+                                  for (size_t c = 0; c < 3; ++c) {
+                                      frame.linear[pixel * 3 + c] =
+                                          planes[(FGR_COLOUR_PLANE + c) * plane + source] * average;
+                                  }
+                                  frame.depth[pixel] = planes[FGR_DEPTH_PLANE * plane + source];
+                                  band_hits += frame.depth[pixel] >= 0.0f;
+                              }
+                          }
+                          hits += band_hits;
+                      });
+    frame.hits = hits;
 }
 
 // Work-items per work-group. Fixed rather than left to the driver so that the warm-up launch in
 // the constructor compiles exactly the work-group function later frames use (PoCL specialises
 // its code per local size), keeping JIT time out of render_ms.
-int work_group_size(const ComputeDevice& device) {
-        return device.info.is_cpu ? 8 : 64; }
+int work_group_size(const ComputeDevice& device) { return device.info.is_cpu ? 8 : 64; }
 
 // A cancellable frame runs in this many launches.
 constexpr int kCancelBands = 32;
 
 cl::NDRange global_range(int items, int group) {
-        return cl::NDRange(static_cast<size_t>((items + group - 1) / group) * group);
+    return cl::NDRange(static_cast<size_t>((items + group - 1) / group) * group);
 }
 
 // Logs each distinct warning once per process: every renderer on a device meets the same
 // self-test verdict.
 void warn_once(const std::string& message) {
-        static std::mutex mutex;
-        static std::set<std::string> said;
-        std::lock_guard lock(mutex);
-        if (said.insert(message).second) spdlog::warn("{}", message);
+    static std::mutex mutex;
+    static std::set<std::string> said;
+    std::lock_guard lock(mutex);
+    if (said.insert(message).second) spdlog::warn("{}", message);
 }
 
 // The probes evaluate the DE: an inside-only scene has none (std::logic_error, saying `to_do`).
 void require_distance_estimator(const Scene& scene, const char* to_do) {
-        if (scene.inside_only()) {
-            throw std::logic_error(fmt::format(
-                "scene '{}' has no distance estimator to {} (it defines only scene_inside)",
-                scene.id, to_do));
-        }
+    if (scene.inside_only()) {
+        throw std::logic_error(
+            fmt::format("scene '{}' has no distance estimator to {} (it defines only scene_inside)",
+                        scene.id, to_do));
+    }
 }
 
 Frame cancelled_frame() {
-        Frame cancelled;
-        cancelled.cancelled = true;
-        return cancelled;
+    Frame cancelled;
+    cancelled.cancelled = true;
+    return cancelled;
 }
 
 }  // namespace

@@ -50,4 +50,10 @@
 #define FGR_PROBE_ARG_PARAMS 4       /* __constant float* */
 #define FGR_PROBE_ARG_EPS 5          /* fgr_probe_normal: float, the stencil's size */
 
+/* The device math self-test's kernels, fgr_check_<function> (fgr_math_check.cl). */
+#define FGR_MATH_CHECK_ARG_A 0          /* __global const lane_scalar*: first operands */
+#define FGR_MATH_CHECK_ARG_B 1          /* __global const lane_scalar*: second operands */
+#define FGR_MATH_CHECK_ARG_OUT 2        /* __global lane_scalar*: results */
+#define FGR_MATH_CHECK_ARG_FIRST_CASE 3 /* int: the first case of this function's run */
+
 #endif /* FGR_LAYOUT_ARGUMENTS_H */

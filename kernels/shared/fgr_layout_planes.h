@@ -32,13 +32,11 @@
 #define FGR_SHADED_STEPS_PLANE 4
 #define FGR_SHADED_OUT_OF_STEPS_PLANE 5
 #define FGR_SHADED_SECONDARY_STEPS_PLANE 6
-/* Then one plane whose meaning follows the scene's geometry, which is fixed for a program, so the
- * two names share its number and never meet in one render. IFS scenes: the most nodes the ray's
- * heap held (-1: it overflowed). DE scenes: the secondary rays' DE evaluations of the pixel's
- * packet, in every lane. */
-#define FGR_SHADED_HEAP_PEAK_PLANE 7
+/* DE scenes: the secondary rays' DE evaluations of the pixel's packet, in every lane. IFS scenes:
+ * the most nodes the ray's heap held (-1: it overflowed). Each scene writes only its own one. */
 #define FGR_SHADED_SECONDARY_PACKET_STEPS_PLANE 7
-#define FGR_SHADED_STATS_PLANES 4
+#define FGR_SHADED_HEAP_PEAK_PLANE 8
+#define FGR_SHADED_STATS_PLANES 5
 
 /* IFS scenes, written by sample 0 after the stats planes: the level of the node each pixel hit
  * (-1: missed), how deep the footprint and the depth slider let the image go. */
