@@ -34,12 +34,10 @@ foreach(script FgrScenePlugin.cmake embed.cmake)
     configure_file(cmake/${script} ${CMAKE_BINARY_DIR}/${FGR_INSTALL_CMAKE_DIR}/${script} COPYONLY)
 endforeach()
 
-# The kernel library's source and the SDK guide, for scene authors to read. kernels/include holds
-# the host's C++ header alone: excluded, or FILES_MATCHING would leave its folders empty. The
-# guide's links resolve in the install as in the source tree (tests/installed_docs.sh): ABI.md
-# keeps its place beside sdk/, the examples' images their place in sdk/.
-install(DIRECTORY kernels/ DESTINATION ${FGR_INSTALL_KERNEL_DIR} FILES_MATCHING PATTERN "*.cl"
-    PATTERN include EXCLUDE)
+# The SDK guide, for scene authors to read beside the kernel library's source (installed by
+# kernels/CMakeLists.txt). The guide's links resolve in the install as in the source tree
+# (tests/installed_docs.sh): ABI.md keeps its place beside sdk/, the examples' images their place
+# in sdk/.
 file(GLOB sdk_images ${PROJECT_SOURCE_DIR}/sdk/*.png)
 install(FILES sdk/README.md ${sdk_images} DESTINATION ${CMAKE_INSTALL_DATADIR}/fgr/sdk)
 install(FILES plugin_api/ABI.md DESTINATION ${CMAKE_INSTALL_DATADIR}/fgr/plugin_api)

@@ -1,5 +1,5 @@
-// The brute-force mode (kernels/fgr_mode_brute.cl): rendering from an inside test alone. Its depth
-// agrees with the sphere tracer's on DE scenes, only comes closer over passes, and bisection
+// The brute-force mode (kernels/modes/fgr_mode_brute.cl): rendering from an inside test alone. Its
+// depth agrees with the sphere tracer's on DE scenes, only comes closer over passes, and bisection
 // halves its error per step; screen-space normals match DE normals, screen-space occlusion
 // darkens creases; inside-only scenes render, from outside and inside the set, with no NaN; packet
 // widths agree; and modes a scene cannot render in are refused in one line.

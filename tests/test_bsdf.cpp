@@ -1,9 +1,9 @@
-// The path tracer's materials (kernels/fgr_bsdf.cl), run as the kernels run them: through test
-// kernels built on the kernel library at each packet width and precision. Truths are independent
-// of the kernel's formulas: χ² goodness of fit of the sampled directions against the kernel's own
-// pdf integrated on the host (Mitsuba 3's chi2.py is the model), the pdf's and the albedo's
-// integrals by host quadrature of what the kernel evaluates, reciprocity, closed forms (the
-// mirror's reflection, a Lambertian lobe's exact weight, a mirror-plus-diffuse material's mean
+// The path tracer's materials (kernels/shading/fgr_bsdf.cl), run as the kernels run them: through
+// test kernels built on the kernel library at each packet width and precision. Truths are
+// independent of the kernel's formulas: χ² goodness of fit of the sampled directions against the
+// kernel's own pdf integrated on the host (Mitsuba 3's chi2.py is the model), the pdf's and the
+// albedo's integrals by host quadrature of what the kernel evaluates, reciprocity, closed forms
+// (the mirror's reflection, a Lambertian lobe's exact weight, a mirror-plus-diffuse material's mean
 // weight) and finite outputs on the inputs that break naive code.
 #include <fmt/format.h>
 #include <gtest/gtest.h>

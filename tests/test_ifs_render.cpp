@@ -1,5 +1,6 @@
-// Exact IFS ray tracing (kernels/fgr_ifs.cl): the kernel against the analytic bounding sphere and
-// against the double-precision reference traversal (trace_ifs_ray), at every packet width.
+// Exact IFS ray tracing (kernels/geometry/fgr_ifs.cl): the kernel against the analytic bounding
+// sphere and against the double-precision reference traversal (trace_ifs_ray), at every packet
+// width.
 #include <gtest/gtest.h>
 
 #include <cmath>

@@ -1,4 +1,4 @@
-// The cone-marched depth prepass (kernels/fgr_prepass.cl): camera rays started where their
+// The cone-marched depth prepass (kernels/geometry/fgr_prepass.cl): camera rays started where their
 // block's cone stopped must find what rays started at the eye find. Every scene the prepass
 // serves, in every projection and in the path mode, renders with and without it: hit or miss
 // agrees on all but 0.1% of the pixels, and where both hit the depths lie within the hit

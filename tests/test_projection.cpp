@@ -1,8 +1,8 @@
-// Cameras beyond the pinhole (camera/projection.hpp, kernels/fgr_camera.cl): small spheres placed
-// in known world directions must appear where the projection's own formulas (written out here,
-// apart from both implementations) put them, in the images the kernels render; stereo pairs must
-// show the parallax that separation, convergence and focal length predict; the hit threshold must
-// scale with the projection's pixel footprint; and the command line must refuse bad settings.
+// Cameras beyond the pinhole (camera/projection.hpp, kernels/modes/fgr_camera.cl): small spheres
+// placed in known world directions must appear where the projection's own formulas (written out
+// here, apart from both implementations) put them, in the images the kernels render; stereo pairs
+// must show the parallax that separation, convergence and focal length predict; the hit threshold
+// must scale with the projection's pixel footprint; and the command line must refuse bad settings.
 #include <fmt/format.h>
 #include <gtest/gtest.h>
 

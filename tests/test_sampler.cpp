@@ -1,8 +1,8 @@
-// The path tracer's sampler (kernels/fgr_sampler.cl), run through a test kernel at every packet
-// width and precision. What is asserted are properties an Owen-scrambled Sobol sampler must have
-// whatever its code: every aligned block of 2^k samples of a pixel is a (0,k,2)-net in each pair
-// of dimensions; every lane, width and precision gives the pixel's own numbers; pixels, seeds and
-// dimensions are uncorrelated and uniform (z-scores and χ² at stated significance levels); a
+// The path tracer's sampler (kernels/sampling/fgr_sampler.cl), run through a test kernel at every
+// packet width and precision. What is asserted are properties an Owen-scrambled Sobol sampler must
+// have whatever its code: every aligned block of 2^k samples of a pixel is a (0,k,2)-net in each
+// pair of dimensions; every lane, width and precision gives the pixel's own numbers; pixels, seeds
+// and dimensions are uncorrelated and uniform (z-scores and χ² at stated significance levels); a
 // smooth integrand converges much faster than with independent samples; the same inputs give the
 // same bits.
 #include <fmt/format.h>

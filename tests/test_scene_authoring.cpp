@@ -2,7 +2,7 @@
 // written for; a frozen version-1 scene keeps compiling; version-2 names stay out of version 1),
 // the version-2 helpers that take what a vec3 parameter gives and the folds (checked by their
 // geometry, through the kernel, at packet widths 1 and 16), and the orbit-scene contract
-// (kernels/fgr_iterate.cl) against the same maths written out by hand in packet form.
+// (kernels/fractals/fgr_iterate.cl) against the same maths written out by hand in packet form.
 #include <gtest/gtest.h>
 
 #include <algorithm>

@@ -1,6 +1,6 @@
-// kernels/fgr_sdf.cl, evaluated by the kernel through inline scenes, against double-precision C++
-// references: exact distance functions must match the true distance, bounds must never exceed it
-// and must agree with it on which side of the surface a point lies, and the non-rigid transforms
+// kernels/sdf/fgr_sdf.cl, evaluated by the kernel through inline scenes, against double-precision
+// C++ references: exact distance functions must match the true distance, bounds must never exceed
+// it and must agree with it on which side of the surface a point lies, and the non-rigid transforms
 // must stay 1-Lipschitz. Every scene is built at packet widths 1 and 16.
 #include <gtest/gtest.h>
 

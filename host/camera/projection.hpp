@@ -1,6 +1,6 @@
 #pragma once
 // Cameras beyond the pinhole: how image pixels map to rays. The kernel's camera
-// (kernels/fgr_camera.cl: camera_view_point, primary_direction, camera_origin) does the same
+// (kernels/modes/fgr_camera.cl: camera_view_point, primary_direction, camera_origin) does the same
 // maths per lane; these host versions are its mirror, for tests and for the pixel footprint
 // every mode's hit threshold is scaled by.
 //

@@ -20,7 +20,7 @@
 namespace fgr {
 namespace {
 
-// A function the kernel library calls on lanes (kernels/fgr_math.cl's helpers, or a plain
+// A function the kernel library calls on lanes (kernels/core/fgr_math.cl's helpers, or a plain
 // built-in): its kernel in fgr_math_check.cl, how many arguments it reads, where its
 // ordinary inputs lie, and the host's answer. `reference` computes in the lane precision
 // (`as_float` rounds through float) so float lanes are judged against float libm.

@@ -1,7 +1,7 @@
 #pragma once
 // Environments for the path tracer: generated environment maps (a photographic studio, a
 // Preetham daylight sky with its sun, a uniform map for furnace tests), and the tables that let
-// the kernels look a map up and sample it by importance (kernels/fgr_environment.cl).
+// the kernels look a map up and sample it by importance (kernels/shading/fgr_environment.cl).
 //
 // Directions: fgr's world is z-up (scene cameras use up = +z), so environments are too. A map is
 // equirectangular, width x height texels, row 0 at the top. Texel (column i, row j) covers polar

@@ -32,7 +32,7 @@ struct PixelRegion {
     long pixels() const { return long(width) * long(height); }
 };
 
-// The cone-marched depth prepass (kernels/fgr_prepass.cl): camera rays start where a cone
+// The cone-marched depth prepass (kernels/geometry/fgr_prepass.cl): camera rays start where a cone
 // marched for their 8x8 block of pixels came near the surface instead of at the eye. On by
 // default wherever it applies (prepass_applies in host/render/prepass/cone_prepass.hpp);
 // `cone_scale` below 1 narrows the cones below what their blocks need, which is unsafe and only

@@ -172,7 +172,7 @@ std::string without_comments(std::string_view source) {
 }
 
 // Whether the source says `#define FGR_SCENE_INSIDE_ONLY` on a line of its own (a scene with an
-// inside test and no distance estimator, see kernels/fgr_geometry.cl).
+// inside test and no distance estimator, see kernels/geometry/fgr_geometry.cl).
 bool declares_inside_only(std::string_view source) {
     static const std::regex directive(R"(^[ \t]*#[ \t]*define[ \t]+FGR_SCENE_INSIDE_ONLY\b)",
                                       std::regex::multiline);
@@ -206,7 +206,7 @@ int declared_kernel_api(std::string_view source) {
 
 namespace {
 
-// The knobs of the brute-force mode (kernels/fgr_mode_brute.cl); other modes never read them.
+// The knobs of the brute-force mode (kernels/modes/fgr_mode_brute.cl); other modes never read them.
 void add_brute_force_params(Scene& scene) {
     const std::string group = "Brute force";
     scene.params.push_back(builtin_param("brute_samples", "Samples per pass", ParamType::Int, 1.0f,

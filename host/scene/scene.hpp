@@ -92,7 +92,7 @@ struct Scene {
     std::shared_ptr<const IfsScene> ifs;
 
     // Whether the source defines only an inside test (`#define FGR_SCENE_INSIDE_ONLY`, see
-    // kernels/fgr_geometry.cl): such a scene renders only in the brute-force mode.
+    // kernels/geometry/fgr_geometry.cl): such a scene renders only in the brute-force mode.
     bool inside_only() const;
     // A distance estimator to march: not for IFS scenes (traced exactly) nor inside-only ones.
     bool has_distance_estimator() const;

@@ -1,6 +1,6 @@
 /* Quaternion Julia set: the iteration q -> q^2 + c on quaternions q = x + y i + z j + w k, seen as
  * the 3D slice w = slice_w of the 4D set. One step is the formula library's
- * formula_quaternion_julia (kernels/formulas/hypercomplex.cl, its quaternion_square and
+ * formula_quaternion_julia (kernels/fractals/formulas/hypercomplex.cl, its quaternion_square and
  * quaternion_length too, and its Koebe bound formula_potential_bound); this scene adds the slice
  * and the bounding ball.
  *
@@ -8,7 +8,7 @@
  * quaternion norm is multiplicative, so |q'| -> 2 |q| |q'| exactly and one scalar stands in for the
  * whole derivative. */
 
-/* The formula library (kernels/formulas/) is kernel API 2. */
+/* The formula library (kernels/fractals/formulas/) is kernel API 2. */
 #define FGR_KERNEL_API 2
 
 /* Every orbit leaving the ball of radius R = (1 + sqrt(1 + 4|c|)) / 2 escapes: beyond it

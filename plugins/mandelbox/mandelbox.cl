@@ -1,5 +1,5 @@
 /* Mandelbox (Tom Lowe, 2010): the iteration z -> scale * sphere_fold(box_fold(z)) + p, one step
- * of which is the formula library's formula_mandelbox (kernels/formulas/boxes.cl, with the
+ * of which is the formula library's formula_mandelbox (kernels/fractals/formulas/boxes.cl, with the
  * scale kept at |scale| >= 1.2, below which every point is inside).
  *
  * Distance estimate: DE = |z| / dr with the running derivative
@@ -8,7 +8,7 @@
  * iterations before escape changes, by about (fold offsets) / bailout relative: the large default
  * bailout (10^4) keeps those jumps below the march's tolerance. */
 
-/* The formula library (kernels/formulas/) is kernel API 2. */
+/* The formula library (kernels/fractals/formulas/) is kernel API 2. */
 #define FGR_KERNEL_API 2
 
 /* Iterates the Mandelbox map from z = p; returns the DE and, when `record` is set, fills *trap

@@ -1,5 +1,5 @@
-/* Mandelbulb scene: the power-n Mandelbulb of kernels/fgr_fractals.cl (mandelbulb_de, where the
- * formulas are spelled out) with this scene's parameters, coloured by its orbit. */
+/* Mandelbulb scene: the power-n Mandelbulb of kernels/fractals/fgr_fractals.cl (mandelbulb_de,
+ * where the formulas are spelled out) with this scene's parameters, coloured by its orbit. */
 
 inline real bulb_iterate(vec3 p, PARAMS, int record, orbit_trap* trap) {
     return mandelbulb_de(p, param_power, param_bailout, param_iterations, param_variant == 1,

@@ -8,7 +8,7 @@
  * In that region two of the 20 sub-cubes remain: the corner cube at (1, 1, 1) and the edge cube
  * at (1, 1, 0) in the middle layer, which the step picks by pulling z.z back when it is below
  * -offset.z * (scale - 1) / 2. The step is the formula library's (formula_menger_step in
- * kernels/formulas/kifs.cl, which the menger formula scales by `scale`).
+ * kernels/fractals/formulas/kifs.cl, which the menger formula scales by `scale`).
  *
  * After n iterations the point is measured against the cube [-1, 1]^3 and the distance scaled
  * back by scale^-n. Reflections, rotations, uniform scaling and the pull-back are all isometries
@@ -21,7 +21,7 @@
  * scaling), but w stays in p's units while z would overflow float for far points or high
  * iteration counts. */
 
-/* The formula library (kernels/formulas/) is kernel API 2. */
+/* The formula library (kernels/fractals/formulas/) is kernel API 2. */
 #define FGR_KERNEL_API 2
 
 /* Orbit traps see the first few levels only: deeper ones vary faster than a pixel and would turn

@@ -1,5 +1,5 @@
 /* The SDF gallery scene plugin: every primitive, combinator and transform of the kernel library's
- * kernels/fgr_sdf.cl on a 6 x 4 grid of slots, front row to back: primitives, more primitives
+ * kernels/sdf/fgr_sdf.cl on a 6 x 4 grid of slots, front row to back: primitives, more primitives
  * with elongate / onion / round, the six combinators, the non-rigid transforms. */
 #include <stddef.h>
 

@@ -1,4 +1,4 @@
-/* SDF gallery: every primitive, combinator and transform of kernels/fgr_sdf.cl, one per plinth
+/* SDF gallery: every primitive, combinator and transform of kernels/sdf/fgr_sdf.cl, one per plinth
  * slot on a 6 x 4 grid standing on a platform.
  *
  *   row 0 (front)  sphere, box, round box, torus, cylinder, capsule

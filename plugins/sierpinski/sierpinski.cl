@@ -15,10 +15,10 @@
  * The loop keeps w = z * scale^-i instead of z. It is the same map (folds and rotations commute
  * with scaling), but w stays in p's units: z itself would grow like scale^n, which overflows
  * float for far points or high iteration counts, where w merely stops changing. The step is the
- * formula library's (formula_sierpinski_step in kernels/formulas/kifs.cl, which the sierpinski
- * formula scales by `scale`). */
+ * formula library's (formula_sierpinski_step in kernels/fractals/formulas/kifs.cl, which the
+ * sierpinski formula scales by `scale`). */
 
-/* The formula library (kernels/formulas/) is kernel API 2. */
+/* The formula library (kernels/fractals/formulas/) is kernel API 2. */
 #define FGR_KERNEL_API 2
 
 #define SIERPINSKI_INV_SQRT3 0.57735027f

@@ -81,7 +81,7 @@ PixelRegion padded_region(const PixelRegion& tile, int padding, int width, int h
 }
 
 // The brute-force mode's screen-space shading reads up to FGR_BRUTE_MAX_REACH pixels away
-// (kernels/fgr_mode_brute.cl), so its tiles are rendered with that much padding.
+// (kernels/modes/fgr_mode_brute.cl), so its tiles are rendered with that much padding.
 int region_padding(RenderMode mode) { return mode == RenderMode::Brute ? FGR_BRUTE_MAX_REACH : 0; }
 
 std::filesystem::path tile_store_path(const std::filesystem::path& output) {

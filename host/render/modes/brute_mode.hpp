@@ -4,10 +4,10 @@
 
 namespace fgr {
 
-// Render mode "brute" (kernels/fgr_mode_brute.cl): each sample is one pass of stratified inside
-// tests along every pixel's ray, refining a depth buffer that the mode keeps on the device from
-// one render call to the next (a call starting at sample 0 starts it afresh; a later first sample
-// continues it, as the viewer does while the view stands still). Once the passes are done,
+// Render mode "brute" (kernels/modes/fgr_mode_brute.cl): each sample is one pass of stratified
+// inside tests along every pixel's ray, refining a depth buffer that the mode keeps on the device
+// from one render call to the next (a call starting at sample 0 starts it afresh; a later first
+// sample continues it, as the viewer does while the view stands still). Once the passes are done,
 // fgr_brute_shade shades the depth buffer in screen space. Beyond colour and depth it writes the
 // shading's albedo and normal (FGR_BRUTE_ALBEDO_PLANE and FGR_BRUTE_NORMAL_PLANE, for EXR layers)
 // and with stats each pixel's inside tests (FGR_BRUTE_STATS_PLANE).

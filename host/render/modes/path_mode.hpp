@@ -6,8 +6,8 @@
 
 namespace fgr {
 
-// Render mode "path" (kernels/fgr_mode_path.cl): its arguments are the lights (the scene's and
-// the sky's sun), the path settings and the environment's tables; it writes the radiance, the
+// Render mode "path" (kernels/modes/fgr_mode_path.cl): its arguments are the lights (the scene's
+// and the sky's sun), the path settings and the environment's tables; it writes the radiance, the
 // first hit's depth, albedo, normal and coverage, and with stats its lanes' work.
 class PathMode final : public ModeKernel {
 public:

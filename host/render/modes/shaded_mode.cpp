@@ -1,6 +1,6 @@
-// Render mode "shaded" (kernels/fgr_mode_shaded.cl): its arguments are the scene's lights; with
-// stats it writes each pixel's march steps (nodes visited in IFS scenes), whether they ran out,
-// its secondary rays' DE evaluations and either its IFS heap's high-water mark or its packet's
+// Render mode "shaded" (kernels/modes/fgr_mode_shaded.cl): its arguments are the scene's lights;
+// with stats it writes each pixel's march steps (nodes visited in IFS scenes), whether they ran
+// out, its secondary rays' DE evaluations and either its IFS heap's high-water mark or its packet's
 // secondary DE evaluations, IFS scenes then the level each pixel's hit reached, and with aovs
 // then the layers (albedo, normal, coverage, foreground). Each plane's index is
 // FGR_SHADED_*_PLANE in kernels/shared/fgr_layout_planes.h.

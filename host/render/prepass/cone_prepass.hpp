@@ -1,6 +1,6 @@
 #pragma once
-// The cone-marched depth prepass (kernels/fgr_prepass.cl) for Renderer: one cone per block of
-// FGR_PREPASS_BLOCK x FGR_PREPASS_BLOCK pixels finds how far the block's camera rays can start
+// The cone-marched depth prepass (kernels/geometry/fgr_prepass.cl) for Renderer: one cone per block
+// of FGR_PREPASS_BLOCK x FGR_PREPASS_BLOCK pixels finds how far the block's camera rays can start
 // from the eye; the render kernel reads the distances (its argument `march_starts`).
 
 #include <CL/opencl.hpp>

@@ -3,7 +3,7 @@
 // surface, seen from the new camera, gives each new pixel a hint of how far its camera ray can
 // start (FrameRequest::start_hints). The viewer uses it for previews while the camera moves; the
 // kernel takes a hint only where the DE there says the point is clear of the surface by more
-// than the hit footprint (kernels/fgr_prepass.cl, march_start_with_hint).
+// than the hit footprint (kernels/geometry/fgr_prepass.cl, march_start_with_hint).
 
 #include <vector>
 

@@ -1,6 +1,6 @@
-// The formula library's table: what each kernels/formulas/<family>.cl function takes, where it
-// comes from, and what its scene starts with. The kernel function's arguments after (z, w, dr, c)
-// are its params in this order (then the rotation, for those that have one).
+// The formula library's table: what each kernels/fractals/formulas/<family>.cl function takes,
+// where it comes from, and what its scene starts with. The kernel function's arguments after (z, w,
+// dr, c) are its params in this order (then the rotation, for those that have one).
 #include <algorithm>
 
 #include "scene/formulas/formulas.hpp"

@@ -1,11 +1,11 @@
 #pragma once
 // The formula library and formula scenes. A formula is one step of an escape-time iteration,
-// formula_NAME(&z, &w, &dr, c, parameters...) in kernels/formulas/<family>.cl; a formula scene
-// (NAME.formula.json beside the plugins) iterates a sequence of them, each repeated some times,
-// the sequence over and over: one formula is a classic fractal, several a hybrid (Mandelbulber's
-// idea: two Mandelbulb steps, then an Amazing Box step, ...). The host writes the scene's OpenCL
-// source from the sequence at load time: the families it uses, the per-point set-up (rotation
-// matrices), the loop, and the distance the formulas' kinds call for.
+// formula_NAME(&z, &w, &dr, c, parameters...) in kernels/fractals/formulas/<family>.cl; a formula
+// scene (NAME.formula.json beside the plugins) iterates a sequence of them, each repeated some
+// times, the sequence over and over: one formula is a classic fractal, several a hybrid
+// (Mandelbulber's idea: two Mandelbulb steps, then an Amazing Box step, ...). The host writes the
+// scene's OpenCL source from the sequence at load time: the families it uses, the per-point set-up
+// (rotation matrices), the loop, and the distance the formulas' kinds call for.
 
 #include <array>
 #include <cstddef>
@@ -48,7 +48,7 @@ struct FormulaParam {
 struct Formula {
     std::string name;    // formula_NAME in the kernel library; the name scene files use
     std::string title;   // "Amazing Surf"
-    std::string family;  // kernels/formulas/<family>.cl
+    std::string family;  // kernels/fractals/formulas/<family>.cl
     std::vector<std::string> tags;
     std::string summary;  // what it does, one line
     std::string origin;   // where it comes from (author, year, place)

@@ -120,7 +120,7 @@ glm::dvec3 singular_values(const glm::dmat3& m);
 // |w_i(c) - c| + s_i R <= R, so R = max_i |w_i(c) - c| / (1 - s_i); c is chosen to make R small.
 IfsBounds ifs_bounding_sphere(const std::vector<IfsMap>& maps);
 
-// What a ray meets in an IFS scene, traced as kernels/fgr_ifs.cl traces it but in double
+// What a ray meets in an IFS scene, traced as kernels/geometry/fgr_ifs.cl traces it but in double
 // precision and without a heap limit: the reference its tests compare the kernel with.
 struct IfsRayHit {
     bool hit = false;

@@ -1,4 +1,4 @@
-// Generated OpenCL C for IFS scenes: the maps as constant tables for kernels/fgr_ifs.cl.
+// Generated OpenCL C for IFS scenes: the maps as constant tables for kernels/geometry/fgr_ifs.cl.
 #include "scene/ifs/ifs_source.hpp"
 
 #include <fmt/format.h>

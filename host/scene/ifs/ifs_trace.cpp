@@ -1,5 +1,5 @@
-// The reference IFS ray tracer: kernels/fgr_ifs.cl's traversal in double precision, with an
-// unbounded heap, for tests and host-side queries.
+// The reference IFS ray tracer: kernels/geometry/fgr_ifs.cl's traversal in double precision, with
+// an unbounded heap, for tests and host-side queries.
 #include <algorithm>
 #include <cmath>
 #include <glm/geometric.hpp>
@@ -30,7 +30,7 @@ struct LaterEntry {
 };
 
 // Where the ray enters and leaves the ball in the node's space, if it meets it: the miss test by
-// |oc x dl|^2 against R^2 |dl|^2, as kernels/fgr_ifs.cl's ifs_enter.
+// |oc x dl|^2 against R^2 |dl|^2, as kernels/geometry/fgr_ifs.cl's ifs_enter.
 bool enter(const Node& node, const IfsBounds& ball, const glm::dvec3& o, const glm::dvec3& d,
            double& entry, double& exit) {
     const glm::dvec3 oc = node.linear * o + node.offset - ball.centre;
@@ -46,7 +46,7 @@ bool enter(const Node& node, const IfsBounds& ball, const glm::dvec3& o, const g
     return true;
 }
 
-// Where the ray enters a leaf's polytope, and through which plane (kernels/fgr_ifs.cl's
+// Where the ray enters a leaf's polytope, and through which plane (kernels/geometry/fgr_ifs.cl's
 // ifs_polytope_enter).
 bool enter_polytope(const Node& node, const IfsLeaf& leaf, const glm::dvec3& o, const glm::dvec3& d,
                     double& entry, int& face) {
@@ -78,7 +78,7 @@ bool enter_polytope(const Node& node, const IfsLeaf& leaf, const glm::dvec3& o, 
 }
 
 // Whether a leaf draws the polytope: at the depth cap (a leaf the footprint stopped draws its
-// ball; kernels/fgr_ifs.cl's ifs_draws_polytope).
+// ball; kernels/geometry/fgr_ifs.cl's ifs_draws_polytope).
 bool draws_polytope(const Node& node, const IfsScene& ifs, const IfsTraceRules& rules) {
     return !ifs.leaf.planes.empty() && node.depth >= rules.max_depth;
 }
@@ -114,7 +114,7 @@ bool is_leaf(const Node& node, const IfsTraceRules& rules) {
 }
 
 // The leaf's normal: world-space unit normals of the ellipsoids of its last levels at the hit
-// point, averaged (kernels/fgr_ifs.cl's ifs_normal).
+// point, averaged (kernels/geometry/fgr_ifs.cl's ifs_normal).
 glm::dvec3 averaged_normal(const Node& leaf, const IfsScene& ifs, const glm::dvec3& point,
                            int levels) {
     glm::dmat3 linear = leaf.linear;
@@ -135,7 +135,7 @@ glm::dvec3 averaged_normal(const Node& leaf, const IfsScene& ifs, const glm::dve
 }
 
 // The normal where the ray enters a resolved leaf: its polytope's face, or the averaged ball
-// normals (kernels/fgr_ifs.cl's ifs_normal).
+// normals (kernels/geometry/fgr_ifs.cl's ifs_normal).
 glm::dvec3 surface_normal(const Node& leaf, const IfsScene& ifs, const IfsTraceRules& rules,
                           const glm::dvec3& origin, const glm::dvec3& dir) {
     if (!draws_polytope(leaf, ifs, rules)) {

@@ -205,8 +205,9 @@ typedef struct fgr_builtin_default {
     float value[3]; /* [0] for scalars; all three for colours */
 } fgr_builtin_default;
 
-/* The orbit-trap colour modes of kernels/fgr_colour.cl, as values of a scene's `colour_mode`
- * parameter (FGR_COLOUR_PARAMS in fgr/scene_helpers.h): bit i stands for value i (ABI 1.4). */
+/* The orbit-trap colour modes of kernels/shading/fgr_colour.cl, as values of a scene's
+ * `colour_mode` parameter (FGR_COLOUR_PARAMS in fgr/scene_helpers.h): bit i stands for value i
+ * (ABI 1.4). */
 typedef enum fgr_colour_mode_flag {
     FGR_COLOUR_MODE_POINT = 1u << 0,     /* distance of the orbit to the origin */
     FGR_COLOUR_MODE_PLANES = 1u << 1,    /* ... to the coordinate planes */

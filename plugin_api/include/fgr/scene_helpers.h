@@ -44,7 +44,7 @@
             NULL, description                                                                  \
     }
 
-/* The three colouring parameters kernels/fgr_colour.cl's trap_colour() reads:
+/* The three colouring parameters kernels/shading/fgr_colour.cl's trap_colour() reads:
  * colour_mode (which orbit trap), palette (which ramp) and base_colour (the scene's tint). */
 #define FGR_COLOUR_PARAMS(mode, palette, r, g, b)                                                 \
     FGR_ENUM_PARAM("colour_mode", "Colour by", "Colour", 4, mode, "point|planes|axes|iterations", \
