@@ -26,7 +26,9 @@
  * `return`, `break` or `continue`. FGR_DISTANCE(expression) ends the scene with the distance, an
  * expression in the final z and dr (and c), and defines scene_de; and scene_colour from the orbit
  * trap if `#define FGR_SCENE_HAS_COLOUR` came before it (declare the FGR_COLOUR_PARAMS parameters).
- * One FGR_ORBIT per scene.
+ * One FGR_ORBIT per scene. (FGR_DISTANCE takes one named parameter, not `...`: OpenCL C 1.2 has no
+ * variadic macros, and NVIDIA's compiler refuses them; commas inside the expression's own
+ * parentheses pass through.)
  *
  * Cost: the step is the loop's body, so the scene compiles to the loop one would write out by
  * hand in packet form, and costs the same (README: "Scene authoring cost"). A constant
@@ -57,13 +59,13 @@
             const real fgr_dr_before = dr;                                                     \
             {
 
-#define FGR_DISTANCE(...)                                                                       \
+#define FGR_DISTANCE(distance)                                                                  \
             }                                                                                  \
             z = v3_select(fgr_z_before, z, fgr_active);                                        \
             dr = select(fgr_dr_before, dr, fgr_active);                                        \
             if (fgr_record) *fgr_trap = trap_update(*fgr_trap, z, fgr_active);                 \
         }                                                                                      \
-        return (__VA_ARGS__);                                                                  \
+        return (distance);                                                                     \
     }                                                                                          \
     real scene_de(vec3 p, PARAMS) {                                                            \
         orbit_trap unused;                                                                     \
