@@ -3,7 +3,9 @@
 # change that breaks it fails. Prints every offence and exits 1, or exits 0 when there is none:
 #   - C and C++ sources are as clang-format writes them (includes sorted, 100 columns);
 #   - no C, C++ or OpenCL C line is over 100 columns;
-#   - comments and user docs say why, not when: no "issue N" (git log keeps the history).
+#   - comments and user docs say why, not when: no "issue N" (git log keeps the history);
+#   - OpenCL C stays 1.2, which every driver takes: no variadic macro (NVIDIA's compiler refuses
+#     them, where PoCL's newer Clang lets them pass).
 # Frozen copies of old ABI headers and kernel libraries are left as they were frozen, and the
 # `fgr new-scene` template, which is C only once its @PLACEHOLDERS@ are filled in.
 set -euo pipefail
@@ -37,5 +39,13 @@ if history=$(git grep -nE '\b[Ii]ssue [0-9]+' -- host kernels plugin_api plugins
     failures=$((failures + 1))
 fi
 
+mapfile -t kernel_sources < <(git ls-files '*.cl' | grep -Ev "$frozen")
+if variadic=$(grep -nE '^[[:space:]]*#[[:space:]]*define[[:space:]]+[A-Za-z_0-9]+\([^)]*\.\.\.' \
+    "${kernel_sources[@]}") && [[ -n $variadic ]]; then
+    echo "$variadic"
+    echo "variadic macros are not OpenCL C 1.2: give the macro named parameters"
+    failures=$((failures + 1))
+fi
+
 ((failures == 0)) || exit 1
-echo "style: clang-format clean, no line over 100 columns, no issue numbers"
+echo "style: clang-format clean, no line over 100 columns, no issue numbers, no variadic macros"
