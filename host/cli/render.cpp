@@ -26,6 +26,7 @@
 #include "output/tiled/streaming_image.hpp"
 #include "output/tiled/tiled_still.hpp"
 #include "render/renderer.hpp"
+#include "render/sample_budget.hpp"
 #include "scene/ifs/ifs.hpp"
 #include "tiled_render.hpp"
 #include "util/timing.hpp"
@@ -150,7 +151,6 @@ FrameRequest default_request(const Scene& scene, const RenderOptions& options) {
     request.height = options.height;
     request.view = scene.cameras.front().view;
     request.params = default_param_values(scene);
-    request.samples = options.samples.value_or(1);
     request.projection = chosen_projection(options.projection);
     request.prepass.enabled = options.prepass;
     return request;
@@ -204,8 +204,11 @@ StillJob still_job(const Scene& scene, const FrameRequest& request, const Render
         }
     }
     FrameRequest reported = request;
-    if (!options.samples && settings.mode == RenderMode::Path) reported.samples = kPathSamples;
-    if (!options.samples && settings.mode == RenderMode::Brute) reported.samples = kBrutePasses;
+    try {
+        reported.samples = still_samples(settings.mode, options.samples);
+    } catch (const std::invalid_argument& error) {
+        throw UsageError(error.what());
+    }
     if (settings.mode == RenderMode::Path) {
         reported.path = chosen_path_settings(options.mode, scene);
         if (reported.path.radiance_clamp > 0.0f) {
@@ -360,11 +363,12 @@ int render_samples_across_ranks(Cluster& cluster, const Scene& scene, const Fram
     return 0;
 }
 
-// `fgr render` under mpirun: path-traced stills by seeds, everything else in tiles.
+// `fgr render` under mpirun: stills whose samples differ with the seed (path-traced ones) by seed,
+// everything else in tiles.
 int render_across_ranks(Cluster& cluster, const Scene& scene, const FrameRequest& request,
                         const ComputeDevice& device, ProgramCache& cache,
                         const RenderOptions& options) {
-    if (chosen_mode(options.mode, scene) == RenderMode::Path && !tiled_render_wanted(options)) {
+    if (sample_budget(chosen_mode(options.mode, scene)).seeded && !tiled_render_wanted(options)) {
         if (options.stats)
             throw UsageError("--stats is for renders of one process (without mpirun)");
         return render_samples_across_ranks(cluster, scene, request, device, cache, options);
@@ -430,10 +434,15 @@ void add_frame_options(CLI::App* command, RenderOptions& options, int max_side) 
                         "(see `fgr list`); the same as --set colour_mode=MODE");
     command
         ->add_option("--spp", options.samples,
-                     "samples per pixel, jittered and averaged: anti-aliasing, depth of field, "
-                     "and the path tracer's estimate (default 1; 64 with --mode path); with "
-                     "--mode brute, passes of sampling along each ray (default 16)")
-        ->check(CLI::Range(1, kMaxSamples));
+                     fmt::format("samples per pixel, jittered and averaged: anti-aliasing, depth "
+                                 "of field, and the path tracer's estimate (default {}; {} with "
+                                 "--mode path); with --mode brute, {} of sampling along each "
+                                 "ray (default {})",
+                                 sample_budget(RenderMode::Shaded).still,
+                                 sample_budget(RenderMode::Path).still,
+                                 sample_budget(RenderMode::Brute).unit,
+                                 sample_budget(RenderMode::Brute).still))
+        ->check(CLI::Range(kMinSamples, kMaxSamples));
     command
         ->add_option("--bit-depth", options.bit_depth,
                      "8: tone-mapped sRGB PNG (default); 16: linear 16-bit PNG (exposure only)")
