@@ -90,10 +90,15 @@ std::span<const KernelFile> kernel_layout() {
 
 std::span<const KernelFile> kernel_postlude() {
     static constexpr std::array files{
-        KernelFile{"fgr_geometry.cl", fgr_geometry_cl}, KernelFile{"fgr_march.cl", fgr_march_cl},
-        KernelFile{"fgr_ifs.cl", fgr_ifs_cl},           KernelFile{"fgr_shade.cl", fgr_shade_cl},
-        KernelFile{"fgr_effects.cl", fgr_effects_cl},   KernelFile{"fgr_camera.cl", fgr_camera_cl},
-        KernelFile{"fgr_prepass.cl", fgr_prepass_cl},   KernelFile{"fgr_probe.cl", fgr_probe_cl},
+        KernelFile{"fgr_geometry.cl", fgr_geometry_cl},
+        KernelFile{"fgr_march.cl", fgr_march_cl},
+        KernelFile{"fgr_ifs.cl", fgr_ifs_cl},
+        KernelFile{"fgr_shade.cl", fgr_shade_cl},
+        KernelFile{"fgr_sampler.cl", fgr_sampler_cl},
+        KernelFile{"fgr_effects.cl", fgr_effects_cl},
+        KernelFile{"fgr_camera.cl", fgr_camera_cl},
+        KernelFile{"fgr_prepass.cl", fgr_prepass_cl},
+        KernelFile{"fgr_probe.cl", fgr_probe_cl},
     };
     return files;
 }
@@ -101,7 +106,6 @@ std::span<const KernelFile> kernel_postlude() {
 std::span<const KernelFile> mode_files(std::string_view mode) {
     static constexpr std::array shaded{KernelFile{"fgr_mode_shaded.cl", fgr_mode_shaded_cl}};
     static constexpr std::array path{
-        KernelFile{"fgr_sampler.cl", fgr_sampler_cl},
         KernelFile{"fgr_environment.cl", fgr_environment_cl},
         KernelFile{"fgr_mode_path.cl", fgr_mode_path_cl},
     };

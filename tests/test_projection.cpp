@@ -19,6 +19,7 @@
 #include "device_suite.hpp"
 #include "output/still_image.hpp"
 #include "render/renderer.hpp"
+#include "render/sample_budget.hpp"
 #include "scene/parameters.hpp"
 #include "test_scenes.hpp"
 
@@ -89,7 +90,7 @@ protected:
         FrameRequest request{width, height, scene.cameras.front().view,
                              default_param_values(scene)};
         request.projection = projection;
-        if (mode == RenderMode::Brute) request.samples = kBrutePasses;
+        if (mode == RenderMode::Brute) request.samples = sample_budget(mode).still;
         for (const auto& assignment : assignments) {
             set_param_from_text(scene, request.params, assignment);
         }

@@ -12,6 +12,7 @@
 #include "commands.hpp"
 #include "device/program_cache.hpp"
 #include "render/renderer.hpp"
+#include "render/sample_budget.hpp"
 
 namespace fgr {
 namespace {
@@ -81,7 +82,7 @@ void add_bench_command(CLI::App& app, BenchOptions& options) {
     bench->add_option("--path", options.settings.path,
                       "camera path (default: 'benchmark' if the scene has it, else its first)");
     bench->add_option("--spp", options.settings.samples, "samples per pixel (default 1)")
-        ->check(CLI::Range(1, kMaxSamples));
+        ->check(CLI::Range(kMinSamples, kMaxSamples));
     bench->add_option("-o,--output", options.output,
                       "write PREFIX.json and PREFIX.csv (default: bench-SCENE)");
     add_kernel_source_option(bench, options.kernel_source);

@@ -11,6 +11,7 @@
 #include "device/program_cache.hpp"
 #include "diagnostics/brute_accuracy.hpp"
 #include "render/renderer.hpp"
+#include "render/sample_budget.hpp"
 
 namespace fgr {
 
@@ -29,7 +30,7 @@ void add_bench_accuracy_command(CLI::App& bench, BenchOptions& options) {
         ->add_option("--reference-spp", sweep.settings.reference_samples,
                      "samples per pixel of the samples reference, the one the spp points "
                      "are measured against (default 64)")
-        ->check(CLI::Range(1, kMaxSamples));
+        ->check(CLI::Range(kMinSamples, kMaxSamples));
     accuracy
         ->add_option("--repeats", sweep.settings.repeats,
                      "timing rounds over all settings (alternating); each setting's fastest "

@@ -7,8 +7,7 @@
 #include <cctype>
 #include <chrono>
 #include <filesystem>
-#include <functional>
-#include <numeric>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -19,13 +18,13 @@
 #include "device/kernel_assembly.hpp"
 #include "device/program_cache.hpp"
 #include "distributed/cluster.hpp"
-#include "distributed/frame_wire.hpp"
-#include "distributed/task_farm.hpp"
-#include "output/parts/frame_merge.hpp"
+#include "distributed/frame_farm.hpp"
+#include "distributed/seed_split.hpp"
 #include "output/still_image.hpp"
 #include "output/tiled/streaming_image.hpp"
 #include "output/tiled/tiled_still.hpp"
 #include "render/renderer.hpp"
+#include "render/sample_budget.hpp"
 #include "scene/ifs/ifs.hpp"
 #include "tiled_render.hpp"
 #include "util/timing.hpp"
@@ -150,7 +149,6 @@ FrameRequest default_request(const Scene& scene, const RenderOptions& options) {
     request.height = options.height;
     request.view = scene.cameras.front().view;
     request.params = default_param_values(scene);
-    request.samples = options.samples.value_or(1);
     request.projection = chosen_projection(options.projection);
     request.prepass.enabled = options.prepass;
     return request;
@@ -204,8 +202,11 @@ StillJob still_job(const Scene& scene, const FrameRequest& request, const Render
         }
     }
     FrameRequest reported = request;
-    if (!options.samples && settings.mode == RenderMode::Path) reported.samples = kPathSamples;
-    if (!options.samples && settings.mode == RenderMode::Brute) reported.samples = kBrutePasses;
+    try {
+        reported.samples = still_samples(settings.mode, options.samples);
+    } catch (const std::invalid_argument& error) {
+        throw UsageError(error.what());
+    }
     if (settings.mode == RenderMode::Path) {
         reported.path = chosen_path_settings(options.mode, scene);
         if (reported.path.radiance_clamp > 0.0f) {
@@ -220,24 +221,17 @@ StillJob still_job(const Scene& scene, const FrameRequest& request, const Render
 
 namespace {
 
-// FrameRequest::enough for --time-limit: true once `seconds` have passed from now.
-std::function<bool()> deadline_after(double seconds) {
-    const auto until = std::chrono::steady_clock::now() +
-                       std::chrono::duration_cast<std::chrono::steady_clock::duration>(
-                           std::chrono::duration<double>(seconds));
-    return [until] { return std::chrono::steady_clock::now() >= until; };
-}
-
-// Prints the figures of a rendered still and writes it to `output`.
-void report_and_write(const Scene& scene, const FrameRequest& request, const RenderOptions& options,
-                      const Aovs& aovs, const Frame& frame, const std::filesystem::path& output) {
+// Prints the figures of a rendered still and writes it to `output`; `samples_asked` per pixel, of
+// which the frame holds those the time limit left time for.
+void report_and_write(const Scene& scene, const FrameRequest& request, int samples_asked,
+                      const RenderOptions& options, const Aovs& aovs, const Frame& frame,
+                      const std::filesystem::path& output) {
     fmt::print("render_ms {:.1f}\n", frame.render_ms);
     fmt::print("hits {}\n", frame.hits);
     fmt::print("samples_per_pixel {}\n", frame.samples);
-    if (options.time_limit && frame.samples < request.samples * Cluster::current().size()) {
+    if (options.time_limit && frame.samples < samples_asked) {
         spdlog::info("--time-limit {:g} s reached after {} of {} samples per pixel",
-                     *options.time_limit, frame.samples,
-                     request.samples * Cluster::current().size());
+                     *options.time_limit, frame.samples, samples_asked);
     }
     fmt::print("samples_per_second {:.0f}\n", double(frame.samples) * request.width *
                                                   request.height /
@@ -321,50 +315,40 @@ void render_to_file(const Scene& scene, const FrameRequest& request, const Compu
         };
     }
     const Frame frame = render_still(scene, reported, device, cache, job.settings);
-    report_and_write(scene, reported, options, job.aovs, frame, output);
+    report_and_write(scene, reported, reported.samples, options, job.aovs, frame, output);
 }
 
-// A path-traced still under MPI: every rank renders the whole image with a seed of its own (the
-// job's --seed plus the task number), and rank 0 adds the frames up in task order with their
-// sample counts: N ranks give N times the samples, the same estimator as one long render, and the
-// same image run to run.
+// A still whose samples differ with the seed, under MPI: shared out by seed, a task a rank
+// (distributed/seed_split.hpp).
 int render_samples_across_ranks(Cluster& cluster, const Scene& scene, const FrameRequest& request,
                                 const ComputeDevice& device, ProgramCache& cache,
                                 const RenderOptions& options) {
     const StillJob job = still_job(scene, request, options);
-    std::vector<int64_t> seeds(size_t(cluster.size()));
-    std::iota(seeds.begin(), seeds.end(), 0);
-    const TaskWork work = [&](int64_t task) {
-        FrameRequest part = job.request;
-        part.path.seed = job.request.path.seed + static_cast<uint32_t>(task);
+    const SeedSplit split = split_by_seed(job.request, job.settings.mode, cluster.size());
+    const auto render = [&](FrameRequest part) {
         if (options.time_limit) part.enough = deadline_after(*options.time_limit);
-        return frame_to_bytes(render_still(scene, part, device, cache, job.settings));
+        return render_still(scene, part, device, cache, job.settings);
     };
-    Frame merged;
+    FarmFrameDispatch dispatch(cluster);
     const auto started = std::chrono::steady_clock::now();
-    InTaskOrder in_seed_order([&](int64_t, std::vector<uint8_t>&& bytes) {
-        add_samples(merged, frame_from_bytes(bytes));
-    });
-    const ResultSink add = [&](int64_t task, std::vector<uint8_t>&& bytes) {
-        in_seed_order.add(task, std::move(bytes));
-    };
-    const FarmOutcome outcome = run_farm(cluster, seeds, work, add);
-    if (!cluster.coordinator()) return 0;
-    merged.render_ms = elapsed_ms(started);
-    merged.image = display_image(scene, request.params, merged.linear, merged.image.width,
-                                 merged.image.height);
-    fmt::print("seeds {} to {} (one a rank)\n", job.request.path.seed,
-               job.request.path.seed + uint32_t(cluster.size() - 1));
-    report_and_write(scene, job.request, options, job.aovs, merged, options.output);
-    print_mpi_figures(cluster, outcome);
+    std::optional<Frame> merged = render_by_seed(split, job.request, render, dispatch);
+    if (!merged) return 0;
+    merged->render_ms = elapsed_ms(started);
+    merged->image = display_image(scene, request.params, merged->linear, merged->image.width,
+                                  merged->image.height);
+    fmt::print("seeds {} to {} (one a rank)\n", split.first_seed, split.last_seed());
+    report_and_write(scene, job.request, split.samples(), options, job.aovs, *merged,
+                     options.output);
+    print_mpi_figures(cluster, dispatch.outcome());
     return 0;
 }
 
-// `fgr render` under mpirun: path-traced stills by seeds, everything else in tiles.
+// `fgr render` under mpirun: stills whose samples differ with the seed (path-traced ones) by seed,
+// everything else in tiles.
 int render_across_ranks(Cluster& cluster, const Scene& scene, const FrameRequest& request,
                         const ComputeDevice& device, ProgramCache& cache,
                         const RenderOptions& options) {
-    if (chosen_mode(options.mode, scene) == RenderMode::Path && !tiled_render_wanted(options)) {
+    if (sample_budget(chosen_mode(options.mode, scene)).seeded && !tiled_render_wanted(options)) {
         if (options.stats)
             throw UsageError("--stats is for renders of one process (without mpirun)");
         return render_samples_across_ranks(cluster, scene, request, device, cache, options);
@@ -430,10 +414,15 @@ void add_frame_options(CLI::App* command, RenderOptions& options, int max_side) 
                         "(see `fgr list`); the same as --set colour_mode=MODE");
     command
         ->add_option("--spp", options.samples,
-                     "samples per pixel, jittered and averaged: anti-aliasing, depth of field, "
-                     "and the path tracer's estimate (default 1; 64 with --mode path); with "
-                     "--mode brute, passes of sampling along each ray (default 16)")
-        ->check(CLI::Range(1, kMaxSamples));
+                     fmt::format("samples per pixel, jittered and averaged: anti-aliasing, depth "
+                                 "of field, and the path tracer's estimate (default {}; {} with "
+                                 "--mode path); with --mode brute, {} of sampling along each "
+                                 "ray (default {})",
+                                 sample_budget(RenderMode::Shaded).still,
+                                 sample_budget(RenderMode::Path).still,
+                                 sample_budget(RenderMode::Brute).unit,
+                                 sample_budget(RenderMode::Brute).still))
+        ->check(CLI::Range(kMinSamples, kMaxSamples));
     command
         ->add_option("--bit-depth", options.bit_depth,
                      "8: tone-mapped sRGB PNG (default); 16: linear 16-bit PNG (exposure only)")

@@ -1,6 +1,7 @@
 // fgr video: a scene's camera path rendered frame by frame and encoded in-process (FFmpeg's
 // libraries) into a video file, and/or written as a PNG or EXR frame sequence. Frame i is
-// `fgr render --camera-path P --time t` at t = start + i / fps with the same options.
+// `fgr render --camera-path P --time t` at t = start + i / fps with the same options. The frame
+// loop is output/video/video_render.hpp's; here are the options, their checks and the report.
 #include <fmt/format.h>
 #include <spdlog/spdlog.h>
 #include <unistd.h>
@@ -9,23 +10,22 @@
 #include <chrono>
 #include <csignal>
 #include <filesystem>
-#include <numeric>
 #include <optional>
 #include <regex>
 #include <string>
+#include <tuple>
 #include <utility>
 #include <vector>
 
 #include "camera/camera.hpp"
-#include "camera/view_validation.hpp"
 #include "cli/progress.hpp"
 #include "commands.hpp"
 #include "device/program_cache.hpp"
 #include "distributed/cluster.hpp"
-#include "distributed/frame_wire.hpp"
-#include "distributed/task_farm.hpp"
+#include "distributed/frame_farm.hpp"
 #include "output/video/video_encoder.hpp"
 #include "output/video/video_frames.hpp"
+#include "output/video/video_render.hpp"
 #include "output/video/video_timing.hpp"
 #include "util/timing.hpp"
 
@@ -140,25 +140,6 @@ void check_video_options(const VideoOptions& options) {
     }
 }
 
-// The view at each frame's time, each one checked as `fgr render --time` checks its one.
-std::vector<CameraView> frame_views(const CameraPath& path, const VideoTiming& timing) {
-    std::vector<CameraView> views;
-    for (int i = 0; i < timing.frame_count(); ++i) {
-        const float time = timing.frame_time(i);
-        views.push_back(evaluate_camera_path(path, time));
-        if (const std::string problem = computed_view_problem(views.back()); !problem.empty()) {
-            throw UsageError(
-                fmt::format("camera path '{}' at time {}: {}", path.name, time, problem));
-        }
-    }
-    return views;
-}
-
-std::filesystem::path frame_file(const VideoOptions& options, int index) {
-    return std::filesystem::path(options.frames_directory) /
-           fmt::format("frame_{:05}.{}", index, options.frames_format);
-}
-
 }  // namespace
 
 void add_video_command(CLI::App& app, VideoOptions& options) {
@@ -202,121 +183,72 @@ int command_video(const VideoOptions& options) {
         with_kernel_source(scene_as_used(find_scene(found, frame_options.scene), frame_options.dev),
                            frame_options.kernel_source);
     const CameraPath path = find_camera_path(scene, *frame_options.camera_path);
-    VideoTiming timing;
+    VideoFrames frames;
     try {
-        timing = video_timing(path, options.fps, options.start, options.duration);
+        frames.timing = video_timing(path, options.fps, options.start, options.duration);
+        frames.views = frame_views(path, frames.timing);
     } catch (const std::invalid_argument& error) {
         throw UsageError(error.what());
     }
-    const std::vector<CameraView> views = frame_views(path, timing);
-    const auto [first_frame, last_frame] = frames_to_render(options, timing.frame_count());
-    StillJob job = still_job(scene, scene_request(scene, frame_options), frame_options);
+    const VideoTiming& timing = frames.timing;
+    std::tie(frames.first, frames.last) = frames_to_render(options, timing.frame_count());
+    const StillJob job = still_job(scene, scene_request(scene, frame_options), frame_options);
     const ComputeDevice device = open_requested_device(frame_options.device);
     ProgramCache cache(ProgramCache::default_directory());
     VideoFrameRenderer renderer(scene, device, cache, job.settings);
     // From every view of the video, so a frame range renders its frames as the whole video does.
-    const bool in_double = renderer.choose_precision(views, job.request.width, job.request.params);
+    const bool in_double =
+        renderer.choose_precision(frames.views, job.request.width, job.request.params);
 
-    InterruptGuard interrupt_guard;
-    job.request.cancel = [] { return interrupted != 0; };
-    const bool keep_planes = !options.frames_directory.empty();
-    // Any rank renders any frame (distributed/task_farm.hpp); what travels is what rank 0
-    // writes: the display image, and the planes too when it writes frame files.
-    const TaskWork work = [&](int64_t index) {
-        FrameRequest request = job.request;
-        request.view = views[size_t(index)];
-        Frame frame = renderer.render(request);
-        if (interrupted) throw RuntimeFailure("interrupted: no video written");
-        if (keep_planes) return frame_to_bytes(frame);
-        Frame image_only;
-        image_only.image = std::move(frame.image);
-        return frame_to_bytes(image_only);
-    };
+    VideoOutput output;
+    output.file = options.output;
+    output.encoding = VideoSettings{options.codec, job.request.width, job.request.height,
+                                    options.fps, options.crf};
+    output.frames_directory = options.frames_directory;
+    output.frames_format = options.frames_format;
+    output.still =
+        StillOutput{frame_options.bit_depth, display_transform(scene, job.request.params),
+                    frame_options.alpha, job.aovs};
+
     Cluster& cluster = Cluster::current();
-    if (!cluster.coordinator()) {
-        run_farm(cluster, {}, work, {});
-        return 0;
-    }
-    std::optional<VideoEncoder> encoder;
+    InterruptGuard interrupt_guard;
+    std::optional<ProgressLine> progress;
+    std::chrono::steady_clock::time_point started;
+    VideoHooks hooks;
+    hooks.interrupted = [] { return interrupted != 0; };
+    hooks.started = [&](const std::string& encoder) {
+        spdlog::info("{} frames at {:g} fps: path time {:g} to {:g} s, {}{}{}", frames.views.size(),
+                     timing.fps, timing.start, timing.frame_time(timing.frame_count() - 1),
+                     in_double ? "double" : "float", encoder.empty() ? "" : ", encoding " + encoder,
+                     cluster.alone() ? "" : fmt::format(", over {} MPI ranks", cluster.size()));
+        if (options.frame_range) {
+            spdlog::info("rendering frames {} to {} ({} of {})", frames.first, frames.last,
+                         frames.count(), frames.views.size());
+        }
+        progress.emplace("frames");
+        started = std::chrono::steady_clock::now();
+    };
+    hooks.frame_written = [&](long done) {
+        const double seconds = seconds_since(started);
+        progress->update(done, frames.count(), done, seconds,
+                         fmt::format("{:.2f} fps", seconds > 0.0 ? double(done) / seconds : 0.0));
+    };
+    hooks.stopped = [&] { progress->finish(); };
+    FarmFrameDispatch dispatch(cluster);
+    const VideoResult result = render_video(
+        frames, job.request, [&](const FrameRequest& request) { return renderer.render(request); },
+        output, dispatch, hooks);
+    if (!result.wrote) return 0;
     if (!options.output.empty()) {
-        encoder.emplace(options.output,
-                        VideoSettings{options.codec, job.request.width, job.request.height,
-                                      options.fps, options.crf});
+        fmt::print("wrote {} ({} frames, {}x{}, {:g} fps, {})\n", options.output,
+                   frames.views.size(), job.request.width, job.request.height, timing.fps,
+                   result.encoder);
     }
     if (!options.frames_directory.empty()) {
-        std::error_code error;
-        std::filesystem::create_directories(options.frames_directory, error);
-        if (error) {
-            throw RuntimeFailure(fmt::format("cannot create directory '{}': {}",
-                                             options.frames_directory, error.message()));
-        }
-    }
-    spdlog::info("{} frames at {:g} fps: path time {:g} to {:g} s, {}{}{}", views.size(),
-                 timing.fps, timing.start, timing.frame_time(timing.frame_count() - 1),
-                 in_double ? "double" : "float",
-                 encoder ? ", encoding " + encoder->description() : "",
-                 cluster.alone() ? "" : fmt::format(", over {} MPI ranks", cluster.size()));
-    const long total_frames = last_frame - first_frame + 1;
-    if (options.frame_range) {
-        spdlog::info("rendering frames {} to {} ({} of {})", first_frame, last_frame, total_frames,
-                     views.size());
-    }
-    ProgressLine progress("frames");
-    const auto started = std::chrono::steady_clock::now();
-    const auto write_frame = [&](const Frame& frame, int64_t index) {
-        if (encoder) encoder->add_frame(frame.image);
-        if (!options.frames_directory.empty()) {
-            try {
-                write_still(frame_file(options, static_cast<int>(index)), frame,
-                            StillOutput{frame_options.bit_depth,
-                                        display_transform(scene, job.request.params),
-                                        frame_options.alpha, job.aovs});
-            } catch (const std::runtime_error& error) {
-                throw RuntimeFailure(error.what());
-            }
-        }
-    };
-    // Frames go into the file in order, whichever rank finished first.
-    InTaskOrder in_order(
-        [&](int64_t index, std::vector<uint8_t>&& bytes) {
-            write_frame(frame_from_bytes(bytes), index);
-            const long done = static_cast<long>(index) - first_frame + 1;
-            const double seconds = seconds_since(started);
-            progress.update(
-                done, total_frames, done, seconds,
-                fmt::format("{:.2f} fps", seconds > 0.0 ? double(done) / seconds : 0.0));
-        },
-        first_frame);
-    const ResultSink collect = [&](int64_t index, std::vector<uint8_t>&& bytes) {
-        in_order.add(index, std::move(bytes));
-    };
-    std::vector<int64_t> frames(static_cast<size_t>(total_frames));
-    std::iota(frames.begin(), frames.end(), int64_t(first_frame));
-    FarmSettings farm;
-    farm.interrupted = [] { return interrupted != 0; };
-    FarmOutcome outcome;
-    try {
-        outcome = run_farm(cluster, frames, work, collect, farm);
-    } catch (const std::runtime_error&) {
-        progress.finish();
-        if (interrupted) throw RuntimeFailure("interrupted: no video written");
-        throw;
-    }
-    if (!outcome.finished) {
-        progress.finish();
-        throw RuntimeFailure("interrupted: no video written");
-    }
-    progress.finish();
-    if (encoder) {
-        encoder->finish();
-        fmt::print("wrote {} ({} frames, {}x{}, {:g} fps, {})\n", options.output, views.size(),
-                   job.request.width, job.request.height, timing.fps, encoder->description());
-    }
-    if (!options.frames_directory.empty()) {
-        fmt::print("wrote {} frames ({} to {}) to {}\n", total_frames, first_frame, last_frame,
+        fmt::print("wrote {} frames ({} to {}) to {}\n", frames.count(), frames.first, frames.last,
                    options.frames_directory);
     }
-    if (!cluster.alone()) print_mpi_figures(cluster, outcome);
+    if (!cluster.alone()) print_mpi_figures(cluster, dispatch.outcome());
     return 0;
 }
 

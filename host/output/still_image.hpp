@@ -26,11 +26,6 @@ struct StillSettings {
     bool aovs = false;  // also render alpha, albedo and normal (KernelSwitches::aovs)
 };
 
-// Samples per pixel a path-traced still takes unless told otherwise.
-constexpr int kPathSamples = 64;
-// Passes a brute-force still takes unless told otherwise.
-constexpr int kBrutePasses = 16;
-
 // "albedo,normal,depth,alpha" (any subset, any order; "" for none). Throws std::invalid_argument
 // naming an unknown layer.
 Aovs parse_aovs(std::string_view list);

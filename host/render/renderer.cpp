@@ -23,6 +23,7 @@
 #include "render/camera_frame.hpp"
 #include "render/modes/mode_kernel.hpp"
 #include "render/prepass/cone_prepass.hpp"
+#include "render/sample_budget.hpp"
 #include "scene/parameters.hpp"
 #include "util/parallel_bands.hpp"
 #include "util/timing.hpp"
@@ -54,11 +55,10 @@ void check_size(const FrameRequest& request) {
 
 void check_request(const Scene& scene, const FrameRequest& request) {
     check_size(request);
-    if (request.samples < 1 || request.samples > kMaxSamples) {
-        throw std::invalid_argument("samples per pixel must be between 1 and 4096");
-    }
+    check_samples(request.samples);
     if (request.first_sample < 0 || request.first_sample > kMaxSamples) {
-        throw std::invalid_argument("first sample must be between 0 and 4096");
+        throw std::invalid_argument(
+            fmt::format("first sample must be between 0 and {}", kMaxSamples));
     }
     if (request.params.size() != default_param_values(scene).size()) {
         throw std::invalid_argument("parameter buffer does not match the scene's parameters");

@@ -47,7 +47,9 @@ struct FrameRequest {
     int height = 480;
     CameraView view;
     std::vector<float> params;  // laid out as default_param_values(scene)
-    int samples = 1;            // per pixel: 1 is the pixel centre; more are jittered and averaged
+    // Per pixel: 1 is the pixel centre; more are jittered and averaged (what one is in each mode,
+    // how many a still takes and the limits: render/sample_budget.hpp).
+    int samples = 1;
     // Index of the first sample rendered: samples first_sample .. first_sample + samples - 1, so
     // a caller can accumulate one sample at a time and get the same image as one long render
     // (sample 0 is the pixel centre, later ones are jittered).
@@ -272,8 +274,5 @@ Image8 display_image(const Scene& scene, const std::vector<float>& params,
 // claims them while the device renders).
 void fill_display_image(const Scene& scene, const std::vector<float>& params,
                         const std::vector<float>& linear, Image8& image, float scale = 1.0f);
-
-// Samples per pixel fgr accepts.
-constexpr int kMaxSamples = 4096;
 
 }  // namespace fgr

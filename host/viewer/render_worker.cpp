@@ -7,6 +7,7 @@
 #include <cmath>
 #include <glm/geometric.hpp>
 
+#include "render/sample_budget.hpp"
 #include "scene/parameters.hpp"
 
 namespace fgr::viewer {
@@ -291,7 +292,8 @@ void RenderWorker::render_pass(Renderer& renderer, const ViewState& state) {
     {
         std::lock_guard lock(mutex_);
         pass = quality_.next_pass(state.interactive, accumulated_samples_,
-                                  int64_t{state.width} * state.height, mode_sample_cap(state.mode));
+                                  int64_t{state.width} * state.height,
+                                  sample_budget(state.mode).standing_view);
     }
     switch (pass.kind) {
         case RenderPass::Kind::Preview:

@@ -52,20 +52,6 @@ struct ViewState {
     bool operator==(const ViewState&) const = default;
 };
 
-// Samples per pixel the path tracer accumulates while the view stands still (the shaded mode's
-// cap is QualitySettings::sample_cap): a path-traced view keeps converging for minutes.
-constexpr int kPathSampleCap = 4096;
-// Passes the brute-force mode makes while the view stands still: each can only bring a pixel's
-// hit closer, and after a few hundred the depth buffer has settled.
-constexpr int kBrutePassCap = 256;
-
-// How many samples (passes) a still view accumulates in `mode` (0: the quality settings' cap).
-constexpr int mode_sample_cap(RenderMode mode) {
-    return mode == RenderMode::Path    ? kPathSampleCap
-           : mode == RenderMode::Brute ? kBrutePassCap
-                                       : 0;
-}
-
 struct DisplayFrame {
     Image8 image;                   // tone-mapped sRGB at the rendered size
     float scale = 1.0f;             // rendered size / full size

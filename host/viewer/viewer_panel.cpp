@@ -11,6 +11,7 @@
 #include "device/kernel_assembly.hpp"
 #include "fgr/plugin.h"
 #include "render/precision.hpp"
+#include "render/sample_budget.hpp"
 #include "scene/parameters.hpp"
 #include "scene/render_mode.hpp"
 #include "viewer/viewer_util.hpp"
@@ -76,10 +77,10 @@ void ViewerPanel::draw_overlay(const ViewReport& report) {
     ImGui::Text("%s  %dx%d", scenes_.current().id.c_str(), report.view.width, report.view.height);
     if (report.shown) {
         const bool path = report.view.mode == RenderMode::Path;
+        const int standing_view = sample_budget(report.view.mode).standing_view;
         ImGui::Text("resolution %.0f%%  samples %d/%d  frame %.0f ms  %s",
                     report.shown->scale * 100.0f, report.shown->samples,
-                    mode_sample_cap(report.view.mode) > 0 ? mode_sample_cap(report.view.mode)
-                                                          : choices_.quality.sample_cap,
+                    standing_view > 0 ? standing_view : choices_.quality.sample_cap,
                     report.shown->render_ms,
                     precision_label(choices_.precision, report.shown->double_precision));
         if (path) {

@@ -83,11 +83,12 @@ inline mask brute_target(vec3 eye, vec3 dir, float footprint, PARAMS) {
 }
 
 /* A uniform number in [0, 1) for stratum `index` of pass `pass` of pixel (px, py): the same in
- * every packet width. */
+ * every packet width. A pass draws many numbers a pixel, one a stratum, so the stratum goes into
+ * the seed beside the pass (fgr_sampler.cl's hashed numbers). */
 inline real brute_random(real px, real py, int pass, int index) {
-    ulanes seed = convert_ulanes(px) * 73856093u ^ convert_ulanes(py) * 19349663u ^
-                  (ulanes)((uint)pass * 83492791u) ^ (ulanes)((uint)(index + 1) * 2654435761u);
-    return unit_random(hash_lanes(hash_lanes(seed)));
+    const uint_lanes seed = sampler_pixel_seed(px, py, pass) ^
+                            (uint_lanes)((uint)(index + 1) * 2654435761u);
+    return sampler_hashed_unit(sampler_mix(sampler_mix(seed)));
 }
 
 /* One pass of sampling for the lanes of `active`: the new best depth (unchanged where nothing

@@ -1,4 +1,18 @@
-/* fgr kernel library: the path tracer's sample generator.
+/* fgr kernel library: sampling, where every render mode's random numbers come from. One hash
+ * (lowbias32, sampler_mix) makes them all, in two generators:
+ *
+ *   - the path tracer's sampler below, an Owen-scrambled Sobol sequence handed out one dimension
+ *     at a time;
+ *   - hashed numbers for the shaded mode's camera jitter (fgr_effects.cl) and the brute mode's
+ *     strata (fgr_mode_brute.cl): a seed from the pixel and the sample (sampler_pixel_seed),
+ *     hashed once for each number wanted (sampler_hashed_unit).
+ *
+ * They are seeded differently because they want different things. A Sobol sample must take its
+ * sample index from the sequence, never from the scramble: the scramble has to be one per pixel
+ * and dimension for every sample of the pixel to stay stratified, and it takes the render's seed
+ * so that renders with other seeds add up (SampleBudget::seeded). The hashed numbers have no
+ * sequence, so the sample's index goes into their seed, and they take no render seed. Both rules
+ * are kept as they are because every image fgr renders depends on them bit for bit.
  *
  * A sampler hands a path out its random numbers one dimension at a time (pbrt-v4's
  * Sampler::Get1D/Get2D): the camera takes the first pair (position in the pixel), the lens the
@@ -50,7 +64,7 @@ typedef struct sampler {
 } sampler;
 
 /* A well-mixed 32-bit hash (Chris Wellons' lowbias32): every input bit flips each output bit
- * with probability close to 1/2. */
+ * with probability close to 1/2. The one hash of the kernel library's random numbers. */
 #define FGR_SAMPLER_MIX(x)     \
     do {                       \
         (x) ^= (x) >> 16;      \
@@ -68,6 +82,20 @@ inline uint_lanes sampler_mix(uint_lanes x) {
 inline uint sampler_mix_uniform(uint x) {
     FGR_SAMPLER_MIX(x);
     return x;
+}
+
+/* The seed of the hashed numbers of sample (or pass) `sample` of the pixels (px, py) (integral
+ * values >= 0): the coordinates and the sample through Teschner et al.'s spatial hash, in 32-bit
+ * lanes at every precision, so float and double renders draw the same numbers. */
+inline uint_lanes sampler_pixel_seed(real px, real py, int sample) {
+    return convert_uint_lanes(px) * 73856093u ^ convert_uint_lanes(py) * 19349663u ^
+           (uint_lanes)((uint)sample * 83492791u);
+}
+
+/* A hashed number in [0, 1): the hash's top 24 bits, in both precisions. Unlike sampler_to_real
+ * it keeps 24 bits in double too, so a double render's jitter and strata are a float render's. */
+inline real sampler_hashed_unit(uint_lanes hashed) {
+    return convert_real(hashed >> 8) * (1.0f / 16777216.0f);
 }
 
 /* The bits of x in reverse order (bit 0 becomes bit 31). */

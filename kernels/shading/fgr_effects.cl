@@ -2,27 +2,10 @@
  * (anti-aliasing jitter, thin-lens depth of field). Each effect exists only when its switch is
  * compiled in; sampling is always available because the sample count is a runtime choice. */
 
-/* A well-mixed 32-bit hash (Chris Wellons' lowbias32) per lane. With double lanes `ulanes` is
- * 64 bits wide, so products are cut back to 32 bits: the same numbers as in float, and
- * unit_random's 24 bits stay in [0, 1). (For uint lanes the masks are no-ops.) */
-inline ulanes hash_lanes(ulanes x) {
-    x &= 0xffffffffu;
-    x ^= x >> 16;
-    x = (x * 0x7feb352du) & 0xffffffffu;
-    x ^= x >> 15;
-    x = (x * 0x846ca68bu) & 0xffffffffu;
-    x ^= x >> 16;
-    return x;
-}
-
-/* A uniform number in [0, 1) per lane from a hash. */
-inline real unit_random(ulanes hashed) {
-    return convert_real(hashed >> 8) * (1.0f / 16777216.0f);
-}
-
 /* Where in the pixel, and where on the lens, sample `sample` of pixel (px, py) goes: sample 0 is
  * the pixel's centre through the lens centre (so one sample renders exactly the un-jittered
- * image); later samples are uniformly random, independent per pixel. */
+ * image); later samples are uniformly random, independent per pixel (fgr_sampler.cl's hashed
+ * numbers). */
 typedef struct camera_sample {
     real pixel_x, pixel_y; /* offset in the pixel, [0, 1) */
     real lens_x, lens_y;   /* point on the unit disc */
@@ -35,14 +18,13 @@ inline camera_sample sample_camera(real px, real py, int sample) {
         s.lens_x = s.lens_y = fgr_real(0.0f);
         return s;
     }
-    ulanes seed = convert_ulanes(px) * 73856093u ^ convert_ulanes(py) * 19349663u ^
-                  (ulanes)((uint)sample * 83492791u);
-    ulanes h1 = hash_lanes(seed), h2 = hash_lanes(h1), h3 = hash_lanes(h2), h4 = hash_lanes(h3);
-    s.pixel_x = unit_random(h1);
-    s.pixel_y = unit_random(h2);
+    const uint_lanes h1 = sampler_mix(sampler_pixel_seed(px, py, sample));
+    const uint_lanes h2 = sampler_mix(h1), h3 = sampler_mix(h2), h4 = sampler_mix(h3);
+    s.pixel_x = sampler_hashed_unit(h1);
+    s.pixel_y = sampler_hashed_unit(h2);
     /* Uniform on the disc: radius sqrt(u), angle 2 pi v. */
-    real radius = sqrt(unit_random(h3));
-    real angle = 6.28318531f * unit_random(h4);
+    real radius = sqrt(sampler_hashed_unit(h3));
+    real angle = 6.28318531f * sampler_hashed_unit(h4);
     real cos_angle = fgr_cos(angle), sin_angle = fgr_sin(angle);
     s.lens_x = radius * cos_angle;
     s.lens_y = radius * sin_angle;

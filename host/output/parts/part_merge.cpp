@@ -14,6 +14,7 @@
 #include "output/parts/render_parts.hpp"
 #include "output/tiled/row_encoder.hpp"
 #include "output/tiled/streaming_image.hpp"
+#include "render/sample_budget.hpp"
 
 namespace fgr {
 namespace {
@@ -99,7 +100,7 @@ std::vector<PartGroup> group_by_region(const std::vector<PartInfo>& parts) {
         group.region = r;
         for (size_t other : group.parts) {
             if (parts[other].seed != parts[i].seed) continue;
-            if (parts[i].mode != "path") {
+            if (!seeded_samples(parts[i].mode)) {
                 throw std::invalid_argument(fmt::format(
                     "{} and '{}' render the same pixels in the {} mode, which repeats its "
                     "samples: only --mode path renders independent samples (--seed S)",

@@ -20,16 +20,19 @@ std::span<const KernelFile> kernel_prelude();
 // (shared/fgr_layout_*.h). After the scene's source, so a scene sees none of it; before
 // everything that uses it.
 std::span<const KernelFile> kernel_layout();
-// Marching, shading, the camera and the probe kernels, which call the scene's functions.
+// Marching, shading, sampling (fgr_sampler.cl: every mode's random numbers), the camera and the
+// probe kernels, which call the scene's functions.
 std::span<const KernelFile> kernel_postlude();
 
 // What render mode `mode` ("shaded", "path") adds after the postlude, ending with its file
 // fgr_mode_<mode>.cl and its entry point fgr_render; empty for an unknown mode.
 std::span<const KernelFile> mode_files(std::string_view mode);
 
-// What the path tracer adds after the postlude: the sample generator (fgr_sampler.cl) and the
-// environment's lookup and importance sampling (fgr_environment.cl). Each needs only the
-// prelude's types and maths; materials and their BSDFs (fgr_bsdf.cl) are in the prelude.
+// What the path tracer builds on beyond the prelude, for tests that build it without a scene: the
+// sample generator (fgr_sampler.cl, which a scene's program has in its postlude) and the
+// environment's lookup and importance sampling (fgr_environment.cl, which the path mode adds after
+// the postlude). Each needs only the prelude's types and maths; materials and their BSDFs
+// (fgr_bsdf.cl) are in the prelude.
 std::span<const KernelFile> path_library();
 
 // The formula library's families (formulas/<family>.cl: bulbs, hypercomplex, boxes, kifs,
