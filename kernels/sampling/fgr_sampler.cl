@@ -3,9 +3,9 @@
  *
  *   - the path tracer's sampler below, an Owen-scrambled Sobol sequence handed out one dimension
  *     at a time;
- *   - hashed numbers for the shaded mode's camera jitter (fgr_effects.cl) and the brute mode's
- *     strata (fgr_mode_brute.cl): a seed from the pixel and the sample (sampler_pixel_seed),
- *     hashed once for each number wanted (sampler_hashed_unit).
+ *   - hashed numbers for the camera's jitter and lens (sample_camera, at the end) and the brute
+ *     mode's strata (fgr_mode_brute.cl): a seed from the pixel and the sample
+ *     (sampler_pixel_seed), hashed once for each number wanted (sampler_hashed_unit).
  *
  * They are seeded differently because they want different things. A Sobol sample must take its
  * sample index from the sequence, never from the scramble: the scramble has to be one per pixel
@@ -202,4 +202,35 @@ inline real sampler_next_1d(sampler* s) {
     uint_lanes seed_x, seed_y;
     const uint_lanes index = sampler_next_slot(s, &seed_x, &seed_y);
     return sampler_to_real(sampler_reverse_bits(sampler_owen_reversed(index, seed_x)));
+}
+
+/* --- The camera's sampling: anti-aliasing jitter and thin-lens depth of field, in every mode.
+ * Always compiled: the sample count is a runtime choice. */
+
+/* Where in the pixel, and where on the lens, sample `sample` of pixel (px, py) goes: sample 0 is
+ * the pixel's centre through the lens centre (so one sample renders exactly the un-jittered
+ * image); later samples are uniformly random, independent per pixel (the hashed numbers above). */
+typedef struct camera_sample {
+    real pixel_x, pixel_y; /* offset in the pixel, [0, 1) */
+    real lens_x, lens_y;   /* point on the unit disc */
+} camera_sample;
+
+inline camera_sample sample_camera(real px, real py, int sample) {
+    camera_sample s;
+    if (sample == 0) {
+        s.pixel_x = s.pixel_y = fgr_real(0.5f);
+        s.lens_x = s.lens_y = fgr_real(0.0f);
+        return s;
+    }
+    const uint_lanes h1 = sampler_mix(sampler_pixel_seed(px, py, sample));
+    const uint_lanes h2 = sampler_mix(h1), h3 = sampler_mix(h2), h4 = sampler_mix(h3);
+    s.pixel_x = sampler_hashed_unit(h1);
+    s.pixel_y = sampler_hashed_unit(h2);
+    /* Uniform on the disc: radius sqrt(u), angle 2 pi v. */
+    real radius = sqrt(sampler_hashed_unit(h3));
+    real angle = 6.28318531f * sampler_hashed_unit(h4);
+    real cos_angle = fgr_cos(angle), sin_angle = fgr_sin(angle);
+    s.lens_x = radius * cos_angle;
+    s.lens_y = radius * sin_angle;
+    return s;
 }
