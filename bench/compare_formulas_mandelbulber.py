@@ -12,7 +12,7 @@ the disagreement (white both, red Mandelbulber only, cyan fgr only) land in
 bench/results/mandelbulber/ID_diff.png, all of them at half size in silhouettes.png.
 
 --fixtures also writes Mandelbulber's silhouettes at 320x240 into tests/fixtures/mandelbulber/
-(ID.png), which tests/test_mandelbulber.cpp compares fgr's renders with in CI (no Mandelbulber
+(ID.png), which tests/scene/test_mandelbulber.cpp compares fgr's renders with in CI (no Mandelbulber
 needed there). Needs mandelbulber2 (Debian's package; installed if missing when run as root) and
 a built fgr (build/bin/fgr)."""
 import argparse

@@ -8,7 +8,7 @@ A pixel is in a render's silhouette when its alpha is over half: fgr's `--alpha`
 Mandelbulber's `--format png16alpha` (alpha 0 where the ray reached the background). The
 intersection over union is |A and B| / |A or B|. --diff writes a picture of the disagreement (RGB):
 white both, red only A, cyan only B, black neither. --mask writes the silhouette as an 8-bit RGBA
-PNG (white and opaque inside, black and clear outside): the fixtures tests/test_mandelbulber.cpp
+PNG (white and opaque inside, black and clear outside): the fixtures tests/scene/test_mandelbulber.cpp
 compares fgr with.
 
 Standard library only (png_io.py): reads non-interlaced 8- and 16-bit grey+alpha and RGBA

@@ -1,7 +1,7 @@
 # The host refuses a shared layout header edited on its own: a copy of kernels/shared with two of
 # camera_frame's fields traded must fail host/device/kernel_layout.hpp's static_asserts, and the
 # unchanged copy must compile (so the refusal is the edit's). The device's side of the same edit
-# is DeviceLayout.AMutatedHeaderIsCaught (tests/test_device_layout.cpp).
+# is DeviceLayout.AMutatedHeaderIsCaught (tests/device/test_device_layout.cpp).
 #   COMPILER  the C++ compiler
 #   SHARED    kernels/shared
 #   HEADER    host/device/kernel_layout.hpp

@@ -3,7 +3,7 @@
 // passed by value, the light lists' layouts, which plane holds what and each kernel argument's
 // index. Both sides compile the same headers; here the host checks that its compiler lays the
 // structs out as OpenCL C does (each field aligned to its size, a float4 to 16 bytes, a struct
-// to its largest field and padded to a multiple of it). tests/test_device_layout.cpp has the
+// to its largest field and padded to a multiple of it). tests/device/test_device_layout.cpp has the
 // device report the same figures.
 
 #include <cstddef>

@@ -1,5 +1,5 @@
 #pragma once
-// Checking any scene's numerics, as `fgr check` does and tests/test_scene_stability.cpp does for
+// Checking any scene's numerics, as `fgr check` does and tests/diagnostics/test_scene_stability.cpp does for
 // every built scene: the DE stays finite at hard points and at every parameter's extremes, it is
 // 1-Lipschitz, the march's steps never reach the surface (measured by bisection), one ray per
 // work-item renders what the packets render, and every camera and camera path sees something.
