@@ -86,9 +86,7 @@ std::pair<int, int> part_tile(const RenderOptions& options) {
 bool tiled_render_wanted(const RenderOptions& options) {
     if (options.all) return false;
     return options.tile_size || options.resume ||
-           image_format_of(options.output) == ImageFormat::Tiff || options.width > kMaxImageSide ||
-           options.height > kMaxImageSide ||
-           long(options.width) * long(options.height) > kTiledFromPixels;
+           renders_in_tiles(options.width, options.height, image_format_of(options.output));
 }
 
 void check_tiled_options(const RenderOptions& options) {
@@ -106,13 +104,10 @@ void check_tiled_options(const RenderOptions& options) {
 
 namespace {
 
-// Under MPI the tiles are the unit of work: small enough for about eight a rank, so that a slow
-// tile does not leave the others idle at the end, and no larger than a single process's.
+// Under MPI the tiles are the unit of work (tile_size_for_ranks), unless --tile-size says.
 int tile_size_for(const RenderOptions& options, int ranks) {
     if (options.tile_size) return *options.tile_size;
-    if (ranks == 1) return kDefaultTileSize;
-    const double side = std::sqrt(double(options.width) * double(options.height) / (8.0 * ranks));
-    return std::clamp(static_cast<int>(side) / 4 * 4, 64, kDefaultTileSize);
+    return tile_size_for_ranks(options.width, options.height, ranks);
 }
 
 // Rank 0 (or the one process): hands the tiles out (distributed/task_farm.hpp), places them

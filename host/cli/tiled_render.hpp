@@ -10,10 +10,8 @@
 
 namespace fgr {
 
-// Images over this many pixels render in tiles unless told otherwise; so do TIFF files, and any
-// render given --tile-size or --resume.
-constexpr long kTiledFromPixels = 4096L * 4096L;
-
+// Whether the command renders in tiles: as the still needs (renders_in_tiles), or when given
+// --tile-size or --resume.
 bool tiled_render_wanted(const RenderOptions& options);
 
 // Options a tiled render cannot honour: UsageError naming them.

@@ -465,5 +465,23 @@ TEST(TiledStillCli, BadInputIsAOneLineErrorWithNothingWritten) {
     }
 }
 
+// When a still must render in tiles: TIFF always (only the tiled writer streams it), any other
+// format past 4096x4096 pixels or 16384 a side.
+TEST(TiledPolicy, WhichStillsRenderInTiles) {
+    EXPECT_TRUE(renders_in_tiles(64, 64, ImageFormat::Tiff));
+    EXPECT_FALSE(renders_in_tiles(4096, 4096, ImageFormat::Png));
+    EXPECT_TRUE(renders_in_tiles(4097, 4096, ImageFormat::Png));
+    EXPECT_TRUE(renders_in_tiles(16385, 8, ImageFormat::Exr));
+    EXPECT_TRUE(renders_in_tiles(8, 16385, ImageFormat::Png));
+}
+
+// Shared by ranks, tiles shrink to about eight a rank, in multiples of 4 within [64, 512].
+TEST(TiledPolicy, TileSizeForRanks) {
+    EXPECT_EQ(tile_size_for_ranks(4096, 4096, 1), kDefaultTileSize);
+    EXPECT_EQ(tile_size_for_ranks(4096, 4096, 4), kDefaultTileSize);  // 724 clamped
+    EXPECT_EQ(tile_size_for_ranks(1000, 1000, 16), 88);               // sqrt(1e6 / 128) = 88.4
+    EXPECT_EQ(tile_size_for_ranks(100, 100, 8), 64);                  // 12.5 clamped up
+}
+
 }  // namespace
 }  // namespace fgr

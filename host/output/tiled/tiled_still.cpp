@@ -267,4 +267,15 @@ TiledResult render_tiled_still(Renderer& renderer, const FrameRequest& request,
     return result;
 }
 
+bool renders_in_tiles(int width, int height, ImageFormat format) {
+    return format == ImageFormat::Tiff || width > kMaxImageSide || height > kMaxImageSide ||
+           long(width) * long(height) > kTiledFromPixels;
+}
+
+int tile_size_for_ranks(int width, int height, int ranks) {
+    if (ranks <= 1) return kDefaultTileSize;
+    const double side = std::sqrt(double(width) * double(height) / (8.0 * ranks));
+    return std::clamp(static_cast<int>(side) / 4 * 4, 64, kDefaultTileSize);
+}
+
 }  // namespace fgr

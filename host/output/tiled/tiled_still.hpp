@@ -65,6 +65,18 @@ struct TilePlan {
 constexpr int kDefaultTileSize = 512;
 constexpr size_t kBandBudgetBytes = size_t{16} << 20;
 
+// Images over this many pixels render in tiles unless told otherwise.
+constexpr long kTiledFromPixels = 4096L * 4096L;
+
+// Whether a width x height still written as `format` must render in tiles: a TIFF file (only
+// the tiled writer streams it), a side over kMaxImageSide, or over kTiledFromPixels pixels.
+bool renders_in_tiles(int width, int height, ImageFormat format);
+
+// The tile side when `ranks` processes share a width x height still: about eight tiles a rank, so
+// that a slow tile does not leave the others idle at the end, a multiple of 4 in
+// [64, kDefaultTileSize]; one process takes kDefaultTileSize.
+int tile_size_for_ranks(int width, int height, int ranks);
+
 // Bands of `tile_size` rows unless a band of encoded rows (pixel_bytes each) would pass
 // kBandBudgetBytes, then fewer (a multiple of 4, at least 4); tiles of about tile_size^2 pixels.
 // Throws std::invalid_argument for a tile size that is not a multiple of 4 in [16, 8192].
