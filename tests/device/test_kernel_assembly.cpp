@@ -71,8 +71,10 @@ std::string preprocessed(const AssembledProgram& program) {
     const auto source = std::filesystem::temp_directory_path() /
                         ("fgr-assembly-" + std::to_string(::getpid()) + ".cl");
     std::ofstream(source) << program.source;
-    // The C preprocessor takes the switches' macros, not the OpenCL compiler's own options.
-    std::string macros;
+    // The C preprocessor takes the switches' macros, not the OpenCL compiler's own options, and the
+    // version macro the OpenCL compiler defines (without it the shared layouts would include their
+    // host-only headers).
+    std::string macros = "-D__OPENCL_C_VERSION__=120 ";
     std::istringstream options(program.options);
     for (std::string option; options >> option;) {
         if (option.rfind("-D", 0) == 0) macros += option + " ";
