@@ -23,6 +23,7 @@
 #include "distributed/cluster.hpp"
 #include "distributed/task_farm.hpp"
 #include "output/still_image.hpp"
+#include "render/environment.hpp"
 #include "render/path_settings.hpp"
 #include "render/precision.hpp"
 #include "scene/discovery.hpp"

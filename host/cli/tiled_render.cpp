@@ -18,10 +18,10 @@
 #include "distributed/frame_wire.hpp"
 #include "distributed/task_farm.hpp"
 #include "output/parts/render_parts.hpp"
-#include "output/still_layers.hpp"
 #include "output/tiled/streaming_image.hpp"
 #include "output/tiled/tiled_still.hpp"
 #include "render/precision.hpp"
+#include "render/renderer.hpp"
 #include "scene/parameters.hpp"
 #include "util/timing.hpp"
 

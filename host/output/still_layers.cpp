@@ -8,8 +8,6 @@
 #include <stdexcept>
 #include <string>
 
-#include "scene/parameters.hpp"
-
 namespace fgr {
 namespace {
 
@@ -65,11 +63,6 @@ uint8_t to_unorm8(float value) {
 }
 
 }  // namespace
-
-DisplayTransform display_transform(const Scene& scene, const std::vector<float>& params) {
-    return {param_value(scene, params, "exposure"),
-            static_cast<ToneMap>(param_value(scene, params, "tone_map"))};
-}
 
 RowBand whole_frame(const Frame& frame) { return {0, frame.image.height}; }
 

@@ -17,6 +17,7 @@
 #include <span>
 #include <vector>
 
+#include "image/display.hpp"
 #include "image/hdr_io.hpp"
 #include "render/renderer.hpp"
 
@@ -32,15 +33,6 @@ struct Aovs {
     // Whether the frame needs the planes KernelSwitches::aovs adds (depth is always there).
     bool need_aov_planes() const { return albedo || normal || alpha; }
 };
-
-// What the 8-bit display image does to linear colour: the scene's exposure and tone map, then
-// the sRGB curve (display_image).
-struct DisplayTransform {
-    float exposure = 1.0f;
-    ToneMap tone_map = ToneMap::Clamp;
-};
-
-DisplayTransform display_transform(const Scene& scene, const std::vector<float>& params);
 
 // Rows first_row .. first_row + rows - 1 of a frame (all of them: whole_frame).
 struct RowBand {

@@ -1,59 +1,14 @@
 #pragma once
 // What the path tracer (render mode "path") is asked to do beyond the view: how long paths run,
-// which sampling strategies it combines, and the environment that lights the scene.
+// which sampling strategies it combines, and the environment that lights the scene (chosen and
+// prepared in render/environment.hpp).
 
 #include <cstdint>
-#include <filesystem>
-#include <glm/vec3.hpp>
 #include <memory>
-#include <optional>
-#include <string>
-#include <string_view>
-#include <vector>
 
 #include "render/environment.hpp"
-#include "scene/scene.hpp"
 
 namespace fgr {
-
-enum class EnvironmentKind {
-    Sky,      // Preetham's daylight sky with its sun (the default)
-    Studio,   // fgr's generated photo studio: soft boxes in a grey room
-    Uniform,  // the same radiance from every direction (furnace tests)
-    File,     // an equirectangular .hdr or .exr
-};
-
-struct EnvironmentChoice {
-    EnvironmentKind kind = EnvironmentKind::Sky;
-    std::filesystem::path file;  // File
-    glm::vec3 radiance{1.0f};    // Uniform
-    SkySettings sky;             // Sky
-    // Sky: the sun stands where the scene's first directional light is, unless the sun's
-    // elevation or azimuth was given.
-    bool sun_from_scene = true;
-    float rotation_degrees = 0.0f;  // about the world's up axis (z)
-    float intensity = 1.0f;         // scales the environment's radiance (and its sun's)
-};
-
-// `--environment`'s value: "sky", "studio", "uniform" (radiance 1), "uniform:V" or
-// "uniform:R,G,B", or else the path of an .hdr or .exr file. Throws std::invalid_argument.
-EnvironmentChoice parse_environment(std::string_view text);
-
-// An environment ready to render with: its importance-sampling tables and, for the sky, its sun
-// (a directional light with a disc, in fgr's z-up world), which takes the place of the scene's
-// key light (its first directional light) while the scene's other lights still shine.
-struct PreparedEnvironment {
-    EnvironmentTables tables;
-    std::optional<SunDisc> sun;
-    float rotation_degrees = 0.0f;
-    float intensity = 1.0f;
-    float mean_luminance = 0.0f;  // over the sphere, intensity applied: its share of light picks
-    std::string description;      // one line for logs, e.g. "sky (turbidity 3, sun 35 deg up)"
-};
-
-// Generates or loads the environment (throws std::runtime_error naming a bad file).
-std::shared_ptr<const PreparedEnvironment> prepare_environment(const EnvironmentChoice& choice,
-                                                               const Scene& scene);
 
 struct PathSettings {
     int max_bounces = 8;          // scattering events after the camera ray, at most

@@ -13,6 +13,7 @@
 #include "device/kernel_assembly.hpp"
 #include "device/opencl_device.hpp"
 #include "device/program_cache.hpp"
+#include "image/display.hpp"
 #include "image/image_io.hpp"
 #include "render/path_settings.hpp"
 #include "scene/scene.hpp"
@@ -253,26 +254,16 @@ struct TileLayout {
 };
 TileLayout tile_layout(int packet_width, int width, int height);
 
-// Linear [0, 1] to 8-bit sRGB (values outside are clamped, NaN becomes 0).
-uint8_t encode_srgb(float linear);
-
 // The frame's linear colour times `exposure`, clamped to [0, 1], at 16 bits: scene-referred output
 // for compositing or grading elsewhere (no tone mapping, no sRGB curve).
 Image16 linear_image16(const Frame& frame, float exposure);
 
-enum class ToneMap { Clamp = 0, Reinhard = 1, Aces = 2 };
+// The scene's display transform (image/display.hpp): its `exposure` and `tone_map` parameters.
+DisplayTransform display_transform(const Scene& scene, const std::vector<float>& params);
 
-// Scene-referred linear value (after exposure) to display-referred [0, 1]: clamp, Reinhard's
-// x / (1 + x), or Narkowicz's fit of the ACES filmic curve.
-float tone_map(float linear, ToneMap op);
-
-// Linear RGB rows (times `scale`, e.g. 1 / samples for a sum) to what a screen shows: the scene's
-// `exposure`, its `tone_map`, then the sRGB curve.
+// Linear RGB rows (times `scale`, e.g. 1 / samples for a sum) to what a screen shows through the
+// scene's display transform.
 Image8 display_image(const Scene& scene, const std::vector<float>& params,
                      const std::vector<float>& linear, int width, int height, float scale = 1.0f);
-// display_image into `image`, whose width, height and bytes are already sized (the renderer
-// claims them while the device renders).
-void fill_display_image(const Scene& scene, const std::vector<float>& params,
-                        const std::vector<float>& linear, Image8& image, float scale = 1.0f);
 
 }  // namespace fgr

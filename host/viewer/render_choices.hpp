@@ -8,6 +8,7 @@
 #include <string>
 
 #include "camera/projection.hpp"
+#include "render/environment.hpp"
 #include "render/path_settings.hpp"
 #include "render/precision.hpp"
 #include "scene/render_mode.hpp"

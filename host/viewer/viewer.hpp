@@ -9,6 +9,7 @@
 
 #include "camera/projection.hpp"
 #include "camera/view_override.hpp"
+#include "render/environment.hpp"
 #include "render/path_settings.hpp"
 #include "render/precision.hpp"
 #include "scene/render_mode.hpp"

@@ -22,6 +22,7 @@
 #include "child_process.hpp"
 #include "device/program_cache.hpp"
 #include "device_suite.hpp"
+#include "image/display.hpp"
 #include "image/image_io.hpp"
 #include "output/still_image.hpp"
 #include "output/still_layers.hpp"

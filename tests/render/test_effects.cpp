@@ -20,6 +20,7 @@
 #include "device/program_cache.hpp"
 #include "device_suite.hpp"
 #include "fgr/plugin.h"
+#include "image/display.hpp"
 #include "render/renderer.hpp"
 #include "scene/parameters.hpp"
 #include "test_scenes.hpp"

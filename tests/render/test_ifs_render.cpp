@@ -14,7 +14,7 @@
 #include "device/opencl_device.hpp"
 #include "device/program_cache.hpp"
 #include "fgr/plugin.h"
-#include "render/path_settings.hpp"
+#include "render/environment.hpp"
 #include "render/renderer.hpp"
 #include "scene/ifs/ifs.hpp"
 #include "scene/parameters.hpp"

@@ -17,6 +17,7 @@
 
 #include "device/opencl_device.hpp"
 #include "device/program_cache.hpp"
+#include "render/environment.hpp"
 #include "render/path_settings.hpp"
 #include "render/renderer.hpp"
 #include "scene/parameters.hpp"

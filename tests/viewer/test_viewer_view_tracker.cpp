@@ -10,7 +10,7 @@
 #include <utility>
 #include <vector>
 
-#include "render/path_settings.hpp"
+#include "render/environment.hpp"
 #include "scene/scene.hpp"
 #include "viewer/render_worker.hpp"
 #include "viewer/view_tracker.hpp"

@@ -9,6 +9,7 @@
 #include <stdexcept>
 #include <tuple>
 
+#include "image/display.hpp"
 #include "output/parts/frame_merge.hpp"
 #include "output/parts/part_file.hpp"
 #include "output/parts/render_parts.hpp"

@@ -8,7 +8,7 @@
 #include <utility>
 #include <vector>
 
-#include "output/still_layers.hpp"
+#include "image/display.hpp"
 #include "render/renderer.hpp"
 
 namespace fgr {

@@ -23,7 +23,7 @@
 #include <utility>
 #include <vector>
 
-#include "output/still_layers.hpp"
+#include "image/display.hpp"
 #include "output/tiled/tiled_still.hpp"
 #include "render/renderer.hpp"
 
