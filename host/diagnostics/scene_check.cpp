@@ -1,7 +1,7 @@
 // The checks of `fgr check` (diagnostics/scene_check.hpp). Each one measures, keeps the first
 // problem it meets (and how many there were) and turns the measurement into advice for the scene's
-// author. The tolerances are those of tests/diagnostics/test_scene_stability.cpp, which runs these same
-// functions on every built scene; each check's comment says why its tolerance is what it is.
+// author. The tolerances are those of tests/diagnostics/test_scene_stability.cpp, which runs these
+// same functions on every built scene; each check's comment says why its tolerance is what it is.
 #include "diagnostics/scene_check.hpp"
 
 #include <fmt/format.h>

@@ -1,7 +1,7 @@
 #pragma once
-// Checking any scene's numerics, as `fgr check` does and tests/diagnostics/test_scene_stability.cpp does for
-// every built scene: the DE stays finite at hard points and at every parameter's extremes, it is
-// 1-Lipschitz, the march's steps never reach the surface (measured by bisection), one ray per
+// Checking any scene's numerics, as `fgr check` does and tests/diagnostics/test_scene_stability.cpp
+// does for every built scene: the DE stays finite at hard points and at every parameter's extremes,
+// it is 1-Lipschitz, the march's steps never reach the surface (measured by bisection), one ray per
 // work-item renders what the packets render, and every camera and camera path sees something.
 // Each check reports what it measured and, when it fails, what the scene's author can change.
 // Checks that need a distance estimator are skipped, with the reason, for inside-only and IFS

@@ -2,8 +2,8 @@
 // from the previous frame's depths seen from the new view. Hints must fall short of the surface the
 // new ray meets (a plane seen from a moved camera: every hint within the margin below the true
 // distance, never past it), leave holes and depth edges alone, and a preview rendered from them
-// must find what the plain march finds (the cone prepass's tolerances, tests/render/test_prepass.cpp),
-// while a wrong reprojection is caught by the same comparison.
+// must find what the plain march finds (the cone prepass's tolerances,
+// tests/render/test_prepass.cpp), while a wrong reprojection is caught by the same comparison.
 #include <fmt/format.h>
 #include <gtest/gtest.h>
 
@@ -138,8 +138,8 @@ protected:
         long pixels = 0, hit_mismatches = 0, both_hit = 0, depth_outliers = 0;
     };
 
-    // As tests/render/test_prepass.cpp's compare, without normals: the footprint's band at a cosine of
-    // 0.25 (four footprints), which the hinted frames meet on this path.
+    // As tests/render/test_prepass.cpp's compare, without normals: the footprint's band at a cosine
+    // of 0.25 (four footprints), which the hinted frames meet on this path.
     static Counts compare(const Frame& plain, const Frame& hinted, float footprint) {
         Counts counts;
         counts.pixels = static_cast<long>(plain.depth.size());
