@@ -10,7 +10,7 @@
 namespace fgr {
 namespace {
 
-constexpr int kStatsPlanes = 4;
+constexpr int kShadedStatsPlanes = 4;
 constexpr int kAovPlanes = 10;  // albedo (3), normal (3), coverage, foreground (3)
 
 // Sums the stats planes (4: steps, 5: ran out of steps, 6: secondary rays' DE evaluations per
@@ -94,7 +94,8 @@ ShadedMode::ShadedMode(const ComputeDevice& device, const Scene& scene,
 int ShadedMode::extra_planes(const KernelSwitches& switches) const {
     // With stats: steps, out of steps, secondary rays' steps, IFS heap; IFS scenes: their level;
     // with aovs: the layers.
-    return (switches.stats ? kStatsPlanes : 0) + (ifs_ ? 1 : 0) + (switches.aovs ? kAovPlanes : 0);
+    return (switches.stats ? kShadedStatsPlanes : 0) + (ifs_ ? 1 : 0) +
+           (switches.aovs ? kAovPlanes : 0);
 }
 
 void ShadedMode::bind(cl::Kernel& kernel, const FrameRequest&, const TileLayout&) {
@@ -105,7 +106,7 @@ void ShadedMode::bind(cl::Kernel& kernel, const FrameRequest&, const TileLayout&
 void ShadedMode::read_back(std::span<const float> planes, const TileLayout& layout,
                            const FrameRequest& request, int samples, Frame& frame) const {
     const int width = frame.image.width, height = frame.image.height;  // the region's
-    const int level_plane = kCommonPlanes + (stats_ ? kStatsPlanes : 0);
+    const int level_plane = kCommonPlanes + (stats_ ? kShadedStatsPlanes : 0);
     if (aovs_) {
         const int first = level_plane + (ifs_ ? 1 : 0);
         const float average = 1.0f / static_cast<float>(std::max(samples, 1));
