@@ -16,6 +16,7 @@
 #include "fgr/scene_helpers.h"
 #include "scene/description_validation.hpp"
 #include "scene/render_mode.hpp"
+#include "test_math.hpp"
 
 namespace fgr {
 namespace {
@@ -254,7 +255,7 @@ protected:
     SceneBuilder built;
 };
 
-constexpr float kNaN = std::numeric_limits<float>::quiet_NaN();
+using test::kNaN;
 
 TEST_F(CopyScene, CopiesEverything) {
     const Scene scene = expect_accepted();

@@ -20,12 +20,14 @@
 #include "output/still_image.hpp"
 #include "render/renderer.hpp"
 #include "scene/parameters.hpp"
+#include "test_math.hpp"
 #include "test_scenes.hpp"
 
 namespace fgr {
 namespace {
 
-constexpr double kPi = 3.14159265358979323846;
+using test::kPi;
+
 double radians(double degrees) { return degrees * kPi / 180.0; }
 
 // test::inline_scene's camera: eye (0, -3, 0) looking at the origin, z up. Its basis is
