@@ -464,7 +464,7 @@ HdrImage read_openexr(const fs::path& path, const std::vector<unsigned char>& by
 
 // ---- Writing ----
 
-void validate_image(const fs::path& path, const HdrImage& image) {
+void validate_hdr_image(const fs::path& path, const HdrImage& image) {
     if (image.width <= 0 || image.height <= 0) {
         fail_argument(
             path, "image is " + std::to_string(image.width) + "x" + std::to_string(image.height));
@@ -614,7 +614,7 @@ HdrImage read_hdr_image(const fs::path& file) {
 }
 
 void write_radiance_hdr(const fs::path& file, const HdrImage& image) {
-    validate_image(file, image);
+    validate_hdr_image(file, image);
     std::vector<float> values(image.rgb);
     for (std::size_t i = 0; i < values.size(); ++i) {
         if (!std::isfinite(values[i])) {

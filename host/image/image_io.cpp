@@ -25,7 +25,7 @@ namespace fs = std::filesystem;
 constexpr std::size_t kMaxReadPixels = std::size_t{1} << 28;
 constexpr std::size_t kPngSignatureBytes = 8;
 
-[[noreturn]] void fail_read(const fs::path& path, const std::string& reason) {
+[[noreturn]] void fail_png_read(const fs::path& path, const std::string& reason) {
     throw std::runtime_error("cannot read " + quoted(path) + ": " + reason);
 }
 
@@ -259,15 +259,15 @@ void write_pixels_atomically(const fs::path& path, const PngPixels& image) {
 void open_png_reader(PngReader& reader, const fs::path& path) {
     reader.file = std::fopen(path.c_str(), "rb");
     if (reader.file == nullptr) {
-        fail_read(path, errno_message(errno));
+        fail_png_read(path, errno_message(errno));
     }
     if (!has_png_signature(reader.file)) {
-        fail_read(path, "not a PNG file");
+        fail_png_read(path, "not a PNG file");
     }
     reader.png = png_create_read_struct(PNG_LIBPNG_VER_STRING, &reader.error, record_png_error,
                                         ignore_png_warning);
     if (reader.png == nullptr || (reader.info = png_create_info_struct(reader.png)) == nullptr) {
-        fail_read(path, "out of memory");
+        fail_png_read(path, "out of memory");
     }
     png_init_io(reader.png, reader.file);
     png_set_sig_bytes(reader.png, static_cast<int>(kPngSignatureBytes));
@@ -310,7 +310,7 @@ Image8 read_png(const fs::path& path) {
     Image8 image;
     std::vector<png_bytep> rows;
     if (!decode(reader, image, rows)) {
-        fail_read(path, reader.error.message);
+        fail_png_read(path, reader.error.message);
     }
     return image;
 }
@@ -322,7 +322,7 @@ PngSamples read_png_samples(const fs::path& path) {
     std::vector<uint8_t> bytes;
     std::vector<png_bytep> rows;
     if (!decode_samples(reader, image, bytes, rows)) {
-        fail_read(path, reader.error.message);
+        fail_png_read(path, reader.error.message);
     }
     const bool wide = image.bit_depth == 16;
     image.samples.resize(bytes.size() / (wide ? 2 : 1));

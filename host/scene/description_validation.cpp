@@ -93,7 +93,7 @@ struct InvalidDescription : std::runtime_error {
 };
 
 template <typename... Args>
-[[noreturn]] void fail(fmt::format_string<Args...> format, Args&&... args) {
+[[noreturn]] void reject(fmt::format_string<Args...> format, Args&&... args) {
     throw InvalidDescription(fmt::format(format, std::forward<Args>(args)...));
 }
 
@@ -101,9 +101,9 @@ template <typename... Args>
 
 // Reads a NUL-terminated string of at most max_length chars; `what` names it in messages.
 std::string bounded_string(const char* text, std::size_t max_length, std::string_view what) {
-    if (text == nullptr) fail("{} is NULL", what);
+    if (text == nullptr) reject("{} is NULL", what);
     const std::size_t length = strnlen(text, max_length + 1);
-    if (length > max_length) fail("{} longer than {} bytes", what, max_length);
+    if (length > max_length) reject("{} longer than {} bytes", what, max_length);
     return std::string(text, length);
 }
 
@@ -157,10 +157,11 @@ glm::vec3 to_vec3(const float (&values)[3]) { return {values[0], values[1], valu
 void check_header(const fgr_struct_header& header, std::size_t v1_size, std::string_view what) {
     const uint32_t major = FGR_ABI_MAJOR(header.abi_version);
     if (major != FGR_ABI_VERSION_MAJOR) {
-        fail("{} has ABI major version {}, host supports {}", what, major, FGR_ABI_VERSION_MAJOR);
+        reject("{} has ABI major version {}, host supports {}", what, major, FGR_ABI_VERSION_MAJOR);
     }
     if (header.struct_size < v1_size) {
-        fail("{} struct too small ({} bytes, ABI 1.0 needs {})", what, header.struct_size, v1_size);
+        reject("{} struct too small ({} bytes, ABI 1.0 needs {})", what, header.struct_size,
+               v1_size);
     }
 }
 
@@ -172,16 +173,16 @@ public:
     StructArray(const T* first, uint32_t count, std::size_t v1_size, std::string_view what)
         : bytes_(reinterpret_cast<const unsigned char*>(first)), count_(count) {
         if (count == 0) return;
-        if (first == nullptr) fail("{} count is {} but the array is NULL", what, count);
+        if (first == nullptr) reject("{} count is {} but the array is NULL", what, count);
         check_header(first->header, v1_size, what);
         stride_ = first->header.struct_size;
         // A stride that is not a multiple of the alignment cannot come from sizeof(); reading
         // through it would be misaligned.
-        if (stride_ % alignof(T) != 0) fail("{} struct_size {} is misaligned", what, stride_);
+        if (stride_ % alignof(T) != 0) reject("{} struct_size {} is misaligned", what, stride_);
         for (uint32_t i = 1; i < count; ++i) {
             if ((*this)[i].header.struct_size != stride_) {
-                fail("{} {} has struct_size {}, the first has {}", what, i,
-                     (*this)[i].header.struct_size, stride_);
+                reject("{} {} has struct_size {}, the first has {}", what, i,
+                       (*this)[i].header.struct_size, stride_);
             }
             check_header((*this)[i].header, v1_size, what);
         }
@@ -200,7 +201,7 @@ private:
 
 void check_count(uint32_t count, uint32_t min_count, uint32_t max_count, std::string_view what) {
     if (count < min_count || count > max_count) {
-        fail("{} count {} outside [{}, {}]", what, count, min_count, max_count);
+        reject("{} count {} outside [{}, {}]", what, count, min_count, max_count);
     }
 }
 
@@ -219,23 +220,24 @@ ParamType param_type_from(uint32_t type, const std::string& where) {
         case FGR_PARAM_COLOUR:
             return ParamType::Colour;
         default:
-            fail("{}: unknown type {}", where, type);
+            reject("{}: unknown type {}", where, type);
     }
 }
 
 void check_param_range(const ParamInfo& param, const std::string& where) {
     const int components = param_components(param.type);
     if (!std::isfinite(param.min_value) || !std::isfinite(param.max_value)) {
-        fail("{}: min/max not finite", where);
+        reject("{}: min/max not finite", where);
     }
     if (param.min_value > param.max_value) {
-        fail("{}: min {} greater than max {}", where, param.min_value, param.max_value);
+        reject("{}: min {} greater than max {}", where, param.min_value, param.max_value);
     }
     for (int i = 0; i < components; ++i) {
         const float value = param.default_value[static_cast<std::size_t>(i)];
-        if (!std::isfinite(value)) fail("{}: default not finite", where);
+        if (!std::isfinite(value)) reject("{}: default not finite", where);
         if (value < param.min_value || value > param.max_value) {
-            fail("{}: default {} outside [{}, {}]", where, value, param.min_value, param.max_value);
+            reject("{}: default {} outside [{}, {}]", where, value, param.min_value,
+                   param.max_value);
         }
     }
 }
@@ -243,25 +245,25 @@ void check_param_range(const ParamInfo& param, const std::string& where) {
 void check_int_param(const ParamInfo& param, const std::string& where) {
     if (!is_integral(param.min_value) || !is_integral(param.max_value) ||
         !is_integral(param.default_value[0])) {
-        fail("{}: int min, max and default must be integral", where);
+        reject("{}: int min, max and default must be integral", where);
     }
     if (param.choices.empty()) return;
     const double expected = double{param.max_value} - double{param.min_value} + 1.0;
     if (static_cast<double>(param.choices.size()) != expected) {
-        fail("{}: {} choices for {} values in [{}, {}]", where, param.choices.size(), expected,
-             param.min_value, param.max_value);
+        reject("{}: {} choices for {} values in [{}, {}]", where, param.choices.size(), expected,
+               param.min_value, param.max_value);
     }
     for (const std::string& choice : param.choices) {
-        if (choice.empty()) fail("{}: empty name in choices", where);
+        if (choice.empty()) reject("{}: empty name in choices", where);
     }
 }
 
 void check_bool_param(const ParamInfo& param, const std::string& where) {
     if (param.min_value != 0.0f || param.max_value != 1.0f) {
-        fail("{}: bool needs min 0 and max 1", where);
+        reject("{}: bool needs min 0 and max 1", where);
     }
     if (param.default_value[0] != 0.0f && param.default_value[0] != 1.0f) {
-        fail("{}: bool default must be 0 or 1", where);
+        reject("{}: bool default must be 0 or 1", where);
     }
 }
 
@@ -271,7 +273,7 @@ ParamInfo copy_param(const fgr_param_desc& desc, uint32_t index) {
     param.id = bounded_string(desc.id, kMaxIdLength, where + " id");
     where = fmt::format("parameter '{}'", printable(param.id));
     // No '-': the id becomes part of a C identifier (param_<id>) in the kernel.
-    if (!is_identifier(param.id, false)) fail("{}: id must match [a-z][a-z0-9_]*", where);
+    if (!is_identifier(param.id, false)) reject("{}: id must match [a-z][a-z0-9_]*", where);
     param.type = param_type_from(desc.type, where);
     param.label = optional_string(desc.label, kMaxTextLength, where + " label", param.id);
     param.group = optional_string(desc.group, kMaxTextLength, where + " group", "Scene");
@@ -284,7 +286,7 @@ ParamInfo copy_param(const fgr_param_desc& desc, uint32_t index) {
     param.default_value = {desc.default_value[0], scalar ? 0.0f : desc.default_value[1],
                            scalar ? 0.0f : desc.default_value[2]};
     if (desc.choices != nullptr) {
-        if (param.type != ParamType::Int) fail("{}: choices are only allowed on int", where);
+        if (param.type != ParamType::Int) reject("{}: choices are only allowed on int", where);
         param.choices =
             split(bounded_string(desc.choices, kMaxChoicesLength, where + " choices"), '|');
     }
@@ -303,9 +305,9 @@ std::vector<ParamInfo> copy_params(const fgr_scene_desc& desc) {
     for (uint32_t i = 0; i < array.size(); ++i) {
         ParamInfo param = copy_param(array[i], i);
         if (is_builtin_param_id(param.id)) {
-            fail("parameter '{}': id is reserved for a built-in parameter", param.id);
+            reject("parameter '{}': id is reserved for a built-in parameter", param.id);
         }
-        if (!seen_ids.insert(param.id).second) fail("parameter '{}': duplicate id", param.id);
+        if (!seen_ids.insert(param.id).second) reject("parameter '{}': duplicate id", param.id);
         params.push_back(std::move(param));
     }
     return params;
@@ -321,7 +323,7 @@ CameraView copy_view(const float (&position)[3], const float (&target)[3], const
     const CameraView view{glm::dvec3(to_vec3(position)), glm::dvec3(to_vec3(target)), to_vec3(up),
                           fov_degrees};
     if (const std::string problem = view_problem(view); !problem.empty()) {
-        fail("{}: {}", where, problem);
+        reject("{}: {}", where, problem);
     }
     return view;
 }
@@ -329,7 +331,7 @@ CameraView copy_view(const float (&position)[3], const float (&target)[3], const
 std::string copy_name(const char* name, const std::string& where) {
     std::string copy = bounded_string(name, kMaxIdLength, where + " name");
     if (!is_name(copy)) {
-        fail("{}: name '{}' {}", where, printable(copy), scene_limits::kCameraNameRule);
+        reject("{}: name '{}' {}", where, printable(copy), scene_limits::kCameraNameRule);
     }
     return copy;
 }
@@ -344,7 +346,7 @@ std::vector<NamedCamera> copy_cameras(const fgr_scene_desc& desc) {
         NamedCamera copy;
         copy.name = copy_name(camera.name, fmt::format("camera {}", i));
         const std::string where = fmt::format("camera '{}'", copy.name);
-        if (!seen_names.insert(copy.name).second) fail("{}: duplicate name", where);
+        if (!seen_names.insert(copy.name).second) reject("{}: duplicate name", where);
         copy.view = copy_view(camera.position, camera.target, camera.up, camera.fov_degrees, where);
         cameras.push_back(std::move(copy));
     }
@@ -359,9 +361,10 @@ std::vector<Keyframe> copy_keyframes(const fgr_camera_path& path, const std::str
     for (uint32_t i = 0; i < array.size(); ++i) {
         const fgr_keyframe& keyframe = array[i];
         const std::string keyframe_where = fmt::format("{} keyframe {}", where, i);
-        if (!std::isfinite(keyframe.time)) fail("{}: time not finite", keyframe_where);
+        if (!std::isfinite(keyframe.time)) reject("{}: time not finite", keyframe_where);
         if (!keyframes.empty() && !(keyframe.time > keyframes.back().time)) {
-            fail("{}: time {} not after {}", keyframe_where, keyframe.time, keyframes.back().time);
+            reject("{}: time {} not after {}", keyframe_where, keyframe.time,
+                   keyframes.back().time);
         }
         keyframes.push_back(
             {keyframe.time, copy_view(keyframe.position, keyframe.target, keyframe.up,
@@ -380,7 +383,7 @@ std::vector<CameraPath> copy_camera_paths(const fgr_scene_desc& desc) {
         CameraPath copy;
         copy.name = copy_name(array[i].name, fmt::format("camera path {}", i));
         const std::string where = fmt::format("camera path '{}'", copy.name);
-        if (!seen_names.insert(copy.name).second) fail("{}: duplicate name", where);
+        if (!seen_names.insert(copy.name).second) reject("{}: duplicate name", where);
         copy.keyframes = copy_keyframes(array[i], where);
         paths.push_back(std::move(copy));
     }
@@ -395,8 +398,8 @@ float copy_angular_radius(const fgr_light& light, const std::string& where) {
     if (light.header.struct_size < kV1_2LightSize) return 0.0f;
     const float degrees = light.angular_radius_degrees;
     if (!(degrees >= 0.0f && degrees <= kMaxAngularRadiusDegrees)) {
-        fail("{}: angular_radius_degrees {} outside [0, {}]", where, degrees,
-             kMaxAngularRadiusDegrees);
+        reject("{}: angular_radius_degrees {} outside [0, {}]", where, degrees,
+               kMaxAngularRadiusDegrees);
     }
     if (light.type != FGR_LIGHT_DIRECTIONAL) return 0.0f;
     return static_cast<float>(double{degrees} * (std::numbers::pi / 180.0));
@@ -405,11 +408,11 @@ float copy_angular_radius(const fgr_light& light, const std::string& where) {
 Light copy_light(const fgr_light& light, uint32_t index) {
     const std::string where = fmt::format("light {}", index);
     if (light.type != FGR_LIGHT_DIRECTIONAL && light.type != FGR_LIGHT_POINT) {
-        fail("{}: unknown type {}", where, light.type);
+        reject("{}: unknown type {}", where, light.type);
     }
     if (!all_finite(light.vector, 3) || !all_finite(light.colour, 3) ||
         !std::isfinite(light.intensity)) {
-        fail("{}: numbers not finite", where);
+        reject("{}: numbers not finite", where);
     }
     Light copy;
     copy.type = light.type == FGR_LIGHT_DIRECTIONAL ? LightType::Directional : LightType::Point;
@@ -417,15 +420,15 @@ Light copy_light(const fgr_light& light, uint32_t index) {
     copy.colour = to_vec3(light.colour);
     copy.intensity = light.intensity;
     if (copy.colour.r < 0.0f || copy.colour.g < 0.0f || copy.colour.b < 0.0f) {
-        fail("{}: negative colour", where);
+        reject("{}: negative colour", where);
     }
-    if (copy.intensity < 0.0f) fail("{}: negative intensity {}", where, copy.intensity);
+    if (copy.intensity < 0.0f) reject("{}: negative intensity {}", where, copy.intensity);
     if (copy.type == LightType::Directional) {
         // Normalised here so the kernel never has to. In double: the squared length of a float
         // vector with tiny (1e-22) or huge (1e20) components under- or overflows float.
         const glm::dvec3 direction(copy.vector);
         const double length = glm::length(direction);
-        if (!(length > 0.0)) fail("{}: zero direction", where);
+        if (!(length > 0.0)) reject("{}: zero direction", where);
         copy.vector = glm::vec3(direction / length);
     }
     copy.angular_radius = copy_angular_radius(light, where);
@@ -435,9 +438,9 @@ Light copy_light(const fgr_light& light, uint32_t index) {
 std::vector<Light> copy_lights(const fgr_scene_desc& desc) {
     // A scene is lit by its lights alone in the shaded mode: none, or a count over a NULL array
     // (FGR_SCENE over an empty list, or a list forgotten), is refused saying what is missing.
-    if (desc.light_count == 0) fail("light count is 0: a scene needs at least one light");
+    if (desc.light_count == 0) reject("light count is 0: a scene needs at least one light");
     if (desc.lights == nullptr) {
-        fail(
+        reject(
             "light count is {} but the array is NULL: a scene needs at least one light (point "
             "`lights` at an array of them)",
             desc.light_count);
@@ -451,27 +454,27 @@ std::vector<Light> copy_lights(const fgr_scene_desc& desc) {
 
 uint64_t copy_effects(uint64_t effects) {
     const uint64_t unknown = effects & ~uint64_t{FGR_EFFECT_ALL_V1};
-    if (unknown != 0) fail("unknown effect bits {:#x}", unknown);
+    if (unknown != 0) reject("unknown effect bits {:#x}", unknown);
     return effects;
 }
 
 MarchSettings copy_march(const fgr_march_settings& march) {
     check_header(march.header, kV1MarchSize, "march settings");
     if (march.max_steps < 1 || march.max_steps > kMaxMarchSteps) {
-        fail("march settings: max_steps {} outside [1, {}]", march.max_steps, kMaxMarchSteps);
+        reject("march settings: max_steps {} outside [1, {}]", march.max_steps, kMaxMarchSteps);
     }
     if (!std::isfinite(march.max_distance) || !(march.max_distance > 0.0f)) {
-        fail("march settings: max_distance {} must be finite and > 0", march.max_distance);
+        reject("march settings: max_distance {} must be finite and > 0", march.max_distance);
     }
     if (!std::isfinite(march.hit_threshold) || !(march.hit_threshold > 0.0f)) {
-        fail("march settings: hit_threshold {} must be finite and > 0", march.hit_threshold);
+        reject("march settings: hit_threshold {} must be finite and > 0", march.hit_threshold);
     }
     if (march.de_iterations < 1 || march.de_iterations > kMaxDeIterations) {
-        fail("march settings: de_iterations {} outside [1, {}]", march.de_iterations,
-             kMaxDeIterations);
+        reject("march settings: de_iterations {} outside [1, {}]", march.de_iterations,
+               kMaxDeIterations);
     }
     if (!(march.step_factor >= 0.0f && march.step_factor <= 1.0f)) {
-        fail("march settings: step_factor {} outside [0, 1]", march.step_factor);
+        reject("march settings: step_factor {} outside [0, 1]", march.step_factor);
     }
     // 0, what an initialiser that leaves the field out gives, means full steps.
     const float step_factor = march.step_factor > 0.0f ? march.step_factor : 1.0f;
@@ -486,8 +489,8 @@ void check_builtin_defaults(const Scene& scene) {
         if (!param.builtin) continue;
         const float value = param.default_value[0];
         if (value < param.min_value || value > param.max_value) {
-            fail("march settings: {} {} outside the built-in range [{}, {}]", param.id, value,
-                 param.min_value, param.max_value);
+            reject("march settings: {} {} outside the built-in range [{}, {}]", param.id, value,
+                   param.min_value, param.max_value);
         }
     }
 }
@@ -498,10 +501,10 @@ void check_builtin_defaults(const Scene& scene) {
 void check_scene_header(const fgr_scene_desc& desc) {
     const uint32_t major = FGR_ABI_MAJOR(desc.header.abi_version);
     if (major != FGR_ABI_VERSION_MAJOR) {
-        fail("ABI major version {}, host supports {}", major, FGR_ABI_VERSION_MAJOR);
+        reject("ABI major version {}, host supports {}", major, FGR_ABI_VERSION_MAJOR);
     }
     if (desc.header.struct_size < kV1SceneDescSize) {
-        fail("description struct too small ({} bytes)", desc.header.struct_size);
+        reject("description struct too small ({} bytes)", desc.header.struct_size);
     }
 }
 
@@ -510,13 +513,13 @@ void check_scene_header(const fgr_scene_desc& desc) {
 std::string copy_source(const fgr_scene_desc& desc) {
     const uint64_t length = desc.header.struct_size >= kV1_1SceneDescSize ? desc.source_length : 0;
     if (length == 0) return bounded_string(desc.source, kMaxSourceBytes, "source");
-    if (desc.source == nullptr) fail("source is NULL");
+    if (desc.source == nullptr) reject("source is NULL");
     // A NUL-terminated source of the largest size has one byte more than it.
     if (length > kMaxSourceBytes + 1) {
-        fail("source longer than {} bytes (source_length {})", kMaxSourceBytes, length);
+        reject("source longer than {} bytes (source_length {})", kMaxSourceBytes, length);
     }
     const std::size_t bytes = strnlen(desc.source, static_cast<std::size_t>(length));
-    if (bytes > kMaxSourceBytes) fail("source longer than {} bytes", kMaxSourceBytes);
+    if (bytes > kMaxSourceBytes) reject("source longer than {} bytes", kMaxSourceBytes);
     return std::string(desc.source, bytes);
 }
 
@@ -531,8 +534,8 @@ RenderMode copy_default_mode(const fgr_scene_desc& desc) {
     for (const RenderModeInfo& info : render_modes()) {
         if (info.name == name) return info.mode;
     }
-    fail("default_mode '{}' is not a render mode (choose {})", printable(name),
-         render_mode_choices());
+    reject("default_mode '{}' is not a render mode (choose {})", printable(name),
+           render_mode_choices());
 }
 
 // --- The scene's own defaults, colour modes and scale (ABI 1.4) ---------------------------------
@@ -545,7 +548,7 @@ bool covers_v1_4(const fgr_scene_desc& desc) {
 float copy_scale(const fgr_scene_desc& desc) {
     if (!covers_v1_4(desc) || desc.scale == 0.0f) return 1.0f;
     if (!(desc.scale >= kMinScale && desc.scale <= kMaxScale)) {
-        fail("scale {} outside [{}, {}] (0 means 1)", desc.scale, kMinScale, kMaxScale);
+        reject("scale {} outside [{}, {}] (0 means 1)", desc.scale, kMinScale, kMaxScale);
     }
     return desc.scale;
 }
@@ -554,8 +557,8 @@ ParamInfo& builtin_named(Scene& scene, const std::string& id, uint32_t index) {
     for (ParamInfo& param : scene.params) {
         if (param.builtin && param.id == id) return param;
     }
-    fail("built-in default {}: '{}' is not a built-in parameter (`fgr list` shows them)", index,
-         printable(id));
+    reject("built-in default {}: '{}' is not a built-in parameter (`fgr list` shows them)", index,
+           printable(id));
 }
 
 // One scene-given default, checked as a plugin parameter's default is: finite, in range, whole
@@ -563,18 +566,18 @@ ParamInfo& builtin_named(Scene& scene, const std::string& id, uint32_t index) {
 void set_builtin_default(ParamInfo& param, const float (&value)[3]) {
     const int components = param_components(param.type);
     if (!all_finite(value, static_cast<std::size_t>(components))) {
-        fail("built-in parameter '{}': scene default not finite", param.id);
+        reject("built-in parameter '{}': scene default not finite", param.id);
     }
     for (int c = 0; c < components; ++c) {
         const float component = value[c];
         if (component < param.min_value || component > param.max_value) {
-            fail("built-in parameter '{}': scene default {} outside [{}, {}]", param.id, component,
-                 param.min_value, param.max_value);
+            reject("built-in parameter '{}': scene default {} outside [{}, {}]", param.id,
+                   component, param.min_value, param.max_value);
         }
         if (param.type != ParamType::Float && param.type != ParamType::Vec3 &&
             param.type != ParamType::Colour && !is_integral(component)) {
-            fail("built-in parameter '{}': scene default {} is not a whole number", param.id,
-                 component);
+            reject("built-in parameter '{}': scene default {} is not a whole number", param.id,
+                   component);
         }
     }
     for (int c = 0; c < 3; ++c) param.default_value[c] = c < components ? value[c] : 0.0f;
@@ -591,13 +594,13 @@ void copy_builtin_defaults(const fgr_scene_desc& desc, Scene& scene) {
         const std::string id =
             bounded_string(array[i].id, kMaxIdLength, fmt::format("built-in default {} id", i));
         if (is_march_builtin_id(id)) {
-            fail(
+            reject(
                 "built-in parameter '{}': its default comes from the march settings, not "
                 "builtin_defaults",
                 id);
         }
         ParamInfo& param = builtin_named(scene, id, i);
-        if (!seen.insert(id).second) fail("built-in parameter '{}': default given twice", id);
+        if (!seen.insert(id).second) reject("built-in parameter '{}': default given twice", id);
         set_builtin_default(param, array[i].value);
     }
 }
@@ -607,27 +610,27 @@ void copy_colour_modes(const fgr_scene_desc& desc, Scene& scene) {
     if (!covers_v1_4(desc) || desc.colour_modes == 0) return;
     const uint32_t modes = desc.colour_modes;
     if (const uint32_t unknown = modes & ~uint32_t{FGR_COLOUR_MODES_ALL_V1_4}) {
-        fail("colour_modes {:#x}: unknown bits {:#x}", modes, unknown);
+        reject("colour_modes {:#x}: unknown bits {:#x}", modes, unknown);
     }
     auto param = std::find_if(scene.params.begin(), scene.params.end(), [](const ParamInfo& p) {
         return !p.builtin && p.id == "colour_mode";
     });
     if (param == scene.params.end() || param->choices.empty()) {
-        fail(
+        reject(
             "colour_modes {:#x} given, but the scene has no colour_mode enum parameter "
             "(FGR_COLOUR_PARAMS)",
             modes);
     }
     if ((modes >> param->choices.size()) != 0) {
-        fail("colour_modes {:#x}: parameter 'colour_mode' has only {} choices", modes,
-             param->choices.size());
+        reject("colour_modes {:#x}: parameter 'colour_mode' has only {} choices", modes,
+               param->choices.size());
     }
     param->offered.assign(param->choices.size(), false);
     for (std::size_t i = 0; i < param->choices.size(); ++i) param->offered[i] = (modes >> i) & 1u;
     const auto default_index = static_cast<std::size_t>(param->default_value[0] - param->min_value);
     if (!choice_offered(*param, default_index)) {
-        fail("parameter 'colour_mode': default '{}' is not among the colour modes offered ({})",
-             param->choices[default_index], offered_choices_text(*param));
+        reject("parameter 'colour_mode': default '{}' is not among the colour modes offered ({})",
+               param->choices[default_index], offered_choices_text(*param));
     }
 }
 
@@ -649,7 +652,7 @@ bool is_ifs_description(const fgr_scene_desc& desc) {
 // A depth field: 0 is "not given".
 std::optional<int> copy_depth(uint32_t depth, std::string_view what) {
     if (depth > static_cast<uint32_t>(kIfsMaxDepth)) {
-        fail("{} {} outside [0, {}]", what, depth, kIfsMaxDepth);
+        reject("{} {} outside [0, {}]", what, depth, kIfsMaxDepth);
     }
     return depth == 0 ? std::nullopt : std::optional<int>(static_cast<int>(depth));
 }
@@ -670,13 +673,13 @@ IfsMap copy_ifs_map(const fgr_ifs_map& given) {
 // not used (IFS scenes are traced, not marched); effects are those exact tracing supports.
 Scene copy_ifs_checked(const fgr_scene_desc& desc, Scene named) {
     if (desc.source != nullptr && !copy_source(desc).empty()) {
-        fail(
+        reject(
             "IFS maps and a source: a scene with ifs_map_count {} is an IFS scene, whose source "
             "must be NULL or empty",
             desc.ifs_map_count);
     }
     if (desc.param_count != 0) {
-        fail(
+        reject(
             "IFS scenes have no parameters of their own (param_count {}): they get ifs_depth and "
             "the built-in ones",
             desc.param_count);
@@ -694,19 +697,19 @@ Scene copy_ifs_checked(const fgr_scene_desc& desc, Scene named) {
     const std::optional<int> max_depth = copy_depth(desc.ifs_max_depth, "ifs_max_depth");
     set_ifs_depths(ifs, default_depth, max_depth);
     if (ifs.default_depth > ifs.max_depth) {
-        fail("ifs_default_depth {} is above ifs_max_depth {}", ifs.default_depth, ifs.max_depth);
+        reject("ifs_default_depth {} is above ifs_max_depth {}", ifs.default_depth, ifs.max_depth);
     }
     try {
         validate_ifs_maps(ifs, "IFS map");
     } catch (const IfsError& error) {
-        fail("{}", error.what());
+        reject("{}", error.what());
     }
     ifs.cameras = copy_cameras(desc);
     ifs.camera_paths = copy_camera_paths(desc);
     ifs.lights = copy_lights(desc);
     const uint64_t effects = copy_effects(desc.effects);
     if (const uint64_t unsupported = effects & ~kIfsEffects) {
-        fail(
+        reject(
             "IFS scenes cannot have {}: exact IFS tracing has no distance estimate (they can "
             "have {})",
             effect_names(unsupported), effect_names(kIfsEffects));
@@ -728,15 +731,15 @@ Scene copy_checked(const fgr_scene_desc& desc, std::string& declared_id) {
     Scene scene;
     scene.id = bounded_string(desc.id, kMaxIdLength, "scene id");
     if (!is_identifier(scene.id, true)) {
-        fail("scene id '{}' {}", printable(scene.id), scene_limits::kSceneIdRule);
+        reject("scene id '{}' {}", printable(scene.id), scene_limits::kSceneIdRule);
     }
     declared_id = scene.id;
     scene.name = bounded_string(desc.name, kMaxTextLength, "scene name");
-    if (scene.name.empty()) fail("scene name is empty");
+    if (scene.name.empty()) reject("scene name is empty");
     scene.description = bounded_string(desc.description, kMaxTextLength, "scene description");
     if (is_ifs_description(desc)) return copy_ifs_checked(desc, std::move(scene));
     scene.source = copy_source(desc);
-    if (scene.source.empty()) fail("source is empty");
+    if (scene.source.empty()) reject("source is empty");
     declared_kernel_api(scene.source);  // refuses a version this fgr does not have
     scene.source_name =
         optional_string(desc.source_name, kMaxTextLength, "source name", scene.id + ".cl");
@@ -750,7 +753,7 @@ Scene copy_checked(const fgr_scene_desc& desc, std::string& declared_id) {
     if (scene.inside_only()) {
         // An inside test alone renders only by brute force, whatever the description asks.
         if (scene.default_mode == RenderMode::Path) {
-            fail(
+            reject(
                 "default_mode 'path' needs a distance estimator: this source defines "
                 "FGR_SCENE_INSIDE_ONLY (use \"brute\" or NULL)");
         }

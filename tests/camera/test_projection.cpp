@@ -21,12 +21,14 @@
 #include "render/renderer.hpp"
 #include "render/sample_budget.hpp"
 #include "scene/parameters.hpp"
+#include "test_math.hpp"
 #include "test_scenes.hpp"
 
 namespace fgr {
 namespace {
 
-constexpr double kPi = 3.14159265358979323846;
+using test::kPi;
+
 double radians(double degrees) { return degrees * kPi / 180.0; }
 
 // test::inline_scene's camera: eye (0, -3, 0) looking at the origin, z up. Its basis is

@@ -28,12 +28,14 @@
 #include "child_process.hpp"
 #include "image/hdr_io.hpp"
 #include "image/image_io.hpp"
+#include "test_files.hpp"
 
 namespace fgr {
 namespace {
 namespace fs = std::filesystem;
 
-const fs::path kFgrExe = FGR_TEST_FGR_EXE;
+using test::directory_listing;
+using test::kFgrExe;
 
 // --- Running fgr ---------------------------------------------------------------------------------
 
@@ -49,16 +51,6 @@ class TempDir : public test::TempDir {
 public:
     TempDir() : test::TempDir("fgr_cli_test") {}
 };
-
-std::vector<std::string> directory_listing(const fs::path& directory) {
-    std::vector<std::string> names;
-    std::error_code error;
-    for (const fs::directory_entry& entry : fs::directory_iterator(directory, error)) {
-        names.push_back(entry.path().filename().string());
-    }
-    std::sort(names.begin(), names.end());
-    return names;
-}
 
 std::string joined(const std::vector<std::string>& names) {
     std::string text;
@@ -94,7 +86,7 @@ std::string lower(std::string text) {
     return text;
 }
 
-bool contains(const std::string& text, const std::string& part) {
+bool contains_ignoring_case(const std::string& text, const std::string& part) {
     return lower(text).find(lower(part)) != std::string::npos;
 }
 
@@ -369,7 +361,7 @@ TEST_P(CliBadInput, FailsWithOneErrorLineAndNoOutput) {
     }
     expect_one_error_line(result);
     for (const std::string& part : input.mention) {
-        EXPECT_TRUE(contains(result.err, part))
+        EXPECT_TRUE(contains_ignoring_case(result.err, part))
             << "message should mention '" << part << "': " << result;
     }
     EXPECT_FALSE(fs::exists(out)) << out << " was written";
@@ -388,29 +380,31 @@ TEST_F(CliTest, NoSubcommandPrintsUsage) {
     const RunResult result = run({});
     ASSERT_TRUE(result.exited) << result;
     EXPECT_NE(result.exit_code, 0) << result;
-    EXPECT_TRUE(contains(result.out + result.err, "render")) << "no usage shown: " << result;
+    EXPECT_TRUE(contains_ignoring_case(result.out + result.err, "render"))
+        << "no usage shown: " << result;
 }
 
 // --- Valid renders ------------------------------------------------------------------------------
 
-constexpr int kWidth = 64;
-constexpr int kHeight = 48;
+constexpr int kCliWidth = 64;
+constexpr int kCliHeight = 48;
 
 TEST_F(CliTest, RendersSmallImage) {
-    const RunResult result = run({"render", "mandelbulb", "-o", out_png().string(), "--width",
-                                  std::to_string(kWidth), "--height", std::to_string(kHeight)});
+    const RunResult result =
+        run({"render", "mandelbulb", "-o", out_png().string(), "--width", std::to_string(kCliWidth),
+             "--height", std::to_string(kCliHeight)});
     ASSERT_TRUE(result.exited) << result;
     ASSERT_EQ(result.exit_code, 0) << result;
-    const long long hits = expect_render_report(result, kWidth, kHeight);
+    const long long hits = expect_render_report(result, kCliWidth, kCliHeight);
     EXPECT_GT(hits, 0) << "the canonical view of the mandelbulb should hit the surface";
-    expect_rgb_png(out_png(), kWidth, kHeight);
+    expect_rgb_png(out_png(), kCliWidth, kCliHeight);
     EXPECT_EQ(directory_listing(dir()), std::vector<std::string>{"out.png"});
 }
 
 TEST_F(CliTest, StatsReportStepsEvaluationsAndRaysOutOfSteps) {
     const RunResult result =
-        run({"render", "mandelbulb", "-o", out_png().string(), "--width", std::to_string(kWidth),
-             "--height", std::to_string(kHeight), "--stats", "--set", "max_steps=10"});
+        run({"render", "mandelbulb", "-o", out_png().string(), "--width", std::to_string(kCliWidth),
+             "--height", std::to_string(kCliHeight), "--stats", "--set", "max_steps=10"});
     ASSERT_EQ(result.exit_code, 0) << result;
     const auto steps = line_value(result.out, "steps_per_pixel");
     const auto evaluations = line_value(result.out, "de_evaluations");
@@ -418,18 +412,18 @@ TEST_F(CliTest, StatsReportStepsEvaluationsAndRaysOutOfSteps) {
     ASSERT_TRUE(steps && evaluations && exhausted) << result;
     EXPECT_GT(std::stod(*steps), 1.0);
     EXPECT_NE(steps->find("(max 10)"), std::string::npos) << *steps;
-    EXPECT_GT(std::stol(*evaluations), kWidth * kHeight);
+    EXPECT_GT(std::stol(*evaluations), kCliWidth * kCliHeight);
     EXPECT_GT(std::stod(*exhausted), 0.0) << "10 steps leave rays unresolved";
-    expect_rgb_png(out_png(), kWidth, kHeight);
+    expect_rgb_png(out_png(), kCliWidth, kCliHeight);
 }
 
 TEST_F(CliTest, PrecisionDoubleRendersAndUnknownPrecisionIsRefused) {
     const RunResult result =
-        run({"render", "mandelbulb", "-o", out_png().string(), "--width", std::to_string(kWidth),
-             "--height", std::to_string(kHeight), "--precision", "double"});
+        run({"render", "mandelbulb", "-o", out_png().string(), "--width", std::to_string(kCliWidth),
+             "--height", std::to_string(kCliHeight), "--precision", "double"});
     ASSERT_EQ(result.exit_code, 0) << result;
     EXPECT_NE(result.err.find(", double, effects"), std::string::npos) << result;
-    EXPECT_GT(expect_render_report(result, kWidth, kHeight), 0);
+    EXPECT_GT(expect_render_report(result, kCliWidth, kCliHeight), 0);
     const RunResult bad =
         run({"render", "mandelbulb", "-o", out_png().string(), "--precision", "half"});
     EXPECT_EQ(bad.exit_code, 2) << bad;
@@ -511,11 +505,12 @@ TEST_F(CliTest, OverwritesExistingOutput) {
         std::ofstream junk(out_png(), std::ios::binary);
         junk << std::string(10000, 'x');
     }
-    const RunResult result = run({"render", "mandelbulb", "-o", out_png().string(), "--width",
-                                  std::to_string(kWidth), "--height", std::to_string(kHeight)});
+    const RunResult result =
+        run({"render", "mandelbulb", "-o", out_png().string(), "--width", std::to_string(kCliWidth),
+             "--height", std::to_string(kCliHeight)});
     ASSERT_TRUE(result.exited) << result;
     ASSERT_EQ(result.exit_code, 0) << result;
-    expect_rgb_png(out_png(), kWidth, kHeight);
+    expect_rgb_png(out_png(), kCliWidth, kCliHeight);
     EXPECT_EQ(directory_listing(dir()), std::vector<std::string>{"out.png"});
 }
 
@@ -710,7 +705,7 @@ TEST_F(CliTest, InfoListsADevice) {
     const RunResult result = run({"info"});
     ASSERT_TRUE(result.exited) << result;
     ASSERT_EQ(result.exit_code, 0) << result;
-    EXPECT_TRUE(contains(result.out, "device")) << result;
+    EXPECT_TRUE(contains_ignoring_case(result.out, "device")) << result;
 }
 
 // --- Views and images fgr cannot compute ---------------------------------------------------------
@@ -809,18 +804,19 @@ TEST_F(CliWithOwnCache, UnknownSceneNamesTheRefusedPluginAndWhy) {
         {"render", "no-id-given", "-o", out_png().string(), "--width", "16", "--height", "12"},
         refused);
     EXPECT_EQ(nameless.exit_code, 2) << nameless;
-    EXPECT_TRUE(contains(nameless.err, "unknown scene 'no-id-given': plugin " +
-                                           (refused / "no_id_given.so").string() +
-                                           " was refused: entry returned NULL"))
+    EXPECT_TRUE(contains_ignoring_case(nameless.err, "unknown scene 'no-id-given': plugin " +
+                                                         (refused / "no_id_given.so").string() +
+                                                         " was refused: entry returned NULL"))
         << nameless;
 
     // An id no refused file can be: the scenes there are, and what was refused, on the one line.
     const RunResult other = run_with(
         {"render", "zzz", "-o", out_png().string(), "--width", "16", "--height", "12"}, refused);
     EXPECT_EQ(other.exit_code, 2) << other;
-    EXPECT_TRUE(contains(other.err, "unknown scene 'zzz' (available: ")) << other;
-    EXPECT_TRUE(contains(other.err, (refused / "liboops.so").string() +
-                                        " (parameter 'scale': default 3 outside [0.5, 2])"))
+    EXPECT_TRUE(contains_ignoring_case(other.err, "unknown scene 'zzz' (available: ")) << other;
+    EXPECT_TRUE(contains_ignoring_case(
+        other.err,
+        (refused / "liboops.so").string() + " (parameter 'scale': default 3 outside [0.5, 2])"))
         << other;
     EXPECT_FALSE(fs::exists(out_png()));
 }
@@ -914,7 +910,7 @@ protected:
         }
         expect_one_error_line(error);
         for (const std::string& part : mention) {
-            EXPECT_TRUE(contains(result.err, part))
+            EXPECT_TRUE(contains_ignoring_case(result.err, part))
                 << "should mention '" << part << "': " << result;
         }
         EXPECT_EQ(directory_listing(dir()), inputs)
@@ -1032,12 +1028,15 @@ TEST_F(CliCache, SizeReportsTheEntriesAndClearRemovesThemAll) {
     ASSERT_TRUE(limit.has_value()) << size;
     EXPECT_EQ(parse_integer(limit->substr(0, limit->find(' '))), 256LL << 20) << size;
     const RunResult custom = run_with({"cache", "size"}, {}, {{"FGR_CACHE_MAX_MB", "3"}});
-    EXPECT_TRUE(contains(line_value(custom.out, "limit").value_or(""), "3145728 (3.0 MiB, from"))
+    EXPECT_TRUE(contains_ignoring_case(line_value(custom.out, "limit").value_or(""),
+                                       "3145728 (3.0 MiB, from"))
         << custom;
 
     const RunResult clear = run_with({"cache", "clear"});
     ASSERT_EQ(clear.exit_code, 0) << clear;
-    EXPECT_TRUE(contains(clear.out, "removed " + std::to_string(entries) + " entries")) << clear;
+    EXPECT_TRUE(
+        contains_ignoring_case(clear.out, "removed " + std::to_string(entries) + " entries"))
+        << clear;
     EXPECT_EQ(directory_listing(cache_dir()), std::vector<std::string>{"notes.txt"});
     const RunResult empty = run_with({"cache", "size"});
     EXPECT_EQ(line_value(empty.out, "entries"), "0") << empty;
@@ -1047,7 +1046,7 @@ TEST_F(CliCache, WithoutASubcommandItSaysWhichThereAre) {
     const RunResult result = run_with({"cache"});
     EXPECT_EQ(result.exit_code, 2) << result;
     expect_one_error_line(result);
-    EXPECT_TRUE(contains(result.err, "size or clear")) << result;
+    EXPECT_TRUE(contains_ignoring_case(result.err, "size or clear")) << result;
 }
 
 // Three programs of ~0.5 MB each (and the math self-test's) against a 1 MiB limit.

@@ -159,14 +159,14 @@ TEST_F(BenchRun, FixedFramesPerRunWithConsistentFigures) {
     EXPECT_EQ(progress.back(), std::make_pair(1, 1.0));
     EXPECT_EQ(progress.front(), std::make_pair(0, 0.0));
 
-    const nlohmann::json json = nlohmann::json::parse(bench_json(report));
-    EXPECT_EQ(json["scene"], "inline");
-    EXPECT_EQ(json["settings"]["mode"], "frames");
-    EXPECT_EQ(json["runs"].size(), 2u);
-    EXPECT_EQ(json["average"]["frames"], 5);
-    EXPECT_FALSE(json["system"]["opencl"]["device"].get<std::string>().empty());
-    EXPECT_GT(json["system"]["cpu_threads"].get<int>(), 0);
-    EXPECT_GT(json["system"]["memory_bytes"].get<uint64_t>(), 0u);
+    const nlohmann::json report_json = nlohmann::json::parse(bench_json(report));
+    EXPECT_EQ(report_json["scene"], "inline");
+    EXPECT_EQ(report_json["settings"]["mode"], "frames");
+    EXPECT_EQ(report_json["runs"].size(), 2u);
+    EXPECT_EQ(report_json["average"]["frames"], 5);
+    EXPECT_FALSE(report_json["system"]["opencl"]["device"].get<std::string>().empty());
+    EXPECT_GT(report_json["system"]["cpu_threads"].get<int>(), 0);
+    EXPECT_GT(report_json["system"]["memory_bytes"].get<uint64_t>(), 0u);
 
     std::istringstream csv(bench_csv(report));
     std::vector<std::string> lines;
@@ -183,7 +183,7 @@ TEST_F(BenchRun, FixedFramesPerRunWithConsistentFigures) {
     }
     EXPECT_NE(lines[0].find(",render_mode,samples_per_second"), std::string::npos) << lines[0];
     EXPECT_NE(lines[3].find(",shaded,"), std::string::npos) << lines[3];
-    EXPECT_EQ(json["settings"]["render_mode"], "shaded");
+    EXPECT_EQ(report_json["settings"]["render_mode"], "shaded");
 }
 
 // A path from the Mandelbulb's canonical view into a deep zoom, two frames: one at each end.
@@ -212,11 +212,11 @@ TEST_F(BenchRun, EachFrameRendersInThePrecisionItsViewNeeds) {
     EXPECT_TRUE(in_double.build_origin.empty()) << "no float kernel built";
     EXPECT_FALSE(in_double.double_build_origin.empty());
 
-    const nlohmann::json json = nlohmann::json::parse(bench_json(automatic));
-    EXPECT_EQ(json["settings"]["precision"], "auto");
-    EXPECT_EQ(json["runs"][0]["double_frames"], 1);
-    EXPECT_EQ(json["average"]["double_frames"], 1);
-    EXPECT_GT(json["double_kernel_build_ms"].get<double>(), 0.0);
+    const nlohmann::json report_json = nlohmann::json::parse(bench_json(automatic));
+    EXPECT_EQ(report_json["settings"]["precision"], "auto");
+    EXPECT_EQ(report_json["runs"][0]["double_frames"], 1);
+    EXPECT_EQ(report_json["average"]["double_frames"], 1);
+    EXPECT_GT(report_json["double_kernel_build_ms"].get<double>(), 0.0);
     EXPECT_NE(bench_csv(automatic).find(",auto,1,"), std::string::npos) << bench_csv(automatic);
     EXPECT_NE(bench_table(automatic).find("double kernel build"), std::string::npos);
 }

@@ -10,6 +10,7 @@
 #include <vector>
 
 #include "child_process.hpp"
+#include "test_files.hpp"
 
 namespace fgr {
 namespace {
@@ -17,8 +18,9 @@ namespace {
 namespace fs = std::filesystem;
 using test::RunResult;
 
-const fs::path kFgrExe = FGR_TEST_FGR_EXE;
-const fs::path kFixtureDir = FGR_TEST_FIXTURE_DIR;
+using test::kFgrExe;
+using test::kFixtureDir;
+using test::write_text;
 
 bool contains(const std::string& text, const std::string& part) {
     return text.find(part) != std::string::npos;
@@ -89,11 +91,6 @@ TEST_F(CheckCommandTest, CompileReportsTheScenesFileAndLine) {
     const RunResult good = run({"check", "--compile", (kFixtureDir / "good_scene.so").string()});
     EXPECT_EQ(good.exit_code, 0) << good;
     EXPECT_TRUE(contains(good.out, "the kernel compiles")) << good.out;
-}
-
-void write_text(const fs::path& file, const std::string& text) {
-    std::ofstream out(file, std::ios::binary | std::ios::trunc);
-    out << text;
 }
 
 // The stale_scene fixture embeds the sphere of radius `scale` (1) and records

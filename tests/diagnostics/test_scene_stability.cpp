@@ -12,6 +12,7 @@
 #include <string>
 
 #include "device/program_cache.hpp"
+#include "device_suite.hpp"
 #include "diagnostics/scene_check.hpp"
 #include "scene/parameters.hpp"
 #include "scene/plugin_loader.hpp"
@@ -20,10 +21,7 @@
 namespace fgr {
 namespace {
 
-ComputeDevice& device() {
-    static ComputeDevice opened = open_device(-1);
-    return opened;
-}
+using test::shared_device;
 
 // A ball of radius 1 given by `de`, seen from 4 away by two cameras and along a camera path; its
 // march takes steps of `step_factor` times the DE.
@@ -51,7 +49,7 @@ const CheckResult& find_check(const SceneCheckReport& report, const std::string&
 class SceneCheckTest : public ::testing::Test {
 protected:
     SceneCheckReport check(const Scene& scene, int packet_width = 0) {
-        SceneChecker checker(device(), cache_, scene, packet_width);
+        SceneChecker checker(shared_device(), cache_, scene, packet_width);
         return checker.run_all();
     }
     ProgramCache cache_{std::filesystem::path()};  // in memory: nothing on disk
@@ -95,7 +93,7 @@ TEST_F(SceneCheckTest, AnOverestimateIsMeasuredAndTheSafeStepFactorAdvised) {
 // The strength the bisection is argued to have (scene_check.cpp): 10% too large fails.
 TEST_F(SceneCheckTest, ADistanceTenPercentTooLargeFailsTheMarchSafety) {
     Scene scene = ball("return 1.1f * (v3_length(p) - 1.0f);");
-    SceneChecker checker(device(), cache_, scene);
+    SceneChecker checker(shared_device(), cache_, scene);
     const CheckResult safety = checker.march_safety();
     EXPECT_EQ(safety.status, CheckStatus::Failed) << safety.detail;
     EXPECT_NE(safety.detail.find("1.10x"), std::string::npos) << safety.detail;
@@ -107,7 +105,7 @@ TEST_F(SceneCheckTest, ADistanceTenPercentTooLargeFailsTheMarchSafety) {
 // blame the scene for its own holes.
 TEST_F(SceneCheckTest, TheCautiousMarchStepsFinerThanASceneWithASmallStepFactor) {
     Scene scene = ball("return 2.5f * (v3_length(p) - 1.0f);", 0.35f);
-    SceneChecker checker(device(), cache_, scene);
+    SceneChecker checker(shared_device(), cache_, scene);
     const CheckResult relaxed = checker.relaxed_steps();
     EXPECT_EQ(relaxed.status, CheckStatus::Passed) << relaxed.detail;
 }
@@ -115,7 +113,7 @@ TEST_F(SceneCheckTest, TheCautiousMarchStepsFinerThanASceneWithASmallStepFactor)
 // NaN at one point only: the check names the point and the parameters it used.
 TEST_F(SceneCheckTest, ANanAtTheOriginIsNamed) {
     Scene scene = ball("return (v3_length(p) - 1.0f) * (v3_length(p) / v3_length(p));");
-    SceneChecker checker(device(), cache_, scene);
+    SceneChecker checker(shared_device(), cache_, scene);
     const CheckResult hard = checker.finite_at_hard_points();
     ASSERT_EQ(hard.status, CheckStatus::Failed) << hard.detail;
     EXPECT_NE(hard.detail.find("DE is NaN at (0, 0, 0)"), std::string::npos) << hard.detail;
@@ -145,7 +143,7 @@ TEST_F(SceneCheckTest, ADistanceThatIsNanEverywhereFails) {
 // Code that depends on the packet width: one ray per work-item sees a bigger ball.
 TEST_F(SceneCheckTest, LanesThatDisagreeWithSingleRaysFail) {
     Scene scene = ball("return v3_length(p) - (FGR_WIDTH == 1 ? 1.1f : 1.0f);");
-    SceneChecker checker(device(), cache_, scene, 4);
+    SceneChecker checker(shared_device(), cache_, scene, 4);
     const CheckResult agreement = checker.packet_agreement();
     EXPECT_EQ(agreement.status, CheckStatus::Failed) << agreement.detail;
     EXPECT_NE(agreement.detail.find("width 1 vs 4"), std::string::npos) << agreement.detail;
@@ -154,7 +152,7 @@ TEST_F(SceneCheckTest, LanesThatDisagreeWithSingleRaysFail) {
 TEST_F(SceneCheckTest, ACameraThatSeesNothingFails) {
     Scene scene = ball("return v3_length(p) - 1.0f;");
     scene.cameras[1].view.target = {3.0, 2.0, 10.0};  // looking up, away from the ball
-    SceneChecker checker(device(), cache_, scene);
+    SceneChecker checker(shared_device(), cache_, scene);
     const CheckResult cameras = checker.cameras_and_paths();
     ASSERT_EQ(cameras.status, CheckStatus::Failed) << cameras.detail;
     EXPECT_NE(cameras.detail.find("camera 'side' sees nothing"), std::string::npos)

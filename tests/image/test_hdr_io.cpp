@@ -29,6 +29,7 @@
 
 #include "image/hdr_io.hpp"
 #include "image/image_io.hpp"
+#include "test_files.hpp"
 
 namespace fgr {
 namespace {
@@ -37,15 +38,8 @@ namespace fs = std::filesystem;
 
 using Bytes = std::vector<unsigned char>;
 
-void write_bytes(const fs::path& path, const Bytes& bytes) {
-    std::ofstream out(path, std::ios::binary | std::ios::trunc);
-    out.write(reinterpret_cast<const char*>(bytes.data()), std::streamsize(bytes.size()));
-}
-
-Bytes read_bytes(const fs::path& path) {
-    std::ifstream in(path, std::ios::binary);
-    return {std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>()};
-}
+using test::read_bytes;
+using test::write_bytes;
 
 Bytes text_bytes(const std::string& text) { return Bytes(text.begin(), text.end()); }
 

@@ -12,6 +12,7 @@
 #include <vector>
 
 #include "image/image_io.hpp"
+#include "test_files.hpp"
 
 namespace fgr {
 namespace {
@@ -36,15 +37,8 @@ Image8 solid(int width, int height, uint8_t value) {
     return {width, height, std::vector<uint8_t>(std::size_t(3 * width * height), value)};
 }
 
-void write_bytes(const fs::path& path, const std::vector<uint8_t>& bytes) {
-    std::ofstream out(path, std::ios::binary);
-    out.write(reinterpret_cast<const char*>(bytes.data()), std::streamsize(bytes.size()));
-}
-
-std::vector<uint8_t> read_bytes(const fs::path& path) {
-    std::ifstream in(path, std::ios::binary);
-    return {std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>()};
-}
+using test::read_bytes;
+using test::write_bytes;
 
 // Each test gets a fresh directory of its own, removed afterwards.
 class ImageIo : public ::testing::Test {

@@ -29,17 +29,19 @@
 #include "device/program_cache.hpp"
 #include "kernel_test_program.hpp"
 #include "render/precision.hpp"
+#include "test_math.hpp"
 
 namespace fgr {
 namespace {
 
 using glm::dvec3;
-constexpr double kPi = std::numbers::pi;
+using test::chi2_p_value;
+using test::kPi;
 
 // The kernels under test: each work-item runs `per_item` cases of FGR_WIDTH lanes. A case's
 // inputs are IN fields of one real per lane (field f of case c is the run of FGR_WIDTH lanes at
 // (c * IN + f) * FGR_WIDTH), its outputs likewise.
-constexpr const char* kTestKernels = R"CLC(
+constexpr const char* kBsdfTestKernels = R"CLC(
 #if FGR_WIDTH == 1
 #define LOAD(i, p) ((real)(p)[i])
 #define STORE(v, i, p) ((p)[i] = (v))
@@ -190,7 +192,7 @@ private:
     static cl::Program build(const ComputeDevice& device, ProgramCache& cache, int width,
                              bool double_precision) {
         try {
-            return test::build_library_test_program(device, cache, kTestKernels, width,
+            return test::build_library_test_program(device, cache, kBsdfTestKernels, width,
                                                     double_precision);
         } catch (const KernelBuildError& error) {
             throw std::runtime_error(fmt::format("{} (width {}, {}):\n{}", error.what(), width,
@@ -426,39 +428,6 @@ CellIntegrals integrate_cells(const BsdfKernels& kernels, const Material& m, dve
     return result;
 }
 
-// The regularised upper incomplete gamma function Q(a, x) (series below a + 1, Lentz's continued
-// fraction above), for χ² p-values: P(X ≥ x) = Q(dof / 2, x / 2).
-double gamma_q(double a, double x) {
-    if (x <= 0.0) return 1.0;
-    const double log_prefix = a * std::log(x) - x - std::lgamma(a);
-    if (x < a + 1.0) {
-        double term = 1.0 / a, sum = term;
-        for (int k = 1; k < 100000; ++k) {
-            term *= x / (a + k);
-            sum += term;
-            if (term < sum * 1e-17) break;
-        }
-        return std::max(0.0, 1.0 - sum * std::exp(log_prefix));
-    }
-    const double tiny = 1e-300;
-    double b = x + 1.0 - a, c = 1.0 / tiny, d = 1.0 / b, h = d;
-    for (int k = 1; k < 100000; ++k) {
-        const double an = -k * (k - a);
-        b += 2.0;
-        d = an * d + b;
-        if (std::abs(d) < tiny) d = tiny;
-        c = b + an / c;
-        if (std::abs(c) < tiny) c = tiny;
-        d = 1.0 / d;
-        const double delta = d * c;
-        h *= delta;
-        if (std::abs(delta - 1.0) < 1e-16) break;
-    }
-    return std::exp(log_prefix) * h;
-}
-
-double chi2_p_value(double statistic, int dof) { return gamma_q(0.5 * dof, 0.5 * statistic); }
-
 // The z of a two-sided normal test at `significance` shared by `tests` tests (Bonferroni),
 // and never below 3: bisection on erfc.
 double bonferroni_z(double significance, int tests) {
@@ -521,7 +490,7 @@ Chi2Outcome chi2_test(const std::vector<double>& observed, const std::vector<dou
 
 // ---- Fixture ----------------------------------------------------------------------------------
 
-struct Precision {
+struct BsdfVariant {
     int width;
     bool double_precision;
 };
@@ -547,8 +516,8 @@ protected:
 
     // Every width and precision the device runs (the kernel library does not build with scalar
     // double lanes: see kMinDoublePacketWidth).
-    static std::vector<Precision> all_precisions() {
-        std::vector<Precision> list;
+    static std::vector<BsdfVariant> all_precisions() {
+        std::vector<BsdfVariant> list;
         for (bool double_precision : {false, true}) {
             if (double_precision && !device_->info.has_fp64) continue;
             for (int width : {1, 4, 8, 16}) {
@@ -559,8 +528,8 @@ protected:
         return list;
     }
     // The statistical tests' two: the widest float packet and the narrowest double one.
-    static std::vector<Precision> statistical_precisions() {
-        std::vector<Precision> list{{16, false}};
+    static std::vector<BsdfVariant> statistical_precisions() {
+        std::vector<BsdfVariant> list{{16, false}};
         if (device_->info.has_fp64) list.push_back({kMinDoublePacketWidth, true});
         return list;
     }
@@ -596,7 +565,7 @@ std::vector<Lane> sample_lanes(const Material& m, dvec3 n, dvec3 wo, size_t coun
 
 // diffuse_material fills every field: the albedo given, no glossy lobe, roughness 1, no emission.
 TEST_F(BsdfTest, DiffuseMaterialFields) {
-    for (const Precision& p : all_precisions()) {
+    for (const BsdfVariant& p : all_precisions()) {
         const BsdfKernels& k = kernels(p.width, p.double_precision);
         const std::vector<double> fields = k.diffuse_material_fields(dvec3(0.25, 0.5, 0.75));
         const std::vector<double> expected = {0.25, 0.5, 0.75, 0, 0, 0, 1, 0, 0, 0};
@@ -664,7 +633,7 @@ TEST_F(BsdfTest, SampledDirectionsFollowThePdf) {
     const std::vector<Chi2Case> cases = chi2_cases();
     const int tests = int(cases.size() * statistical_precisions().size());
     const double significance = 0.01 / tests;
-    for (const Precision& p : statistical_precisions()) {
+    for (const BsdfVariant& p : statistical_precisions()) {
         const BsdfKernels& k = kernels(p.width, p.double_precision);
         Uniforms u(1234, p.double_precision);
         for (const Chi2Case& c : cases) {
@@ -701,7 +670,7 @@ TEST_F(BsdfTest, SampledDirectionsFollowThePdf) {
 TEST_F(BsdfTest, PdfIntegratesToOneLessTheMassBelowTheHorizon) {
     const std::vector<Chi2Case> cases = chi2_cases();
     const double z = bonferroni_z(0.01, int(cases.size() * statistical_precisions().size()));
-    for (const Precision& p : statistical_precisions()) {
+    for (const BsdfVariant& p : statistical_precisions()) {
         const BsdfKernels& k = kernels(p.width, p.double_precision);
         Uniforms u(99, p.double_precision);
         for (const Chi2Case& c : cases) {
@@ -752,7 +721,7 @@ std::vector<Material> assorted_materials() {
 // A sample's weight is bsdf_eval / bsdf_pdf at the sampled direction, its pdf bsdf_pdf there, and
 // an invalid sample weighs and measures nothing.
 TEST_F(BsdfTest, WeightIsEvalOverPdfAtTheSampledDirection) {
-    for (const Precision& p : all_precisions()) {
+    for (const BsdfVariant& p : all_precisions()) {
         const BsdfKernels& k = kernels(p.width, p.double_precision);
         const double eps = p.double_precision ? 1e-12 : 1e-5;
         Uniforms u(7, p.double_precision);
@@ -799,7 +768,7 @@ TEST_F(BsdfTest, WeightIsEvalOverPdfAtTheSampledDirection) {
 // Reciprocity: f(wo, wi) = f(wi, wo), i.e. bsdf_eval(wo, wi) / cos_i = bsdf_eval(wi, wo) / cos_o,
 // and bsdf_eval is 0 with either direction below the surface.
 TEST_F(BsdfTest, EvalIsReciprocal) {
-    for (const Precision& p : all_precisions()) {
+    for (const BsdfVariant& p : all_precisions()) {
         const BsdfKernels& k = kernels(p.width, p.double_precision);
         const double eps = p.double_precision ? 1e-13 : 1e-6;
         Uniforms u(11, p.double_precision);
@@ -848,7 +817,7 @@ TEST_F(BsdfTest, EvalIsReciprocal) {
 // A white Lambertian material returns every valid sample with weight exactly 1 (f cos / pdf
 // shares its cos / π), every sample is valid, and bsdf_eval integrates to 1 over the hemisphere.
 TEST_F(BsdfTest, WhiteDiffuseWeightIsExactlyOne) {
-    for (const Precision& p : all_precisions()) {
+    for (const BsdfVariant& p : all_precisions()) {
         const BsdfKernels& k = kernels(p.width, p.double_precision);
         Uniforms u(5, p.double_precision);
         std::vector<Lane> lanes;
@@ -914,7 +883,7 @@ double rounding(const BsdfKernels& k, double value) {
 TEST_F(BsdfTest, MeanWeightIsTheDirectionalAlbedo) {
     const std::vector<Chi2Case> cases = chi2_cases();
     const double z = bonferroni_z(0.01, int(3 * cases.size() * statistical_precisions().size()));
-    for (const Precision& p : statistical_precisions()) {
+    for (const BsdfVariant& p : statistical_precisions()) {
         const BsdfKernels& k = kernels(p.width, p.double_precision);
         Uniforms u(21, p.double_precision);
         for (const Chi2Case& c : cases) {
@@ -972,7 +941,7 @@ dvec3 schlick(dvec3 f0, double cos_theta) {
 // with pdf 1 and weight F for a metal; bsdf_eval and bsdf_pdf leave the delta lobe out. Just
 // above the threshold the lobe is glossy again.
 TEST_F(BsdfTest, MirrorReflectsExactlyWithSchlickWeight) {
-    for (const Precision& p : all_precisions()) {
+    for (const BsdfVariant& p : all_precisions()) {
         const BsdfKernels& k = kernels(p.width, p.double_precision);
         const double eps = p.double_precision ? 1e-14 : 1e-6;
         Uniforms u(13, p.double_precision);
@@ -1015,7 +984,7 @@ TEST_F(BsdfTest, MirrorReflectsExactlyWithSchlickWeight) {
 // wo.h stays within ~2 alpha of cos θo, so the albedo of F0 = 0.04 over that of F0 = 1 is
 // F(cos θo) up to the curvature of F across the lobe (below 3e-3 at 80 degrees).
 TEST_F(BsdfTest, GlossyLobeFresnelIsSchlick) {
-    for (const Precision& p : all_precisions()) {
+    for (const BsdfVariant& p : all_precisions()) {
         const BsdfKernels& k = kernels(p.width, p.double_precision);
         const dvec3 n = normals()[2];
         for (double degrees : {0.0, 60.0, 80.0}) {
@@ -1039,7 +1008,7 @@ TEST_F(BsdfTest, MirrorOverDiffuseMeanWeights) {
     const Material m{albedo, dvec3(0.04), 0.0};
     const std::vector<double> angles = {0.0, 60.0, 85.0};
     const double z = bonferroni_z(0.01, int(2 * 3 * angles.size() * all_precisions().size()));
-    for (const Precision& p : all_precisions()) {
+    for (const BsdfVariant& p : all_precisions()) {
         const BsdfKernels& k = kernels(p.width, p.double_precision);
         Uniforms u(17, p.double_precision);
         for (double degrees : angles) {
@@ -1107,7 +1076,7 @@ std::vector<Lane> edge_lanes(bool double_precision) {
 // No NaN or Inf anywhere, weights and pdfs never negative, a valid sample a unit direction above
 // the surface, an invalid one weightless; wo below the surface is invalid.
 TEST_F(BsdfTest, EdgeCasesGiveFiniteResults) {
-    for (const Precision& p : all_precisions()) {
+    for (const BsdfVariant& p : all_precisions()) {
         const BsdfKernels& k = kernels(p.width, p.double_precision);
         const std::vector<Lane> lanes = edge_lanes(p.double_precision);
         const std::vector<SampleOut> samples = k.sample(lanes);
@@ -1160,7 +1129,7 @@ TEST_F(BsdfTest, EdgeCasesGiveFiniteResults) {
 // of their own and interleaved with the edge cases above agree bit for bit (a vector built-in
 // that lets one lane's 0, denormal or Inf corrupt another would show here).
 TEST_F(BsdfTest, LanesDoNotAffectEachOther) {
-    for (const Precision& p : all_precisions()) {
+    for (const BsdfVariant& p : all_precisions()) {
         if (p.width == 1) continue;
         const BsdfKernels& k = kernels(p.width, p.double_precision);
         Uniforms u(3, p.double_precision);

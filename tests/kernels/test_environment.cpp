@@ -22,15 +22,17 @@
 #include "device_suite.hpp"
 #include "kernel_test_program.hpp"
 #include "render/environment.hpp"
+#include "test_math.hpp"
 
 namespace fgr {
 namespace {
 
-constexpr double kPi = std::numbers::pi;
+using test::kPi;
+using test::upper_gamma_q;
 
 // One packet per work-item; inputs and outputs are planes of floats, lane i of packet p at
 // p * FGR_WIDTH + i.
-constexpr const char* kTestKernels = R"CL(
+constexpr const char* kEnvironmentTestKernels = R"CL(
 #if FGR_WIDTH == 1
 #define t_load(i, p) convert_real((p)[i])
 #define t_store(v, i, p) ((p)[i] = convert_float_lanes(v))
@@ -77,36 +79,6 @@ std::string label(Variant v) {
 
 double luminance(glm::dvec3 c) { return 0.2126 * c.x + 0.7152 * c.y + 0.0722 * c.z; }
 
-// Regularized upper incomplete gamma Q(a, x): the χ² survival function is Q(dof / 2, χ² / 2).
-// Series for x < a + 1, Lentz's continued fraction otherwise.
-double gamma_q(double a, double x) {
-    if (x <= 0.0) return 1.0;
-    const double log_prefix = a * std::log(x) - x - std::lgamma(a);
-    if (x < a + 1.0) {
-        double term = 1.0 / a, sum = term;
-        for (int n = 1; n < 10000 && std::abs(term) > std::abs(sum) * 1e-15; ++n) {
-            term *= x / (a + n);
-            sum += term;
-        }
-        return 1.0 - sum * std::exp(log_prefix);
-    }
-    const double tiny = 1e-300;
-    double b = x + 1.0 - a, c = 1.0 / tiny, d = 1.0 / b, h = d;
-    for (int n = 1; n < 10000; ++n) {
-        const double an = -n * (n - a);
-        b += 2.0;
-        d = an * d + b;
-        if (std::abs(d) < tiny) d = tiny;
-        c = b + an / c;
-        if (std::abs(c) < tiny) c = tiny;
-        d = 1.0 / d;
-        const double delta = d * c;
-        h *= delta;
-        if (std::abs(delta - 1.0) < 1e-15) break;
-    }
-    return std::exp(log_prefix) * h;
-}
-
 struct Sampled {
     std::vector<glm::dvec3> directions;
     std::vector<double> pdf;
@@ -132,7 +104,7 @@ protected:
     }
 
     static cl::Program program(Variant v) {
-        return test::build_library_test_program(*device_, *cache_, kTestKernels, v.width,
+        return test::build_library_test_program(*device_, *cache_, kEnvironmentTestKernels, v.width,
                                                 v.double_precision);
     }
 
@@ -342,7 +314,7 @@ TEST_F(EnvironmentTest, SampledDirectionsFollowThePdf) {
                         pooled_expected;
                 ++cells;
             }
-            const double p_value = gamma_q(0.5 * (cells - 1), 0.5 * chi2);
+            const double p_value = upper_gamma_q(0.5 * (cells - 1), 0.5 * chi2);
             EXPECT_GT(p_value, alpha) << "chi2 " << chi2 << " over " << cells << " cells";
         }
     }

@@ -25,9 +25,13 @@
 #include "device_suite.hpp"
 #include "kernel_test_program.hpp"
 #include "render/precision.hpp"
+#include "test_math.hpp"
 
 namespace fgr {
 namespace {
+
+using test::chi2_p_value;
+using test::upper_gamma_q;
 
 // Each work-item runs one packet: lane i is pixel p = packet * FGR_WIDTH + i, at
 // (pixels[2p], pixels[2p + 1]). For each sample it starts the sampler and makes the calls in
@@ -412,39 +416,6 @@ TEST_F(SamplerTest, DimensionsAndNeighboursAreUncorrelated) {
         }
     }
 }
-
-// The regularised upper incomplete gamma function Q(a, x): a series below a + 1, a continued
-// fraction (modified Lentz) above; both converge to double precision for the a and x used here.
-double upper_gamma_q(double a, double x) {
-    if (x <= 0) return 1.0;
-    const double log_prefix = a * std::log(x) - x - std::lgamma(a);
-    if (x < a + 1) {
-        double term = 1.0 / a, sum = term;
-        for (int n = 1; n < 10000 && std::fabs(term) > std::fabs(sum) * 1e-16; ++n) {
-            term *= x / (a + n);
-            sum += term;
-        }
-        return 1.0 - sum * std::exp(log_prefix);
-    }
-    const double tiny = 1e-300;
-    double b = x + 1 - a, c = 1 / tiny, d = 1 / b, h = d;
-    for (int n = 1; n < 10000; ++n) {
-        const double an = -n * (n - a);
-        b += 2;
-        d = an * d + b;
-        if (std::fabs(d) < tiny) d = tiny;
-        c = b + an / c;
-        if (std::fabs(c) < tiny) c = tiny;
-        d = 1 / d;
-        const double step = d * c;
-        h *= step;
-        if (std::fabs(step - 1) < 1e-16) break;
-    }
-    return std::exp(log_prefix) * h;
-}
-
-// P(χ² with `dof` degrees of freedom >= statistic).
-double chi2_p_value(double statistic, int dof) { return upper_gamma_q(dof / 2.0, statistic / 2.0); }
 
 // Pearson's χ² of counts against a uniform expectation.
 double chi2_uniform(const std::vector<int>& counts, double expected) {

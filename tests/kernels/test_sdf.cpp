@@ -17,6 +17,7 @@
 #include <vector>
 
 #include "device/program_cache.hpp"
+#include "device_suite.hpp"
 #include "random_points.hpp"
 #include "render/renderer.hpp"
 #include "scene/parameters.hpp"
@@ -32,10 +33,7 @@ using Reference = std::function<double(dvec3)>;
 
 constexpr std::array kWidths{1, 16};
 
-ComputeDevice& device() {
-    static ComputeDevice opened = open_device(-1);
-    return opened;
-}
+using test::shared_device;
 
 // scene_de's body is `body`, an OpenCL statement list ending in a return. One build, then the
 // DE at each set of points.
@@ -44,7 +42,7 @@ std::vector<std::vector<float>> kernel_de(const std::string& body,
                                           int packet_width) {
     const Scene scene = test::inline_scene("real scene_de(vec3 p, PARAMS) {\n" + body + "\n}\n");
     ProgramCache no_disk_cache{std::filesystem::path()};
-    Renderer renderer(device(), no_disk_cache, scene, {packet_width, 0});
+    Renderer renderer(shared_device(), no_disk_cache, scene, {packet_width, 0});
     std::vector<std::vector<float>> results;
     for (const auto& points : point_sets) {
         results.push_back(renderer.probe_de(points, default_param_values(scene)));
@@ -777,7 +775,7 @@ TEST(SdfGallery, OneLipschitzAroundEveryObjectForEveryParameterExtreme) {
     ASSERT_TRUE(loaded.scene) << loaded.error;
     const Scene& scene = *loaded.scene;
     ProgramCache no_disk_cache{std::filesystem::path()};
-    Renderer renderer(device(), no_disk_cache, scene, {16, 0});
+    Renderer renderer(shared_device(), no_disk_cache, scene, {16, 0});
 
     std::mt19937 rng(23);
     std::uniform_real_distribution<float> unit(-1.0f, 1.0f);
@@ -844,8 +842,8 @@ TEST(SdfGallery, TheBenchmarkScenesCulledUnionsChangeNoDistance) {
     }
     for (int width : kWidths) {
         ProgramCache no_disk_cache{std::filesystem::path()};
-        Renderer with_culling(device(), no_disk_cache, culled, {width, 0});
-        Renderer without(device(), no_disk_cache, plain, {width, 0});
+        Renderer with_culling(shared_device(), no_disk_cache, culled, {width, 0});
+        Renderer without(shared_device(), no_disk_cache, plain, {width, 0});
         const auto values = default_param_values(culled);
         const auto expected = without.probe_de(points, values);
         const auto actual = with_culling.probe_de(points, values);

@@ -29,6 +29,7 @@ extern "C" {
 #include "output/parts/render_parts.hpp"
 #include "render/renderer.hpp"
 #include "scene/parameters.hpp"
+#include "test_files.hpp"
 #include "test_scenes.hpp"
 
 namespace fgr {
@@ -55,14 +56,7 @@ std::vector<std::vector<float>> read_exr_channels(const fs::path& path,
     return channels;
 }
 
-std::vector<std::string> directory_listing(const fs::path& directory) {
-    std::vector<std::string> names;
-    for (const fs::directory_entry& entry : fs::directory_iterator(directory)) {
-        names.push_back(entry.path().filename().string());
-    }
-    std::sort(names.begin(), names.end());
-    return names;
-}
+using test::directory_listing;
 
 // Video packets in the file's video stream: one a frame for the codecs fgr writes.
 long video_frame_count(const fs::path& file) {

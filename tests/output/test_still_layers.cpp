@@ -36,18 +36,18 @@ namespace {
 
 namespace fs = std::filesystem;
 
-constexpr int kWidth = 64, kHeight = 48;
+constexpr int kLayersWidth = 64, kLayersHeight = 48;
 const glm::vec3 kGrey{0.75f, 0.72f, 0.68f};  // the default albedo (fgr_shade.cl, IfsMap::colour)
 
 // A ball of radius `radius` at the origin, seen by `view`: where each pixel's rays meet it.
-struct Ball {
+struct BallInView {
     CameraBasis basis;
     double radius;
 
     // Distance along the ray through image point (px, py) to the ball; -1 where it misses.
     double distance(double px, double py) const {
-        const glm::dvec3 d(
-            primary_ray_direction(basis, kWidth, kHeight, float(px - 0.5), float(py - 0.5)));
+        const glm::dvec3 d(primary_ray_direction(basis, kLayersWidth, kLayersHeight,
+                                                 float(px - 0.5), float(py - 0.5)));
         const glm::dvec3 o = basis.eye;
         const double b = glm::dot(o, d), c = glm::dot(o, o) - radius * radius;
         const double discriminant = b * b - c;
@@ -56,8 +56,8 @@ struct Ball {
     // How far the ray through (px, py) passes from the ball's surface, in radians as seen from
     // the eye: > 0 outside, < 0 inside the silhouette.
     double angle_outside(double px, double py) const {
-        const glm::dvec3 d(
-            primary_ray_direction(basis, kWidth, kHeight, float(px - 0.5), float(py - 0.5)));
+        const glm::dvec3 d(primary_ray_direction(basis, kLayersWidth, kLayersHeight,
+                                                 float(px - 0.5), float(py - 0.5)));
         const glm::dvec3 to_centre = -basis.eye;
         const double centre_angle =
             std::acos(std::clamp(glm::dot(d, glm::normalize(to_centre)), -1.0, 1.0));
@@ -65,15 +65,15 @@ struct Ball {
     }
     // The ball's normal where the ray through (px, py) meets it (which it must).
     glm::dvec3 normal(double px, double py) const {
-        const glm::dvec3 d(
-            primary_ray_direction(basis, kWidth, kHeight, float(px - 0.5), float(py - 0.5)));
+        const glm::dvec3 d(primary_ray_direction(basis, kLayersWidth, kLayersHeight,
+                                                 float(px - 0.5), float(py - 0.5)));
         return glm::normalize(basis.eye + d * distance(px, py));
     }
 };
 
 // How far (radians) the ball's normal turns from the pixel's centre to its corners: how far a
 // normal averaged over samples anywhere in the pixel may lie from the centre's.
-double normal_spread(const Ball& ball, int x, int y) {
+double normal_spread(const BallInView& ball, int x, int y) {
     const glm::dvec3 centre = ball.normal(x + 0.5, y + 0.5);
     double spread = 0.0;
     for (const double dx : {0.0, 1.0}) {
@@ -86,7 +86,7 @@ double normal_spread(const Ball& ball, int x, int y) {
 }
 
 // The angle between a rendered (averaged) normal and the ball's at the pixel's centre.
-double normal_angle(const Ball& ball, int x, int y, glm::dvec3 rendered) {
+double normal_angle(const BallInView& ball, int x, int y, glm::dvec3 rendered) {
     return std::acos(
         std::min(1.0, glm::dot(glm::normalize(rendered), ball.normal(x + 0.5, y + 0.5))));
 }
@@ -95,8 +95,8 @@ enum class Coverage { Inside, Edge, Outside };
 
 // Pixels at least two footprints inside the silhouette are covered by every sample; those two
 // outside by none (the march's hit threshold dilates the surface by about a footprint).
-Coverage classify(const Ball& ball, int x, int y) {
-    const double margin = 2.0 * double(pixel_angle(ball.basis, kWidth));
+Coverage classify(const BallInView& ball, int x, int y) {
+    const double margin = 2.0 * double(pixel_angle(ball.basis, kLayersWidth));
     const double centre = ball.angle_outside(x + 0.5, y + 0.5);
     if (centre < -margin) return Coverage::Inside;
     if (centre > margin) return Coverage::Outside;
@@ -116,7 +116,7 @@ void PrintTo(const LayerCase& c, std::ostream* os) { *os << c.name; }
 IfsScene ifs_ball() {
     IfsScene ifs;
     ifs.id = "ball-test";
-    ifs.name = "Ball test";
+    ifs.name = "BallInView test";
     const double s = 0.5;
     for (const glm::dvec3 corner : {glm::dvec3(1, 1, 1), glm::dvec3(1, -1, -1),
                                     glm::dvec3(-1, 1, -1), glm::dvec3(-1, -1, 1)}) {
@@ -147,7 +147,7 @@ protected:
 struct BallScene {
     Scene scene;
     FrameRequest request;
-    Ball ball;
+    BallInView ball;
 };
 
 BallScene ball_scene(bool ifs, int samples) {
@@ -159,7 +159,8 @@ BallScene ball_scene(bool ifs, int samples) {
         result.scene.cameras.front().view.position = {0.0f, -6.0f, 0.0f};
     }
     const CameraView view = result.scene.cameras.front().view;
-    result.request = FrameRequest{kWidth, kHeight, view, default_param_values(result.scene)};
+    result.request =
+        FrameRequest{kLayersWidth, kLayersHeight, view, default_param_values(result.scene)};
     if (ifs) {
         set_param_from_text(result.scene, result.request.params, "ifs_depth=0");
     } else {
@@ -179,17 +180,17 @@ TEST_P(StillLayersTest, EveryLayerMatchesTheAnalyticBall) {
     const BallScene ball = ball_scene(c.ifs, c.samples);
     Renderer r = renderer(ball.scene, c.mode, true);
     const Frame frame = r.render(ball.request);
-    const size_t pixels = size_t(kWidth) * kHeight;
+    const size_t pixels = size_t(kLayersWidth) * kLayersHeight;
     ASSERT_EQ(frame.alpha.size(), pixels);
     ASSERT_EQ(frame.foreground.size(), pixels * 3);
     ASSERT_EQ(frame.albedo.size(), pixels * 3);
     ASSERT_EQ(frame.normal.size(), pixels * 3);
-    const double footprint = double(pixel_angle(ball.ball.basis, kWidth));
+    const double footprint = double(pixel_angle(ball.ball.basis, kLayersWidth));
     const double normal_error = glm::radians(c.mode == RenderMode::Brute ? 4.0 : 1.0);
     int inside = 0, outside = 0, fractional = 0;
-    for (int y = 0; y < kHeight; ++y) {
-        for (int x = 0; x < kWidth; ++x) {
-            const size_t i = size_t(y) * kWidth + x;
+    for (int y = 0; y < kLayersHeight; ++y) {
+        for (int x = 0; x < kLayersWidth; ++x) {
+            const size_t i = size_t(y) * kLayersWidth + x;
             const float alpha = frame.alpha[i];
             const glm::vec3 albedo(frame.albedo[i * 3], frame.albedo[i * 3 + 1],
                                    frame.albedo[i * 3 + 2]);
@@ -383,9 +384,9 @@ TEST(StillLayersCli, ExrAndPngCarryCoverageAndTheBallsLayers) {
                                         "--fov",
                                         "60",
                                         "--width",
-                                        std::to_string(kWidth),
+                                        std::to_string(kLayersWidth),
                                         "--height",
-                                        std::to_string(kHeight),
+                                        std::to_string(kLayersHeight),
                                         "--spp",
                                         "8",
                                         "--set",
@@ -417,11 +418,11 @@ TEST(StillLayersCli, ExrAndPngCarryCoverageAndTheBallsLayers) {
     ASSERT_EQ(rgba.bit_depth, 8);
     ASSERT_EQ(rgba16.channels, 4);
     ASSERT_EQ(rgba16.bit_depth, 16);
-    const Ball ball{camera_basis(CameraView{{0, -6, 0}, {0, 0, 0}, {0, 0, 1}, 60}), 1.5};
+    const BallInView ball{camera_basis(CameraView{{0, -6, 0}, {0, 0, 0}, {0, 0, 1}, 60}), 1.5};
     int inside = 0, outside = 0, fractional = 0;
-    for (int y = 0; y < kHeight; ++y) {
-        for (int x = 0; x < kWidth; ++x) {
-            const size_t i = size_t(y) * kWidth + x;
+    for (int y = 0; y < kLayersHeight; ++y) {
+        for (int x = 0; x < kLayersWidth; ++x) {
+            const size_t i = size_t(y) * kLayersWidth + x;
             EXPECT_EQ(rgba.samples[i * 4 + 3], std::lround(a[i] * 255.0f)) << x << "," << y;
             EXPECT_EQ(rgba16.samples[i * 4 + 3], std::lround(a[i] * 65535.0f)) << x << "," << y;
             fractional += a[i] > 0.0f && a[i] < 1.0f;
@@ -450,7 +451,7 @@ TEST(StillLayersCli, ExrAndPngCarryCoverageAndTheBallsLayers) {
                 ++inside;
                 EXPECT_EQ(a[i], 1.0f) << x << "," << y;
                 const double t = ball.distance(x + 0.5, y + 0.5);  // sample 0: the centre
-                EXPECT_NEAR(depth[i], t, 2.0 * t * double(pixel_angle(ball.basis, kWidth)));
+                EXPECT_NEAR(depth[i], t, 2.0 * t * double(pixel_angle(ball.basis, kLayersWidth)));
                 EXPECT_LE(normal_angle(ball, x, y, glm::dvec3(nx[i], ny[i], nz[i])),
                           normal_spread(ball, x, y) + glm::radians(1.0))
                     << x << "," << y;

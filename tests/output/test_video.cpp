@@ -26,6 +26,7 @@ extern "C" {
 #include "image/image_io.hpp"
 #include "output/video/video_encoder.hpp"
 #include "output/video/video_timing.hpp"
+#include "test_files.hpp"
 #include "video_decoding.hpp"
 
 namespace fgr {
@@ -34,21 +35,12 @@ namespace fs = std::filesystem;
 
 using test::decode_video;
 using test::DecodedVideo;
+using test::directory_listing;
 using test::run_fgr;
 using test::RunResult;
 
-constexpr int kWidth = 64;
-constexpr int kHeight = 48;
-
-std::vector<std::string> directory_listing(const fs::path& directory) {
-    std::vector<std::string> names;
-    std::error_code error;
-    for (const fs::directory_entry& entry : fs::directory_iterator(directory, error)) {
-        names.push_back(entry.path().filename().string());
-    }
-    std::sort(names.begin(), names.end());
-    return names;
-}
+constexpr int kVideoWidth = 64;
+constexpr int kVideoHeight = 48;
 
 // --- Frame times ---------------------------------------------------------------------------------
 
@@ -104,8 +96,8 @@ TEST(VideoEncoder, LeavesNoFileUnlessFinished) {
     const test::TempDir dir("fgr_video_test");
     const fs::path output = dir.path() / "unfinished.mp4";
     {
-        VideoEncoder encoder(output, VideoSettings{"", kWidth, kHeight, 10.0, {}});
-        encoder.add_frame(grey_image(kWidth, kHeight, 128));
+        VideoEncoder encoder(output, VideoSettings{"", kVideoWidth, kVideoHeight, 10.0, {}});
+        encoder.add_frame(grey_image(kVideoWidth, kVideoHeight, 128));
         EXPECT_EQ(directory_listing(dir.path()).size(), 1u)
             << "the temporary exists while encoding";
         EXPECT_FALSE(fs::exists(output)) << "the output appears only at finish()";
@@ -203,9 +195,9 @@ protected:
                                       "-o",
                                       still.string(),
                                       "--width",
-                                      std::to_string(kWidth),
+                                      std::to_string(kVideoWidth),
                                       "--height",
-                                      std::to_string(kHeight)};
+                                      std::to_string(kVideoHeight)};
         args.insert(args.end(), extra.begin(), extra.end());
         const RunResult result = run(args);
         EXPECT_EQ(result.exit_code, 0) << result;
@@ -215,9 +207,10 @@ protected:
     }
 
     std::vector<std::string> video_args(const std::vector<std::string>& extra) const {
-        std::vector<std::string> args{
-            "video",   "mandelbulb",           "--camera-path", "orbit",
-            "--width", std::to_string(kWidth), "--height",      std::to_string(kHeight)};
+        std::vector<std::string> args{"video",         "mandelbulb",
+                                      "--camera-path", "orbit",
+                                      "--width",       std::to_string(kVideoWidth),
+                                      "--height",      std::to_string(kVideoHeight)};
         args.insert(args.end(), extra.begin(), extra.end());
         return args;
     }

@@ -236,7 +236,7 @@ glm::vec3 at(const std::vector<float>& rgb, int pixel) {
 
 // A cube resting on a floor, lit by the ambient term alone (the one light has intensity 0): a
 // pixel's colour is albedo * ambient * occlusion. As in the effects tests of the DE occlusions.
-Scene crease_scene() {
+Scene brute_crease_scene() {
     Scene scene = test::inline_scene(R"(
 real scene_de(vec3 p, PARAMS) {
     (void)fgr_params;
@@ -254,7 +254,7 @@ real scene_de(vec3 p, PARAMS) {
 
 TEST_F(BruteModeTest, ScreenSpaceOcclusionDarkensACreaseMoreThanAnOpenFace) {
     constexpr int kW = 160, kH = 120;
-    const Scene scene = crease_scene();
+    const Scene scene = brute_crease_scene();
     // A radius of about 12 pixels at the crease.
     const FrameRequest req = request(scene, kW, kH, 8, {"max_distance=8", "ao_radius=0.25"});
     const Frame plain = renderer(scene, RenderMode::Brute)->render(req);

@@ -28,8 +28,8 @@
 namespace fgr {
 namespace {
 
-constexpr int kWidth = 96;
-constexpr int kHeight = 64;
+constexpr int kEffectsWidth = 96;
+constexpr int kEffectsHeight = 64;
 
 // Ambient term of fgr_shade.cl (FGR_AMBIENT) times the default albedo's green (0.72).
 constexpr float kAmbientGreen = 0.06f * 0.72f;
@@ -46,7 +46,7 @@ protected:
     // The scene's default view with predictable colour (clamp, exposure 1) plus `assignments`.
     static FrameRequest request(const Scene& scene,
                                 const std::vector<std::string>& assignments = {}, int samples = 1) {
-        FrameRequest result{kWidth, kHeight, scene.cameras.front().view,
+        FrameRequest result{kEffectsWidth, kEffectsHeight, scene.cameras.front().view,
                             default_param_values(scene)};
         set_param_from_text(scene, result.params, "tone_map=clamp");
         set_param_from_text(scene, result.params, "exposure=1");
@@ -68,11 +68,12 @@ float green(const Frame& frame, int pixel) { return frame.linear[pixel * 3 + 1];
 std::vector<std::optional<glm::vec3>> hit_points(const Frame& frame, const CameraView& view) {
     const CameraBasis basis = camera_basis(view);
     std::vector<std::optional<glm::vec3>> points(frame.depth.size());
-    for (int y = 0; y < kHeight; ++y) {
-        for (int x = 0; x < kWidth; ++x) {
-            const int pixel = y * kWidth + x;
+    for (int y = 0; y < kEffectsHeight; ++y) {
+        for (int x = 0; x < kEffectsWidth; ++x) {
+            const int pixel = y * kEffectsWidth + x;
             if (frame.depth[pixel] < 0.0f) continue;
-            const glm::vec3 dir = primary_ray_direction(basis, kWidth, kHeight, float(x), float(y));
+            const glm::vec3 dir =
+                primary_ray_direction(basis, kEffectsWidth, kEffectsHeight, float(x), float(y));
             points[pixel] = glm::vec3(view.position) + dir * frame.depth[pixel];
         }
     }
@@ -374,12 +375,12 @@ TEST_F(EffectTest, SampledOcclusionReachesAsFarAsItsRadius) {
 // Chebyshev distance in pixels from each pixel to the nearest hit (0 on hits), capped at 99.
 std::vector<int> pixels_to_surface(const Frame& frame) {
     std::vector<int> distance(frame.depth.size(), 99);
-    for (int y = 0; y < kHeight; ++y) {
-        for (int x = 0; x < kWidth; ++x) {
-            if (frame.depth[y * kWidth + x] < 0.0f) continue;
-            for (int v = std::max(0, y - 12); v < std::min(kHeight, y + 13); ++v) {
-                for (int u = std::max(0, x - 12); u < std::min(kWidth, x + 13); ++u) {
-                    int& d = distance[v * kWidth + u];
+    for (int y = 0; y < kEffectsHeight; ++y) {
+        for (int x = 0; x < kEffectsWidth; ++x) {
+            if (frame.depth[y * kEffectsWidth + x] < 0.0f) continue;
+            for (int v = std::max(0, y - 12); v < std::min(kEffectsHeight, y + 13); ++v) {
+                for (int u = std::max(0, x - 12); u < std::min(kEffectsWidth, x + 13); ++u) {
+                    int& d = distance[v * kEffectsWidth + u];
                     d = std::min(d, std::max(std::abs(u - x), std::abs(v - y)));
                 }
             }
@@ -401,14 +402,14 @@ TEST_F(EffectTest, GlowBrightensNearMissesOnly) {
 
     const auto distance = pixels_to_surface(plain);
     std::vector<int> hits, next_to, further, corners;
-    for (int pixel = 0; pixel < kWidth * kHeight; ++pixel) {
+    for (int pixel = 0; pixel < kEffectsWidth * kEffectsHeight; ++pixel) {
         if (distance[pixel] == 0) hits.push_back(pixel);
         if (distance[pixel] == 1) next_to.push_back(pixel);
         if (distance[pixel] == 6) further.push_back(pixel);
     }
-    for (int y : {0, 1, 2, kHeight - 3, kHeight - 2, kHeight - 1}) {
-        for (int x : {0, 1, 2, kWidth - 3, kWidth - 2, kWidth - 1})
-            corners.push_back(y * kWidth + x);
+    for (int y : {0, 1, 2, kEffectsHeight - 3, kEffectsHeight - 2, kEffectsHeight - 1}) {
+        for (int x : {0, 1, 2, kEffectsWidth - 3, kEffectsWidth - 2, kEffectsWidth - 1})
+            corners.push_back(y * kEffectsWidth + x);
     }
     EXPECT_EQ(max_abs_difference(glowing, plain, hits), 0.0);
     EXPECT_LT(max_abs_difference(glowing, plain, corners), 1e-3);
@@ -449,7 +450,7 @@ TEST_F(EffectTest, FogTakesFarSurfacesTowardsTheFogColourByDistance) {
         return glm::dot(pixel_rgb(fogged, p) - own, fog_colour - own) /
                glm::dot(fog_colour - own, fog_colour - own);
     };
-    for (int pixel = 0; pixel < kWidth * kHeight; ++pixel) {
+    for (int pixel = 0; pixel < kEffectsWidth * kEffectsHeight; ++pixel) {
         const float depth = plain.depth[pixel];
         if (depth < 0.0f) continue;
         if (depth < 2.5f) near.push_back(pixel);
@@ -473,11 +474,11 @@ real scene_de(vec3 p, PARAMS) {
 )");
     const Frame plain = renderer(scene, 0)->render(request(scene));
     const Frame clear = renderer(scene, FGR_EFFECT_FOG)->render(request(scene, {"fog_density=0"}));
-    ASSERT_EQ(plain.hits, kWidth * kHeight);
+    ASSERT_EQ(plain.hits, kEffectsWidth * kEffectsHeight);
     EXPECT_EQ(clear.image.rgb, plain.image.rgb);
     // mix(fog, colour, 1) rounds: the same up to float precision.
-    std::vector<int> all(kWidth * kHeight);
-    for (int pixel = 0; pixel < kWidth * kHeight; ++pixel) all[pixel] = pixel;
+    std::vector<int> all(kEffectsWidth * kEffectsHeight);
+    for (int pixel = 0; pixel < kEffectsWidth * kEffectsHeight; ++pixel) all[pixel] = pixel;
     EXPECT_LT(max_abs_difference(clear, plain, all), 1e-6);
 }
 
@@ -486,9 +487,10 @@ TEST_F(EffectTest, FogOfDensityZeroLeavesTheSkyAsWithoutFog) {
     const Scene scene = floor_scene();
     const Frame plain = renderer(scene, 0)->render(request(scene));
     const Frame clear = renderer(scene, FGR_EFFECT_FOG)->render(request(scene, {"fog_density=0"}));
-    ASSERT_LT(plain.hits, kWidth * kHeight / 2 + kWidth * 4);  // the upper half is sky
+    ASSERT_LT(plain.hits,
+              kEffectsWidth * kEffectsHeight / 2 + kEffectsWidth * 4);  // the upper half is sky
     std::vector<int> sky;
-    for (int pixel = 0; pixel < kWidth * kHeight; ++pixel) {
+    for (int pixel = 0; pixel < kEffectsWidth * kEffectsHeight; ++pixel) {
         if (plain.depth[pixel] < 0.0f) sky.push_back(pixel);
     }
     EXPECT_LT(max_abs_difference(clear, plain, sky), 1e-6)
@@ -607,11 +609,11 @@ struct EdgeProfile {
 EdgeProfile edge_profile(const Frame& frame, const Frame& sharp, int x, int top) {
     EdgeProfile profile;
     for (int column = x - 1; column <= x + 1; ++column) {
-        const float sky = green(sharp, (top - 8) * kWidth + column);
-        const float surface = green(sharp, (top + 3) * kWidth + column);
+        const float sky = green(sharp, (top - 8) * kEffectsWidth + column);
+        const float surface = green(sharp, (top + 3) * kEffectsWidth + column);
         float previous = 0.0f;
         for (int row = top - 7; row <= top + 3; ++row) {
-            const float f = (green(frame, row * kWidth + column) - sky) / (surface - sky);
+            const float f = (green(frame, row * kEffectsWidth + column) - sky) / (surface - sky);
             profile.transition_rows += f > 0.1f && f < 0.9f;
             if (row > top - 7)
                 profile.steepest = std::max(profile.steepest, std::abs(f - previous));
@@ -629,11 +631,11 @@ TEST_F(EffectTest, DepthOfFieldBlursOnlyWhatIsOutOfFocus) {
 
     // Each sphere's topmost pixel, found in the sharp image by its depth.
     const auto top_of = [&](float min_depth, float max_depth, int* x, int* y) {
-        for (int pixel = 0; pixel < kWidth * kHeight; ++pixel) {
+        for (int pixel = 0; pixel < kEffectsWidth * kEffectsHeight; ++pixel) {
             const float depth = sharp.depth[pixel];
             if (depth >= min_depth && depth <= max_depth) {
-                *x = pixel % kWidth;
-                *y = pixel / kWidth;
+                *x = pixel % kEffectsWidth;
+                *y = pixel / kEffectsWidth;
                 return true;
             }
         }
@@ -849,7 +851,8 @@ TEST_F(EffectTest, RefractionShowsWhatIsBehindTheGlassFlipped) {
     const Frame clear_flat = glass->render(request(scene, {"absorption=0", "ior=1"}));
     const Frame lens = glass->render(req);
     // A pixel a little left of the sphere's centre, on the sphere in every image.
-    const int left_of_centre = (kHeight / 2) * kWidth + kWidth / 2 - kWidth / 16;
+    const int left_of_centre =
+        (kEffectsHeight / 2) * kEffectsWidth + kEffectsWidth / 2 - kEffectsWidth / 16;
     ASSERT_GT(opaque.depth[left_of_centre], 0.0f);
     ASSERT_LT(opaque.depth[left_of_centre], 3.0f);  // the sphere, not the wall
     // Opaque: the sphere's own grey. Index 1: rays pass straight through to the red wall half.
@@ -858,7 +861,7 @@ TEST_F(EffectTest, RefractionShowsWhatIsBehindTheGlassFlipped) {
     EXPECT_GT(redness_minus_blueness(clear_flat, left_of_centre), 0.2f);
     EXPECT_LT(redness_minus_blueness(lens, left_of_centre), -0.2f);
     // The wall itself, seen beside the sphere, is untouched.
-    EXPECT_EQ(pixel_rgb(lens, kWidth * 2), pixel_rgb(opaque, kWidth * 2));
+    EXPECT_EQ(pixel_rgb(lens, kEffectsWidth * 2), pixel_rgb(opaque, kEffectsWidth * 2));
     // Absorption darkens what is seen through the glass.
     const Frame absorbing = glass->render(request(scene, {"absorption=4"}));
     EXPECT_LT(glm::length(pixel_rgb(absorbing, left_of_centre)),
@@ -1018,10 +1021,11 @@ real scene_de(vec3 p, PARAMS) { return param_scale * unit_de(v3_scale(p, 1.0f / 
         };
         const Frame full = render_at(1.0f);
         const Frame small = render_at(1e-5f);
-        ASSERT_GT(full.hits, kWidth * kHeight / 2);
+        ASSERT_GT(full.hits, kEffectsWidth * kEffectsHeight / 2);
         const int differ = pixels_off_by_more_than_1_lsb(full.image, small.image);
-        EXPECT_LE(differ, kWidth * kHeight / 100)
-            << differ << " of " << kWidth * kHeight << " pixels differ by more than 1 LSB";
+        EXPECT_LE(differ, kEffectsWidth * kEffectsHeight / 100)
+            << differ << " of " << kEffectsWidth * kEffectsHeight
+            << " pixels differ by more than 1 LSB";
     }
 }
 

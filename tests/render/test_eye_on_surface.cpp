@@ -15,7 +15,7 @@
 namespace fgr {
 namespace {
 
-constexpr int kWidth = 48, kHeight = 32;
+constexpr int kEyeOnSurfaceWidth = 48, kEyeOnSurfaceHeight = 32;
 
 Frame render_from(const Scene& scene, const CameraView& view, RenderMode mode, bool stats) {
     static const ComputeDevice device = open_device(-1);
@@ -24,8 +24,8 @@ Frame render_from(const Scene& scene, const CameraView& view, RenderMode mode, b
     switches.mode = mode;
     Renderer renderer(device, cache, scene, switches);
     FrameRequest request;
-    request.width = kWidth;
-    request.height = kHeight;
+    request.width = kEyeOnSurfaceWidth;
+    request.height = kEyeOnSurfaceHeight;
     request.view = view;
     request.params = default_param_values(scene);
     if (mode == RenderMode::Path) request.samples = 2;
@@ -53,16 +53,17 @@ TEST(EyeOnSurface, MandelboxFromTheOriginRendersShadedWithoutRunningOutOfSteps) 
     const MarchStats& stats = *frame.stats;
     const int max_steps =
         static_cast<int>(param_value(mandelbox, default_param_values(mandelbox), "max_steps"));
-    EXPECT_GT(frame.hits, long{kWidth * kHeight} * 9 / 10) << "the origin is inside the solid";
+    EXPECT_GT(frame.hits, long{kEyeOnSurfaceWidth * kEyeOnSurfaceHeight} * 9 / 10)
+        << "the origin is inside the solid";
     EXPECT_LT(stats.mean_steps, 0.5 * max_steps);
-    EXPECT_LE(stats.out_of_steps, long{kWidth * kHeight} / 100);
+    EXPECT_LE(stats.out_of_steps, long{kEyeOnSurfaceWidth * kEyeOnSurfaceHeight} / 100);
 }
 
 // The path mode's camera rays march the same way.
 TEST(EyeOnSurface, MandelboxFromTheOriginRendersInThePathMode) {
     const Scene mandelbox = test::built_scene("mandelbox.so");
     const Frame frame = render_from(mandelbox, from_origin(), RenderMode::Path, false);
-    EXPECT_GT(frame.hits, long{kWidth * kHeight} / 2);
+    EXPECT_GT(frame.hits, long{kEyeOnSurfaceWidth * kEyeOnSurfaceHeight} / 2);
 }
 
 // A camera just inside a sphere (DE -0.01 at the eye) looking at its centre: every ray starts in

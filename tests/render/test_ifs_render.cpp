@@ -50,7 +50,7 @@ IfsScene sierpinski() {
 }
 
 // A file from this build's plugin folder (plugins/ifs/).
-IfsScene shipped(const std::string& file) {
+IfsScene shipped_ifs(const std::string& file) {
     return read_ifs_file(std::filesystem::path(FGR_TEST_PLUGIN_DIR) / file);
 }
 
@@ -121,7 +121,7 @@ TEST_F(IfsRenderTest, KernelHitsAndDistancesMatchTheReferenceTraversal) {
     const IfsScene balls = sierpinski();
     cases.emplace_back(balls, balls.cameras[0].view);
     cases.emplace_back(balls, CameraView{{0.9, -1.3, 1.2}, {0.5, 0.4, 0.4}, {0, 0, 1}, 40});
-    const IfsScene cubes = shipped("menger.ifs.json");
+    const IfsScene cubes = shipped_ifs("menger.ifs.json");
     ASSERT_FALSE(cubes.leaf.planes.empty());
     cases.emplace_back(cubes, cubes.cameras[0].view);
     cases.emplace_back(cubes, CameraView{{0.3, -1.6, 0.5}, {0.1, 0.0, 0.2}, {0, 0, 1}, 60});
@@ -199,7 +199,7 @@ TEST_F(IfsRenderTest, EveryPacketWidthRendersTheSameImage) {
 TEST_F(IfsRenderTest, ShippedSierpinskiAndMengerMatchTheirDistanceEstimatedScenes) {
     for (const auto& [ifs_file, de_file] : {std::pair{"sierpinski.ifs.json", "sierpinski.so"},
                                             std::pair{"menger.ifs.json", "menger.so"}}) {
-        const Scene exact = scene_of(shipped(ifs_file));
+        const Scene exact = scene_of(shipped_ifs(ifs_file));
         const Scene de = test::built_scene(de_file);
         const int width = 128, height = 96;
         for (const int depth : {2, 3, 4}) {
@@ -232,7 +232,7 @@ TEST_F(IfsRenderTest, ShippedSierpinskiAndMengerMatchTheirDistanceEstimatedScene
 // default camera with ball leaves, averaging 8 levels brings the mean error from 38 degrees (the
 // leaf's own ball) to 21 (measured; no better beyond 6 levels at this depth).
 TEST(IfsNormals, AveragingLevelsBringsBallNormalsTowardsTheFaces) {
-    IfsScene sponge = shipped("menger.ifs.json");
+    IfsScene sponge = shipped_ifs("menger.ifs.json");
     sponge.leaf = IfsLeaf{};  // balls
     const int width = 160, height = 120;
     const CameraBasis basis = camera_basis(sponge.cameras[0].view);
@@ -323,7 +323,7 @@ TEST_F(IfsRenderTest, PathModeTracesIfsGeometry) {
                      normal_errors.end());
     EXPECT_LT(normal_errors[normal_errors.size() / 2], 0.25);
 
-    const IfsScene sponge = shipped("menger.ifs.json");
+    const IfsScene sponge = shipped_ifs("menger.ifs.json");
     const Scene sponge_scene = scene_of(sponge);
     Renderer sponge_renderer(*device_, cache_, sponge_scene, switches);
     FrameRequest face{48, 36, sponge.cameras[1].view, default_param_values(sponge_scene)};
@@ -345,7 +345,7 @@ TEST_F(IfsRenderTest, PathModeTracesIfsGeometry) {
 // traced again depth first, which finds the same hits at the same distances, and the stats count
 // them. Here the heap holds 4 nodes instead of kIfsHeapCapacity.
 TEST_F(IfsRenderTest, AFullHeapFallsBackToAnExactDepthFirstTrace) {
-    const IfsScene sponge = shipped("menger.ifs.json");
+    const IfsScene sponge = shipped_ifs("menger.ifs.json");
     const Scene roomy = scene_of(sponge);
     Scene cramped = roomy;
     const std::string heap_line = "#define FGR_IFS_HEAP " + std::to_string(kIfsHeapCapacity) + "\n";
@@ -370,7 +370,7 @@ TEST_F(IfsRenderTest, AFullHeapFallsBackToAnExactDepthFirstTrace) {
 // inside the sponge's central tunnel (where the bounding ball's own distance is negative) it is
 // the way to the tunnel's walls, 1/3 away.
 TEST(IfsDistanceBound, IsALowerBoundThatTheViewerCanFlyBy) {
-    const IfsScene sponge = shipped("menger.ifs.json");
+    const IfsScene sponge = shipped_ifs("menger.ifs.json");
     std::vector<glm::dvec3> points;
     glm::dvec3 x(0.0);
     uint32_t state = 12345u;

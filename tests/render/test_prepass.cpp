@@ -28,8 +28,8 @@
 namespace fgr::test {
 namespace {
 
-constexpr int kWidth = 240;
-constexpr int kHeight = 180;
+constexpr int kPrepassWidth = 240;
+constexpr int kPrepassHeight = 180;
 // Of all pixels: where the hit/miss may differ. Of the pixels both hit: where the depth may lie
 // outside the footprint's band.
 constexpr double kMaxHitDisagreement = 0.001;
@@ -118,8 +118,8 @@ protected:
 
     static FrameRequest default_request(const Scene& scene) {
         FrameRequest request;
-        request.width = kWidth;
-        request.height = kHeight;
+        request.width = kPrepassWidth;
+        request.height = kPrepassHeight;
         request.view = scene.cameras.front().view;
         request.params = default_param_values(scene);
         return request;
@@ -261,7 +261,8 @@ TEST_F(PrepassViews, TheStatsCountTheConesAndFewerEvaluations) {
     ASSERT_TRUE(plain.stats && started.stats);
     EXPECT_EQ(plain.stats->prepass_de_evaluations, 0);
     // One cone per 8x8 block takes at least one step.
-    EXPECT_GE(started.stats->prepass_de_evaluations, long{(kWidth / 8) * (kHeight / 8)});
+    EXPECT_GE(started.stats->prepass_de_evaluations,
+              long{(kPrepassWidth / 8) * (kPrepassHeight / 8)});
     EXPECT_LT(started.stats->de_evaluations, plain.stats->de_evaluations * 17 / 20);
 }
 

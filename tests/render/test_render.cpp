@@ -8,6 +8,7 @@
 
 #include "camera/camera.hpp"
 #include "device/program_cache.hpp"
+#include "image_compare.hpp"
 #include "mandelbulb_reference.hpp"
 #include "render/renderer.hpp"
 #include "scene/parameters.hpp"
@@ -49,11 +50,7 @@ protected:
 ComputeDevice* RenderTest::device_ = nullptr;
 Scene* RenderTest::mandelbulb_ = nullptr;
 
-double mean_abs_difference(const Image8& a, const Image8& b) {
-    double sum = 0.0;
-    for (size_t i = 0; i < a.rgb.size(); ++i) sum += std::abs(int(a.rgb[i]) - int(b.rgb[i]));
-    return sum / static_cast<double>(a.rgb.size());
-}
+using test::mean_abs_difference;
 
 TEST_F(RenderTest, CanonicalViewHitsMatchAScalarReferenceMarch) {
     const long expected = test::canonical_view_hits(160, 120, test::BulbParams{});

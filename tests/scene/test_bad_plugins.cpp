@@ -43,13 +43,15 @@
 #include "scene/plugin_loader.hpp"
 #include "scene/render_mode.hpp"
 #include "scene/scene_file.hpp"
+#include "test_files.hpp"
+#include "test_math.hpp"
 
 namespace fgr {
 namespace {
 namespace fs = std::filesystem;
 
 const fs::path kBadDir = fs::path(FGR_TEST_FIXTURE_DIR) / "bad";
-const fs::path kPluginDir = FGR_TEST_PLUGIN_DIR;
+using test::kPluginDir;
 
 bool is_one_line(const std::string& text) {
     return text.find_first_of("\n\r") == std::string::npos;
@@ -363,8 +365,8 @@ TEST(BadPlugin, RealPluginsStillLoadAfterAllTheBadOnes) {
 // Reproduce a failure with FGR_FUZZ_CASE=<case seed> (printed with it); FGR_FUZZ_CASES=<n> runs
 // more or fewer cases.
 
-constexpr uint64_t kFuzzSeed = 0x46475246757a7a31;  // "FGRFuzz1"
-constexpr int kFuzzCases = 20000;
+constexpr uint64_t kDescriptionFuzzSeed = 0x46475246757a7a31;  // "FGRFuzz1"
+constexpr int kDescriptionFuzzCases = 20000;
 
 using Rng = test::FuzzRng;
 
@@ -387,7 +389,7 @@ private:
 };
 
 constexpr float kInf = std::numeric_limits<float>::infinity();
-constexpr float kNaN = std::numeric_limits<float>::quiet_NaN();
+using test::kNaN;
 
 const float kNastyFloats[] = {
     kNaN,    -kNaN,    kInf,        -kInf,    0.0f,   -0.0f,   FLT_TRUE_MIN, -FLT_TRUE_MIN,
@@ -1274,7 +1276,7 @@ void check_accepted(const Scene& scene, const fgr_scene_desc& desc) {
 // Found by the fuzzer: a refusal quoted a bad id as it was, so a newline in it split the one-line
 // reason (and an escape sequence reached the terminal through the log).
 TEST(BadPlugin, RefusalsEscapeNonPrintableBytesInQuotedPluginText) {
-    Rng rng(kFuzzSeed);
+    Rng rng(kDescriptionFuzzSeed);
     Arena arena;
     const auto refusal = [&](const std::function<void(DescSpec&)>& change) {
         DescSpec spec = random_valid_spec(rng, arena);
@@ -1373,11 +1375,12 @@ TEST(PluginFuzz, CopySceneDescriptionSurvivesMutatedDescriptions) {
         run_fuzz_case(*only, tally);
         return;
     }
-    const int cases = static_cast<int>(env_number("FGR_FUZZ_CASES").value_or(kFuzzCases));
+    const int cases =
+        static_cast<int>(env_number("FGR_FUZZ_CASES").value_or(kDescriptionFuzzCases));
     int failing_cases = 0;
     for (int i = 0; i < cases; ++i) {
         const int failures_before = failed_parts();
-        run_fuzz_case(kFuzzSeed + static_cast<uint64_t>(i), tally);
+        run_fuzz_case(kDescriptionFuzzSeed + static_cast<uint64_t>(i), tally);
         if (failed_parts() > failures_before && ++failing_cases == 10) {
             ADD_FAILURE() << "stopping after 10 failing cases";
             break;

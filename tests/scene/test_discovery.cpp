@@ -15,13 +15,14 @@
 #include "scene/discovery.hpp"
 #include "scene/plugin_loader.hpp"
 #include "scene/scene_index.hpp"
+#include "test_files.hpp"
 
 namespace fgr {
 namespace {
 namespace fs = std::filesystem;
 
-const fs::path kFixtureDir = FGR_TEST_FIXTURE_DIR;
-const fs::path kPluginDir = FGR_TEST_PLUGIN_DIR;
+using test::kFixtureDir;
+using test::kPluginDir;
 
 // Sets (or unsets) an environment variable for one test and restores the old value afterwards.
 class ScopedEnv {
@@ -46,7 +47,7 @@ private:
     std::optional<std::string> old_value_;
 };
 
-const SkippedPlugin* find_skipped(const Discovery& discovery, const std::string& file_name) {
+const SkippedPlugin* find_skipped_named(const Discovery& discovery, const std::string& file_name) {
     for (const SkippedPlugin& skipped : discovery.skipped) {
         if (skipped.file.filename() == file_name) return &skipped;
     }
@@ -55,7 +56,7 @@ const SkippedPlugin* find_skipped(const Discovery& discovery, const std::string&
 
 void expect_skipped(const Discovery& discovery, const std::string& file_name,
                     const std::string& reason_part) {
-    const SkippedPlugin* skipped = find_skipped(discovery, file_name);
+    const SkippedPlugin* skipped = find_skipped_named(discovery, file_name);
     ASSERT_NE(skipped, nullptr) << file_name << " was not skipped";
     EXPECT_NE(skipped->reason.find(reason_part), std::string::npos)
         << file_name << ": reason was: " << skipped->reason
@@ -109,7 +110,7 @@ TEST(Discovery, FirstOfDuplicateIdsWins) {
 TEST(Discovery, ScansADirectoryListedTwiceOnce) {
     const Discovery discovery = discover_scenes({kFixtureDir, kFixtureDir / "." / ""});
     EXPECT_EQ(discovery.scenes.size(), 1u);
-    EXPECT_EQ(find_skipped(discovery, "good_scene.so"), nullptr);
+    EXPECT_EQ(find_skipped_named(discovery, "good_scene.so"), nullptr);
 }
 
 TEST(Discovery, IgnoresMissingDirectoriesAndNonDirectories) {

@@ -16,7 +16,7 @@ namespace {
 
 namespace fs = std::filesystem;
 
-FormulaScene shipped(const std::string& id) {
+FormulaScene shipped_formula(const std::string& id) {
     return read_formula_file(fs::path(FGR_TEST_FORMULA_DIR) / (id + ".formula.json"));
 }
 
@@ -41,7 +41,7 @@ std::vector<std::string> param_ids(const Scene& scene) {
 }
 
 TEST(FormulaEdit, AddingAFormulaMakesAHybridWithPrefixedParameters) {
-    const FormulaScene bulb = shipped("mandelbulb-formula");
+    const FormulaScene bulb = shipped_formula("mandelbulb-formula");
     ASSERT_EQ(names(bulb), std::vector<std::string>{"mandelbulb"});
     const Formula& box = library("amazing_box");
     const FormulaScene hybrid = with_formula_added(bulb, box);
@@ -67,7 +67,7 @@ TEST(FormulaEdit, AddingAFormulaMakesAHybridWithPrefixedParameters) {
 }
 
 TEST(FormulaEdit, MovingAndRepeatingReorderTheKernelsLoop) {
-    const FormulaScene hybrid = shipped("bulb-box");
+    const FormulaScene hybrid = shipped_formula("bulb-box");
     ASSERT_EQ(names(hybrid), (std::vector<std::string>{"mandelbulb", "amazing_box"}));
     const FormulaScene moved = with_slot_moved(hybrid, 1, -1);
     EXPECT_EQ(names(moved), (std::vector<std::string>{"amazing_box", "mandelbulb"}));
@@ -84,7 +84,7 @@ TEST(FormulaEdit, MovingAndRepeatingReorderTheKernelsLoop) {
 }
 
 TEST(FormulaEdit, RemovingASlotGivesBackTheSettingsOfTheRest) {
-    const FormulaScene kifs = shipped("menger-kifs");
+    const FormulaScene kifs = shipped_formula("menger-kifs");
     ASSERT_EQ(kifs.distance, FormulaDistance::Own);
     const FormulaScene hybrid = with_formula_added(kifs, library("amazing_box"));
     EXPECT_EQ(hybrid.distance, FormulaDistance::Linear)
@@ -96,16 +96,17 @@ TEST(FormulaEdit, RemovingASlotGivesBackTheSettingsOfTheRest) {
     // A formula without an estimate makes the hybrid an inside test, and takes it away with it;
     // a bicomplex formula's own distance holds alone, not in a hybrid.
     const FormulaScene lambda =
-        with_formula_added(shipped("mandelbulb-formula"), library("lambdabulb"));
+        with_formula_added(shipped_formula("mandelbulb-formula"), library("lambdabulb"));
     EXPECT_EQ(lambda.estimate, FormulaEstimate::Inside);
     EXPECT_EQ(with_slot_removed(lambda, 1).estimate, FormulaEstimate::Analytic);
-    const FormulaScene bicomplex = with_formula_added(shipped("tetrabrot"), library("mandelbulb"));
+    const FormulaScene bicomplex =
+        with_formula_added(shipped_formula("tetrabrot"), library("mandelbulb"));
     EXPECT_EQ(bicomplex.estimate, FormulaEstimate::Inside);
     const FormulaScene tetrabrot_alone = with_slot_removed(bicomplex, 1);
     EXPECT_EQ(tetrabrot_alone.distance, FormulaDistance::Own);
     EXPECT_EQ(tetrabrot_alone.estimate, FormulaEstimate::Analytic);
 
-    const FormulaScene bulb = shipped("mandelbulb-formula");
+    const FormulaScene bulb = shipped_formula("mandelbulb-formula");
     const FormulaScene with_quaternion = with_formula_added(bulb, library("quaternion"));
     EXPECT_EQ(with_quaternion.max_bailout,
               std::min(bulb.max_bailout, library("quaternion").max_bailout));
@@ -113,7 +114,7 @@ TEST(FormulaEdit, RemovingASlotGivesBackTheSettingsOfTheRest) {
 }
 
 TEST(FormulaEdit, EditsBeyondTheLimitsAreRefusedInOneLine) {
-    FormulaScene scene = shipped("mandelbulb-formula");
+    FormulaScene scene = shipped_formula("mandelbulb-formula");
     const auto refused = [](auto edit, const std::string& words) {
         try {
             edit();
@@ -139,7 +140,7 @@ TEST(FormulaEdit, EditsBeyondTheLimitsAreRefusedInOneLine) {
 }
 
 TEST(FormulaEdit, TheUsersValuesTravelWithTheirSlots) {
-    const FormulaScene hybrid = shipped("bulb-box");
+    const FormulaScene hybrid = shipped_formula("bulb-box");
     const Scene before = formula_scene_to_scene(hybrid, "bulb-box.formula.json");
     std::vector<float> values = default_param_values(before);
     set_param_from_text(before, values, "f1_power=5");
@@ -165,7 +166,7 @@ TEST(FormulaEdit, TheUsersValuesTravelWithTheirSlots) {
 // the slots carrying their values (not ids) gives each its own.
 TEST(FormulaEdit, SwappedSlotsOfOneFormulaSwapTheirValues) {
     const FormulaScene twice =
-        with_formula_added(shipped("mandelbulb-formula"), library("mandelbulb"));
+        with_formula_added(shipped_formula("mandelbulb-formula"), library("mandelbulb"));
     const Scene before = formula_scene_to_scene(twice, "twice.formula.json");
     std::vector<float> values = default_param_values(before);
     set_param_from_text(before, values, "f1_power=5");
@@ -187,7 +188,8 @@ TEST(FormulaEdit, SavedScenesReadBackAsTheSameScene) {
         if (is_formula_file_name(entry.path())) scenes.push_back(read_formula_file(entry.path()));
     }
     ASSERT_GE(scenes.size(), 36u);
-    FormulaScene edited = with_formula_added(shipped("menger-kifs"), library("amazing_box"));
+    FormulaScene edited =
+        with_formula_added(shipped_formula("menger-kifs"), library("amazing_box"));
     edited = with_repeat(edited, 1, 3);
     edited.sequence[0].values[0] = {2.5f, 2.5f, 2.5f};
     scenes.push_back(edited);

@@ -48,7 +48,7 @@ FormulaScene parse(const json& doc) { return parse_formula_json(doc.dump(), "tes
 
 Scene scene_of(const json& doc) { return formula_scene_to_scene(parse(doc), "test.formula.json"); }
 
-std::vector<fs::path> shipped_files() {
+std::vector<fs::path> shipped_formula_files() {
     std::vector<fs::path> files;
     for (const auto& entry : fs::directory_iterator(FGR_TEST_FORMULA_DIR)) {
         if (is_formula_file_name(entry.path())) files.push_back(entry.path());
@@ -94,7 +94,7 @@ TEST(FormulaLibrary, EveryFormulaHasItsKernelFunctionsInItsFamilysFile) {
 TEST(FormulaLibrary, TheShippedFilesCoverThirtyFormulasAndFiveHybrids) {
     std::set<std::string> alone;
     int hybrids = 0;
-    for (const fs::path& file : shipped_files()) {
+    for (const fs::path& file : shipped_formula_files()) {
         const FormulaScene scene = read_formula_file(file);
         EXPECT_EQ(file.filename().string(), scene.id + ".formula.json");
         if (scene.sequence.size() == 1) alone.insert(scene.sequence[0].formula->name);
@@ -106,7 +106,7 @@ TEST(FormulaLibrary, TheShippedFilesCoverThirtyFormulasAndFiveHybrids) {
 
 // --- Reading files ----------------------------------------------------------------------------
 
-struct Refusal {
+struct FormulaRefusal {
     const char* name;
     json doc;
     const char* says;
@@ -114,7 +114,7 @@ struct Refusal {
 
 TEST(FormulaFile, RefusesBadDocumentsInOneLineNamingTheFile) {
     const json bulb = {{"formula", "mandelbulb"}};
-    std::vector<Refusal> cases = {
+    std::vector<FormulaRefusal> cases = {
         {"unknown formula", document({{{"formula", "mandelblub"}}}),
          "unknown formula 'mandelblub'"},
         {"no sequence", document(json::array()), "\"sequence\" has 0 entries"},
@@ -192,7 +192,7 @@ TEST(FormulaFile, RefusesBadDocumentsInOneLineNamingTheFile) {
     json many = json::array();
     for (std::size_t i = 0; i <= kFormulaMaxSlots; ++i) many.push_back(bulb);
     cases.push_back({"too many slots", document(many), "\"sequence\" has 17 entries"});
-    for (const Refusal& refusal : cases) {
+    for (const FormulaRefusal& refusal : cases) {
         try {
             (void)parse(refusal.doc);
             ADD_FAILURE() << refusal.name << ": accepted";
@@ -224,7 +224,7 @@ TEST(FormulaFile, DefaultsComeFromTheFormulasAndHybridsPrefixTheirParameters) {
 
 TEST(FormulaFuzz, ParsesOrRefusesEveryMutatedFile) {
     std::vector<std::string> seeds;
-    for (const fs::path& file : shipped_files()) seeds.push_back(test::read_file(file));
+    for (const fs::path& file : shipped_formula_files()) seeds.push_back(test::read_file(file));
     ASSERT_FALSE(seeds.empty());
     test::FuzzRng seeder(0x466f726d756c6131);  // "Formula1"
     int accepted = 0;

@@ -32,6 +32,7 @@
 #include "scene/discovery.hpp"
 #include "scene/ifs/ifs.hpp"
 #include "scene/scene_file.hpp"
+#include "test_files.hpp"
 
 namespace fgr {
 namespace {
@@ -39,9 +40,10 @@ namespace fs = std::filesystem;
 using nlohmann::json;
 
 const fs::path kIfsDir = FGR_TEST_IFS_DIR;
-const fs::path kPluginDir = FGR_TEST_PLUGIN_DIR;
+using test::kPluginDir;
+using test::write_text;
 
-std::vector<fs::path> shipped_files() {
+std::vector<fs::path> shipped_ifs_files() {
     std::vector<fs::path> files;
     for (const auto& entry : fs::directory_iterator(kIfsDir)) {
         if (is_ifs_file_name(entry.path())) files.push_back(entry.path());
@@ -51,10 +53,6 @@ std::vector<fs::path> shipped_files() {
 }
 
 std::string read_text(const fs::path& file) { return test::read_file(file); }
-
-void write_text(const fs::path& file, const std::string& text) {
-    std::ofstream(file, std::ios::binary) << text;
-}
 
 glm::dvec3 apply(const IfsMap& map, const glm::dvec3& x) { return map.linear * x + map.offset; }
 
@@ -101,7 +99,7 @@ json sierpinski_maps() {
 // --- Shipped files -------------------------------------------------------------------------------
 
 TEST(IfsFile, EveryShippedFileParsesWithUniqueIds) {
-    const std::vector<fs::path> files = shipped_files();
+    const std::vector<fs::path> files = shipped_ifs_files();
     ASSERT_GE(files.size(), 6u) << kIfsDir;
     std::set<std::string> ids;
     for (const fs::path& file : files) {
@@ -124,7 +122,7 @@ TEST(IfsFile, EveryShippedFileParsesWithUniqueIds) {
 }
 
 TEST(IfsFile, ShippedBoundingSpheresHoldTheirImagesAndTheAttractor) {
-    for (const fs::path& file : shipped_files()) {
+    for (const fs::path& file : shipped_ifs_files()) {
         SCOPED_TRACE(file.string());
         const IfsScene ifs = read_ifs_file(file);
         const IfsBounds& b = ifs.bounds;
@@ -616,7 +614,7 @@ TEST(IfsDiscovery, ReloadReadsTheFileAgain) {
 }
 
 TEST(IfsDiscovery, TheBuildsPluginFolderHoldsTheShippedFiles) {
-    for (const fs::path& file : shipped_files()) {
+    for (const fs::path& file : shipped_ifs_files()) {
         EXPECT_TRUE(fs::exists(kPluginDir / file.filename())) << file.filename();
     }
 }
@@ -629,8 +627,8 @@ TEST(IfsDiscovery, TheBuildsPluginFolderHoldsTheShippedFiles) {
 // grown). The checks: nothing but IfsError escapes, a refusal is one line naming the file, and an
 // accepted scene keeps the invariants the renderer relies on.
 
-constexpr uint64_t kFuzzSeed = 0x49465346757a7a31;  // "IFSFuzz1"
-constexpr int kFuzzCases = 10000;
+constexpr uint64_t kIfsFuzzSeed = 0x49465346757a7a31;  // "IFSFuzz1"
+constexpr int kIfsFuzzCases = 10000;
 
 using Rng = test::FuzzRng;
 using test::mutate_text;
@@ -638,7 +636,7 @@ using test::mutate_value;
 
 uint64_t fuzz_cases() {
     if (const char* cases = std::getenv("FGR_FUZZ_CASES")) return std::strtoull(cases, nullptr, 10);
-    return kFuzzCases;
+    return kIfsFuzzCases;
 }
 
 void check_case(const std::string& text, uint64_t case_seed, bool& accepted) {
@@ -677,7 +675,7 @@ void check_case(const std::string& text, uint64_t case_seed, bool& accepted) {
 
 TEST(IfsFuzz, ParsesOrRefusesEveryMutatedFile) {
     std::vector<std::string> seeds;
-    for (const fs::path& file : shipped_files()) seeds.push_back(read_text(file));
+    for (const fs::path& file : shipped_ifs_files()) seeds.push_back(read_text(file));
     seeds.push_back(minimal(sierpinski_maps()).dump());
     ASSERT_FALSE(seeds.empty());
 
@@ -685,7 +683,7 @@ TEST(IfsFuzz, ParsesOrRefusesEveryMutatedFile) {
     if (const char* only = std::getenv("FGR_FUZZ_CASE")) {
         case_seeds.push_back(std::strtoull(only, nullptr, 0));
     } else {
-        Rng seeder(kFuzzSeed);
+        Rng seeder(kIfsFuzzSeed);
         for (uint64_t i = 0; i < fuzz_cases(); ++i) case_seeds.push_back(seeder.next());
     }
     int accepted = 0;

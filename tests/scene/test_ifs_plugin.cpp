@@ -25,8 +25,8 @@ namespace fgr {
 namespace {
 namespace fs = std::filesystem;
 
-const fs::path kPluginDir = fs::path(FGR_TEST_FIXTURE_DIR) / "ifs_plugin";
-const fs::path kPlugin = kPluginDir / "sierpinski_ifs_plugin.so";
+const fs::path kIfsPluginFixtureDir = fs::path(FGR_TEST_FIXTURE_DIR) / "ifs_plugin";
+const fs::path kPlugin = kIfsPluginFixtureDir / "sierpinski_ifs_plugin.so";
 const fs::path kShippedFile = fs::path(FGR_TEST_IFS_DIR) / "sierpinski.ifs.json";
 
 // What the plugin hands over (tests/fixtures/ifs_plugin/sierpinski_ifs_plugin.c): x -> x / 2 + t.

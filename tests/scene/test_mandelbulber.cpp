@@ -31,8 +31,8 @@ namespace {
 namespace fs = std::filesystem;
 using nlohmann::json;
 
-constexpr int kWidth = 320;  // the fixtures' size
-constexpr int kHeight = 240;
+constexpr int kSilhouetteWidth = 320;  // the fixtures' size
+constexpr int kSilhouetteHeight = 240;
 constexpr double kTanHalfVertical = 0.5;
 constexpr double kMinimumIou = 0.95;
 
@@ -75,15 +75,16 @@ std::vector<std::string> render_arguments(const json& item, const fs::path& outp
     const glm::dvec3 right = glm::normalize(glm::cross(forward, up));
     const glm::dvec3 camera_up = glm::cross(right, forward);
     const double distance = glm::length(target - eye);
-    const double pixel = 2.0 * kTanHalfVertical / kHeight * distance;
+    const double pixel = 2.0 * kTanHalfVertical / kSilhouetteHeight * distance;
     target += 0.5 * pixel * (camera_up - right);
-    const double fov = 2.0 * std::atan(kTanHalfVertical * kWidth / kHeight) * 180.0 / M_PI;
+    const double fov =
+        2.0 * std::atan(kTanHalfVertical * kSilhouetteWidth / kSilhouetteHeight) * 180.0 / M_PI;
     std::vector<std::string> args = {"render",
                                      item.at("fgr_scene").get<std::string>(),
                                      "--width",
-                                     std::to_string(kWidth),
+                                     std::to_string(kSilhouetteWidth),
                                      "--height",
-                                     std::to_string(kHeight),
+                                     std::to_string(kSilhouetteHeight),
                                      "--effects",
                                      "none",
                                      "--alpha",
@@ -110,15 +111,16 @@ std::vector<std::string> render_arguments(const json& item, const fs::path& outp
 std::vector<bool> silhouette(const fs::path& png) {
     const PngSamples image = read_png_samples(png);
     EXPECT_EQ(image.channels, 4) << png;
-    EXPECT_EQ(image.width, kWidth) << png;
-    EXPECT_EQ(image.height, kHeight) << png;
+    EXPECT_EQ(image.width, kSilhouetteWidth) << png;
+    EXPECT_EQ(image.height, kSilhouetteHeight) << png;
     const int half = image.bit_depth == 16 ? 32768 : 128;
-    std::vector<bool> mask(static_cast<size_t>(kWidth) * kHeight);
-    if (image.channels != 4 || image.width != kWidth || image.height != kHeight) return mask;
-    for (int y = 0; y < kHeight; ++y) {
-        for (int x = 0; x < kWidth; ++x) {
-            const size_t at = (static_cast<size_t>(y) * kWidth + x) * 4 + 3;
-            mask[static_cast<size_t>(y) * kWidth + x] = image.samples[at] >= half;
+    std::vector<bool> mask(static_cast<size_t>(kSilhouetteWidth) * kSilhouetteHeight);
+    if (image.channels != 4 || image.width != kSilhouetteWidth || image.height != kSilhouetteHeight)
+        return mask;
+    for (int y = 0; y < kSilhouetteHeight; ++y) {
+        for (int x = 0; x < kSilhouetteWidth; ++x) {
+            const size_t at = (static_cast<size_t>(y) * kSilhouetteWidth + x) * 4 + 3;
+            mask[static_cast<size_t>(y) * kSilhouetteWidth + x] = image.samples[at] >= half;
         }
     }
     return mask;

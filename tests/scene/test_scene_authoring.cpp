@@ -19,6 +19,7 @@
 
 #include "child_process.hpp"
 #include "device/program_cache.hpp"
+#include "device_suite.hpp"
 #include "fgr/kernel_library.hpp"
 #include "random_points.hpp"
 #include "render/renderer.hpp"
@@ -33,10 +34,7 @@ namespace {
 
 constexpr std::array kWidths{1, 16};
 
-ComputeDevice& device() {
-    static ComputeDevice opened = open_device(-1);
-    return opened;
-}
+using test::shared_device;
 
 using test::read_file;
 
@@ -50,7 +48,7 @@ Scene sdk_example(const std::string& id) {
 
 Frame render_small(const Scene& scene, int packet_width) {
     ProgramCache no_disk_cache{std::filesystem::path()};
-    Renderer renderer(device(), no_disk_cache, scene, {packet_width, scene.effects});
+    Renderer renderer(shared_device(), no_disk_cache, scene, {packet_width, scene.effects});
     return renderer.render(test::default_view_request(scene));
 }
 
@@ -92,7 +90,7 @@ TEST(KernelApi, APluginWrittenForANewerVersionIsRefusedAtLoadWithTheReason) {
     scene.source = "#define FGR_KERNEL_API 9\n" + scene.source;
     ProgramCache no_disk_cache{std::filesystem::path()};
     try {
-        Renderer renderer(device(), no_disk_cache, scene, {1, 0});
+        Renderer renderer(shared_device(), no_disk_cache, scene, {1, 0});
         ADD_FAILURE() << "built a scene written for kernel API 9";
     } catch (const std::exception& error) {
         EXPECT_NE(std::string(error.what()).find("update fgr"), std::string::npos) << error.what();
@@ -126,7 +124,7 @@ TEST(KernelApi, EveryVersionOneHelperKeepsItsSignature) {
     for (const int width : kWidths) {
         const std::vector<glm::vec3> points{{0.5f, 0.1f, -0.2f}};
         ProgramCache no_disk_cache{std::filesystem::path()};
-        Renderer renderer(device(), no_disk_cache, surface, {width, 0});
+        Renderer renderer(shared_device(), no_disk_cache, surface, {width, 0});
         const auto de = renderer.probe_de(points, default_param_values(surface));
         EXPECT_TRUE(std::isfinite(de.front())) << "width " << width;
     }
@@ -145,7 +143,7 @@ TEST(KernelApi, EachVersionSeesOnlyItsOwnNamesAndSignatures) {
     const auto builds = [](const std::string& source) {
         ProgramCache no_disk_cache{std::filesystem::path()};
         try {
-            Renderer renderer(device(), no_disk_cache, test::inline_scene(source), {1, 0});
+            Renderer renderer(shared_device(), no_disk_cache, test::inline_scene(source), {1, 0});
             return true;
         } catch (const KernelBuildError&) {
             return false;
@@ -213,7 +211,7 @@ struct HelperResult {
 class HelperProbe {
 public:
     explicit HelperProbe(int width)
-        : scene_(helper_probe_scene()), renderer_(device(), cache_, scene_, {width, 0}) {}
+        : scene_(helper_probe_scene()), renderer_(shared_device(), cache_, scene_, {width, 0}) {}
 
     HelperResult run(int which, const std::vector<glm::vec3>& points,
                      const std::vector<std::string>& settings = {}) {
@@ -458,8 +456,8 @@ real scene_de(vec3 p, PARAMS) {
     for (const int width : kWidths) {
         ProgramCache no_disk_cache{std::filesystem::path()};
         const Scene a = test::inline_scene(orbit_bulb), b = test::inline_scene(library_bulb);
-        Renderer ra(device(), no_disk_cache, a, {width, 0}),
-            rb(device(), no_disk_cache, b, {width, 0});
+        Renderer ra(shared_device(), no_disk_cache, a, {width, 0}),
+            rb(shared_device(), no_disk_cache, b, {width, 0});
         const auto da = ra.probe_de(points, default_param_values(a));
         const auto db = rb.probe_de(points, default_param_values(b));
         for (size_t i = 0; i < points.size(); ++i) {

@@ -1,7 +1,8 @@
 #pragma once
 // A test suite's OpenCL device and memory-only kernel cache (hermetic: nothing on disk), opened
 // once for the suite's tests and closed after them. Derive a fixture from DeviceSuite<> (or
-// DeviceSuite<::testing::TestWithParam<P>>) and use device_ and cache_.
+// DeviceSuite<::testing::TestWithParam<P>>) and use device_ and cache_. Tests outside a fixture
+// use shared_device().
 
 #include <gtest/gtest.h>
 
@@ -11,6 +12,13 @@
 #include "device/program_cache.hpp"
 
 namespace fgr::test {
+
+// The OpenCL device of the tests that have no fixture: opened on first use, kept until the process
+// ends.
+inline ComputeDevice& shared_device() {
+    static ComputeDevice opened = open_device(-1);
+    return opened;
+}
 
 template <typename Base = ::testing::Test>
 class DeviceSuite : public Base {

@@ -18,6 +18,7 @@
 #include "device/program_cache.hpp"
 #include "fgr/plugin.h"
 #include "image/image_io.hpp"
+#include "image_compare.hpp"
 #include "mandelbulb_reference.hpp"
 #include "render/precision.hpp"
 #include "render/renderer.hpp"
@@ -42,18 +43,7 @@ std::vector<std::shared_ptr<const Scene>> worker_scenes() {
             std::make_shared<const Scene>(broken)};
 }
 
-// Pixels of two same-sized images with a channel more than one 8-bit level apart.
-long pixels_over_one_level(const Image8& a, const Image8& b) {
-    long over = 0;
-    for (size_t pixel = 0; pixel * 3 < a.rgb.size(); ++pixel) {
-        bool differs = false;
-        for (size_t c = 0; c < 3; ++c) {
-            differs |= std::abs(int(a.rgb[3 * pixel + c]) - int(b.rgb[3 * pixel + c])) > 1;
-        }
-        over += differs;
-    }
-    return over;
-}
+using test::pixels_over_one_level;
 
 class RenderWorkerTest : public ::testing::Test {
 protected:

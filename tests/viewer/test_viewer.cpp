@@ -25,7 +25,9 @@
 #include "child_process.hpp"
 #include "hermetic_caches.hpp"
 #include "image/image_io.hpp"
+#include "image_compare.hpp"
 #include "scene/formulas/formulas.hpp"
+#include "test_files.hpp"
 #include "viewer/thumbnails.hpp"
 
 namespace fgr {
@@ -33,10 +35,13 @@ namespace {
 
 namespace fs = std::filesystem;
 
-const fs::path kFgrExe = FGR_TEST_FGR_EXE;
+using test::kFgrExe;
+using test::mean_abs_difference;
+using test::pixels_over_one_level;
+
 const fs::path kXvfbRun = "/usr/bin/xvfb-run";
-constexpr int kWidth = 400;  // wide enough that the window centre is clear of the panel
-constexpr int kHeight = 300;
+constexpr int kWindowWidth = 400;  // wide enough that the window centre is clear of the panel
+constexpr int kWindowHeight = 300;
 
 // The value of `key` in a --stats line of the viewer's output (defined below).
 std::string stat_text(const std::string& out, const std::string& key);
@@ -68,9 +73,9 @@ protected:
                                          kFgrExe.string(),
                                          "view",
                                          "--width",
-                                         std::to_string(kWidth),
+                                         std::to_string(kWindowWidth),
                                          "--height",
-                                         std::to_string(kHeight),
+                                         std::to_string(kWindowHeight),
                                          "--samples",
                                          "1",
                                          "--replay",
@@ -151,12 +156,6 @@ std::string stat_text(const std::string& out, const std::string& key) {
     return {};
 }
 
-double mean_abs_difference(const Image8& a, const Image8& b) {
-    double sum = 0.0;
-    for (size_t i = 0; i < a.rgb.size(); ++i) sum += std::abs(int(a.rgb[i]) - int(b.rgb[i]));
-    return sum / static_cast<double>(a.rgb.size());
-}
-
 // Runs actions[i] once `directory` holds i + 1 PNG files (the viewer's screenshots), on a thread
 // beside the blocking viewer run: how a test changes files while the viewer watches them.
 class AfterEachScreenshot {
@@ -196,19 +195,6 @@ void drop_in(const fs::path& from, const fs::path& to) {
 
 double length(const std::vector<double>& v) {
     return std::sqrt(v[0] * v[0] + v[1] * v[1] + v[2] * v[2]);
-}
-
-// Pixels of two same-sized images with a channel more than one 8-bit level apart.
-long pixels_over_one_level(const Image8& a, const Image8& b) {
-    long over = 0;
-    for (size_t pixel = 0; pixel * 3 < a.rgb.size(); ++pixel) {
-        bool differs = false;
-        for (size_t c = 0; c < 3; ++c) {
-            differs |= std::abs(int(a.rgb[3 * pixel + c]) - int(b.rgb[3 * pixel + c])) > 1;
-        }
-        over += differs;
-    }
-    return over;
 }
 
 // Replay lines that record two keyframes where the camera is and save them as a camera path
@@ -280,18 +266,19 @@ TEST_F(ViewerTest, ScreenshotIsTheFullResolutionImageFgrRenderGives) {
     ASSERT_EQ(run.screenshots.size(), 1u) << run.result;
     EXPECT_NE(run.result.err.find("screenshot: wrote"), std::string::npos) << run.result;
     const Image8 shot = read_png(run.screenshots[0]);
-    EXPECT_EQ(shot.width, kWidth);
-    EXPECT_EQ(shot.height, kHeight);
+    EXPECT_EQ(shot.width, kWindowWidth);
+    EXPECT_EQ(shot.height, kWindowHeight);
     const fs::path path = saved_path(dir());
     ASSERT_FALSE(path.empty()) << run.result;
     const CameraView saved = read_camera_path_file(path).path.keyframes.at(0).view;
     EXPECT_EQ(saved.position, glm::dvec3(2.0, -2.0, 1.0)) << "the default camera";
     EXPECT_LT(glm::length(saved.target), 1e-6);
 
-    const test::RunResult rendered = test::run_fgr(
-        {"render", "mandelbulb", "--camera-path", path.string(), "--time", "0", "-o",
-         "reference.png", "--width", std::to_string(kWidth), "--height", std::to_string(kHeight)},
-        dir());
+    const test::RunResult rendered =
+        test::run_fgr({"render", "mandelbulb", "--camera-path", path.string(), "--time", "0", "-o",
+                       "reference.png", "--width", std::to_string(kWindowWidth), "--height",
+                       std::to_string(kWindowHeight)},
+                      dir());
     ASSERT_EQ(rendered.exit_code, 0) << rendered;
     EXPECT_EQ(pixels_over_one_level(shot, read_png(dir() / "reference.png")), 0);
 }
@@ -352,7 +339,7 @@ TEST_F(ViewerTest, FormulaBrowserFindsAScenePicksItAndCachesItsThumbnail) {
     for (const uint8_t channel : cached.rgb) lit += channel > 40;
     EXPECT_GT(lit, long(cached.rgb.size() / 20)) << "the thumbnail shows the fractal";
     ASSERT_EQ(first.screenshots.size(), 1u) << first.result;
-    EXPECT_EQ(read_png(first.screenshots[0]).width, kWidth);
+    EXPECT_EQ(read_png(first.screenshots[0]).width, kWindowWidth);
 
     const ViewerRun second = view(script);
     ASSERT_EQ(second.result.exit_code, 0) << second.result;
@@ -480,7 +467,7 @@ TEST_F(ViewerTest, SurvivesASceneWhoseKernelDoesNotCompile) {
     EXPECT_NE(run.result.err.find("screenshot not taken"), std::string::npos) << run.result;
     // The next scene renders and its screenshot is written.
     ASSERT_EQ(run.screenshots.size(), 1u) << run.result;
-    EXPECT_EQ(read_png(run.screenshots[0]).width, kWidth);
+    EXPECT_EQ(read_png(run.screenshots[0]).width, kWindowWidth);
     EXPECT_NE(stat_text(run.result.out, "scene"), "fixture-broken");
 }
 
@@ -731,9 +718,9 @@ TEST_F(ViewerTest, PrecisionDoubleRendersTheViewInDouble) {
                                          "--precision",
                                          precision,
                                          "--width",
-                                         std::to_string(kWidth),
+                                         std::to_string(kWindowWidth),
                                          "--height",
-                                         std::to_string(kHeight),
+                                         std::to_string(kWindowHeight),
                                          "-o",
                                          precision + ".png"};
         args.insert(args.end(), fine.begin(), fine.end());
@@ -790,9 +777,9 @@ TEST_F(ViewerTest, ProjectionFromTheCommandLineShapesTheViewersFrames) {
                                          "--time",
                                          "0",
                                          "--width",
-                                         std::to_string(kWidth),
+                                         std::to_string(kWindowWidth),
                                          "--height",
-                                         std::to_string(kHeight),
+                                         std::to_string(kWindowHeight),
                                          "-o",
                                          "reference.png"};
         args.insert(args.end(), projection.begin(), projection.end());

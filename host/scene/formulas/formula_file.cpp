@@ -24,8 +24,8 @@ using json_fields::finite_double;
 using json_fields::shown;
 using nlohmann::json;
 
-constexpr const char* kFormat = "fgr-formula";
-constexpr std::string_view kSuffix = ".formula.json";
+constexpr const char* kFormulaFormat = "fgr-formula";
+constexpr std::string_view kFormulaSuffix = ".formula.json";
 constexpr std::size_t kMaxTags = 16;
 
 bool is_tag(std::string_view tag) {
@@ -218,7 +218,7 @@ void march_from(const json& document, FormulaScene& scene) {
     scene.march.max_distance = max_distance;
 }
 
-FormulaScene parse_checked(const std::string& text) {
+FormulaScene parse_formula_document(const std::string& text) {
     if (text.size() > kFormulaMaxFileBytes) {
         fail("{} bytes, more than the {} a formula file may have", text.size(),
              kFormulaMaxFileBytes);
@@ -229,7 +229,7 @@ FormulaScene parse_checked(const std::string& text) {
                 "bailout", "distance", "estimate", "step_factor", "max_distance", "cameras",
                 "camera_paths", "lights"},
                "top level");
-    scene_json::check_format(document, kFormat, kFormulaFormatVersion);
+    scene_json::check_format(document, kFormulaFormat, kFormulaFormatVersion);
     FormulaScene scene;
     const scene_json::Header header = scene_json::header_from(document);
     scene.id = header.id;
@@ -262,13 +262,14 @@ FormulaScene parse_checked(const std::string& text) {
 
 bool is_formula_file_name(const std::filesystem::path& file) {
     const std::string name = file.filename().string();
-    return name.size() > kSuffix.size() &&
-           name.compare(name.size() - kSuffix.size(), kSuffix.size(), kSuffix) == 0;
+    return name.size() > kFormulaSuffix.size() &&
+           name.compare(name.size() - kFormulaSuffix.size(), kFormulaSuffix.size(),
+                        kFormulaSuffix) == 0;
 }
 
 FormulaScene parse_formula_json(const std::string& text, const std::string& origin) {
     try {
-        return parse_checked(text);
+        return parse_formula_document(text);
     } catch (const std::runtime_error& error) {
         throw FormulaError(origin + ": " + error.what());
     } catch (const json::exception& error) {

@@ -39,8 +39,8 @@ using scene_json::array_from;
 using scene_json::require_object;
 using scene_json::text_from;
 
-constexpr const char* kFormat = "fgr-ifs";
-constexpr std::string_view kSuffix = ".ifs.json";
+constexpr const char* kIfsFormat = "fgr-ifs";
+constexpr std::string_view kIfsSuffix = ".ifs.json";
 
 // Numbers in a map (matrix entries, scales, translations): a contraction's entries are below 1
 // anyway; translations are bounded so the kernel's float arithmetic stays meaningful.
@@ -332,7 +332,7 @@ NamedCamera default_camera(const IfsBounds& bounds) {
 
 // --- The document --------------------------------------------------------------------------------
 
-IfsScene parse_checked(const std::string& text) {
+IfsScene parse_ifs_document(const std::string& text) {
     if (text.size() > kIfsMaxFileBytes) {
         fail("{} bytes, more than the {} an IFS file may have", text.size(), kIfsMaxFileBytes);
     }
@@ -342,7 +342,7 @@ IfsScene parse_checked(const std::string& text) {
                 "cameras", "camera_paths", "lights"},
                "top level");
     IfsScene scene;
-    scene_json::check_format(document, kFormat, kIfsFormatVersion);
+    scene_json::check_format(document, kIfsFormat, kIfsFormatVersion);
     scene.version = kIfsFormatVersion;
     const scene_json::Header header = scene_json::header_from(document);
     scene.id = header.id;
@@ -454,13 +454,13 @@ void validate_ifs_maps(IfsScene& scene, std::string_view map_word) {
 
 bool is_ifs_file_name(const std::filesystem::path& file) {
     const std::string name = file.filename().string();
-    return name.size() > kSuffix.size() &&
-           name.compare(name.size() - kSuffix.size(), kSuffix.size(), kSuffix) == 0;
+    return name.size() > kIfsSuffix.size() &&
+           name.compare(name.size() - kIfsSuffix.size(), kIfsSuffix.size(), kIfsSuffix) == 0;
 }
 
 IfsScene parse_ifs_json(const std::string& text, const std::string& origin) {
     try {
-        return parse_checked(text);
+        return parse_ifs_document(text);
     } catch (const std::runtime_error& error) {
         throw IfsError(origin + ": " + error.what());
     } catch (const json::exception& error) {
