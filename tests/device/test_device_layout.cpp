@@ -20,8 +20,6 @@
 namespace fgr {
 namespace {
 
-using namespace fgr::layout;
-
 // Every shared struct's fields, as (struct, field): the host takes offsetof, the device the
 // distance of the field's address from the struct's.
 #define FGR_SHARED_FIELDS(X)                \
@@ -65,12 +63,13 @@ struct Measure {
 
 std::vector<Measure> measures() {
     std::vector<Measure> list;
-#define FGR_STRUCT_SIZE(type) list.push_back({#type, "sizeof(" #type ")", int(sizeof(type))});
+#define FGR_STRUCT_SIZE(type) \
+    list.push_back({#type, "sizeof(" #type ")", int(sizeof(layout::type))});
 #define FGR_FIELD_OFFSET(type, field)                                 \
     list.push_back({#type "." #field,                                 \
                     "(int)((__private char*)&" #type "_value." #field \
                     " - (__private char*)&" #type "_value)",          \
-                    int(offsetof(type, field))});
+                    int(offsetof(layout::type, field))});
     FGR_SHARED_STRUCTS(FGR_STRUCT_SIZE)
     FGR_SHARED_FIELDS(FGR_FIELD_OFFSET)
 #undef FGR_STRUCT_SIZE
