@@ -232,7 +232,14 @@ std::string first_failure(const MathFunction& function, size_t function_index,
     return {};
 }
 
-AssembledProgram check_program(bool double_precision, int packet_width) {
+std::string precision_label(bool double_precision, int packet_width) {
+    return fmt::format("{}{}", double_precision ? "double" : "float",
+                       packet_width == 1 ? std::string() : std::to_string(packet_width));
+}
+
+}  // namespace
+
+AssembledProgram math_check_program(bool double_precision, int packet_width) {
     // The library's types and lane-safe maths, then the check kernels, built with the switches a
     // render at this width and precision gets.
     AssembledProgram program;
@@ -253,13 +260,6 @@ AssembledProgram check_program(bool double_precision, int packet_width) {
     return program;
 }
 
-std::string precision_label(bool double_precision, int packet_width) {
-    return fmt::format("{}{}", double_precision ? "double" : "float",
-                       packet_width == 1 ? std::string() : std::to_string(packet_width));
-}
-
-}  // namespace
-
 MathCheckReport run_math_check(const ComputeDevice& device, ProgramCache& cache,
                                bool double_precision, int packet_width,
                                const std::string& extra_options) {
@@ -270,7 +270,7 @@ MathCheckReport run_math_check(const ComputeDevice& device, ProgramCache& cache,
     MathCheckReport report;
     report.double_precision = double_precision;
     report.packet_width = packet_width;
-    AssembledProgram check = check_program(double_precision, packet_width);
+    AssembledProgram check = math_check_program(double_precision, packet_width);
     if (!extra_options.empty()) check.options += " " + extra_options;
     cl::Program program = cache.build(device, check);
     const bool as_float = !double_precision;
@@ -291,7 +291,8 @@ std::string math_check_verdict(const ComputeDevice& device, ProgramCache& cache,
     static std::mutex mutex;
     static std::map<std::pair<std::filesystem::path, std::string>, std::string> verdicts;
     const std::string key =
-        "math-" + ProgramCache::cache_key(device, check_program(double_precision, packet_width));
+        "math-" +
+        ProgramCache::cache_key(device, math_check_program(double_precision, packet_width));
     std::lock_guard lock(mutex);
     const auto memory_key = std::make_pair(cache.directory(), key);
     if (auto found = verdicts.find(memory_key); found != verdicts.end()) return found->second;

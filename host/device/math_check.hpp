@@ -12,6 +12,7 @@
 #include <string>
 #include <vector>
 
+#include "device/kernel_assembly.hpp"
 #include "device/opencl_device.hpp"
 #include "device/program_cache.hpp"
 
@@ -26,6 +27,10 @@ struct MathCheckReport {
     std::vector<std::string> failures;
     bool passed() const { return failures.empty(); }
 };
+
+// The self-test's program at this width and precision: the library's types and lane-safe maths,
+// then the check kernels (fgr_math_check.cl), with the switches a render there gets.
+AssembledProgram math_check_program(bool double_precision, int packet_width);
 
 // Runs the self-test now (no cached verdict is used or stored). Throws KernelBuildError when the
 // check kernel does not compile, std::runtime_error when double is asked of a device without it.

@@ -13,6 +13,7 @@
 
 #include "device/kernel_assembly.hpp"
 #include "device/kernel_layout.hpp"
+#include "device/math_check.hpp"
 #include "device_suite.hpp"
 #include "fgr/kernel_library.hpp"
 #include "test_scenes.hpp"
@@ -251,14 +252,8 @@ TEST_F(DeviceLayout, BruteKernelArgumentsSitAtTheirIndices) {
 }
 
 TEST_F(DeviceLayout, MathCheckKernelArgumentsSitAtTheirIndices) {
-    // As host/device/math_check.cpp builds it: the prelude's types and maths, then the checks.
-    AssembledProgram assembled;
-    for (const KernelFile& file : kernel_prelude()) {
-        assembled.source += file.source;
-        if (std::string_view(file.name) == "fgr_math.cl") break;
-    }
-    assembled.source += math_check_source();
-    assembled.options = switch_options({}) + " -cl-kernel-arg-info";
+    AssembledProgram assembled = math_check_program(false, 1);
+    assembled.options += " -cl-kernel-arg-info";
     const cl::Program program = cache_->build(*device_, assembled);
     expect_names(program,
                  {{"fgr_check_exp", FGR_MATH_CHECK_ARG_A, "a"},
