@@ -80,7 +80,8 @@ case "$command" in
         install_missing_packages "${build_packages[@]}" "${test_packages[@]}"
         # CI's build: any compiler warning fails it.
         build "$build_dir" -DFGR_WERROR=ON
-        # Each test case runs as its own process; two at a time keeps a 2-core machine busy.
+        # Two tests at a time keep a 2-core machine busy (each a process running a group of cases:
+        # tests/CMakeLists.txt).
         ctest --test-dir "$build_dir" --output-on-failure -j "$jobs" -LE "slow|golden"
         ;;
     test-slow)
