@@ -63,7 +63,7 @@ install_missing_packages() {
 build() {
     local dir=$1
     shift
-    cmake -S "$repo" -B "$dir" -G Ninja -DCMAKE_BUILD_TYPE=Release "$@"
+    cmake -S "$repo" -B "$dir" -G Ninja -DCMAKE_BUILD_TYPE=Release -DFGR_BUILD_TESTS=ON "$@"
     cmake --build "$dir" -j "$jobs"
 }
 
@@ -71,8 +71,10 @@ command=${1:-render}
 case "$command" in
     render)
         install_missing_packages "${build_packages[@]}"
-        # Only fgr and its scenes: the tests are built by the test commands.
-        cmake -S "$repo" -B "$build_dir" -G Ninja -DCMAKE_BUILD_TYPE=Release -DFGR_WERROR=OFF
+        # Only fgr and its scenes, configured without the tests, whose packages (GoogleTest)
+        # only the test commands install; they turn the tests back on in the same tree.
+        cmake -S "$repo" -B "$build_dir" -G Ninja -DCMAKE_BUILD_TYPE=Release -DFGR_WERROR=OFF \
+            -DFGR_BUILD_TESTS=OFF
         cmake --build "$build_dir" -j "$jobs" --target fgr fgr_scenes
         "$build_dir/bin/fgr" render mandelbulb -o "${2:-mandelbulb.png}"
         ;;

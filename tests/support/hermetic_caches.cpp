@@ -7,10 +7,13 @@
 //     was told otherwise). PoCL keys its entries by source and options; a cold one costs about
 //     8 s per kernel, far too much to pay in every test process.
 // Child processes (fgr render, fgr view, the SDK script) inherit all of it: nothing under ~/.cache.
+// The test cases that share a process (tests/CMakeLists.txt runs them in groups) each start with
+// a fresh kernel cache of their own (fresh_kernel_cache_per_case.cpp).
 #include "hermetic_caches.hpp"
 
 #include <cstdlib>
 #include <filesystem>
+#include <memory>
 
 #include "child_process.hpp"
 
@@ -23,18 +26,24 @@ struct HermeticCaches {
         setenv("XDG_CACHE_HOME", drivers.c_str(), 1);
         setenv("POCL_CACHE_DIR", (drivers / "pocl").c_str(), 1);
         unsetenv("MESA_SHADER_CACHE_DIR");  // Mesa then uses XDG_CACHE_HOME
-        setenv("FGR_CACHE_DIR", (kernels.path() / "kernels").c_str(), 1);
+        start_fresh_kernels();
     }
-    TempDir kernels{"fgr_test_cache"};
+    void start_fresh_kernels() {
+        kernels.reset();  // the last one removed first
+        kernels = std::make_unique<TempDir>("fgr_test_cache");
+        kernel_cache = kernels->path() / "kernels";
+        setenv("FGR_CACHE_DIR", kernel_cache.c_str(), 1);
+    }
+    std::unique_ptr<TempDir> kernels;
+    std::filesystem::path kernel_cache;
 };
 
-const HermeticCaches caches;
+HermeticCaches caches;
 
 }  // namespace
 
-const std::filesystem::path& test_kernel_cache() {
-    static const std::filesystem::path directory = caches.kernels.path() / "kernels";
-    return directory;
-}
+const std::filesystem::path& test_kernel_cache() { return caches.kernel_cache; }
+
+void start_fresh_kernel_cache() { caches.start_fresh_kernels(); }
 
 }  // namespace fgr::test

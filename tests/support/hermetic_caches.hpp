@@ -1,5 +1,5 @@
 #pragma once
-// Where this test process keeps fgr's kernel cache: a fresh directory of its own, which
+// Where the running test case keeps fgr's kernel cache: a fresh directory of its own, which
 // ProgramCache::default_directory() (FGR_CACHE_DIR) names too. See hermetic_caches.cpp.
 
 #include <filesystem>
@@ -7,5 +7,9 @@
 namespace fgr::test {
 
 const std::filesystem::path& test_kernel_cache();
+
+// Removes this process's kernel cache and points FGR_CACHE_DIR at a fresh one: what each test case
+// starts with when several share a process.
+void start_fresh_kernel_cache();
 
 }  // namespace fgr::test
