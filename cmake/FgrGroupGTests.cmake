@@ -6,46 +6,26 @@
 # Each group runs its cases by exact name, so a group holds the cases the filter selects and no
 # other, whatever else its suites hold.
 
-execute_process(
-    COMMAND "${TEST_EXECUTABLE}" --gtest_list_tests "--gtest_filter=${TEST_FILTER}"
-    WORKING_DIRECTORY "${WORKING_DIRECTORY}"
-    OUTPUT_VARIABLE listing
-    ERROR_VARIABLE errors
-    RESULT_VARIABLE result
-    TIMEOUT 120)
-if(NOT result EQUAL 0)
-    message(FATAL_ERROR "${TEST_EXECUTABLE} --gtest_list_tests failed (${result}):\n${errors}")
-endif()
+include("${CMAKE_CURRENT_LIST_DIR}/FgrGTestListing.cmake")
+fgr_list_gtest_cases(all_cases "${TEST_EXECUTABLE}" "${TEST_FILTER}" "${WORKING_DIRECTORY}")
 
-# The listing: a suite's line ("Suite." or "Prefix/Suite.", maybe "  # TypeParam = ..."), then
-# its cases indented by two spaces ("  Case" or "  Case/param  # GetParam() = ..."). Brackets and
-# semicolons in the comments are removed before the lines become a CMake list.
-string(REGEX REPLACE "  #[^\n]*" "" listing "${listing}")
-string(REPLACE ";" "" listing "${listing}")
-string(REPLACE "\n" ";" lines "${listing}")
-
+# The cases by suite, the suites in the binary's order; a variable's name from the suite's
+# ("Cli/CliBadInput" -> "Cli_CliBadInput"). Suite names hold no '.'.
 set(suites "")
-set(suite "")
-foreach(line IN LISTS lines)
-    if(line MATCHES "^  ([^ ]+)$")
-        set(case "${CMAKE_MATCH_1}")
-        if(suite STREQUAL "" OR case MATCHES "^DISABLED_")
-            continue()
-        endif()
-        list(APPEND cases_of_${suite} "${name_of_${suite}}.${case}")
-    elseif(line MATCHES "^([^ ]+)\\.$")
-        # A variable's name from the suite's ("Cli/CliBadInput" -> "Cli_CliBadInput").
-        set(name "${CMAKE_MATCH_1}")
-        string(MAKE_C_IDENTIFIER "${name}" suite)
+foreach(case IN LISTS all_cases)
+    string(FIND "${case}" "." dot)
+    string(SUBSTRING "${case}" 0 ${dot} name)
+    string(MAKE_C_IDENTIFIER "${name}" suite)
+    if(NOT DEFINED name_of_${suite})
         set(name_of_${suite} "${name}")
         set(cases_of_${suite} "")
         list(APPEND suites "${suite}")
     endif()
+    list(APPEND cases_of_${suite} "${case}")
 endforeach()
 
 set(content "# Written by FgrGroupGTests.cmake after each build of the tests; do not edit.\n")
 string(APPEND content "set(${LIST_VARIABLE} \"\")\n")
-set(group_names "")
 
 # write_group(NAME CASE...): one ctest test running those cases.
 function(write_group name)
@@ -76,9 +56,6 @@ endmacro()
 foreach(suite IN LISTS suites)
     set(cases ${cases_of_${suite}})
     list(LENGTH cases count)
-    if(count EQUAL 0)
-        continue()
-    endif()
     set(name "${name_of_${suite}}")
     if(count GREATER GROUP_SIZE)
         # A suite larger than a group: parts of nearly equal size, in the suite's order.
