@@ -11,6 +11,7 @@
 #include <filesystem>
 #include <future>
 #include <optional>
+#include <set>
 #include <stdexcept>
 #include <string>
 #include <vector>
@@ -155,6 +156,12 @@ int command_info(bool math_check);
 
 // --- fgr render ----------------------------------------------------------------------------------
 
+// The long names of the options typed on a command's line (view_options.hpp records them).
+struct TypedOptions {
+    std::set<std::string> names;
+    bool has(std::string_view long_name) const;
+};
+
 struct RenderOptions {
     std::string scene;
     std::string output;
@@ -186,6 +193,9 @@ struct RenderOptions {
     bool part = false;  // write a part for `fgr merge` (output/parts/render_parts.hpp)
     std::optional<std::string> tile;  // "I/N": the part is rows of tile I of N (implies --part)
     bool prepass = true;  // --prepass on|off: the cone-marched depth prepass (FrameRequest)
+    std::optional<std::string> view;       // --view: a view file, or an image carrying its view
+    std::optional<std::string> save_view;  // --save-view: write the render's view to this file
+    TypedOptions typed;                    // what was typed, over a view's settings
 };
 
 void add_render_command(CLI::App& app, RenderOptions& options);

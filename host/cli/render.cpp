@@ -28,6 +28,7 @@
 #include "scene/ifs/ifs.hpp"
 #include "tiled_render.hpp"
 #include "util/timing.hpp"
+#include "view_options.hpp"
 
 namespace fgr {
 
@@ -377,6 +378,24 @@ std::vector<Scene> scenes_matching(const Discovery& found, const std::string& pa
     return matching;
 }
 
+// `code`, after writing the view to --save-view's file when the render succeeded (on the rank
+// that writes files).
+int saved_view_after(int code, const RenderOptions& options, const ViewFile& view,
+                     bool writes_files = true) {
+    if (code == 0 && writes_files) save_view_if_asked(options, view);
+    return code;
+}
+
+void check_save_view_option(const RenderOptions& options) {
+    if (!options.save_view) return;
+    if (options.all) throw UsageError("--save-view is for one scene, not --all");
+    if (!is_view_file_name(*options.save_view)) {
+        throw UsageError(fmt::format("--save-view {}: a view file's name ends in {}",
+                                     *options.save_view, kViewFileSuffix));
+    }
+    check_output_directory(*options.save_view);
+}
+
 int render_all(const RenderOptions& options) {
     std::future<Discovery> finding = discover_meanwhile("");
     DeviceOpenedAhead device_opening(options.device);
@@ -451,9 +470,9 @@ void add_render_command(CLI::App& app, RenderOptions& options) {
     CLI::App* render = app.add_subcommand(
         "render",
         "render one image of a scene to a PNG, EXR or TIFF file, or every scene's default view");
-    render->add_option(
-        "scene", options.scene,
-        "scene id (see `fgr list`); with --all, a wildcard pattern of ids (e.g. 'mandel*')");
+    render->add_option("scene", options.scene,
+                       "scene id (see `fgr list`) or a view file (.fgrview.json); with --all, a "
+                       "wildcard pattern of ids (e.g. 'mandel*')");
     render->add_flag("--all", options.all,
                      "render every scene's default view (or those the scene pattern matches) into "
                      "the directory -o");
@@ -491,9 +510,19 @@ void add_render_command(CLI::App& app, RenderOptions& options) {
     render->add_flag("--stats", options.stats,
                      "print steps per pixel, DE evaluations and rays that ran out of steps");
     add_frame_options(render, options, kMaxTiledImageSide);
+    add_view_file_options(render, options);
+    record_typed_options(render, options.typed);
 }
 
-int command_render(const RenderOptions& options) {
+int command_render(const RenderOptions& typed_options) {
+    RenderOptions options = typed_options;
+    std::optional<ViewFile> view;
+    if (const std::optional<std::string> argument = view_argument(options)) {
+        if (options.all) throw UsageError("--view is for one scene, not --all");
+        view = load_view_argument(*argument);
+        apply_view(options, *view);
+    }
+    check_save_view_option(options);
     check_render_options(options);
     if (options.all) return render_all(options);
     std::future<Discovery> finding = discover_meanwhile(options.scene);
@@ -501,8 +530,10 @@ int command_render(const RenderOptions& options) {
     const Discovery found = finding.get();
     const Scene scene = with_kernel_source(
         scene_as_used(find_scene(found, options.scene), options.dev), options.kernel_source);
+    if (view) warn_if_scene_changed(*view, scene);
     FrameRequest request = scene_request(scene, options);
     request.view = choose_view(scene, options);
+    const ViewFile rendered_view = view_of_render(scene, request, options);
     const ComputeDevice device = device_opening.take();
     ProgramCache cache(ProgramCache::default_directory());
     if (part_render_wanted(options)) {
@@ -511,14 +542,20 @@ int command_render(const RenderOptions& options) {
                 "--part and --tile make one part a process, for a scheduler: run "
                 "them without mpirun");
         }
-        return render_part_file(scene, request, device, cache, options);
+        return saved_view_after(render_part_file(scene, request, device, cache, options), options,
+                                rendered_view);
     }
     if (Cluster& cluster = Cluster::current(); !cluster.alone()) {
-        return render_across_ranks(cluster, scene, request, device, cache, options);
+        return saved_view_after(
+            render_across_ranks(cluster, scene, request, device, cache, options), options,
+            rendered_view, cluster.coordinator());
     }
-    if (tiled_render_wanted(options)) return render_tiled(scene, request, device, cache, options);
+    if (tiled_render_wanted(options)) {
+        return saved_view_after(render_tiled(scene, request, device, cache, options), options,
+                                rendered_view);
+    }
     render_to_file(scene, request, device, cache, options, options.output);
-    return 0;
+    return saved_view_after(0, options, rendered_view);
 }
 
 }  // namespace fgr

@@ -27,7 +27,9 @@
 #include "output/video/video_frames.hpp"
 #include "output/video/video_render.hpp"
 #include "output/video/video_timing.hpp"
+#include "scene/scene_json.hpp"
 #include "util/timing.hpp"
+#include "view_options.hpp"
 
 namespace fgr {
 namespace {
@@ -145,11 +147,11 @@ void check_video_options(const VideoOptions& options) {
 void add_video_command(CLI::App& app, VideoOptions& options) {
     CLI::App* video = app.add_subcommand(
         "video", "render a camera path into a video file (.mp4 ...) and/or a PNG/EXR sequence");
-    video->add_option("scene", options.frame.scene, "scene id (see `fgr list`)")->required();
-    video
-        ->add_option("--camera-path", options.frame.camera_path,
-                     "camera path of the scene, or a .json file saved by `fgr view`")
-        ->required();
+    video->add_option("scene", options.frame.scene,
+                      "scene id (see `fgr list`) or a view file (.fgrview.json) to start from");
+    video->add_option("--camera-path", options.frame.camera_path,
+                      "camera path of the scene, or a .json file saved by `fgr view` (default "
+                      "with a view: a turn around the view's target, starting at the view)");
     video->add_option("-o,--output", options.output,
                       "video file: .mp4/.mkv/.mov (H.264), .webm (VP9), .gif, .webp, .apng");
     video->add_option("--frames", options.frames_directory,
@@ -173,16 +175,53 @@ void add_video_command(CLI::App& app, VideoOptions& options) {
                       "numbered as in the whole video (share a video out to machines, then "
                       "fgr merge --frames DIR -o FILE)");
     add_frame_options(video, options.frame);
+    video->add_option("--view", options.frame.view,
+                      "start from a view: a .fgrview.json file, or an image fgr wrote; each frame "
+                      "renders with its settings, any option typed overriding them");
+    record_typed_options(video, options.frame.typed);
 }
 
-int command_video(const VideoOptions& options) {
+namespace {
+
+// The options with a view's settings under those typed, when a view was given.
+std::optional<ViewFile> apply_view_argument(VideoOptions& options) {
+    const std::optional<std::string> argument = view_argument(options.frame);
+    if (!argument) return std::nullopt;
+    ViewFile view = load_view_argument(*argument);
+    apply_view(options.frame, view);
+    return view;
+}
+
+// The camera path the video follows: --camera-path's, else a turn around the view's target that
+// starts at the view.
+CameraPath video_camera_path(const Scene& scene, const RenderOptions& frame_options,
+                             const std::optional<ViewFile>& view) {
+    if (frame_options.camera_path) return find_camera_path(scene, *frame_options.camera_path);
+    const CameraView start = overridden_view(view->camera, frame_options.view_override);
+    return scene_json::default_orbit(NamedCamera{"view", start});
+}
+
+}  // namespace
+
+int command_video(const VideoOptions& typed_options) {
+    VideoOptions options = typed_options;
+    const std::optional<ViewFile> view = apply_view_argument(options);
+    if (options.frame.scene.empty()) {
+        throw UsageError("video needs a SCENE (see `fgr list`) or a view file");
+    }
+    if (!options.frame.camera_path && !view) {
+        throw UsageError(
+            "video needs --camera-path (a scene's path or a .json file), or a view "
+            "to turn around");
+    }
     check_video_options(options);
     const RenderOptions& frame_options = options.frame;
     const Discovery found = discover_for(frame_options.scene);
     const Scene scene =
         with_kernel_source(scene_as_used(find_scene(found, frame_options.scene), frame_options.dev),
                            frame_options.kernel_source);
-    const CameraPath path = find_camera_path(scene, *frame_options.camera_path);
+    if (view) warn_if_scene_changed(*view, scene);
+    const CameraPath path = video_camera_path(scene, frame_options, view);
     VideoFrames frames;
     try {
         frames.timing = video_timing(path, options.fps, options.start, options.duration);
