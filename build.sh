@@ -37,11 +37,11 @@ build_packages=(
 )
 # And to test it: GoogleTest, Open MPI (optional to build fgr; with it, `mpirun -np N fgr render`
 # shares a render between ranks, and the tests run that), Mesa's software rasteriser under the
-# virtual X server the viewer tests run in, clinfo and gnuplot for the benchmark scripts, and
-# clang-format for the style check.
+# virtual X server the viewer tests run in, clinfo and gnuplot for the benchmark scripts,
+# clang-format for the style check, and jsonschema for the schemas' check.
 test_packages=(
     libgtest-dev libopenmpi-dev openmpi-bin libgl1-mesa-dri xvfb xauth clinfo gnuplot-nox
-    clang-format
+    clang-format python3-jsonschema
 )
 
 # install_missing_packages PACKAGE...: apt-get installs those not installed yet.

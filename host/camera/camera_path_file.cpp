@@ -7,6 +7,7 @@
 
 #include "camera/view_json.hpp"
 #include "util/atomic_file.hpp"
+#include "util/installed_files.hpp"
 #include "util/json_fields.hpp"
 #include "util/strings.hpp"
 
@@ -17,12 +18,14 @@ using nlohmann::json;
 
 constexpr const char* kFormat = "fgr-camera-path";
 constexpr int kVersion = 1;
+constexpr const char* kSchema = "camera-path.schema.json";
 
 using json_fields::fail;
 
 Keyframe keyframe_from(const json& entry, std::size_t index) {
     const std::string where = "keyframe " + std::to_string(index);
     if (!entry.is_object()) fail(where + " must be an object");
+    json_fields::check_keys(entry, {"time", "position", "target", "up", "fov"}, where);
     Keyframe keyframe;
     if (!entry.contains("time")) fail(where + " \"time\" is missing");
     keyframe.time =
@@ -34,7 +37,8 @@ Keyframe keyframe_from(const json& entry, std::size_t index) {
 }  // namespace
 
 std::string camera_path_json(const CameraPathFile& file) {
-    const json document = {{"format", kFormat},
+    const json document = {{"$schema", schema_reference(kSchema)},
+                           {"format", kFormat},
                            {"version", kVersion},
                            {"scene", file.scene},
                            {"name", file.path.name},
@@ -51,13 +55,17 @@ CameraPathFile parse_camera_path_json(const std::string& text) {
         fail("\"format\" must be \"fgr-camera-path\"");
     }
     json_fields::check_version(document, kVersion);
+    json_fields::check_keys(
+        document, {"$schema", "format", "version", "scene", "name", "keyframes"}, "top level");
+    json_fields::check_schema_key(document);
+    const auto string_of = [&](const char* key, const char* absent) {
+        if (!document.contains(key)) return std::string(absent);
+        if (!document.at(key).is_string()) fail("\"{}\" must be a string", key);
+        return document.at(key).get<std::string>();
+    };
     CameraPathFile file;
-    if (document.contains("scene") && document.at("scene").is_string()) {
-        file.scene = document.at("scene").get<std::string>();
-    }
-    file.path.name = document.contains("name") && document.at("name").is_string()
-                         ? document.at("name").get<std::string>()
-                         : "file";
+    file.scene = string_of("scene", "");
+    file.path.name = string_of("name", "file");
     if (!document.contains("keyframes") || !document.at("keyframes").is_array()) {
         fail("\"keyframes\" must be an array");
     }

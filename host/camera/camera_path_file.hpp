@@ -2,11 +2,14 @@
 // Camera paths as JSON files: what the viewer records and saves, and what
 // `fgr render --camera-path FILE.json --time T` renders.
 //
-//   {"format": "fgr-camera-path", "version": 1, "scene": "mandelbulb", "name": "recorded",
+//   {"$schema": "file:///.../share/fgr/schemas/camera-path.schema.json",
+//    "format": "fgr-camera-path", "version": 1, "scene": "mandelbulb", "name": "recorded",
 //    "keyframes": [{"time": 0, "position": [x, y, z], "target": [x, y, z], "up": [x, y, z],
 //                   "fov": 60}, ...]}
 //
-// "fov" is the horizontal field of view in degrees, as everywhere in fgr.
+// "fov" is the horizontal field of view in degrees, as everywhere in fgr. "$schema" is for
+// editors (schemas/camera-path.schema.json, which agrees with the reader) and is not read; any
+// other key is refused, so a misspelt one never passes silently.
 
 #include <filesystem>
 #include <string>
@@ -20,11 +23,13 @@ struct CameraPathFile {
     CameraPath path;
 };
 
-// The JSON text of a path (pretty-printed, ends with a newline).
+// The JSON text of a path (pretty-printed, ends with a newline), its "$schema" the schema beside
+// the running executable (util/installed_files.hpp).
 std::string camera_path_json(const CameraPathFile& file);
 
-// Parses and validates: at least two keyframes, strictly increasing finite times, finite
-// vectors, position != target, fov in (0, 180). Throws std::runtime_error with a one-line reason.
+// Parses and validates: no unknown keys, at least two keyframes, strictly increasing finite
+// times, finite vectors, position != target, fov in (0, 180). Throws std::runtime_error with a
+// one-line reason.
 CameraPathFile parse_camera_path_json(const std::string& text);
 
 // Reads `file`; errors name the file.

@@ -224,16 +224,6 @@ std::vector<fs::path> plugin_search_path(const fs::path& exe_dir) {
     return directories;
 }
 
-fs::path executable_dir() {
-    std::error_code error;
-    const fs::path exe = fs::read_symlink("/proc/self/exe", error);
-    if (error) {
-        spdlog::debug("cannot resolve /proc/self/exe: {}", error.message());
-        return {};
-    }
-    return exe.parent_path();
-}
-
 Discovery discover_scenes(const std::vector<fs::path>& directories) {
     SceneCollector collector;
     for (const fs::path& directory : directories) collector.scan(directory);

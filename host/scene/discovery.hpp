@@ -7,6 +7,7 @@
 #include <vector>
 
 #include "scene/scene.hpp"
+#include "util/installed_files.hpp"  // executable_dir(), which plugin_search_path takes
 
 namespace fgr {
 
@@ -14,9 +15,6 @@ namespace fgr {
 // <exe_dir>/../lib/fgr/plugins (the libdir fgr was built for: built and installed trees match),
 // and ~/.local/share/fgr/plugins (when $HOME is set).
 std::vector<std::filesystem::path> plugin_search_path(const std::filesystem::path& exe_dir);
-
-// Directory holding the running executable (/proc/self/exe).
-std::filesystem::path executable_dir();
 
 struct SkippedPlugin {
     std::filesystem::path file;

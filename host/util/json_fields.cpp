@@ -77,6 +77,13 @@ void check_keys(const json& object, std::initializer_list<std::string_view> know
     }
 }
 
+void check_schema_key(const json& document) {
+    if (document.contains("$schema") && !document.at("$schema").is_string()) {
+        fail("\"$schema\" {} must be a string (the URI of the file's JSON Schema)",
+             shown(document.at("$schema")));
+    }
+}
+
 std::string shown(const json& value) {
     std::string text = value.dump(-1, ' ', /*ensure_ascii=*/true, json::error_handler_t::replace);
     if (text.size() > 40) text = text.substr(0, 40) + "...";

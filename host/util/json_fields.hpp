@@ -47,6 +47,10 @@ nlohmann::json vec3_json(glm::dvec3 v);
 // Refuses any key of `object` not in `known`: a misspelt key must not pass silently.
 void check_keys(const nlohmann::json& object, std::initializer_list<std::string_view> known,
                 const std::string& where);
+// A document's "$schema", which names its JSON Schema for editors (schemas/, installed in
+// share/fgr/schemas) and is otherwise not read: a string when present. Readers that refuse unknown
+// keys list "$schema" among the known ones at the top level.
+void check_schema_key(const nlohmann::json& document);
 
 // A JSON value as it may appear in a one-line message: dumped with non-ASCII escaped, shortened to
 // about 40 characters.

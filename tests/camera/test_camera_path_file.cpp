@@ -4,12 +4,14 @@
 
 #include <filesystem>
 #include <fstream>
+#include <nlohmann/json.hpp>
 #include <string>
 #include <utility>
 #include <vector>
 
 #include "camera/camera.hpp"
 #include "camera/camera_path_file.hpp"
+#include "util/installed_files.hpp"
 
 namespace fgr {
 namespace {
@@ -131,6 +133,15 @@ TEST(CameraPathFile, MalformedFilesAreRefusedWithTheReason) {
         {two_keyframes(R"({"time": 1, "position": [0, 1, 0], "target": [0, 0, 0], "up": [0,0,0]})"),
          "keyframe 1: up is zero or parallel to the view direction"},
         {two_keyframes(R"({"position": [0, 1, 0], "target": [0, 0, 0]})"), "\"time\" is missing"},
+        // A misspelt key never passes silently, at the top level or in a keyframe.
+        {keyframes_json(std::string("[") + kKeyframe0 + ", " + kKeyframe0 + "], \"nmae\": \"x\""),
+         "top level: unknown key \"nmae\""},
+        {two_keyframes(R"({"time": 1, "position": [0, 1, 0], "target": [0, 0, 0], "fvo": 50})"),
+         "keyframe 1: unknown key \"fvo\""},
+        {R"({"format": "fgr-camera-path", "version": 1, "scene": 3, "keyframes": []})",
+         "\"scene\" must be a string"},
+        {R"({"$schema": 3, "format": "fgr-camera-path", "version": 1, "keyframes": []})",
+         "\"$schema\" 3 must be a string"},
     };
     for (const auto& [text, reason] : cases) {
         try {
@@ -232,6 +243,17 @@ TEST(CameraPathFile, FilesAreWrittenAtomicallyAndReadBack) {
             << error.what();
     }
     std::filesystem::remove_all(directory);
+}
+
+// What the viewer saves names its JSON Schema (schemas/camera-path.schema.json) beside the running
+// executable, for editors; reading takes "$schema" and does not read it.
+TEST(CameraPathFile, WrittenFilesNameTheirSchemaAndReadBack) {
+    const nlohmann::json written = nlohmann::json::parse(camera_path_json(sample_path()));
+    EXPECT_EQ(written.at("$schema"), schema_reference("camera-path.schema.json"));
+    EXPECT_EQ(parse_camera_path_json(written.dump()).path.keyframes.size(), 3u);
+    nlohmann::json elsewhere = written;
+    elsewhere["$schema"] = "https://example.org/camera-path.schema.json";
+    EXPECT_EQ(parse_camera_path_json(elsewhere.dump()).path.name, "recorded");
 }
 
 TEST(CameraPathFile, OnlyJsonArgumentsAreTakenForFiles) {

@@ -4,12 +4,14 @@
 #include <gtest/gtest.h>
 
 #include <filesystem>
+#include <nlohmann/json.hpp>
 #include <string>
 #include <vector>
 
 #include "scene/formulas/formula_edit.hpp"
 #include "scene/formulas/formulas.hpp"
 #include "scene/parameters.hpp"
+#include "util/installed_files.hpp"
 
 namespace fgr {
 namespace {
@@ -182,6 +184,14 @@ TEST(FormulaEdit, SwappedSlotsOfOneFormulaSwapTheirValues) {
 
 // What the editor saves reads back as the same scene: source, parameters and their values,
 // cameras, paths and lights; for every shipped file and for an edited hybrid.
+// "Save as" writes a file that names its JSON Schema (schemas/formula.schema.json) beside the
+// running executable, for editors; reading it takes "$schema" (SavedScenesReadBackAsTheSameScene).
+TEST(FormulaEdit, SavedFilesNameTheirSchema) {
+    const nlohmann::json saved =
+        nlohmann::json::parse(formula_scene_json(shipped_formula("menger-kifs")));
+    EXPECT_EQ(saved.at("$schema"), schema_reference("formula.schema.json"));
+}
+
 TEST(FormulaEdit, SavedScenesReadBackAsTheSameScene) {
     std::vector<FormulaScene> scenes;
     for (const auto& entry : fs::directory_iterator(FGR_TEST_FORMULA_DIR)) {

@@ -181,6 +181,13 @@ TEST(FormulaFile, RefusesBadDocumentsInOneLineNamingTheFile) {
              return d;
          }(),
          "must be \"fgr-formula\""},
+        {"\"$schema\" a number",
+         [&] {
+             json d = document({bulb});
+             d["$schema"] = 3;
+             return d;
+         }(),
+         "\"$schema\" 3 must be a string"},
         {"bad tag",
          [&] {
              json d = document({bulb});
@@ -205,6 +212,14 @@ TEST(FormulaFile, RefusesBadDocumentsInOneLineNamingTheFile) {
             EXPECT_EQ(message.find('\n'), std::string::npos) << refusal.name << ": " << message;
         }
     }
+}
+
+// "$schema" names the file's JSON Schema for editors (schemas/formula.schema.json): taken at the
+// top level, and not read.
+TEST(FormulaFile, ASchemaReferenceIsAcceptedAtTheTopLevel) {
+    json doc = document({{"formula", "mandelbulb"}});
+    doc["$schema"] = "file:///usr/share/fgr/schemas/formula.schema.json";
+    EXPECT_EQ(parse(doc).sequence.size(), 1u);
 }
 
 TEST(FormulaFile, DefaultsComeFromTheFormulasAndHybridsPrefixTheirParameters) {

@@ -369,6 +369,12 @@ std::vector<BadCase> bad_cases() {
     json map_typo = maps;
     map_typo[3]["translat"] = {0, 0, 0};
     add("unknown map key", minimal(map_typo), "map 3: unknown key \"translat\"");
+    json schema_number = doc;
+    schema_number["$schema"] = 3;
+    add("\"$schema\" a number", schema_number, "\"$schema\" 3 must be a string");
+    json map_schema = maps;
+    map_schema[0]["$schema"] = "ifs.schema.json";
+    add("\"$schema\" in a map", minimal(map_schema), "map 0: unknown key \"$schema\"");
 
     json deep = doc;
     deep["depth"] = {{"default", 1000}, {"max", 1000}};
@@ -486,6 +492,14 @@ TEST(IfsFile, BadFilesAreRefusedInOneLineNamingTheFileAndTheMap) {
         EXPECT_NE(message.find(bad.expected), std::string::npos)
             << "message: " << message << "\nexpected it to contain: " << bad.expected;
     }
+}
+
+// "$schema" names the file's JSON Schema for editors (schemas/ifs.schema.json): taken at the top
+// level, and not read.
+TEST(IfsFile, ASchemaReferenceIsAcceptedAtTheTopLevel) {
+    json doc = minimal(sierpinski_maps());
+    doc["$schema"] = "file:///usr/share/fgr/schemas/ifs.schema.json";
+    EXPECT_EQ(refusal(doc.dump()), "");
 }
 
 TEST(IfsFile, ReadingNamesTheFile) {

@@ -5,6 +5,7 @@
 
 #include <cerrno>
 #include <chrono>
+#include <filesystem>
 #include <fstream>
 #include <stdexcept>
 #include <string>
@@ -13,6 +14,7 @@
 #include "child_process.hpp"
 #include "util/errors.hpp"
 #include "util/files.hpp"
+#include "util/installed_files.hpp"
 #include "util/strings.hpp"
 #include "util/timing.hpp"
 
@@ -84,6 +86,26 @@ TEST(UtilFiles, ReadFileBytesSaysWhyAndLeavesNothingOnFailure) {
 
 // A moment set back by a known amount: the figures are at least that, in their unit, and not
 // wildly more (the bound allows for a loaded machine; no test here times anything).
+// The "$schema" fgr writes finds the schema in the build tree as in an installed one: share/ beside
+// the executable's bin/ (the tests' binary sits in the build tree's bin/).
+TEST(UtilInstalledFiles, SchemaReferenceIsTheFileUriOfTheSchemaBesideTheExecutable) {
+    const std::filesystem::path dir = schema_dir();
+    EXPECT_EQ(dir, (executable_dir() / ".." / "share" / "fgr" / "schemas").lexically_normal());
+    EXPECT_TRUE(std::filesystem::is_regular_file(dir / "camera-path.schema.json")) << dir;
+    EXPECT_EQ(schema_reference("camera-path.schema.json"),
+              file_uri(dir / "camera-path.schema.json"));
+    EXPECT_EQ(schema_reference("camera-path.schema.json").rfind("file:///", 0), 0u);
+}
+
+// RFC 8089 and 3986: a path's bytes outside the unreserved set and '/' are percent-encoded, so a
+// space, '#', '%' or a non-ASCII name cannot end or change the URI.
+TEST(UtilInstalledFiles, FileUriPercentEncodesWhatAPathMayHold) {
+    EXPECT_EQ(file_uri("/usr/share/fgr/schemas/a.schema.json"),
+              "file:///usr/share/fgr/schemas/a.schema.json");
+    EXPECT_EQ(file_uri("/home/me/my fgr/#1 100%/\xc3\xbc~_-.json"),
+              "file:///home/me/my%20fgr/%231%20100%25/%C3%BC~_-.json");
+}
+
 TEST(UtilTiming, SecondsSinceAndElapsedMsCountFromTheStartInTheirUnits) {
     using namespace std::chrono_literals;
     const auto two_seconds_ago = std::chrono::steady_clock::now() - 2s;

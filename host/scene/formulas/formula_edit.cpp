@@ -11,6 +11,7 @@
 
 #include "camera/view_json.hpp"
 #include "scene/parameters.hpp"
+#include "util/installed_files.hpp"
 #include "util/json_fields.hpp"
 
 namespace fgr {
@@ -72,7 +73,8 @@ json light_json(const Light& light) {
 }  // namespace
 
 std::string formula_scene_json(const FormulaScene& scene) {
-    json document = {{"format", "fgr-formula"},
+    json document = {{"$schema", schema_reference("formula.schema.json")},
+                     {"format", "fgr-formula"},
                      {"version", kFormulaFormatVersion},
                      {"id", scene.id},
                      {"name", scene.name},

@@ -40,7 +40,8 @@ std::vector<float> values_after_edit(const Scene& before, const std::vector<floa
 
 // The scene as a formula file (sdk/README.md "Formula scenes and hybrids") that reads back as the
 // same sequence, settings, cameras, paths and lights: every value written, the distance and
-// estimate only where the sequence would not give them by itself.
+// estimate only where the sequence would not give them by itself; its "$schema" the schema beside
+// the running executable (util/installed_files.hpp).
 std::string formula_scene_json(const FormulaScene& scene);
 
 }  // namespace fgr

@@ -225,10 +225,11 @@ FormulaScene parse_formula_document(const std::string& text) {
     }
     const json document = scene_json::parse_object(text);
     check_keys(document,
-               {"format", "version", "id", "name", "description", "tags", "sequence", "iterations",
-                "bailout", "distance", "estimate", "step_factor", "max_distance", "cameras",
-                "camera_paths", "lights"},
+               {"$schema", "format", "version", "id", "name", "description", "tags", "sequence",
+                "iterations", "bailout", "distance", "estimate", "step_factor", "max_distance",
+                "cameras", "camera_paths", "lights"},
                "top level");
+    json_fields::check_schema_key(document);
     scene_json::check_format(document, kFormulaFormat, kFormulaFormatVersion);
     FormulaScene scene;
     const scene_json::Header header = scene_json::header_from(document);

@@ -338,9 +338,10 @@ IfsScene parse_ifs_document(const std::string& text) {
     }
     const json document = scene_json::parse_object(text);
     check_keys(document,
-               {"format", "version", "id", "name", "description", "depth", "maps", "leaf",
-                "cameras", "camera_paths", "lights"},
+               {"$schema", "format", "version", "id", "name", "description", "depth", "maps",
+                "leaf", "cameras", "camera_paths", "lights"},
                "top level");
+    json_fields::check_schema_key(document);
     IfsScene scene;
     scene_json::check_format(document, kIfsFormat, kIfsFormatVersion);
     scene.version = kIfsFormatVersion;
