@@ -11,12 +11,15 @@
 #include <stdexcept>
 
 #include "camera/view_validation.hpp"
+#include "render/renderer.hpp"
+#include "render/sample_budget.hpp"
 #include "scene/effects.hpp"
 #include "scene/parameters.hpp"
 #include "scene/scene_limits.hpp"
 #include "util/atomic_file.hpp"
 #include "util/content_hash.hpp"
 #include "util/files.hpp"
+#include "util/installed_files.hpp"
 #include "util/json_fields.hpp"
 
 namespace fgr {
@@ -28,8 +31,6 @@ using nlohmann::json;
 // Nesting deeper than this is no view file; refusing it before parsing keeps a hostile file from
 // recursing through the JSON library.
 constexpr int kMaxViewDepth = 16;
-constexpr int kMaxImageSideInView = 1 << 20;
-constexpr int kMaxViewSamples = 65536;
 constexpr std::size_t kMaxViewParameters = 1024;
 
 // A parameter's id or an enum choice's name: [a-z][a-z0-9_]*, as a plugin's are.
@@ -177,9 +178,9 @@ void read_image(const json& document, ViewFile& view) {
     const json& image = object_member(document, "image", "", false);
     json_fields::check_keys(image, {"width", "height", "bit_depth", "alpha", "layers"},
                             "\"image\"");
-    view.width = static_cast<int>(integer_in(image, "width", "image", 1, kMaxImageSideInView, 640));
+    view.width = static_cast<int>(integer_in(image, "width", "image", 1, kMaxTiledImageSide, 640));
     view.height =
-        static_cast<int>(integer_in(image, "height", "image", 1, kMaxImageSideInView, 480));
+        static_cast<int>(integer_in(image, "height", "image", 1, kMaxTiledImageSide, 480));
     view.bit_depth = static_cast<int>(integer_in(image, "bit_depth", "image", 8, 16, 8));
     if (view.bit_depth != 8 && view.bit_depth != 16) fail("\"image.bit_depth\": must be 8 or 16");
     view.alpha = bool_from(image, "alpha", "image", false);
@@ -254,7 +255,7 @@ void read_render(const json& document, ViewFile& view) {
                             "\"render\"");
     view.mode = parsed_value(render, "mode", "render", "shaded",
                              [](const std::string& text) { return parse_render_mode(text); });
-    view.samples = static_cast<int>(integer_in(render, "samples", "render", 1, kMaxViewSamples, 1));
+    view.samples = static_cast<int>(integer_in(render, "samples", "render", 1, kMaxSamples, 1));
     if (const json* effects = optional_member(render, "effects")) {
         if (!effects->is_array() || effects->size() > 64) {
             fail("\"render.effects\": must be an array of effect names");
@@ -361,6 +362,7 @@ using ordered = nlohmann::ordered_json;
 
 ordered view_json(const ViewFile& view) {
     ordered document;
+    document["$schema"] = schema_reference("view.schema.json");
     document["format"] = kViewFormat;
     document["version"] = kViewVersion;
     if (!view.fgr_version.empty()) document["fgr_version"] = view.fgr_version;
@@ -528,6 +530,7 @@ ViewFile parse_view_file(const std::string& text) {
                             {"$schema", "format", "version", "fgr_version", "scene", "image",
                              "camera", "parameters", "render", "path"},
                             "the view");
+    json_fields::check_schema_key(document);
     if (string_from(document, "format", "", true, "") != kViewFormat) {
         fail("\"format\": must be \"{}\" (this is not a view file)", kViewFormat);
     }

@@ -59,6 +59,7 @@ LIMITS = [
     ("camera-path.schema.json", "/properties/keyframes/minItems", "min_keyframes"),
     ("view.schema.json", "/properties/image/properties/width/maximum", "image_side"),
     ("view.schema.json", "/properties/image/properties/height/maximum", "image_side"),
+    ("view.schema.json", "/properties/render/properties/samples/maximum", "samples"),
     ("view.schema.json", "/properties/path/properties/bounces/maximum", "bounces"),
     ("view.schema.json", "/properties/path/properties/roulette_depth/maximum", "bounces"),
     ("view.schema.json", "/properties/scene/properties/id/maxLength", "id_length"),
@@ -497,7 +498,6 @@ BAD = {
     "view.schema.json": [
         ("a misspelt key", renamed("/camera", "camrea")),
         ("a misspelt render key", renamed("/render/samples", "sample")),
-        ("a scene without its fingerprint", removing("/scene/fingerprint")),
         ("a scene id with capitals", setting("/scene/id", "Mandelbulb")),
         ("an fov of 180", setting("/camera/fov", 180)),
         ("a bit depth of 12", setting("/image/bit_depth", 12)),

@@ -28,7 +28,9 @@
 #include "scene/ifs/ifs.hpp"
 #include "scene/render_mode.hpp"
 #include "scene/scene_limits.hpp"
+#include "render/sample_budget.hpp"
 #include "util/atomic_file.hpp"
+#include "view_file/view_file.hpp"
 
 namespace fgr {
 namespace {
@@ -62,7 +64,33 @@ struct Sample {
     const char* schema;
     std::function<void(const fs::path&)> write;
 };
+// A view with every key written: the path tracer's and a stereo projection's too.
+ViewFile sample_view() {
+    ViewFile view;
+    view.scene_id = "mandelbulb";
+    view.scene_fingerprint = "0123456789abcdef";
+    view.scene_file = "/tmp/mandelbulb.cl";
+    view.fgr_version = "0.1.0";
+    view.camera.position = {2.0, -2.0, 1.0};
+    view.projection.kind = ProjectionKind::StereoTopBottom;
+    view.projection.eye_separation = 0.1;
+    view.projection.convergence = 3.0;
+    view.parameters = {{"colour_mode", ViewParameter::Kind::Choice, "iterations"},
+                       {"power", ViewParameter::Kind::Number, "7.5"},
+                       {"shadows_on", ViewParameter::Kind::Bool, "true"},
+                       {"tint", ViewParameter::Kind::Vector, "0.5,0.25,1"}};
+    view.mode = RenderMode::Path;
+    view.effects = {"shadows", "fog"};
+    ViewPathChoices path;
+    path.turbidity = 3.0f;
+    path.sun_elevation = 35.0f;
+    path.sun_azimuth = 10.0f;
+    view.path = path;
+    return view;
+}
+
 const Sample kSamples[] = {
+    {"view", [](const fs::path& file) { write_view_file(file, sample_view()); }},
     {"camera-path",
      [](const fs::path& file) { write_camera_path_file(file, sample_camera_path()); }},
     {"formula",
@@ -140,7 +168,8 @@ json facts() {
           {"formula_min_max_distance", kFormulaMinMaxDistance},
           {"formula_max_max_distance", kFormulaMaxMaxDistance},
           {"bounces", kMaxBounces},
-          {"image_side", kMaxTiledImageSide}}},
+          {"image_side", kMaxTiledImageSide},
+          {"samples", kMaxSamples}}},
     };
 }
 
