@@ -72,10 +72,14 @@ int run_cli(int argc, char** argv) {
     list->add_flag("--formulas", list_formulas,
                    "list the formula library instead: what formula scene files may iterate");
     bool math_check = false;
-    app.add_subcommand("info", "list OpenCL platforms and devices")
-        ->add_flag("--math-check", math_check,
+    std::string info_file;
+    CLI::App* info = app.add_subcommand(
+        "info", "list OpenCL platforms and devices, or print the view an image file carries");
+    info->add_flag("--math-check", math_check,
                    "also run (or read the cached verdicts of) the device math self-test at every "
                    "precision and packet width");
+    info->add_option("file", info_file,
+                     "a PNG, TIFF or EXR image fgr wrote: print the view it carries (as JSON)");
     RenderOptions render_options;
     add_render_command(app, render_options);
     VideoOptions video_options;
@@ -122,6 +126,10 @@ int run_cli(int argc, char** argv) {
     configure_logging(verbose, cluster);
     const auto run_command = [&](const std::string& command) {
         if (command == "list") return command_list(list_scene, list_formulas);
+        if (command == "info" && !info_file.empty()) {
+            if (math_check) throw UsageError("--math-check is for the devices, not a FILE");
+            return command_info_file(info_file);
+        }
         if (command == "info") return command_info(math_check);
         if (command == "video") return command_video(video_options);
         if (command == "merge") return command_merge(merge_options);

@@ -153,6 +153,9 @@ void write_output(const std::filesystem::path& file, const std::string& text);
 int command_list(const std::string& scene_id, bool formulas);
 // With `math_check`, each device's math self-test verdict per precision and packet width.
 int command_info(bool math_check);
+// `fgr info FILE`: the view an image file carries (image/embedded_view.hpp), printed as indented
+// JSON; a RuntimeFailure naming the file when it carries none.
+int command_info_file(const std::filesystem::path& file);
 
 // --- fgr render ----------------------------------------------------------------------------------
 

@@ -1,10 +1,15 @@
-// fgr info: the OpenCL devices, numbered for --device, and on request their math self-test.
+// fgr info: the OpenCL devices, numbered for --device, and on request their math self-test; or,
+// given an image file, the view it carries.
 #include <fmt/format.h>
+
+#include <nlohmann/json.hpp>
+#include <optional>
 
 #include "commands.hpp"
 #include "device/math_check.hpp"
 #include "device/opencl_device.hpp"
 #include "device/program_cache.hpp"
+#include "image/embedded_view.hpp"
 
 namespace fgr {
 namespace {
@@ -25,7 +30,30 @@ void print_math_check(const DeviceInfo& info) {
     }
 }
 
+// What `fgr info FILE` shows of the document `file` carries: the JSON, indented.
+void print_embedded_view(const std::filesystem::path& file, const std::string& document) {
+    nlohmann::json view;
+    try {
+        view = nlohmann::json::parse(document);
+    } catch (const nlohmann::json::exception& error) {
+        throw RuntimeFailure(fmt::format("{}: the fgr view it carries is not JSON: {}",
+                                         file.string(), error.what()));
+    }
+    fmt::print("{}\n", view.dump(2));
+}
+
 }  // namespace
+
+int command_info_file(const std::filesystem::path& file) {
+    const std::optional<std::string> document = read_embedded_view(file);
+    if (!document) {
+        throw RuntimeFailure(fmt::format(
+            "{}: no fgr view embedded (not written by fgr, or written before views were embedded)",
+            file.string()));
+    }
+    print_embedded_view(file, *document);
+    return 0;
+}
 
 int command_info(bool math_check) {
     const auto devices = list_devices();

@@ -7,6 +7,7 @@
 #include <ImfIO.h>
 #include <ImfInputFile.h>
 #include <ImfOutputFile.h>
+#include <ImfStringAttribute.h>
 #include <stb_image.h>
 #include <stb_image_write.h>
 
@@ -28,6 +29,7 @@
 #include <system_error>
 #include <vector>
 
+#include "image/embedded_view.hpp"
 #include "util/atomic_file.hpp"
 #include "util/errors.hpp"
 #include "util/files.hpp"
@@ -564,13 +566,17 @@ std::vector<std::string> exr_channel_names(const fs::path& path, int width, int 
 }
 
 std::string encode_exr(const fs::path& temporary, int width, int height,
-                       const std::vector<ExrLayer>& layers, const std::vector<std::string>& names) {
+                       const std::vector<ExrLayer>& layers, const std::vector<std::string>& names,
+                       const std::string& embedded_view) {
     FilePointer owned(std::fopen(temporary.c_str(), "wb"));
     if (owned == nullptr) return errno_message(errno);
     try {
         Imf::Header header(width, height);
         header.compression() = Imf::ZIP_COMPRESSION;
         header.lineOrder() = Imf::INCREASING_Y;
+        if (!embedded_view.empty()) {
+            header.insert(kExrViewAttribute, Imf::StringAttribute(embedded_view));
+        }
         Imf::FrameBuffer frame;
         std::size_t next = 0;
         for (const ExrLayer& layer : layers) {
@@ -640,10 +646,12 @@ void write_radiance_hdr(const fs::path& file, const HdrImage& image) {
     });
 }
 
-void write_exr(const fs::path& file, int width, int height, const std::vector<ExrLayer>& layers) {
+void write_exr(const fs::path& file, int width, int height, const std::vector<ExrLayer>& layers,
+               const std::string& embedded_view) {
     const std::vector<std::string> names = exr_channel_names(file, width, height, layers);
+    check_embedded_view(file, embedded_view);
     replace_or_throw(file, [&](const fs::path& temporary) {
-        return encode_exr(temporary, width, height, layers, names);
+        return encode_exr(temporary, width, height, layers, names, embedded_view);
     });
 }
 

@@ -47,14 +47,15 @@ struct ExrLayer {
 };
 
 // Writes one single-part scanline OpenEXR file holding every layer's channels as 32-bit floats,
-// ZIP-compressed, rows top to bottom, display and data windows (0,0)-(width-1,height-1); values
-// are stored as they are (NaN, infinities and negatives included). Compositors and denoisers
-// (Nuke, Blender, OIDN's tools) read "albedo.R" etc. as layers. Written beside `file` and renamed
-// over it, like write_radiance_hdr. Throws std::invalid_argument for a bad size, an empty,
+// ZIP-compressed, rows top to bottom, display and data windows (0,0)-(width-1,height-1), and
+// `embedded_view` (image/embedded_view.hpp; empty: none) in its header; values are stored as they
+// are (NaN, infinities and negatives included). Compositors and denoisers (Nuke, Blender, OIDN's
+// tools) read "albedo.R" etc. as layers. Written beside `file` and renamed over it, like
+// write_radiance_hdr. Throws std::invalid_argument for a bad size, an empty,
 // duplicate or ill-formed name (a name or channel may not be empty or contain '.', a layer needs
-// at least one channel) or a value count that does not match, std::runtime_error
-// ("cannot write '<file>': <reason>") when the file cannot be written.
+// at least one channel), a value count that does not match or a document check_embedded_view
+// refuses, std::runtime_error ("cannot write '<file>': <reason>") when the file cannot be written.
 void write_exr(const std::filesystem::path& file, int width, int height,
-               const std::vector<ExrLayer>& layers);
+               const std::vector<ExrLayer>& layers, const std::string& embedded_view = {});
 
 }  // namespace fgr

@@ -11,6 +11,7 @@
 #include <utility>
 #include <vector>
 
+#include "image/embedded_view.hpp"
 #include "image/png_errors.hpp"
 #include "util/atomic_file.hpp"
 #include "util/errors.hpp"
@@ -70,6 +71,7 @@ struct PngPixels {
     bool linear = false;           // gAMA 1.0 instead of sRGB
     std::vector<uint8_t> storage;  // interleaved RGBA, or 16-bit samples big-endian as PNG has
     const uint8_t* bytes = nullptr;
+    const std::string* embedded_view = nullptr;  // the caller's; empty: none
     std::size_t row_bytes() const {
         return std::size_t(width) * std::size_t(channels) * std::size_t(bit_depth / 8);
     }
@@ -127,6 +129,7 @@ void write_rows(png_structp png, png_infop info, const PngPixels& image) {
     } else {
         png_set_sRGB_gAMA_and_cHRM(png, info, PNG_sRGB_INTENT_PERCEPTUAL);
     }
+    set_png_embedded_view(png, info, *image.embedded_view);
     png_write_info(png, info);
     const std::size_t stride = image.row_bytes();
     for (std::size_t y = 0; y < std::size_t(image.height); ++y) {
@@ -275,9 +278,11 @@ void open_png_reader(PngReader& reader, const fs::path& path) {
 
 }  // namespace
 
-void write_png(const fs::path& path, const Image8& image) {
+void write_png(const fs::path& path, const Image8& image, const std::string& embedded_view) {
     validate_image(path, image);
+    check_embedded_view(path, embedded_view);
     PngPixels pixels;
+    pixels.embedded_view = &embedded_view;
     pixels.width = image.width;
     pixels.height = image.height;
     if (image.alpha.empty()) {
@@ -290,9 +295,12 @@ void write_png(const fs::path& path, const Image8& image) {
     write_pixels_atomically(path, pixels);
 }
 
-void write_png16_linear(const fs::path& path, const Image16& image) {
+void write_png16_linear(const fs::path& path, const Image16& image,
+                        const std::string& embedded_view) {
     validate_image(path, image);
+    check_embedded_view(path, embedded_view);
     PngPixels pixels;
+    pixels.embedded_view = &embedded_view;
     pixels.width = image.width;
     pixels.height = image.height;
     pixels.bit_depth = 16;

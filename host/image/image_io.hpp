@@ -5,6 +5,7 @@
 
 #include <cstdint>
 #include <filesystem>
+#include <string>
 #include <vector>
 
 namespace fgr {
@@ -33,16 +34,19 @@ struct PngSamples {
     std::vector<uint16_t> samples;  // rows top first, `channels` a pixel
 };
 
-// Writes `image` as an 8-bit RGB PNG tagged sRGB (RGBA when it has alpha). The file is written
-// beside `path` under a temporary name and renamed over it only when complete, so `path` holds
-// either its old content or the whole new image, never a partial file. Throws std::invalid_argument
-// for non-positive dimensions or a pixel buffer of the wrong size, std::runtime_error ("cannot
-// write '<path>': <reason>") otherwise.
-void write_png(const std::filesystem::path& path, const Image8& image);
+// Writes `image` as an 8-bit RGB PNG tagged sRGB (RGBA when it has alpha), carrying
+// `embedded_view` (image/embedded_view.hpp; empty: none). The file is written beside `path` under
+// a temporary name and renamed over it only when complete, so `path` holds either its old content
+// or the whole new image, never a partial file. Throws std::invalid_argument for non-positive
+// dimensions, a pixel buffer of the wrong size or a document check_embedded_view refuses,
+// std::runtime_error ("cannot write '<path>': <reason>") otherwise.
+void write_png(const std::filesystem::path& path, const Image8& image,
+               const std::string& embedded_view = {});
 
-// Writes `image` as a 16-bit RGB PNG tagged linear (gAMA 1.0), RGBA when it has alpha,
-// atomically like write_png.
-void write_png16_linear(const std::filesystem::path& path, const Image16& image);
+// Writes `image` as a 16-bit RGB PNG tagged linear (gAMA 1.0), RGBA when it has alpha, carrying
+// `embedded_view`, atomically like write_png.
+void write_png16_linear(const std::filesystem::path& path, const Image16& image,
+                        const std::string& embedded_view = {});
 
 // Reads a PNG as 8-bit RGB: palette and grey are expanded to RGB, alpha is dropped (not
 // composited), 16-bit samples are reduced to 8 bits. Throws std::runtime_error

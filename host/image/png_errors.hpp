@@ -1,11 +1,14 @@
 #pragma once
 // libpng's error and warning handlers as fgr's PNG readers and writers use them (image_io.cpp,
-// tiled/streaming_image.cpp), and the compression both writers use.
+// tiled/streaming_image.cpp), and the compression and the embedded view both writers write.
 
 #include <png.h>
 #include <zlib.h>
 
 #include <cstdio>
+#include <string>
+
+#include "image/embedded_view.hpp"
 
 namespace fgr {
 
@@ -35,6 +38,21 @@ inline void ignore_png_warning(png_structp, png_const_charp) {}
 inline void use_png_compression(png_structp png) {
     png_set_filter(png, PNG_FILTER_TYPE_BASE, PNG_FILTER_SUB);
     png_set_compression_strategy(png, Z_RLE);
+}
+
+// Puts `document` (checked with check_embedded_view; empty: none) into `info` as the iTXt chunk
+// "fgr:view", which png_write_info writes before the pixels. libpng copies the text; it may
+// longjmp (out of memory), so call it where setjmp is armed.
+inline void set_png_embedded_view(png_structp png, png_infop info, const std::string& document) {
+    if (document.empty()) return;
+    png_text text{};
+    text.compression = document.size() > kPlainPngViewBytes ? PNG_ITXT_COMPRESSION_zTXt
+                                                            : PNG_ITXT_COMPRESSION_NONE;
+    text.key = const_cast<png_charp>(kPngViewKeyword);
+    text.text = const_cast<png_charp>(document.c_str());
+    text.lang = nullptr;  // no language tag, no translated keyword
+    text.lang_key = nullptr;
+    png_set_text(png, info, &text, 1);
 }
 
 }  // namespace fgr

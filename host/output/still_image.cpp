@@ -128,9 +128,10 @@ void write_png_still(const std::filesystem::path& path, const Frame& frame,
     const size_t pixels = static_cast<size_t>(width) * static_cast<size_t>(height);
     if (!output.alpha) {
         if (output.bit_depth == 16) {
-            write_png16_linear(path, linear_image16(frame, output.display.exposure));
+            write_png16_linear(path, linear_image16(frame, output.display.exposure),
+                               output.embedded_view);
         } else {
-            write_png(path, frame.image);
+            write_png(path, frame.image, output.embedded_view);
         }
         return;
     }
@@ -147,13 +148,13 @@ void write_png_still(const std::filesystem::path& path, const Frame& frame,
         rgba16_linear_rows(frame, output.display.exposure, whole_frame(frame), rgba);
         Image16 image{width, height, {}, {}};
         split(rgba, image);
-        write_png16_linear(path, image);
+        write_png16_linear(path, image, output.embedded_view);
     } else {
         std::vector<uint8_t> rgba(pixels * 4);
         rgba8_rows(frame, output.display, whole_frame(frame), rgba);
         Image8 image{width, height, {}, {}};
         split(rgba, image);
-        write_png(path, image);
+        write_png(path, image, output.embedded_view);
     }
 }
 
@@ -164,7 +165,7 @@ void write_still(const std::filesystem::path& path, const Frame& frame, const St
         Aovs aovs = output.aovs;
         aovs.alpha = aovs.alpha || output.alpha;
         write_exr(path, frame.image.width, frame.image.height,
-                  exr_layers(frame, aovs, whole_frame(frame)));
+                  exr_layers(frame, aovs, whole_frame(frame)), output.embedded_view);
     } else {
         write_png_still(path, frame, output);
     }

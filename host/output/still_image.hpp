@@ -5,6 +5,7 @@
 
 #include <cstdint>
 #include <filesystem>
+#include <string>
 #include <string_view>
 
 #include "device/opencl_device.hpp"
@@ -67,14 +68,17 @@ struct StillOutput {
     DisplayTransform display;  // the 8-bit image's (its exposure also scales the 16-bit one)
     bool alpha = false;        // PNG: RGBA, straight alpha; EXR: A, premultiplied colour
     Aovs aovs;                 // EXR layers beside the colour
+    // The document the file carries (image/embedded_view.hpp: the view that made it); "": none.
+    std::string embedded_view{};
 };
 
 // Writes `frame` by the file's extension. PNG: bit_depth 8, the tone-mapped sRGB image; 16, its
 // linear colour times the exposure in a linear 16-bit PNG; RGBA with output.alpha. EXR: the
 // linear colour as rendered (scene-referred: no exposure, no tone mapping) in 32-bit float
 // channels R, G, B, plus the layers output.aovs asks for (albedo.R/G/B, normal.X/Y/Z, depth.Z,
-// A; A also with output.alpha). Atomic; throws std::runtime_error (and std::invalid_argument for
-// a layer the frame does not have: alpha, albedo and normal need StillSettings::aovs).
+// A; A also with output.alpha). Either carries output.embedded_view. Atomic; throws
+// std::runtime_error (and std::invalid_argument for a layer the frame does not have: alpha, albedo
+// and normal need StillSettings::aovs; or a document check_embedded_view refuses).
 void write_still(const std::filesystem::path& path, const Frame& frame, const StillOutput& output);
 
 }  // namespace fgr

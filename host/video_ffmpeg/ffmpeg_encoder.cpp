@@ -140,6 +140,13 @@ void check_settings(const std::filesystem::path& output, const VideoSettings& se
                                                 container->name, container->long_name));
     }
     check_size(codec, pixel_format_for(codec), settings.width, settings.height);
+    // MOV (QuickTime) stores metadata text behind a 16-bit length: a longer view would be cut.
+    constexpr std::size_t kMaxMovText = 0xffff;
+    if (std::string(container->name) == "mov" && settings.embedded_view.size() > kMaxMovText) {
+        throw std::invalid_argument(fmt::format(
+            "a .mov file keeps at most {} bytes of metadata, and the view is {} (use .mp4 or .mkv)",
+            kMaxMovText, settings.embedded_view.size()));
+    }
     const bool has_crf =
         name == "libx264" || name == "libx265" || name == "libvpx-vp9" || name == "libaom-av1";
     const int most = name == "libx264" || name == "libx265" ? 51 : 63;
@@ -256,6 +263,12 @@ void open_encoder(Encoder& state, const std::filesystem::path& output,
     // Animations loop forever, as on a web page (FFmpeg's WebP muxer plays once by default).
     if (container_name == "webp" || container_name == "gif" || container_name == "apng") {
         av_dict_set(&options, container_name == "apng" ? "plays" : "loop", "0", 0);
+    }
+    // The view that made the video: MP4 and MOV keep "comment" as iTunes-style metadata (©cmt),
+    // Matroska and WebM as a COMMENT tag; the GIF, WebP and APNG muxers write no metadata at all.
+    if (!settings.embedded_view.empty()) {
+        check_av(av_dict_set(&state.format->metadata, "comment", settings.embedded_view.c_str(), 0),
+                 "setting the video's metadata");
     }
     const int header = avformat_write_header(state.format, &options);
     av_dict_free(&options);

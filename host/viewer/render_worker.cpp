@@ -397,7 +397,7 @@ void RenderWorker::take_screenshot(const ScreenshotRequest& request) {
     frame_request_full.samples = request.samples;
     const Frame frame = renderer->render(frame_request_full);
     try {
-        write_png(request.file, frame.image);
+        write_png(request.file, frame.image, request.embedded_view);
     } catch (const std::exception& error) {
         spdlog::error("screenshot: {}", error.what());
         post_message(fmt::format("screenshot failed: {}", error.what()));

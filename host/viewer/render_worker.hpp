@@ -80,6 +80,8 @@ struct ScreenshotRequest {
     ViewState state;  // rendered at state.width x state.height
     int samples = 16;
     std::filesystem::path file;
+    // The document the PNG carries (image/embedded_view.hpp: the view it shows); "": none.
+    std::string embedded_view{};
 };
 
 // A new version of a scene (a rebuilt plugin, an edited .cl file) to try before it replaces the

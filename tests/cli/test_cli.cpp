@@ -708,6 +708,42 @@ TEST_F(CliTest, InfoListsADevice) {
     EXPECT_TRUE(contains_ignoring_case(result.out, "device")) << result;
 }
 
+// `fgr info FILE` prints the view an image carries as indented JSON; a file without one, or not
+// an image, is one error line and exit 1.
+TEST_F(CliTest, InfoPrintsTheViewAnImageCarries) {
+    const Image8 image{4, 2, std::vector<uint8_t>(24, 100)};
+    write_png(dir() / "view.png", image, R"({"scene":"mandelbulb","camera":{"fov":45}})");
+    const RunResult shown = run({"info", "view.png"});
+    ASSERT_EQ(shown.exit_code, 0) << shown;
+    EXPECT_EQ(shown.out,
+              "{\n  \"camera\": {\n    \"fov\": 45\n  },\n  \"scene\": \"mandelbulb\"\n}\n");
+    EXPECT_EQ(shown.err, "");
+
+    write_png(dir() / "plain.png", image);
+    const RunResult none = run({"info", "plain.png"});
+    EXPECT_EQ(none.exit_code, 1) << none;
+    EXPECT_EQ(none.out, "");
+    EXPECT_EQ(none.err,
+              "fgr: error: plain.png: no fgr view embedded (not written by fgr, or written before "
+              "views were embedded)\n");
+
+    write_png(dir() / "not_json.png", image, "scene = mandelbulb");
+    const RunResult not_json = run({"info", "not_json.png"});
+    EXPECT_EQ(not_json.exit_code, 1) << not_json;
+    expect_one_error_line(not_json);
+    EXPECT_NE(not_json.err.find("not_json.png: the fgr view it carries is not JSON"),
+              std::string::npos)
+        << not_json;
+
+    const RunResult missing = run({"info", "missing.png"});
+    EXPECT_EQ(missing.exit_code, 1) << missing;
+    EXPECT_EQ(missing.err, "fgr: error: cannot read 'missing.png': no such file\n");
+    const RunResult directory = run({"info", "."});
+    EXPECT_EQ(directory.exit_code, 1) << directory;
+    expect_one_error_line(directory);
+    EXPECT_EQ(run({"info", "view.png", "--math-check"}).exit_code, 2);
+}
+
 // --- Views and images fgr cannot compute ---------------------------------------------------------
 //
 // A render whose camera basis would be NaN or infinite, or whose pixels come out NaN, is an error

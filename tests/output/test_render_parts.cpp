@@ -25,6 +25,7 @@ extern "C" {
 
 #include "child_process.hpp"
 #include "device_suite.hpp"
+#include "image/embedded_view.hpp"
 #include "image/image_io.hpp"
 #include "output/parts/render_parts.hpp"
 #include "render/renderer.hpp"
@@ -364,9 +365,13 @@ TEST_F(RenderPartsTest, BandsAcrossTileSeamsMergeIntoTheUntiledFrame) {
     output.path = temp_.path() / "merged.exr";
     output.format = ImageFormat::Exr;
     output.aovs = Aovs{true, true, true, true};
+    output.embedded_view = R"({"scene":"mandelbulb"})";
     const size_t row_bytes = size_t(whole.width) * (11 * 4 + 2 * 14 * 4 + 3);
     const MergeResult result = merge_parts(plan, output, 4 * row_bytes);
     EXPECT_EQ(result.band_rows, 4);
+    EXPECT_EQ(read_embedded_view(output.path), output.embedded_view);
+    // A part carries its identity, not a view.
+    EXPECT_EQ(read_embedded_view(parts.front().path), std::nullopt);
     const auto read =
         read_exr_channels(output.path, {"R", "G", "B", "albedo.R", "albedo.G", "albedo.B",
                                         "normal.X", "normal.Y", "normal.Z", "depth.Z", "A"});

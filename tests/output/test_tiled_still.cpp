@@ -24,6 +24,7 @@
 #include "device/kernel_assembly.hpp"
 #include "device/program_cache.hpp"
 #include "device_suite.hpp"
+#include "image/embedded_view.hpp"
 #include "image/image_io.hpp"
 #include "output/still_layers.hpp"
 #include "output/tiled/tiled_still.hpp"
@@ -219,7 +220,9 @@ TEST_F(TiledStillTest, StreamedPngTiffAndExrReadBackAsTheFrame) {
     TiledOutput png;
     png.path = temp_.path() / "still.png";
     png.display = display_transform(scene, whole.params);
+    png.embedded_view = R"({"scene":"menger"})";
     render_tiled_still(*built, whole, png, settings);
+    EXPECT_EQ(read_embedded_view(png.path), png.embedded_view);
     const Image8 read = read_png(png.path);
     ASSERT_EQ(read.width, 600);
     ASSERT_EQ(read.height, 400);
@@ -230,6 +233,7 @@ TEST_F(TiledStillTest, StreamedPngTiffAndExrReadBackAsTheFrame) {
     tiff.format = ImageFormat::Tiff;
     tiff.alpha = true;
     render_tiled_still(*built, whole, tiff, settings);
+    EXPECT_EQ(read_embedded_view(tiff.path), png.embedded_view);
     int width = 0, height = 0, channels = 0, bits = 0;
     const std::vector<uint16_t> samples = read_tiff(tiff.path, &width, &height, &channels, &bits);
     ASSERT_EQ(width, 600);
@@ -253,6 +257,7 @@ TEST_F(TiledStillTest, StreamedPngTiffAndExrReadBackAsTheFrame) {
 
     const fs::path exr = temp_.path() / "still.exr";
     render_tiled_still(*built, whole, exr_output(exr, {}), settings);
+    EXPECT_EQ(read_embedded_view(exr), std::nullopt);
     const auto rgb = read_exr_channels(exr, {"R", "G", "B"}, &width, &height);
     for (int c = 0; c < 3; ++c) {
         EXPECT_EQ(differing(frame.linear, 3, c, rgb[size_t(c)]), 0);

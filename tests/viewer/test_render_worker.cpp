@@ -17,6 +17,7 @@
 #include "device/opencl_device.hpp"
 #include "device/program_cache.hpp"
 #include "fgr/plugin.h"
+#include "image/embedded_view.hpp"
 #include "image/image_io.hpp"
 #include "image_compare.hpp"
 #include "mandelbulb_reference.hpp"
@@ -294,11 +295,13 @@ TEST_F(RenderWorkerTest, ScreenshotsAreFinishedBeforeStopReturns) {
     request.state = state(kSphere, 120, 90, 1);
     request.samples = 4;
     request.file = dir.path() / "shot.png";
+    request.embedded_view = R"({"scene":"sphere"})";
     worker_->request_screenshot(request);
     worker_->stop();
     const Image8 shot = read_png(dir.path() / "shot.png");
     EXPECT_EQ(shot.width, 120);
     EXPECT_EQ(shot.height, 90);
+    EXPECT_EQ(read_embedded_view(dir.path() / "shot.png"), request.embedded_view);
     const std::vector<std::string> messages = worker_->take_messages();
     ASSERT_EQ(messages.size(), 1u);
     EXPECT_NE(messages[0].find("shot.png"), std::string::npos);

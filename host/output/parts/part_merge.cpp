@@ -240,7 +240,8 @@ MergeResult merge_parts(const MergePlan& plan, TiledOutput output, size_t band_b
     result.band_rows = static_cast<int>(std::clamp<size_t>(
         band_budget_bytes / (size_t(plan.width) * band_pixel_bytes), 1, size_t(plan.height)));
 
-    auto writer = open_streaming_image(output.path, output.format, plan.width, plan.height, layout);
+    auto writer = open_streaming_image(output.path, output.format, plan.width, plan.height, layout,
+                                       {}, output.embedded_view);
     std::vector<std::unique_ptr<PartReader>> readers(plan.parts.size());
     std::vector<uint8_t> band;
     const size_t stride = pixel_bytes * size_t(plan.width);

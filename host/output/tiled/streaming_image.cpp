@@ -18,6 +18,7 @@
 #include <stdexcept>
 #include <utility>
 
+#include "image/embedded_view.hpp"
 #include "image/png_errors.hpp"
 #include "util/atomic_file.hpp"
 #include "util/errors.hpp"
@@ -63,7 +64,8 @@ struct PngHandles {
 
 class PngStream final : public StreamingImageWriter {
 public:
-    PngStream(const fs::path& path, int width, int height, const RowLayout& layout)
+    PngStream(const fs::path& path, int width, int height, const RowLayout& layout,
+              const std::string& embedded_view)
         : pending_(path), width_(width), layout_(layout) {
         check_rgb_layout(path, layout, "PNG");
         h_.file = std::fopen(pending_.temporary().c_str(), "wb");
@@ -74,7 +76,7 @@ public:
             fail_write(path, "out of memory");
         }
         png_init_io(h_.png, h_.file);
-        if (!write_header(height)) fail_write(path, error_.message);
+        if (!write_header(height, embedded_view)) fail_write(path, error_.message);
     }
 
     void write_rows(const uint8_t* rows, int count) override {
@@ -94,7 +96,7 @@ public:
 private:
     // Each libpng call sits behind its own setjmp, in a function with no locals that change
     // between the setjmp and a longjmp.
-    bool write_header(int height) {
+    bool write_header(int height, const std::string& embedded_view) {
         if (setjmp(png_jmpbuf(h_.png))) return false;
         const bool alpha = layout_.channels.size() == 4;
         const bool linear = layout_.type == SampleType::U16;
@@ -108,6 +110,7 @@ private:
         } else {
             png_set_sRGB_gAMA_and_cHRM(h_.png, h_.info, PNG_sRGB_INTENT_PERCEPTUAL);
         }
+        set_png_embedded_view(h_.png, h_.info, embedded_view);
         png_write_info(h_.png, h_.info);
         if (linear) png_set_swap(h_.png);  // our 16-bit samples are native (little-endian)
         return true;
@@ -139,7 +142,7 @@ private:
 class ExrStream final : public StreamingImageWriter {
 public:
     ExrStream(const fs::path& path, int width, int height, const RowLayout& layout,
-              const ExrPlacement& placement)
+              const ExrPlacement& placement, const std::string& embedded_view)
         : pending_(path), width_(width), x_(placement.x), layout_(layout) {
         if (layout.type != SampleType::F32) {
             throw std::invalid_argument("cannot write " + quoted(path) +
@@ -158,6 +161,9 @@ public:
         header.compression() = Imf::ZIP_COMPRESSION;
         for (const auto& [name, value] : placement.attributes) {
             header.insert(name, Imf::StringAttribute(value));
+        }
+        if (!embedded_view.empty()) {
+            header.insert(kExrViewAttribute, Imf::StringAttribute(embedded_view));
         }
         for (const std::string& name : layout.channels) {
             header.channels().insert(name, Imf::Channel(Imf::FLOAT));
@@ -224,7 +230,8 @@ constexpr uint32_t kTiffRowsPerStrip = 16;
 
 class TiffStream final : public StreamingImageWriter {
 public:
-    TiffStream(const fs::path& path, int width, int height, const RowLayout& layout)
+    TiffStream(const fs::path& path, int width, int height, const RowLayout& layout,
+               const std::string& embedded_view)
         : pending_(path), width_(width), layout_(layout) {
         check_rgb_layout(path, layout, "TIFF");
         TIFFSetErrorHandler(record_tiff_error);
@@ -250,7 +257,12 @@ public:
             const uint16_t unassociated = EXTRASAMPLE_UNASSALPHA;  // as PNG's alpha
             TIFFSetField(tiff_, TIFFTAG_EXTRASAMPLES, uint16_t(1), &unassociated);
         }
-        TIFFSetField(tiff_, TIFFTAG_SOFTWARE, "fgr");
+        // Software "fgr" tells fgr's description from another program's (image/embedded_view.hpp).
+        TIFFSetField(tiff_, TIFFTAG_SOFTWARE, kTiffViewSoftware);
+        // TIFF 6.0 asks for 7-bit ASCII here; readers take UTF-8 as the bytes it is.
+        if (!embedded_view.empty()) {
+            TIFFSetField(tiff_, TIFFTAG_IMAGEDESCRIPTION, embedded_view.c_str());
+        }
     }
 
     ~TiffStream() override {
@@ -311,7 +323,8 @@ ImageFormat image_format_of(const fs::path& path) {
 std::unique_ptr<StreamingImageWriter> open_streaming_image(const fs::path& path, ImageFormat format,
                                                            int width, int height,
                                                            const RowLayout& layout,
-                                                           const ExrPlacement& placement) {
+                                                           const ExrPlacement& placement,
+                                                           const std::string& embedded_view) {
     if (width < 1 || height < 1) {
         throw std::invalid_argument("cannot write " + quoted(path) + ": image is " +
                                     std::to_string(width) + "x" + std::to_string(height));
@@ -327,13 +340,15 @@ std::unique_ptr<StreamingImageWriter> open_streaming_image(const fs::path& path,
                                     ": its rectangle lies "
                                     "outside the image");
     }
+    check_embedded_view(path, embedded_view);
     switch (format) {
         case ImageFormat::Png:
-            return std::make_unique<PngStream>(path, width, height, layout);
+            return std::make_unique<PngStream>(path, width, height, layout, embedded_view);
         case ImageFormat::Exr:
-            return std::make_unique<ExrStream>(path, width, height, layout, placement);
+            return std::make_unique<ExrStream>(path, width, height, layout, placement,
+                                               embedded_view);
         case ImageFormat::Tiff:
-            return std::make_unique<TiffStream>(path, width, height, layout);
+            return std::make_unique<TiffStream>(path, width, height, layout, embedded_view);
     }
     throw std::invalid_argument("unknown image format");
 }

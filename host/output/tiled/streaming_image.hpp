@@ -56,13 +56,15 @@ struct ExrPlacement {
 };
 
 // Opens a writer for a width x height image at `path` in `format` (an EXR with `placement`: a
-// width x height rectangle of a larger image). Throws std::invalid_argument for a layout the
-// format cannot hold, or a placement that is not an EXR's or not inside its image, and
-// std::runtime_error ("cannot write '<path>': <reason>") when the file cannot be created or
-// written.
+// width x height rectangle of a larger image), carrying `embedded_view` (image/embedded_view.hpp;
+// empty: none) where each format keeps it. Throws std::invalid_argument for a layout the format
+// cannot hold, a placement that is not an EXR's or not inside its image, or a document
+// check_embedded_view refuses, and std::runtime_error ("cannot write '<path>': <reason>") when the
+// file cannot be created or written.
 std::unique_ptr<StreamingImageWriter> open_streaming_image(const std::filesystem::path& path,
                                                            ImageFormat format, int width,
                                                            int height, const RowLayout& layout,
-                                                           const ExrPlacement& placement = {});
+                                                           const ExrPlacement& placement = {},
+                                                           const std::string& embedded_view = {});
 
 }  // namespace fgr

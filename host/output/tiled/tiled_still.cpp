@@ -132,7 +132,7 @@ TiledFile::TiledFile(const TiledRender& render, const TiledOutput& output, bool 
       store_path_(tile_store_path(output.path)) {
     // The file first: if it cannot be written, no tile store is made either.
     writer_ = open_streaming_image(output.path, output.format, plan_.width, plan_.height,
-                                   render.layout());
+                                   render.layout(), {}, output.embedded_view);
     store_ = std::make_unique<TileStore>(
         store_path_,
         render_identity(render.renderer(), render.request(), output, render.layout(), plan_),

@@ -37,6 +37,9 @@ struct TiledOutput {
     bool alpha = false;          // PNG and TIFF: straight alpha of coverage (EXR: aovs.alpha)
     Aovs aovs{};                 // EXR: layers beside R, G, B
     DisplayTransform display{};  // exposure and tone map (8-bit); exposure (16-bit linear)
+    // The document the file carries (image/embedded_view.hpp: the view that made it); "": none.
+    // Not part of the tile store's identity: a resumed render may carry another.
+    std::string embedded_view{};
 };
 
 // The channels a row of `output` holds, in order.

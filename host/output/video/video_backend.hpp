@@ -19,8 +19,9 @@ namespace fgr::video_backend {
 // One open video: the encoder, the muxer and the file they write.
 struct Encoder;
 
-// Bumped whenever the table below changes, so a stale module is refused, not called.
-inline constexpr int kVersion = 1;
+// Bumped whenever the table below or a type it passes (VideoSettings) changes, so a stale module
+// is refused, not called.
+inline constexpr int kVersion = 2;
 
 struct Table {
     int version;

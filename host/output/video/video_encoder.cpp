@@ -7,6 +7,7 @@
 #include <stdexcept>
 #include <system_error>
 
+#include "image/embedded_view.hpp"
 #include "output/video/video_backend.hpp"
 #include "scene/modules.hpp"
 #include "util/errors.hpp"
@@ -29,6 +30,7 @@ std::string default_video_codec(const std::filesystem::path& output) {
 }
 
 void check_video_settings(const std::filesystem::path& output, const VideoSettings& settings) {
+    check_embedded_view(output, settings.embedded_view);
     backend().check_settings(output, settings);
 }
 
@@ -43,6 +45,7 @@ struct VideoEncoder::State {
 
 VideoEncoder::VideoEncoder(const std::filesystem::path& output, VideoSettings settings)
     : state_(std::make_unique<State>(State{backend()})), output_(output) {
+    check_embedded_view(output, settings.embedded_view);
     if (settings.codec.empty()) settings.codec = state_->backend.default_codec(output);
     // Beside the output (same file system, so the rename is atomic), hidden, named after it.
     temporary_ = output.parent_path() / fmt::format(".{}.partial", output.filename().string());

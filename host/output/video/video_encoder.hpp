@@ -22,6 +22,11 @@ struct VideoSettings {
     // Constant-quality level for the codecs that have one (x264, x265: 0-51, default 18;
     // VP9, AV1: 0-63, default 24): lower is better and bigger; 0 is lossless in x264's 4:2:0.
     std::optional<int> crf;
+    // A document the file carries (image/embedded_view.hpp: the view that made it) as the
+    // container's "comment" metadata; "": none. MP4, Matroska and WebM keep it, MOV up to 65535
+    // bytes (check_video_settings refuses more); FFmpeg's GIF, animated WebP and APNG muxers write
+    // no metadata, so those files go without.
+    std::string embedded_view{};
 };
 
 // The codec a file gets unless told: H.264 (libx264) for .mp4/.mkv/.mov when this FFmpeg has it
@@ -31,7 +36,7 @@ std::string default_video_codec(const std::filesystem::path& output);
 
 // Throws std::invalid_argument (one line) unless `settings` can be encoded into `output`: a known
 // container, an encoder by that name, a size the codec's pixel format allows (yuv420p: even width
-// and height).
+// and height), an embedded view check_embedded_view takes and the container can hold.
 void check_video_settings(const std::filesystem::path& output, const VideoSettings& settings);
 
 class VideoEncoder {

@@ -79,7 +79,13 @@ VideoResult render_video(const VideoFrames& frames, FrameRequest request,
     // The dispatch hands the frames over in order, whichever process finished first.
     const FrameSink write = [&](int64_t index, Frame&& frame) {
         if (encoder) encoder->add_frame(frame.image);
-        if (frame_files) write_still(video_frame_file(output, int(index)), frame, output.still);
+        if (frame_files && output.frame_view) {
+            StillOutput still = output.still;
+            still.embedded_view = output.frame_view(int(index));
+            write_still(video_frame_file(output, int(index)), frame, still);
+        } else if (frame_files) {
+            write_still(video_frame_file(output, int(index)), frame, output.still);
+        }
         if (hooks.frame_written) hooks.frame_written(long(index) - frames.first + 1);
     };
     const auto stopped = [&] {

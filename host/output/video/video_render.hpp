@@ -40,6 +40,10 @@ struct VideoOutput {
     std::filesystem::path frames_directory;  // frame_00000.png ...; empty: none
     std::string frames_format = "png";       // png or exr
     StillOutput still;                       // how a frame file is written
+    // The document frame file `index` carries (image/embedded_view.hpp: e.g. that frame's view),
+    // when set; unset, every frame file carries still.embedded_view. Called as the frame is
+    // written, on the process that writes it.
+    std::function<std::string(int index)> frame_view{};
 };
 
 // DIRECTORY/frame_00042.FORMAT: frame `index`'s file, numbered as in the whole video.
