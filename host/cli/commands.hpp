@@ -199,6 +199,7 @@ struct RenderOptions {
     std::optional<std::string> view;       // --view: a view file, or an image carrying its view
     std::optional<std::string> save_view;  // --save-view: write the render's view to this file
     TypedOptions typed;                    // what was typed, over a view's settings
+    std::string embedded_view;             // not typed: the view the images carry (view_file_text)
 };
 
 void add_render_command(CLI::App& app, RenderOptions& options);

@@ -10,6 +10,7 @@
 #include "device/opencl_device.hpp"
 #include "device/program_cache.hpp"
 #include "image/embedded_view.hpp"
+#include "view_file/view_file.hpp"
 
 namespace fgr {
 namespace {
@@ -31,27 +32,35 @@ void print_math_check(const DeviceInfo& info) {
 }
 
 // What `fgr info FILE` shows of the document `file` carries: the JSON, indented.
-void print_embedded_view(const std::filesystem::path& file, const std::string& document) {
-    nlohmann::json view;
-    try {
-        view = nlohmann::json::parse(document);
-    } catch (const nlohmann::json::exception& error) {
-        throw RuntimeFailure(fmt::format("{}: the fgr view it carries is not JSON: {}",
-                                         file.string(), error.what()));
-    }
-    fmt::print("{}\n", view.dump(2));
+// What made the image or view: the view's summary, and how to render it again.
+void print_view(const std::filesystem::path& file, const ViewFile& view) {
+    fmt::print("{}", view_summary(view));
+    fmt::print("render it again: fgr render --view {} -o OUTPUT\n", file.string());
 }
 
 }  // namespace
 
 int command_info_file(const std::filesystem::path& file) {
+    if (is_view_file_name(file)) {
+        try {
+            print_view(file, read_view_file(file));
+        } catch (const std::runtime_error& error) {
+            throw UsageError(error.what());
+        }
+        return 0;
+    }
     const std::optional<std::string> document = read_embedded_view(file);
     if (!document) {
         throw RuntimeFailure(fmt::format(
             "{}: no fgr view embedded (not written by fgr, or written before views were embedded)",
             file.string()));
     }
-    print_embedded_view(file, *document);
+    try {
+        print_view(file, parse_view_file(*document));
+    } catch (const std::runtime_error& error) {
+        throw RuntimeFailure(fmt::format("{}: the fgr view it carries cannot be read: {}",
+                                         file.string(), error.what()));
+    }
     return 0;
 }
 

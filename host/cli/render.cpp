@@ -294,7 +294,7 @@ void report_and_write(const Scene& scene, const FrameRequest& request, int sampl
     try {
         write_still(output, frame,
                     StillOutput{options.bit_depth, display_transform(scene, request.params),
-                                options.alpha, aovs});
+                                options.alpha, aovs, options.embedded_view});
     } catch (const std::runtime_error& error) {
         throw RuntimeFailure(error.what());
     }
@@ -411,7 +411,10 @@ int render_all(const RenderOptions& options) {
     for (size_t i = 0; i < scenes.size(); ++i) {
         const Scene scene = scene_as_used(scenes[i], false);
         fmt::print("scene {} ({}/{})\n", scene.id, i + 1, scenes.size());
-        render_to_file(scene, default_request(scene, options), device, cache, options,
+        const FrameRequest request = default_request(scene, options);
+        RenderOptions scene_options = options;
+        scene_options.embedded_view = view_file_text(view_of_render(scene, request, options));
+        render_to_file(scene, request, device, cache, scene_options,
                        directory / (scene.id + ".png"));
     }
     return 0;
@@ -534,6 +537,7 @@ int command_render(const RenderOptions& typed_options) {
     FrameRequest request = scene_request(scene, options);
     request.view = choose_view(scene, options);
     const ViewFile rendered_view = view_of_render(scene, request, options);
+    options.embedded_view = view_file_text(rendered_view);
     const ComputeDevice device = device_opening.take();
     ProgramCache cache(ProgramCache::default_directory());
     if (part_render_wanted(options)) {

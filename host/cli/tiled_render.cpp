@@ -194,6 +194,7 @@ int render_tiled(const Scene& scene, const FrameRequest& request, const ComputeD
     output.alpha = options.alpha;
     if (output.format == ImageFormat::Exr) output.aovs.alpha = output.aovs.alpha || options.alpha;
     output.display = display_transform(scene, whole.params);
+    output.embedded_view = options.embedded_view;
 
     InterruptCatcher catcher;
     FrameRequest tile_request = whole;

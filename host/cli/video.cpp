@@ -10,6 +10,7 @@
 #include <chrono>
 #include <csignal>
 #include <filesystem>
+#include <nlohmann/json.hpp>
 #include <optional>
 #include <regex>
 #include <string>
@@ -18,6 +19,7 @@
 #include <vector>
 
 #include "camera/camera.hpp"
+#include "camera/camera_path_file.hpp"
 #include "cli/progress.hpp"
 #include "commands.hpp"
 #include "device/program_cache.hpp"
@@ -192,6 +194,21 @@ std::optional<ViewFile> apply_view_argument(VideoOptions& options) {
     return view;
 }
 
+// What a video file carries in its metadata: the camera path, the timing and the view every frame
+// is rendered with (its camera the first frame's).
+std::string video_metadata(ViewFile view, const CameraPathFile& path, const VideoTiming& timing) {
+    view.camera = evaluate_camera_path(path.path, timing.frame_time(0));
+    nlohmann::ordered_json document;
+    document["format"] = "fgr-video";
+    document["version"] = 1;
+    document["fps"] = timing.fps;
+    document["start"] = timing.start;
+    document["frames"] = timing.frame_count();
+    document["camera_path"] = nlohmann::ordered_json::parse(camera_path_json(path));
+    document["view"] = nlohmann::ordered_json::parse(view_file_text(view));
+    return document.dump(2);
+}
+
 // The camera path the video follows: --camera-path's, else a turn around the view's target that
 // starts at the view.
 CameraPath video_camera_path(const Scene& scene, const RenderOptions& frame_options,
@@ -248,6 +265,15 @@ int command_video(const VideoOptions& typed_options) {
     output.still =
         StillOutput{frame_options.bit_depth, display_transform(scene, job.request.params),
                     frame_options.alpha, job.aovs};
+    // Each frame file carries its own view, the container the path and the frames' settings.
+    ViewFile frame_view = view_of_render(scene, job.request, frame_options);
+    frame_view.precision = in_double ? Precision::Double : Precision::Float;
+    output.frame_view = [&frames, frame_view](int index) mutable {
+        frame_view.camera = frames.views[static_cast<std::size_t>(index)];
+        return view_file_text(frame_view);
+    };
+    output.encoding.embedded_view =
+        video_metadata(frame_view, CameraPathFile{scene.id, path}, timing);
 
     Cluster& cluster = Cluster::current();
     InterruptGuard interrupt_guard;

@@ -5,6 +5,7 @@
 #include <fmt/format.h>
 #include <spdlog/spdlog.h>
 
+#include "image/embedded_view.hpp"
 #include "render/sample_budget.hpp"
 #include "scene/effects.hpp"
 #include "scene/scene.hpp"
@@ -98,9 +99,23 @@ std::optional<std::string> view_argument(const RenderOptions& options) {
 
 ViewFile load_view_argument(const std::string& argument) {
     try {
-        return read_view_file(argument);
+        if (is_view_file_name(argument)) return read_view_file(argument);
+        const std::optional<std::string> document = read_embedded_view(argument);
+        if (!document) {
+            throw UsageError(fmt::format(
+                "{}: carries no fgr view (give a .fgrview.json file, or an image fgr wrote)",
+                argument));
+        }
+        return parse_view_file(*document);
+    } catch (const UsageError&) {
+        throw;
     } catch (const std::runtime_error& error) {
-        throw UsageError(error.what());
+        const std::string message = error.what();
+        // read_view_file names the file; an image's document does not.
+        throw UsageError(message.starts_with(argument) ||
+                                 message.starts_with("cannot read '" + argument)
+                             ? message
+                             : fmt::format("{}: the view it carries: {}", argument, message));
     }
 }
 
@@ -157,8 +172,9 @@ ViewFile view_of_render(const Scene& scene, const FrameRequest& request,
     ViewFile view;
     view.scene_id = scene.id;
     view.scene_fingerprint = scene_fingerprint(scene);
-    if (!is_scene_id(options.scene) && !options.scene.empty()) {
-        std::error_code error;
+    std::error_code error;
+    if (!options.all && !is_scene_id(options.scene) &&
+        std::filesystem::is_regular_file(options.scene, error)) {
         const std::filesystem::path absolute = std::filesystem::absolute(options.scene, error);
         view.scene_file = error ? options.scene : absolute.lexically_normal().string();
     }

@@ -712,11 +712,21 @@ TEST_F(CliTest, InfoListsADevice) {
 // an image, is one error line and exit 1.
 TEST_F(CliTest, InfoPrintsTheViewAnImageCarries) {
     const Image8 image{4, 2, std::vector<uint8_t>(24, 100)};
-    write_png(dir() / "view.png", image, R"({"scene":"mandelbulb","camera":{"fov":45}})");
+    const std::string view = R"({"format": "fgr-view", "version": 1, "scene": {"id": "mandelbulb"},
+        "image": {"width": 4, "height": 2},
+        "camera": {"eye": [2, -2, 1], "target": [0, 0, 0], "fov": 45},
+        "parameters": {"power": 7.5}})";
+    write_png(dir() / "view.png", image, view);
     const RunResult shown = run({"info", "view.png"});
     ASSERT_EQ(shown.exit_code, 0) << shown;
     EXPECT_EQ(shown.out,
-              "{\n  \"camera\": {\n    \"fov\": 45\n  },\n  \"scene\": \"mandelbulb\"\n}\n");
+              "scene mandelbulb\n"
+              "size 4x2\n"
+              "camera --eye 2,-2,1 --target 0,0,0 --up 0,0,1 --fov 45\n"
+              "mode shaded --spp 1 precision auto\n"
+              "effects none\n"
+              "--set power=7.5\n"
+              "render it again: fgr render --view view.png -o OUTPUT\n");
     EXPECT_EQ(shown.err, "");
 
     write_png(dir() / "plain.png", image);
@@ -731,8 +741,9 @@ TEST_F(CliTest, InfoPrintsTheViewAnImageCarries) {
     const RunResult not_json = run({"info", "not_json.png"});
     EXPECT_EQ(not_json.exit_code, 1) << not_json;
     expect_one_error_line(not_json);
-    EXPECT_NE(not_json.err.find("not_json.png: the fgr view it carries is not JSON"),
-              std::string::npos)
+    EXPECT_NE(
+        not_json.err.find("not_json.png: the fgr view it carries cannot be read: not valid JSON"),
+        std::string::npos)
         << not_json;
 
     const RunResult missing = run({"info", "missing.png"});

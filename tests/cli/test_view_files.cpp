@@ -1,6 +1,7 @@
-// View files on the command line: `fgr render … --save-view V` then `fgr render V` gives the same
-// bytes in every mode; options typed override the view; a scene changed since the view was saved
-// is reported; a bad view file is one error line naming the file and the key.
+// View files on the command line: `fgr render … --save-view V` then `fgr render V`, or
+// `fgr render --view IMAGE`, gives the same bytes in every mode; options typed override the view; a
+// scene changed since the view was saved is reported; a bad view file is one error line naming the
+// file and the key.
 
 #include <gtest/gtest.h>
 
@@ -10,6 +11,7 @@
 #include <vector>
 
 #include "child_process.hpp"
+#include "image/image_io.hpp"
 #include "test_files.hpp"
 
 namespace fgr {
@@ -73,10 +75,13 @@ TEST_P(ViewFileRoundTrip, RenderingTheSavedViewGivesTheSameBytes) {
     }
     succeed(first);
     succeed({"render", "saved.fgrview.json", "-o", "again.png"});
+    succeed({"render", "--view", "first.png", "-o", "from-image.png"});
     const std::vector<uint8_t> original = test::read_bytes(dir() / "first.png");
     ASSERT_FALSE(original.empty());
     EXPECT_TRUE(original == test::read_bytes(dir() / "again.png"))
         << "the view file rendered other bytes than the command that saved it";
+    EXPECT_TRUE(original == test::read_bytes(dir() / "from-image.png"))
+        << "the view the image carries rendered other bytes than the image";
 }
 
 INSTANTIATE_TEST_SUITE_P(Modes, ViewFileRoundTrip, ::testing::ValuesIn(kModes),
@@ -142,6 +147,23 @@ TEST_F(ViewFileCli, BadViewFilesAreOneErrorLineNamingFileAndKey) {
     EXPECT_EQ(misnamed.exit_code, 2) << misnamed;
     EXPECT_NE(misnamed.err.find(".fgrview.json"), std::string::npos) << misnamed;
     EXPECT_EQ(test::directory_listing(dir()), std::vector<std::string>{"bad.fgrview.json"});
+}
+
+// `fgr video VIEW` turns around the view's target with the view's settings, and each frame file
+// carries its own view: rendering it again gives the frame's bytes.
+TEST_F(ViewFileCli, VideoFromAViewAndItsFramesRenderAgainFromTheirViews) {
+    succeed({"render", "mandelbulb", "--width", "24", "--height", "16", "--set", "power=7", "-o",
+             "a.png", "--save-view", "a.fgrview.json"});
+    succeed({"video", "a.fgrview.json", "--frames", "frames", "--fps", "1", "--duration", "2"});
+    EXPECT_EQ(test::directory_listing(dir() / "frames"),
+              (std::vector<std::string>{"frame_00000.png", "frame_00001.png"}));
+    // The same pixels (the files differ in the view they carry: a frame's precision is the
+    // video's).
+    EXPECT_TRUE(read_png(dir() / "a.png").rgb == read_png(dir() / "frames" / "frame_00000.png").rgb)
+        << "the turn starts at the view";
+    succeed({"render", "--view", "frames/frame_00001.png", "-o", "again.png"});
+    EXPECT_TRUE(test::read_bytes(dir() / "frames" / "frame_00001.png") ==
+                test::read_bytes(dir() / "again.png"));
 }
 
 }  // namespace
