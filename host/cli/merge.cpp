@@ -17,6 +17,8 @@
 #include "output/parts/render_parts.hpp"
 #include "output/tiled/streaming_image.hpp"
 #include "output/video/video_encoder.hpp"
+#include "render/sample_budget.hpp"
+#include "view_file/view_file.hpp"
 
 namespace fgr {
 namespace {
@@ -66,8 +68,23 @@ std::string seeds_text(const MergePlan& plan) {
     return text;
 }
 
+// The view the merged image carries: its parts' (one image's: their identities agree), with the
+// samples of all of them; "" when the first part carries none or one that cannot be read.
+std::string merged_view(const MergePlan& plan) {
+    if (plan.parts.empty() || plan.parts.front().view.empty()) return "";
+    try {
+        ViewFile view = parse_view_file(plan.parts.front().view);
+        view.samples = std::min(plan.samples, kMaxSamples);
+        return view_file_text(view);
+    } catch (const std::runtime_error& error) {
+        spdlog::warn("{}: its view cannot be read ({}): the merged image carries none",
+                     plan.parts.front().path.string(), error.what());
+        return "";
+    }
+}
+
 int merge_parts_into_image(const MergeOptions& options) {
-    const TiledOutput output = merge_output(options, checked_image_output(options));
+    TiledOutput output = merge_output(options, checked_image_output(options));
     std::vector<PartInfo> parts;
     for (const std::string& path : options.parts) {
         try {
@@ -80,6 +97,7 @@ int merge_parts_into_image(const MergeOptions& options) {
     MergeResult result;
     try {
         plan = plan_merge(std::move(parts));
+        output.embedded_view = merged_view(plan);
         result = merge_parts(plan, output);
     } catch (const std::invalid_argument& error) {
         throw UsageError(error.what());

@@ -254,6 +254,7 @@ int render_part_file(const Scene& scene, const FrameRequest& request, const Comp
     PartSettings settings;
     settings.tile_size = options.tile_size.value_or(kDefaultTileSize);
     settings.interrupted = [] { return InterruptCatcher::caught(); };
+    settings.embedded_view = options.embedded_view;
     const auto start = std::chrono::steady_clock::now();
     const PixelRegion rendered = rendered_region(part);
     const std::string rows =

@@ -166,5 +166,16 @@ TEST_F(ViewFileCli, VideoFromAViewAndItsFramesRenderAgainFromTheirViews) {
                 test::read_bytes(dir() / "again.png"));
 }
 
+// Parts carry the view, and `fgr merge` passes it on: the merged image renders again as one.
+TEST_F(ViewFileCli, AMergedImageCarriesTheViewOfItsParts) {
+    for (const char* tile : {"1/2", "2/2"}) {
+        succeed({"render", "mandelbulb", "--width", "24", "--height", "16", "--set", "power=6.5",
+                 "--tile", tile, "-o", std::string("part") + tile[0] + ".exr"});
+    }
+    succeed({"merge", "part1.exr", "part2.exr", "-o", "merged.png"});
+    succeed({"render", "--view", "merged.png", "-o", "again.png"});
+    EXPECT_TRUE(read_png(dir() / "merged.png").rgb == read_png(dir() / "again.png").rgb);
+}
+
 }  // namespace
 }  // namespace fgr

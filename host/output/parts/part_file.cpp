@@ -15,6 +15,7 @@
 #include <nlohmann/json.hpp>
 #include <stdexcept>
 
+#include "image/embedded_view.hpp"
 #include "output/parts/render_identity.hpp"
 #include "output/tiled/streaming_image.hpp"
 #include "util/lower_case.hpp"
@@ -147,7 +148,7 @@ PartResult render_part(Renderer& renderer, const FrameRequest& request,
                            region.y,
                            {{kPartAttribute, part_header(renderer, request, display, region)}}};
     auto writer = open_streaming_image(path, ImageFormat::Exr, region.width, region.height, layout,
-                                       placement);
+                                       placement, settings.embedded_view);
 
     const auto start = std::chrono::steady_clock::now();
     result.samples = request.samples;
@@ -257,6 +258,10 @@ PartInfo read_part_info(const fs::path& path) {
         if (header.channels().findChannel(channel) == nullptr) {
             not_a_part(path, fmt::format("it has no {} channel", channel));
         }
+    }
+    if (const auto* view = header.findTypedAttribute<Imf::StringAttribute>(kExrViewAttribute)) {
+        info.view = view->value();
+        if (info.view.size() > kMaxEmbeddedViewBytes) not_a_part(path, "its view is too large");
     }
     return info;
 }

@@ -39,6 +39,8 @@ struct PartSettings {
     // Polled between launches: true stops the render, leaving no file.
     std::function<bool()> interrupted{};
     std::function<void(long done, long total)> on_progress{};  // launches
+    // The view the part carries (image/embedded_view.hpp), for the merged image; "": none.
+    std::string embedded_view{};
 };
 
 struct PartResult {
@@ -73,6 +75,7 @@ struct PartInfo {
     std::string mode;  // the render mode's name
     DisplayTransform display;
     bool layers = false;  // albedo, normal, alpha and foreground planes
+    std::string view;     // the view it carries ("": none), as the part was rendered
 };
 
 // Throws std::runtime_error ("cannot read '<path>': ...", or "'<path>' is not an fgr part ...").
