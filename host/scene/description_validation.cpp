@@ -69,10 +69,10 @@ using scene_limits::kMaxCameras;
 using scene_limits::kMaxIdLength;
 using scene_limits::kMaxKeyframes;
 using scene_limits::kMaxLights;
+using scene_limits::kMaxSourceBytes;
 using scene_limits::kMaxTextLength;
 using scene_limits::kMinKeyframes;
 
-constexpr std::size_t kMaxSourceBytes = 4u << 20;
 // Like kMaxTextLength, not in the ABI: it only bounds how far strnlen reads when a plugin forgot
 // a terminating NUL.
 constexpr std::size_t kMaxChoicesLength = 64 * 1024;

@@ -29,9 +29,9 @@ std::vector<fs::path> split_path_list(std::string_view list) {
     return directories;
 }
 
-// Regular files (or links to them) named *.so, *.ifs.json or *.formula.json, sorted by file name
-// so the load order, and thus which of two duplicate ids wins, does not depend on the
-// filesystem's directory order.
+// Regular files (or links to them) named *.so, *.ifs.json or *.formula.json, and *.cl files that
+// start with a text scene's header, sorted by file name so the load order, and thus which of two
+// duplicate ids wins, does not depend on the filesystem's directory order.
 std::vector<fs::path> plugin_files_in(const fs::path& directory) {
     std::vector<fs::path> files;
     std::error_code error;
@@ -39,7 +39,8 @@ std::vector<fs::path> plugin_files_in(const fs::path& directory) {
     for (fs::directory_iterator it(directory, error), end; !error && it != end;
          it.increment(error)) {
         std::error_code status_error;
-        if (is_scene_file_name(it->path()) && it->is_regular_file(status_error)) {
+        if (is_scene_file_name(it->path()) && it->is_regular_file(status_error) &&
+            is_scene_file(it->path())) {
             files.push_back(it->path());
         }
     }
@@ -158,12 +159,12 @@ std::string dashed(std::string_view id) {
     return text;
 }
 
-// The scene id a file name suggests: oops.so, liboops.so, oops.ifs.json and oops.formula.json give
-// "oops"; '_' reads
-// as '-' (a CMake target liboops_scene.so for the scene 'oops-scene').
+// The scene id a file name suggests: oops.so, liboops.so, oops.ifs.json, oops.formula.json and
+// oops.cl give "oops"; '_' reads as '-' (a CMake target liboops_scene.so for the scene
+// 'oops-scene').
 std::string id_from_file_name(const fs::path& file) {
     std::string name = file.filename().string();
-    for (const std::string_view suffix : {".ifs.json", ".formula.json", ".so"}) {
+    for (const std::string_view suffix : {".ifs.json", ".formula.json", ".so", ".cl"}) {
         if (name.ends_with(suffix)) {
             name.erase(name.size() - suffix.size());
             break;

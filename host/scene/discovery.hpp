@@ -1,5 +1,5 @@
 #pragma once
-// Finding scenes (plugins and IFS files): the search path and the scan of its directories.
+// Finding scenes (plugins and scene files): the search path and the scan of its directories.
 
 #include <filesystem>
 #include <string>
@@ -27,9 +27,10 @@ struct Discovery {
     std::vector<SkippedPlugin> skipped;
 };
 
-// Loads every *.so plugin and *.ifs.json IFS file (scene/ifs/ifs.hpp) in each directory, sorted
-// together by name within a directory; missing directories are ignored. Each skipped file gets one
-// warning log line naming the file and the reason.
+// Loads every scene file (scene/scene_file.hpp: *.so plugins, *.ifs.json IFS files,
+// *.formula.json formula files and *.cl text scenes) in each directory, sorted together by name
+// within a directory; missing directories, and .cl files without a text scene's header, are
+// ignored. Each skipped file gets one warning log line naming the file and the reason.
 Discovery discover_scenes(const std::vector<std::filesystem::path>& directories);
 
 // Scene `id` alone, as discover_scenes(directories) would find it (the first file in search

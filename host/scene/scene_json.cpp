@@ -65,8 +65,9 @@ json parse_object(const std::string& text) {
     json document;
     try {
         document = json::parse(text);
-    } catch (const json::parse_error& error) {
-        // "[json.exception.parse_error.101] parse error at line 3, column 5: ..." without the tag.
+    } catch (const json::exception& error) {
+        // "[json.exception.parse_error.101] parse error at line 3, column 5: ..." without the tag
+        // (or out_of_range.406, a number too large for a double: "number overflow parsing ...").
         std::string message = error.what();
         if (const std::size_t tag = message.find("] "); tag != std::string::npos) {
             message.erase(0, tag + 2);

@@ -16,6 +16,8 @@ inline constexpr std::size_t kMaxIdLength = 63;
 // Free text (names, labels, descriptions): it also bounds how far strnlen reads when a plugin
 // forgot a terminating NUL.
 inline constexpr std::size_t kMaxTextLength = 4096;
+// A scene's OpenCL source (and so a whole text scene file, whose source it is).
+inline constexpr std::size_t kMaxSourceBytes = std::size_t{4} << 20;
 
 inline constexpr std::uint32_t kMaxCameras = 256;
 inline constexpr std::uint32_t kMaxCameraPaths = 256;

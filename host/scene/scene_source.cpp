@@ -14,7 +14,11 @@ std::optional<std::filesystem::path> recorded_source_file(const Scene& scene) {
     if (scene.ifs) return std::nullopt;  // an IFS scene's source is generated
     const std::filesystem::path file = scene.source_name;
     std::error_code error;
-    if (!file.is_absolute() || !std::filesystem::is_regular_file(file, error)) return std::nullopt;
+    // A text scene's source is its own file, by the path it was opened by.
+    const bool own_file = !scene.plugin_file.empty() && file == scene.plugin_file;
+    if (!(file.is_absolute() || own_file) || !std::filesystem::is_regular_file(file, error)) {
+        return std::nullopt;
+    }
     return file;
 }
 

@@ -12,7 +12,7 @@
 namespace fgr {
 
 // The .cl file the scene's plugin recorded, when its source name is an absolute path to a file
-// that exists (IFS scenes and scenes built by hand have none).
+// that exists, or a text scene's own file (IFS scenes and scenes built by hand have none).
 std::optional<std::filesystem::path> recorded_source_file(const Scene& scene);
 
 // One line when the recorded .cl file is newer than the plugin and differs from the source the
