@@ -6,8 +6,6 @@
 
 #include <cstdio>
 #include <optional>
-#include <regex>
-#include <sstream>
 #include <string>
 
 #include "commands.hpp"
@@ -28,18 +26,6 @@ Scene load_checked_scene(const std::string& argument) {
     LoadResult loaded = load_scene_file(argument);
     if (!loaded.scene) throw UsageError(fmt::format("{}: {}", argument, loaded.error));
     return std::move(*loaded.scene);
-}
-
-// The build log with PoCL's "error: FILE:LINE:COL: message" lines turned into the
-// "FILE:LINE:COL: error: message" form that compilers print and IDEs and build tools parse.
-std::string conventional_build_log(const std::string& log) {
-    static const std::regex pocl_line(R"(^(error|warning|note): (\S+:\d+:\d+): (.*)$)");
-    std::istringstream lines(log);
-    std::string line, out;
-    while (std::getline(lines, line)) {
-        out += std::regex_replace(line, pocl_line, "$2: $1: $3") + "\n";
-    }
-    return out;
 }
 
 }  // namespace

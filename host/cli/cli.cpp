@@ -160,7 +160,9 @@ int run_cli(int argc, char** argv) {
     } catch (const UsageError& error) {
         return report_error(error.what(), kExitUsage);
     } catch (const KernelBuildError& error) {
-        if (cluster.coordinator()) std::fprintf(stderr, "%s\n", error.build_log().c_str());
+        if (cluster.coordinator()) {
+            std::fputs(conventional_build_log(error.build_log()).c_str(), stderr);
+        }
         return report_error(error.what(), kExitFailure);
     } catch (const std::exception& error) {
         return report_error(error.what(), kExitFailure);

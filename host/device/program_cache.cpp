@@ -6,6 +6,8 @@
 #include <chrono>
 #include <cstdlib>
 #include <exception>
+#include <regex>
+#include <sstream>
 #include <string_view>
 #include <vector>
 
@@ -32,7 +34,42 @@ std::string build_log(const cl::Program& program, const cl::Device& device) {
     }
 }
 
+// A compiler's error line, PoCL's "error: FILE:LINE:COL: message" or the conventional
+// "FILE:LINE:COL: error: message".
+const std::regex& error_line() {
+    static const std::regex line(R"(^(?:error: (\S+:\d+:\d+): (.*)|(\S+:\d+:\d+): error: (.*))$)");
+    return line;
+}
+
 }  // namespace
+
+std::string conventional_build_log(const std::string& log) {
+    static const std::regex pocl_line(R"(^(error|warning|note): (\S+:\d+:\d+): (.*)$)");
+    std::istringstream lines(log);
+    std::string line, out;
+    while (std::getline(lines, line)) {
+        out += std::regex_replace(line, pocl_line, "$2: $1: $3") + "\n";
+    }
+    return out;
+}
+
+std::string first_build_error(const std::string& log) {
+    std::istringstream lines(log);
+    std::string line;
+    while (std::getline(lines, line)) {
+        if (!line.empty() && line.back() == '\r') line.pop_back();
+        std::smatch match;
+        if (!std::regex_match(line, match, error_line())) continue;
+        const bool pocl = match[1].matched;
+        std::string first =
+            fmt::format("{}: {}", match[pocl ? 1 : 3].str(), match[pocl ? 2 : 4].str());
+        for (char& c : first) {
+            if (static_cast<unsigned char>(c) < 0x20) c = ' ';
+        }
+        return first;
+    }
+    return "";
+}
 
 ProgramCache::ProgramCache(std::filesystem::path directory, std::uintmax_t size_limit)
     : directory_(std::move(directory)), size_limit_(size_limit) {}
@@ -80,8 +117,12 @@ cl::Program ProgramCache::build(const ComputeDevice& device, const AssembledProg
         try {
             built.build({device.device}, full_options(program).c_str());
         } catch (const cl::Error&) {
-            throw KernelBuildError("OpenCL program failed to compile",
-                                   build_log(built, device.device));
+            const std::string log = build_log(built, device.device);
+            const std::string first = first_build_error(log);
+            throw KernelBuildError(first.empty()
+                                       ? "OpenCL program failed to compile"
+                                       : fmt::format("OpenCL program failed to compile: {}", first),
+                                   log);
         }
         result.origin = BuildReport::Origin::Compiled;
         if (const std::string log = build_log(built, device.device); log.size() > 1) {

@@ -16,8 +16,9 @@
 
 namespace fgr {
 
-// The program did not compile. what() is a one-line summary; build_log() the compiler's output,
-// whose file:line references name the scene's own source thanks to #line directives.
+// The program did not compile. what() is a one-line summary that names the first error's file and
+// line; build_log() the compiler's output, whose file:line references name the scene's own source
+// thanks to #line directives.
 class KernelBuildError : public std::runtime_error {
 public:
     KernelBuildError(const std::string& summary, std::string log)
@@ -27,6 +28,14 @@ public:
 private:
     std::string log_;
 };
+
+// The build log with PoCL's "error: FILE:LINE:COL: message" lines turned into the
+// "FILE:LINE:COL: error: message" form that compilers print and IDEs and build tools parse.
+std::string conventional_build_log(const std::string& log);
+
+// "FILE:LINE:COL: message" of the log's first error, or "" when it names none: what a one-line
+// report of a failed build can say.
+std::string first_build_error(const std::string& log);
 
 struct BuildReport {
     double build_ms = 0.0;
