@@ -63,7 +63,7 @@ Scene with_still_path(const Scene& scene, const ViewOverrideText& view_override,
 void add_bench_command(CLI::App& app, BenchOptions& options) {
     CLI::App* bench = app.add_subcommand(
         "bench", "benchmark protocol: play the scene's benchmark camera path, record frame times");
-    bench->add_option("scene", options.scene, "scene id (see `fgr list`)");
+    bench->add_option("scene", options.scene, "scene id (see `fgr list`) or scene file");
     bench->add_option("--width", options.settings.width, "image width (default 1280)")
         ->check(CLI::Range(1, kMaxImageSide));
     bench->add_option("--height", options.settings.height, "image height (default 720)")
@@ -105,8 +105,7 @@ int command_bench(BenchOptions& options) {
             "view: give one or the other");
     }
     parsed_view_override(options.view_override);  // a malformed vector fails before any loading
-    const Discovery found = discover_for(options.scene);
-    const Scene& found_scene = find_scene(found, options.scene);
+    const Scene found_scene = scene_from_argument(options.scene);
     const Scene scene = with_kernel_source(
         options.view_override.empty()
             ? found_scene

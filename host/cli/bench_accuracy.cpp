@@ -20,7 +20,8 @@ void add_bench_accuracy_command(CLI::App& bench, BenchOptions& options) {
         "accuracy", "sweep the knobs that trade accuracy for time against a reference render");
     options.accuracy_command = accuracy;
     AccuracyOptions& sweep = options.accuracy;
-    accuracy->add_option("scene", sweep.scene, "scene id (see `fgr list`)")->required();
+    accuracy->add_option("scene", sweep.scene, "scene id (see `fgr list`) or scene file")
+        ->required();
     // SSIM's window needs 11x11 pixels.
     accuracy->add_option("--width", sweep.settings.width, "image width (default 320)")
         ->check(CLI::Range(16, 4096));
@@ -118,8 +119,7 @@ void brute_accuracy(const Scene& scene, const AccuracySettings& settings,
 }  // namespace
 
 int command_bench_accuracy(const AccuracyOptions& options, int device_index) {
-    const Discovery found = discover_for(options.scene);
-    const Scene& scene = find_scene(found, options.scene);
+    const Scene scene = scene_from_argument(options.scene);
     const std::string prefix = options.output.empty() ? "accuracy-" + scene.id : options.output;
     const std::filesystem::path csv = prefix + ".csv", script = prefix + ".gp",
                                 png = prefix + ".png";

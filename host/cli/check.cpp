@@ -1,5 +1,5 @@
 // fgr check: the numerical checks of diagnostics/scene_check.hpp on one scene, given by id or as a
-// plugin file, with a report a scene's author can act on; --compile only builds the kernel (what
+// scene file, with a report a scene's author can act on; --compile only builds the kernel (what
 // the SDK template's build runs, so a typo in the .cl fails `cmake --build` with its file and
 // line).
 #include <fmt/format.h>
@@ -11,29 +11,14 @@
 #include "commands.hpp"
 #include "device/program_cache.hpp"
 #include "diagnostics/scene_check.hpp"
-#include "scene/scene_file.hpp"
 
 namespace fgr {
-namespace {
-
-// A scene argument that names a file rather than an id: a path, or a scene file's name.
-bool names_a_file(const std::string& argument) {
-    return argument.find('/') != std::string::npos || is_scene_file_name(argument);
-}
-
-Scene load_checked_scene(const std::string& argument) {
-    if (!names_a_file(argument)) return find_scene(discover_for(argument), argument);
-    LoadResult loaded = load_scene_file(argument);
-    if (!loaded.scene) throw UsageError(fmt::format("{}: {}", argument, loaded.error));
-    return std::move(*loaded.scene);
-}
-
-}  // namespace
-
 void add_check_command(CLI::App& app, CheckOptions& options) {
     CLI::App* check = app.add_subcommand(
         "check", "check a scene's distance estimator and views, and say what to fix");
-    check->add_option("scene", options.scene, "scene id (see `fgr list`) or plugin file (.so)")
+    check
+        ->add_option("scene", options.scene,
+                     "scene id (see `fgr list`) or scene file: .so, .ifs.json, .formula.json, .cl")
         ->required();
     check->add_flag("--compile", options.compile_only,
                     "only compile the scene's kernel: errors name the .cl file and line");
@@ -45,7 +30,7 @@ void add_check_command(CLI::App& app, CheckOptions& options) {
 }
 
 int command_check(const CheckOptions& options) {
-    const Scene loaded = load_checked_scene(options.scene);
+    const Scene loaded = scene_from_argument(options.scene);
     const Scene scene = scene_as_used(loaded, options.dev);
     const ComputeDevice device = open_requested_device(options.device);
     ProgramCache cache(ProgramCache::default_directory());

@@ -68,7 +68,8 @@ int run_cli(int argc, char** argv) {
     bool list_formulas = false;
     CLI::App* list = app.add_subcommand(
         "list", "list the scenes found, with parameters, cameras and camera paths");
-    list->add_option("scene", list_scene, "list this scene alone, describing each parameter");
+    list->add_option("scene", list_scene,
+                     "list this scene (an id or a scene file) alone, describing each parameter");
     list->add_flag("--formulas", list_formulas,
                    "list the formula library instead: what formula scene files may iterate");
     bool math_check = false;

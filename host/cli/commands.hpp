@@ -47,10 +47,14 @@ struct RuntimeFailure : std::runtime_error {
 
 // The scenes in the plugin search path beside this executable.
 Discovery discover();
-// For a command on one scene: scene `id` alone, found through the scene index in the kernel cache
-// (discover_scene), or every scene when none has that id (find_scene then says which there are).
-Discovery discover_for(const std::string& id);
-// The scene with that id; throws UsageError naming the scenes there are.
+// The scene a command's scene argument names (scene/scene_argument.hpp): a scene file by path
+// (a plugin, an IFS, formula or text scene file), loaded alone, or a scene id, found through the
+// scene index in the kernel cache. UsageError, one line, naming the refused file, or the scenes
+// there are.
+Scene scene_from_argument(const std::string& argument);
+// scene_from_argument on a thread of its own (see DeviceOpenedAhead).
+std::future<Scene> scene_from_argument_meanwhile(const std::string& argument);
+// The scene with that id among those found; throws UsageError naming the scenes there are.
 const Scene& find_scene(const Discovery& found, const std::string& id);
 // --kernel-source FILE.cl on `command`; with_kernel_source gives the scene with that file's text
 // as its source (the scene as it is when `file` is empty).
@@ -63,7 +67,8 @@ ComputeDevice open_requested_device(int index);
 // OpenCL driver (PoCL: LLVM, about a quarter of a small `fgr render`), which finding the scenes
 // need not wait for. The device opens on the calling (main) thread, because the thread that first
 // loads LLVM gets an alternate signal stack of LLVM's, which AddressSanitizer fails to unmap when
-// such a thread ends; the scenes are found on another (discover_meanwhile). A failure to open
+// such a thread ends; the scenes are found on another (scene_from_argument_meanwhile,
+// discover_meanwhile). A failure to open
 // is kept until take(), so that the command's scene errors come first, as they did when the
 // device opened after them.
 class DeviceOpenedAhead {
@@ -76,8 +81,8 @@ private:
     std::optional<ComputeDevice> device_;
     std::exception_ptr failure_;
 };
-// discover_for(id) on a thread of its own; an empty id finds every scene (discover()).
-std::future<Discovery> discover_meanwhile(const std::string& id);
+// discover() on a thread of its own.
+std::future<Discovery> discover_meanwhile();
 // --device and --packet-width, for the commands that render.
 void add_device_options(CLI::App* command, int& device, int& packet_width);
 // --precision, for the commands that render; `auto_means` ends its help text.
@@ -309,7 +314,7 @@ int command_bench_accuracy(const AccuracyOptions& options, int device_index);
 // --- fgr check -----------------------------------------------------------------------------------
 
 struct CheckOptions {
-    std::string scene;  // an id, or a plugin file
+    std::string scene;  // an id, or a scene file by path
     bool compile_only = false;
     std::optional<std::string> only;  // one check, by name (scene_check_names)
     bool dev = false;
@@ -325,7 +330,8 @@ int command_check(const CheckOptions& options);
 
 struct NewSceneOptions {
     std::string name;
-    std::string directory;  // default: ./NAME
+    std::string directory;  // default: ./NAME (--text: .)
+    bool text = false;      // one text scene file NAME.cl instead of a plugin project
 };
 
 void add_new_scene_command(CLI::App& app, NewSceneOptions& options);

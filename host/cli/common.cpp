@@ -9,6 +9,7 @@
 #include "device/program_cache.hpp"
 #include "distributed/cluster.hpp"
 #include "render/renderer.hpp"
+#include "scene/scene_argument.hpp"
 #include "scene/scene_index.hpp"
 #include "scene/scene_source.hpp"
 #include "util/atomic_file.hpp"
@@ -16,10 +17,14 @@
 namespace fgr {
 Discovery discover() { return discover_scenes(plugin_search_path(executable_dir())); }
 
-Discovery discover_for(const std::string& id) {
+Scene scene_from_argument(const std::string& argument) {
     const std::filesystem::path cache = ProgramCache::default_directory();
-    return discover_scene(plugin_search_path(executable_dir()), id,
-                          cache.empty() ? cache : cache / kSceneIndexName);
+    return find_scene_argument(argument, plugin_search_path(executable_dir()),
+                               cache.empty() ? cache : cache / kSceneIndexName);
+}
+
+std::future<Scene> scene_from_argument_meanwhile(const std::string& argument) {
+    return std::async(std::launch::async, [argument] { return scene_from_argument(argument); });
 }
 
 const Scene& find_scene(const Discovery& found, const std::string& id) {
@@ -97,9 +102,8 @@ ComputeDevice DeviceOpenedAhead::take() {
     return std::move(*device_);
 }
 
-std::future<Discovery> discover_meanwhile(const std::string& id) {
-    return std::async(std::launch::async,
-                      [id] { return id.empty() ? discover() : discover_for(id); });
+std::future<Discovery> discover_meanwhile() {
+    return std::async(std::launch::async, [] { return discover(); });
 }
 
 void print_mpi_figures(const Cluster& cluster, const FarmOutcome& outcome) {

@@ -10,6 +10,8 @@
 #include "scene/formulas/formulas.hpp"
 #include "scene/ifs/ifs.hpp"
 #include "scene/render_mode.hpp"
+#include "scene/scene_argument.hpp"
+#include "scene/text_scene.hpp"
 
 namespace fgr {
 namespace {
@@ -50,6 +52,8 @@ void print_scene(const Scene& scene, bool described) {
             scene.ifs->bounds.centre.y, scene.ifs->bounds.centre.z, scene.ifs->bounds.radius);
     } else if (is_formula_file_name(scene.plugin_file)) {
         fmt::print("  formula file: {}\n", scene.plugin_file.string());
+    } else if (is_text_scene_file_name(scene.plugin_file)) {
+        fmt::print("  text scene: {}\n", scene.plugin_file.string());
     } else {
         fmt::print("  plugin: {}\n", scene.plugin_file.string());
     }
@@ -140,6 +144,10 @@ void print_formulas() {
 int command_list(const std::string& scene_id, bool formulas) {
     if (formulas) {
         print_formulas();
+        return 0;
+    }
+    if (!scene_id.empty() && scene_argument_kind(scene_id) != SceneArgumentKind::Id) {
+        print_scene(scene_from_argument(scene_id), true);
         return 0;
     }
     const Discovery found = discover();

@@ -1,4 +1,5 @@
-// fgr new-scene: a scene plugin project from the SDK template, ready to build.
+// fgr new-scene: a scene plugin project from the SDK template, ready to build, or (--text) one text
+// scene file, ready to render.
 #include <fmt/format.h>
 
 #include <filesystem>
@@ -12,12 +13,30 @@ namespace fgr {
 
 void add_new_scene_command(CLI::App& app, NewSceneOptions& options) {
     CLI::App* command = app.add_subcommand(
-        "new-scene", "create a scene plugin project from the SDK template, ready to build");
+        "new-scene",
+        "create a scene plugin project from the SDK template, ready to build, or (--text) a text "
+        "scene file, ready to render");
     command->add_option("name", options.name, "scene id, e.g. my-kifs")->required();
-    command->add_option("--dir", options.directory, "project directory (default: ./NAME)");
+    command->add_option("--dir", options.directory,
+                        "project directory (default: ./NAME); with --text, the folder the file "
+                        "goes into (default: .)");
+    command->add_flag("--text", options.text,
+                      "write one text scene file, NAME.cl: the description in its first comment, "
+                      "the OpenCL source after it; fgr opens it as it is, no build");
 }
 
 int command_new_scene(const NewSceneOptions& options) {
+    if (options.text) {
+        const std::filesystem::path file =
+            scaffold_text_scene(options.name, options.directory.empty() ? "." : options.directory);
+        fmt::print(
+            "created text scene '{0}': {1}\n"
+            "next:\n"
+            "  fgr render {1} -o {0}.png\n"
+            "  fgr view {1}        # reloads it whenever you save it\n",
+            options.name, file.string());
+        return 0;
+    }
     const std::filesystem::path directory =
         std::filesystem::path(options.directory.empty() ? options.name : options.directory);
     const std::filesystem::path prefix = executable_dir().parent_path();

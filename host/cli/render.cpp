@@ -397,7 +397,7 @@ void check_save_view_option(const RenderOptions& options) {
 }
 
 int render_all(const RenderOptions& options) {
-    std::future<Discovery> finding = discover_meanwhile("");
+    std::future<Discovery> finding = discover_meanwhile();
     DeviceOpenedAhead device_opening(options.device);
     const std::vector<Scene> scenes = scenes_matching(finding.get(), options.scene);
     const std::filesystem::path directory = options.output;
@@ -474,8 +474,9 @@ void add_render_command(CLI::App& app, RenderOptions& options) {
         "render",
         "render one image of a scene to a PNG, EXR or TIFF file, or every scene's default view");
     render->add_option("scene", options.scene,
-                       "scene id (see `fgr list`) or a view file (.fgrview.json); with --all, a "
-                       "wildcard pattern of ids (e.g. 'mandel*')");
+                       "scene id (see `fgr list`), scene file (.so, .ifs.json, .formula.json, "
+                       ".cl) or view file (.fgrview.json); with --all, a wildcard pattern of ids "
+                       "(e.g. 'mandel*')");
     render->add_flag("--all", options.all,
                      "render every scene's default view (or those the scene pattern matches) into "
                      "the directory -o");
@@ -528,11 +529,10 @@ int command_render(const RenderOptions& typed_options) {
     check_save_view_option(options);
     check_render_options(options);
     if (options.all) return render_all(options);
-    std::future<Discovery> finding = discover_meanwhile(options.scene);
+    std::future<Scene> finding = scene_from_argument_meanwhile(options.scene);
     DeviceOpenedAhead device_opening(options.device);
-    const Discovery found = finding.get();
-    const Scene scene = with_kernel_source(
-        scene_as_used(find_scene(found, options.scene), options.dev), options.kernel_source);
+    const Scene scene =
+        with_kernel_source(scene_as_used(finding.get(), options.dev), options.kernel_source);
     if (view) warn_if_scene_changed(*view, scene);
     FrameRequest request = scene_request(scene, options);
     request.view = choose_view(scene, options);

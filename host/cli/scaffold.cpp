@@ -11,6 +11,7 @@
 #include "template_README_md.h"
 #include "template_scene_c.h"
 #include "template_scene_cl.h"
+#include "template_text_scene_cl.h"
 #include "util/atomic_file.hpp"
 
 namespace fgr {
@@ -78,6 +79,22 @@ std::string fill_template(const std::string& text,
         }
     }
     return out;
+}
+
+fs::path scaffold_text_scene(const std::string& id, const fs::path& directory) {
+    const ScaffoldNames names = scaffold_names(id);
+    std::error_code error;
+    if (!fs::is_directory(directory, error)) {
+        throw UsageError(fmt::format("'{}' is not a directory", directory.string()));
+    }
+    const fs::path file = directory / (names.id + ".cl");
+    if (fs::exists(fs::symlink_status(file, error))) {
+        throw UsageError(fmt::format("'{}' already exists", file.string()));
+    }
+    write_text_file_atomically(
+        file, fill_template(template_text_scene_cl,
+                            {{"SCENE_ID", names.id}, {"SCENE_NAME", names.display_name}}));
+    return file;
 }
 
 std::vector<fs::path> scaffold_scene(const std::string& id, const fs::path& directory,

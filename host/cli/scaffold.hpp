@@ -1,7 +1,8 @@
 #pragma once
 // `fgr new-scene`: a new scene plugin project from the SDK template (sdk/template, built into fgr
 // so it works from any install): a CMakeLists.txt that finds the installed fgr, a C file with the
-// description, a .cl file with a distance estimator and a colour, and a README.
+// description, a .cl file with a distance estimator and a colour, and a README; or, with --text,
+// one text scene file (scene/text_scene.hpp).
 
 #include <filesystem>
 #include <string>
@@ -22,6 +23,13 @@ ScaffoldNames scaffold_names(const std::string& id);
 // Replaces every @KEY@ of `text` with its value; unknown @...@ sequences stay as they are.
 std::string fill_template(const std::string& text,
                           const std::vector<std::pair<std::string, std::string>>& values);
+
+// Writes the text scene `id` (sdk/template/text_scene.cl: a bumpy ball, every header key shown) as
+// `directory`/ID.cl and returns its path: one file that `fgr render` and `fgr view` open as it is.
+// Refuses (UsageError) a bad id, a missing directory and a file that is already there; written
+// atomically.
+std::filesystem::path scaffold_text_scene(const std::string& id,
+                                          const std::filesystem::path& directory);
 
 // Writes the project for `id` into `directory` (which must not exist, or be empty) and returns
 // the files written. `fgr_prefix` is where find_package(fgr) should look first. All or nothing:

@@ -150,7 +150,8 @@ void add_video_command(CLI::App& app, VideoOptions& options) {
     CLI::App* video = app.add_subcommand(
         "video", "render a camera path into a video file (.mp4 ...) and/or a PNG/EXR sequence");
     video->add_option("scene", options.frame.scene,
-                      "scene id (see `fgr list`) or a view file (.fgrview.json) to start from");
+                      "scene id (see `fgr list`), scene file (.so, .ifs.json, .formula.json, .cl) "
+                      "or view file (.fgrview.json) to start from");
     video->add_option("--camera-path", options.frame.camera_path,
                       "camera path of the scene, or a .json file saved by `fgr view` (default "
                       "with a view: a turn around the view's target, starting at the view)");
@@ -233,10 +234,9 @@ int command_video(const VideoOptions& typed_options) {
     }
     check_video_options(options);
     const RenderOptions& frame_options = options.frame;
-    const Discovery found = discover_for(frame_options.scene);
-    const Scene scene =
-        with_kernel_source(scene_as_used(find_scene(found, frame_options.scene), frame_options.dev),
-                           frame_options.kernel_source);
+    const Scene scene = with_kernel_source(
+        scene_as_used(scene_from_argument(frame_options.scene), frame_options.dev),
+        frame_options.kernel_source);
     if (view) warn_if_scene_changed(*view, scene);
     const CameraPath path = video_camera_path(scene, frame_options, view);
     VideoFrames frames;

@@ -33,7 +33,9 @@ void add_view_command(CLI::App& app, ViewCommandOptions& options) {
     CLI::App* view = app.add_subcommand(
         "view", "open the interactive viewer (press H in it for the key bindings)");
     viewer::ViewerOptions& viewer = options.viewer;
-    view->add_option("scene", viewer.scene, "scene to open first (default: mandelbulb)");
+    view->add_option("scene", viewer.scene,
+                     "scene to open first, by id or as a scene file: .so, .ifs.json, "
+                     ".formula.json, .cl (default: mandelbulb)");
     view->add_option("--width", viewer.width, "window width in pixels (default 1280)")
         ->check(CLI::Range(64, kMaxImageSide));
     view->add_option("--height", viewer.height, "window height in pixels (default 720)")

@@ -1,8 +1,9 @@
 #pragma once
 // Notices new and changed files by polling their modification time and size: the plugin folders
-// (every scene file in them: *.so plugins and *.ifs.json IFS files) and single files (a scene's .cl
-// source in `fgr view --dev`). Polling is portable and cheap at the viewer's rate (a stat per file,
-// twice a second).
+// (every file named like a scene file in them: *.so plugins, *.ifs.json and *.formula.json files
+// and *.cl files, which may be text scenes) and single files (a scene file opened by path, a
+// scene's .cl source in `fgr view --dev`). Polling is portable and cheap at the viewer's rate (a
+// stat per file, twice a second).
 
 #include <cstdint>
 #include <filesystem>
@@ -13,7 +14,8 @@ namespace fgr::viewer {
 
 class FileWatcher {
 public:
-    // Every *.so and *.ifs.json in `directory` (which need not exist yet).
+    // Every file in `directory` (which need not exist yet) named like a scene file
+    // (is_scene_file_name).
     void watch_directory(const std::filesystem::path& directory);
     // One file (which need not exist yet).
     void watch_file(const std::filesystem::path& file);

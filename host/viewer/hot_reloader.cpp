@@ -27,14 +27,16 @@ void HotReloader::watch() {
     for (const auto& directory : plugin_search_path(executable_dir())) {
         watcher_.watch_directory(directory);
     }
-    if (dev_) {
+    for (size_t i = 0; i < scenes_.size(); ++i) {
+        const Scene& scene = *scenes_.at(i);
+        // A scene file opened by path may be outside the plugin folders. (One inside is reported
+        // once: the watcher keys files by path.)
+        if (!scene.plugin_file.empty()) watcher_.watch_file(scene.plugin_file);
         // A scene built with fgr_add_scene_plugin names its .cl file by absolute path.
-        for (size_t i = 0; i < scenes_.size(); ++i) {
-            const Scene& scene = *scenes_.at(i);
-            const std::filesystem::path source = scene.source_name;
-            if (source.is_absolute() && std::filesystem::exists(source)) {
-                watcher_.watch_file(source);
-                spdlog::info("watching {} for '{}'", source.string(), scene.id);
+        if (dev_) {
+            if (const auto source = recorded_source_file(scene); source) {
+                watcher_.watch_file(*source);
+                spdlog::info("watching {} for '{}'", source->string(), scene.id);
             }
         }
     }
@@ -45,17 +47,26 @@ void HotReloader::poll(double now_seconds) {
     if (now_seconds < next_poll_) return;
     next_poll_ = now_seconds + kWatchSeconds;
     for (const std::filesystem::path& file : watcher_.poll()) {
-        if (is_scene_file_name(file)) {
+        if (is_scene_file(file) || holds_a_scene(file)) {
             reload_plugin(file);
-        } else {
-            reload_source(file);
+        } else if (dev_) {
+            reload_source(file);  // other .cl files in plugin folders count only with --dev
         }
     }
 }
 
+bool HotReloader::holds_a_scene(const std::filesystem::path& file) const {
+    // A text scene whose header was broken is no longer a scene file by its first bytes, but it
+    // is still the file of a scene on screen: reloading it says what is wrong.
+    for (size_t i = 0; i < scenes_.size(); ++i) {
+        if (scenes_.at(i)->plugin_file == file && is_scene_file_name(file)) return true;
+    }
+    return false;
+}
+
 void HotReloader::reload_plugin(const std::filesystem::path& file) {
     // A plugin from a fresh copy (a library still loaded under this path would come back as it
-    // was), an IFS file read again.
+    // was), an IFS, formula or text scene file read again.
     LoadResult loaded = reload_scene_file(file);
     if (!loaded.scene) {
         const std::string message =
@@ -73,7 +84,11 @@ void HotReloader::reload_plugin(const std::filesystem::path& file) {
         host_.add_message(fmt::format("new scene '{}'", candidate->id));
         scenes_.add(candidate);
         // An IFS scene's source is generated, not a file to watch.
-        if (dev_ && !candidate->ifs) watcher_.watch_file(candidate->source_name);
+        if (dev_ && !candidate->ifs) {
+            if (const auto source = recorded_source_file(*candidate); source) {
+                watcher_.watch_file(*source);
+            }
+        }
         ++changes_handled_;
         return;
     }

@@ -1,8 +1,8 @@
 #pragma once
-// The viewer's hot reload: watching the plugin folders (and with --dev the scenes' .cl sources),
-// having the render thread build a new version of a scene that changed, and swapping it in once
-// it has built; a version that fails to build is refused and the running one stays. Private to
-// fgr_viewer.
+// The viewer's hot reload: watching the plugin folders and the scenes' files (and with --dev the
+// scenes' .cl sources), having the render thread build a new version of a scene that changed, and
+// swapping it in once it has built; a version that fails to build is refused and the running one
+// stays. Private to fgr_viewer.
 
 #include <cstdint>
 #include <filesystem>
@@ -46,6 +46,8 @@ public:
     uint64_t changes_handled() const { return changes_handled_; }
 
 private:
+    // Whether `file` is the scene file of a scene in the set.
+    bool holds_a_scene(const std::filesystem::path& file) const;
     void reload_plugin(const std::filesystem::path& file);
     void reload_source(const std::filesystem::path& file);
 

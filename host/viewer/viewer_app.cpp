@@ -15,6 +15,7 @@
 #include "render/renderer.hpp"
 #include "scene/discovery.hpp"
 #include "scene/parameters.hpp"
+#include "scene/scene_argument.hpp"
 #include "scene/scene_source.hpp"
 #include "util/timing.hpp"
 #include "viewer/viewer_util.hpp"
@@ -399,13 +400,26 @@ void ViewerApp::print_stats() {
 }
 
 int run_viewer(const ViewerOptions& options) {
+    ViewerOptions chosen = options;
+    // A scene file by path opens first, before the plugin folders' scenes (which it replaces when
+    // one has its id); a bad one is refused before anything else is loaded.
+    std::optional<Scene> opened;
+    if (const SceneArgumentKind kind = scene_argument_kind(options.scene);
+        kind != SceneArgumentKind::Id) {
+        opened = load_scene_argument_file(options.scene, kind);
+        chosen.scene = opened->id;
+    }
     Discovery found = discover_scenes(plugin_search_path(executable_dir()));
+    if (opened) {
+        std::erase_if(found.scenes, [&](const Scene& scene) { return scene.id == opened->id; });
+        found.scenes.insert(found.scenes.begin(), std::move(*opened));
+    }
     if (found.scenes.empty()) {
         throw std::runtime_error("no scenes found (see `fgr list` for the folders searched)");
     }
-    const auto has_id = [&](const Scene& scene) { return scene.id == options.scene; };
-    if (!options.scene.empty() && std::none_of(found.scenes.begin(), found.scenes.end(), has_id)) {
-        throw UsageError(unknown_scene_message(found, options.scene));
+    const auto has_id = [&](const Scene& scene) { return scene.id == chosen.scene; };
+    if (!chosen.scene.empty() && std::none_of(found.scenes.begin(), found.scenes.end(), has_id)) {
+        throw UsageError(unknown_scene_message(found, chosen.scene));
     }
     for (Scene& scene : found.scenes) {
         // --dev starts from the .cl files as they are on disk, not as the plugins embed them.
@@ -415,7 +429,7 @@ int run_viewer(const ViewerOptions& options) {
             spdlog::warn("{}", stale);
         }
     }
-    ViewerApp app(options, std::move(found.scenes));
+    ViewerApp app(chosen, std::move(found.scenes));
     return app.run();
 }
 
