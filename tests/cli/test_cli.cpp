@@ -29,6 +29,7 @@
 #include "image/hdr_io.hpp"
 #include "image/image_io.hpp"
 #include "test_files.hpp"
+#include "text_scene_example.hpp"
 
 namespace fgr {
 namespace {
@@ -866,6 +867,110 @@ TEST_F(CliWithOwnCache, UnknownSceneNamesTheRefusedPluginAndWhy) {
         (refused / "liboops.so").string() + " (parameter 'scale': default 3 outside [0.5, 2])"))
         << other;
     EXPECT_FALSE(fs::exists(out_png()));
+}
+
+// --- Scene files by path; text scenes ------------------------------------------------------------
+
+// `fgr render PATH` for each kind of scene file. The file alone is loaded: a refused text scene in
+// the plugin folder would be warned about by a command that scanned it. The text scene is the SDK
+// guide's example, as the guide shows it.
+TEST_F(CliWithOwnCache, RendersEveryKindOfSceneFileByPath) {
+    const fs::path plugins = dir() / "plugins";
+    fs::create_directories(plugins);
+    test::write_text(plugins / "refused.cl", "/* fgr-scene {\"id\": \"refused\"} */\n");
+    test::write_text(dir() / "my-bulb.cl", test::sdk_guide_text_scene_example());
+    const std::vector<std::string> paths = {
+        "my-bulb.cl",  // a bare name: its suffix makes it a path
+        (test::kPluginDir / "mandelbulb.so").string(),
+        (fs::path(FGR_TEST_IFS_DIR) / "sierpinski.ifs.json").string(),
+        (fs::path(FGR_TEST_FORMULA_DIR) / "mandelbulb-formula.formula.json").string()};
+    for (const std::string& path : paths) {
+        SCOPED_TRACE(path);
+        fs::remove(out_png());
+        const RunResult result = run_with(
+            {"render", path, "-o", out_png().string(), "--width", "32", "--height", "24"}, plugins);
+        ASSERT_EQ(result.exit_code, 0) << result;
+        EXPECT_GT(expect_render_report(result, 32, 24), 0) << result;
+        expect_rgb_png(out_png(), 32, 24);
+        EXPECT_EQ(result.err.find("skipping"), std::string::npos)
+            << "a plugin folder was scanned: " << result;
+    }
+}
+
+// Every command that takes a scene refuses a bad scene file in one line that names the file (and
+// the header's key), before it opens a device or a window.
+TEST_F(CliWithOwnCache, ABadSceneFileIsRefusedInOneLineNamingIt) {
+    std::string bad = test::sdk_guide_text_scene_example();
+    const std::size_t max = bad.find("\"max\": 16");
+    ASSERT_NE(max, std::string::npos);
+    bad.replace(max, 9, "\"max\": \"16\"");
+    test::write_text(dir() / "bad.cl", bad);
+    test::write_text(dir() / "notes.txt", "not a scene");
+    const std::string refused =
+        R"(fgr: error: bad.cl: header "parameters[0].max": must be a number)";
+    const std::vector<std::pair<std::vector<std::string>, std::string>> cases = {
+        {{"render", "bad.cl", "-o", out_png().string()}, refused},
+        {{"video", "bad.cl", "--camera-path", "orbit", "-o", (dir() / "v.mp4").string()}, refused},
+        {{"check", "bad.cl"}, refused},
+        {{"bench", "bad.cl", "--frames", "1"}, refused},
+        {{"list", "bad.cl"}, refused},
+        {{"view", "bad.cl"}, refused},  // refused before a window would open
+        {{"render", "missing.ifs.json", "-o", out_png().string()},
+         "fgr: error: missing.ifs.json: cannot open the file"},
+        {{"render", "./notes.txt", "-o", out_png().string()},
+         "fgr: error: ./notes.txt: not a scene file: fgr opens scene plugins (*.so), IFS files "
+         "(*.ifs.json), formula files (*.formula.json) and text scenes (*.cl), or a scene id "
+         "(`fgr list`)"},
+    };
+    for (const auto& [args, expected] : cases) {
+        SCOPED_TRACE(describe(args));
+        const RunResult result = run_with(args);
+        ASSERT_TRUE(result.exited) << result;
+        EXPECT_EQ(result.exit_code, 2) << result;
+        if (args[0] != "view") expect_one_error_line(result);
+        std::string err = result.err;
+        if (!err.empty() && err.back() == '\n') err.pop_back();
+        EXPECT_EQ(err.substr(err.rfind('\n') + 1), expected) << result;
+    }
+    EXPECT_FALSE(fs::exists(out_png()));
+}
+
+// A text scene that does not compile: the compiler's messages, and the one-line error after them,
+// name the file and the line, as the file has them (its header comment included).
+TEST_F(CliWithOwnCache, ATextSceneThatDoesNotCompileNamesItsFileAndLine) {
+    std::string typo = test::sdk_guide_text_scene_example();
+    const std::size_t at = typo.find("param_power)");
+    ASSERT_NE(at, std::string::npos);
+    typo.replace(at, 11, "param_powr");
+    const long line = 1 + std::count(typo.begin(), typo.begin() + long(at), '\n');
+    test::write_text(dir() / "typo.cl", typo);
+    const RunResult result = run_with(
+        {"render", "typo.cl", "-o", out_png().string(), "--width", "16", "--height", "12"});
+    EXPECT_EQ(result.exit_code, 1) << result;
+    const std::string where = "typo.cl:" + std::to_string(line) + ":";
+    EXPECT_NE(result.err.find(where + "40: error: use of undeclared identifier 'param_powr'"),
+              std::string::npos)
+        << result;
+    std::string err = result.err;
+    if (!err.empty() && err.back() == '\n') err.pop_back();
+    EXPECT_EQ(err.substr(err.rfind('\n') + 1)
+                  .rfind("fgr: error: OpenCL program failed to compile: " + where, 0),
+              0u)
+        << result;
+    EXPECT_FALSE(fs::exists(out_png()));
+}
+
+// The SDK guide's example and what `fgr new-scene --text` writes pass `fgr check`, which renders
+// them too (slow: two scenes' checks).
+TEST_F(CliWithOwnCache, TextScenesPassFgrCheck) {
+    test::write_text(dir() / "my-bulb.cl", test::sdk_guide_text_scene_example());
+    ASSERT_EQ(run_with({"new-scene", "--text", "my-scene"}).exit_code, 0);
+    for (const char* file : {"my-bulb.cl", "my-scene.cl"}) {
+        const RunResult result = run_with({"check", file});
+        EXPECT_EQ(result.exit_code, 0) << result;
+        EXPECT_NE(result.out.find(": all "), std::string::npos) << result;
+        EXPECT_NE(result.out.find(" checks passed"), std::string::npos) << result;
+    }
 }
 
 // Off a terminal, bench says how far each run is every quarter, none skipped: three frames per run

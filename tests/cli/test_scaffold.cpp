@@ -9,6 +9,7 @@
 #include "child_process.hpp"
 #include "cli/scaffold.hpp"
 #include "scene/parameters.hpp"
+#include "test_files.hpp"
 
 namespace fgr {
 namespace {
@@ -104,6 +105,28 @@ TEST_F(ScaffoldProject, CommandLineReportsBadNamesOnOneLine) {
     EXPECT_TRUE(fs::exists(dir_.path() / "projects/nice/nice.cl"));
     EXPECT_NE(good.out.find("cmake -S projects/nice -B projects/nice/build"), std::string::npos)
         << good;
+}
+
+// `fgr new-scene --text NAME`: one file, NAME.cl, that fgr opens as it is (test_cli.cpp's
+// TextScenesPassFgrCheck renders and checks it).
+TEST_F(ScaffoldProject, TextSceneIsOneFileFgrOpensAsItIs) {
+    test::ChildOptions options;
+    options.working_dir = dir_.path();
+    const test::RunResult made =
+        test::run_child(FGR_TEST_FGR_EXE, {"new-scene", "--text", "my-scene"}, options);
+    ASSERT_EQ(made.exit_code, 0) << made;
+    EXPECT_EQ(test::directory_listing(dir_.path()), std::vector<std::string>{"my-scene.cl"});
+    EXPECT_NE(made.out.find("fgr render ./my-scene.cl -o my-scene.png"), std::string::npos) << made;
+    const test::RunResult listed =
+        test::run_child(FGR_TEST_FGR_EXE, {"list", "my-scene.cl"}, options);
+    ASSERT_EQ(listed.exit_code, 0) << listed;
+    EXPECT_EQ(listed.out.rfind("my-scene  My Scene - ", 0), 0u) << listed;
+    EXPECT_NE(listed.out.find("text scene: my-scene.cl"), std::string::npos) << listed;
+    // Never over a file that is there.
+    const test::RunResult again =
+        test::run_child(FGR_TEST_FGR_EXE, {"new-scene", "--text", "my-scene"}, options);
+    EXPECT_EQ(again.exit_code, 2) << again;
+    EXPECT_EQ(again.err, "fgr: error: './my-scene.cl' already exists\n") << again;
 }
 
 }  // namespace

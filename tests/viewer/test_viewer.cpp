@@ -606,6 +606,72 @@ TEST_F(ViewerTest, DevModeReloadsAnEditedSourceAndKeepsTheLastOneThatCompiles) {
     EXPECT_NE(run.result.err.find("typo_radius"), std::string::npos) << run.result;
 }
 
+// A text scene opened by path, outside the plugin folders, is reloaded when it is saved; a version
+// that does not compile, or whose header is refused, leaves the last good one on screen and says
+// why, naming the file (and the line).
+TEST_F(ViewerTest, ATextSceneOpenedByPathIsReloadedOnSaveAndBrokenVersionsKeepTheLastGoodOne) {
+    const fs::path scene = dir() / "ball.cl";
+    const std::string header =
+        "/* fgr-scene\n{\"id\": \"fixture-text\", \"name\": \"Text\", \"effects\": [],\n"
+        " \"parameters\": [{\"id\": \"scale\", \"min\": 0.1, \"max\": 2, \"default\": 1}]}\n"
+        "*/\n";
+    test::write_text(scene, header +
+                                "real scene_de(vec3 p, PARAMS) {\n"
+                                "    return v3_length(p) - param_scale;\n}\n");
+    const fs::path plugins = dir() / "plugins";  // empty: the scene is the file alone
+    fs::create_directory(plugins);
+    const std::string script = R"(0 wait_idle
+0 key F12
+0 wait_reload
+0 wait_idle
+0 key F12
+0 wait_reload
+0 wait_idle
+0 key F12
+0 wait_reload
+0 wait_idle
+0 key F12
+0.2 quit
+)";
+    ViewerRun run;
+    {
+        AfterEachScreenshot edits(
+            dir(), {[&] {
+                        test::write_text(scene, header +
+                                                    "real scene_de(vec3 p, PARAMS) {\n"
+                                                    "    return v3_length(p) - 1.5f;\n}\n");
+                    },
+                    [&] {
+                        test::write_text(scene, header +
+                                                    "real scene_de(vec3 p, PARAMS) {\n"
+                                                    "    return v3_length(p) - typo_radius;\n}\n");
+                    },
+                    [&] {
+                        test::write_text(scene,
+                                         "/* fgr-scene {\"id\": \"fixture-text\", "
+                                         "\"name\": 7} */\n");
+                    }});
+        run = view(script, {"ball.cl"}, plugins);
+    }
+    ASSERT_EQ(run.result.exit_code, 0) << run.result;
+    ASSERT_EQ(run.screenshots.size(), 4u) << run.result;
+    const Image8 original = read_png(run.screenshots[0]);
+    const Image8 edited = read_png(run.screenshots[1]);
+    EXPECT_GT(mean_abs_difference(original, edited), 5.0) << "the edit did not show" << run.result;
+    EXPECT_EQ(read_png(run.screenshots[2]).rgb, edited.rgb)
+        << "a version that does not compile replaced the scene" << run.result;
+    EXPECT_EQ(read_png(run.screenshots[3]).rgb, edited.rgb)
+        << "a refused header replaced the scene" << run.result;
+    const std::string& err = run.result.err;
+    EXPECT_NE(err.find("reloaded 'fixture-text'"), std::string::npos) << run.result;
+    // The header has 4 lines: the typo is on the file's line 6.
+    EXPECT_NE(err.find("OpenCL program failed to compile: ball.cl:6:"), std::string::npos)
+        << run.result;
+    EXPECT_NE(err.find(R"(ball.cl: header "name": must be a string (keeping the version loaded)"),
+              std::string::npos)
+        << run.result;
+}
+
 // A plugin whose recorded .cl file was edited after it was built: the viewer shows the embedded
 // source and says so in one line; with --dev it starts from the file on disk (a ball of half the
 // radius: a different picture) and says nothing.
