@@ -465,27 +465,51 @@ void swap_two_values(json& document, test::FuzzRng& rng) {
     std::swap(document[a], document[b]);
 }
 
-// Text no JSON library may see as a tree: nesting thousands deep, numbers past double's range.
-void insert_pathological(std::string& text, test::FuzzRng& rng) {
-    const std::size_t at = text.empty() ? 0 : rng.below(text.size());
+// Text no JSON library may hold as a tree: nesting up to 200000 deep (which anything that
+// recurses over a value, such as printing it in a message, could not survive), numbers past
+// double's range.
+std::string pathological(test::FuzzRng& rng) {
     const std::size_t depth = rng.chance(0.5) ? 1 + rng.below(40) : 1 + rng.below(200000);
-    const char* open = rng.chance(0.5) ? "[" : "{\"a\":";
-    std::string nested;
-    switch (rng.below(4)) {
+    switch (rng.below(5)) {
         case 0:
-            for (std::size_t i = 0; i < depth; ++i) nested += open;
-            break;
+            return std::string(depth, '[');  // never closed
         case 1:
-            nested = "1e" + std::to_string(300 + rng.below(400));
-            break;
+            return "1e" + std::to_string(300 + rng.below(400));
         case 2:
-            nested = "-" + std::string(1 + rng.below(500), '9');
-            break;
+            return "-" + std::string(1 + rng.below(500), '9');
+        case 3: {
+            std::string nested;
+            for (std::size_t i = 0; i < depth; ++i) nested += "{\"a\":";
+            return nested + "0" + std::string(depth, '}');
+        }
         default:
-            nested = std::string(depth, '[') + "0" + std::string(depth, ']');
-            break;
+            return std::string(depth, '[') + "\"x\"" + std::string(depth, ']');
     }
-    text.insert(at, nested);
+}
+
+// The pathological text in place of a random value of the header (or anywhere in its text when
+// it is not JSON).
+void insert_pathological(std::string& text, test::FuzzRng& rng) {
+    json document = json::parse(text, nullptr, /*allow_exceptions=*/false);
+    if (document.is_discarded() || rng.chance(0.2)) {
+        text.insert(text.empty() ? 0 : rng.below(text.size()), pathological(rng));
+        return;
+    }
+    std::vector<json::json_pointer> pointers;
+    const auto collect = [&](const auto& self, const json& value,
+                             const json::json_pointer& at) -> void {
+        pointers.push_back(at);
+        if (value.is_object()) {
+            for (const auto& item : value.items()) self(self, item.value(), at / item.key());
+        } else if (value.is_array()) {
+            for (std::size_t i = 0; i < value.size(); ++i) self(self, value[i], at / i);
+        }
+    };
+    collect(collect, document, json::json_pointer());
+    constexpr const char* kPlaceholder = "\"fgr-fuzz-placeholder\"";
+    document[pointers[rng.below(pointers.size())]] = "fgr-fuzz-placeholder";
+    text = document.dump(-1, ' ', false, json::error_handler_t::replace);
+    text.replace(text.find(kPlaceholder), std::string_view(kPlaceholder).size(), pathological(rng));
 }
 
 TEST(TextSceneFuzz, EveryMutatedHeaderGivesASceneOrOneLine) {
@@ -524,7 +548,7 @@ TEST(TextSceneFuzz, EveryMutatedHeaderGivesASceneOrOneLine) {
                 document.dump(rng.chance(0.5) ? 1 : -1, ' ', false, json::error_handler_t::replace);
         }
         // Last, as the parse above must never see it: nesting and numbers no tree can hold.
-        if (rng.chance(0.1)) insert_pathological(parts.json, rng);
+        if (rng.chance(0.15)) insert_pathological(parts.json, rng);
         std::string text = "/* fgr-scene\n" + parts.json + parts.rest;
         if (rng.chance(0.05)) test::mutate_text(text, rng);  // the comment's own markers too
         const LoadResult loaded = parse_text_scene(text, "fuzz.cl");
