@@ -871,29 +871,64 @@ TEST_F(CliWithOwnCache, UnknownSceneNamesTheRefusedPluginAndWhy) {
 
 // --- Scene files by path; text scenes ------------------------------------------------------------
 
+// A scene file of each kind by path, and the scene id it holds, for `fgr render PATH`.
+struct SceneFileByPath {
+    std::string path;
+    std::string id;
+};
+
+std::vector<SceneFileByPath> scene_files_by_path() {
+    return {{"my-bulb.cl", "my-bulb"},  // a bare name: its suffix makes it a path
+            {(test::kPluginDir / "mandelbulb.so").string(), "mandelbulb"},
+            {(fs::path(FGR_TEST_IFS_DIR) / "sierpinski.ifs.json").string(), "sierpinski-ifs"},
+            {(fs::path(FGR_TEST_FORMULA_DIR) / "mandelbulb-formula.formula.json").string(),
+             "mandelbulb-formula"}};
+}
+
 // `fgr render PATH` for each kind of scene file. The file alone is loaded: a refused text scene in
-// the plugin folder would be warned about by a command that scanned it. The text scene is the SDK
-// guide's example, as the guide shows it.
+// the plugin folder would be warned about by a command that scanned it. The text scene (the SDK
+// guide's example, as the guide shows it) and the plugin (whose kernel the other renders of the
+// Mandelbulb share) render; the IFS and formula files are loaded as far as the camera, which
+// comes before any kernel is compiled (TheOtherSceneFilesRenderByPath renders them, slow tier).
 TEST_F(CliWithOwnCache, RendersEveryKindOfSceneFileByPath) {
     const fs::path plugins = dir() / "plugins";
     fs::create_directories(plugins);
     test::write_text(plugins / "refused.cl", "/* fgr-scene {\"id\": \"refused\"} */\n");
     test::write_text(dir() / "my-bulb.cl", test::sdk_guide_text_scene_example());
-    const std::vector<std::string> paths = {
-        "my-bulb.cl",  // a bare name: its suffix makes it a path
-        (test::kPluginDir / "mandelbulb.so").string(),
-        (fs::path(FGR_TEST_IFS_DIR) / "sierpinski.ifs.json").string(),
-        (fs::path(FGR_TEST_FORMULA_DIR) / "mandelbulb-formula.formula.json").string()};
-    for (const std::string& path : paths) {
+    for (const auto& [path, id] : scene_files_by_path()) {
         SCOPED_TRACE(path);
         fs::remove(out_png());
-        const RunResult result = run_with(
-            {"render", path, "-o", out_png().string(), "--width", "32", "--height", "24"}, plugins);
+        const bool rendered = path.ends_with(".cl") || path.ends_with(".so");
+        std::vector<std::string> args = {"render",  path, "-o",       out_png().string(),
+                                         "--width", "32", "--height", "24"};
+        if (!rendered) args.insert(args.end(), {"--camera", "nosuch"});
+        const RunResult result = run_with(args, plugins);
+        EXPECT_EQ(result.err.find("skipping"), std::string::npos)
+            << "a plugin folder was scanned: " << result;
+        if (!rendered) {
+            EXPECT_EQ(result.exit_code, 2) << result;
+            EXPECT_EQ(result.err,
+                      "fgr: error: scene '" + id + "' has no camera 'nosuch' (see `fgr list`)\n")
+                << result;
+            continue;
+        }
         ASSERT_EQ(result.exit_code, 0) << result;
         EXPECT_GT(expect_render_report(result, 32, 24), 0) << result;
         expect_rgb_png(out_png(), 32, 24);
-        EXPECT_EQ(result.err.find("skipping"), std::string::npos)
-            << "a plugin folder was scanned: " << result;
+    }
+}
+
+// The IFS and formula files by path render too (slow: two kernels no other test compiles).
+TEST_F(CliWithOwnCache, TheOtherSceneFilesRenderByPath) {
+    for (const auto& [path, id] : scene_files_by_path()) {
+        if (path.ends_with(".cl") || path.ends_with(".so")) continue;
+        SCOPED_TRACE(path);
+        fs::remove(out_png());
+        const RunResult result =
+            run_with({"render", path, "-o", out_png().string(), "--width", "32", "--height", "24"});
+        ASSERT_EQ(result.exit_code, 0) << result;
+        EXPECT_GT(expect_render_report(result, 32, 24), 0) << result;
+        expect_rgb_png(out_png(), 32, 24);
     }
 }
 
