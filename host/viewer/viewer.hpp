@@ -17,8 +17,10 @@
 namespace fgr::viewer {
 
 struct ViewerOptions {
-    std::string scene;  // id to open first; empty: mandelbulb, else the first found
-    int width = 1280;   // window size in pixels
+    // Id or scene file path (scene/scene_argument.hpp) to open first; empty: mandelbulb, else the
+    // first found.
+    std::string scene;
+    int width = 1280;  // window size in pixels
     int height = 720;
     bool fullscreen = false;
     double target_ms = 33.0;  // frame time to hold while the view changes
