@@ -4,7 +4,6 @@
 
 #include <array>
 #include <fstream>
-#include <string_view>
 #include <system_error>
 
 #include "scene/discovery.hpp"
@@ -35,9 +34,7 @@ bool is_elf_file(const fs::path& file) {
     std::ifstream in(file, std::ios::binary);
     std::array<char, 4> magic{};
     in.read(magic.data(), magic.size());
-    return in.gcount() == 4 && std::string_view(magic.data(), 4) ==
-                                   "\x7f"
-                                   "ELF";
+    return in.gcount() == 4 && magic == std::array<char, 4>{'\x7f', 'E', 'L', 'F'};
 }
 
 }  // namespace
