@@ -13,7 +13,8 @@ It checks that
      formula library (names, parameters and their ranges, bailout ceilings), effects, modes,
      projections, counts and ranges;
   3. every file fgr ships is valid: the formula and IFS scenes in plugins/, the examples in the
-     docs, tests/schemas/examples/;
+     docs, tests/schemas/examples/, and the headers of the text scenes fgr ships (the new-scene
+     template, the docs' ```c blocks that are text scenes);
   4. every file fgr writes is valid: those fgr_schema_samples writes through fgr's writers (its
      "$schema" naming the build tree's copy of the schema), and a part's fgr.part header from
      `fgr render --part`, rendered along the written camera path;
@@ -67,7 +68,7 @@ LIMITS = [
     ("part-identity.schema.json", "/properties/height/maximum", "image_side"),
 ]
 # The scene files' shared parts, checked in each schema that has them.
-for _schema in ("ifs.schema.json", "formula.schema.json"):
+for _schema in ("ifs.schema.json", "formula.schema.json", "text-scene.schema.json"):
     LIMITS += [
         (_schema, "/$defs/scene_id/maxLength", "id_length"),
         (_schema, "/$defs/camera_name/maxLength", "id_length"),
@@ -87,12 +88,18 @@ NAMES = [
     ("view.schema.json", "/properties/camera/properties/projection/enum", "projections"),
     ("part-identity.schema.json", "/properties/identity/properties/mode/enum", "render_modes"),
     ("part-identity.schema.json", "/properties/tone_map/enum", "tone_maps"),
+    ("text-scene.schema.json", "/properties/default_mode/enum", "render_modes"),
 ]
 # Documents whose ```json blocks are checked when their "format" is one a schema has.
 DOCS = ["README.md", "sdk/README.md", "docs/*.md"]
 # Files fgr ships, each checked against the schema of its "format".
 SHIPPED = ["plugins/formulas/*.formula.json", "plugins/ifs/*.ifs.json", "bench/deep_zoom.json",
            "tests/schemas/examples/*.json"]
+# Text scenes fgr ships: `fgr new-scene --text`'s template, its placeholders filled as new-scene
+# fills them for the id "my-scene".
+TEXT_SCENES = ["sdk/template/text_scene.cl"]
+TEMPLATE_VALUES = {"@SCENE_ID@": "my-scene", "@SCENE_NAME@": "My Scene"}
+TEXT_SCENE_TAG = "fgr-scene"
 # The scene a part is rendered of, small: one kernel compile.
 PART_SCENE = "mandelbulb"
 
@@ -314,6 +321,26 @@ def json_blocks(markdown):
     return re.findall(r"^```json\n(.*?)^```", markdown, flags=re.M | re.S)
 
 
+def text_scene_header(text):
+    """The JSON header of a text scene's source, parsed; None when it has none."""
+    match = re.match(r"\s*/\*\s*" + TEXT_SCENE_TAG + r"\s(.*?)\*/", text, flags=re.S)
+    return json.loads(match.group(1)) if match else None
+
+
+def read_text_scene(path):
+    with open(path, encoding="utf-8") as f:
+        text = f.read()
+    for placeholder, value in TEMPLATE_VALUES.items():
+        text = text.replace(placeholder, value)
+    return text
+
+
+def text_scene_file(header):
+    """A text scene with `header` and a ball for its source, as a file's text."""
+    return ("/* " + TEXT_SCENE_TAG + "\n" + json.dumps(header, indent=1) + "\n*/\n"
+            "real scene_de(vec3 p, PARAMS) { return v3_length(p) - 1.0f; }\n")
+
+
 def check_valid(schemas, name, document, what, failures):
     found = errors(schemas[name], document)
     for error in found:
@@ -347,6 +374,23 @@ def check_shipped(source_dir, schemas, failures):
                 if name:
                     check_valid(schemas, name, document, f"{path} json block {i + 1}", failures)
                     checked += 1
+            # Text scenes among the code examples: their headers.
+            with open(path, encoding="utf-8") as f:
+                code_blocks = re.findall(r"^```c\n(.*?)^```", f.read(), flags=re.M | re.S)
+            for i, block in enumerate(code_blocks):
+                header = text_scene_header(block)
+                if header is not None:
+                    check_valid(schemas, "text-scene.schema.json", header,
+                                f"{path} text scene in c block {i + 1}", failures)
+                    checked += 1
+    for pattern in TEXT_SCENES:
+        for path in sorted(glob.glob(os.path.join(source_dir, pattern))):
+            header = text_scene_header(read_text_scene(path))
+            if header is None:
+                failures.add(f"{path} has no text scene header")
+                continue
+            check_valid(schemas, "text-scene.schema.json", header, path, failures)
+            checked += 1
     print(f"{checked} shipped files and examples checked")
     if checked < 40:
         failures.add(f"only {checked} shipped files found: are the globs right?")
@@ -508,15 +552,31 @@ BAD = {
         ("an unknown effect", setting("/render/effects", ["shadow"])),
         ("a colour of two numbers", setting("/parameters/colour", [1, 0.5])),
     ],
+    "text-scene.schema.json": [
+        ("a misspelt key", renamed("/parameters", "parameter")),
+        ("a parameter without its id", removing("/parameters/0/id")),
+        ("an unknown parameter type", setting("/parameters/3/type", "color")),
+        ("an id with capitals", setting("/id", "My-Scene")),
+        ("an unknown effect", setting("/effects", ["shadow"])),
+        ("an unknown render mode", setting("/default_mode", "fast")),
+        ("a misspelt march key", renamed("/march/max_steps", "max_step")),
+        ("a step factor of 0", setting("/march/step_factor", 0)),
+        ("a spot light", setting("/lights", [{"type": "spot", "position": [0, 0, 1]}])),
+        ("a camera name with a space", setting("/cameras/0/name", "front view")),
+        ("an unknown colour mode", setting("/colour_modes", ["rainbow"])),
+        ("a scale of 0", setting("/scale", 0)),
+    ],
 }
 # The valid file each format's bad cases break, where it is not the one fgr_schema_samples writes:
 # one with every key the cases change.
 BAD_BASES = {
     "ifs.schema.json": "plugins/ifs/sierpinski.ifs.json",
     "view.schema.json": "tests/schemas/examples/mandelbulb.fgrview.json",
+    "text-scene.schema.json": "sdk/template/text_scene.cl",  # its header
 }
 # Scene files fgr finds in a plugin folder by their names' endings.
-SCENE_SUFFIXES = {"ifs.schema.json": ".ifs.json", "formula.schema.json": ".formula.json"}
+SCENE_SUFFIXES = {"ifs.schema.json": ".ifs.json", "formula.schema.json": ".formula.json",
+                  "text-scene.schema.json": ".cl"}
 
 
 def check_bad(source_dir, build_dir, schemas, written, work, environment, failures):
@@ -529,7 +589,9 @@ def check_bad(source_dir, build_dir, schemas, written, work, environment, failur
             failures.add(f"{name} has no known-bad cases (BAD in {os.path.basename(__file__)})")
             continue
         base = written.get(name)
-        if name in BAD_BASES:
+        if name in BAD_BASES and BAD_BASES[name].endswith(".cl"):
+            base = text_scene_header(read_text_scene(os.path.join(source_dir, BAD_BASES[name])))
+        elif name in BAD_BASES:
             with open(os.path.join(source_dir, BAD_BASES[name]), encoding="utf-8") as f:
                 base = json.load(f)
         if base is None:
@@ -551,7 +613,10 @@ def check_bad(source_dir, build_dir, schemas, written, work, environment, failur
             if name in SCENE_SUFFIXES:
                 path = os.path.join(refused_dir, f"bad-{i}{SCENE_SUFFIXES[name]}")
                 with open(path, "w", encoding="utf-8") as f:
-                    json.dump(document, f)
+                    if name == "text-scene.schema.json":
+                        f.write(text_scene_file(document))
+                    else:
+                        json.dump(document, f)
                 scene_files.append((path, what))
     print(f"{cases} known-bad files checked")
     # fgr refuses the bad scene files too: `fgr list` skips each with a warning naming it.
