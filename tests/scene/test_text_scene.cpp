@@ -372,12 +372,14 @@ TEST_P(TextSceneBadHeader, IsRefusedInOneLineNamingTheKey) {
         << loaded.error << "\n  expected to contain: " << bad.expected;
     EXPECT_EQ(loaded.error.find('\n'), std::string::npos) << loaded.error;
     // Refused once its id is known, it is still found by it (unknown_scene_message).
-    if (header.contains("id") && header["id"] == "table") EXPECT_EQ(loaded.declared_id, "table");
+    if (header.contains("id") && header["id"] == "table") {
+        EXPECT_EQ(loaded.declared_id, "table");
+    }
 }
 
 INSTANTIATE_TEST_SUITE_P(Keys, TextSceneBadHeader, ::testing::ValuesIn(kBadHeaders),
-                         [](const ::testing::TestParamInfo<BadHeader>& info) {
-                             return std::string(info.param.name);
+                         [](const ::testing::TestParamInfo<BadHeader>& param_info) {
+                             return std::string(param_info.param.name);
                          });
 
 // Problems with the file rather than a key: each one line, none a crash.
