@@ -27,6 +27,7 @@
 #include "camera/view_override.hpp"
 #include "child_process.hpp"
 #include "hermetic_caches.hpp"
+#include "image/embedded_view.hpp"
 #include "image/image_io.hpp"
 #include "image_compare.hpp"
 #include "scene/formulas/formulas.hpp"
@@ -768,8 +769,9 @@ TEST_F(ViewerTest, PrecisionDoubleRendersTheViewInDouble) {
 }
 
 // In a 64 x 64 window at 2 samples: runs `script`, which saves one view (Ctrl+S) and takes one
-// screenshot (F12) of it, then `fgr render SAVED.fgrview.json` at the size the view was saved
-// at: its PNG must be the screenshot's, byte for byte. Fills `saved` with the view file.
+// screenshot (F12) of it, which carries the view, then `fgr render SAVED.fgrview.json` at the size
+// the view was saved at: its PNG must be the screenshot's, byte for byte. Fills `saved` with the
+// view file.
 void ViewerTest::expect_saved_view_renders_to_the_screenshot(const std::string& script,
                                                              const std::vector<std::string>& extra,
                                                              fs::path* saved) {
@@ -786,6 +788,8 @@ void ViewerTest::expect_saved_view_renders_to_the_screenshot(const std::string& 
     const test::RunResult rendered =
         test::run_fgr({"render", saved->string(), "-o", "rendered.png"}, dir());
     ASSERT_EQ(rendered.exit_code, 0) << rendered;
+    EXPECT_EQ(read_embedded_view(run.screenshots[0]), view_file_text(read_view_file(*saved)))
+        << "the screenshot carries the view Ctrl+S saved";
     const std::vector<uint8_t> shot = test::read_bytes(run.screenshots[0]);
     ASSERT_FALSE(shot.empty());
     EXPECT_TRUE(shot == test::read_bytes(dir() / "rendered.png"))
