@@ -81,9 +81,9 @@ void add_view_command(CLI::App& app, ViewCommandOptions& options) {
     add_device_options(view, viewer.device, viewer.packet_width);
     add_mode_options(view, options.mode);
     view->add_option("--view", options.view,
-                     "open a view (.fgrview.json, as Ctrl+S saves it): its scene, camera, "
-                     "parameters, effects, mode and settings; any option typed overrides the "
-                     "view's");
+                     "open a view: a .fgrview.json file (as Ctrl+S saves it) or an image fgr "
+                     "wrote (it carries its view): its scene, camera, parameters, effects, mode "
+                     "and settings; any option typed overrides the view's");
     record_typed_options(view, options.typed);
 }
 
