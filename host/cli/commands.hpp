@@ -277,7 +277,9 @@ struct ViewCommandOptions {
     ViewOverrideText view_override;  // the first scene's start view
     std::string replay;
     double exit_after = 0.0;
-    ProjectionOptions projection;  // the viewer's starting projection
+    ProjectionOptions projection;     // the viewer's starting projection
+    std::optional<std::string> view;  // --view: a view file to open (or give it as the scene)
+    TypedOptions typed;               // what was typed, over a view's settings
 };
 
 void add_view_command(CLI::App& app, ViewCommandOptions& options);

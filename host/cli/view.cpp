@@ -14,6 +14,7 @@
 #include "image/hdr_io.hpp"
 #include "render/renderer.hpp"
 #include "scene/modules.hpp"
+#include "view_options.hpp"
 
 namespace fgr {
 namespace {
@@ -35,7 +36,7 @@ void add_view_command(CLI::App& app, ViewCommandOptions& options) {
     viewer::ViewerOptions& viewer = options.viewer;
     view->add_option("scene", viewer.scene,
                      "scene to open first, by id or as a scene file: .so, .ifs.json, "
-                     ".formula.json, .cl (default: mandelbulb)");
+                     ".formula.json, .cl (default: mandelbulb); or a view file (.fgrview.json)");
     view->add_option("--width", viewer.width, "window width in pixels (default 1280)")
         ->check(CLI::Range(64, kMaxImageSide));
     view->add_option("--height", viewer.height, "window height in pixels (default 720)")
@@ -49,7 +50,7 @@ void add_view_command(CLI::App& app, ViewCommandOptions& options) {
         ->check(CLI::Range(5.0, 1000.0));
     view->add_option("--samples", viewer.sample_cap,
                      "samples per pixel accumulated when still and for screenshots (default 16)")
-        ->check(CLI::Range(1, 1024));
+        ->check(CLI::Range(1, viewer::kMaxSampleCap));
     view->add_option("--set", viewer.assignments, "set a parameter of the first scene: id=value")
         ->allow_extra_args(false);
     view->add_option_function<std::string>(
@@ -79,10 +80,18 @@ void add_view_command(CLI::App& app, ViewCommandOptions& options) {
                          "while the view is finer than float resolves (flying in deep), per frame");
     add_device_options(view, viewer.device, viewer.packet_width);
     add_mode_options(view, options.mode);
+    view->add_option("--view", options.view,
+                     "open a view: a .fgrview.json file (as Ctrl+S saves it) or an image fgr "
+                     "wrote (it carries its view): its scene, camera, parameters, effects, mode "
+                     "and settings; any option typed overrides the view's");
+    record_typed_options(view, options.typed);
 }
 
 int command_view(ViewCommandOptions& options) {
     viewer::ViewerOptions& viewer = options.viewer;
+    if (options.view || is_view_file_name(viewer.scene)) {
+        apply_view(options, load_view_argument(options.view.value_or(viewer.scene)));
+    }
     if (!options.preset.empty()) {
         std::tie(viewer.width, viewer.height) = window_presets().at(options.preset);
     }

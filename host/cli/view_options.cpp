@@ -5,6 +5,8 @@
 #include <fmt/format.h>
 #include <spdlog/spdlog.h>
 
+#include <algorithm>
+
 #include "image/embedded_view.hpp"
 #include "render/sample_budget.hpp"
 #include "scene/effects.hpp"
@@ -24,19 +26,16 @@ std::string effect_changes_of(const ViewFile& view, const std::string& typed) {
     return changes;
 }
 
-void apply_camera(RenderOptions& options, const ViewFile& view) {
-    // A named camera or a camera path typed replaces the file's camera altogether.
-    if (options.camera || options.camera_path) return;
+// The view's camera under --eye, --target, --up and --fov, each of which replaces the view's.
+void apply_camera(ViewOverrideText& text, const ViewFile& view) {
     const CameraView& camera = view.camera;
-    ViewOverrideText& text = options.view_override;
     if (!text.eye) text.eye = vector_text(camera.position.x, camera.position.y, camera.position.z);
     if (!text.target) text.target = vector_text(camera.target.x, camera.target.y, camera.target.z);
     if (!text.up) text.up = vector_text(camera.up.x, camera.up.y, camera.up.z);
     if (!text.fov) text.fov = fmt::format("{}", camera.fov_degrees);
 }
 
-void apply_projection(RenderOptions& options, const ViewFile& view) {
-    ProjectionOptions& projection = options.projection;
+void apply_projection(ProjectionOptions& projection, const ViewFile& view) {
     if (projection.projection || projection.stereo) return;  // a projection typed is the user's
     projection.projection = projection_name(view.projection.kind);
     if (view.projection.kind == ProjectionKind::Fisheye && !projection.fisheye_fov) {
@@ -48,7 +47,11 @@ void apply_projection(RenderOptions& options, const ViewFile& view) {
     }
 }
 
-void apply_path(ModeOptions& mode, const ViewPathChoices& path, const TypedOptions& typed) {
+// The view's mode and path tracer's choices under those typed.
+void apply_mode(ModeOptions& mode, const ViewFile& view, const TypedOptions& typed) {
+    if (!typed.has("mode")) mode.mode = std::string(render_mode_name(view.mode));
+    if (!view.path) return;
+    const ViewPathChoices& path = *view.path;
     if (!typed.has("seed")) mode.seed = path.seed;
     if (!typed.has("bounces")) mode.bounces = path.bounces;
     if (!typed.has("roulette-depth")) mode.roulette_depth = path.roulette_depth;
@@ -64,6 +67,17 @@ void apply_path(ModeOptions& mode, const ViewPathChoices& path, const TypedOptio
     if (!typed.has("turbidity")) mode.turbidity = path.turbidity;
     if (!typed.has("sun-elevation")) mode.sun_elevation = path.sun_elevation;
     if (!typed.has("sun-azimuth")) mode.sun_azimuth = path.sun_azimuth;
+}
+
+// The view's parameters as --set takes them, then those typed, which so win.
+std::vector<std::string> assignments_of(const ViewFile& view,
+                                        const std::vector<std::string>& typed) {
+    std::vector<std::string> assignments;
+    for (const ViewParameter& parameter : view.parameters) {
+        assignments.push_back(parameter_assignment(parameter));
+    }
+    assignments.insert(assignments.end(), typed.begin(), typed.end());
+    return assignments;
 }
 
 }  // namespace
@@ -131,20 +145,33 @@ void apply_view(RenderOptions& options, const ViewFile& view) {
     if (!typed.has("alpha")) options.alpha = view.alpha;
     if (!typed.has("aov")) options.aovs = view.layers;
     if (!typed.has("spp")) options.samples = view.samples;
-    if (!typed.has("mode")) options.mode.mode = std::string(render_mode_name(view.mode));
+    apply_mode(options.mode, view, typed);
     if (!typed.has("precision")) options.precision = view.precision;
     if (!typed.has("prepass")) options.prepass = view.prepass;
     options.effect_changes = effect_changes_of(view, options.effect_changes);
-    std::vector<std::string> assignments;
-    for (const ViewParameter& parameter : view.parameters) {
-        assignments.push_back(parameter_assignment(parameter));
+    options.assignments = assignments_of(view, options.assignments);
+    // A named camera or a camera path typed replaces the file's camera altogether.
+    if (!options.camera && !options.camera_path) apply_camera(options.view_override, view);
+    apply_projection(options.projection, view);
+}
+
+void apply_view(ViewCommandOptions& options, const ViewFile& view) {
+    const TypedOptions& typed = options.typed;
+    viewer::ViewerOptions& viewer = options.viewer;
+    if (viewer.scene.empty() || is_view_file_name(viewer.scene)) {
+        viewer.scene = view.scene_file.empty() ? view.scene_id : view.scene_file;
     }
-    // The file's values first, so that a --set typed wins.
-    assignments.insert(assignments.end(), options.assignments.begin(), options.assignments.end());
-    options.assignments = std::move(assignments);
-    apply_camera(options, view);
-    apply_projection(options, view);
-    if (view.path) apply_path(options.mode, *view.path, typed);
+    // The view's samples are what F12 renders with, as when the viewer saved it.
+    if (!typed.has("samples")) {
+        viewer.sample_cap = std::clamp(view.samples, 1, viewer::kMaxSampleCap);
+    }
+    apply_mode(options.mode, view, typed);
+    if (!typed.has("precision")) viewer.precision = view.precision;
+    viewer.effect_changes = effect_changes_of(view, viewer.effect_changes);
+    viewer.assignments = assignments_of(view, viewer.assignments);
+    apply_camera(options.view_override, view);
+    apply_projection(options.projection, view);
+    viewer.opened_view = view;
 }
 
 void warn_if_scene_changed(const ViewFile& view, const Scene& scene) {

@@ -30,6 +30,12 @@ ViewFile load_view_argument(const std::string& argument);
 // and projection.
 void apply_view(RenderOptions& options, const ViewFile& view);
 
+// `fgr view VIEW` and `fgr view --view VIEW`: the viewer opens the view's scene with its camera
+// (--eye, --target, --up and --fov each replace the view's), parameters (then --set), effects
+// (then --effects), mode and path tracer's settings, projection, precision and samples (the sample
+// cap, what F12 renders with), each unless typed; the window keeps its own size.
+void apply_view(ViewCommandOptions& options, const ViewFile& view);
+
 // Warns when `scene` is not the one the view was saved with (another id, or changed since).
 void warn_if_scene_changed(const ViewFile& view, const Scene& scene);
 

@@ -587,6 +587,31 @@ EnvironmentChoice parse_environment(std::string_view text) {
     return choice;
 }
 
+std::string environment_argument(const EnvironmentChoice& choice) {
+    switch (choice.kind) {
+        case EnvironmentKind::Sky:
+            return "sky";
+        case EnvironmentKind::Studio:
+            return "studio";
+        case EnvironmentKind::Uniform: {
+            const glm::vec3 radiance = choice.radiance;
+            if (radiance == glm::vec3(1.0f)) return "uniform";
+            if (radiance.x == radiance.y && radiance.y == radiance.z) {
+                return fmt::format("uniform:{}", radiance.x);
+            }
+            return fmt::format("uniform:{},{},{}", radiance.x, radiance.y, radiance.z);
+        }
+        case EnvironmentKind::File:
+            break;
+    }
+    const std::string path = choice.file.string();
+    if (!path.empty() && choice.file.is_relative() &&
+        parse_environment(path).kind != EnvironmentKind::File) {
+        return "./" + path;
+    }
+    return path;
+}
+
 std::shared_ptr<const PreparedEnvironment> prepare_environment(const EnvironmentChoice& choice,
                                                                const Scene& scene) {
     if (!std::isfinite(choice.intensity) || choice.intensity < 0.0f) {

@@ -163,6 +163,13 @@ struct EnvironmentChoice {
 // "uniform:R,G,B", or else the path of an .hdr or .exr file. Throws std::invalid_argument.
 EnvironmentChoice parse_environment(std::string_view text);
 
+// `--environment`'s value for `choice`'s kind, radiance or file, which parse_environment reads
+// back to the same: "sky", "studio", "uniform" (radiance 1), "uniform:V", "uniform:R,G,B" (the
+// shortest decimals that give back each float), or the file's path ("./" before a relative one
+// that would read as another kind). Its other settings (rotation, intensity, the sky's) are
+// options of their own.
+std::string environment_argument(const EnvironmentChoice& choice);
+
 // An environment ready to render with: its importance-sampling tables and, for the sky, its sun
 // (a directional light with a disc, in fgr's z-up world), which takes the place of the scene's
 // key light (its first directional light) while the scene's other lights still shine.

@@ -620,4 +620,60 @@ std::string view_summary(const ViewFile& view) {
     return text;
 }
 
+ViewPathChoices path_choices_of(const PathSettings& settings,
+                                const EnvironmentChoice& environment) {
+    ViewPathChoices path;
+    path.seed = settings.seed;
+    path.bounces = settings.max_bounces;
+    path.roulette_depth = settings.roulette_depth;
+    path.radiance_clamp = settings.radiance_clamp;
+    path.light_sampling = settings.light_sampling;
+    path.mis = settings.mis;
+    path.scene_lights = settings.scene_lights;
+    path.environment = environment_argument(environment);
+    path.environment_rotation = environment.rotation_degrees;
+    path.environment_intensity = environment.intensity;
+    if (environment.kind == EnvironmentKind::Sky) {
+        if (environment.sky.turbidity != SkySettings{}.turbidity) {
+            path.turbidity = environment.sky.turbidity;
+        }
+        if (!environment.sun_from_scene) {
+            path.sun_elevation = environment.sky.sun_elevation_degrees;
+            path.sun_azimuth = environment.sky.sun_azimuth_degrees;
+        }
+    }
+    return path;
+}
+
+PathSettings path_settings_of(const ViewPathChoices& path) {
+    PathSettings settings;
+    settings.max_bounces = path.bounces;
+    settings.roulette_depth = path.roulette_depth;
+    settings.radiance_clamp = path.radiance_clamp;
+    settings.light_sampling = path.light_sampling;
+    settings.mis = path.mis;
+    settings.scene_lights = path.scene_lights;
+    settings.seed = path.seed;
+    check_path_settings(settings);
+    return settings;
+}
+
+EnvironmentChoice environment_choice_of(const ViewPathChoices& path) {
+    EnvironmentChoice choice = parse_environment(path.environment);
+    choice.rotation_degrees = path.environment_rotation;
+    choice.intensity = path.environment_intensity;
+    if (path.turbidity) choice.sky.turbidity = *path.turbidity;
+    if (path.sun_elevation || path.sun_azimuth) {
+        choice.sun_from_scene = false;
+        if (path.sun_elevation) choice.sky.sun_elevation_degrees = *path.sun_elevation;
+        if (path.sun_azimuth) choice.sky.sun_azimuth_degrees = *path.sun_azimuth;
+    }
+    if (choice.kind != EnvironmentKind::Sky &&
+        (path.turbidity || path.sun_elevation || path.sun_azimuth)) {
+        throw std::invalid_argument(
+            "path.turbidity, path.sun_elevation and path.sun_azimuth need the environment sky");
+    }
+    return choice;
+}
+
 }  // namespace fgr

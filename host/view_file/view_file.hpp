@@ -15,6 +15,8 @@
 
 #include "camera/projection.hpp"
 #include "camera/view.hpp"
+#include "render/environment.hpp"
+#include "render/path_settings.hpp"
 #include "render/precision.hpp"
 #include "scene/render_mode.hpp"
 #include "scene/scene.hpp"
@@ -107,6 +109,16 @@ bool is_view_file_name(const std::filesystem::path& file);
 // One line when `scene` is not the scene the view was saved with (its fingerprint differs): the
 // image may differ from the one the view was saved from. "" when it matches.
 std::string scene_change_warning(const ViewFile& view, const Scene& scene);
+
+// The path tracer's choices of a render: its settings and what lights it (the environment as
+// --environment names it; the sky's turbidity and sun only where they are not the defaults: the
+// turbidity, and the sun when it does not follow the scene's key light).
+ViewPathChoices path_choices_of(const PathSettings& settings, const EnvironmentChoice& environment);
+// And back, as `fgr render` reads them: the settings without an environment (std::invalid_argument
+// for values the path tracer refuses), and the environment (std::invalid_argument for a bad
+// --environment text, or the sky's settings given for another environment).
+PathSettings path_settings_of(const ViewPathChoices& path);
+EnvironmentChoice environment_choice_of(const ViewPathChoices& path);
 
 // A few lines for people: the scene, size, camera, mode and what differs from the defaults
 // (`fgr info FILE`).

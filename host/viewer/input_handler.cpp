@@ -32,9 +32,9 @@ std::optional<ViewerCommand> command_for_key(SDL_Scancode key, bool ctrl) {
         case SDL_SCANCODE_P:
             return ViewerCommand::TogglePlayback;
         case SDL_SCANCODE_K:
-            return ViewerCommand::RecordKeyframe;
+            return ctrl ? ViewerCommand::SaveRecordedPath : ViewerCommand::RecordKeyframe;
         case SDL_SCANCODE_S:  // without Ctrl, S flies backwards
-            if (ctrl) return ViewerCommand::SaveRecordedPath;
+            if (ctrl) return ViewerCommand::SaveView;
             return std::nullopt;
         case SDL_SCANCODE_F12:
             return ViewerCommand::Screenshot;
@@ -127,6 +127,7 @@ void InputHandler::handle_key_down(SDL_Scancode key, bool repeat) {
 
 void InputHandler::fly(double dt, float de_at_camera) {
     const auto held = [&](SDL_Scancode key) { return held_keys_.count(key) ? 1.0f : 0.0f; };
+    if (held(SDL_SCANCODE_LCTRL) + held(SDL_SCANCODE_RCTRL) > 0.0f) return;
     const glm::vec3 local(held(SDL_SCANCODE_D) - held(SDL_SCANCODE_A),
                           held(SDL_SCANCODE_W) - held(SDL_SCANCODE_S),
                           held(SDL_SCANCODE_E) - held(SDL_SCANCODE_Q));

@@ -24,6 +24,7 @@ enum class ViewerCommand {
     RecordKeyframe,
     SaveRecordedPath,
     Screenshot,
+    SaveView,
     ToggleHelp,
     TogglePanel,
     ToggleFullscreen,
@@ -48,8 +49,9 @@ public:
 
     // Hands the window's pending events to ImGui, then acts on them; whether there were any.
     bool pump_events();
-    // Flies the camera `dt` seconds by the held keys (W A S D Q E; Shift: faster), at a speed that
-    // follows the distance to the surface, `de_at_camera` (negative while unknown).
+    // Flies the camera `dt` seconds by the held keys (W A S D Q E; Shift: faster; not while Ctrl is
+    // held, so that Ctrl+S does not fly backwards), at a speed that follows the distance to the
+    // surface, `de_at_camera` (negative while unknown).
     void fly(double dt, float de_at_camera);
 
     float speed_factor() const { return speed_factor_; }

@@ -7,8 +7,10 @@
 #include <cmath>
 #include <glm/geometric.hpp>
 
+#include "output/still_image.hpp"
 #include "render/sample_budget.hpp"
 #include "scene/parameters.hpp"
+#include "viewer/view_still.hpp"
 
 namespace fgr::viewer {
 namespace {
@@ -382,29 +384,32 @@ void RenderWorker::refine(Renderer& renderer, const ViewState& state, int sample
 }
 
 void RenderWorker::take_screenshot(const ScreenshotRequest& request) {
-    const ViewState& state = request.state;
-    Renderer* renderer = choose_renderer(state);
-    if (renderer == nullptr) {
-        const std::string message =
-            fmt::format("screenshot not taken: the kernel for this view did not build");
+    const Scene& scene = *request.scene;
+    const ViewFile& view = request.view;
+    const auto not_taken = [this](const std::string& reason) {
+        const std::string message = fmt::format("screenshot not taken: {}", reason);
         spdlog::error("{}", message);
         post_message(message);
-        return;
-    }
-    spdlog::info("screenshot: rendering {}x{} at {} samples per pixel", state.width, state.height,
-                 request.samples);
-    FrameRequest frame_request_full = frame_request(state, state.width, state.height);
-    frame_request_full.samples = request.samples;
-    const Frame frame = renderer->render(frame_request_full);
+    };
+    constexpr const char* kNoKernel = "the kernel for this view did not build";
+    spdlog::info("screenshot: rendering {}x{} at {} samples per pixel", view.width, view.height,
+                 view.samples);
     try {
-        write_png(request.file, frame.image, request.embedded_view);
+        // The still of the view as `fgr render` renders the view file: the same request and
+        // settings, float or double chosen for the view alike, and the same file writer.
+        const ViewStill still = still_of_view(scene, view, packet_width_);
+        if (failures_.count({&scene, still.settings.effects, false, still.settings.mode})) {
+            return not_taken(kNoKernel);  // the view's own build failed: no second try
+        }
+        const Frame frame = render_still(scene, still.request, device_, cache_, still.settings);
+        write_still(request.file, frame, still.output);
+        spdlog::info("screenshot: wrote {} ({}x{}, {} spp, {:.0f} ms)", request.file.string(),
+                     view.width, view.height, still.request.samples, frame.render_ms);
+    } catch (const KernelBuildError&) {
+        return not_taken(kNoKernel);
     } catch (const std::exception& error) {
-        spdlog::error("screenshot: {}", error.what());
-        post_message(fmt::format("screenshot failed: {}", error.what()));
-        return;
+        return not_taken(error.what());
     }
-    spdlog::info("screenshot: wrote {} ({}x{}, {} spp, {:.0f} ms)", request.file.string(),
-                 state.width, state.height, request.samples, frame.render_ms);
     post_message(fmt::format("wrote {}", request.file.string()));
 }
 

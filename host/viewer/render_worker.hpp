@@ -3,7 +3,7 @@
 // finished frames; it never waits on OpenCL. The worker builds kernels (keeping the last image on
 // screen meanwhile), renders previews at a reduced resolution while the view changes, refines the
 // still view sample by sample (the path tracer's for as long as the view stands still), renders
-// screenshots at full quality, and reports the distance
+// screenshots as `fgr render` renders their view, and reports the distance
 // estimate at the camera for the fly speed. It picks float or double lanes per view (see
 // precision.hpp), building the double kernel the first time a deep view needs it.
 
@@ -30,6 +30,7 @@
 #include "render/renderer.hpp"
 #include "scene/render_mode.hpp"
 #include "scene/scene.hpp"
+#include "view_file/view_file.hpp"
 #include "viewer/adaptive_quality.hpp"
 
 namespace fgr::viewer {
@@ -76,12 +77,12 @@ struct WorkerStatus {
     int pending_reloads = 0;
 };
 
+// A screenshot is the still of a view file (view_still.hpp), rendered and written as `fgr render`
+// renders that file.
 struct ScreenshotRequest {
-    ViewState state;  // rendered at state.width x state.height
-    int samples = 16;
-    std::filesystem::path file;
-    // The document the PNG carries (image/embedded_view.hpp: the view it shows); "": none.
-    std::string embedded_view{};
+    std::shared_ptr<const Scene> scene;  // the version shown when it was asked for
+    ViewFile view;                       // everything that decides the image, its size too
+    std::filesystem::path file;  // which carries the view (image/embedded_view.hpp)
 };
 
 // A new version of a scene (a rebuilt plugin, an edited .cl file) to try before it replaces the

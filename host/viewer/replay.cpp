@@ -56,6 +56,7 @@ constexpr std::array kEventSyntax{
     EventSyntax{"hybrid_move", ReplayAction::HybridMove, 2, 2, "hybrid_move N OFFSET"},
     EventSyntax{"hybrid_repeat", ReplayAction::HybridRepeat, 2, 2, "hybrid_repeat N COUNT"},
     EventSyntax{"hybrid_save", ReplayAction::HybridSave, 1, 1, "hybrid_save ID"},
+    EventSyntax{"set", ReplayAction::SetParameter, 1, 1, "set ID=VALUE"},
 };
 
 // Places in a hybrid's sequence and repeat counts a script may name (kFormulaMaxSlots and
@@ -180,6 +181,14 @@ void read_arguments(const LineParser& parser, const std::vector<std::string>& ar
         case ReplayAction::HybridSave:
             event.text = args[0];
             break;
+        case ReplayAction::SetParameter: {
+            const size_t equals = args[0].find('=');
+            if (equals == 0 || equals == std::string::npos || equals + 1 == args[0].size()) {
+                parser.fail(fmt::format("set needs ID=VALUE, got '{}'", args[0]));
+            }
+            event.text = args[0];
+            break;
+        }
         case ReplayAction::BrowserPick:
             event.count = parser.integer(args[0], "N", 1, kMaxPick) - 1;
             break;

@@ -28,6 +28,7 @@
 //   hybrid_save ID        save the current formula scene as ID.formula.json in the output folder
 //                         (a hybrid edit rebuilds the scene like a reload: wait_reload waits
 //                         for it)
+//   set ID=VALUE          set a parameter of the scene shown, as --set does (the panel's sliders)
 //
 // KEY is an SDL key name: W, A, F12, PageDown, Escape, "Left Shift" is written Left_Shift
 // (underscores stand for spaces).
@@ -58,7 +59,8 @@ enum class ReplayAction {
     HybridRemove,
     HybridMove,
     HybridRepeat,
-    HybridSave
+    HybridSave,
+    SetParameter
 };
 
 struct ReplayEvent {
@@ -70,7 +72,7 @@ struct ReplayEvent {
     int x = 0, y = 0;           // mouse_down / mouse_up position; mouse_move: DX DY; resize: W H
     int wheel = 0;              // wheel steps
     std::string text;           // browser_search: the text; hybrid_add: the formula's name;
-                                // hybrid_save: the new scene's id
+                                // hybrid_save: the new scene's id; set: ID=VALUE
     int slot = 0;               // hybrid edits: the formula's place, 0 the first
     int count = 0;              // browser_pick: the scene, 0 the first; hybrid_move: the offset;
                                 // hybrid_repeat: the repeat count

@@ -114,6 +114,9 @@ void ReplayDriver::push(const ReplayEvent& event) {
         case ReplayAction::HybridSave:
             host_.editor_event(event);
             break;
+        case ReplayAction::SetParameter:
+            host_.set_parameter(event.text);
+            break;
     }
 }
 

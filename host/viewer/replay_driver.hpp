@@ -27,6 +27,7 @@ struct ReplayHost {
     std::function<void()> quit;
     std::function<void(const ReplayEvent&)> browser_event;  // browser_search, browser_pick
     std::function<void(const ReplayEvent&)> editor_event;   // hybrid_*
+    std::function<void(const std::string& assignment)> set_parameter;  // set ID=VALUE
 };
 
 class ReplayDriver {

@@ -13,8 +13,12 @@
 #include "render/path_settings.hpp"
 #include "render/precision.hpp"
 #include "scene/render_mode.hpp"
+#include "view_file/view_file.hpp"
 
 namespace fgr::viewer {
+
+// The most samples per pixel the viewer accumulates on a still view and renders F12 with.
+inline constexpr int kMaxSampleCap = 1024;
 
 struct ViewerOptions {
     // Id or scene file path (scene/scene_argument.hpp) to open first; empty: mandelbulb, else the
@@ -24,7 +28,7 @@ struct ViewerOptions {
     int height = 720;
     bool fullscreen = false;
     double target_ms = 33.0;  // frame time to hold while the view changes
-    int sample_cap = 16;      // samples per pixel accumulated while still, and for F12
+    int sample_cap = 16;      // samples per pixel while still; F12's and saved views' too
     int device = -1;          // OpenCL device index, -1: first GPU, else first device
     int packet_width = 0;     // 0: the device's preference
     Precision precision = Precision::Auto;  // float, double or per view; the panel changes it
@@ -37,7 +41,10 @@ struct ViewerOptions {
     std::string path_name;  // --path: the first scene's path P plays (default: its first)
     std::optional<ViewOverride> start_view;  // --eye, --target, --up, --fov: the first view
     Projection projection;                   // --projection and its settings; the panel changes it
-    std::filesystem::path output_dir = ".";  // screenshots and saved camera paths
+    std::filesystem::path output_dir = ".";  // screenshots, saved views and camera paths
+    // `fgr view VIEW.fgrview.json`: the view opened, whose settings are in the options above; the
+    // viewer says when its scene is another or has changed since the view was saved.
+    std::optional<ViewFile> opened_view;
     std::optional<std::filesystem::path> replay;  // scripted input (see replay.hpp)
     std::optional<double> exit_after_seconds;
     bool print_stats = false;  // frame-time statistics and the final camera on stdout
@@ -56,7 +63,7 @@ struct ViewerModule {
     int version;  // kViewerModuleVersion of the tree the module was built from
     int (*run)(const ViewerOptions& options);
 };
-inline constexpr int kViewerModuleVersion = 1;
+inline constexpr int kViewerModuleVersion = 2;
 inline constexpr const char* kViewerModuleName = "libfgr_viewer.so";
 inline constexpr const char* kViewerModuleEntry = "fgr_viewer_module";
 

@@ -18,6 +18,8 @@
 #include "scene/scene_argument.hpp"
 #include "scene/scene_source.hpp"
 #include "util/timing.hpp"
+#include "view_file/view_file.hpp"
+#include "viewer/view_still.hpp"
 #include "viewer/viewer_util.hpp"
 
 namespace fgr::viewer {
@@ -62,6 +64,16 @@ void ViewerApp::prepare_first_scene() {
         throw UsageError(fmt::format("unknown scene '{}' (available: {})", options_.scene, ids));
     }
     const Scene& scene = *scenes_.at(index.value_or(0));
+    if (options_.opened_view) {
+        const ViewFile& view = *options_.opened_view;
+        if (view.scene_id != scene.id) {
+            spdlog::warn("the view was saved in scene '{}': showing it in '{}'", view.scene_id,
+                         scene.id);
+        } else if (const std::string warning = scene_change_warning(view, scene);
+                   !warning.empty()) {
+            spdlog::warn("{}", warning);
+        }
+    }
     SceneSession first = default_session(scene);
     if (options_.start_view) {
         try {
@@ -164,7 +176,7 @@ void ViewerApp::finish() {
 
 // --- The view ---------------------------------------------------------------------------------
 
-void ViewerApp::submit_view() {
+ViewState ViewerApp::current_state() {
     const auto [width, height] = window_.drawable_size();
     ViewState state;
     state.scene = scenes_.current_ptr();
@@ -183,7 +195,11 @@ void ViewerApp::submit_view() {
     }
     state.width = std::clamp(width, 1, kMaxImageSide);
     state.height = std::clamp(height, 1, kMaxImageSide);
-    worker_->submit(view_.track(std::move(state), seconds_since(start_), paths_.playing()));
+    return state;
+}
+
+void ViewerApp::submit_view() {
+    worker_->submit(view_.track(current_state(), seconds_since(start_), paths_.playing()));
 }
 
 void ViewerApp::receive_frame() {
@@ -192,7 +208,6 @@ void ViewerApp::receive_frame() {
     texture_->upload(frame->image);
     redraws_pending_ = std::max(redraws_pending_, 1);
     stats_.add_shown_frame(*frame);
-    frame->image.rgb.clear();  // the texture has it
     shown_ = std::move(frame);
 }
 
@@ -262,6 +277,7 @@ PanelHost ViewerApp::panel_host() {
         .switch_scene = [this](int index) { switch_scene(index); },
         .reset_camera = [this](int camera_index) { reset_camera(camera_index); },
         .take_screenshot = [this] { take_screenshot(); },
+        .save_view = [this] { save_view(); },
         .quality_changed = [this] { worker_->set_quality(choices_.quality); },
         .environment_changed = [this] { environments_.clear(); },
         .fly_speed = [this] { return input_.speed_factor(); },
@@ -283,6 +299,7 @@ ReplayHost ViewerApp::replay_host() {
         .quit = [this] { quit_ = true; },
         .browser_event = [this](const ReplayEvent& event) { browser_.apply_replay_event(event); },
         .editor_event = [this](const ReplayEvent& event) { hybrid_.apply_replay_event(event); },
+        .set_parameter = [this](const std::string& assignment) { set_parameter(assignment); },
     };
 }
 
@@ -317,6 +334,9 @@ void ViewerApp::run_command(ViewerCommand command) {
         case ViewerCommand::Screenshot:
             take_screenshot();
             break;
+        case ViewerCommand::SaveView:
+            save_view();
+            break;
         case ViewerCommand::ToggleHelp:
             panel_.toggle_help();
             break;
@@ -347,21 +367,56 @@ void ViewerApp::reset_camera(int camera_index) {
 }
 
 void ViewerApp::take_screenshot() {
+    // The still of the view Ctrl+S would save, rendered as `fgr render` renders that view.
+    const ViewState state = current_state();
     ScreenshotRequest request;
-    request.state = view_.last();
-    request.state.interactive = false;
-    request.samples = choices_.quality.sample_cap;
-    const std::string stem = fmt::format("fgr-{}-{}", scenes_.current().id, file_timestamp());
-    std::filesystem::path file = options_.output_dir / (stem + ".png");
-    // Two screenshots within a second (the first may not be written yet) must not collide.
-    for (int n = 2; std::filesystem::exists(file) || screenshot_files_.count(file); ++n) {
-        file = options_.output_dir / fmt::format("{}-{}.png", stem, n);
-    }
-    screenshot_files_.insert(file);
-    request.file = file;
-    spdlog::info("screenshot requested: {}", file.string());
-    add_message(fmt::format("rendering {} ...", file.filename().string()));
+    request.scene = state.scene;
+    request.view = view_of_state(state, choices_.environment, choices_.quality.sample_cap);
+    request.file = unused_file(options_.output_dir,
+                               fmt::format("fgr-{}-{}", state.scene->id, file_timestamp()), ".png",
+                               written_files_);
+    written_files_.insert(request.file);
+    spdlog::info("screenshot requested: {}", request.file.string());
+    add_message(fmt::format("rendering {} ...", request.file.filename().string()));
     worker_->request_screenshot(std::move(request));
+}
+
+void ViewerApp::save_view() {
+    const ViewState state = current_state();
+    const ViewFile view = view_of_state(state, choices_.environment, choices_.quality.sample_cap);
+    const std::filesystem::path file =
+        unused_file(options_.output_dir, fmt::format("fgr-{}-{}", view.scene_id, file_timestamp()),
+                    kViewFileSuffix, written_files_);
+    written_files_.insert(file);
+    try {
+        write_view_file(file, view);
+    } catch (const std::exception& error) {
+        spdlog::error("view not saved: {}", error.what());
+        add_message(fmt::format("view not saved: {}", error.what()));
+        return;
+    }
+    // The thumbnail shows the frame on screen, whatever its refinement; without one there is none.
+    std::string thumbnail;
+    if (shown_ && !shown_->image.rgb.empty()) {
+        const std::filesystem::path image = view_thumbnail_file(file);
+        try {
+            write_png(image, shrunk_image(shown_->image, kViewThumbnailWidth));
+            thumbnail = fmt::format(" and {}", image.filename().string());
+        } catch (const std::exception& error) {
+            spdlog::warn("view thumbnail not written: {}", error.what());
+        }
+    }
+    spdlog::info("view saved: {}{}", file.string(), thumbnail);
+    add_message(fmt::format("saved view {}{}", file.filename().string(), thumbnail));
+}
+
+void ViewerApp::set_parameter(const std::string& assignment) {
+    try {
+        set_param_from_text(scenes_.current(), scenes_.session().params, assignment);
+    } catch (const std::exception& error) {
+        spdlog::error("{}", error.what());
+        add_message(error.what());
+    }
 }
 
 void ViewerApp::adopt_scene(size_t index, const std::shared_ptr<const Scene>& scene) {
@@ -389,10 +444,11 @@ void ViewerApp::print_stats() {
         fmt::print("hybrid_edits {}\n", hybrid_.edits_adopted());
     }
     stats_.print();
-    fmt::print("camera_position {:.6g} {:.6g} {:.6g}\n", camera.position.x, camera.position.y,
-               camera.position.z);
-    fmt::print("camera_forward {:.6g} {:.6g} {:.6g}\n", camera.forward.x, camera.forward.y,
-               camera.forward.z);
+    // As `fgr render` takes it, every number read back to the same bits.
+    const CameraView view = camera.to_view();
+    fmt::print("camera --eye {},{},{} --target {},{},{} --up {},{},{} --fov {}\n", view.position.x,
+               view.position.y, view.position.z, view.target.x, view.target.y, view.target.z,
+               view.up.x, view.up.y, view.up.z, view.fov_degrees);
     if (shown_) {
         fmt::print("last_frame scale {:.3f} samples {} precision {}\n", shown_->scale,
                    shown_->samples, precision_label(choices_.precision, shown_->double_precision));

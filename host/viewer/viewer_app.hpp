@@ -48,6 +48,8 @@ private:
     void draw_frame();
     void finish();
 
+    // Everything that decides the image as the viewer shows it now, at the window's size.
+    ViewState current_state();
     void submit_view();
     void receive_frame();
     // The render thread has refined the view, at the size a replayed resize asked for.
@@ -65,6 +67,10 @@ private:
     void switch_scene(int index);
     void reset_camera(int camera_index);
     void take_screenshot();
+    // Writes the view as fgr-SCENE-TIME.fgrview.json with a thumbnail beside it (view_still.hpp).
+    void save_view();
+    // A replayed `set ID=VALUE`: the parameter of the scene shown, as --set takes it.
+    void set_parameter(const std::string& assignment);
     // A new version of scene `index` (reloaded, or an edit of its sequence) takes its place.
     void adopt_scene(size_t index, const std::shared_ptr<const Scene>& scene);
     void add_message(std::string message);
@@ -93,9 +99,9 @@ private:
     ViewTracker view_;
     WorkerStatus status_;
     bool was_idle_ = false;
-    std::optional<DisplayFrame> shown_;  // image data lives in the texture; this keeps its facts
+    std::optional<DisplayFrame> shown_;  // the frame on screen (a saved view's thumbnail)
     std::deque<std::string> messages_;
-    std::set<std::filesystem::path> screenshot_files_;
+    std::set<std::filesystem::path> written_files_;  // screenshots and views asked for
 
     ViewerStatistics stats_;
     // The window is drawn again only when something may have changed it (an input event, a new

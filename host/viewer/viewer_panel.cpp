@@ -38,7 +38,8 @@ const std::pair<const char*, const char*> kKeyBindings[] = {
     {"PageUp / PageDown", "previous / next scene"},
     {"P", "play / stop the selected camera path"},
     {"K", "record the current view as a keyframe"},
-    {"Ctrl+S", "save the recorded path as JSON"},
+    {"Ctrl+K", "save the recorded path as JSON"},
+    {"Ctrl+S", "save the view (.fgrview.json, with a thumbnail): `fgr render FILE` renders it"},
     {"F12", "screenshot at full resolution and quality"},
     {"Tab", "show / hide the panel"},
     {"F11", "fullscreen"},
@@ -207,7 +208,7 @@ void ViewerPanel::draw_camera_section(const WorkerStatus& status) {
     ImGui::Text("recorded: %zu keyframes", current.recorded.keyframes.size());
     if (ImGui::Button("Add keyframe (K)")) paths_.record_keyframe();
     ImGui::SameLine();
-    if (ImGui::Button("Save (Ctrl+S)")) paths_.save_recorded();
+    if (ImGui::Button("Save (Ctrl+K)")) paths_.save_recorded();
     ImGui::SameLine();
     if (ImGui::Button("Clear")) current.recorded.keyframes.clear();
     float spacing = paths_.keyframe_interval();
@@ -215,6 +216,8 @@ void ViewerPanel::draw_camera_section(const WorkerStatus& status) {
         paths_.set_keyframe_interval(spacing);
     }
     if (ImGui::Button("Screenshot (F12)")) host_.take_screenshot();
+    ImGui::SameLine();
+    if (ImGui::Button("Save view (Ctrl+S)")) host_.save_view();
 }
 
 namespace {

@@ -34,6 +34,7 @@ struct PanelHost {
     std::function<void(int index)> switch_scene;
     std::function<void(int camera_index)> reset_camera;
     std::function<void()> take_screenshot;
+    std::function<void()> save_view;            // Ctrl+S: the view as a .fgrview.json file
     std::function<void()> quality_changed;      // the render thread takes the new settings
     std::function<void()> environment_changed;  // the prepared environments are stale
     std::function<float()> fly_speed;           // the factor on the flying speed

@@ -1,7 +1,7 @@
 // View files on the command line: `fgr render … --save-view V` then `fgr render V`, or
 // `fgr render --view IMAGE`, gives the same bytes in every mode; options typed override the view; a
 // scene changed since the view was saved is reported; a bad view file is one error line naming the
-// file and the key.
+// file and the key (`fgr view` too).
 
 #include <gtest/gtest.h>
 
@@ -133,7 +133,10 @@ TEST_F(ViewFileCli, BadViewFilesAreOneErrorLineNamingFileAndKey) {
     for (const std::vector<std::string>& args :
          {std::vector<std::string>{"render", "bad.fgrview.json", "-o", "x.png"},
           std::vector<std::string>{"render", "--view", "bad.fgrview.json", "-o", "x.png"},
-          std::vector<std::string>{"video", "bad.fgrview.json", "-o", "x.mp4"}}) {
+          std::vector<std::string>{"video", "bad.fgrview.json", "-o", "x.mp4"},
+          // Refused before a window would open: no display is needed.
+          std::vector<std::string>{"view", "bad.fgrview.json"},
+          std::vector<std::string>{"view", "--view", "bad.fgrview.json"}}) {
         const RunResult result = run(args);
         EXPECT_EQ(result.exit_code, 2) << result;
         EXPECT_EQ(result.err.find('\n'), result.err.size() - 1) << result;

@@ -552,6 +552,29 @@ TEST_F(EnvironmentTest, LookupReturnsTheTexelADirectionFallsIn) {
 
 // ---- Tables ----
 
+// What --environment takes and environment_argument writes read back to the same choice, floats
+// to the bit; a file named like a kind is written so that it stays a file.
+TEST(EnvironmentArgument, ReadsBackToTheSameChoice) {
+    for (const char* text : {"sky", "studio", "uniform", "uniform:0.5", "uniform:0.1,0.2,0.3",
+                             "uniform:0.33333334,1e-07,3", "/maps/hall.hdr", "maps/hall.exr"}) {
+        const EnvironmentChoice choice = parse_environment(text);
+        EXPECT_EQ(environment_argument(choice), text);
+        const EnvironmentChoice back = parse_environment(environment_argument(choice));
+        EXPECT_EQ(back.kind, choice.kind) << text;
+        EXPECT_EQ(back.radiance, choice.radiance) << text;
+        EXPECT_EQ(back.file, choice.file) << text;
+    }
+    EnvironmentChoice grey;
+    grey.kind = EnvironmentKind::Uniform;
+    grey.radiance = glm::vec3(1.0f / 3.0f);
+    EXPECT_EQ(parse_environment(environment_argument(grey)).radiance, grey.radiance);
+    EnvironmentChoice named_sky;
+    named_sky.kind = EnvironmentKind::File;
+    named_sky.file = "sky";
+    EXPECT_EQ(environment_argument(named_sky), "./sky");
+    EXPECT_EQ(parse_environment(environment_argument(named_sky)).kind, EnvironmentKind::File);
+}
+
 TEST(EnvironmentTables, RejectBadMapsInOneLine) {
     const auto message = [](const HdrImage& map) {
         try {

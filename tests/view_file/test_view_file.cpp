@@ -146,6 +146,52 @@ TEST(ViewFile, FingerprintFollowsWhatDecidesPixels) {
               std::string::npos);
 }
 
+// The path tracer's choices of a render as a view holds them, and back: the settings, and the
+// environment with the sky's own settings only where they are not the defaults.
+TEST(ViewFile, PathChoicesReadBackToTheSameSettingsAndEnvironment) {
+    PathSettings settings;
+    settings.max_bounces = 3;
+    settings.roulette_depth = 1;
+    settings.radiance_clamp = 2.5f;
+    settings.light_sampling = false;
+    settings.mis = false;
+    settings.scene_lights = false;
+    settings.seed = 11;
+    EnvironmentChoice sky;
+    sky.rotation_degrees = -45.0f;
+    sky.intensity = 0.3f;
+    const ViewPathChoices plain = path_choices_of(settings, sky);
+    EXPECT_EQ(plain.environment, "sky");
+    EXPECT_FALSE(plain.turbidity || plain.sun_elevation || plain.sun_azimuth)
+        << "the defaults are not written";
+    EXPECT_EQ(path_settings_of(plain), settings);
+    sky.sky.turbidity = 6.0f;
+    sky.sun_from_scene = false;
+    sky.sky.sun_elevation_degrees = 12.5f;
+    EnvironmentChoice studio;
+    studio.kind = EnvironmentKind::Studio;
+    studio.sky.turbidity = 9.0f;  // not the studio's: not written
+    for (const EnvironmentChoice& choice : {sky, studio}) {
+        const ViewPathChoices path = path_choices_of(settings, choice);
+        const EnvironmentChoice back = environment_choice_of(path);
+        EXPECT_EQ(back.kind, choice.kind);
+        EXPECT_EQ(back.rotation_degrees, choice.rotation_degrees);
+        EXPECT_EQ(back.intensity, choice.intensity);
+        EXPECT_EQ(back.sun_from_scene, choice.sun_from_scene);
+        if (choice.kind == EnvironmentKind::Sky) {
+            EXPECT_EQ(back.sky.turbidity, choice.sky.turbidity);
+            EXPECT_EQ(back.sky.sun_elevation_degrees, choice.sky.sun_elevation_degrees);
+            EXPECT_EQ(back.sky.sun_azimuth_degrees, choice.sky.sun_azimuth_degrees);
+        }
+    }
+    ViewPathChoices hazy_studio = path_choices_of(settings, studio);
+    hazy_studio.turbidity = 4.0f;
+    EXPECT_THROW(environment_choice_of(hazy_studio), std::invalid_argument);
+    ViewPathChoices no_bounces = plain;
+    no_bounces.bounces = -1;
+    EXPECT_THROW(path_settings_of(no_bounces), std::invalid_argument);
+}
+
 struct BadView {
     const char* name;
     const char* pointer;  // JSON pointer of the value replaced ("" for the whole document)

@@ -27,6 +27,7 @@
 #include "scene/parameters.hpp"
 #include "test_scenes.hpp"
 #include "viewer/render_worker.hpp"
+#include "viewer/view_still.hpp"
 
 namespace fgr::viewer {
 namespace {
@@ -292,16 +293,16 @@ TEST_F(RenderWorkerTest, AReloadIsBuiltBeforeItIsAcceptedAndABrokenOneIsRefused)
 TEST_F(RenderWorkerTest, ScreenshotsAreFinishedBeforeStopReturns) {
     test::TempDir dir("fgr_worker_test");
     ScreenshotRequest request;
-    request.state = state(kSphere, 120, 90, 1);
-    request.samples = 4;
+    request.scene = scenes_[kSphere];
+    request.view = view_of_state(state(kSphere, 120, 90, 1), EnvironmentChoice{}, 4);
     request.file = dir.path() / "shot.png";
-    request.embedded_view = R"({"scene":"sphere"})";
     worker_->request_screenshot(request);
     worker_->stop();
     const Image8 shot = read_png(dir.path() / "shot.png");
     EXPECT_EQ(shot.width, 120);
     EXPECT_EQ(shot.height, 90);
-    EXPECT_EQ(read_embedded_view(dir.path() / "shot.png"), request.embedded_view);
+    EXPECT_EQ(read_embedded_view(dir.path() / "shot.png"), view_file_text(request.view))
+        << "the screenshot carries its view";
     const std::vector<std::string> messages = worker_->take_messages();
     ASSERT_EQ(messages.size(), 1u);
     EXPECT_NE(messages[0].find("shot.png"), std::string::npos);

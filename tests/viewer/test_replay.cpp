@@ -191,6 +191,19 @@ TEST(ReplayParse, EmptyScriptHasNoEvents) {
     EXPECT_TRUE(parse("# nothing\n\n").empty());
 }
 
+TEST(ReplayParse, SetTakesOneParameterAssignment) {
+    const auto events = parse("0 set power=7.25\n0.5 set tint=0.1,0.2,0.3\n");
+    ASSERT_EQ(events.size(), 2u);
+    EXPECT_EQ(events[0].action, ReplayAction::SetParameter);
+    EXPECT_EQ(events[0].text, "power=7.25");
+    EXPECT_EQ(events[1].text, "tint=0.1,0.2,0.3");
+    EXPECT_EQ(parse_error("0 set power\n"), "demo.replay:1: set needs ID=VALUE, got 'power'");
+    EXPECT_EQ(parse_error("0 set =7\n"), "demo.replay:1: set needs ID=VALUE, got '=7'");
+    EXPECT_EQ(parse_error("0 set power=\n"), "demo.replay:1: set needs ID=VALUE, got 'power='");
+    EXPECT_EQ(parse_error("0 set power = 7\n"),
+              "demo.replay:1: set takes set ID=VALUE, got 3 arguments");
+}
+
 TEST(ReplayParse, UnknownEventNamesFileAndLine) {
     EXPECT_EQ(parse_error("0 key W\n# x\n1 jump\n"), "demo.replay:3: unknown event 'jump'");
     EXPECT_EQ(parse_error("0.5\n"), "demo.replay:1: expected an event after the delay '0.5'");

@@ -1,7 +1,9 @@
 // `fgr view` end to end, in a virtual X server (xvfb-run, SDL's X11 driver): replayed input moves
 // the camera and switches scenes, F12 writes a full-resolution PNG equal to `fgr render`'s image
-// of the same view, recorded paths are saved and render from the command line, a scene whose
-// kernel fails to compile is survived, and the viewer exits cleanly with its statistics.
+// of the same view, Ctrl+S saves the view and `fgr render` renders it to the screenshot's bytes,
+// `fgr view VIEW` opens it again, recorded paths are saved and render from the command line, a
+// scene whose kernel fails to compile is survived, and the viewer exits cleanly with its
+// statistics.
 #include <gtest/gtest.h>
 #include <unistd.h>
 
@@ -22,13 +24,17 @@
 #include <vector>
 
 #include "camera/camera_path_file.hpp"
+#include "camera/view_override.hpp"
 #include "child_process.hpp"
 #include "hermetic_caches.hpp"
+#include "image/embedded_view.hpp"
 #include "image/image_io.hpp"
 #include "image_compare.hpp"
 #include "scene/formulas/formulas.hpp"
 #include "test_files.hpp"
+#include "view_file/view_file.hpp"
 #include "viewer/thumbnails.hpp"
+#include "viewer/view_still.hpp"
 
 namespace fgr {
 namespace {
@@ -49,7 +55,13 @@ std::string stat_text(const std::string& out, const std::string& key);
 struct ViewerRun {
     test::RunResult result;
     std::vector<fs::path> screenshots;  // in the order they were written
+    std::vector<fs::path> views;        // saved with Ctrl+S (NAME.fgrview.json), by name
 };
+
+// Whether `file` is a saved view's thumbnail (NAME.fgrview.png), not a screenshot.
+bool is_view_thumbnail(const fs::path& file) {
+    return file.filename().string().ends_with(viewer::kViewThumbnailSuffix);
+}
 
 class ViewerTest : public ::testing::Test {
 protected:
@@ -60,6 +72,12 @@ protected:
     }
 
     // Runs `fgr view` under a fresh virtual X server with `script` as its replay file.
+    // The window is kWindowWidth x kWindowHeight and F12 renders 1 sample unless the test sets
+    // these first (samples_ 0: no --samples).
+    int window_width_ = kWindowWidth;
+    int window_height_ = kWindowHeight;
+    int samples_ = 1;
+
     ViewerRun view(const std::string& script, std::vector<std::string> extra = {},
                    const std::optional<fs::path>& plugin_path = std::nullopt,
                    int exit_after_seconds = 150) {
@@ -73,27 +91,30 @@ protected:
                                          kFgrExe.string(),
                                          "view",
                                          "--width",
-                                         std::to_string(kWindowWidth),
+                                         std::to_string(window_width_),
                                          "--height",
-                                         std::to_string(kWindowHeight),
-                                         "--samples",
-                                         "1",
+                                         std::to_string(window_height_),
                                          "--replay",
                                          "replay.txt",
                                          "--exit-after",
                                          std::to_string(exit_after_seconds),
                                          "--stats"};
+        if (samples_ > 0) args.insert(args.end(), {"--samples", std::to_string(samples_)});
         args.insert(args.end(), extra.begin(), extra.end());
         test::ChildOptions options;
         options.working_dir = dir_.path();
         options.timeout = std::chrono::seconds(200);
         options.environment["FGR_PLUGIN_PATH"] =
             plugin_path ? std::optional<std::string>(plugin_path->string()) : std::nullopt;
-        ViewerRun run{test::run_child(kXvfbRun, args, options), {}};
+        ViewerRun run{test::run_child(kXvfbRun, args, options), {}, {}};
         EXPECT_FALSE(run.result.timed_out) << run.result;
         for (const auto& entry : fs::directory_iterator(dir_.path())) {
-            if (entry.path().extension() == ".png") run.screenshots.push_back(entry.path());
+            if (entry.path().extension() == ".png" && !is_view_thumbnail(entry.path())) {
+                run.screenshots.push_back(entry.path());
+            }
+            if (is_view_file_name(entry.path())) run.views.push_back(entry.path());
         }
+        std::sort(run.views.begin(), run.views.end());
         // In the order taken. Not by name: names carry the scene and a time in whole seconds, and
         // a second shot within the same second gets "-2" appended, which sorts before ".png".
         std::sort(run.screenshots.begin(), run.screenshots.end(),
@@ -126,6 +147,10 @@ protected:
         EXPECT_GT(samples, 2) << last;
     }
 
+    void expect_saved_view_renders_to_the_screenshot(const std::string& script,
+                                                     const std::vector<std::string>& extra,
+                                                     fs::path* saved);
+
     const fs::path& dir() const { return dir_.path(); }
 
 private:
@@ -154,6 +179,23 @@ std::string stat_text(const std::string& out, const std::string& key) {
         if (line.rfind(key + " ", 0) == 0) return line.substr(key.size() + 1);
     }
     return {};
+}
+
+// The camera the viewer reports on exit (--stats): the line `camera --eye X,Y,Z --target X,Y,Z
+// --up X,Y,Z --fov DEG`, read as `fgr render` reads those options; none when it is missing or
+// incomplete.
+std::optional<CameraView> stat_camera(const std::string& out) {
+    std::istringstream words(stat_text(out, "camera"));
+    ViewOverrideText text;
+    for (std::string option, value; words >> option >> value;) {
+        if (option == "--eye") text.eye = value;
+        if (option == "--target") text.target = value;
+        if (option == "--up") text.up = value;
+        if (option == "--fov") text.fov = value;
+    }
+    const ViewOverride parsed = parse_view_override(text);
+    if (!parsed.eye || !parsed.target || !parsed.up || !parsed.fov_degrees) return std::nullopt;
+    return CameraView{*parsed.eye, *parsed.target, *parsed.up, *parsed.fov_degrees};
 }
 
 // Runs actions[i] once `directory` holds i + 1 PNG files (the viewer's screenshots), on a thread
@@ -193,19 +235,20 @@ void drop_in(const fs::path& from, const fs::path& to) {
     fs::copy_file(from, to, fs::copy_options::overwrite_existing);
 }
 
-double length(const std::vector<double>& v) {
-    return std::sqrt(v[0] * v[0] + v[1] * v[1] + v[2] * v[2]);
-}
-
 // Replay lines that record two keyframes where the camera is and save them as a camera path
-// (fgr-path-SCENE-TIME.json in the output folder): `fgr render --camera-path FILE --time 0` then
-// renders exactly the view the viewer had, with no rounding of a camera typed in again.
+// (fgr-path-SCENE-TIME.json in the output folder, Ctrl+K): `fgr render --camera-path FILE --time
+// 0` then renders exactly the view the viewer had, with no rounding of a camera typed in again.
 const char* const kSaveViewAsPath = R"(0 key K
 0 key K
 0 key_down Left_Ctrl
-0 key S
+0 key K
 0 key_up Left_Ctrl
 )";
+
+// Replay lines that save the view (Ctrl+S) `delay` seconds after the line before.
+std::string save_view_after(const std::string& delay) {
+    return delay + " key_down Left_Ctrl\n0 key S\n0 key_up Left_Ctrl\n";
+}
 
 // The one camera path the viewer saved in `directory`.
 fs::path saved_path(const fs::path& directory) {
@@ -240,12 +283,11 @@ TEST_F(ViewerTest, FlyingAndLookingMoveTheCamera) {
 
     // The canonical camera sits at (2, -2, 1) looking at the origin: flying forward brings it
     // closer, and looking right turns the view direction clockwise seen from +z.
-    const std::vector<double> position = stat_values(run.result.out, "camera_position");
-    const std::vector<double> forward = stat_values(run.result.out, "camera_forward");
-    ASSERT_EQ(position.size(), 3u) << run.result;
-    ASSERT_EQ(forward.size(), 3u) << run.result;
-    EXPECT_LT(length(position), 3.0 * 0.95) << "did not fly towards the fractal";
-    EXPECT_GT(length(position), 1.0) << "flew through the surface";
+    const std::optional<CameraView> camera = stat_camera(run.result.out);
+    ASSERT_TRUE(camera) << run.result;
+    const glm::dvec3 forward = glm::normalize(camera->target - camera->position);
+    EXPECT_LT(glm::length(camera->position), 3.0 * 0.95) << "did not fly towards the fractal";
+    EXPECT_GT(glm::length(camera->position), 1.0) << "flew through the surface";
     const double initial_forward[3] = {-2.0 / 3.0, 2.0 / 3.0, -1.0 / 3.0};
     const double cross_z = initial_forward[0] * forward[1] - initial_forward[1] * forward[0];
     EXPECT_LT(cross_z, -0.1) << "looking right did not turn the camera clockwise";
@@ -301,9 +343,9 @@ TEST_F(ViewerTest, SwitchingScenesChangesTheImageAndKeepsEachScenesCamera) {
               10.0);
     // Back in the Mandelbulb, the camera is where the flight left it, not the default.
     EXPECT_EQ(stat_text(run.result.out, "scene"), "mandelbulb") << run.result;
-    const std::vector<double> position = stat_values(run.result.out, "camera_position");
-    ASSERT_EQ(position.size(), 3u);
-    EXPECT_LT(length(position), 3.0 * 0.97) << run.result;
+    const std::optional<CameraView> camera = stat_camera(run.result.out);
+    ASSERT_TRUE(camera) << run.result;
+    EXPECT_LT(glm::length(camera->position), 3.0 * 0.97) << run.result;
 }
 
 // The formula browser: a search finds the Bulb-Box hybrid, its thumbnail is rendered and kept in
@@ -402,7 +444,7 @@ TEST_F(ViewerTest, RecordedPathIsSavedAndRendersFromTheCommandLine) {
 0.5 key_up W
 0 key K
 0 key_down Left_Ctrl
-0 key S
+0 key K
 0 key_up Left_Ctrl
 0 key P
 0.5 quit
@@ -442,12 +484,9 @@ TEST_F(ViewerTest, ResizingRendersAtTheNewSizeAndPPlaysTheScenesPath) {
     EXPECT_EQ(shot.width, 320);
     EXPECT_EQ(shot.height, 200);
     // No movement keys: only the camera path moved the camera off its default (2, -2, 1).
-    const std::vector<double> position = stat_values(run.result.out, "camera_position");
-    ASSERT_EQ(position.size(), 3u) << run.result;
-    EXPECT_GT(
-        std::abs(position[0] - 2.0) + std::abs(position[1] + 2.0) + std::abs(position[2] - 1.0),
-        0.05)
-        << run.result;
+    const std::optional<CameraView> camera = stat_camera(run.result.out);
+    ASSERT_TRUE(camera) << run.result;
+    EXPECT_GT(glm::length(camera->position - glm::dvec3(2.0, -2.0, 1.0)), 0.05) << run.result;
 }
 
 TEST_F(ViewerTest, SurvivesASceneWhoseKernelDoesNotCompile) {
@@ -730,17 +769,13 @@ TEST_F(ViewerTest, EyeAndTargetSetTheStartView) {
         view("", {"mandelbulb", "--eye", "1.5,-2.5,0.5", "--target", "0,0,0.25", "--fov", "40"},
              std::nullopt, 2);
     ASSERT_EQ(run.result.exit_code, 0) << run.result;
-    const std::vector<double> position = stat_values(run.result.out, "camera_position");
-    const std::vector<double> forward = stat_values(run.result.out, "camera_forward");
-    ASSERT_EQ(position.size(), 3u) << run.result;
-    ASSERT_EQ(forward.size(), 3u) << run.result;
-    // Printed to 6 significant digits.
-    EXPECT_NEAR(position[0], 1.5, 1e-5);
-    EXPECT_NEAR(position[1], -2.5, 1e-5);
-    EXPECT_NEAR(position[2], 0.5, 1e-5);
-    const glm::dvec3 expected = glm::normalize(glm::dvec3(-1.5, 2.5, -0.25));
-    for (int i = 0; i < 3; ++i)
-        EXPECT_NEAR(forward[static_cast<std::size_t>(i)], expected[i], 1e-5);
+    const std::optional<CameraView> camera = stat_camera(run.result.out);
+    ASSERT_TRUE(camera) << run.result;
+    // The position is kept (and printed) to the last bit; the viewer flies a float forward
+    // direction, so the target comes back to float's precision.
+    EXPECT_EQ(camera->position, glm::dvec3(1.5, -2.5, 0.5));
+    EXPECT_LT(glm::length(camera->target - glm::dvec3(0.0, 0.0, 0.25)), 1e-6);
+    EXPECT_EQ(camera->fov_degrees, 40.0f);
 }
 
 // Path mode refines a still view progressively past the shaded mode's sample cap (the viewer
@@ -797,6 +832,108 @@ TEST_F(ViewerTest, PrecisionDoubleRendersTheViewInDouble) {
     ASSERT_GT(pixels_over_one_level(references["double"], references["float"]), 100)
         << "this view cannot tell float from double";
     EXPECT_EQ(pixels_over_one_level(read_png(run.screenshots[0]), references["double"]), 0);
+}
+
+// In a 64 x 64 window at 2 samples: runs `script`, which saves one view (Ctrl+S) and takes one
+// screenshot (F12) of it, which carries the view, then `fgr render SAVED.fgrview.json` at the size
+// the view was saved at: its PNG must be the screenshot's, byte for byte. Fills `saved` with the
+// view file.
+void ViewerTest::expect_saved_view_renders_to_the_screenshot(const std::string& script,
+                                                             const std::vector<std::string>& extra,
+                                                             fs::path* saved) {
+    window_width_ = 64;
+    window_height_ = 64;
+    samples_ = 2;
+    const ViewerRun run = view(script, extra);
+    ASSERT_EQ(run.result.exit_code, 0) << run.result;
+    ASSERT_EQ(run.views.size(), 1u) << run.result;
+    ASSERT_EQ(run.screenshots.size(), 1u) << run.result;
+    *saved = run.views[0];
+    EXPECT_NE(run.result.err.find("view saved: ./" + saved->filename().string()), std::string::npos)
+        << run.result;
+    const test::RunResult rendered =
+        test::run_fgr({"render", saved->string(), "-o", "rendered.png"}, dir());
+    ASSERT_EQ(rendered.exit_code, 0) << rendered;
+    EXPECT_EQ(read_embedded_view(run.screenshots[0]), view_file_text(read_view_file(*saved)))
+        << "the screenshot carries the view Ctrl+S saved";
+    const std::vector<uint8_t> shot = test::read_bytes(run.screenshots[0]);
+    ASSERT_FALSE(shot.empty());
+    EXPECT_TRUE(shot == test::read_bytes(dir() / "rendered.png"))
+        << "`fgr render` of the saved view gave other bytes than the viewer's screenshot";
+}
+
+// The viewer's view, saved and rendered again: a flight and a parameter set by replayed input
+// are saved with Ctrl+S beside a thumbnail, F12 shoots the view, and `fgr render SAVED` gives
+// the screenshot's bytes. Then `fgr view SAVED` opens the view again under an option typed over
+// it and a warning that its scene changed: Ctrl+S there saves the same view, the option's value
+// in place of the view's.
+TEST_F(ViewerTest, SavedViewRendersToTheScreenshotsBytesAndOpensAgain) {
+    fs::path saved;
+    expect_saved_view_renders_to_the_screenshot(R"(0 wait_idle
+0 key_down W
+0.3 key_up W
+0 set power=7.25
+0 wait_idle
+)" + save_view_after("0") + "0 key F12\n0.2 quit\n",
+                                                {}, &saved);
+    ASSERT_FALSE(saved.empty());
+    const ViewFile first = read_view_file(saved);
+    EXPECT_EQ(first.scene_id, "mandelbulb");
+    EXPECT_EQ(first.width, 64);
+    EXPECT_EQ(first.samples, 2) << "the view's still is F12's: the sample cap";
+    EXPECT_EQ(first.mode, RenderMode::Shaded);
+    ASSERT_EQ(first.parameters.size(), 1u);
+    EXPECT_EQ(parameter_assignment(first.parameters[0]), "power=7.25");
+    EXPECT_LT(glm::length(first.camera.position), 3.0 * 0.99) << "the flight is not in the view";
+    const fs::path thumbnail = viewer::view_thumbnail_file(saved);
+    ASSERT_TRUE(fs::exists(thumbnail));
+    EXPECT_EQ(read_png(thumbnail).width, 64) << "a window narrower than the thumbnail keeps its";
+
+    // Opened again with a fingerprint from another version of the scene.
+    std::vector<uint8_t> bytes = test::read_bytes(saved);
+    std::string text(bytes.begin(), bytes.end());
+    const size_t fingerprint = text.find(first.scene_fingerprint);
+    ASSERT_NE(fingerprint, std::string::npos);
+    text.replace(fingerprint, first.scene_fingerprint.size(), "0123456789abcdef");
+    const fs::path opened = dir() / "opened.fgrview.json";
+    std::ofstream(opened) << text;
+    for (const fs::path& file : {saved, thumbnail}) fs::remove(file);
+    samples_ = 0;  // the view's
+    const ViewerRun again =
+        view(save_view_after("0.2") + "0.2 quit\n", {opened.string(), "--set", "power=6.5"});
+    ASSERT_EQ(again.result.exit_code, 0) << again.result;
+    EXPECT_NE(again.result.err.find("scene 'mandelbulb' changed since this view was saved"),
+              std::string::npos)
+        << again.result;
+    ASSERT_EQ(again.views.size(), 2u) << again.result;  // opened.fgrview.json and the new one
+    const fs::path resaved = again.views[0] == opened ? again.views[1] : again.views[0];
+    ViewFile expected = first;
+    expected.parameters[0].text = "6.5";
+    ViewFile reopened = read_view_file(resaved);
+    EXPECT_EQ(reopened.camera.position, first.camera.position);
+    EXPECT_LT(glm::length(reopened.camera.target - first.camera.target), 1e-6);
+    reopened.camera = expected.camera;  // the viewer flies a float forward direction
+    EXPECT_EQ(reopened, expected);
+}
+
+// The same in the path tracer's mode, with its settings away from the defaults.
+TEST_F(ViewerTest, SavedPathTracedViewRendersToTheScreenshotsBytes) {
+    fs::path saved;
+    expect_saved_view_renders_to_the_screenshot(R"(0.1 key_down W
+0.2 key_up W
+0 set power=7.25
+)" + save_view_after("0.1") + "0 key F12\n0.2 quit\n",
+                                                {"--mode", "path", "--environment", "studio",
+                                                 "--environment-rotation", "30", "--bounces", "3"},
+                                                &saved);
+    ASSERT_FALSE(saved.empty());
+    const ViewFile view_file = read_view_file(saved);
+    EXPECT_EQ(view_file.mode, RenderMode::Path);
+    ASSERT_TRUE(view_file.path);
+    EXPECT_EQ(view_file.path->environment, "studio");
+    EXPECT_EQ(view_file.path->environment_rotation, 30.0f);
+    EXPECT_EQ(view_file.path->bounces, 3);
+    ASSERT_EQ(view_file.parameters.size(), 1u);
 }
 
 TEST_F(ViewerTest, BadReplayScriptsAreRefusedBeforeAWindowOpens) {

@@ -1,6 +1,7 @@
 // The viewer's key bindings without a window: each key the help window lists runs its command,
-// Ctrl matters only to S (Ctrl+S saves the recorded path, S alone flies backwards), and the
-// flying keys, which act while held, run none.
+// Ctrl matters only to S (Ctrl+S saves the view, S alone flies backwards) and K (Ctrl+K saves the
+// recorded path, K alone records a keyframe), and the flying keys, which act while held, run
+// none.
 #include <gtest/gtest.h>
 
 #include <optional>
@@ -19,7 +20,6 @@ TEST(ViewerKeyBindings, EachListedKeyRunsItsCommandWithOrWithoutCtrl) {
         {SDL_SCANCODE_PAGEUP, ViewerCommand::PreviousScene},
         {SDL_SCANCODE_PAGEDOWN, ViewerCommand::NextScene},
         {SDL_SCANCODE_P, ViewerCommand::TogglePlayback},
-        {SDL_SCANCODE_K, ViewerCommand::RecordKeyframe},
         {SDL_SCANCODE_F12, ViewerCommand::Screenshot},
         {SDL_SCANCODE_H, ViewerCommand::ToggleHelp},
         {SDL_SCANCODE_F1, ViewerCommand::ToggleHelp},
@@ -35,9 +35,14 @@ TEST(ViewerKeyBindings, EachListedKeyRunsItsCommandWithOrWithoutCtrl) {
     }
 }
 
-TEST(ViewerKeyBindings, CtrlSSavesThePathAndSAloneRunsNothing) {
-    EXPECT_EQ(command_for_key(SDL_SCANCODE_S, true), ViewerCommand::SaveRecordedPath);
+TEST(ViewerKeyBindings, CtrlSSavesTheViewAndSAloneRunsNothing) {
+    EXPECT_EQ(command_for_key(SDL_SCANCODE_S, true), ViewerCommand::SaveView);
     EXPECT_EQ(command_for_key(SDL_SCANCODE_S, false), std::nullopt);
+}
+
+TEST(ViewerKeyBindings, CtrlKSavesThePathAndKAloneRecordsAKeyframe) {
+    EXPECT_EQ(command_for_key(SDL_SCANCODE_K, true), ViewerCommand::SaveRecordedPath);
+    EXPECT_EQ(command_for_key(SDL_SCANCODE_K, false), ViewerCommand::RecordKeyframe);
 }
 
 TEST(ViewerKeyBindings, FlyingKeysRunNoCommand) {

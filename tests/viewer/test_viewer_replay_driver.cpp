@@ -1,7 +1,8 @@
 // A replay script fed into the viewer without a window: input events reach SDL's queue addressed
 // to the viewer's window (a mouse button without a position at its centre), a wait holds the rest
 // of the script until what it waits for has happened, a resize keeps the view from counting as
-// idle until the window has the size, and the browser's and the editor's events go to them.
+// idle until the window has the size, the browser's and the editor's events go to them, and a
+// parameter set goes to the viewer.
 #include <SDL2/SDL.h>
 #include <gtest/gtest.h>
 
@@ -29,6 +30,7 @@ struct FakeViewer {
     std::vector<std::pair<int, int>> resizes;
     std::vector<ReplayAction> browser_events;
     std::vector<ReplayAction> editor_events;
+    std::vector<std::string> assignments;
 
     ReplayHost host() {
         return {
@@ -41,6 +43,7 @@ struct FakeViewer {
             .quit = [this] { quit = true; },
             .browser_event = [this](const ReplayEvent& e) { browser_events.push_back(e.action); },
             .editor_event = [this](const ReplayEvent& e) { editor_events.push_back(e.action); },
+            .set_parameter = [this](const std::string& text) { assignments.push_back(text); },
         };
     }
 };
@@ -159,6 +162,14 @@ TEST_F(ViewerReplayDriver, BrowserAndEditorEventsGoToThem) {
     EXPECT_EQ(viewer.editor_events,
               (std::vector{ReplayAction::HybridAdd, ReplayAction::HybridRemove,
                            ReplayAction::HybridSave}));
+}
+
+TEST_F(ViewerReplayDriver, SetGivesTheViewerTheAssignment) {
+    FakeViewer viewer;
+    ReplayDriver driver(script("0 set power=7.25\n"), viewer.host());
+    driver.feed(0.0);
+    EXPECT_EQ(viewer.assignments, std::vector<std::string>{"power=7.25"});
+    EXPECT_TRUE(pushed().empty()) << "no input event";
 }
 
 }  // namespace
