@@ -45,6 +45,9 @@ struct ViewerOptions {
     // `fgr view VIEW.fgrview.json`: the view opened, whose settings are in the options above; the
     // viewer says when its scene is another or has changed since the view was saved.
     std::optional<ViewFile> opened_view;
+    // Set by run_viewer for a scene opened by path: its file (absolute), which views of it
+    // record, so `fgr render VIEW` finds it again.
+    std::string opened_scene_file{};
     std::optional<std::filesystem::path> replay;  // scripted input (see replay.hpp)
     std::optional<double> exit_after_seconds;
     bool print_stats = false;  // frame-time statistics and the final camera on stdout

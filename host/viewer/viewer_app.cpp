@@ -371,7 +371,7 @@ void ViewerApp::take_screenshot() {
     const ViewState state = current_state();
     ScreenshotRequest request;
     request.scene = state.scene;
-    request.view = view_of_state(state, choices_.environment, choices_.quality.sample_cap);
+    request.view = current_view(state);
     request.file = unused_file(options_.output_dir,
                                fmt::format("fgr-{}-{}", state.scene->id, file_timestamp()), ".png",
                                written_files_);
@@ -381,9 +381,17 @@ void ViewerApp::take_screenshot() {
     worker_->request_screenshot(std::move(request));
 }
 
+ViewFile ViewerApp::current_view(const ViewState& state) const {
+    ViewFile view = view_of_state(state, choices_.environment, choices_.quality.sample_cap);
+    if (!options_.opened_scene_file.empty() && view.scene_id == options_.scene) {
+        view.scene_file = options_.opened_scene_file;
+    }
+    return view;
+}
+
 void ViewerApp::save_view() {
     const ViewState state = current_state();
-    const ViewFile view = view_of_state(state, choices_.environment, choices_.quality.sample_cap);
+    const ViewFile view = current_view(state);
     const std::filesystem::path file =
         unused_file(options_.output_dir, fmt::format("fgr-{}-{}", view.scene_id, file_timestamp()),
                     kViewFileSuffix, written_files_);
@@ -464,6 +472,9 @@ int run_viewer(const ViewerOptions& options) {
         kind != SceneArgumentKind::Id) {
         opened = load_scene_argument_file(options.scene, kind);
         chosen.scene = opened->id;
+        std::error_code error;
+        const std::filesystem::path absolute = std::filesystem::absolute(options.scene, error);
+        chosen.opened_scene_file = error ? options.scene : absolute.lexically_normal().string();
     }
     Discovery found = discover_scenes(plugin_search_path(executable_dir()));
     if (opened) {

@@ -69,6 +69,8 @@ private:
     void take_screenshot();
     // Writes the view as fgr-SCENE-TIME.fgrview.json with a thumbnail beside it (view_still.hpp).
     void save_view();
+    // The view of `state` as Ctrl+S saves it and F12 renders it.
+    ViewFile current_view(const ViewState& state) const;
     // A replayed `set ID=VALUE`: the parameter of the scene shown, as --set takes it.
     void set_parameter(const std::string& assignment);
     // A new version of scene `index` (reloaded, or an edit of its sequence) takes its place.

@@ -169,6 +169,22 @@ TEST_F(ViewFileCli, VideoFromAViewAndItsFramesRenderAgainFromTheirViews) {
                 test::read_bytes(dir() / "again.png"));
 }
 
+// A view of a scene opened by path names the file, so the view renders from anywhere: here a
+// text scene as `fgr new-scene --text` writes it, with no compiler involved.
+TEST_F(ViewFileCli, AViewOfASceneOpenedByPathRendersFromAnotherDirectory) {
+    succeed({"new-scene", "--text", "blob"});
+    succeed({"render", "blob.cl", "--width", "24", "--height", "16", "-o", "blob.png",
+             "--save-view", "blob.fgrview.json"});
+    const json view = read_json(dir() / "blob.fgrview.json");
+    EXPECT_EQ(view["scene"]["file"], (dir() / "blob.cl").lexically_normal().string());
+    fs::create_directory(dir() / "elsewhere");
+    const RunResult again =
+        test::run_fgr({"render", "../blob.fgrview.json", "-o", "again.png"}, dir() / "elsewhere");
+    ASSERT_EQ(again.exit_code, 0) << again;
+    EXPECT_TRUE(test::read_bytes(dir() / "blob.png") ==
+                test::read_bytes(dir() / "elsewhere" / "again.png"));
+}
+
 // Parts carry the view, and `fgr merge` passes it on: the merged image renders again as one.
 TEST_F(ViewFileCli, AMergedImageCarriesTheViewOfItsParts) {
     for (const char* tile : {"1/2", "2/2"}) {
