@@ -82,7 +82,7 @@ struct WorkerStatus {
 struct ScreenshotRequest {
     std::shared_ptr<const Scene> scene;  // the version shown when it was asked for
     ViewFile view;                       // everything that decides the image, its size too
-    std::filesystem::path file;  // which carries the view (image/embedded_view.hpp)
+    std::filesystem::path file;          // which carries the view (image/embedded_view.hpp)
 };
 
 // A new version of a scene (a rebuilt plugin, an edited .cl file) to try before it replaces the

@@ -85,8 +85,8 @@ ViewStill still_of_view(const Scene& scene, const ViewFile& view, int packet_wid
     const Aovs aovs = parse_aovs(view.layers);
     settings.aovs = view.alpha || aovs.need_aov_planes();
 
-    still.output = StillOutput{view.bit_depth, display_transform(scene, request.params),
-                               view.alpha, aovs, view_file_text(view)};
+    still.output = StillOutput{view.bit_depth, display_transform(scene, request.params), view.alpha,
+                               aovs, view_file_text(view)};
     return still;
 }
 
