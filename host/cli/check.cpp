@@ -39,9 +39,9 @@ int command_check(const CheckOptions& options) {
         built.emplace(device, cache, scene, options.packet_width);  // compiles the kernel
     } catch (const KernelBuildError& error) {
         std::fputs(conventional_build_log(error.build_log()).c_str(), stderr);
-        const std::string summary =
-            fmt::format("the kernel of scene '{}' does not compile (errors above, in {})", scene.id,
-                        scene.source_name);
+        const std::string summary = fmt::format(
+            "the kernel of scene '{}' does not compile (errors above, in {}){}", scene.id,
+            scene.source_name, error.hint().empty() ? "" : ": " + error.hint());
         throw RuntimeFailure(summary);
     }
     SceneChecker& checker = *built;

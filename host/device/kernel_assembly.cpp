@@ -86,7 +86,10 @@ std::vector<const KernelFile*> formula_families_called(std::string_view source) 
     return used;
 }
 
-std::string accessor(const ParamInfo& param, int offset) {
+// A parameter reads as the uniform value it is: the same in every lane, so `float`, `int` and (from
+// kernel API 4) `float3`, whose components are plain floats at every packet width. Before API 4 a
+// vec3 parameter reads as a vec3 of lanes, as scenes written then pass it to the vec3 helpers.
+std::string accessor(const ParamInfo& param, int offset, int kernel_api) {
     const std::string slot = fmt::format("fgr_params[{}]", offset);
     switch (param.type) {
         case ParamType::Float:
@@ -98,19 +101,48 @@ std::string accessor(const ParamInfo& param, int offset) {
         case ParamType::Vec3:
         case ParamType::Colour:
             return fmt::format(
-                "#define param_{} v3_splat(fgr_params[{}], fgr_params[{}], fgr_params[{}])\n",
-                param.id, offset, offset + 1, offset + 2);
+                "#define param_{} {}(fgr_params[{}], fgr_params[{}], fgr_params[{}]){}\n", param.id,
+                kernel_api >= 4 ? "((float3)" : "v3_splat", offset, offset + 1, offset + 2,
+                kernel_api >= 4 ? ")" : "");
     }
     return {};
 }
 
 }  // namespace
 
-std::string param_accessors(const Scene& scene) {
+std::string param_accessors(const Scene& scene, int kernel_api) {
     std::string out;
     const auto offsets = param_offsets(scene);
-    for (size_t i = 0; i < scene.params.size(); ++i) out += accessor(scene.params[i], offsets[i]);
+    for (size_t i = 0; i < scene.params.size(); ++i) {
+        out += accessor(scene.params[i], offsets[i], kernel_api);
+    }
     return out;
+}
+
+std::string build_error_hint(int kernel_api, std::string_view log) {
+    // Clang's words: "initializing 'const float' with an expression of incompatible type 'real'
+    // (aka 'float16')", "passing 'float3' (vector of 3 'float' values) to parameter of
+    // incompatible type 'vec3'".
+    for (size_t start = 0; start < log.size();) {
+        const size_t end = std::min(log.find('\n', start), log.size());
+        const std::string_view line = log.substr(start, end - start);
+        start = end + 1;
+        if (line.find("incompatible type") == std::string_view::npos) continue;
+        if (kernel_api < 4 && line.find("type 'real'") != std::string_view::npos) {
+            return fmt::format(
+                "a `real` holds one value per lane of a packet, not a float: keep such values "
+                "`real`; a vec3 parameter's components (param_<id>.z) are `real` lanes in kernel "
+                "API {}, and from kernel API 4 (`#define FGR_KERNEL_API 4` on a line of its own) "
+                "a vec3 parameter reads as a uniform float3 whose components are floats",
+                kernel_api);
+        }
+        if (kernel_api >= 4 && line.find("'float3'") != std::string_view::npos &&
+            line.find("'vec3'") != std::string_view::npos) {
+            return "from kernel API 4 a vec3 or colour parameter is a uniform float3: where a vec3 "
+                   "is wanted, pass v3_uniform(param_<id>), the same vector in every lane";
+        }
+    }
+    return "";
 }
 
 std::string switch_options(const KernelSwitches& switches) {
@@ -136,11 +168,12 @@ AssembledProgram assemble_program(const Scene& scene, const KernelSwitches& swit
     std::string& source = program.source;
     // The library shows the scene the names of the kernel API version its source is written for.
     const int kernel_api = declared_kernel_api(scene.source);
+    program.kernel_api = kernel_api;
     append_file(source, "<kernel API>",
                 fmt::format("#define FGR_KERNEL_API {}\n", kernel_api).c_str());
     for (const auto& file : kernel_prelude()) append_file(source, file.name, file.source);
     append_file(source, fmt::format("<parameters of {}>", scene.id),
-                param_accessors(scene).c_str());
+                param_accessors(scene, kernel_api).c_str());
     const std::vector<const KernelFile*> families = formula_families_called(scene.source);
     if (!families.empty() && kernel_api < 2) {
         throw std::invalid_argument(

@@ -30,12 +30,20 @@ struct KernelSwitches {
 struct AssembledProgram {
     std::string source;
     std::string options;  // clBuildProgram options: the -D switches
+    int kernel_api = 1;   // the version the scene's source declares (scene/kernel_api.hpp)
 };
 
 AssembledProgram assemble_program(const Scene& scene, const KernelSwitches& switches);
 
-// "#define param_<id> ..." lines reading each parameter from the buffer `fgr_params`.
-std::string param_accessors(const Scene& scene);
+// "#define param_<id> ..." lines reading each parameter from the buffer `fgr_params`, as the
+// kernel API version the scene's source declares reads it (a vec3 is a float3 from version 4).
+std::string param_accessors(const Scene& scene, int kernel_api);
+
+// What to change when a build log shows a lane value and a uniform one mixed up, as reading
+// parameters invites: a `real` (one value per lane) where a float is wanted, which a vec3
+// parameter's component is before kernel API 4, or (from version 4) a vec3 parameter's float3
+// where a vec3 is wanted. "" when the log shows neither.
+std::string build_error_hint(int kernel_api, std::string_view log);
 
 // The -D options for the switches, e.g. "-DFGR_WIDTH=16 -DFGR_EFFECT_SHADOWS".
 std::string switch_options(const KernelSwitches& switches);

@@ -122,7 +122,7 @@ cl::Program ProgramCache::build(const ComputeDevice& device, const AssembledProg
             throw KernelBuildError(first.empty()
                                        ? "OpenCL program failed to compile"
                                        : fmt::format("OpenCL program failed to compile: {}", first),
-                                   log);
+                                   log, build_error_hint(program.kernel_api, log));
         }
         result.origin = BuildReport::Origin::Compiled;
         if (const std::string log = build_log(built, device.device); log.size() > 1) {

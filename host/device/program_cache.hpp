@@ -17,16 +17,21 @@
 namespace fgr {
 
 // The program did not compile. what() is a one-line summary that names the first error's file and
-// line; build_log() the compiler's output, whose file:line references name the scene's own source
-// thanks to #line directives.
+// line, ending with the hint when there is one; build_log() the compiler's output, whose file:line
+// references name the scene's own source thanks to #line directives; hint() what to change when
+// the log shows a known mistake (build_error_hint), else "".
 class KernelBuildError : public std::runtime_error {
 public:
-    KernelBuildError(const std::string& summary, std::string log)
-        : std::runtime_error(summary), log_(std::move(log)) {}
+    KernelBuildError(const std::string& summary, std::string log, std::string hint = "")
+        : std::runtime_error(hint.empty() ? summary : summary + ": " + hint),
+          log_(std::move(log)),
+          hint_(std::move(hint)) {}
     const std::string& build_log() const { return log_; }
+    const std::string& hint() const { return hint_; }
 
 private:
     std::string log_;
+    std::string hint_;
 };
 
 // The build log with PoCL's "error: FILE:LINE:COL: message" lines turned into the

@@ -9,7 +9,7 @@ namespace fgr {
 
 // The newest version the kernel library offers (FGR_KERNEL_API_LATEST in
 // kernels/core/fgr_types.cl).
-inline constexpr int kKernelApiLatest = 3;
+inline constexpr int kKernelApiLatest = 4;
 
 // N from `#define FGR_KERNEL_API N` on a line of its own outside comments; 1 (the version before
 // versions were counted) when the source has no such line. Throws std::invalid_argument, saying

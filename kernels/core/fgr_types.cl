@@ -24,10 +24,14 @@
  * or size as `vec3` (what a vec3 parameter gives: rotation_about_axis, rotate_about), the folds
  * fold_box_axes, fold_icosahedral/fold_dodecahedral, invert_sphere, scale_about, and the
  * iterate-function scenes (FGR_ITERATION ... FGR_END_ITERATION, FGR_ITERATED_SCENE). Version 3
- * added op_union_culled (a union that skips an object no lane can need). Names are only
- * ever added in a new version; a change to an existing one keeps the old form for older
- * versions. */
-#define FGR_KERNEL_API_LATEST 3
+ * added op_union_culled (a union that skips an object no lane can need). Version 4 reads
+ * parameters as the uniform values they are: a vec3 or colour parameter is a `float3` (so
+ * `const float h = param_offset.z;` compiles at every packet width and precision, as a float
+ * parameter always was a `float`), and v3_uniform(u) puts a float3 in every lane of a vec3 for the
+ * vec3 helpers; before version 4 a vec3 parameter reads as a vec3, whose components are `real`
+ * lanes. Names are only ever added in a new version; a change to an existing one keeps the old
+ * form for older versions. */
+#define FGR_KERNEL_API_LATEST 4
 #ifndef FGR_KERNEL_API
 #define FGR_KERNEL_API 1
 #endif
@@ -103,6 +107,9 @@ typedef struct vec3 {
     real x, y, z;
 } vec3;
 
-/* The parameter buffer a scene reads (through the generated param_<id> accessors). */
+/* The parameter buffer a scene reads (through the generated param_<id> accessors). Parameters
+ * are uniform, the same in every lane: a float parameter reads as a `float`, an int or enum as an
+ * `int`, a bool as an `int` 0/1, and (kernel API 4) a vec3 or colour as a `float3`. The buffer
+ * holds floats, so a double build converts them where they meet `real` lanes. */
 #define PARAMS __constant const float* fgr_params
 #define PARAMS_PASS fgr_params

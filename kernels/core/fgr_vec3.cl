@@ -15,6 +15,17 @@ inline vec3 v3_splat(float x, float y, float z) {
     return v3(fgr_real(x), fgr_real(y), fgr_real(z));
 }
 
+#if FGR_KERNEL_API >= 4
+/* A uniform 3-vector (a vec3 or colour parameter, a float3 constant) in every lane: what the vec3
+ * helpers take, e.g. v3_add(z, v3_uniform(param_offset)). */
+inline vec3 v3_uniform(float3 u) { return v3_splat(u.x, u.y, u.z); }
+#define fgr_param_lanes(param) v3_uniform(param)
+#else
+#define fgr_param_lanes(param) (param)
+#endif
+/* fgr_param_lanes(param_X): a vec3 parameter as a vec3, whichever kernel API the scene reads it
+ * with; the library's own reads of its built-in colours (fog, glow, base colour) go through it. */
+
 inline vec3 v3_add(vec3 a, vec3 b) { return v3(a.x + b.x, a.y + b.y, a.z + b.z); }
 inline vec3 v3_sub(vec3 a, vec3 b) { return v3(a.x - b.x, a.y - b.y, a.z - b.z); }
 inline vec3 v3_mul(vec3 a, vec3 b) { return v3(a.x * b.x, a.y * b.y, a.z * b.z); }

@@ -360,7 +360,7 @@ inline vec3 brute_glow(vec3 colour, __global const float* state, camera_frame ca
     }
     const real amount =
         select(fgr_real(0.0f), param_glow_strength * near_hits / (float)FGR_SSAO_SAMPLES, missed);
-    return v3_add(colour, v3_scale(param_glow_colour, amount));
+    return v3_add(colour, v3_scale(fgr_param_lanes(param_glow_colour), amount));
 }
 #endif
 

@@ -6,8 +6,9 @@
  *   exact  the true signed distance (given exact inputs), or
  *   bound  never more than the true distance in magnitude, and 1-Lipschitz, so sphere tracing
  *          with it never steps through the surface.
- * Scalar shape parameters are uniform `float`s; vector ones are `vec3` so scene parameters
- * (param_<id> of type vec3) and v3_splat(...) pass straight in.
+ * Scalar shape parameters are uniform `float`s; vector ones are `vec3`: v3_splat(x, y, z) for a
+ * constant, v3_uniform(param_<id>) for a vec3 parameter (kernel API 4 reads one as a float3; API 2
+ * and 3 as a vec3, which passes straight in).
  *
  * Nothing here divides by zero or takes sqrt of a negative: degenerate shapes (radius 0, a == b
  * capsules, period 0) and the origin give finite results in every lane.
@@ -182,9 +183,10 @@ inline real op_smooth_intersection(real d1, real d2, float k) {
 
 #if FGR_KERNEL_API >= 2
 /* A rotation by `degrees` about `axis` (Rodrigues' matrix), built once outside a loop so the loop
- * does a matrix multiply instead of trigonometry. The axis is a vec3, as a vec3 parameter gives
- * it (`rotation_about_axis(param_axis, param_angle)`), or v3_splat(x, y, z) for a fixed one; it
- * need not be unit length (a zero axis gives the identity). */
+ * does a matrix multiply instead of trigonometry. The axis is a vec3: from a vec3 parameter
+ * `rotation_about_axis(v3_uniform(param_axis), param_angle)` (API 2 and 3: `param_axis` itself),
+ * or v3_splat(x, y, z) for a fixed one; it need not be unit length (a zero axis gives the
+ * identity). */
 typedef struct rotation3 {
     real xx, xy, xz, yx, yy, yz, zx, zy, zz; /* rows x, y, z */
 } rotation3;

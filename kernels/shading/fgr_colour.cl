@@ -6,6 +6,7 @@
  *
  *     return trap_colour(trap, param_colour_mode, param_palette, param_base_colour);
  *
+ * (from kernel API 4, where a colour parameter is a float3: v3_uniform(param_base_colour)),
  * or, for a fractal whose `iterate(vec3 p, PARAMS, int record, orbit_trap* trap)` returns the DE
  * and records the orbit when asked, both scene functions at once:
  *
@@ -107,7 +108,8 @@ inline vec3 trap_colour(orbit_trap trap, int mode, int palette_index, vec3 base)
     vec3 scene_colour(vec3 p, PARAMS) {                                                     \
         orbit_trap trap = trap_init();                                                      \
         iterate(p, PARAMS_PASS, 1, &trap);                                                  \
-        return trap_colour(trap, param_colour_mode, param_palette, param_base_colour);      \
+        return trap_colour(trap, param_colour_mode, param_palette,                          \
+                           fgr_param_lanes(param_base_colour));                             \
     }
 
 /* scene_de and scene_colour of a fractal coloured by its orbit: `iterate` runs the iteration once

@@ -8,7 +8,7 @@
  * density of 0 leaves the image untouched. */
 inline vec3 apply_fog(vec3 colour, real t, mask hit, float max_distance, PARAMS) {
     real keep = exp(-param_fog_density * select(fgr_real(max_distance), t, hit));
-    vec3 fog = param_fog_colour;
+    vec3 fog = fgr_param_lanes(param_fog_colour);
     return v3(mix(fog.x, colour.x, keep), mix(fog.y, colour.y, keep), mix(fog.z, colour.z, keep));
 }
 #endif
@@ -20,6 +20,6 @@ inline vec3 apply_glow(vec3 colour, real closest, mask missed, PARAMS) {
     real amount =
         select(fgr_real(0.0f), param_glow_strength * exp(-fmax(closest, 0.0f) / param_glow_radius),
                missed);
-    return v3_add(colour, v3_scale(param_glow_colour, amount));
+    return v3_add(colour, v3_scale(fgr_param_lanes(param_glow_colour), amount));
 }
 #endif

@@ -7,8 +7,10 @@
  * iterates a step (KIFS, Mandelbox, Kleinian) is shortest as an orbit scene: FGR_ORBIT,
  * FGR_ITERATE, FGR_DISTANCE ("Orbit scenes: the short way" in the guide). */
 
-/* The kernel library version this source is written for: fgr shows it that version's names. */
-#define FGR_KERNEL_API 3
+/* The kernel library version this source is written for: fgr shows it that version's names.
+ * Parameters read as the uniform values they are: param_radius is a float, param_tint a float3
+ * (param_tint.x is a float); v3_uniform(param_tint) is the same colour in every lane, a vec3. */
+#define FGR_KERNEL_API 4
 
 /* A lower bound on the distance from p to the surface: the ball of radius param_radius, pushed
  * in and out by sine bumps. op_displace_sine divides by the bumps' steepest slope, so the result
@@ -31,7 +33,7 @@ vec3 scene_colour(vec3 p, PARAMS) {
                 sin(param_frequency * p.z);
     real t = clamp(0.5f + 1.5f * wave, 0.0f, 1.0f);
     vec3 white = v3_splat(0.9f, 0.9f, 0.88f);
-    return v3_add(v3_scale(white, 1.0f - t), v3_scale(param_tint, t));
+    return v3_add(v3_scale(white, 1.0f - t), v3_scale(v3_uniform(param_tint), t));
 }
 
 /* The material the path tracer (`fgr render --mode path`) shades with: the same colour as a

@@ -16,6 +16,7 @@
 #include "fgr/plugin.h"
 #include "hermetic_caches.hpp"
 #include "render/renderer.hpp"
+#include "scene/kernel_api.hpp"
 #include "scene/parameters.hpp"
 #include "test_scenes.hpp"
 
@@ -121,15 +122,39 @@ TEST(KernelAssembly, AccessorsFollowTheBufferLayout) {
                          ParamInfo{.id = "offset", .type = ParamType::Vec3},
                          ParamInfo{.id = "count", .type = ParamType::Int},
                          ParamInfo{.id = "enabled", .type = ParamType::Bool}});
-    const std::string accessors = param_accessors(scene);
+    const std::string accessors = param_accessors(scene, kKernelApiLatest);
     EXPECT_NE(accessors.find("#define param_scale (fgr_params[0])"), std::string::npos);
-    EXPECT_NE(accessors.find(
-                  "#define param_offset v3_splat(fgr_params[1], fgr_params[2], fgr_params[3])"),
+    // A vec3 is uniform, a float3; before kernel API 4 it read as a vec3 of lanes.
+    EXPECT_NE(accessors.find("#define param_offset ((float3)(fgr_params[1], fgr_params[2], "
+                             "fgr_params[3]))"),
+              std::string::npos);
+    EXPECT_NE(param_accessors(scene, 3).find("#define param_offset v3_splat(fgr_params[1], "
+                                             "fgr_params[2], fgr_params[3])"),
               std::string::npos);
     EXPECT_NE(accessors.find("#define param_count ((int)fgr_params[4])"), std::string::npos);
     EXPECT_NE(accessors.find("#define param_enabled (fgr_params[5] != 0.0f)"), std::string::npos);
     // The built-in quality knobs follow the scene's own parameters.
     EXPECT_NE(accessors.find("#define param_max_steps ((int)fgr_params[6])"), std::string::npos);
+}
+
+// The hint reads clang's words for a lane value where a float is wanted, and for a float3 where a
+// vec3 is wanted, each only in the kernel API where a parameter gives that type.
+TEST(KernelAssembly, BuildErrorsMixingLaneAndUniformValuesGetAHint) {
+    const std::string real_as_float =
+        "error: s.cl:4:17: initializing 'const __private float' with an expression of "
+        "incompatible type 'real' (aka 'float16')\n";
+    const std::string float3_as_vec3 =
+        "error: s.cl:3:32: passing 'float3' (vector of 3 'float' values) to parameter of "
+        "incompatible type 'vec3' (aka 'struct vec3')\n";
+    EXPECT_NE(build_error_hint(3, "1 error generated.\n" + real_as_float).find("FGR_KERNEL_API 4"),
+              std::string::npos);
+    EXPECT_EQ(build_error_hint(4, real_as_float), "");
+    EXPECT_NE(build_error_hint(4, float3_as_vec3).find("v3_uniform(param_<id>)"),
+              std::string::npos);
+    EXPECT_EQ(build_error_hint(3, float3_as_vec3), "");
+    EXPECT_EQ(build_error_hint(4, "error: s.cl:1:1: use of undeclared identifier 'x'\n"), "");
+    EXPECT_EQ(assemble_program(test::inline_scene("#define FGR_KERNEL_API 4\n"), {1, 0}).kernel_api,
+              4);
 }
 
 TEST(KernelAssembly, SceneSourceIsTaggedWithItsOwnFileName) {

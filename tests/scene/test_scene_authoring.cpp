@@ -3,6 +3,7 @@
 // the version-2 helpers that take what a vec3 parameter gives and the folds (checked by their
 // geometry, through the kernel, at packet widths 1 and 16), and the orbit-scene contract
 // (kernels/fractals/fgr_iterate.cl) against the same maths written out by hand in packet form.
+#include <fmt/format.h>
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -11,6 +12,7 @@
 #include <filesystem>
 #include <glm/geometric.hpp>
 #include <glm/vec3.hpp>
+#include <optional>
 #include <regex>
 #include <sstream>
 #include <string>
@@ -22,6 +24,7 @@
 #include "device_suite.hpp"
 #include "fgr/kernel_library.hpp"
 #include "random_points.hpp"
+#include "render/precision.hpp"
 #include "render/renderer.hpp"
 #include "render_probes.hpp"
 #include "scene/kernel_api.hpp"
@@ -60,13 +63,13 @@ TEST(KernelApi, TheVersionIsReadFromTheSourcesOwnDefine) {
     EXPECT_EQ(declared_kernel_api("  #  define   FGR_KERNEL_API 1  \n"), 1);
     EXPECT_EQ(declared_kernel_api("/* #define FGR_KERNEL_API 2 */\n// #define FGR_KERNEL_API 2\n"),
               1);
-    for (const char* unknown : {"#define FGR_KERNEL_API 4\n", "#define FGR_KERNEL_API 0\n",
+    for (const char* unknown : {"#define FGR_KERNEL_API 5\n", "#define FGR_KERNEL_API 0\n",
                                 "#define FGR_KERNEL_API two\n"}) {
         try {
             declared_kernel_api(unknown);
             ADD_FAILURE() << "accepted: " << unknown;
         } catch (const std::invalid_argument& error) {
-            EXPECT_NE(std::string(error.what()).find("kernel APIs 1 to 3"), std::string::npos)
+            EXPECT_NE(std::string(error.what()).find("kernel APIs 1 to 4"), std::string::npos)
                 << error.what();
         }
     }
@@ -154,6 +157,93 @@ TEST(KernelApi, EachVersionSeesOnlyItsOwnNamesAndSignatures) {
     EXPECT_TRUE(builds(uses_v1_rotation));
     EXPECT_FALSE(builds("#define FGR_KERNEL_API 2\n" + uses_v1_rotation))
         << "version 2 takes a float3 axis";
+}
+
+// From kernel API 4 parameters read as the uniform values they are: a vec3 parameter's component
+// is a float in ordinary C (`const float h = param_offset.z;`), scalar parameters go into plain
+// float expressions, and v3_uniform hands a float3 to the vec3 helpers, at one ray per work-item
+// (the narrowest double packet, 4, in double) and at the device's packets, in float and double. The
+// probe says the values arrive (a ball of radius size / 2 about offset); fog and glow read the
+// built-in colours as the library does, and the orbit colours by base_colour.
+TEST(KernelApi, VersionFourReadsParametersAsUniformValuesAtEveryWidthAndPrecision) {
+    Scene scene = test::inline_scene(R"(
+#define FGR_KERNEL_API 4
+#define FGR_SCENE_HAS_COLOUR
+FGR_ORBIT(1, FGR_NO_BAILOUT)
+    const float h = param_offset.z;
+    const float radius = 0.5f * param_size;
+    const float3 centre = (float3)(param_offset.x, param_offset.y, h);
+FGR_ITERATE
+    z = v3_sub(z, v3_uniform(centre));
+FGR_DISTANCE(v3_length(z) - radius)
+)");
+    const auto add = [&scene](const char* id, ParamType type, std::array<float, 3> value) {
+        scene.params.insert(scene.params.begin(), ParamInfo{.id = id,
+                                                            .type = type,
+                                                            .min_value = -4.0f,
+                                                            .max_value = 4.0f,
+                                                            .default_value = value});
+    };
+    add("offset", ParamType::Vec3, {0.1f, -0.2f, 0.3f});
+    add("size", ParamType::Float, {1.0f, 0, 0});
+    add("colour_mode", ParamType::Int, {0, 0, 0});
+    add("palette", ParamType::Int, {0, 0, 0});
+    add("base_colour", ParamType::Colour, {0.8f, 0.6f, 0.4f});
+    const std::vector<glm::vec3> points{{0.1f, -0.2f, 0.3f}, {1.1f, -0.2f, 0.3f}};
+    const ComputeDevice& device = shared_device();
+    for (const bool double_precision : {false, true}) {
+        if (double_precision && !device.info.has_fp64) continue;
+        for (const int width : {1, preferred_packet_width(device.info)}) {
+            SCOPED_TRACE(fmt::format("width {}, {}", width, double_precision ? "double" : "float"));
+            ProgramCache no_disk_cache{std::filesystem::path()};
+            std::optional<Renderer> built;
+            try {
+                built.emplace(
+                    device, no_disk_cache, scene,
+                    with_precision({width, FGR_EFFECT_FOG | FGR_EFFECT_GLOW}, double_precision));
+            } catch (const KernelBuildError& error) {
+                ADD_FAILURE() << error.what() << "\n" << error.build_log();
+                continue;
+            }
+            Renderer& renderer = *built;
+            const auto de = renderer.probe_de(points, default_param_values(scene));
+            EXPECT_NEAR(de[0], -0.5f, 1e-5f);
+            EXPECT_NEAR(de[1], 0.5f, 1e-5f);
+            FrameRequest request = test::default_view_request(scene);
+            request.width = 32;
+            request.height = 24;
+            EXPECT_GT(renderer.render(request).hits, 0);
+        }
+    }
+}
+
+// Mixing a lane value and a uniform one up is told how to fix it: before version 4 a vec3
+// parameter's component is a `real` (float16 in a 16-ray packet), which a float cannot hold; from
+// version 4 the parameter is a float3, which a vec3 helper does not take.
+TEST(KernelApi, AParameterReadAsTheWrongKindOfValueIsToldTheFix) {
+    const auto build_error = [](const std::string& source) {
+        Scene scene = test::inline_scene(source);
+        scene.params.insert(scene.params.begin(),
+                            ParamInfo{.id = "offset", .type = ParamType::Vec3});
+        ProgramCache no_disk_cache{std::filesystem::path()};
+        try {
+            Renderer renderer(shared_device(), no_disk_cache, scene, {16, 0});
+        } catch (const KernelBuildError& error) {
+            return std::string(error.what());
+        }
+        return std::string("built");
+    };
+    const std::string component_as_float = build_error(
+        "#define FGR_KERNEL_API 3\n"
+        "real scene_de(vec3 p, PARAMS) { const float h = param_offset.z; return p.z - h; }\n");
+    EXPECT_NE(component_as_float.find("from kernel API 4 (`#define FGR_KERNEL_API 4`"),
+              std::string::npos)
+        << component_as_float;
+    const std::string float3_as_vec3 = build_error(
+        "#define FGR_KERNEL_API 4\n"
+        "real scene_de(vec3 p, PARAMS) { return v3_length(v3_sub(p, param_offset)) - 1.0f; }\n");
+    EXPECT_NE(float3_as_vec3.find("pass v3_uniform(param_<id>)"), std::string::npos)
+        << float3_as_vec3;
 }
 
 // --- Version-2 helpers, through the kernel --------------------------------------------------
