@@ -56,7 +56,8 @@ inline vec3 fold_menger(vec3 p) {
 
 #if FGR_KERNEL_API >= 2
 /* Per-axis box fold (Mandelbox "ABox", Knighty's pseudo-Kleinian): coordinate i beyond +-limit.i
- * is reflected back about it. `limit` is a vec3, as a vec3 parameter gives it. An isometry. */
+ * is reflected back about it. `limit` is a vec3: v3_uniform(param_<id>) from a vec3 parameter
+ * (kernel API 4; API 2 and 3 pass the parameter itself). An isometry. */
 inline vec3 fold_box_axes(vec3 p, vec3 limit) {
     return v3(clamp(p.x, -limit.x, limit.x) * 2.0f - p.x,
               clamp(p.y, -limit.y, limit.y) * 2.0f - p.y,
