@@ -24,6 +24,9 @@ void add_check_command(CLI::App& app, CheckOptions& options) {
                     "only compile the scene's kernel: errors name the .cl file and line");
     std::vector<std::string> names = scene_check_names();
     check->add_option("--only", options.only, "run one check")->check(CLI::IsMember(names));
+    check->add_option("--set", options.assignments,
+                      "check at a parameter's value, as `fgr render --set` takes it: id=value "
+                      "(repeatable)");
     check->add_flag("--dev", options.dev,
                     "read the scene's .cl file from disk instead of the copy the plugin embeds");
     add_device_options(check, options.device, options.packet_width);
@@ -32,11 +35,15 @@ void add_check_command(CLI::App& app, CheckOptions& options) {
 int command_check(const CheckOptions& options) {
     const Scene loaded = scene_from_argument(options.scene);
     const Scene scene = scene_as_used(loaded, options.dev);
+    std::vector<float> params = default_param_values(scene);
+    for (const std::string& assignment : options.assignments) {
+        set_param_from_text(scene, params, assignment);  // a UsageError names the parameter
+    }
     const ComputeDevice device = open_requested_device(options.device);
     ProgramCache cache(ProgramCache::default_directory());
     std::optional<SceneChecker> built;
     try {
-        built.emplace(device, cache, scene, options.packet_width);  // compiles the kernel
+        built.emplace(device, cache, scene, options.packet_width, params);  // compiles the kernel
     } catch (const KernelBuildError& error) {
         std::fputs(conventional_build_log(error.build_log()).c_str(), stderr);
         const std::string summary = fmt::format(

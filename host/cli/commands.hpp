@@ -318,7 +318,8 @@ int command_bench_accuracy(const AccuracyOptions& options, int device_index);
 struct CheckOptions {
     std::string scene;  // an id, or a scene file by path
     bool compile_only = false;
-    std::optional<std::string> only;  // one check, by name (scene_check_names)
+    std::optional<std::string> only;       // one check, by name (scene_check_names)
+    std::vector<std::string> assignments;  // --set id=value: the values the checks run at
     bool dev = false;
     int device = -1;
     int packet_width = 0;  // 0: the device's preference

@@ -24,14 +24,7 @@ std::string range_text(const ParamInfo& param) {
 }
 
 std::string value_text(const ParamInfo& param) {
-    const auto& value = param.default_value;
-    if (param_components(param.type) == 3)
-        return fmt::format("{},{},{}", value[0], value[1], value[2]);
-    if (!param.choices.empty()) {
-        return param.choices.at(static_cast<size_t>(value[0] - param.min_value));
-    }
-    if (param.type == ParamType::Bool) return value[0] != 0.0f ? "true" : "false";
-    return fmt::format("{}", value[0]);
+    return param_text(param, param.default_value.data());
 }
 
 // A built-in's default the scene gave (ABI 1.4) says so.

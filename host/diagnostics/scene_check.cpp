@@ -13,6 +13,7 @@
 #include <limits>
 #include <map>
 #include <random>
+#include <stdexcept>
 
 #include "camera/camera.hpp"
 #include "scene/parameters.hpp"
@@ -232,8 +233,16 @@ const std::vector<std::string>& scene_check_names() {
 }
 
 SceneChecker::SceneChecker(const ComputeDevice& device, ProgramCache& cache, const Scene& scene,
-                           int packet_width)
-    : device_(device), cache_(cache), scene_(scene) {
+                           int packet_width, std::vector<float> params)
+    : device_(device),
+      cache_(cache),
+      scene_(scene),
+      params_(params.empty() ? default_param_values(scene) : std::move(params)) {
+    if (params_.size() != default_param_values(scene).size()) {
+        throw std::invalid_argument(
+            fmt::format("scene '{}': {} parameter values for a buffer of {}", scene.id,
+                        params_.size(), default_param_values(scene).size()));
+    }
     // An inside-only scene renders only by brute force.
     const RenderMode mode = scene.inside_only() ? RenderMode::Brute : RenderMode::Shaded;
     const int width = packet_width > 0 ? packet_width : preferred_packet_width(device.info);
@@ -276,14 +285,14 @@ CheckResult SceneChecker::finite_at_hard_points() {
     const std::string name = "hard-points", title = "DE and normal finite at hard points";
     if (auto skipped = skip_without_de(name, title)) return *skipped;
     CheckResult made = result(name, title);
-    const auto defaults = default_param_values(scene_);
+    const auto& checked = params_;
     const CameraView& view = scene_.cameras.front().view;
     const std::vector<glm::vec3> points{
         {0, 0, 0},          {-0.0f, -0.0f, -0.0f}, {1, 0, 0},     {0, 1, 0},    {0, 0, 1},
         {0, 0, -1},         {1e6f, 0, 0},          {0, -1e6f, 0}, {0, 0, 1e6f}, {1e6f, 1e6f, 1e6f},
         {-1e12f, 1e12f, 0}, {1e-30f, 0, 0},        view.position, view.target};
-    const auto distances = renderer_->probe_de(points, defaults);
-    const auto normals = renderer_->probe_normals(points, defaults, 1e-4f);
+    const auto distances = renderer_->probe_de(points, checked);
+    const auto normals = renderer_->probe_normals(points, checked, 1e-4f);
     Problems problems;
     for (size_t i = 0; i < points.size(); ++i) {
         if (!std::isfinite(distances[i])) {
@@ -295,13 +304,14 @@ CheckResult SceneChecker::finite_at_hard_points() {
             problems.add(fmt::format("the normal is not finite at {}", point_text(points[i])));
         }
     }
-    if (problems.any()) return fail(made, problems.summary() + " (default parameters)", kNanAdvice);
+    if (problems.any())
+        return fail(made, problems.summary() + " (at the checked parameters)", kNanAdvice);
     return pass(made, fmt::format("{} points, including the origin and 1e12", points.size()));
 }
 
 CheckResult SceneChecker::finite_for_hard_cameras() {
     CheckResult made = result("hard-cameras", "renders finite from hard camera placements");
-    const auto defaults = default_param_values(scene_);
+    const auto& checked = params_;
     const CameraView& home = scene_.cameras.front().view;
     Problems problems;
     const auto expect_finite = [&](const Frame& frame, const std::string& what) {
@@ -312,20 +322,20 @@ CheckResult SceneChecker::finite_for_hard_cameras() {
     CameraView inside = home;  // at the origin: inside most fractals, looking outwards
     inside.position = {0.0f, 0.0f, 0.0f};
     inside.target = {1.0f, 0.3f, 0.2f};
-    expect_finite(render(inside, defaults), "camera at the origin");
+    expect_finite(render(inside, checked), "camera at the origin");
     CameraView through_origin = home;  // the centre pixel's ray passes exactly through 0
     through_origin.target = {0.0f, 0.0f, 0.0f};
-    expect_finite(render(through_origin, defaults, 33, 33), "ray through the origin");
+    expect_finite(render(through_origin, checked, 33, 33), "ray through the origin");
     CameraView grazing = home;  // a narrow view along the silhouette
     const glm::vec3 side =
         glm::normalize(glm::cross(glm::vec3(home.target - home.position), home.up));
     grazing.target =
         home.target + glm::dvec3(side) * glm::length(home.target - home.position) * 0.5;
     grazing.fov_degrees = 5.0f;
-    expect_finite(render(grazing, defaults), "grazing view");
+    expect_finite(render(grazing, checked), "grazing view");
     CameraView far_away = home;
     far_away.position = home.target + (home.position - home.target) * 1000.0;
-    expect_finite(render(far_away, defaults), "distant camera");
+    expect_finite(render(far_away, checked), "distant camera");
     if (problems.any()) return fail(made, problems.summary(), kNanAdvice);
     return pass(made, "camera at the origin, a ray through it, grazing, 1000x away");
 }
@@ -339,7 +349,7 @@ CheckResult SceneChecker::finite_at_parameter_extremes() {
     for (size_t i = 0; i < scene_.params.size(); ++i) {
         const ParamInfo& param = scene_.params[i];
         for (float extreme : {param.min_value, param.max_value}) {
-            std::vector<float> values = default_param_values(scene_);
+            std::vector<float> values = params_;
             for (int c = 0; c < param_components(param.type); ++c) values[offsets[i] + c] = extreme;
             const std::string what = fmt::format("with {} = {:g}", param.id, extreme);
             ++settings;
@@ -369,7 +379,7 @@ CheckResult SceneChecker::lipschitz() {
                       title = "DE is 1-Lipschitz (grows no faster than distance)";
     if (auto skipped = skip_without_de(name, title)) return *skipped;
     CheckResult made = result(name, title);
-    const auto defaults = default_param_values(scene_);
+    const auto& checked = params_;
     std::mt19937 rng(11);
     std::uniform_real_distribution<float> unit(-1.0f, 1.0f);
     const auto first = region_points(3000, 5);
@@ -382,9 +392,9 @@ CheckResult SceneChecker::lipschitz() {
         const float step = radius * std::pow(10.0f, -3.0f + 2.5f * (unit(rng) + 1.0f) * 0.5f);
         second.push_back(p + direction * step);
     }
-    const auto de_first = renderer_->probe_de(first, defaults);
-    const auto de_second = renderer_->probe_de(second, defaults);
-    const float step_factor = param_value(scene_, defaults, "step_factor");
+    const auto de_first = renderer_->probe_de(first, checked);
+    const auto de_second = renderer_->probe_de(second, checked);
+    const float step_factor = param_value(scene_, checked, "step_factor");
     int violations = 0;
     float worst = 0.0f;
     size_t worst_pair = 0;
@@ -440,14 +450,14 @@ CheckResult SceneChecker::march_safety() {
                       title = "march steps never reach the surface (DE measured by bisection)";
     if (auto skipped = skip_without_de(name, title)) return *skipped;
     CheckResult made = result(name, title);
-    const auto defaults = default_param_values(scene_);
-    const float step_factor = param_value(scene_, defaults, "step_factor");
+    const auto& checked = params_;
+    const float step_factor = param_value(scene_, checked, "step_factor");
     const CameraView& view = scene_.cameras.front().view;
     const float radius = float(glm::length(view.position - view.target));
     std::vector<glm::vec3> candidates = region_points(120, 21);
     {
         constexpr int width = 48, height = 32;
-        const Frame frame = render(view, defaults, width, height);
+        const Frame frame = render(view, checked, width, height);
         const CameraBasis basis = camera_basis(view);
         for (int pixel = 0; pixel < width * height; pixel += 7) {
             const float t = frame.depth[size_t(pixel)];
@@ -459,7 +469,7 @@ CheckResult SceneChecker::march_safety() {
             }
         }
     }
-    const auto de = renderer_->probe_de(candidates, defaults);
+    const auto de = renderer_->probe_de(candidates, checked);
     std::vector<glm::vec3> centres;
     std::vector<float> steps;
     for (size_t i = 0; i < candidates.size(); ++i) {
@@ -488,14 +498,14 @@ CheckResult SceneChecker::march_safety() {
     const std::vector<std::vector<glm::vec3>> everywhere(centres.size(), sphere_directions(128));
     std::vector<glm::vec3> best(centres.size());
     std::vector<float> distance =
-        surface_distance(*renderer_, defaults, centres, everywhere, steps, best.data());
+        surface_distance(*renderer_, checked, centres, everywhere, steps, best.data());
     std::vector<std::vector<glm::vec3>> around;
     for (size_t c = 0; c < centres.size(); ++c) {
         around.push_back(std::isfinite(distance[c]) ? cap_directions(best[c], 0.25f, 48)
                                                     : std::vector<glm::vec3>{});
     }
     const std::vector<float> refined =
-        surface_distance(*renderer_, defaults, centres, around, steps, nullptr);
+        surface_distance(*renderer_, checked, centres, around, steps, nullptr);
     std::vector<float> ratios;
     float worst = 0.0f;
     size_t worst_centre = 0;
@@ -547,7 +557,7 @@ CheckResult SceneChecker::packet_agreement() {
         return made;
     }
     Renderer scalar(device_, cache_, scene_, KernelSwitches{1, scene_.effects});
-    const FrameRequest request{41, 30, scene_.cameras.front().view, default_param_values(scene_)};
+    const FrameRequest request{41, 30, scene_.cameras.front().view, params_};
     const Frame one = scalar.render(request);
     const Frame packets = renderer_->render(request);
     const PixelDifference d = pixel_difference(one, packets);
@@ -581,13 +591,13 @@ CheckResult SceneChecker::normals_at_hits() {
         made.detail = "an IFS scene has no distance estimate to take normals from";
         return made;
     }
-    const auto defaults = default_param_values(scene_);
+    const auto& checked = params_;
     const CameraView& view = scene_.cameras.front().view;
     const int width = 64, height = 48;
-    const Frame frame = render(view, defaults, width, height);
+    const Frame frame = render(view, checked, width, height);
     const CameraBasis basis = camera_basis(view);
     const float pixel = pixel_angle(basis, width);
-    const float footprint = param_value(scene_, defaults, "hit_threshold") * pixel;
+    const float footprint = param_value(scene_, checked, "hit_threshold") * pixel;
     std::vector<glm::vec3> hits;
     std::vector<float> depths;
     float eps = 1.0f;
@@ -615,7 +625,7 @@ CheckResult SceneChecker::normals_at_hits() {
     const size_t lanes = static_cast<size_t>(renderer_->switches().packet_width);
     std::vector<glm::vec3> copies;
     for (const glm::vec3& hit : hits) copies.insert(copies.end(), lanes, hit);
-    const auto distances = renderer_->probe_de(copies, defaults);
+    const auto distances = renderer_->probe_de(copies, checked);
     for (size_t i = 0; i < hits.size(); ++i) {
         if (!(std::abs(distances[i * lanes]) < 1.01f * footprint * depths[i])) {
             return fail(made,
@@ -627,7 +637,7 @@ CheckResult SceneChecker::normals_at_hits() {
                         "between calls, nothing read from other lanes)");
         }
     }
-    const auto normals = renderer_->probe_normals(hits, defaults, eps);
+    const auto normals = renderer_->probe_normals(hits, checked, eps);
     for (size_t i = 0; i < hits.size(); ++i) {
         const glm::vec3& n = normals[i];
         const bool finite = std::isfinite(n.x) && std::isfinite(n.y) && std::isfinite(n.z);
@@ -647,36 +657,39 @@ CheckResult SceneChecker::normals_at_hits() {
 // times the steps) the hit/miss verdict
 // agrees on at least 99.5% of pixels, and where both hit, at least 99% of depths agree within
 // four pixel footprints (a step that jumped over a thin part would stop behind it, deeper), at
-// the defaults, at over-relaxation 1.5 and at the largest allowed, 1.95.
+// the checked values, at over-relaxation 1.5 and at the largest allowed, 1.95.
 CheckResult SceneChecker::relaxed_steps() {
     const std::string name = "relaxed-steps",
                       title = "the march agrees with a cautious one (no holes, no overshoot)";
     if (auto skipped = skip_without_de(name, title)) return *skipped;
     CheckResult made = result(name, title);
-    const auto defaults = default_param_values(scene_);
+    const auto& checked = params_;
     const CameraView& view = scene_.cameras.front().view;
     // Half the scene's own step factor (a scene that already steps 0.45 DE needs a march finer
     // than that to check against), never over 0.5 nor under the parameter's range.
     const float cautious_step =
         std::max(scene_.find_param("step_factor")->min_value,
-                 std::min(0.5f, 0.5f * param_value(scene_, defaults, "step_factor")));
-    auto cautious_params = defaults;
+                 std::min(0.5f, 0.5f * param_value(scene_, checked, "step_factor")));
+    auto cautious_params = checked;
     set_param_from_text(scene_, cautious_params, fmt::format("step_factor={}", cautious_step));
     set_param_from_text(scene_, cautious_params, "over_relaxation=1");
-    const int max_steps = int(param_value(scene_, defaults, "max_steps"));
+    const int max_steps = int(param_value(scene_, checked, "max_steps"));
     set_param_from_text(scene_, cautious_params,
                         "max_steps=" + std::to_string(std::min(4 * max_steps, 4096)));
     const Frame cautious = render(view, cautious_params, 96, 72);
     // Hits are within hit_threshold * pixel_angle * t of the surface.
     const float footprint =
-        param_value(scene_, defaults, "hit_threshold") * pixel_angle(camera_basis(view), 96);
+        param_value(scene_, checked, "hit_threshold") * pixel_angle(camera_basis(view), 96);
     Problems problems;
     std::string measured;
     for (const char* relaxation : {"", "over_relaxation=1.5", "over_relaxation=1.95"}) {
-        auto params = defaults;
+        auto params = checked;
         if (*relaxation) set_param_from_text(scene_, params, relaxation);
         const Frame relaxed = render(view, params, 96, 72);
-        const char* what = *relaxation ? relaxation : "defaults";
+        const std::string what = *relaxation
+                                     ? relaxation
+                                     : fmt::format("over_relaxation={:g}",
+                                                   param_value(scene_, checked, "over_relaxation"));
         long disagree = 0, both = 0, deeper = 0;
         for (size_t i = 0; i < relaxed.depth.size(); ++i) {
             const float t = relaxed.depth[i], t_cautious = cautious.depth[i];
@@ -702,7 +715,7 @@ CheckResult SceneChecker::relaxed_steps() {
         }
     }
     if (problems.any()) {
-        const float step_factor = param_value(scene_, defaults, "step_factor");
+        const float step_factor = param_value(scene_, checked, "step_factor");
         return fail(made, problems.summary(),
                     fmt::format("the DE overestimates in places the march jumps over: lower "
                                 "step_factor (now {:g}; `fgr check` measures a safe one under "
@@ -714,7 +727,7 @@ CheckResult SceneChecker::relaxed_steps() {
 
 CheckResult SceneChecker::cameras_and_paths() {
     CheckResult made = result("cameras-and-paths", "every camera and camera path sees the scene");
-    const auto defaults = default_param_values(scene_);
+    const auto& checked = params_;
     Problems problems;
     const auto expect_picture = [&](const Frame& frame, const std::string& what) {
         if (const std::string problem = first_non_finite(frame); !problem.empty()) {
@@ -723,7 +736,7 @@ CheckResult SceneChecker::cameras_and_paths() {
         if (frame.hits <= 0) problems.add(what + " sees nothing");
     };
     for (const auto& camera : scene_.cameras) {
-        expect_picture(render(camera.view, defaults), "camera '" + camera.name + "'");
+        expect_picture(render(camera.view, checked), "camera '" + camera.name + "'");
     }
     if (scene_.camera_paths.empty()) problems.add("the scene has no camera path");
     int moments = 0;
@@ -732,7 +745,7 @@ CheckResult SceneChecker::cameras_and_paths() {
         for (float fraction : {0.0f, 0.37f, 0.81f, 1.0f}) {
             const float time = start + fraction * path.duration();
             ++moments;
-            expect_picture(render(evaluate_camera_path(path, time), defaults),
+            expect_picture(render(evaluate_camera_path(path, time), checked),
                            fmt::format("path '{}' at {:g} s", path.name, time));
         }
     }
@@ -756,7 +769,7 @@ CheckResult SceneChecker::default_view() {
         return skipped;
     }
     CheckResult made = result(name, title);
-    const Frame frame = render(scene_.cameras.front().view, default_param_values(scene_), 96, 64);
+    const Frame frame = render(scene_.cameras.front().view, params_, 96, 64);
     if (const std::string problem = first_non_finite(frame); !problem.empty()) {
         return fail(made, problem, kNanAdvice);
     }
@@ -810,6 +823,7 @@ SceneCheckReport SceneChecker::run_all(const std::optional<std::string>& only) {
         {"default-view", &SceneChecker::default_view}};
     SceneCheckReport report;
     report.scene_id = scene_.id;
+    report.settings = changed_params(scene_, params_);
     for (const std::string& name : scene_check_names()) {
         if (only && *only != name) continue;
         report.results.push_back((this->*checks.at(name))());
@@ -819,6 +833,13 @@ SceneCheckReport SceneChecker::run_all(const std::optional<std::string>& only) {
 
 std::string format_check_report(const SceneCheckReport& report) {
     std::string text;
+    std::string settings;
+    for (const std::string& setting : report.settings) {
+        settings += (settings.empty() ? "" : ", ") + setting;
+    }
+    text += report.settings.empty()
+                ? "checked at the scene's default parameters\n"
+                : fmt::format("checked at {} (the other parameters at their defaults)\n", settings);
     int failed = 0, skipped = 0;
     for (const CheckResult& check : report.results) {
         const char* verdict = check.status == CheckStatus::Passed   ? "ok     "

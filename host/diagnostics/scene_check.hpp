@@ -30,6 +30,9 @@ struct CheckResult {
 
 struct SceneCheckReport {
     std::string scene_id;
+    // The parameters checked at other values than their defaults, as "id=value" (--set's form);
+    // empty when every parameter was at its default.
+    std::vector<std::string> settings;
     std::vector<CheckResult> results;
     bool passed() const;  // no check failed (skipped ones do not count)
 };
@@ -40,14 +43,17 @@ const std::vector<std::string>& scene_check_names();
 class SceneChecker {
 public:
     // Builds the scene's program (shaded, or brute force for an inside-only scene) at
-    // `packet_width` (0: the device's preference). Throws KernelBuildError when the scene's source
-    // does not compile.
+    // `packet_width` (0: the device's preference). The checks run at the parameter values
+    // `params` (laid out as default_param_values gives them; empty: the scene's defaults), as a
+    // scene's author renders it with `--set`; "the extremes" move one parameter at a time from
+    // there. Throws KernelBuildError when the scene's source does not compile,
+    // std::invalid_argument when `params` is not the scene's layout.
     SceneChecker(const ComputeDevice& device, ProgramCache& cache, const Scene& scene,
-                 int packet_width = 0);
+                 int packet_width = 0, std::vector<float> params = {});
     ~SceneChecker();
 
     // The DE and the shading normal are finite at the origin, the axes, huge and tiny points and
-    // the default camera's eye and target.
+    // the default camera's eye and target. (Every check runs at the checked parameters.)
     CheckResult finite_at_hard_points();
     // Renders with the camera at the origin, through the origin, grazing and far away are finite.
     CheckResult finite_for_hard_cameras();
@@ -83,11 +89,13 @@ private:
     const ComputeDevice& device_;
     ProgramCache& cache_;
     const Scene& scene_;
+    std::vector<float> params_;  // the values every check runs at
     std::unique_ptr<Renderer> renderer_;
 };
 
-// The report as a beginner reads it: one line per check (ok / FAILED / skipped), what was
-// measured, and under each failure what to do; ends with a one-line verdict.
+// The report as a beginner reads it: which parameter values it checked, one line per check (ok /
+// FAILED / skipped), what was measured, and under each failure what to do; ends with a one-line
+// verdict.
 std::string format_check_report(const SceneCheckReport& report);
 
 }  // namespace fgr

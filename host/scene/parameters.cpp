@@ -153,6 +153,31 @@ void set_param_from_text(const Scene& scene, std::vector<float>& values,
         fmt::format("scene '{}' has no parameter '{}' (see `fgr list`)", scene.id, id));
 }
 
+std::string param_text(const ParamInfo& param, const float* value) {
+    if (param_components(param.type) == 3) {
+        return fmt::format("{},{},{}", value[0], value[1], value[2]);
+    }
+    const auto index = static_cast<size_t>(value[0] - param.min_value);
+    if (!param.choices.empty() && value[0] >= param.min_value && index < param.choices.size()) {
+        return param.choices[index];
+    }
+    if (param.type == ParamType::Bool) return value[0] != 0.0f ? "true" : "false";
+    return fmt::format("{}", value[0]);
+}
+
+std::vector<std::string> changed_params(const Scene& scene, const std::vector<float>& values) {
+    std::vector<std::string> changed;
+    const auto offsets = param_offsets(scene);
+    for (size_t i = 0; i < scene.params.size(); ++i) {
+        const ParamInfo& param = scene.params[i];
+        const float* value = values.data() + offsets[i];
+        if (!std::equal(value, value + param_components(param.type), param.default_value.begin())) {
+            changed.push_back(param.id + "=" + param_text(param, value));
+        }
+    }
+    return changed;
+}
+
 float param_value(const Scene& scene, const std::vector<float>& values, std::string_view id) {
     const auto offsets = param_offsets(scene);
     for (size_t i = 0; i < scene.params.size(); ++i) {

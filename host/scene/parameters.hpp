@@ -34,6 +34,14 @@ void set_param_from_text(const Scene& scene, std::vector<float>& values,
 std::vector<float> carry_param_values(const Scene& from, const std::vector<float>& values,
                                       const Scene& to);
 
+// A parameter's value at `value` (its components) as --set takes it: a number, an enum's choice
+// name, true/false, or x,y,z.
+std::string param_text(const ParamInfo& param, const float* value);
+
+// "id=value" (param_text) for each parameter whose value in `values` differs from its default, in
+// the scene's order: what a user set, e.g. for a report to say what it was made at.
+std::vector<std::string> changed_params(const Scene& scene, const std::vector<float>& values);
+
 // Reads a parameter's first component back, e.g. for the built-in quality knobs.
 float param_value(const Scene& scene, const std::vector<float>& values, std::string_view id);
 

@@ -73,6 +73,26 @@ TEST_F(CheckCommandTest, ABuiltInSceneByIdPassesOneCheck) {
     EXPECT_TRUE(contains(result.out, "mandelbulb: all 1 checks passed")) << result.out;
 }
 
+// The scaled fixture's DE is exact at its default scale 1 and twice the distance at scale 2:
+// `--set` checks at the value a scene's author renders with, and the report says which values it
+// checked at; a value the parameter does not take is a usage error naming it.
+TEST_F(CheckCommandTest, SetChecksAtTheGivenValuesAndTheReportSaysWhich) {
+    const std::string plugin = (kFixtureDir / "scaled" / "scaled_de.so").string();
+    const RunResult at_default = run({"check", plugin, "--only", "lipschitz"});
+    EXPECT_EQ(at_default.exit_code, 0) << at_default;
+    EXPECT_TRUE(contains(at_default.out, "checked at the scene's default parameters"))
+        << at_default.out;
+    const RunResult set = run({"check", plugin, "--only", "lipschitz", "--set", "scale=2"});
+    EXPECT_EQ(set.exit_code, 1) << set;
+    EXPECT_TRUE(contains(set.out, "checked at scale=2 (the other parameters at their defaults)"))
+        << set.out;
+    EXPECT_TRUE(contains(set.out, "FAILED  lipschitz")) << set.out;
+    EXPECT_TRUE(contains(set.out, "fix: set step_factor <= 0.5")) << set.out;
+    const RunResult outside = run({"check", plugin, "--set", "scale=9"});
+    EXPECT_EQ(outside.exit_code, 2) << outside;
+    EXPECT_TRUE(contains(outside.err, "'scale'")) << outside.err;
+}
+
 TEST_F(CheckCommandTest, AnUnknownSceneOrFileIsAUsageError) {
     EXPECT_EQ(run({"check", "no-such-scene"}).exit_code, 2);
     const RunResult missing = run({"check", (dir() / "missing.so").string()});
