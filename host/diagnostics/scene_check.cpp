@@ -77,6 +77,14 @@ const char* kNanAdvice =
     "or an overflow: guard the DE where that can happen (e.g. max(r, 1e-6f) before log(r), a "
     "bailout before the orbit overflows), or narrow the parameter's range";
 
+// A DE that jumps (SceneChecker::lipschitz_sample tells a jump from a steep slope).
+const char* kJumpAdvice =
+    "the DE is discontinuous, which no step factor makes safe. In an iterated fractal that is "
+    "the bailout stopping neighbouring points at different iterations, so their distances are "
+    "measured at different depths: remove the bailout (FGR_ORBIT(n, FGR_NO_BAILOUT); a folding "
+    "fractal such as a KIFS stays bounded without one) or run the same number of iterations in "
+    "every lane";
+
 CheckResult result(const std::string& name, const std::string& title) {
     CheckResult made;
     made.name = name;
@@ -374,11 +382,21 @@ CheckResult SceneChecker::finite_at_parameter_extremes() {
 
 // Pairs of points around the default view, 1e-3 to 10^-0.5 of the camera's distance apart.
 // The march advances step_factor * DE, so that is what must not grow faster than the distance.
-CheckResult SceneChecker::lipschitz() {
-    const std::string name = "lipschitz",
-                      title = "DE is 1-Lipschitz (grows no faster than distance)";
-    if (auto skipped = skip_without_de(name, title)) return *skipped;
-    CheckResult made = result(name, title);
+//
+// Where it does, the pairs over the bound (the worst kJumpPairs of them) are told apart: a DE that
+// is steep, with Lipschitz constant L however large, differs across a pair by at most L times
+// their distance, so halving the pair (kept on the side where the DE changes more) halves the
+// difference; a DE that jumps, taking different values on the two sides of a surface, differs by
+// as much however close the points get. After kHalvings halvings (1/1024 of the distance) a steep
+// pair keeps about 1/1024 of its difference, and a pair keeping 1/8 of it or more is a jump: the
+// DE would have to be 128 times steeper there than on average across the pair to look like one.
+// Iterated fractals jump where a bailout stops neighbouring points at different iterations, and
+// measures their distance at different depths; no step factor makes a jump safe.
+const SceneChecker::LipschitzSample& SceneChecker::lipschitz_sample() {
+    if (lipschitz_sample_) return *lipschitz_sample_;
+    constexpr size_t kJumpPairs = 64;
+    constexpr int kHalvings = 10;
+    LipschitzSample& sample = lipschitz_sample_.emplace();
     const auto& checked = params_;
     std::mt19937 rng(11);
     std::uniform_real_distribution<float> unit(-1.0f, 1.0f);
@@ -394,42 +412,111 @@ CheckResult SceneChecker::lipschitz() {
     }
     const auto de_first = renderer_->probe_de(first, checked);
     const auto de_second = renderer_->probe_de(second, checked);
-    const float step_factor = param_value(scene_, checked, "step_factor");
-    int violations = 0;
-    float worst = 0.0f;
-    size_t worst_pair = 0;
+    sample.step_factor = param_value(scene_, checked, "step_factor");
+    sample.pairs = first.size();
+    // Inside the set a DE's value is not a distance (the march stops there): compare the
+    // distances to the set, max(DE, 0).
+    const auto outside = [](float de) { return std::max(de, 0.0f); };
+    std::vector<std::pair<float, size_t>> over;  // (ratio, pair) over the bound
     for (size_t i = 0; i < first.size(); ++i) {
         if (!std::isfinite(de_first[i]) || !std::isfinite(de_second[i])) {
             const bool first_bad = !std::isfinite(de_first[i]);
-            return fail(
-                made,
+            sample.non_finite =
                 fmt::format("DE is {} at {}", value_text(first_bad ? de_first[i] : de_second[i]),
-                            point_text(first_bad ? first[i] : second[i])),
-                kNanAdvice);
+                            point_text(first_bad ? first[i] : second[i]));
+            return sample;
         }
-        // Inside the set a DE's value is not a distance (the march stops there): compare the
-        // distances to the set, max(DE, 0).
         const float separation = glm::length(first[i] - second[i]);
-        const float ratio = step_factor *
-                            std::abs(std::max(de_first[i], 0.0f) - std::max(de_second[i], 0.0f)) /
-                            separation;
-        if (ratio > worst) {
-            worst = ratio;
-            worst_pair = i;
+        const float ratio = sample.step_factor *
+                            std::abs(outside(de_first[i]) - outside(de_second[i])) / separation;
+        if (ratio > sample.worst) {
+            sample.worst = ratio;
+            sample.worst_near = first[i];
         }
         // Float rounding of two DE values near |p| ~ radius allows a small absolute slack.
-        violations += ratio > 1.02f + 2e-6f * radius / separation;
+        if (ratio > 1.02f + 2e-6f * radius / separation) over.emplace_back(ratio, i);
     }
+    sample.violations = long(over.size());
+    std::sort(over.begin(), over.end(), std::greater<>());
+    const size_t examined = std::min(over.size(), kJumpPairs);
+    std::vector<glm::vec3> a, b;
+    std::vector<float> da, db, start;
+    for (size_t k = 0; k < examined; ++k) {
+        const size_t i = over[k].second;
+        a.push_back(first[i]);
+        b.push_back(second[i]);
+        da.push_back(outside(de_first[i]));
+        db.push_back(outside(de_second[i]));
+        start.push_back(std::abs(da.back() - db.back()));
+    }
+    for (int h = 0; h < kHalvings && examined > 0; ++h) {
+        std::vector<glm::vec3> middles;
+        for (size_t k = 0; k < examined; ++k) middles.push_back(0.5f * (a[k] + b[k]));
+        const auto de_middle = renderer_->probe_de(middles, checked);
+        for (size_t k = 0; k < examined; ++k) {
+            const float dm = std::isfinite(de_middle[k]) ? outside(de_middle[k]) : da[k];
+            if (std::abs(da[k] - dm) >= std::abs(dm - db[k])) {
+                b[k] = middles[k], db[k] = dm;
+            } else {
+                a[k] = middles[k], da[k] = dm;
+            }
+        }
+    }
+    // The pairs not examined are less steep than these, and taken to be of the same kinds.
+    sample.examined = long(examined);
+    for (size_t k = 0; k < examined; ++k) {
+        const float kept = std::abs(da[k] - db[k]);
+        if (kept >= start[k] / 8.0f) {
+            ++sample.jumps;
+            if (kept > sample.largest_jump) {
+                sample.largest_jump = kept;
+                sample.jump_near = 0.5f * (a[k] + b[k]);
+            }
+        } else {
+            sample.worst_steep = std::max(sample.worst_steep, over[k].first);
+        }
+    }
+    return sample;
+}
+
+std::string SceneChecker::jump_text() {
+    const LipschitzSample& sample = lipschitz_sample();
+    return fmt::format(
+        "the DE jumps by up to {:.3g} near {} ({} of the {} worst pairs still differ by over "
+        "an eighth as much 1024 times closer: a discontinuity, not a steep slope)",
+        sample.largest_jump, point_text(sample.jump_near), sample.jumps, sample.examined);
+}
+
+std::string SceneChecker::step_factor_advice(const std::string& step_advice) {
+    const LipschitzSample& sample = lipschitz_sample();
+    if (sample.jumps == 0) return step_advice;
+    if (sample.jumps == sample.examined) return kJumpAdvice;
+    return std::string(kJumpAdvice) + "; then, where the DE is steep rather than broken, " +
+           step_advice;
+}
+
+CheckResult SceneChecker::lipschitz() {
+    const std::string name = "lipschitz",
+                      title = "DE is 1-Lipschitz (grows no faster than distance)";
+    if (auto skipped = skip_without_de(name, title)) return *skipped;
+    CheckResult made = result(name, title);
+    const LipschitzSample& sample = lipschitz_sample();
+    if (!sample.non_finite.empty()) return fail(made, sample.non_finite, kNanAdvice);
+    const float step_factor = sample.step_factor;
     const std::string measured = fmt::format(
-        "largest step_factor * |dDE| / |dp| = {:.3f} over {} pairs", worst, first.size());
-    if (violations > 0) {
-        return fail(made,
-                    fmt::format("{}: the DE changes up to {:.2f}x faster than distance near {} "
-                                "({} pairs over 1.02)",
-                                measured, worst, point_text(first[worst_pair]), violations),
-                    fmt::format("set step_factor <= {} (now {:g}), or fix the DE's derivative "
-                                "estimate",
-                                safe_step_factor(step_factor, worst), step_factor));
+        "largest step_factor * |dDE| / |dp| = {:.3f} over {} pairs", sample.worst, sample.pairs);
+    if (sample.violations > 0) {
+        std::string detail = fmt::format(
+            "{}: the DE changes up to {:.2f}x faster than distance near {} ({} pairs over 1.02)",
+            measured, sample.worst, point_text(sample.worst_near), sample.violations);
+        if (sample.jumps > 0) detail += "; " + jump_text();
+        // Where the DE only jumps, the step factor that would be safe is that of its steep parts.
+        const float steep = sample.jumps > 0 ? sample.worst_steep : sample.worst;
+        return fail(
+            made, detail,
+            step_factor_advice(fmt::format("set step_factor <= {} (now {:g}), or fix the "
+                                           "DE's derivative estimate",
+                                           safe_step_factor(step_factor, steep), step_factor)));
     }
     return pass(made, measured);
 }
@@ -532,14 +619,16 @@ CheckResult SceneChecker::march_safety() {
         "{} points",
         step_factor, worst, ratios[ratios.size() / 2], ratios.size());
     if (worst > 1.01f) {
-        return fail(made,
-                    fmt::format("DE overestimates by up to {:.2f}x near {} (step {:.3g}, surface "
-                                "at {:.3g}); {}",
-                                worst, point_text(centres[worst_centre]), steps[worst_centre],
-                                distance[worst_centre], measured),
-                    fmt::format("set step_factor <= {} (now {:g}) in FGR_MARCH, or make the DE "
-                                "smaller where it overestimates",
-                                safe_step_factor(step_factor, worst), step_factor));
+        return fail(
+            made,
+            fmt::format("DE overestimates by up to {:.2f}x near {} (step {:.3g}, surface "
+                        "at {:.3g}); {}",
+                        worst, point_text(centres[worst_centre]), steps[worst_centre],
+                        distance[worst_centre], measured),
+            step_factor_advice(fmt::format("set step_factor <= {} (now {:g}) in "
+                                           "FGR_MARCH, or make the DE smaller where it "
+                                           "overestimates",
+                                           safe_step_factor(step_factor, worst), step_factor)));
     }
     return pass(made, measured);
 }
@@ -717,10 +806,11 @@ CheckResult SceneChecker::relaxed_steps() {
     if (problems.any()) {
         const float step_factor = param_value(scene_, checked, "step_factor");
         return fail(made, problems.summary(),
-                    fmt::format("the DE overestimates in places the march jumps over: lower "
-                                "step_factor (now {:g}; `fgr check` measures a safe one under "
-                                "march-safety) or make the DE smaller there",
-                                step_factor));
+                    step_factor_advice(
+                        fmt::format("the DE overestimates in places the march jumps over: lower "
+                                    "step_factor (now {:g}; `fgr check` measures a safe one under "
+                                    "march-safety) or make the DE smaller there",
+                                    step_factor)));
     }
     return pass(made, measured);
 }

@@ -6,6 +6,7 @@
 // Each check reports what it measured and, when it fails, what the scene's author can change.
 // Checks that need a distance estimator are skipped, with the reason, for inside-only and IFS
 // scenes.
+#include <glm/vec3.hpp>
 #include <memory>
 #include <optional>
 #include <string>
@@ -81,6 +82,28 @@ public:
     Renderer& renderer() { return *renderer_; }
 
 private:
+    // What the Lipschitz check measured over its pairs of points (scene_check.cpp says how jumps
+    // are told from steep slopes); measured once, and read again by the checks whose advice
+    // depends on it.
+    struct LipschitzSample {
+        std::string non_finite;  // "DE is NaN at (...)" when a pair's DE is not finite
+        float step_factor = 1.0f;
+        size_t pairs = 0;
+        float worst = 0.0f;  // the largest step_factor * |dDE| / |dp|
+        glm::vec3 worst_near{0.0f};
+        long violations = 0;        // pairs over the bound
+        long examined = 0;          // of those, the worst, halved towards the change
+        long jumps = 0;             // examined pairs that kept their difference: the DE jumps
+        float largest_jump = 0.0f;  // the largest difference kept
+        glm::vec3 jump_near{0.0f};
+        float worst_steep = 0.0f;  // the largest ratio over the bound that is not a jump
+    };
+    const LipschitzSample& lipschitz_sample();
+    std::string jump_text();
+    // `step_advice` (lower the step factor) as it stands for a DE that is only steep; where the DE
+    // jumps, the advice names the likely cause, a bailout, first.
+    std::string step_factor_advice(const std::string& step_advice);
+
     Frame render(const CameraView& view, const std::vector<float>& params, int width = 48,
                  int height = 32);
     std::vector<glm::vec3> region_points(int count, unsigned seed) const;
@@ -91,6 +114,7 @@ private:
     const Scene& scene_;
     std::vector<float> params_;  // the values every check runs at
     std::unique_ptr<Renderer> renderer_;
+    std::optional<LipschitzSample> lipschitz_sample_;
 };
 
 // The report as a beginner reads it: which parameter values it checked, one line per check (ok /

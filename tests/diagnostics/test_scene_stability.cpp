@@ -82,12 +82,50 @@ TEST_F(SceneCheckTest, AnOverestimateIsMeasuredAndTheSafeStepFactorAdvised) {
     ASSERT_EQ(lipschitz.status, CheckStatus::Failed) << failures(report);
     EXPECT_NE(lipschitz.advice.find("set step_factor <= 0.76"), std::string::npos)
         << lipschitz.advice;
+    // A steep DE is not a broken one: nothing about jumps or a bailout.
+    EXPECT_EQ(lipschitz.detail.find("jumps"), std::string::npos) << lipschitz.detail;
+    EXPECT_EQ(lipschitz.advice.find("bailout"), std::string::npos) << lipschitz.advice;
+    EXPECT_EQ(safety.advice.find("bailout"), std::string::npos) << safety.advice;
     EXPECT_FALSE(report.passed());
     EXPECT_NE(format_check_report(report).find("FAILED  march-safety"), std::string::npos);
 
     const SceneCheckReport advised = check(ball(de, 0.76f));
     EXPECT_EQ(find_check(advised, "march-safety").status, CheckStatus::Passed) << failures(advised);
     EXPECT_EQ(find_check(advised, "lipschitz").status, CheckStatus::Passed) << failures(advised);
+}
+
+// A folding KIFS (the Sierpinski tetrahedron) with a bailout: neighbouring points escape at
+// different iterations, so their distances are measured at different depths and the DE jumps. The
+// checks say so and name the bailout, where a smaller step factor (the Lipschitz ratio asks for
+// 0.09) would only crawl; without the bailout the same KIFS passes.
+TEST_F(SceneCheckTest, ADistanceThatJumpsAtABailoutNamesTheBailout) {
+    const auto kifs = [](const char* bailout) {
+        return test::inline_scene(std::string("#define FGR_KERNEL_API 4\n") + "FGR_ORBIT(10, " +
+                                  bailout + R"()
+FGR_ITERATE
+    z = fold_sierpinski(z);
+    z = scale_about(z, 2.0f, v3_splat(1.0f, 1.0f, 1.0f));
+    dr *= 2.0f;
+FGR_DISTANCE((v3_length(z) - 1.7320508f) / dr)
+)");
+    };
+    const Scene broken = kifs("2.0f");
+    SceneChecker checker(shared_device(), cache_, broken);
+    const CheckResult lipschitz = checker.lipschitz();
+    ASSERT_EQ(lipschitz.status, CheckStatus::Failed) << lipschitz.detail;
+    EXPECT_NE(lipschitz.detail.find("the DE jumps by up to"), std::string::npos)
+        << lipschitz.detail;
+    EXPECT_NE(lipschitz.advice.find("remove the bailout"), std::string::npos) << lipschitz.advice;
+    EXPECT_EQ(lipschitz.advice.find("set step_factor"), std::string::npos) << lipschitz.advice;
+    const CheckResult relaxed = checker.relaxed_steps();
+    if (relaxed.status == CheckStatus::Failed) {
+        EXPECT_NE(relaxed.advice.find("remove the bailout"), std::string::npos) << relaxed.advice;
+    }
+
+    const Scene fixed = kifs("FGR_NO_BAILOUT");
+    SceneChecker fixed_checker(shared_device(), cache_, fixed);
+    const CheckResult continuous = fixed_checker.lipschitz();
+    EXPECT_EQ(continuous.status, CheckStatus::Passed) << continuous.detail << continuous.advice;
 }
 
 // The strength the bisection is argued to have (scene_check.cpp): 10% too large fails.
