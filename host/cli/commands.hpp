@@ -91,8 +91,9 @@ void add_precision_option(CLI::App* command, Precision& precision, const std::st
 void add_prepass_option(CLI::App* command, bool& prepass);
 // --mode and the path tracer's options, shared by render, view and bench.
 struct ModeOptions {
-    std::optional<std::string> mode;    // default: the scene's (Scene::default_mode)
-    std::string environment = "sky";    // sky, studio, uniform[:RADIANCE] or an .hdr/.exr file
+    std::optional<std::string> mode;  // default: the scene's (Scene::default_mode)
+    // sky, studio, uniform[:RADIANCE] or an .hdr/.exr file; unset: the scene's own, else the sky
+    std::optional<std::string> environment;
     float environment_rotation = 0.0f;  // degrees about the up axis
     float environment_intensity = 1.0f;
     std::optional<float> turbidity;
@@ -113,7 +114,8 @@ RenderMode chosen_mode(const ModeOptions& options, const Scene& scene);
 // The path settings the options ask for, the environment loaded or generated (UsageError for
 // bad values, RuntimeFailure for an environment file that cannot be read).
 PathSettings chosen_path_settings(const ModeOptions& options, const Scene& scene);
-// The same without an environment, and the environment asked for (UsageError for bad values).
+// The same without an environment, and the environment asked for (UsageError for bad values),
+// `given` when the options name one (--environment, or the sky's --turbidity or --sun-*).
 PathSettings path_settings_from(const ModeOptions& options);
 EnvironmentChoice environment_choice_from(const ModeOptions& options);
 

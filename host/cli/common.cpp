@@ -159,8 +159,10 @@ void add_mode_options(CLI::App* command, ModeOptions& options) {
     const std::string path = "Path tracing (--mode path)";
     command
         ->add_option("--environment", options.environment,
-                     "what lights the scene: sky (default), studio, uniform[:RADIANCE or R,G,B] "
-                     "or an equirectangular .hdr/.exr file")
+                     "what lights the scene besides its own lights: sky, studio, "
+                     "uniform[:RADIANCE or R,G,B] or an equirectangular .hdr/.exr file; default: "
+                     "the scene's own environment, else sky. Under the sky its sun takes the place "
+                     "of the scene's key light (its first directional light)")
         ->group(path);
     command
         ->add_option("--environment-rotation", options.environment_rotation,
@@ -206,7 +208,8 @@ void add_mode_options(CLI::App* command, ModeOptions& options) {
         ->group(path);
     command
         ->add_flag("--no-scene-lights", options.no_scene_lights,
-                   "light the scene by the environment alone")
+                   "light the scene by the environment alone (the sky keeps its sun): what a "
+                   "furnace test with --environment uniform wants")
         ->group(path);
     command->add_option("--seed", options.seed, "noise pattern of the path tracer")->group(path);
 }
@@ -241,14 +244,18 @@ PathSettings path_settings_from(const ModeOptions& options) {
 
 EnvironmentChoice environment_choice_from(const ModeOptions& options) {
     EnvironmentChoice choice;
-    try {
-        choice = parse_environment(options.environment);
-    } catch (const std::invalid_argument& error) {
-        throw UsageError(error.what());
+    if (options.environment) {
+        try {
+            choice = parse_environment(*options.environment);
+        } catch (const std::invalid_argument& error) {
+            throw UsageError(error.what());
+        }
     }
     choice.rotation_degrees = options.environment_rotation;
     choice.intensity = options.environment_intensity;
     if (options.turbidity) choice.sky.turbidity = *options.turbidity;
+    // Settings of the sky name it, as --environment sky does.
+    if (options.turbidity || options.sun_elevation || options.sun_azimuth) choice.given = true;
     if (options.sun_elevation || options.sun_azimuth) {
         choice.sun_from_scene = false;
         if (options.sun_elevation) choice.sky.sun_elevation_degrees = *options.sun_elevation;
@@ -263,7 +270,8 @@ EnvironmentChoice environment_choice_from(const ModeOptions& options) {
 
 PathSettings chosen_path_settings(const ModeOptions& options, const Scene& scene) {
     PathSettings settings = path_settings_from(options);
-    const EnvironmentChoice choice = environment_choice_from(options);
+    const EnvironmentChoice choice =
+        with_scene_environment(environment_choice_from(options), scene);
     try {
         settings.environment = prepare_environment(choice, scene);
     } catch (const std::invalid_argument& error) {
@@ -271,7 +279,9 @@ PathSettings chosen_path_settings(const ModeOptions& options, const Scene& scene
     } catch (const std::runtime_error& error) {
         throw RuntimeFailure(error.what());
     }
-    spdlog::info("environment: {}", settings.environment->description);
+    spdlog::info("environment: {}{}; lit by {}", settings.environment->description,
+                 choice.given || scene.environment.empty() ? "" : " (the scene's own)",
+                 path_lights_text(choice, scene, settings.scene_lights));
     return settings;
 }
 

@@ -82,6 +82,9 @@ void print_scene(const Scene& scene, bool described) {
                           : scene.inside_only() ? "inside test only, no DE (brute)"
                                                 : "distance estimator (shaded, path, brute)";
     fmt::print("  surface: {}; default mode {}\n", surface, render_mode_name(scene.default_mode));
+    fmt::print("  path mode environment: {}\n", scene.environment.empty()
+                                                    ? "sky (fgr's default)"
+                                                    : scene.environment + " (the scene's own)");
 }
 
 }  // namespace

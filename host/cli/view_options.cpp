@@ -8,6 +8,7 @@
 #include <algorithm>
 
 #include "image/embedded_view.hpp"
+#include "render/environment.hpp"
 #include "render/sample_budget.hpp"
 #include "scene/effects.hpp"
 #include "scene/scene.hpp"
@@ -59,6 +60,8 @@ void apply_mode(ModeOptions& mode, const ViewFile& view, const TypedOptions& typ
     if (!typed.has("no-light-sampling")) mode.no_light_sampling = !path.light_sampling;
     if (!typed.has("no-mis")) mode.no_mis = !path.mis;
     if (!typed.has("no-scene-lights")) mode.no_scene_lights = !path.scene_lights;
+    // The view names what lit it, the scene's own environment included, so it renders the same
+    // even where the scene's own has changed since.
     if (!typed.has("environment")) mode.environment = path.environment;
     if (!typed.has("environment-rotation")) mode.environment_rotation = path.environment_rotation;
     if (!typed.has("environment-intensity")) {
@@ -231,7 +234,11 @@ ViewFile view_of_render(const Scene& scene, const FrameRequest& request,
         path.light_sampling = !choices.no_light_sampling;
         path.mis = !choices.no_mis;
         path.scene_lights = !choices.no_scene_lights;
-        path.environment = choices.environment;
+        // What lit the render, so that the view renders it again: the environment typed, else
+        // the sky's settings typed name the sky, else the scene's own, else the sky.
+        path.environment = choices.environment ? *choices.environment
+                                               : environment_argument(with_scene_environment(
+                                                     environment_choice_from(choices), scene));
         path.environment_rotation = choices.environment_rotation;
         path.environment_intensity = choices.environment_intensity;
         path.turbidity = choices.turbidity;

@@ -12,6 +12,7 @@
 #include <string>
 
 #include "image/hdr_io.hpp"
+#include "scene/environment_spec.hpp"
 
 namespace fgr {
 namespace {
@@ -526,36 +527,6 @@ EnvironmentInfo environment_info(const EnvironmentTables& tables, double rotatio
 
 namespace {
 
-float parse_float(std::string_view text, std::string_view what) {
-    const std::string copy(text);
-    size_t used = 0;
-    float value = 0.0f;
-    try {
-        value = std::stof(copy, &used);
-    } catch (const std::exception&) {
-        used = 0;
-    }
-    if (used != copy.size() || copy.empty() || !std::isfinite(value) || value < 0.0f) {
-        throw std::invalid_argument(
-            fmt::format("{}: '{}' is not a non-negative number", what, text));
-    }
-    return value;
-}
-
-glm::vec3 parse_radiance(std::string_view text) {
-    const std::string what = "--environment uniform:RADIANCE";
-    const size_t first = text.find(',');
-    if (first == std::string_view::npos) return glm::vec3(parse_float(text, what));
-    const size_t second = text.find(',', first + 1);
-    if (second == std::string_view::npos || text.find(',', second + 1) != std::string_view::npos) {
-        throw std::invalid_argument(
-            fmt::format("{}: give one value or R,G,B, not '{}'", what, text));
-    }
-    return {parse_float(text.substr(0, first), what),
-            parse_float(text.substr(first + 1, second - first - 1), what),
-            parse_float(text.substr(second + 1), what)};
-}
-
 // The first directional light of the scene, the sky's sun unless the user placed it.
 const Light* key_light(const Scene& scene) {
     const auto found = std::find_if(scene.lights.begin(), scene.lights.end(), [](const Light& l) {
@@ -567,23 +538,12 @@ const Light* key_light(const Scene& scene) {
 }  // namespace
 
 EnvironmentChoice parse_environment(std::string_view text) {
+    const EnvironmentSpec spec = parse_environment_spec(text, "--environment");
     EnvironmentChoice choice;
-    if (text == "sky") {
-        choice.kind = EnvironmentKind::Sky;
-    } else if (text == "studio") {
-        choice.kind = EnvironmentKind::Studio;
-    } else if (text == "uniform") {
-        choice.kind = EnvironmentKind::Uniform;
-    } else if (text.starts_with("uniform:")) {
-        choice.kind = EnvironmentKind::Uniform;
-        choice.radiance = parse_radiance(text.substr(8));
-    } else if (text.empty()) {
-        throw std::invalid_argument(
-            "--environment: give sky, studio, uniform[:RADIANCE] or an .hdr/.exr file");
-    } else {
-        choice.kind = EnvironmentKind::File;
-        choice.file = std::filesystem::path(std::string(text));
-    }
+    choice.kind = spec.kind;
+    choice.radiance = spec.radiance;
+    choice.file = spec.file;
+    choice.given = true;
     return choice;
 }
 
@@ -610,6 +570,40 @@ std::string environment_argument(const EnvironmentChoice& choice) {
         return "./" + path;
     }
     return path;
+}
+
+EnvironmentChoice with_scene_environment(EnvironmentChoice choice, const Scene& scene) {
+    if (choice.given || scene.environment.empty()) return choice;
+    // Checked when the scene was loaded (check_scene_environment).
+    const EnvironmentSpec spec = parse_environment_spec(scene.environment, "environment");
+    choice.kind = spec.kind;
+    choice.radiance = spec.radiance;
+    choice.file = spec.file;
+    return choice;
+}
+
+std::string path_lights_text(const EnvironmentChoice& choice, const Scene& scene,
+                             bool scene_lights) {
+    const bool sky = choice.kind == EnvironmentKind::Sky;
+    const std::string environment = sky                                      ? "the sky and its sun"
+                                    : choice.kind == EnvironmentKind::Studio ? "the studio"
+                                    : choice.kind == EnvironmentKind::Uniform
+                                        ? "the uniform environment"
+                                        : "the environment map";
+    // Under the sky its sun stands in for the key light (light_list in render/modes/path_mode).
+    const size_t replaced = sky && key_light(scene) != nullptr ? 1 : 0;
+    const size_t shining = scene_lights ? scene.lights.size() - replaced : 0;
+    if (shining == 0) {
+        return environment + (scene_lights ? "" : " alone (--no-scene-lights)") +
+               (replaced && scene_lights ? " (the sun in place of the scene's key light)" : "");
+    }
+    std::string text = fmt::format("{} and the scene's {}{} light{}", environment,
+                                   replaced ? "other " : "", shining, shining == 1 ? "" : "s");
+    if (replaced) text += " (the sun in place of its key light)";
+    if (choice.kind == EnvironmentKind::Uniform) {
+        text += ": a furnace test wants the environment alone, --no-scene-lights";
+    }
+    return text;
 }
 
 std::shared_ptr<const PreparedEnvironment> prepare_environment(const EnvironmentChoice& choice,

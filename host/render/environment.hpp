@@ -28,6 +28,7 @@
 
 #include "device/kernel_layout.hpp"
 #include "image/hdr_image.hpp"
+#include "scene/environment_spec.hpp"
 #include "scene/scene.hpp"
 
 namespace fgr {
@@ -140,18 +141,14 @@ using EnvironmentInfo = layout::environment_info;
 EnvironmentInfo environment_info(const EnvironmentTables& tables, double rotation_degrees = 0.0,
                                  float intensity = 1.0f);
 
-enum class EnvironmentKind {
-    Sky,      // Preetham's daylight sky with its sun (the default)
-    Studio,   // fgr's generated photo studio: soft boxes in a grey room
-    Uniform,  // the same radiance from every direction (furnace tests)
-    File,     // an equirectangular .hdr or .exr
-};
-
 struct EnvironmentChoice {
-    EnvironmentKind kind = EnvironmentKind::Sky;
-    std::filesystem::path file;  // File
-    glm::vec3 radiance{1.0f};    // Uniform
-    SkySettings sky;             // Sky
+    EnvironmentKind kind = EnvironmentKind::Sky;  // scene/environment_spec.hpp
+    std::filesystem::path file;                   // File
+    glm::vec3 radiance{1.0f};                     // Uniform
+    SkySettings sky;                              // Sky
+    // Whether the user named it (--environment, the sky's settings, the viewer's panel). One the
+    // user did not name gives way to the scene's own (with_scene_environment).
+    bool given = false;
     // Sky: the sun stands where the scene's first directional light is, unless the sun's
     // elevation or azimuth was given.
     bool sun_from_scene = true;
@@ -160,7 +157,8 @@ struct EnvironmentChoice {
 };
 
 // `--environment`'s value: "sky", "studio", "uniform" (radiance 1), "uniform:V" or
-// "uniform:R,G,B", or else the path of an .hdr or .exr file. Throws std::invalid_argument.
+// "uniform:R,G,B", or else the path of an .hdr or .exr file (parse_environment_spec). Throws
+// std::invalid_argument. The choice is `given`.
 EnvironmentChoice parse_environment(std::string_view text);
 
 // `--environment`'s value for `choice`'s kind, radiance or file, which parse_environment reads
@@ -169,6 +167,18 @@ EnvironmentChoice parse_environment(std::string_view text);
 // that would read as another kind). Its other settings (rotation, intensity, the sky's) are
 // options of their own.
 std::string environment_argument(const EnvironmentChoice& choice);
+
+// `choice`, or, when the user did not name it and the scene has an environment of its own
+// (Scene::environment), that one, turned and scaled as `choice` says.
+EnvironmentChoice with_scene_environment(EnvironmentChoice choice, const Scene& scene);
+
+// Which lights shine in the path mode under `choice`, in a line for the log and the docs' terms:
+// under the sky its sun takes the place of the scene's key light (its first directional light)
+// and the scene's other lights shine too; under any other environment every scene light shines
+// besides it; with `scene_lights` off the environment (and the sky's sun) alone. Under a uniform
+// environment with scene lights it says that a furnace test wants --no-scene-lights.
+std::string path_lights_text(const EnvironmentChoice& choice, const Scene& scene,
+                             bool scene_lights);
 
 // An environment ready to render with: its importance-sampling tables and, for the sky, its sun
 // (a directional light with a disc, in fgr's z-up world), which takes the place of the scene's

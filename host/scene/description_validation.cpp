@@ -19,6 +19,7 @@
 
 #include "camera/view_validation.hpp"
 #include "scene/effects.hpp"
+#include "scene/environment_spec.hpp"
 #include "scene/ifs/ifs.hpp"
 #include "scene/kernel_api.hpp"
 #include "scene/render_mode.hpp"
@@ -61,6 +62,9 @@ constexpr std::size_t kV1_4SceneDescSize =
     offsetof(fgr_scene_desc, scale) + sizeof(fgr_scene_desc::scale);
 constexpr std::size_t kV1_4BuiltinDefaultSize =
     offsetof(fgr_builtin_default, value) + sizeof(fgr_builtin_default::value);
+// ABI 1.5 appended the scene's own environment to the scene description.
+constexpr std::size_t kV1_5SceneDescSize =
+    offsetof(fgr_scene_desc, environment) + sizeof(fgr_scene_desc::environment);
 
 // The limits a scene file has too are in scene_limits.hpp; these are a plugin's alone.
 using scene_limits::kMaxAngularRadiusDegrees;
@@ -634,6 +638,19 @@ void copy_colour_modes(const fgr_scene_desc& desc, Scene& scene) {
     }
 }
 
+// ABI 1.5: the environment the path mode lights the scene with when the user names none, read
+// only when the struct covers it; NULL and "" (and every older plugin) mean none, the sky.
+std::string copy_environment(const fgr_scene_desc& desc) {
+    if (desc.header.struct_size < kV1_5SceneDescSize || desc.environment == nullptr) return "";
+    const std::string text = bounded_string(desc.environment, kMaxIdLength, "environment");
+    try {
+        check_scene_environment(text);
+    } catch (const std::invalid_argument& error) {
+        reject("{}", error.what());
+    }
+    return text;
+}
+
 // Everything ABI 1.4 added, applied to a scene that has its built-in parameters: the scale first
 // (it moves defaults), then the scene's own defaults over it, then the colour modes.
 void copy_v1_4_fields(const fgr_scene_desc& desc, Scene& scene) {
@@ -720,6 +737,7 @@ Scene copy_ifs_checked(const fgr_scene_desc& desc, Scene named) {
     scene.effects = effects;
     scene.default_mode = mode;
     copy_v1_4_fields(desc, scene);
+    scene.environment = copy_environment(desc);
     return scene;
 }
 
@@ -762,6 +780,7 @@ Scene copy_checked(const fgr_scene_desc& desc, std::string& declared_id) {
     add_builtin_params(scene);
     check_builtin_defaults(scene);
     copy_v1_4_fields(desc, scene);
+    scene.environment = copy_environment(desc);
     return scene;
 }
 

@@ -87,6 +87,10 @@ struct Scene {
     // The scene's length scale (ABI 1.4): the distance-like built-ins' defaults follow it (see
     // set_scene_scale). 1 unless the scene gives one.
     float scale = 1.0f;
+    // The environment the path mode lights the scene with when the user names none (ABI 1.5, a
+    // scene file's "environment"): sky, studio, uniform, uniform:V or uniform:R,G,B, checked by
+    // check_scene_environment (scene/environment_spec.hpp); "" for none, the sky.
+    std::string environment;
     // The maps of a scene read from an IFS file (scene/ifs/ifs.hpp); null for distance-estimated
     // scenes.
     std::shared_ptr<const IfsScene> ifs;

@@ -14,6 +14,7 @@
 
 #include "camera/view_json.hpp"
 #include "scene/description_validation.hpp"
+#include "scene/environment_spec.hpp"
 #include "scene/scene_limits.hpp"
 #include "util/json_fields.hpp"
 
@@ -268,6 +269,16 @@ std::vector<Light> lights_from(const json& document) {
     const json& array = array_from(document, "lights", 1, kMaxLights, "\"lights\"");
     for (std::size_t i = 0; i < array.size(); ++i) lights.push_back(light_from(array[i], i));
     return lights;
+}
+
+std::string environment_from(const json& document) {
+    const std::string text = text_from(document, "environment", "", false);
+    try {
+        check_scene_environment(text);
+    } catch (const std::invalid_argument& error) {
+        fail("\"environment\": {}", error.what());
+    }
+    return text;
 }
 
 CameraPath default_orbit(const NamedCamera& camera) {

@@ -32,6 +32,7 @@ Scene scene_of_file(const FileData& data, std::string source, const char* suffix
     scene.cameras = data.cameras;
     scene.camera_paths = data.camera_paths;
     scene.lights = data.lights;
+    scene.environment = data.environment;
     return scene;
 }
 
@@ -73,6 +74,11 @@ std::string camera_name_from(const nlohmann::json& object, const std::string& wh
 std::vector<NamedCamera> cameras_from(const nlohmann::json& document);
 std::vector<CameraPath> camera_paths_from(const nlohmann::json& document);
 std::vector<Light> lights_from(const nlohmann::json& document);
+
+// The document's "environment" (optional: "" when absent), the scene's own for the path mode, as
+// check_scene_environment (scene/environment_spec.hpp) takes it: "sky", "studio", "uniform",
+// "uniform:V" or "uniform:R,G,B".
+std::string environment_from(const nlohmann::json& document);
 
 // A turn around the vertical through the camera's target, at its distance and height: five
 // keyframes 90 degrees apart, two seconds each (the last back where it started).

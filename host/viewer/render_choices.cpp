@@ -22,10 +22,11 @@ std::shared_ptr<const PreparedEnvironment> SceneEnvironments::prepare(
     if (found != prepared_.end()) return found->second;
     std::shared_ptr<const PreparedEnvironment> prepared;
     try {
-        prepared = prepare_environment(choice, scene);
+        prepared = prepare_environment(with_scene_environment(choice, scene), scene);
     } catch (const std::exception& error) {
         *fallback_reason = fmt::format("environment: {}; using the sky", error.what());
         choice = EnvironmentChoice{};
+        choice.given = true;
         prepared = prepare_environment(choice, scene);
     }
     return prepared_[&scene] = prepared;

@@ -36,8 +36,9 @@ struct RenderChoices {
 // until the choice changes.
 class SceneEnvironments {
 public:
-    // What `choice` lights `scene` with. A file that stopped being readable gives the sky
-    // instead: `choice` becomes the sky, and `fallback_reason` says why.
+    // What `choice` lights `scene` with (the scene's own environment when the user named none:
+    // with_scene_environment). A file that stopped being readable gives the sky instead: `choice`
+    // becomes the sky, and `fallback_reason` says why.
     std::shared_ptr<const PreparedEnvironment> prepare(const Scene& scene,
                                                        EnvironmentChoice& choice,
                                                        std::string* fallback_reason);

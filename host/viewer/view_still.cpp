@@ -49,7 +49,10 @@ ViewFile view_of_state(const ViewState& state, const EnvironmentChoice& environm
     view.precision = state.precision;
     // The viewer's frames always start from the prepass, as FrameRequest does by default.
     view.prepass = PrepassSettings{}.enabled;
-    if (state.mode == RenderMode::Path) view.path = path_choices_of(state.path, environment);
+    // What lit the frames: the scene's own environment when the user chose none.
+    if (state.mode == RenderMode::Path) {
+        view.path = path_choices_of(state.path, with_scene_environment(environment, scene));
+    }
     return view;
 }
 

@@ -422,7 +422,9 @@ void ViewerPanel::draw_mode_section() {
     ImGui::Checkbox("MIS", &choices_.path.mis);
     ImGui::Checkbox("scene lights", &choices_.path.scene_lights);
     if (ImGui::IsItemHovered()) {
-        ImGui::SetTooltip("the scene's own lights shine besides the environment");
+        ImGui::SetTooltip(
+            "the scene's own lights shine besides the environment (under the sky its sun takes "
+            "the key light's place); off: the environment alone, as a furnace test wants");
     }
 }
 
@@ -434,24 +436,31 @@ bool ViewerPanel::draw_environment_controls() {
         {EnvironmentKind::File, "file"},
     };
     bool changed = false;
+    // What lights the scene: the user's choice, else the scene's own environment.
+    const EnvironmentKind current =
+        with_scene_environment(choices_.environment, scenes_.current()).kind;
     const char* shown = "sky";
     for (const auto& [kind, name] : kinds) {
-        if (kind == choices_.environment.kind) shown = name;
+        if (kind == current) shown = name;
     }
     if (ImGui::BeginCombo("environment", shown)) {
         for (const auto& [kind, name] : kinds) {
             // A file comes from --environment FILE; without one there is none to pick.
             const bool unavailable =
                 kind == EnvironmentKind::File && choices_.environment.file.empty();
-            if (ImGui::Selectable(name, kind == choices_.environment.kind,
+            if (ImGui::Selectable(name, kind == current,
                                   unavailable ? ImGuiSelectableFlags_Disabled : 0)) {
-                changed |= kind != choices_.environment.kind;
+                changed |= kind != current;
                 choices_.environment.kind = kind;
+                choices_.environment.given = true;
             }
         }
         ImGui::EndCombo();
     }
-    if (choices_.environment.kind == EnvironmentKind::File) {
+    if (!choices_.environment.given && current != choices_.environment.kind) {
+        ImGui::TextDisabled("the scene's own");
+    }
+    if (current == EnvironmentKind::File) {
         ImGui::TextDisabled("%s", choices_.environment.file.filename().string().c_str());
     }
     // Sliders change the maps when let go: making a sky takes a few milliseconds, not a frame's.
@@ -461,7 +470,7 @@ bool ViewerPanel::draw_environment_controls() {
     ImGui::SliderFloat("rotation", &choices_.environment.rotation_degrees, -180.0f, 180.0f,
                        "%.0f deg");
     changed |= ImGui::IsItemDeactivatedAfterEdit();
-    if (choices_.environment.kind == EnvironmentKind::Sky) {
+    if (current == EnvironmentKind::Sky) {
         ImGui::SliderFloat("turbidity", &choices_.environment.sky.turbidity, 1.7f, 10.0f, "%.1f");
         changed |= ImGui::IsItemDeactivatedAfterEdit();
         bool own_sun = !choices_.environment.sun_from_scene;

@@ -26,9 +26,11 @@
 #include <vector>
 
 #include "child_process.hpp"
+#include "cli/commands.hpp"
 #include "image/hdr_io.hpp"
 #include "image/image_io.hpp"
 #include "test_files.hpp"
+#include "test_scenes.hpp"
 #include "text_scene_example.hpp"
 
 namespace fgr {
@@ -1266,6 +1268,24 @@ TEST_F(CliCache, EntriesAreFsyncedAndAFailedWriteLeavesNothing) {
     const RunResult stored = render();
     ASSERT_EQ(stored.exit_code, 0) << stored;
     EXPECT_GT(entries_and_bytes().first, 0);
+}
+
+// Without --environment the path mode takes the scene's own environment; --environment (the sky
+// too) and the sky's own settings are the user's choice and win.
+TEST(CliPathMode, TheScenesOwnEnvironmentLightsItWhenTheUserNamesNone) {
+    Scene scene = test::inline_scene("real scene_de(vec3 p, PARAMS) { return p.x; }");
+    scene.environment = "uniform:0.5";
+    ModeOptions options;
+    EXPECT_EQ(chosen_path_settings(options, scene).environment->description,
+              "uniform radiance 0.5 0.5 0.5");
+    options.environment = "sky";
+    EXPECT_EQ(chosen_path_settings(options, scene).environment->description.rfind("sky", 0), 0u);
+    ModeOptions hazy;
+    hazy.turbidity = 6.0f;
+    EXPECT_EQ(chosen_path_settings(hazy, scene).environment->description.rfind("sky", 0), 0u);
+    scene.environment.clear();
+    EXPECT_EQ(chosen_path_settings(ModeOptions{}, scene).environment->description.rfind("sky", 0),
+              0u);
 }
 
 }  // namespace

@@ -1,7 +1,7 @@
 // View files on the command line: `fgr render … --save-view V` then `fgr render V`, or
-// `fgr render --view IMAGE`, gives the same bytes in every mode; options typed override the view; a
-// scene changed since the view was saved is reported; a bad view file is one error line naming the
-// file and the key (`fgr view` too).
+// `fgr render --view IMAGE`, gives the same bytes in every mode; a view names the environment that
+// lit the render; options typed override the view; a scene changed since the view was saved is
+// reported; a bad view file is one error line naming the file and the key (`fgr view` too).
 
 #include <gtest/gtest.h>
 
@@ -11,8 +11,11 @@
 #include <vector>
 
 #include "child_process.hpp"
+#include "cli/commands.hpp"
+#include "cli/view_options.hpp"
 #include "image/image_io.hpp"
 #include "test_files.hpp"
+#include "test_scenes.hpp"
 
 namespace fgr {
 namespace {
@@ -183,6 +186,36 @@ TEST_F(ViewFileCli, AViewOfASceneOpenedByPathRendersFromAnotherDirectory) {
     ASSERT_EQ(again.exit_code, 0) << again;
     EXPECT_TRUE(test::read_bytes(dir() / "blob.png") ==
                 test::read_bytes(dir() / "elsewhere" / "again.png"));
+}
+
+// A view names the environment that lit the render, so that it renders the same: the one typed,
+// else the sky when the sky's settings are typed, else the scene's own, else the sky; and
+// apply_view gives it back as --environment.
+TEST(ViewOfRender, RecordsTheEnvironmentThatLitTheRender) {
+    Scene scene = test::inline_scene("real scene_de(vec3 p, PARAMS) { return v3_length(p) - 1; }");
+    scene.environment = "uniform:0.5";
+    const auto recorded = [&scene](const ModeOptions& mode) {
+        RenderOptions options;
+        options.mode = mode;
+        options.mode.mode = "path";
+        const ViewFile view = view_of_render(scene, scene_request(scene, options), options);
+        EXPECT_TRUE(view.path.has_value());
+        RenderOptions again;
+        apply_view(again, view);
+        EXPECT_EQ(chosen_path_settings(again.mode, scene).environment->description,
+                  chosen_path_settings(options.mode, scene).environment->description)
+            << "the view renders under another environment";
+        return view.path ? view.path->environment : std::string();
+    };
+    EXPECT_EQ(recorded(ModeOptions{}), "uniform:0.5");
+    ModeOptions typed;
+    typed.environment = "sky";
+    EXPECT_EQ(recorded(typed), "sky");
+    ModeOptions hazy;
+    hazy.turbidity = 6.0f;
+    EXPECT_EQ(recorded(hazy), "sky");
+    scene.environment.clear();
+    EXPECT_EQ(recorded(ModeOptions{}), "sky");
 }
 
 // Parts carry the view, and `fgr merge` passes it on: the merged image renders again as one.

@@ -886,5 +886,58 @@ TEST(StudioEnvironment, HasItsLightsWhereDocumented) {
     EXPECT_LT(irradiance / kPi, 1.0);
 }
 
+// --- Which environment, and which lights ------------------------------------------------------
+
+Scene scene_with_lights(std::string environment) {
+    Scene scene;
+    Light key;
+    key.type = LightType::Directional;
+    key.vector = {0.0f, 0.0f, 1.0f};
+    Light lamp;
+    lamp.type = LightType::Point;
+    lamp.vector = {0.0f, 0.0f, 3.0f};
+    scene.lights = {key, lamp};
+    scene.environment = std::move(environment);
+    return scene;
+}
+
+// A scene's own environment lights it when the user named none, turned and scaled as the user
+// asks; one the user named (--environment, even "sky") is kept.
+TEST(EnvironmentChoice, TheScenesOwnStandsInForOneTheUserDidNotName) {
+    const Scene studio = scene_with_lights("studio");
+    EnvironmentChoice unnamed;
+    unnamed.intensity = 2.0f;
+    unnamed.rotation_degrees = 30.0f;
+    const EnvironmentChoice chosen = with_scene_environment(unnamed, studio);
+    EXPECT_EQ(chosen.kind, EnvironmentKind::Studio);
+    EXPECT_EQ(chosen.intensity, 2.0f);
+    EXPECT_EQ(chosen.rotation_degrees, 30.0f);
+    EXPECT_EQ(with_scene_environment(parse_environment("sky"), studio).kind, EnvironmentKind::Sky);
+    EXPECT_EQ(with_scene_environment(unnamed, scene_with_lights("")).kind, EnvironmentKind::Sky);
+    const EnvironmentChoice grey =
+        with_scene_environment(unnamed, scene_with_lights("uniform:0.5"));
+    EXPECT_EQ(grey.kind, EnvironmentKind::Uniform);
+    EXPECT_EQ(grey.radiance, glm::vec3(0.5f));
+}
+
+// The log says what lights the path mode: under the sky its sun in place of the key light, under
+// any other environment every scene light besides it, and a uniform one with scene lights says a
+// furnace test wants --no-scene-lights.
+TEST(EnvironmentChoice, TheLightsThatShineAreNamed) {
+    const Scene scene = scene_with_lights("");
+    EXPECT_EQ(path_lights_text(parse_environment("sky"), scene, true),
+              "the sky and its sun and the scene's other 1 light (the sun in place of its key "
+              "light)");
+    EXPECT_EQ(path_lights_text(parse_environment("sky"), scene, false),
+              "the sky and its sun alone (--no-scene-lights)");
+    EXPECT_EQ(path_lights_text(parse_environment("studio"), scene, true),
+              "the studio and the scene's 2 lights");
+    EXPECT_EQ(path_lights_text(parse_environment("uniform"), scene, true),
+              "the uniform environment and the scene's 2 lights: a furnace test wants the "
+              "environment alone, --no-scene-lights");
+    EXPECT_EQ(path_lights_text(parse_environment("uniform"), scene, false),
+              "the uniform environment alone (--no-scene-lights)");
+}
+
 }  // namespace
 }  // namespace fgr

@@ -99,7 +99,7 @@ TEST(AbiLayout, MarchSettings) {
 }
 
 TEST(AbiLayout, SceneDesc) {
-    PIN_SIZE(fgr_scene_desc, 216);
+    PIN_SIZE(fgr_scene_desc, 224);
     PIN_OFFSET(fgr_scene_desc, id, 8);
     PIN_OFFSET(fgr_scene_desc, name, 16);
     PIN_OFFSET(fgr_scene_desc, description, 24);
@@ -129,6 +129,8 @@ TEST(AbiLayout, SceneDesc) {
     PIN_OFFSET(fgr_scene_desc, builtin_default_count, 200);
     PIN_OFFSET(fgr_scene_desc, colour_modes, 204);
     PIN_OFFSET(fgr_scene_desc, scale, 208);
+    // ABI 1.5: the scene's own environment, after the float padded to the pointer alignment.
+    PIN_OFFSET(fgr_scene_desc, environment, 216);
     static_assert(alignof(fgr_scene_desc) == 8, "an appended field must not raise the alignment");
 }
 
@@ -219,7 +221,8 @@ struct SceneBuilder {
                 nullptr,
                 0,
                 0,
-                0.0f};
+                0.0f,
+                nullptr};
         // clang-format on
     }
     SceneBuilder(const SceneBuilder&) = delete;
@@ -1043,6 +1046,49 @@ TEST_F(CopyTunedScene, RefusesBadColourModes) {
     expect_refused("colour_modes 0x8: parameter 'colour_mode' has only 3 choices");
     built.desc.colour_modes = 0x10;
     expect_refused("colour_modes 0x10: unknown bits 0x10");
+}
+
+// --- ABI 1.5: the scene's own environment ------------------------------------------------------
+
+// A generated environment named as --environment names it is the scene's own; NULL and "" are
+// none, the sky.
+TEST_F(CopyScene, AcceptsAnEnvironmentFgrGenerates) {
+    for (const char* text : {"sky", "studio", "uniform", "uniform:0.5", "uniform:1,0.5,0.25"}) {
+        built.desc.environment = text;
+        EXPECT_EQ(expect_accepted().environment, text);
+    }
+    for (const char* none : {static_cast<const char*>(nullptr), ""}) {
+        built.desc.environment = none;
+        EXPECT_EQ(expect_accepted().environment, "");
+    }
+}
+
+// Anything else is refused in one line that quotes it: a map file (the user's --environment
+// FILE), a name fgr does not have, radiances that are negative, not numbers or not one or three,
+// text longer than 63 bytes or with control bytes.
+TEST_F(CopyScene, RefusesAnEnvironmentItCannotMake) {
+    built.desc.environment = "studio.hdr";
+    expect_refused("environment 'studio.hdr' is not one fgr generates");
+    built.desc.environment = "nebula";
+    expect_refused("environment 'nebula' is not one fgr generates");
+    built.desc.environment = "uniform:-1";
+    expect_refused("environment uniform:RADIANCE: '-1' is not a non-negative number");
+    built.desc.environment = "uniform:1,2";
+    expect_refused("give one value or R,G,B, not '1,2'");
+    built.desc.environment = "uniform:nan";
+    expect_refused("is not a non-negative number");
+    const std::string long_text = "uniform:" + std::string(60, '1');
+    built.desc.environment = long_text.c_str();
+    expect_refused("environment longer than 63 bytes");
+    built.desc.environment = "sky\x1b[2J";
+    expect_refused("'sky\\x1b[2J'");
+}
+
+// A description of 1.4's size ends before the field: what follows it is not read.
+TEST_F(CopyScene, AnOlderDescriptionHasNoEnvironment) {
+    built.desc.environment = "not an environment";
+    built.desc.header.struct_size = offsetof(fgr_scene_desc, environment);
+    EXPECT_EQ(expect_accepted().environment, "");
 }
 
 }  // namespace

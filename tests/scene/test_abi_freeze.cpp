@@ -9,6 +9,8 @@
 // a source; older plugins' descriptions end before the maps. tests/fixtures/frozen_v1_4
 // (tests/abi_v1_4) gives its own defaults for built-in parameters, the colour modes it offers and
 // a length scale; older plugins get fgr's defaults, all colour modes and scale 1.
+// tests/fixtures/frozen_v1_5 (tests/abi_v1_5) names an environment of its own for the path mode;
+// older plugins have none (the sky).
 
 #include <dlfcn.h>
 #include <gtest/gtest.h>
@@ -35,6 +37,8 @@
 #include "fixtures/frozen_v1_2/frozen_layout_v1_2.h"
 #include "fixtures/frozen_v1_3/frozen_layout_v1_3.h"
 #include "fixtures/frozen_v1_4/frozen_layout_v1_4.h"
+#include "fixtures/frozen_v1_5/frozen_layout_v1_5.h"
+#include "render/environment.hpp"
 #include "render/renderer.hpp"
 #include "scene/discovery.hpp"
 #include "scene/ifs/ifs.hpp"
@@ -62,6 +66,9 @@ const fs::path kFrozenV1_3Header = fs::path(FGR_TEST_SOURCE_DIR) / "abi_v1_3" / 
 const fs::path kFrozenV1_4Plugin =
     fs::path(FGR_TEST_FIXTURE_DIR) / "frozen_v1_4" / "frozen_v1_4.so";
 const fs::path kFrozenV1_4Header = fs::path(FGR_TEST_SOURCE_DIR) / "abi_v1_4" / "fgr" / "plugin.h";
+const fs::path kFrozenV1_5Plugin =
+    fs::path(FGR_TEST_FIXTURE_DIR) / "frozen_v1_5" / "frozen_v1_5.so";
+const fs::path kFrozenV1_5Header = fs::path(FGR_TEST_SOURCE_DIR) / "abi_v1_5" / "fgr" / "plugin.h";
 
 // FNV-1a (64 bit) of tests/abi_v1/fgr/plugin.h as committed. Never update it: see
 // FrozenHeaderNeverChanges.
@@ -74,6 +81,8 @@ constexpr uint64_t kFrozenV1_2HeaderHash = 0x2c4886571464b29au;
 constexpr uint64_t kFrozenV1_3HeaderHash = 0x813ebe43a6b91a8au;
 // The same of tests/abi_v1_4/fgr/plugin.h.
 constexpr uint64_t kFrozenV1_4HeaderHash = 0xc1cffbc5c5d2f5dbu;
+// The same of tests/abi_v1_5/fgr/plugin.h.
+constexpr uint64_t kFrozenV1_5HeaderHash = 0x1a75830cef57bcbeu;
 
 // How many rows ABI 1.0 has in each list of frozen_layout.h: a row dropped from a list would
 // otherwise quietly stop being checked.
@@ -97,6 +106,10 @@ constexpr std::size_t kV1_3ConstantCount = kV1_2ConstantCount;
 constexpr std::size_t kV1_4StructCount = kV1_3StructCount + 1;
 constexpr std::size_t kV1_4FieldCount = kV1_3FieldCount + 3 + 4;
 constexpr std::size_t kV1_4ConstantCount = kV1_3ConstantCount + 5;
+// ABI 1.5 added one field: fgr_scene_desc::environment.
+constexpr std::size_t kV1_5StructCount = kV1_4StructCount;
+constexpr std::size_t kV1_5FieldCount = kV1_4FieldCount + 1;
+constexpr std::size_t kV1_5ConstantCount = kV1_4ConstantCount;
 
 Scene load_frozen_scene() {
     LoadResult loaded = load_scene_plugin(kFrozenPlugin);
@@ -321,6 +334,12 @@ const std::vector<fgr_frozen_field_row> kCurrentV1_4Fields = {
     FGR_FROZEN_V1_4_FIELDS(CURRENT_FIELD_ROW)};
 const std::vector<fgr_frozen_constant_row> kCurrentV1_4Constants = {
     FGR_FROZEN_V1_4_CONSTANTS(CURRENT_CONSTANT_ROW)};
+const std::vector<fgr_frozen_struct_row> kCurrentV1_5Structs = {
+    FGR_FROZEN_V1_5_STRUCTS(CURRENT_STRUCT_ROW)};
+const std::vector<fgr_frozen_field_row> kCurrentV1_5Fields = {
+    FGR_FROZEN_V1_5_FIELDS(CURRENT_FIELD_ROW)};
+const std::vector<fgr_frozen_constant_row> kCurrentV1_5Constants = {
+    FGR_FROZEN_V1_5_CONSTANTS(CURRENT_CONSTANT_ROW)};
 
 // The frozen plugin's table against the current header's rows for the same lists: nothing moved,
 // shrank, changed alignment or value. Then its description's header is what FGR_HEADER gave it:
@@ -408,6 +427,12 @@ TEST(AbiFreeze, CurrentHeaderKeepsTheV1_4Layout) {
     expect_layout_kept(kFrozenV1_4Plugin, FGR_FROZEN_V1_4_LAYOUT_SYMBOL, 0x00010004u,
                        kCurrentV1_4Structs, kCurrentV1_4Fields, kCurrentV1_4Constants,
                        kV1_4StructCount, kV1_4FieldCount, kV1_4ConstantCount);
+}
+
+TEST(AbiFreeze, CurrentHeaderKeepsTheV1_5Layout) {
+    expect_layout_kept(kFrozenV1_5Plugin, FGR_FROZEN_V1_5_LAYOUT_SYMBOL, 0x00010005u,
+                       kCurrentV1_5Structs, kCurrentV1_5Fields, kCurrentV1_5Constants,
+                       kV1_5StructCount, kV1_5FieldCount, kV1_5ConstantCount);
 }
 
 // The 1.1 plugin's source has no NUL: its source_length says where it ends, and the bytes after
@@ -501,6 +526,34 @@ TEST(AbiFreeze, FrozenV1_4PluginLoadsItsDefaultsColourModesAndScale) {
     EXPECT_EQ(offered_choices_text(*colour_mode), "point|axes");
 
     EXPECT_GT(default_view_hits(scene), 0);
+}
+
+// The 1.5 plugin names a uniform environment of three radiances for the path mode, which it asks
+// for: the path mode's environment, when the user names none.
+TEST(AbiFreeze, FrozenV1_5PluginLoadsItsEnvironment) {
+    LoadResult loaded = load_scene_plugin(kFrozenV1_5Plugin);
+    ASSERT_TRUE(loaded.scene) << kFrozenV1_5Plugin << ": " << loaded.error;
+    const Scene& scene = *loaded.scene;
+    EXPECT_EQ(scene.id, "frozen-v1-5");
+    EXPECT_EQ(scene.default_mode, RenderMode::Path);
+    EXPECT_EQ(scene.environment, "uniform:0.25,0.5,1");
+    const EnvironmentChoice choice = with_scene_environment(EnvironmentChoice{}, scene);
+    EXPECT_EQ(choice.kind, EnvironmentKind::Uniform);
+    expect_vec3(choice.radiance, {0.25f, 0.5f, 1.0f}, "the environment's radiance");
+}
+
+// Plugins built before 1.5 name no environment: whatever follows their smaller descriptions is not
+// read as one, and the path mode lights them with the sky.
+TEST(AbiFreeze, OlderPluginsGetTheV1_5Default) {
+    for (const fs::path& plugin : {kFrozenPlugin, kFrozenV1_1Plugin, kFrozenV1_2Plugin,
+                                   kFrozenV1_3Plugin, kFrozenV1_4Plugin}) {
+        LoadResult loaded = load_scene_plugin(plugin);
+        ASSERT_TRUE(loaded.scene) << plugin << ": " << loaded.error;
+        EXPECT_EQ(loaded.scene->environment, "") << plugin;
+        EXPECT_EQ(with_scene_environment(EnvironmentChoice{}, *loaded.scene).kind,
+                  EnvironmentKind::Sky)
+            << plugin;
+    }
 }
 
 // Plugins built before 1.4 keep fgr's defaults for every built-in, offer every colour mode and
@@ -599,6 +652,15 @@ std::string hex(uint64_t value) {
     std::ostringstream out;
     out << "0x" << std::hex << value;
     return out.str();
+}
+
+TEST(AbiFreeze, FrozenV1_5HeaderNeverChanges) {
+    ASSERT_TRUE(fs::is_regular_file(kFrozenV1_5Header)) << kFrozenV1_5Header << " is missing";
+    const uint64_t hash = fnv1a64(test::read_file(kFrozenV1_5Header));
+    EXPECT_EQ(hash, kFrozenV1_5HeaderHash)
+        << kFrozenV1_5Header << " has changed (FNV-1a " << hex(hash) << ", frozen "
+        << hex(kFrozenV1_5HeaderHash) << "). It is the ABI 1.5 header exactly as released and "
+        << "must never change: restore it from git.";
 }
 
 TEST(AbiFreeze, FrozenV1_4HeaderNeverChanges) {

@@ -38,6 +38,7 @@
 #include "render/renderer.hpp"
 #include "scene/description_validation.hpp"
 #include "scene/discovery.hpp"
+#include "scene/environment_spec.hpp"
 #include "scene/ifs/ifs.hpp"
 #include "scene/parameters.hpp"
 #include "scene/plugin_loader.hpp"
@@ -629,6 +630,10 @@ DescSpec random_valid_spec(Rng& rng, Arena& arena) {
     desc.march.step_factor = rng.chance(0.3) ? 0.0f : rng.uniform(0.05f, 1.0f);
     const char* const modes[] = {nullptr, "", "shaded", "path"};
     desc.default_mode = rng.pick(modes);
+    // ABI 1.5: often none, else one fgr generates.
+    const char* const environments[] = {
+        nullptr, "", "sky", "studio", "uniform", "uniform:0.5", "uniform:1,0.5,0"};
+    desc.environment = rng.pick(environments);
     return spec;
 }
 
@@ -864,7 +869,7 @@ void mutate_ifs(Rng& rng, Arena& arena, DescSpec& spec) {
 
 void mutate(Rng& rng, Arena& arena, DescSpec& spec) {
     fgr_scene_desc& desc = spec.desc;
-    switch (rng.below(22)) {
+    switch (rng.below(23)) {
         case 0:
             desc.id = any_string(rng, arena);
             break;
@@ -991,6 +996,14 @@ void mutate(Rng& rng, Arena& arena, DescSpec& spec) {
         case 19: {  // ABI 1.2: a mode, almost a mode, or any text
             const char* const modes[] = {"shaded", "path", "pathz", "Path", "shaded ", "brute"};
             desc.default_mode = rng.chance(0.5) ? rng.pick(modes) : any_string(rng, arena);
+            break;
+        }
+        case 21: {  // ABI 1.5: an environment, almost one, a file, or any text
+            const char* const environments[] = {"studio",       "uniform:2", "uniform:1,1",
+                                                "uniform:-0.5", "uniform:",  "uniform:inf",
+                                                "Studio",       "sky.hdr",   "/dev/zero",
+                                                "uniform:1e39"};
+            desc.environment = rng.chance(0.5) ? rng.pick(environments) : any_string(rng, arena);
             break;
         }
         default:  // a camera name repeated
@@ -1254,6 +1267,17 @@ void check_accepted(const Scene& scene, const fgr_scene_desc& desc) {
         EXPECT_EQ(render_mode_name(scene.default_mode), desc.default_mode);
     } else {
         EXPECT_EQ(scene.default_mode, RenderMode::Shaded);
+    }
+
+    // ABI 1.5: the environment named, when the struct has the field; none otherwise. Only what
+    // check_scene_environment takes is accepted.
+    const bool has_environment =
+        desc.header.struct_size >= offsetof(fgr_scene_desc, environment) + sizeof(const char*);
+    if (has_environment && desc.environment != nullptr) {
+        EXPECT_EQ(scene.environment, desc.environment);
+        EXPECT_NO_THROW(check_scene_environment(scene.environment)) << scene.environment;
+    } else {
+        EXPECT_EQ(scene.environment, "");
     }
 
     // Effects and march settings, which also become the quality knobs' defaults.

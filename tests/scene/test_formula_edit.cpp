@@ -202,6 +202,7 @@ TEST(FormulaEdit, SavedScenesReadBackAsTheSameScene) {
         with_formula_added(shipped_formula("menger-kifs"), library("amazing_box"));
     edited = with_repeat(edited, 1, 3);
     edited.sequence[0].values[0] = {2.5f, 2.5f, 2.5f};
+    edited.environment = "studio";
     scenes.push_back(edited);
     for (const FormulaScene& scene : scenes) {
         SCOPED_TRACE(scene.id);
@@ -221,6 +222,7 @@ TEST(FormulaEdit, SavedScenesReadBackAsTheSameScene) {
         EXPECT_NEAR(again.lights[0].angular_radius, original.lights[0].angular_radius, 1e-6);
         EXPECT_EQ(again.march.step_factor, original.march.step_factor);
         EXPECT_EQ(again.march.max_distance, original.march.max_distance);
+        EXPECT_EQ(again.environment, original.environment);
     }
 }
 

@@ -195,6 +195,20 @@ TEST(FormulaFile, RefusesBadDocumentsInOneLineNamingTheFile) {
              return d;
          }(),
          "\"tags\" entry 0"},
+        {"environment from a file",
+         [&] {
+             json d = document({bulb});
+             d["environment"] = "hall.hdr";
+             return d;
+         }(),
+         "\"environment\": environment 'hall.hdr' is not one fgr generates"},
+        {"environment not a string",
+         [&] {
+             json d = document({bulb});
+             d["environment"] = 1;
+             return d;
+         }(),
+         "\"environment\" must be a string"},
     };
     json many = json::array();
     for (std::size_t i = 0; i <= kFormulaMaxSlots; ++i) many.push_back(bulb);
@@ -220,6 +234,14 @@ TEST(FormulaFile, ASchemaReferenceIsAcceptedAtTheTopLevel) {
     json doc = document({{"formula", "mandelbulb"}});
     doc["$schema"] = "file:///usr/share/fgr/schemas/formula.schema.json";
     EXPECT_EQ(parse(doc).sequence.size(), 1u);
+}
+
+// A file may name the path mode's environment, which its scene keeps; without one it has none.
+TEST(FormulaFile, NamesItsOwnEnvironment) {
+    json d = document({{{"formula", "mandelbulb"}}});
+    EXPECT_EQ(scene_of(d).environment, "");
+    d["environment"] = "uniform:0.5";
+    EXPECT_EQ(scene_of(d).environment, "uniform:0.5");
 }
 
 TEST(FormulaFile, DefaultsComeFromTheFormulasAndHybridsPrefixTheirParameters) {

@@ -348,6 +348,9 @@ std::vector<BadCase> bad_cases() {
     huge[1]["translate"] = {0.0, 1e300, 0.0};
     add("huge translation", minimal(huge), "map 1 \"translate\" must be finite");
     add("zero maps", minimal(json::array()), "\"maps\" has 0 entries; 1 to 64 allowed");
+    json lit = minimal(maps);
+    lit["environment"] = "uniform:1,1";
+    add("environment of two radiances", lit, "\"environment\": environment uniform:RADIANCE");
     json too_many = json::array();
     for (int i = 0; i < 65; ++i) too_many.push_back({{"scale", 0.5}});
     add("65 maps", minimal(too_many), "\"maps\" has 65 entries");
@@ -547,6 +550,18 @@ TEST(IfsFile, DefaultsFrameTheBoundingSphere) {
     EXPECT_EQ(ifs.description, "");
     EXPECT_EQ(ifs.default_depth, 6);
     EXPECT_EQ(ifs.max_depth, 12);
+}
+
+// A file may name the path mode's environment, which its scene keeps; without one it has none.
+TEST(IfsFile, NamesItsOwnEnvironment) {
+    json document = minimal(sierpinski_maps());
+    EXPECT_EQ(
+        ifs_scene_to_scene(parse_ifs_json(document.dump(), "a.ifs.json"), "a.ifs.json").environment,
+        "");
+    document["environment"] = "studio";
+    EXPECT_EQ(
+        ifs_scene_to_scene(parse_ifs_json(document.dump(), "a.ifs.json"), "a.ifs.json").environment,
+        "studio");
 }
 
 TEST(IfsFile, SceneHasTheDepthSliderAndTheMaps) {

@@ -165,6 +165,21 @@ TEST(ViewerViewFile, FgrRenderRendersThePathTracedViewAsTheViewerDoes) {
     }
 }
 
+// Under a scene's own environment (the user chose none) the view names that one, and `fgr render`
+// renders it so; one the user chose wins over it.
+TEST(ViewerViewFile, AViewUnderTheScenesOwnEnvironmentNamesIt) {
+    Scene own = *mandelbulb();
+    own.environment = "uniform:0.5";
+    ViewState state = path_state();
+    state.scene = std::make_shared<const Scene>(own);
+    EXPECT_EQ(view_of_state(state, EnvironmentChoice{}, 1).path->environment, "uniform:0.5");
+    expect_fgr_render_renders_the_view_alike(state, EnvironmentChoice{});
+    EnvironmentChoice chosen;
+    chosen.kind = EnvironmentKind::Studio;
+    chosen.given = true;
+    EXPECT_EQ(view_of_state(state, chosen, 1).path->environment, "studio");
+}
+
 TEST(ViewerViewFile, ProjectionKeepsOnlyTheSettingsOfItsKind) {
     ViewState state = shaded_state();
     state.projection.kind = ProjectionKind::Pinhole;  // the fisheye's angle stays behind

@@ -107,6 +107,7 @@ std::string formula_scene_json(const FormulaScene& scene) {
     json lights = json::array();
     for (const Light& light : scene.lights) lights.push_back(light_json(light));
     document["lights"] = lights;
+    if (!scene.environment.empty()) document["environment"] = scene.environment;
     return document.dump(2) + "\n";
 }
 

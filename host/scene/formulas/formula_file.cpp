@@ -227,7 +227,7 @@ FormulaScene parse_formula_document(const std::string& text) {
     check_keys(document,
                {"$schema", "format", "version", "id", "name", "description", "tags", "sequence",
                 "iterations", "bailout", "distance", "estimate", "step_factor", "max_distance",
-                "cameras", "camera_paths", "lights"},
+                "cameras", "camera_paths", "lights", "environment"},
                "top level");
     json_fields::check_schema_key(document);
     scene_json::check_format(document, kFormulaFormat, kFormulaFormatVersion);
@@ -256,6 +256,7 @@ FormulaScene parse_formula_document(const std::string& text) {
     }
     scene.lights = scene_json::lights_from(document);
     if (scene.lights.empty()) scene.lights.push_back(scene_json::default_light());
+    scene.environment = scene_json::environment_from(document);
     return scene;
 }
 

@@ -126,6 +126,7 @@ struct FormulaScene {
     std::vector<NamedCamera> cameras;  // [0] is the default view
     std::vector<CameraPath> camera_paths;
     std::vector<Light> lights;
+    std::string environment;  // the path mode's when the user names none; "" for the sky
 };
 
 // The strongest estimate a sequence allows: a formula alone with a distance of its own has it

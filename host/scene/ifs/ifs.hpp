@@ -73,7 +73,8 @@ struct IfsScene {
     std::vector<NamedCamera> cameras;  // [0] is the default view
     std::vector<CameraPath> camera_paths;
     std::vector<Light> lights;
-    IfsBounds bounds;  // computed from the maps by ifs_bounding_sphere
+    std::string environment;  // the path mode's when the user names none; "" for the sky
+    IfsBounds bounds;         // computed from the maps by ifs_bounding_sphere
     IfsLeaf leaf;
 };
 

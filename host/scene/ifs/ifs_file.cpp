@@ -339,7 +339,7 @@ IfsScene parse_ifs_document(const std::string& text) {
     const json document = scene_json::parse_object(text);
     check_keys(document,
                {"$schema", "format", "version", "id", "name", "description", "depth", "maps",
-                "leaf", "cameras", "camera_paths", "lights"},
+                "leaf", "cameras", "camera_paths", "lights", "environment"},
                "top level");
     json_fields::check_schema_key(document);
     IfsScene scene;
@@ -363,6 +363,7 @@ IfsScene parse_ifs_document(const std::string& text) {
         scene.camera_paths.push_back(scene_json::default_orbit(scene.cameras[0]));
     scene.lights = scene_json::lights_from(document);
     if (scene.lights.empty()) scene.lights.push_back(scene_json::default_light());
+    scene.environment = scene_json::environment_from(document);
     return scene;
 }
 

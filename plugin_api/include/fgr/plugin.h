@@ -1,5 +1,5 @@
 /*
- * fgr scene plugin ABI, version 1 (minor 4: see FGR_ABI_VERSION_MINOR and plugin_api/ABI.md).
+ * fgr scene plugin ABI, version 1 (minor 5: see FGR_ABI_VERSION_MINOR and plugin_api/ABI.md).
  *
  * A scene plugin is a shared library that exports exactly one symbol, FGR_SCENE_ENTRY_SYMBOL
  * ("fgr_scene_entry"), a function returning a pointer to a constant fgr_scene_desc. Everything the
@@ -40,7 +40,7 @@ extern "C" {
 #endif
 
 #define FGR_ABI_VERSION_MAJOR 1u
-#define FGR_ABI_VERSION_MINOR 4u
+#define FGR_ABI_VERSION_MINOR 5u
 /* Packed as (major << 16) | minor. */
 #define FGR_ABI_VERSION ((FGR_ABI_VERSION_MAJOR << 16) | FGR_ABI_VERSION_MINOR)
 #define FGR_ABI_MAJOR(version) ((uint32_t)(version) >> 16)
@@ -313,6 +313,16 @@ typedef struct fgr_scene_desc {
      * still in scene units. Finite, in [1e-6, 1e6]; 0, and every older plugin, mean 1, the scale
      * the built-in defaults were tuned for. A builtin_defaults entry overrides the scaled value. */
     float scale;
+
+    /* ABI 1.5. The environment the path mode lights the scene with when the user names none (no
+     * --environment): one fgr generates, named as --environment names it: "sky", "studio",
+     * "uniform" (radiance 1), "uniform:V" or "uniform:R,G,B" (finite, non-negative radiances). At
+     * most 63 bytes; a map file is refused (that stays the user's --environment FILE). NULL or "",
+     * and every plugin built against 1.0 to 1.4, mean "sky". In the path mode the scene's lights
+     * shine besides it, under whichever environment, except that the sky's sun takes the place of
+     * the first directional light; the user's --no-scene-lights leaves the environment alone.
+     * The shaded mode ignores it. A 1.4 host ignores it and lights the path mode with the sky. */
+    const char* environment;
 } fgr_scene_desc;
 
 /* The entry point. Must return the same pointer every call, or NULL on failure. */

@@ -150,7 +150,7 @@ constexpr uint64_t fgr_source_length(const char (&)[N]) {
         FGR_HEADER(fgr_scene_desc), id, name, description, source, source_name, params,           \
             FGR_COUNT(params), cameras, FGR_COUNT(cameras), paths, FGR_COUNT(paths), lights,      \
             FGR_LIGHT_COUNT(lights), effects, march, FGR_SOURCE_LENGTH(source), NULL, NULL, 0, 0, \
-            0, NULL, 0, 0, 0.0f                                                                   \
+            0, NULL, 0, 0, 0.0f, NULL                                                             \
     }
 
 /* The same, asking for a render mode by default: "shaded", "path" or "brute" (ABI 1.2: any mode
@@ -163,7 +163,7 @@ constexpr uint64_t fgr_source_length(const char (&)[N]) {
         FGR_HEADER(fgr_scene_desc), id, name, description, source, source_name, params,         \
             FGR_COUNT(params), cameras, FGR_COUNT(cameras), paths, FGR_COUNT(paths), lights,    \
             FGR_LIGHT_COUNT(lights), effects, march, FGR_SOURCE_LENGTH(source), default_mode,   \
-            NULL, 0, 0, 0, NULL, 0, 0, 0.0f                                                     \
+            NULL, 0, 0, 0, NULL, 0, 0, 0.0f, NULL                                               \
     }
 
 /* A built-in parameter's own default in this scene (ABI 1.4), e.g.
@@ -191,7 +191,7 @@ constexpr uint64_t fgr_source_length(const char (&)[N]) {
         FGR_HEADER(fgr_scene_desc), id, name, description, source, source_name, params,       \
             FGR_COUNT(params), cameras, FGR_COUNT(cameras), paths, FGR_COUNT(paths), lights,  \
             FGR_LIGHT_COUNT(lights), effects, march, FGR_SOURCE_LENGTH(source), default_mode, \
-            NULL, 0, 0, 0, builtin_defaults, builtin_default_count, colour_modes, scale       \
+            NULL, 0, 0, 0, builtin_defaults, builtin_default_count, colour_modes, scale, NULL \
     }
 
 /* An IFS map x -> scale x + (tx, ty, tz): a uniform scaling towards a point (ABI 1.3). */
@@ -211,7 +211,22 @@ constexpr uint64_t fgr_source_length(const char (&)[N]) {
         FGR_HEADER(fgr_scene_desc), id, name, description, NULL, NULL, NULL, 0, cameras,           \
             FGR_COUNT(cameras), paths, FGR_COUNT(paths), lights, FGR_LIGHT_COUNT(lights), effects, \
             FGR_MARCH(1u, 100.0f, 1.0f, 1u, 1.0f), 0, NULL, maps, FGR_COUNT(maps), default_depth,  \
-            max_depth, NULL, 0, 0, 0.0f                                                            \
+            max_depth, NULL, 0, 0, 0.0f, NULL                                                      \
+    }
+
+/* A scene with an environment of its own for the path mode (ABI 1.5): FGR_SCENE_TUNED's fields
+ * (NULL, 0, 0 and 0.0f for fgr's defaults), then the environment as --environment names a
+ * generated one: "sky", "studio", "uniform", "uniform:V" or "uniform:R,G,B" (NULL for the sky). Its
+ * lights still shine besides it; see fgr_scene_desc::environment. */
+#define FGR_SCENE_WITH_ENVIRONMENT(id, name, description, source, source_name, params, cameras,   \
+                                   paths, lights, effects, march, default_mode, builtin_defaults, \
+                                   builtin_default_count, colour_modes, scale, environment)       \
+    {                                                                                             \
+        FGR_HEADER(fgr_scene_desc), id, name, description, source, source_name, params,           \
+            FGR_COUNT(params), cameras, FGR_COUNT(cameras), paths, FGR_COUNT(paths), lights,      \
+            FGR_LIGHT_COUNT(lights), effects, march, FGR_SOURCE_LENGTH(source), default_mode,     \
+            NULL, 0, 0, 0, builtin_defaults, builtin_default_count, colour_modes, scale,          \
+            environment                                                                           \
     }
 
 #endif /* FGR_SCENE_HELPERS_H */
