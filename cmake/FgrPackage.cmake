@@ -19,7 +19,8 @@ configure_package_config_file(cmake/fgrConfig.cmake.in
 install(FILES ${CMAKE_BINARY_DIR}/fgrConfig-install.cmake DESTINATION ${FGR_INSTALL_CMAKE_DIR}
     RENAME fgrConfig.cmake)
 install(FILES ${CMAKE_BINARY_DIR}/${FGR_INSTALL_CMAKE_DIR}/fgrConfigVersion.cmake
-    cmake/FgrScenePlugin.cmake cmake/embed.cmake DESTINATION ${FGR_INSTALL_CMAKE_DIR})
+    cmake/FgrScenePlugin.cmake cmake/FgrInstallScene.cmake cmake/embed.cmake
+    DESTINATION ${FGR_INSTALL_CMAKE_DIR})
 
 # Build tree: the same config, pointing at the source tree's headers and kernels.
 export(EXPORT fgrTargets NAMESPACE fgr::
@@ -30,7 +31,7 @@ configure_package_config_file(cmake/fgrConfig.cmake.in
     ${CMAKE_BINARY_DIR}/${FGR_INSTALL_CMAKE_DIR}/fgrConfig.cmake
     INSTALL_DESTINATION ${CMAKE_BINARY_DIR}/${FGR_INSTALL_CMAKE_DIR}
     INSTALL_PREFIX ${CMAKE_BINARY_DIR} PATH_VARS FGR_CONFIG_KERNEL_DIR FGR_CONFIG_EXECUTABLE)
-foreach(script FgrScenePlugin.cmake embed.cmake)
+foreach(script FgrScenePlugin.cmake FgrInstallScene.cmake embed.cmake)
     configure_file(cmake/${script} ${CMAKE_BINARY_DIR}/${FGR_INSTALL_CMAKE_DIR}/${script} COPYONLY)
 endforeach()
 

@@ -5,10 +5,12 @@
 #   static const char <stem>_cl[];       the OpenCL source, NUL-terminated
 #   static const char <stem>_cl_path[];  its absolute path, for `fgr view --dev` to watch
 # so the .so is self-contained. Built against an installed fgr, the build then runs `fgr check` on
-# the plugin (see _fgr_check_scene_plugin below: FGR_CHECK_SCENE, FGR_COMPILE_SCENE). Used by fgr's
-# own plugins (in its source tree) and by scenes
-# built against an installed fgr (find_package(fgr)); the .so goes to FGR_PLUGIN_OUTPUT_DIR when
-# that is set, else to the current binary directory.
+# the plugin (see _fgr_check_scene_plugin below: FGR_CHECK_SCENE, FGR_COMPILE_SCENE), and the
+# target install-scene copies the checked plugin into the user's plugin folder, where fgr finds it
+# (see _fgr_install_scene_plugin: FGR_SCENE_INSTALL_DIR, FGR_INSTALL_SCENE_AFTER_BUILD). Used by
+# fgr's own plugins (in its source tree) and by scenes built against an installed fgr
+# (find_package(fgr)); the .so goes to FGR_PLUGIN_OUTPUT_DIR when that is set, else to the current
+# binary directory.
 set(FGR_EMBED_SCRIPT ${CMAKE_CURRENT_LIST_DIR}/embed.cmake)
 
 function(fgr_add_scene_plugin name)
@@ -53,6 +55,7 @@ function(fgr_add_scene_plugin name)
         set_property(GLOBAL APPEND PROPERTY FGR_SCENE_PLUGINS ${name})
     else()
         _fgr_check_scene_plugin(${name} "${ARG_CL_SOURCES}")
+        _fgr_install_scene_plugin(${name})
     endif()
 endfunction()
 
@@ -87,4 +90,39 @@ function(_fgr_check_scene_plugin name cl_sources)
         COMMENT "${what}"
         VERBATIM)
     add_custom_target(${name}_check ALL DEPENDS ${stamp})
+endfunction()
+
+# Into the user's plugin folder: `cmake --build build --target install-scene` copies every scene
+# plugin of the project, once built and checked, into FGR_SCENE_INSTALL_DIR (by default
+# ~/.local/share/fgr/plugins, the folder fgr searches after $FGR_PLUGIN_PATH and its own plugins);
+# -DFGR_INSTALL_SCENE_AFTER_BUILD=ON does it on every build, so `fgr view` reloads the rebuilt scene.
+# A plugin that fails its check is not copied. The copy lands under a temporary name beside the
+# old plugin and is renamed over it, so an fgr that is scanning the folder sees the old file or the
+# new one, never half of it.
+set(FGR_SCENE_INSTALL_DIR "$ENV{HOME}/.local/share/fgr/plugins" CACHE PATH
+    "where the install-scene target puts scene plugins (fgr searches ~/.local/share/fgr/plugins)")
+option(FGR_INSTALL_SCENE_AFTER_BUILD
+    "copy each scene plugin into FGR_SCENE_INSTALL_DIR after every build (install-scene)" OFF)
+set(FGR_INSTALL_SCENE_SCRIPT ${CMAKE_CURRENT_LIST_DIR}/FgrInstallScene.cmake)
+function(_fgr_install_scene_plugin name)
+    if(FGR_INSTALL_SCENE_AFTER_BUILD)
+        set(all ALL)
+    else()
+        set(all)
+    endif()
+    add_custom_target(${name}_install ${all}
+        COMMAND ${CMAKE_COMMAND} -DPLUGIN=$<TARGET_FILE:${name}>
+                -DDESTINATION=${FGR_SCENE_INSTALL_DIR} -P ${FGR_INSTALL_SCENE_SCRIPT}
+        COMMENT "Installing scene ${name} into ${FGR_SCENE_INSTALL_DIR}"
+        VERBATIM)
+    # After the check, when there is one: a scene that fails it stays out of the folder.
+    if(TARGET ${name}_check)
+        add_dependencies(${name}_install ${name}_check)
+    else()
+        add_dependencies(${name}_install ${name})
+    endif()
+    if(NOT TARGET install-scene)
+        add_custom_target(install-scene)
+    endif()
+    add_dependencies(install-scene ${name}_install)
 endfunction()

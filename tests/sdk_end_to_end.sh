@@ -4,7 +4,9 @@
 #   2. `fgr new-scene` a scene outside any source tree and build it against that prefix only
 #      (with the template's warnings on, and none allowed; the build runs `fgr check` on it, and a
 #      typo in its .cl fails the build naming the .cl's file and line),
-#   3. drop the .so into a plugin folder (FGR_PLUGIN_PATH, then ~/.local/share/fgr/plugins),
+#   3. drop the .so into a plugin folder (FGR_PLUGIN_PATH), then install it into
+#      ~/.local/share/fgr/plugins with the install-scene target, and on every build with
+#      FGR_INSTALL_SCENE_AFTER_BUILD (a plugin whose kernel does not compile is never installed),
 #   4. see it in `fgr list` and render it,
 #   5. do the same for every example in sdk/examples.
 #
@@ -88,10 +90,32 @@ FGR_PLUGIN_PATH=$work/plugins "$fgr" render my-kifs -o my-kifs.png --width 96 --
 hits=$(awk '/^hits /{print $2}' "$work/render.txt")
 [[ -f my-kifs.png && ${hits:-0} -gt 500 ]] || fail "my-kifs rendered no surface (hits ${hits:-none})"
 
-step "drop it into ~/.local/share/fgr/plugins: listed"
-mkdir -p "$HOME/.local/share/fgr/plugins" && mv plugins/my-kifs.so "$HOME/.local/share/fgr/plugins/"
+step "cmake --build --target install-scene: into ~/.local/share/fgr/plugins, listed"
+rm plugins/my-kifs.so
+user_plugins=$HOME/.local/share/fgr/plugins
+cmake --build my-kifs/build --target install-scene > "$work/install.log" 2>&1 ||
+    { cat "$work/install.log"; fail "install-scene"; }
+cmp -s my-kifs/build/my-kifs.so "$user_plugins/my-kifs.so" ||
+    { cat "$work/install.log"; fail "install-scene did not copy my-kifs.so into $user_plugins"; }
+[[ $(ls -A "$user_plugins") == my-kifs.so ]] || fail "install-scene left $(ls -A "$user_plugins")"
 "$fgr" list > "$work/list3.txt"
 grep -q "^my-kifs " "$work/list3.txt" || fail "my-kifs not listed from ~/.local/share/fgr/plugins"
+
+step "FGR_INSTALL_SCENE_AFTER_BUILD: every build installs; a kernel that does not compile is not installed"
+cmake -S my-kifs -B my-kifs/build -DFGR_INSTALL_SCENE_AFTER_BUILD=ON -DFGR_CHECK_SCENE=OFF > /dev/null
+printf '\n/* edited */\n' >> my-kifs/my_kifs.cl
+cmake --build my-kifs/build > "$work/after.log" 2>&1 || { cat "$work/after.log"; fail "build"; }
+cmp -s my-kifs/build/my-kifs.so "$user_plugins/my-kifs.so" ||
+    { cat "$work/after.log"; fail "the build did not install the rebuilt my-kifs.so"; }
+cp "$user_plugins/my-kifs.so" "$work/installed.so"
+printf '\nreal typo_here(vec3 p) { return undeclared_name; }\n' >> my-kifs/my_kifs.cl
+# install-scene itself: it must wait for the kernel's check, whatever order the build takes.
+if cmake --build my-kifs/build --target install-scene > "$work/after-typo.log" 2>&1; then
+    cat "$work/after-typo.log"; fail "install-scene of a .cl with a typo succeeded"
+fi
+cmp -s "$work/installed.so" "$user_plugins/my-kifs.so" || fail "a plugin that does not compile was installed"
+cp "$work/my_kifs.cl.good" my-kifs/my_kifs.cl
+cmake -S my-kifs -B my-kifs/build -DFGR_INSTALL_SCENE_AFTER_BUILD=OFF -DFGR_CHECK_SCENE=ON > /dev/null
 
 for example in "$source_dir"/sdk/examples/*/; do
     name=$(basename "$example")

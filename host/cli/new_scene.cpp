@@ -48,8 +48,7 @@ int command_new_scene(const NewSceneOptions& options) {
     fmt::print(
         "next:\n"
         "  cmake -S {0} -B {0}/build && cmake --build {0}/build\n"
-        "  mkdir -p ~/.local/share/fgr/plugins && cp {0}/build/{1}.so "
-        "~/.local/share/fgr/plugins/\n"
+        "  cmake --build {0}/build --target install-scene   # into ~/.local/share/fgr/plugins\n"
         "  fgr render {1} -o {1}.png\n",
         dir, options.name);
     return 0;
