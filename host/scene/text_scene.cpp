@@ -623,7 +623,7 @@ void read_header(const json& document, Description& out) {
     check_keys(document, "",
                {"$schema", "id", "name", "description", "parameters", "colour_parameters",
                 "cameras", "camera_paths", "lights", "effects", "march", "default_mode",
-                "builtin_defaults", "colour_modes", "scale"});
+                "builtin_defaults", "colour_modes", "scale", "environment"});
     if (const json* schema = member(document, "$schema")) text(*schema, "$schema");
     fgr_scene_desc& desc = out.desc;
     desc.header = FGR_HEADER(fgr_scene_desc);
@@ -680,6 +680,10 @@ void read_header(const json& document, Description& out) {
     }
     if (const json* modes = member(document, "colour_modes")) {
         desc.colour_modes = read_colour_modes(*modes, "colour_modes");
+    }
+    // Checked with the rest of the description (copy_scene_description), as a plugin's is.
+    if (const json* environment = member(document, "environment")) {
+        desc.environment = out.keep(text(*environment, "environment"));
     }
     out.finish();
 }

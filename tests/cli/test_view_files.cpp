@@ -218,6 +218,20 @@ TEST(ViewOfRender, RecordsTheEnvironmentThatLitTheRender) {
     EXPECT_EQ(recorded(ModeOptions{}), "sky");
 }
 
+// A text scene that names its own environment, rendered without --environment, renders again
+// from its view to the same bytes.
+TEST_F(ViewFileCli, AViewOfASceneWithItsOwnEnvironmentRendersUnderIt) {
+    test::write_text(dir() / "grey.cl",
+                     "/* fgr-scene {\"id\": \"grey\", \"name\": \"Grey\", "
+                     "\"environment\": \"uniform:0.25,0.5,1\"} */\n"
+                     "real scene_de(vec3 p, PARAMS) { return v3_length(p) - 1.0f; }\n");
+    succeed({"render", "grey.cl", "--mode", "path", "--spp", "1", "--bounces", "1", "--width", "16",
+             "--height", "12", "-o", "grey.png", "--save-view", "grey.fgrview.json"});
+    EXPECT_EQ(read_json(dir() / "grey.fgrview.json")["path"]["environment"], "uniform:0.25,0.5,1");
+    succeed({"render", "grey.fgrview.json", "-o", "again.png"});
+    EXPECT_TRUE(test::read_bytes(dir() / "grey.png") == test::read_bytes(dir() / "again.png"));
+}
+
 // Parts carry the view, and `fgr merge` passes it on: the merged image renders again as one.
 TEST_F(ViewFileCli, AMergedImageCarriesTheViewOfItsParts) {
     for (const char* tile : {"1/2", "2/2"}) {

@@ -63,7 +63,8 @@ json full_header() {
       "default_mode": "path",
       "builtin_defaults": {"ao_radius": 0.2, "fog_colour": [0.1, 0.1, 0.2]},
       "colour_modes": ["point", "planes", "axes"],
-      "scale": 1.5})");
+      "scale": 1.5,
+      "environment": "studio"})");
 }
 
 std::string text_scene(const std::string& header, const std::string& source = kSource) {
@@ -144,6 +145,7 @@ TEST(TextScene, EveryKeyOfTheHeaderReachesTheScene) {
     EXPECT_TRUE(param(scene, "ao_radius").scene_default);
     EXPECT_EQ(param(scene, "fog_colour").default_value, (std::array<float, 3>{0.1f, 0.1f, 0.2f}));
     EXPECT_EQ(scene.scale, 1.5f);
+    EXPECT_EQ(scene.environment, "studio");
 }
 
 TEST(TextScene, AHeaderWithAnIdAndANameGetsTheUsualDefaults) {
@@ -165,6 +167,7 @@ TEST(TextScene, AHeaderWithAnIdAndANameGetsTheUsualDefaults) {
     EXPECT_EQ(scene.march.max_steps, MarchSettings{}.max_steps);
     EXPECT_EQ(scene.default_mode, RenderMode::Shaded);
     EXPECT_EQ(scene.scale, 1.0f);
+    EXPECT_EQ(scene.environment, "") << "none: the sky";
 
     // The default camera and the march's reach follow the scale.
     const LoadResult scaled = parse_text_scene(
@@ -346,6 +349,10 @@ const std::vector<BadHeader> kBadHeaders = {
     {"ScaleZero", "/scale", 0, R"(header "scale": must be above 0)"},
     {"ScaleHuge", "/scale", 1e9, "scale 1000000000 outside [1e-06, 1000000]"},
     {"ScaleNotANumber", "/scale", "big", R"(header "scale": must be a number)"},
+    {"EnvironmentAMapFile", "/environment", "studio.hdr",
+     "environment 'studio.hdr' is not one fgr generates"},
+    {"EnvironmentNegative", "/environment", "uniform:1,-1,1", "is not a non-negative number"},
+    {"EnvironmentNotAString", "/environment", 3, R"(header "environment": must be a string)"},
     {"SchemaNotAString", "/$schema", 3, R"(header "$schema": must be a string)"},
     {"UnknownKey", "/colours", 1, R"(header: unknown key "colours")"},
 };
