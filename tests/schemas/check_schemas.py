@@ -19,7 +19,8 @@ It checks that
      "$schema" naming the build tree's copy of the schema), and a part's fgr.part header from
      `fgr render --part`, rendered along the written camera path;
   5. known-bad files fail their schema (a misspelt key, a missing key, a value out of range), and
-     fgr refuses the bad scene files too.
+     fgr refuses the bad scene files too; scene files with keys the valid files leave out pass
+     their schema, and fgr takes them.
 Needs python3-jsonschema (Debian 12: 4.10).
 """
 
@@ -80,6 +81,7 @@ for _schema in ("ifs.schema.json", "formula.schema.json", "text-scene.schema.jso
         (_schema, "/$defs/lights/maxItems", "lights"),
         (_schema, "/$defs/light/allOf/0/then/properties/angular_radius_degrees/maximum",
          "angular_radius_degrees"),
+        (_schema, "/$defs/environment/maxLength", "id_length"),
     ]
 # Names the readers take from a C++ table: (schema, JSON pointer to an enum, the fact's name).
 NAMES = [
@@ -518,6 +520,7 @@ BAD = {
         ("a box leaf without max", setting("/leaf", {"shape": "box", "min": [-1, -1, -1]})),
         ("a spot light", setting("/lights", [{"type": "spot", "position": [0, 0, 1]}])),
         ("a camera name with a space", setting("/cameras/0/name", "front view")),
+        ("an environment map file", setting("/environment", "studio.hdr")),
     ],
     "formula.schema.json": [
         ("a misspelt key", renamed("/iterations", "iteration")),
@@ -531,6 +534,7 @@ BAD = {
         ("a bailout of 100 with a Mandelbulb", setting("/bailout", 100)),
         ("an unknown distance", setting("/distance", "exponential")),
         ("a tag with capitals", setting("/tags", ["Hybrid"])),
+        ("a negative uniform environment", setting("/environment", "uniform:-1")),
     ],
     "part-identity.schema.json": [
         ("no identity", removing("/identity")),
@@ -565,6 +569,20 @@ BAD = {
         ("a camera name with a space", setting("/cameras/0/name", "front view")),
         ("an unknown colour mode", setting("/colour_modes", ["rainbow"])),
         ("a scale of 0", setting("/scale", 0)),
+        ("an environment map file", setting("/environment", "studio.hdr")),
+    ],
+}
+# Keys that the bases leave out, each a change to the same valid file that the schema and fgr must
+# both take (a new id for each, so that none is skipped as a duplicate).
+GOOD = {
+    "ifs.schema.json": [
+        ("an environment of its own", setting("/environment", "studio")),
+    ],
+    "formula.schema.json": [
+        ("a uniform environment", setting("/environment", "uniform:0.5")),
+    ],
+    "text-scene.schema.json": [
+        ("an environment of its own", setting("/environment", "uniform:0.5,0.5,0.6")),
     ],
 }
 # The valid file each format's bad cases break, where it is not the one fgr_schema_samples writes:
@@ -579,10 +597,33 @@ SCENE_SUFFIXES = {"ifs.schema.json": ".ifs.json", "formula.schema.json": ".formu
                   "text-scene.schema.json": ".cl"}
 
 
+def write_scene_file(path, name, document):
+    with open(path, "w", encoding="utf-8") as f:
+        if name == "text-scene.schema.json":
+            f.write(text_scene_file(document))
+        else:
+            json.dump(document, f)
+
+
+def check_good(name, base, schemas, accepted_dir, scene_files, failures):
+    """GOOD's cases of `name`: each valid, and written to `accepted_dir` for fgr to take."""
+    for i, (what, change) in enumerate(GOOD.get(name, [])):
+        document = copy.deepcopy(base)
+        change(document)
+        document["id"] = f"accepted-{len(scene_files)}"
+        check_valid(schemas, name, document, f"{name}, {what}", failures)
+        path = os.path.join(accepted_dir, f"good-{i}{SCENE_SUFFIXES[name]}")
+        write_scene_file(path, name, document)
+        scene_files.append((path, what, document["id"]))
+
+
 def check_bad(source_dir, build_dir, schemas, written, work, environment, failures):
     refused_dir = os.path.join(work, "refused")
+    accepted_dir = os.path.join(work, "accepted")
     os.makedirs(refused_dir)
+    os.makedirs(accepted_dir)
     scene_files = []
+    accepted_files = []
     cases = 0
     for name in sorted(schemas):
         if name not in BAD:
@@ -600,6 +641,7 @@ def check_bad(source_dir, build_dir, schemas, written, work, environment, failur
         if errors(schemas[name], base):
             failures.add(f"the file broken for {name}'s bad cases is not valid itself")
             continue
+        check_good(name, base, schemas, accepted_dir, accepted_files, failures)
         for i, (what, change) in enumerate(BAD[name]):
             document = copy.deepcopy(base)
             try:
@@ -612,19 +654,21 @@ def check_bad(source_dir, build_dir, schemas, written, work, environment, failur
                 failures.add(f"{name} accepts {what}")
             if name in SCENE_SUFFIXES:
                 path = os.path.join(refused_dir, f"bad-{i}{SCENE_SUFFIXES[name]}")
-                with open(path, "w", encoding="utf-8") as f:
-                    if name == "text-scene.schema.json":
-                        f.write(text_scene_file(document))
-                    else:
-                        json.dump(document, f)
+                write_scene_file(path, name, document)
                 scene_files.append((path, what))
-    print(f"{cases} known-bad files checked")
-    # fgr refuses the bad scene files too: `fgr list` skips each with a warning naming it.
+    print(f"{cases} known-bad files and {len(accepted_files)} good ones checked")
+    # fgr refuses the bad scene files too: `fgr list` skips each with a warning naming it; and
+    # takes the good ones.
     result = run([os.path.join(build_dir, "bin", "fgr"), "list"],
-                 dict(environment, FGR_PLUGIN_PATH=refused_dir), "fgr list")
+                 dict(environment, FGR_PLUGIN_PATH=os.pathsep.join([refused_dir, accepted_dir])),
+                 "fgr list")
     for path, what in scene_files:
         if f"skipping plugin {path}:" not in result.stderr + result.stdout:
             failures.add(f"fgr does not refuse {os.path.basename(path)} ({what})")
+    for path, what, scene_id in accepted_files:
+        if (f"skipping plugin {path}:" in result.stderr + result.stdout or
+                not re.search(rf"\b{scene_id}\b", result.stdout)):
+            failures.add(f"fgr does not take {os.path.basename(path)} ({what})")
 
 
 # --- The test -------------------------------------------------------------------------------------

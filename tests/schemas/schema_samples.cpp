@@ -47,14 +47,16 @@ CameraPathFile sample_camera_path() {
     return file;
 }
 
-// A hybrid with a vector parameter, a rotation, its own cameras, a path and a light.
+// A hybrid with a vector parameter, a rotation, its own cameras, a path, a light and an
+// environment.
 FormulaScene sample_formula_scene() {
     return parse_formula_json(R"({
         "format": "fgr-formula", "version": 1, "id": "sample-hybrid", "name": "Sample hybrid",
         "tags": ["hybrid"],
         "sequence": [{"formula": "mandelbulb", "repeat": 2, "parameters": {"power": 7}},
                      {"formula": "amazing_box", "parameters": {"axis": [0.3, 0.4, 1]}}],
-        "cameras": [{"name": "front", "position": [2, -2.2, 1.2], "target": [0, 0, 0]}]})",
+        "cameras": [{"name": "front", "position": [2, -2.2, 1.2], "target": [0, 0, 0]}],
+        "environment": "uniform:0.5,0.5,0.6"})",
                               "sample");
 }
 
