@@ -11,6 +11,7 @@
 #include "commands.hpp"
 #include "device/program_cache.hpp"
 #include "diagnostics/scene_check.hpp"
+#include "view_options.hpp"
 
 namespace fgr {
 void add_check_command(CLI::App& app, CheckOptions& options) {
@@ -18,7 +19,8 @@ void add_check_command(CLI::App& app, CheckOptions& options) {
         "check", "check a scene's distance estimator and views, and say what to fix");
     check
         ->add_option("scene", options.scene,
-                     "scene id (see `fgr list`) or scene file: .so, .ifs.json, .formula.json, .cl")
+                     "scene id (see `fgr list`) or scene file: .so, .ifs.json, .formula.json, .cl; "
+                     "or a view file (.fgrview.json): its scene at its parameter values")
         ->required();
     check->add_flag("--compile", options.compile_only,
                     "only compile the scene's kernel: errors name the .cl file and line");
@@ -32,7 +34,26 @@ void add_check_command(CLI::App& app, CheckOptions& options) {
     add_device_options(check, options.device, options.packet_width);
 }
 
-int command_check(const CheckOptions& options) {
+namespace {
+
+// A view file checks its scene at the view's parameter values, under those --set gives.
+CheckOptions with_view_applied(CheckOptions options) {
+    if (!is_view_file_name(options.scene)) return options;
+    const ViewFile view = load_view_argument(options.scene);
+    options.scene = view.scene_file.empty() ? view.scene_id : view.scene_file;
+    std::vector<std::string> assignments;
+    for (const ViewParameter& parameter : view.parameters) {
+        assignments.push_back(parameter_assignment(parameter));
+    }
+    assignments.insert(assignments.end(), options.assignments.begin(), options.assignments.end());
+    options.assignments = std::move(assignments);
+    return options;
+}
+
+}  // namespace
+
+int command_check(const CheckOptions& typed_options) {
+    const CheckOptions options = with_view_applied(typed_options);
     const Scene loaded = scene_from_argument(options.scene);
     const Scene scene = scene_as_used(loaded, options.dev);
     std::vector<float> params = default_param_values(scene);

@@ -88,6 +88,16 @@ TEST_F(CheckCommandTest, SetChecksAtTheGivenValuesAndTheReportSaysWhich) {
         << set.out;
     EXPECT_TRUE(contains(set.out, "FAILED  lipschitz")) << set.out;
     EXPECT_TRUE(contains(set.out, "fix: set step_factor <= 0.5")) << set.out;
+    // A view file checks its scene at the view's values.
+    std::ofstream(dir() / "scaled.fgrview.json")
+        << R"({"format": "fgr-view", "version": 1, "scene": {"id": "scaled", "file": ")" << plugin
+        << R"("}, "camera": {"eye": [0, -3, 0], "target": [0, 0, 0]},
+               "parameters": {"scale": 2}})";
+    const RunResult view =
+        run({"check", (dir() / "scaled.fgrview.json").string(), "--only", "lipschitz"});
+    EXPECT_EQ(view.exit_code, 1) << view;
+    EXPECT_TRUE(contains(view.out, "checked at scale=2 (the other parameters at their defaults)"))
+        << view.out;
     const RunResult outside = run({"check", plugin, "--set", "scale=9"});
     EXPECT_EQ(outside.exit_code, 2) << outside;
     EXPECT_TRUE(contains(outside.err, "'scale'")) << outside.err;
