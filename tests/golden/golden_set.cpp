@@ -1,11 +1,13 @@
 #include "golden_set.hpp"
 
+#include <algorithm>
 #include <fstream>
 #include <nlohmann/json.hpp>
 #include <sstream>
 #include <stdexcept>
 
 #include "child_process.hpp"
+#include "image/embedded_view.hpp"
 #include "util/content_hash.hpp"
 
 namespace fgr::golden {
@@ -88,6 +90,28 @@ std::vector<std::string> listed_scene_ids() {
     return ids;
 }
 
+// The PNG's bytes without the view it carries (an iTXt chunk "fgr:view"): the view names the
+// schema by the path of the tree that wrote it and fgr's version, which are no part of the image.
+// A file that is not a well-formed PNG is hashed whole.
+std::string png_without_view(const std::string& bytes) {
+    constexpr std::size_t kSignature = 8, kChunkFrame = 12;
+    std::string kept = bytes.substr(0, std::min(bytes.size(), kSignature));
+    std::size_t at = kSignature;
+    while (at + kChunkFrame <= bytes.size()) {
+        const auto byte = [&](std::size_t i) { return static_cast<unsigned char>(bytes[i]); };
+        const std::size_t length = (std::size_t(byte(at)) << 24) |
+                                   (std::size_t(byte(at + 1)) << 16) |
+                                   (std::size_t(byte(at + 2)) << 8) | std::size_t(byte(at + 3));
+        if (length > bytes.size() - at - kChunkFrame) return bytes;
+        const std::string type = bytes.substr(at + 4, 4);
+        const std::string keyword = std::string(kPngViewKeyword) + '\0';
+        const bool view = type == "iTXt" && bytes.compare(at + 8, keyword.size(), keyword) == 0;
+        if (!view) kept += bytes.substr(at, length + kChunkFrame);
+        at += length + kChunkFrame;
+    }
+    return at == bytes.size() ? kept : bytes;
+}
+
 Observation observe(const GoldenCase& golden_case) {
     const test::TempDir folder("fgr_golden");
     const test::RunResult run = test::run_fgr(golden_case.args, folder.path());
@@ -95,7 +119,8 @@ Observation observe(const GoldenCase& golden_case) {
     observation.exit_code = run.exited ? run.exit_code : 128 + run.term_signal;
     const fs::path output = folder.path() / "out.png";
     if (fs::exists(output))
-        observation.output_hash = ContentHash().add(test::read_file(output)).hex();
+        observation.output_hash =
+            ContentHash().add(png_without_view(test::read_file(output))).hex();
     for (const std::string& line : lines_of(run.out)) {
         if (!is_timing(figure_key(line))) observation.figures.push_back(line);
     }
