@@ -87,30 +87,6 @@ std::optional<std::size_t> after_tag(std::string_view text) {
     return at;
 }
 
-// Whether arrays and objects in `text` nest deeper than `limit` (brackets inside strings do not
-// count).
-bool nests_deeper_than(std::string_view text, int limit) {
-    int depth = 0;
-    bool in_string = false;
-    for (std::size_t i = 0; i < text.size(); ++i) {
-        const char c = text[i];
-        if (in_string) {
-            if (c == '\\') {
-                ++i;
-            } else if (c == '"') {
-                in_string = false;
-            }
-        } else if (c == '"') {
-            in_string = true;
-        } else if (c == '[' || c == '{') {
-            if (++depth > limit) return true;
-        } else if ((c == ']' || c == '}') && depth > 0) {
-            --depth;
-        }
-    }
-    return false;
-}
-
 // The header's JSON, text[begin, end), parsed where it stands: everything before it is blanked
 // but its line breaks, so the parser's "line 3, column 5" is the file's.
 json parse_header(std::string_view text, std::size_t begin, std::size_t end) {
@@ -118,7 +94,7 @@ json parse_header(std::string_view text, std::size_t begin, std::size_t end) {
     if (skip_blank(body, 0) == body.size()) {
         refuse_at("", fmt::format("no JSON object after {}", kTextSceneTag));
     }
-    if (nests_deeper_than(body, kTextSceneMaxDepth)) {
+    if (json_fields::nests_deeper_than(body, kTextSceneMaxDepth)) {
         refuse_at("", fmt::format("nested deeper than {} levels", kTextSceneMaxDepth));
     }
     std::string padded(begin, ' ');

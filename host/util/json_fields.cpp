@@ -84,6 +84,28 @@ void check_schema_key(const json& document) {
     }
 }
 
+bool nests_deeper_than(std::string_view text, int limit) {
+    int depth = 0;
+    bool in_string = false;
+    for (std::size_t i = 0; i < text.size(); ++i) {
+        const char c = text[i];
+        if (in_string) {
+            if (c == '\\') {
+                ++i;
+            } else if (c == '"') {
+                in_string = false;
+            }
+        } else if (c == '"') {
+            in_string = true;
+        } else if (c == '[' || c == '{') {
+            if (++depth > limit) return true;
+        } else if ((c == ']' || c == '}') && depth > 0) {
+            --depth;
+        }
+    }
+    return false;
+}
+
 std::string shown(const json& value) {
     std::string text = value.dump(-1, ' ', /*ensure_ascii=*/true, json::error_handler_t::replace);
     if (text.size() > 40) text = text.substr(0, 40) + "...";

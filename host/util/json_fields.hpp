@@ -52,6 +52,11 @@ void check_keys(const nlohmann::json& object, std::initializer_list<std::string_
 // keys list "$schema" among the known ones at the top level.
 void check_schema_key(const nlohmann::json& document);
 
+// Whether arrays and objects in the JSON `text` nest deeper than `limit` (brackets inside strings
+// do not count): checked before parsing, so a hostile file never recurses through the JSON
+// library.
+bool nests_deeper_than(std::string_view text, int limit);
+
 // A JSON value as it may appear in a one-line message: dumped with non-ASCII escaped, shortened to
 // about 40 characters.
 std::string shown(const nlohmann::json& value);

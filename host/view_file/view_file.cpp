@@ -15,6 +15,7 @@
 #include "render/sample_budget.hpp"
 #include "scene/effects.hpp"
 #include "scene/parameters.hpp"
+#include "scene/scene_json.hpp"
 #include "scene/scene_limits.hpp"
 #include "util/atomic_file.hpp"
 #include "util/content_hash.hpp"
@@ -404,34 +405,6 @@ ordered view_json(const ViewFile& view) {
     return document;
 }
 
-// The deepest nesting of arrays and objects in `text`, strings skipped; stops counting past
-// `limit`.
-int nesting_depth(std::string_view text, int limit) {
-    int depth = 0, deepest = 0;
-    bool in_string = false, escaped = false;
-    for (const char c : text) {
-        if (in_string) {
-            if (escaped) {
-                escaped = false;
-            } else if (c == '\\') {
-                escaped = true;
-            } else if (c == '"') {
-                in_string = false;
-            }
-            continue;
-        }
-        if (c == '"') {
-            in_string = true;
-        } else if (c == '[' || c == '{') {
-            deepest = std::max(deepest, ++depth);
-            if (deepest > limit) return deepest;
-        } else if (c == ']' || c == '}') {
-            --depth;
-        }
-    }
-    return deepest;
-}
-
 }  // namespace
 
 std::string scene_fingerprint(const Scene& scene) {
@@ -509,23 +482,10 @@ std::string view_file_text(const ViewFile& view) { return view_json(view).dump(2
 
 ViewFile parse_view_file(const std::string& text) {
     if (text.size() > kMaxViewBytes) fail("larger than {} bytes: not a view file", kMaxViewBytes);
-    if (nesting_depth(text, kMaxViewDepth) > kMaxViewDepth) {
+    if (json_fields::nests_deeper_than(text, kMaxViewDepth)) {
         fail("nested more than {} levels deep: not a view file", kMaxViewDepth);
     }
-    json document;
-    try {
-        document = json::parse(text);
-    } catch (const json::exception& error) {  // parse errors, and numbers past a double's range
-        std::string message = error.what();
-        if (const std::size_t tag = message.find("] "); tag != std::string::npos) {
-            message.erase(0, tag + 2);
-        }
-        for (char& c : message) {
-            if (static_cast<unsigned char>(c) < 0x20) c = ' ';
-        }
-        fail("not valid JSON: {}", message);
-    }
-    if (!document.is_object()) fail("must be a JSON object");
+    const json document = scene_json::parse_object(text);
     json_fields::check_keys(document,
                             {"$schema", "format", "version", "fgr_version", "scene", "image",
                              "camera", "parameters", "render", "path"},

@@ -61,8 +61,8 @@ real scene_de(vec3 p, PARAMS) {
 /* Albedo in linear RGB: the tint on the bumps' tops, fading to white in the hollows. */
 #define FGR_SCENE_HAS_COLOUR
 vec3 scene_colour(vec3 p, PARAMS) {
-    real wave = sin(param_frequency * p.x) * sin(param_frequency * p.y) *
-                sin(param_frequency * p.z);
+    real wave =
+        sin(param_frequency * p.x) * sin(param_frequency * p.y) * sin(param_frequency * p.z);
     real t = clamp(0.5f + 1.5f * wave, 0.0f, 1.0f);
     vec3 white = v3_splat(0.9f, 0.9f, 0.88f);
     return v3_add(v3_scale(white, 1.0f - t), v3_scale(param_tint, t));
