@@ -11,6 +11,9 @@
 
 namespace fgr::test {
 
+// The source tree's sdk/ folder: the template and the examples.
+inline const std::filesystem::path kSdkDir =
+    std::filesystem::path(FGR_TEST_SOURCE_DIR).parent_path() / "sdk";
 inline const std::filesystem::path kSdkGuide =
     std::filesystem::path(FGR_TEST_SOURCE_DIR).parent_path() / "docs" / "sdk" / "text-scenes.md";
 
