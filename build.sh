@@ -1,5 +1,5 @@
 #!/usr/bin/env bash
-# Sets up, builds and runs fgr on Debian 12. The two Quick start commands of the README:
+# Sets up, builds and runs fgr on Debian 12. The two commands the README gives:
 #
 #   ./build.sh render   install what building fgr needs, build fgr and the built-in scenes (no
 #                       tests), render the default scene to mandelbulb.png
