@@ -1,5 +1,5 @@
 #!/usr/bin/env bash
-# Sets up, builds and runs fgr on Debian 12. The two Quick start commands of the README:
+# Sets up, builds and runs fgr on Debian 12. The two commands the README gives:
 #
 #   ./build.sh render   install what building fgr needs, build fgr and the built-in scenes (no
 #                       tests), render the default scene to mandelbulb.png
@@ -14,6 +14,9 @@
 #                              change that must leave every image as it is
 #   ./build.sh test-sanitize   build with AddressSanitizer + UndefinedBehaviorSanitizer in its own
 #                              tree and run the tests there (any report fails them)
+#   ./build.sh docs            the documentation site (mkdocs.yml) into BUILD_DIR/site, from the
+#                              pages in docs/ and the CLI reference fgr generates; any broken link
+#                              fails it
 #
 # Needs root or sudo only when packages are missing. BUILD_DIR (default: build) picks the build
 # tree, SANITIZE_BUILD_DIR (default: build-sanitize) the sanitizer build's.
@@ -43,6 +46,8 @@ test_packages=(
     libgtest-dev libopenmpi-dev openmpi-bin libgl1-mesa-dri xvfb xauth clinfo gnuplot-nox
     clang-format python3-jsonschema
 )
+# And to build the documentation site: MkDocs (Debian 12 has 1.4, with its themes).
+docs_packages=(mkdocs)
 
 # install_missing_packages PACKAGE...: apt-get installs those not installed yet.
 install_missing_packages() {
@@ -112,8 +117,23 @@ case "$command" in
         ctest --test-dir "$sanitize_build_dir" --output-on-failure -j "$jobs" \
             --repeat until-pass:2
         ;;
+    docs)
+        install_missing_packages "${build_packages[@]}" "${docs_packages[@]}"
+        # The CLI reference comes from fgr itself (the target fgr_generated_docs); a tree the test
+        # commands configured is reused as it is, a fresh one is configured as render does.
+        if [[ ! -f $build_dir/CMakeCache.txt ]]; then
+            cmake -S "$repo" -B "$build_dir" -G Ninja -DCMAKE_BUILD_TYPE=Release -DFGR_WERROR=OFF \
+                -DFGR_BUILD_TESTS=OFF
+        fi
+        cmake --build "$build_dir" -j "$jobs" --target fgr_generated_docs
+        python3 "$repo/docs/stage.py" "$repo" "$build_dir/docs-src" \
+            --cli-reference "$build_dir/docs/cli-reference.md"
+        FGR_DOCS_STAGED="$build_dir/docs-src" FGR_SITE_DIR="$build_dir/site" \
+            mkdocs build --strict --config-file "$repo/mkdocs.yml"
+        echo "build.sh: the site is in $build_dir/site (open index.html)"
+        ;;
     *)
-        echo "usage: ./build.sh [render [OUT.png] | test | test-slow | test-golden | test-sanitize]" >&2
+        echo "usage: ./build.sh [render [OUT.png] | test | test-slow | test-golden | test-sanitize | docs]" >&2
         exit 2
         ;;
 esac

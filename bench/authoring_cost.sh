@@ -1,5 +1,5 @@
 #!/usr/bin/env bash
-# What the iterate-function contract (kernels/fractals/fgr_iterate.cl) costs, for the README: each SDK
+# What the iterate-function contract (kernels/fractals/fgr_iterate.cl) costs (docs/performance.md): each SDK
 # example written with it (sdk/examples/icosahedral-kifs, pseudo-kleinian) against the same maths
 # written out by hand in packet form (bench/authoring/*_packet.cl, timed through `fgr bench
 # --kernel-source`). Both play the example's camera path, 12 frames at 640x480, in alternating

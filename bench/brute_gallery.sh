@@ -1,5 +1,5 @@
 #!/usr/bin/env bash
-# The README's brute-force gallery and cost figures: the inside-only scenes (no distance estimator:
+# The brute-force gallery and cost figures (docs/user-guide/brute-force.md): the inside-only scenes (no distance estimator:
 # stereographic-julia, bristorbrot) from two cameras each, and two DE scenes rendered from the sign of
 # their DE, all at 360x270 with 64 passes; then the convergence sweep of the Mandelbulb's depth
 # against the sphere tracer's (`fgr bench accuracy --mode brute`, 320x240, 3 timing rounds) and of

@@ -1,5 +1,5 @@
 #!/usr/bin/env bash
-# The gigapixel benchmark of the README ("Gigapixel stills in tiles"): the Menger sponge at
+# The gigapixel benchmark (docs/user-guide/gigapixel.md): the Menger sponge at
 # 4000x3000 (tiled), 16000x12000 and 40000x30000, each as a streamed PNG, with its wall time and
 # peak memory (GNU time's maximum resident set size and fgr's own peak_memory_mib).
 # Usage: bench/gigapixel.sh [BUILD_DIR] [OUTPUT_DIR]   (about 1 GB of disk for the outputs)

@@ -1,5 +1,5 @@
 #!/usr/bin/env bash
-# What exact IFS tracing costs as detail grows, for the README: each shipped IFS scene's default
+# What exact IFS tracing costs as detail grows (docs/user-guide/ifs.md): each shipped IFS scene's default
 # view at 320x240 (shaded mode, default shadows), at every depth the slider allows, rendered three
 # times (the fastest counts): rays per second and nodes visited per pixel (fgr render --stats).
 # Then the Sierpinski tetrahedron and the Menger sponge against their DE scenes at equal images

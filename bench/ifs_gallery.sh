@@ -1,5 +1,5 @@
 #!/usr/bin/env bash
-# The README's IFS gallery: the six shipped IFS scenes (plugins/ifs/) from their default cameras at
+# The IFS gallery (docs/user-guide/ifs.md): the six shipped IFS scenes (plugins/ifs/) from their default cameras at
 # 300x225, shaded with shadows and 4 samples per pixel, and the Menger sponge path traced under
 # the sky (256 samples per pixel). Run from the repository root after ./build.sh.
 set -euo pipefail

@@ -1,5 +1,5 @@
 #!/usr/bin/env bash
-# The README's path-traced gallery row: the bulb-stage scene under the default sky and in the
+# The path-traced gallery (docs/user-guide/render-modes.md): the bulb-stage scene under the default sky and in the
 # studio, and the Mandelbulb's canonical view under the sky, 256 samples per pixel each, plus the
 # studio environment fgr generates, written as .hdr and used from the file (so the IBL path from
 # file to image is what renders). Run from the repository root after ./build.sh.

@@ -1,5 +1,5 @@
 #!/usr/bin/env bash
-# Screenshot of the viewer window (panel included) for the README: runs `fgr view` in a virtual X
+# Screenshot of the viewer window (panel included) for the docs: runs `fgr view` in a virtual X
 # server, waits until it has refined the still view, and grabs the screen with ImageMagick.
 #
 #   [FGR_SCENE=ID] bench/viewer_screenshot.sh [OUT.png]   (default: mandelbulb, bench/results/viewer.png)

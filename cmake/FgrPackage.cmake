@@ -35,7 +35,8 @@ foreach(script FgrScenePlugin.cmake FgrInstallScene.cmake embed.cmake)
     configure_file(cmake/${script} ${CMAKE_BINARY_DIR}/${FGR_INSTALL_CMAKE_DIR}/${script} COPYONLY)
 endforeach()
 
-# The SDK guide, for scene authors to read beside the kernel library's source (installed by
+# The SDK (its pointer page README.md, the template, the examples and their images) and the ABI,
+# for scene authors to read beside the kernel library's source (installed by
 # kernels/CMakeLists.txt). The guide's links resolve in the install as in the source tree
 # (tests/installed_docs.sh): ABI.md keeps its place beside sdk/, the examples' images their place
 # in sdk/.
@@ -43,3 +44,6 @@ file(GLOB sdk_images ${PROJECT_SOURCE_DIR}/sdk/*.png)
 install(FILES sdk/README.md ${sdk_images} DESTINATION ${CMAKE_INSTALL_DATADIR}/fgr/sdk)
 install(FILES plugin_api/ABI.md DESTINATION ${CMAKE_INSTALL_DATADIR}/fgr/plugin_api)
 install(DIRECTORY sdk/template sdk/examples DESTINATION ${CMAKE_INSTALL_DATADIR}/fgr/sdk)
+# The guide itself, the documentation site's SDK pages, goes beside sdk/ as it lies beside it in the
+# source tree (docs/sdk/), so its links to the examples' images and the ABI resolve in both.
+install(DIRECTORY docs/sdk/ DESTINATION ${CMAKE_INSTALL_DATADIR}/fgr/docs/sdk COMPONENT sdk)

@@ -1,8 +1,9 @@
 #!/usr/bin/env bash
 # The installed documentation stands on its own (ctest runs it):
 #   1. install fgr into a temporary prefix,
-#   2. every relative link of every installed markdown file (the SDK guide, ABI.md, the template's
-#      README) resolves to a file or folder inside the prefix,
+#   2. every relative link of every installed markdown file (the SDK guide's pages in
+#      share/fgr/docs/sdk, the pointer to them in share/fgr/sdk, ABI.md, the template's README)
+#      resolves to a file or folder inside the prefix,
 #   3. the install leaves no empty folder under share/fgr.
 #
 #   tests/installed_docs.sh BUILD_DIR
@@ -15,8 +16,9 @@ failures=0
 fail() { echo "installed_docs: $*" >&2; failures=$((failures + 1)); }
 
 cmake --install "$build_dir" --prefix "$prefix" > "$work/install.log"
-guide=$prefix/share/fgr/sdk/README.md
-[[ -f $guide ]] || { echo "installed_docs: FAILED: no $guide" >&2; exit 1; }
+for guide in "$prefix/share/fgr/sdk/README.md" "$prefix/share/fgr/docs/sdk/index.md"; do
+    [[ -f $guide ]] || { echo "installed_docs: FAILED: no $guide" >&2; exit 1; }
+done
 
 # Markdown links [text](target) and images ![alt](target); the target ends at a blank or ')'.
 links_in() { grep -o '\]([^) ]*' "$1" | sed 's/^](//' || true; }

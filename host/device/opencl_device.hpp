@@ -39,7 +39,7 @@ struct ComputeDevice {
 ComputeDevice open_device(int index);
 
 // Rays per work-item that suit the device: CPUs march packets in SIMD lanes (16 measured fastest
-// on AVX2 with PoCL, see README), GPUs one ray per work-item.
+// on AVX2 with PoCL, see docs/performance.md), GPUs one ray per work-item.
 int preferred_packet_width(const DeviceInfo& info);
 
 // A one-line name for an OpenCL error code, e.g. "CL_OUT_OF_RESOURCES (-5)".

@@ -4,7 +4,7 @@
 // libraries only they use are not loaded by every fgr process. Binding a library's symbols costs
 // every process that links it, and slows the symbol lookups of every library loaded after it
 // (PoCL's LLVM among them): FFmpeg's ~130 libraries took 32 ms of each fgr process, SDL's ~50
-// another ~10 with the slower LLVM load (measured; README "Speed").
+// another ~10 with the slower LLVM load (measured; docs/performance.md, "Process start-up").
 //
 //   libfgr_video_ffmpeg.so  video encoding (host/video_ffmpeg)
 //   libfgr_viewer.so        the interactive viewer, `fgr view` (host/viewer)

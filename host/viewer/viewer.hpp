@@ -1,6 +1,6 @@
 #pragma once
 // `fgr view`: the interactive window. Rendering runs on its own thread, so input and the panel
-// never wait on a slow frame; see README "Viewer" for the controls.
+// never wait on a slow frame; see docs/tutorial/viewer.md for the controls.
 
 #include <filesystem>
 #include <optional>

@@ -92,7 +92,7 @@ TEST(ParetoFront, OneFrontPerErrorAndPerReference) {
 // so a knob that does nothing reproduces the default's figures exactly). The Menger sponge, where
 // every knob has something to act on at 40x30: a sphere has no DE iterations, and the
 // Mandelbulb's rays all escape in under 6 iterations at this size (6, 9 and 18 give the default's
-// image exactly, as the README's sweep table shows at 320x240). Where the effect's direction is
+// image exactly, as docs/performance.md's table shows at 320x240). Where the effect's direction is
 // certain it is checked too: a looser hit threshold stops rays sooner (fewer steps, more
 // silhouette pixels disagree), fewer allowed steps cap the work, a smaller step factor or plain
 // steps take more of them.

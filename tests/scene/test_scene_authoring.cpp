@@ -501,11 +501,12 @@ std::vector<std::string> code_lines(const std::string& source) {
     return lines;
 }
 
-// The SDK guide's orbit-scene examples are short (the bound: 15 lines of kernel code),
+// The SDK guide's orbit-scene examples are short (at most 15 lines of kernel code),
 // and the guide shows each file's code as it is.
 TEST(OrbitScenes, TheGuidesExamplesAreAtMostFifteenLinesAndShownAsTheyAre) {
     const std::filesystem::path sdk = std::filesystem::path(FGR_TEST_SOURCE_DIR) / "../sdk";
-    const std::string guide = read_file(sdk / "README.md");
+    const std::string guide =
+        read_file(std::filesystem::path(FGR_TEST_SOURCE_DIR) / "../docs/sdk/orbit-scenes.md");
     for (const char* file : {"examples/icosahedral-kifs/icosahedral_kifs.cl",
                              "examples/pseudo-kleinian/pseudo_kleinian.cl"}) {
         const auto lines = code_lines(read_file(sdk / file));

@@ -524,7 +524,7 @@ void insert_pathological(std::string& text, test::FuzzRng& rng) {
 TEST(TextSceneFuzz, EveryMutatedHeaderGivesASceneOrOneLine) {
     std::vector<std::string> seeds = {
         text_scene(full_header().dump(1)), test::sdk_guide_text_scene_example(),
-        fill_template(test::read_file(test::kSdkGuide.parent_path() / "template" / "text_scene.cl"),
+        fill_template(test::read_file(test::kSdkDir / "template" / "text_scene.cl"),
                       {{"SCENE_ID", "fuzz"}, {"SCENE_NAME", "Fuzz"}})};
     for (const std::string& seed : seeds) {
         const LoadResult loaded = parse_text_scene(seed, "fuzz.cl");

@@ -93,7 +93,7 @@ NAMES = [
     ("text-scene.schema.json", "/properties/default_mode/enum", "render_modes"),
 ]
 # Documents whose ```json blocks are checked when their "format" is one a schema has.
-DOCS = ["README.md", "sdk/README.md", "docs/*.md"]
+DOCS = ["README.md", "sdk/README.md", "docs/*.md", "docs/*/*.md"]
 # Files fgr ships, each checked against the schema of its "format".
 SHIPPED = ["plugins/formulas/*.formula.json", "plugins/ifs/*.ifs.json", "bench/deep_zoom.json",
            "tests/schemas/examples/*.json"]
