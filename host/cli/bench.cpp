@@ -74,7 +74,8 @@ void add_bench_command(CLI::App& app, BenchOptions& options) {
                          ->check(CLI::Range(0.1, 3600.0));
     bench
         ->add_option("--frames", options.frames,
-                     "a fixed number of frames per run, spread evenly over the path")
+                     "a fixed number of frames per run, spread evenly over the path (default: "
+                     "as many as --duration allows)")
         ->check(CLI::Range(1, 100000))
         ->excludes(duration);
     bench->add_option("--runs", options.settings.runs, "repeat and average (default 1)")

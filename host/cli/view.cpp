@@ -70,7 +70,8 @@ void add_view_command(CLI::App& app, ViewCommandOptions& options) {
     view->add_option("--output-dir", viewer.output_dir,
                      "where F12 screenshots and saved camera paths go (default: .)");
     view->add_option("--replay", options.replay, "feed timed input events from a file");
-    view->add_option("--exit-after", options.exit_after, "quit after this many seconds")
+    view->add_option("--exit-after", options.exit_after,
+                     "quit after this many seconds (default: never)")
         ->check(CLI::PositiveNumber);
     view->add_flag("--dev", viewer.dev,
                    "scene development: reload a scene when its .cl source file is saved");
