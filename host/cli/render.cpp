@@ -187,8 +187,8 @@ FrameRequest scene_request(const Scene& scene, const RenderOptions& options) {
     if (options.colour) {
         if (scene.find_param("colour_mode") == nullptr) {
             throw UsageError(fmt::format(
-                "scene '{}' has no colour modes (no colour_mode parameter; see `fgr list`)",
-                scene.id));
+                "scene '{}' has no colour modes (no colour_mode parameter; see `fgr list {}`)",
+                scene.id, scene.id));
         }
         set_param_from_text(scene, request.params, "colour_mode=" + *options.colour);
     }
@@ -467,7 +467,7 @@ void add_frame_options(CLI::App* command, RenderOptions& options, int max_side) 
         ->allow_extra_args(false);
     command->add_option("--colour", options.colour,
                         "colour mode: point, planes, axes or iterations, those the scene offers "
-                        "(see `fgr list`); the same as --set colour_mode=MODE");
+                        "(see `fgr list SCENE`); the same as --set colour_mode=MODE");
     command
         ->add_option("--spp", options.samples,
                      fmt::format("samples per pixel, jittered and averaged: anti-aliasing, depth "

@@ -37,8 +37,7 @@ std::optional<std::string> closest_name(std::string_view typed,
     std::size_t best_distance = 0;
     for (const std::string& candidate : candidates) {
         const std::size_t distance = edit_distance(typed, candidate);
-        const std::size_t allowed =
-            std::max<std::size_t>(1, std::max(typed.size(), candidate.size()) / 3);
+        const std::size_t allowed = std::max<std::size_t>(1, typed.size() / 3);
         // A name as far from `typed` as `typed` is long shares nothing worth suggesting.
         if (candidate == typed || distance > allowed || distance >= typed.size()) continue;
         if (!best || distance < best_distance) {

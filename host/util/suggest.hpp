@@ -16,8 +16,8 @@ namespace fgr {
 std::size_t edit_distance(std::string_view a, std::string_view b);
 
 // The candidate closest to `typed`, when it is close enough to be what was meant: at most a third
-// of the longer name's length in edits (at least one), and nearer than `typed` is to being
-// nothing at all. The first of equally close candidates wins; nullopt when none is close.
+// of typed's length in edits (at least one), and fewer edits than typed has characters. The first
+// of equally close candidates wins; nullopt when none is close.
 std::optional<std::string> closest_name(std::string_view typed,
                                         const std::vector<std::string>& candidates);
 

@@ -671,7 +671,7 @@ TEST_F(CliTest, SixteenBitOutputIsLinear) {
 }
 
 TEST_F(CliTest, ListShowsMandelbulbParametersCamerasAndPaths) {
-    const RunResult result = run({"list"});
+    const RunResult result = run({"list", "mandelbulb"});
     ASSERT_TRUE(result.exited) << result;
     ASSERT_EQ(result.exit_code, 0) << result;
     for (const char* word : {"mandelbulb", "power", "bailout", "variant", "iterations", "canonical",
@@ -798,7 +798,14 @@ TEST_F(CliWithOwnCache, ListShowsIfsScenesFromThePluginPath) {
     std::ofstream(plugins / "two.ifs.json")
         << R"({"format": "fgr-ifs", "version": 1, "id": "two-maps", "name": "Two maps",)"
         << R"( "maps": [{"scale": 0.5}, {"scale": 0.5, "translate": [1, 0, 0]}]})";
-    const RunResult result = run_with({"list"}, plugins);
+    const RunResult listed = run_with({"list"}, plugins);
+    ASSERT_EQ(listed.exit_code, 0) << listed;
+    // First, as the first folder's; a line, its kind in a column of its own.
+    const std::string line = listed.out.substr(0, listed.out.find('\n'));
+    EXPECT_EQ(line.rfind("two-maps ", 0), 0u) << listed.out;
+    EXPECT_NE(line.find(" IFS "), std::string::npos) << listed.out;
+    EXPECT_NE(line.find(" Two maps"), std::string::npos) << listed.out;
+    const RunResult result = run_with({"list", "two-maps"}, plugins);
     ASSERT_EQ(result.exit_code, 0) << result;
     EXPECT_NE(result.out.find("two-maps  Two maps"), std::string::npos) << result.out;
     EXPECT_NE(result.out.find("IFS file: " + (plugins / "two.ifs.json").string() + " (2 maps"),
@@ -811,7 +818,7 @@ TEST_F(CliWithOwnCache, ListShowsIfsScenesFromThePluginPath) {
 // and bounding sphere, not as an IFS file.
 TEST_F(CliWithOwnCache, ListShowsAnIfsPluginsMaps) {
     const fs::path plugins = fs::path(FGR_TEST_FIXTURE_DIR) / "ifs_plugin";
-    const RunResult result = run_with({"list"}, plugins);
+    const RunResult result = run_with({"list", "sierpinski-ifs-plugin"}, plugins);
     ASSERT_EQ(result.exit_code, 0) << result;
     EXPECT_NE(result.out.find("sierpinski-ifs-plugin  Sierpinski tetrahedron (IFS plugin)"),
               std::string::npos)
@@ -863,7 +870,9 @@ TEST_F(CliWithOwnCache, UnknownSceneNamesTheRefusedPluginAndWhy) {
     const RunResult other = run_with(
         {"render", "zzz", "-o", out_png().string(), "--width", "16", "--height", "12"}, refused);
     EXPECT_EQ(other.exit_code, 2) << other;
-    EXPECT_TRUE(contains_ignoring_case(other.err, "unknown scene 'zzz' (available: ")) << other;
+    EXPECT_TRUE(contains_ignoring_case(
+        other.err, "unknown scene 'zzz' (`fgr list` lists the scenes; refused: "))
+        << other;
     EXPECT_TRUE(contains_ignoring_case(
         other.err,
         (refused / "liboops.so").string() + " (parameter 'scale': default 3 outside [0.5, 2])"))
@@ -909,8 +918,9 @@ TEST_F(CliWithOwnCache, RendersEveryKindOfSceneFileByPath) {
             << "a plugin folder was scanned: " << result;
         if (!rendered) {
             EXPECT_EQ(result.exit_code, 2) << result;
-            EXPECT_EQ(result.err,
-                      "fgr: error: scene '" + id + "' has no camera 'nosuch' (see `fgr list`)\n")
+            EXPECT_EQ(result.err, "fgr: error: scene '" + id +
+                                      "' has no camera 'nosuch' (`fgr list " + id +
+                                      "` lists its cameras)\n")
                 << result;
             continue;
         }
