@@ -1020,22 +1020,28 @@ TEST_F(CliWithOwnCache, TextScenesPassFgrCheck) {
     }
 }
 
-// Off a terminal, bench says how far each run is every quarter, none skipped: three frames per run
-// report 0, 1/3 and 2/3 done and then the end, which passes 75% and 100% at once.
-TEST_F(CliWithOwnCache, BenchProgressLinesNameEveryQuarterOfEveryRun) {
+// Off a terminal, a bench that runs past the delay (FGR_PROGRESS_DELAY, 0 here) says how far it is
+// over all its runs, about every tenth, with the run and the pace: three frames a run and two runs
+// are sixths of the whole, the end of the first run and the start of the second one line.
+TEST_F(CliWithOwnCache, BenchProgressLinesRunToTheEndWithTheRunAndPace) {
     const RunResult result =
         run_with({"bench", "mandelbulb", "--frames", "3", "--runs", "2", "--width", "16",
-                  "--height", "12", "-o", (dir() / "bench").string()});
+                  "--height", "12", "-o", (dir() / "bench").string()},
+                 {}, {{"FGR_PROGRESS_DELAY", "0"}});
     ASSERT_EQ(result.exit_code, 0) << result;
     std::vector<std::string> progress;
     std::istringstream lines(result.err);
     for (std::string line; std::getline(lines, line);) {
-        if (line.starts_with("fgr: info: run ")) progress.push_back(line.substr(11));
+        if (!line.starts_with("bench ")) continue;
+        const std::size_t pace = line.find(" fps | ");
+        EXPECT_NE(pace, std::string::npos) << line;
+        progress.push_back(line.substr(0, line.rfind(" | ", pace)));
     }
     const std::vector<std::string> expected = {
-        "run 1/2: 0%", "run 1/2: 25%", "run 1/2: 50%", "run 1/2: 75%", "run 1/2: 100%",
-        "run 2/2: 0%", "run 2/2: 25%", "run 2/2: 50%", "run 2/2: 75%", "run 2/2: 100%"};
+        "bench 0% | run 1/2",  "bench 17% | run 1/2", "bench 33% | run 1/2", "bench 50% | run 1/2",
+        "bench 67% | run 2/2", "bench 83% | run 2/2", "bench 100% | run 2/2"};
     EXPECT_EQ(progress, expected) << result;
+    EXPECT_NE(result.err.find(" fps | took "), std::string::npos) << result;
 }
 
 // A view typed as --eye/--target/--up/--fov is the view a camera path file with the same numbers
