@@ -7,6 +7,7 @@
 #include <cstring>
 #include <map>
 #include <memory>
+#include <optional>
 #include <sstream>
 #include <utility>
 
@@ -141,6 +142,16 @@ const CLI::App* command_parsed(const CLI::App& app) {
     }
 }
 
+// "--width", "-o", "--output", ...: what `command` takes, as typed.
+std::vector<std::string> option_names(const CLI::App& command) {
+    std::vector<std::string> names;
+    for (const CLI::Option* option : command.get_options([](const CLI::Option*) { return true; })) {
+        for (const std::string& name : option->get_lnames()) names.push_back("--" + name);
+        for (const std::string& name : option->get_snames()) names.push_back("-" + name);
+    }
+    return names;
+}
+
 std::string command_line_name(const CLI::App* command) {
     std::string name = command->get_name();
     for (const CLI::App* parent = command->get_parent(); parent != nullptr;
@@ -226,27 +237,41 @@ std::string unexpected_arguments_message(const CLI::App& app, const CLI::ExtrasE
     for (std::string word; words >> word;) arguments.push_back(word);
     if (arguments.empty()) return message;
     const CLI::App* command = command_parsed(app);
-    const std::string name = command_line_name(command);
     // CLI11 lists them last first.
     std::reverse(arguments.begin(), arguments.end());
     const auto option = std::find_if(arguments.begin(), arguments.end(), [](const std::string& a) {
         return a.size() > 1 && a.front() == '-';
     });
     if (option == arguments.end()) {
+        const std::string name = command_line_name(command);
+        const std::vector<std::string> commands = command_names(*command);
+        if (!commands.empty()) {
+            return unknown_name_message(
+                fmt::format("unknown command '{}' for `{}`", arguments.front(), name),
+                arguments.front(), commands,
+                fmt::format(" (commands: {})", fmt::join(commands, ", ")));
+        }
         return fmt::format("unexpected argument '{}' for `{}` (`{} --help` lists what it takes)",
                            arguments.front(), name, name);
     }
     const std::string typed = option->substr(0, option->find('='));
-    std::vector<std::string> known;
-    for (const CLI::Option* candidate :
-         command->get_options([](const CLI::Option*) { return true; })) {
-        for (const std::string& long_name : candidate->get_lnames())
-            known.push_back("--" + long_name);
-        for (const std::string& short_name : candidate->get_snames())
-            known.push_back("-" + short_name);
+    // The option may be one of a command above, typed on the wrong side of the command's name
+    // (`fgr --verbos list`): the nearest option of the commands typed, the innermost first.
+    const CLI::App* owner = command;
+    std::optional<std::string> nearest;
+    std::size_t nearest_distance = 0;
+    for (const CLI::App* level = command; level != nullptr; level = level->get_parent()) {
+        const std::optional<std::string> found = closest_name(typed, option_names(*level));
+        if (found && (!nearest || edit_distance(typed, *found) < nearest_distance)) {
+            nearest = found;
+            nearest_distance = edit_distance(typed, *found);
+            owner = level;
+        }
     }
-    return unknown_name_message(fmt::format("unknown option '{}' for `{}`", typed, name), typed,
-                                known, fmt::format(" (`{} --help` lists its options)", name));
+    const std::string name = command_line_name(owner);
+    const std::string unknown = fmt::format("unknown option '{}' for `{}`", typed, name);
+    return nearest ? fmt::format("{}; did you mean '{}'?", unknown, *nearest)
+                   : fmt::format("{} (`{} --help` lists its options)", unknown, name);
 }
 
 }  // namespace fgr

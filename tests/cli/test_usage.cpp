@@ -128,6 +128,14 @@ TEST_F(Usage, MistypedNamesOfferTheNearestOne) {
               "fgr: error: unknown scene 'zzz' (`fgr list` lists the scenes)");
     EXPECT_EQ(usage_error({"render", "mandelbulb", "-o", o, "--widht", "8"}),
               "fgr: error: unknown option '--widht' for `fgr render`; did you mean '--width'?");
+    EXPECT_EQ(usage_error({"cache", "clera"}),
+              "fgr: error: unknown command 'clera' for `fgr cache`; did you mean 'clear'?");
+    // An option of the command above, typed after the one below.
+    EXPECT_EQ(usage_error({"--verbos", "list"}),
+              "fgr: error: unknown option '--verbos' for `fgr`; did you mean '--verbose'?");
+    EXPECT_EQ(usage_error({"list", "--zzzz"}),
+              "fgr: error: unknown option '--zzzz' for `fgr list` (`fgr list --help` lists its "
+              "options)");
     EXPECT_EQ(usage_error({"bench", "accuracy", "mandelbulb", "--repaets", "2"}),
               "fgr: error: unknown option '--repaets' for `fgr bench accuracy`; did you mean "
               "'--repeats'?");
