@@ -76,7 +76,7 @@ int run_cli(int argc, char** argv) {
     info->add_flag("--math-check", math_check,
                    "also run (or read the cached verdicts of) the device math self-test at every "
                    "precision and packet width");
-    info->add_option("what", info_argument,
+    info->add_option("scene-or-file", info_argument,
                      "a scene (an id or a scene file): describe it, as `fgr list SCENE`; a PNG, "
                      "TIFF or EXR image fgr wrote, or a view file: print the view it carries");
     RenderOptions render_options;

@@ -171,8 +171,8 @@ int command_info(bool math_check);
 // `fgr info FILE`: the view an image file carries (image/embedded_view.hpp), printed as indented
 // JSON; a RuntimeFailure naming the file when it carries none.
 int command_info_file(const std::filesystem::path& file);
-// `fgr info ARGUMENT`: a view file or an image (by its name) is command_info_file's; anything else
-// is a scene, command_list_scene's.
+// `fgr info ARGUMENT`: a view file, an image (by its name) or a folder is command_info_file's;
+// anything else is a scene, command_list_scene's.
 int command_info_argument(const std::string& argument);
 
 // --- fgr render ----------------------------------------------------------------------------------

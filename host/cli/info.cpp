@@ -4,6 +4,7 @@
 
 #include <nlohmann/json.hpp>
 #include <optional>
+#include <system_error>
 
 #include "commands.hpp"
 #include "device/math_check.hpp"
@@ -73,7 +74,11 @@ int command_info_argument(const std::string& argument) {
     } catch (const std::invalid_argument&) {
         // Not an image's name: a scene id or a scene file.
     }
-    if (image || is_view_file_name(argument)) return command_info_file(argument);
+    // A folder is no scene either: the image reader's error names it.
+    std::error_code error;
+    if (image || is_view_file_name(argument) || std::filesystem::is_directory(argument, error)) {
+        return command_info_file(argument);
+    }
     return command_list_scene(argument);
 }
 
