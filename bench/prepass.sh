@@ -23,7 +23,7 @@ export FGR_CACHE_DIR=${FGR_CACHE_DIR:-$tmp/cache}
 if [[ $# -gt 0 ]]; then
     scenes=("$@")
 else
-    mapfile -t scenes < <("$fgr" list 2>/dev/null | awk '/^[a-z]/ { print $1 }')
+    mapfile -t scenes < <("$fgr" list --ids 2>/dev/null)
 fi
 
 # field KEY FILE: the first word after KEY on the line starting with KEY.

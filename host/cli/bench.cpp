@@ -2,44 +2,40 @@
 // is in bench_accuracy.cpp).
 #include <fmt/format.h>
 #include <spdlog/spdlog.h>
-#include <unistd.h>
 
 #include <algorithm>
-#include <cstdio>
+#include <chrono>
+#include <cmath>
 #include <filesystem>
+#include <optional>
 #include <string>
 
+#include "cli/progress.hpp"
 #include "commands.hpp"
 #include "device/program_cache.hpp"
 #include "render/renderer.hpp"
 #include "render/sample_budget.hpp"
+#include "util/timing.hpp"
 
 namespace fgr {
 namespace {
 
-// A bar on a terminal, a line every quarter otherwise (logs, CI).
-BenchProgress bench_progress(int runs) {
-    const bool terminal = isatty(fileno(stderr)) != 0;
-    return [terminal, runs, last_quarter = -1, last_run = -1](int run, double done) mutable {
-        if (terminal) {
-            const int filled = static_cast<int>(done * 30.0);
-            std::fprintf(stderr, "\rrun %d/%d [%s%s] %3.0f%%", run + 1, runs,
-                         std::string(static_cast<size_t>(filled), '#').c_str(),
-                         std::string(static_cast<size_t>(30 - filled), '.').c_str(), done * 100.0);
-            if (done >= 1.0) std::fputc('\n', stderr);
-            return;
-        }
-        if (run != last_run) {
-            last_run = run;
-            last_quarter = -1;
-        }
-        // A line for every quarter passed, even when one frame jumps over a quarter (three
-        // frames report 0, 1/3, 2/3 and then the end, which passes both 75% and 100%).
-        const int quarter = std::clamp(static_cast<int>(done * 4.0), 0, 4);
-        while (last_quarter < quarter) {
-            ++last_quarter;
-            spdlog::info("run {}/{}: {}%", run + 1, runs, last_quarter * 25);
-        }
+// The bench's progress over all its runs on `progress`, with the run and the pace in frames a
+// second. It is called before each frame of a run and once at its end: every call but a run's
+// first ends a frame.
+BenchProgress bench_progress(DelayedProgress& progress, int runs) {
+    return [&progress, runs, frames = 0L, current = -1,
+            start = std::optional<std::chrono::steady_clock::time_point>()](int run,
+                                                                            double done) mutable {
+        // From the first frame: the kernels' build is no part of the pace.
+        if (!start) start = std::chrono::steady_clock::now();
+        if (run == current) ++frames;
+        current = run;
+        const double seconds = seconds_since(*start);
+        const auto permille = std::lround(1000.0 * (run + std::clamp(done, 0.0, 1.0)) / runs);
+        progress.update(permille, 1000, seconds,
+                        fmt::format("run {}/{} | {:.1f} fps", run + 1, runs,
+                                    seconds > 0.0 ? double(frames) / seconds : 0.0));
     };
 }
 
@@ -74,7 +70,8 @@ void add_bench_command(CLI::App& app, BenchOptions& options) {
                          ->check(CLI::Range(0.1, 3600.0));
     bench
         ->add_option("--frames", options.frames,
-                     "a fixed number of frames per run, spread evenly over the path")
+                     "a fixed number of frames per run, spread evenly over the path (default: "
+                     "as many as --duration allows)")
         ->check(CLI::Range(1, 100000))
         ->excludes(duration);
     bench->add_option("--runs", options.settings.runs, "repeat and average (default 1)")
@@ -129,8 +126,10 @@ int command_bench(BenchOptions& options) {
     spdlog::info("benchmarking '{}' at {}x{} in {} mode on {}", scene.id, options.settings.width,
                  options.settings.height, render_mode_name(options.settings.render_mode),
                  device.info.name);
+    DelayedProgress progress("bench", ProgressShows::Percent);
     const BenchReport report = run_benchmark(scene, device, cache, options.settings,
-                                             bench_progress(options.settings.runs));
+                                             bench_progress(progress, options.settings.runs));
+    progress.finish();
     fmt::print("{}", bench_table(report));
     write_output(json_file, bench_json(report));
     write_output(csv_file, bench_csv(report));

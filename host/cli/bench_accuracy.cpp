@@ -3,15 +3,19 @@
 #include <spdlog/spdlog.h>
 
 #include <algorithm>
+#include <chrono>
 #include <cstdlib>
 #include <filesystem>
+#include <optional>
 #include <string>
 
+#include "cli/progress.hpp"
 #include "commands.hpp"
 #include "device/program_cache.hpp"
 #include "diagnostics/brute_accuracy.hpp"
 #include "render/renderer.hpp"
 #include "render/sample_budget.hpp"
+#include "util/timing.hpp"
 
 namespace fgr {
 
@@ -47,8 +51,16 @@ void add_bench_accuracy_command(CLI::App& bench, BenchOptions& options) {
 
 namespace {
 
-void report_progress(int done, int total, const std::string& what) {
-    if (done < total) spdlog::info("[{}/{}] {}", done + 1, total, what);
+// The sweep's progress on `progress`: renders done of all, what renders now and the pace.
+AccuracyProgress accuracy_progress(DelayedProgress& progress) {
+    return [&progress, start = std::optional<std::chrono::steady_clock::time_point>()](
+               int done, int total, const std::string& what) mutable {
+        if (!start) start = std::chrono::steady_clock::now();
+        const double seconds = seconds_since(*start);
+        progress.update(done, total, seconds,
+                        fmt::format("{} | {:.2g} renders/s", what,
+                                    seconds > 0.0 ? double(done) / seconds : 0.0));
+    };
 }
 
 // Runs gnuplot on `script` beside it (so the script's relative names resolve), making `png`;
@@ -79,8 +91,10 @@ void brute_accuracy(const Scene& scene, const AccuracySettings& settings,
     brute.width = settings.width;
     brute.height = settings.height;
     brute.repeats = settings.repeats;
+    DelayedProgress progress("renders");
     const BruteConvergence result =
-        run_brute_convergence(scene, device, cache, brute, report_progress);
+        run_brute_convergence(scene, device, cache, brute, accuracy_progress(progress));
+    progress.finish();
     fmt::print("reference: {} ({:.0f} ms)\n", result.reference, result.reference_ms);
     // Times against the sphere tracer's say what brute force costs; against a long brute-force
     // render they would say nothing.
@@ -131,12 +145,14 @@ int command_bench_accuracy(const AccuracyOptions& options, int device_index) {
         brute_accuracy(scene, options.settings, device, cache, csv, script, png);
         return 0;
     }
-    const auto progress = report_progress;
+    DelayedProgress shown("renders");
+    const AccuracyProgress progress = accuracy_progress(shown);
     const AccuracyReport report =
         mode == RenderMode::Path
             ? run_path_accuracy_sweep(scene, device, cache, options.settings,
                                       chosen_path_settings(options.mode, scene), progress)
             : run_accuracy_sweep(scene, device, cache, options.settings, progress);
+    shown.finish();
     for (const AccuracyReference& reference : report.references) {
         fmt::print("{} reference ({}): {:.0f} ms\n", reference.name, reference.settings,
                    reference.render_ms);

@@ -14,6 +14,7 @@
 #include "commands.hpp"
 #include "device/program_cache.hpp"
 #include "distributed/cluster.hpp"
+#include "usage.hpp"
 
 namespace fgr {
 namespace {
@@ -61,26 +62,23 @@ int run_cli(int argc, char** argv) {
         return kExitFailure;
     }
     CLI::App app{"fgr: real-time ray marching of 3D fractals"};
+    configure_help(app);
     app.require_subcommand(1);
     bool verbose = false;
     app.add_flag("-v,--verbose", verbose, "debug logging");
-    std::string list_scene;
-    bool list_formulas = false;
-    CLI::App* list = app.add_subcommand(
-        "list", "list the scenes found, with parameters, cameras and camera paths");
-    list->add_option("scene", list_scene,
-                     "list this scene (an id or a scene file) alone, describing each parameter");
-    list->add_flag("--formulas", list_formulas,
-                   "list the formula library instead: what formula scene files may iterate");
+    ListOptions list_options;
+    add_list_command(app, list_options);
     bool math_check = false;
-    std::string info_file;
+    std::string info_argument;
     CLI::App* info = app.add_subcommand(
-        "info", "list OpenCL platforms and devices, or print the view an image file carries");
+        "info",
+        "list OpenCL platforms and devices; describe a scene; or print the view an image carries");
     info->add_flag("--math-check", math_check,
                    "also run (or read the cached verdicts of) the device math self-test at every "
                    "precision and packet width");
-    info->add_option("file", info_file,
-                     "a PNG, TIFF or EXR image fgr wrote: print the view it carries (as JSON)");
+    info->add_option("scene-or-file", info_argument,
+                     "a scene (an id or a scene file): describe it, as `fgr list SCENE`; a PNG, "
+                     "TIFF or EXR image fgr wrote, or a view file: print the view it carries");
     RenderOptions render_options;
     add_render_command(app, render_options);
     VideoOptions video_options;
@@ -99,37 +97,33 @@ int run_cli(int argc, char** argv) {
     add_cache_command(app, cache_options);
     EnvironmentOptions environment_options;
     add_environment_command(app, environment_options);
+    group_options(app);
     if (argc < 2) {
-        std::fputs(app.help().c_str(), stdout);
-        return report_error(
-            "no command given (commands: list, info, render, video, merge, view, check, "
-            "new-scene, bench, cache, environment)",
-            kExitUsage);
+        std::fputs(overview(app).c_str(), stdout);
+        return report_error("no command given", kExitUsage);
     }
     if (const std::string first = argv[1];
-        !first.empty() && first.front() != '-' && first != "list" && first != "info" &&
-        first != "render" && first != "video" && first != "merge" && first != "view" &&
-        first != "check" && first != "new-scene" && first != "bench" && first != "cache" &&
-        first != "environment") {
-        return report_error(fmt::format("unknown command '{}' (commands: list, info, render, "
-                                        "video, merge, view, check, new-scene, bench, cache, "
-                                        "environment)",
-                                        first),
-                            kExitUsage);
+        !first.empty() && first.front() != '-' && !is_command(app, first)) {
+        return report_error(unknown_command_message(app, first), kExitUsage);
     }
     try {
         app.parse(argc, argv);
     } catch (const CLI::CallForHelp& help) {
         return app.exit(help);
+    } catch (const CLI::ValidationError& error) {
+        return report_error(invalid_value_message(error), kExitUsage);
+    } catch (const CLI::ExtrasError& error) {
+        return report_error(unexpected_arguments_message(app, error), kExitUsage);
     } catch (const CLI::ParseError& error) {
         return report_error(error.what(), kExitUsage);
     }
     configure_logging(verbose, cluster);
     const auto run_command = [&](const std::string& command) {
-        if (command == "list") return command_list(list_scene, list_formulas);
-        if (command == "info" && !info_file.empty()) {
-            if (math_check) throw UsageError("--math-check is for the devices, not a FILE");
-            return command_info_file(info_file);
+        if (command == "list") return command_list(list_options);
+        if (command == "info" && !info_argument.empty()) {
+            if (math_check)
+                throw UsageError("--math-check is for the devices, not a scene or file");
+            return command_info_argument(info_argument);
         }
         if (command == "info") return command_info(math_check);
         if (command == "video") return command_video(video_options);

@@ -155,14 +155,25 @@ void write_output(const std::filesystem::path& file, const std::string& text);
 
 // --- fgr list, fgr info --------------------------------------------------------------------------
 
-// Every scene; with a scene id, that scene alone, each parameter with its description.
-// `fgr list`: the scenes found, or one described; with formulas, the formula library instead.
-int command_list(const std::string& scene_id, bool formulas);
+struct ListOptions {
+    std::string scene;      // an id or a scene file: that scene in full
+    bool formulas = false;  // the formula library instead
+    bool ids = false;       // the ids alone, one a line (for scripts and shell completion)
+};
+void add_list_command(CLI::App& app, ListOptions& options);
+// `fgr list`: the scenes found, a line each (id, kind, name and description); one scene in full.
+int command_list(const ListOptions& options);
+// `fgr list SCENE`, `fgr info SCENE`: the scene an id or scene file names, in full: its file,
+// parameters (each described), cameras, camera paths, effects and modes.
+int command_list_scene(const std::string& argument);
 // With `math_check`, each device's math self-test verdict per precision and packet width.
 int command_info(bool math_check);
 // `fgr info FILE`: the view an image file carries (image/embedded_view.hpp), printed as indented
 // JSON; a RuntimeFailure naming the file when it carries none.
 int command_info_file(const std::filesystem::path& file);
+// `fgr info ARGUMENT`: a view file, an image (by its name) or a folder is command_info_file's;
+// anything else is a scene, command_list_scene's.
+int command_info_argument(const std::string& argument);
 
 // --- fgr render ----------------------------------------------------------------------------------
 

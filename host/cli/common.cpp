@@ -114,7 +114,9 @@ void print_mpi_figures(const Cluster& cluster, const FarmOutcome& outcome) {
 }
 
 void add_device_options(CLI::App* command, int& device, int& packet_width) {
-    command->add_option("--device", device, "OpenCL device index (see `fgr info`)")
+    command
+        ->add_option("--device", device,
+                     "OpenCL device index (see `fgr info`); default: the first GPU, else device 0")
         ->check(CLI::NonNegativeNumber);
     command
         ->add_option("--packet-width", packet_width,

@@ -20,7 +20,7 @@ void add_environment_command(CLI::App& app, EnvironmentOptions& options) {
         ->required()
         ->check(CLI::IsMember({"studio", "sky"}));
     command->add_option("-o,--output", options.output, "output .hdr or .exr file")->required();
-    command->add_option("--width", options.width, "map width in pixels; height is half (1024)")
+    command->add_option("--width", options.width, "map width in pixels; the height is half of it")
         ->check(CLI::Range(8, 16384));
     command->add_option("--turbidity", options.turbidity, "sky haze, 2 (clear) to 10 (hazy)")
         ->check(CLI::Range(1.7f, 10.0f));

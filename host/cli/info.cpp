@@ -1,15 +1,17 @@
-// fgr info: the OpenCL devices, numbered for --device, and on request their math self-test; or,
-// given an image file, the view it carries.
+// fgr info: the OpenCL devices, numbered for --device, and on request their math self-test; given
+// an image or view file, the view it carries; given a scene, the scene in full (as fgr list SCENE).
 #include <fmt/format.h>
 
 #include <nlohmann/json.hpp>
 #include <optional>
+#include <system_error>
 
 #include "commands.hpp"
 #include "device/math_check.hpp"
 #include "device/opencl_device.hpp"
 #include "device/program_cache.hpp"
 #include "image/embedded_view.hpp"
+#include "output/tiled/streaming_image.hpp"
 #include "view_file/view_file.hpp"
 
 namespace fgr {
@@ -62,6 +64,22 @@ int command_info_file(const std::filesystem::path& file) {
                                          file.string(), error.what()));
     }
     return 0;
+}
+
+int command_info_argument(const std::string& argument) {
+    bool image = false;
+    try {
+        image_format_of(argument);
+        image = true;
+    } catch (const std::invalid_argument&) {
+        // Not an image's name: a scene id or a scene file.
+    }
+    // A folder is no scene either: the image reader's error names it.
+    std::error_code error;
+    if (image || is_view_file_name(argument) || std::filesystem::is_directory(argument, error)) {
+        return command_info_file(argument);
+    }
+    return command_list_scene(argument);
 }
 
 int command_info(bool math_check) {

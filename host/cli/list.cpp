@@ -1,9 +1,11 @@
-// fgr list: every scene found, with its parameters, cameras, camera paths and effects; fgr list
-// SCENE: that scene, each parameter with its description.
+// fgr list: every scene found, a line each (id, kind, description); fgr list SCENE (and fgr info
+// SCENE): that scene in full, its parameters described, its cameras, camera paths and effects.
 #include <fmt/format.h>
 #include <fmt/ranges.h>
 
+#include <algorithm>
 #include <string>
+#include <vector>
 
 #include "commands.hpp"
 #include "device/kernel_assembly.hpp"
@@ -12,6 +14,7 @@
 #include "scene/render_mode.hpp"
 #include "scene/scene_argument.hpp"
 #include "scene/text_scene.hpp"
+#include "util/lower_case.hpp"
 
 namespace fgr {
 namespace {
@@ -32,8 +35,58 @@ std::string default_text(const ParamInfo& param) {
     return param.scene_default ? value_text(param) + " (scene's)" : value_text(param);
 }
 
-// Parameters are listed one line each; `described` puts each one's description under it.
-void print_scene(const Scene& scene, bool described) {
+// What makes the scene: "plugin", "text", "IFS", "IFS plugin", "formula" or "hybrid".
+std::string scene_kind(const Scene& scene) {
+    if (scene.ifs) return is_ifs_file_name(scene.plugin_file) ? "IFS" : "IFS plugin";
+    if (is_formula_file_name(scene.plugin_file)) {
+        const bool hybrid =
+            std::find(scene.tags.begin(), scene.tags.end(), "hybrid") != scene.tags.end();
+        return hybrid ? "hybrid" : "formula";
+    }
+    if (is_text_scene_file_name(scene.plugin_file)) return "text";
+    return "plugin";
+}
+
+// `fgr list` keeps a scene to a line of about this many columns.
+constexpr std::size_t kListWidth = 100;
+
+// The scene's name and description, the name once when the description starts with it.
+std::string about(const Scene& scene) {
+    if (scene.description.empty()) return scene.name;
+    if (scene.description.size() >= scene.name.size() &&
+        lower_case(scene.description.substr(0, scene.name.size())) == lower_case(scene.name)) {
+        return scene.description;
+    }
+    return scene.name + ": " + scene.description;
+}
+
+// `text` cut at a word to at most `width` characters, "..." marking the cut.
+std::string shortened(const std::string& text, std::size_t width) {
+    if (text.size() <= width) return text;
+    const std::size_t room = width > 3 ? width - 3 : 0;
+    std::size_t cut = text.rfind(' ', room);
+    if (cut == std::string::npos || cut < room / 2) cut = room;
+    while (cut > 0 && (text[cut - 1] == ' ' || text[cut - 1] == ',' || text[cut - 1] == ':')) --cut;
+    return text.substr(0, cut) + "...";
+}
+
+// One line a scene, the columns aligned: id, kind, name and description.
+void print_scene_lines(const std::vector<Scene>& scenes) {
+    std::size_t id_width = 0, kind_width = 0;
+    for (const Scene& scene : scenes) {
+        id_width = std::max(id_width, scene.id.size());
+        kind_width = std::max(kind_width, scene_kind(scene).size());
+    }
+    const std::size_t about_width =
+        kListWidth - std::min(kListWidth / 2, id_width + kind_width + 4);
+    for (const Scene& scene : scenes) {
+        fmt::print("{:<{}}  {:<{}}  {}\n", scene.id, id_width, scene_kind(scene), kind_width,
+                   shortened(about(scene), about_width));
+    }
+}
+
+// The scene in full, each parameter with its description on the line under it.
+void print_scene(const Scene& scene) {
     fmt::print("{}  {} - {}\n", scene.id, scene.name, scene.description);
     if (scene.ifs) {
         // An IFS file, or a plugin that handed over maps (ABI 1.3).
@@ -62,7 +115,7 @@ void print_scene(const Scene& scene, bool described) {
         fmt::print("    {:<20} {:<7} {:<30} default {:<16} {} ({})\n", param.id,
                    param_type_name(param.type), range_text(param), default_text(param), param.label,
                    param.group);
-        if (described && !param.description.empty()) {
+        if (!param.description.empty()) {
             fmt::print("        {}\n", param.description);
         }
     }
@@ -137,18 +190,35 @@ void print_formulas() {
     }
 }
 
-int command_list(const std::string& scene_id, bool formulas) {
-    if (formulas) {
+void add_list_command(CLI::App& app, ListOptions& options) {
+    CLI::App* list =
+        app.add_subcommand("list", "list the scenes found, one a line, or one in full");
+    list->add_option("scene", options.scene,
+                     "describe this scene (an id or a scene file) in full: its parameters, each "
+                     "described, cameras, camera paths and effects");
+    list->add_flag("--formulas", options.formulas,
+                   "list the formula library instead: what formula scene files may iterate");
+    list->add_flag("--ids", options.ids, "print the scene ids alone, one a line (for scripts)");
+}
+
+int command_list_scene(const std::string& argument) {
+    if (scene_argument_kind(argument) != SceneArgumentKind::Id) {
+        print_scene(scene_from_argument(argument));
+        return 0;
+    }
+    print_scene(find_scene(discover(), argument));
+    return 0;
+}
+
+int command_list(const ListOptions& options) {
+    if (options.formulas) {
         print_formulas();
         return 0;
     }
-    if (!scene_id.empty() && scene_argument_kind(scene_id) != SceneArgumentKind::Id) {
-        print_scene(scene_from_argument(scene_id), true);
-        return 0;
-    }
+    if (!options.scene.empty()) return command_list_scene(options.scene);
     const Discovery found = discover();
-    if (!scene_id.empty()) {
-        print_scene(find_scene(found, scene_id), true);
+    if (options.ids) {
+        for (const Scene& scene : found.scenes) fmt::print("{}\n", scene.id);
         return 0;
     }
     if (found.scenes.empty()) {
@@ -157,10 +227,7 @@ int command_list(const std::string& scene_id, bool formulas) {
             fmt::print("  {}\n", dir.string());
         return 0;
     }
-    for (size_t i = 0; i < found.scenes.size(); ++i) {
-        if (i > 0) fmt::print("\n");
-        print_scene(found.scenes[i], false);
-    }
+    print_scene_lines(found.scenes);
     return 0;
 }
 

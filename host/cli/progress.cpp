@@ -5,6 +5,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdlib>
 
 namespace fgr {
 
@@ -22,8 +23,8 @@ std::string format_rate(double per_second) {
     return fmt::format("{:.0f} ", per_second);
 }
 
-ProgressLine::ProgressLine(std::string unit, std::FILE* out)
-    : unit_(std::move(unit)), out_(out), terminal_(::isatty(::fileno(out)) == 1) {}
+ProgressLine::ProgressLine(std::string unit, std::FILE* out, ProgressShows shows)
+    : unit_(std::move(unit)), out_(out), shows_(shows), terminal_(::isatty(::fileno(out)) == 1) {}
 
 ProgressLine::~ProgressLine() { finish(); }
 
@@ -45,9 +46,11 @@ void ProgressLine::update(long done, long total, long fresh, double seconds,
     } else if (last) {
         eta = "took " + format_duration(seconds);
     }
+    const double percent = total > 0 ? 100.0 * double(done) / double(total) : 100.0;
     const std::string text =
-        fmt::format("{} {}/{} ({:.0f}%) | {} | {}", unit_, done, total,
-                    total > 0 ? 100.0 * double(done) / double(total) : 100.0, detail, eta);
+        shows_ == ProgressShows::Count
+            ? fmt::format("{} {}/{} ({:.0f}%) | {} | {}", unit_, done, total, percent, detail, eta)
+            : fmt::format("{} {:.0f}% | {} | {}", unit_, percent, detail, eta);
     if (terminal_) {
         fmt::print(out_, "\r{}\x1b[K", text);
         open_ = true;
@@ -62,6 +65,31 @@ void ProgressLine::finish() {
     fmt::print(out_, "\n");
     std::fflush(out_);
     open_ = false;
+}
+
+double progress_delay() {
+    constexpr double kDelaySeconds = 2.0;
+    const char* text = std::getenv("FGR_PROGRESS_DELAY");
+    if (text == nullptr || *text == '\0') return kDelaySeconds;
+    char* end = nullptr;
+    const double seconds = std::strtod(text, &end);
+    return *end == '\0' && std::isfinite(seconds) && seconds >= 0.0 ? seconds : kDelaySeconds;
+}
+
+DelayedProgress::DelayedProgress(std::string unit, ProgressShows shows, std::FILE* out)
+    : line_(std::move(unit), out, shows), delay_(progress_delay()) {}
+
+void DelayedProgress::update(long done, long total, double seconds, const std::string& detail) {
+    if (!shown_) {
+        // The pace of the first units says how long the whole takes; a few of them first, so that
+        // one quick band does not speak for the rest.
+        const bool long_so_far = seconds >= delay_;
+        const bool long_in_all =
+            done > 0 && seconds >= delay_ / 4.0 && seconds / double(done) * double(total) > delay_;
+        if (!long_so_far && !long_in_all) return;
+        shown_ = true;
+    }
+    line_.update(done, total, done, seconds, detail);
 }
 
 }  // namespace fgr

@@ -15,9 +15,14 @@ std::string format_duration(double seconds);
 // "950 k", "12.3 M", "1.20 G": a rate's number with an SI prefix.
 std::string format_rate(double per_second);
 
+// What the line counts in: "tiles 37/120 (31%)", or, for work whose units mean little to a
+// reader (bands of a frame), "render 31%".
+enum class ProgressShows { Count, Percent };
+
 class ProgressLine {
 public:
-    explicit ProgressLine(std::string unit, std::FILE* out = stderr);
+    explicit ProgressLine(std::string unit, std::FILE* out = stderr,
+                          ProgressShows shows = ProgressShows::Count);
     ~ProgressLine();
     ProgressLine(const ProgressLine&) = delete;
     ProgressLine& operator=(const ProgressLine&) = delete;
@@ -31,10 +36,31 @@ public:
 private:
     std::string unit_;
     std::FILE* out_;
+    ProgressShows shows_;
     bool terminal_;
     bool open_ = false;  // a line is drawn and not ended
     std::chrono::steady_clock::time_point last_draw_{};
     long last_tenth_ = -1;
+};
+
+// The seconds a render may take before it shows its progress: 2, or FGR_PROGRESS_DELAY's when set
+// (the tests set 0 to see a tiny render's progress).
+double progress_delay();
+
+// A progress line for work that is often quick: nothing is drawn until it has run
+// progress_delay() seconds, or its first units say the whole will take longer than that.
+class DelayedProgress {
+public:
+    explicit DelayedProgress(std::string unit, ProgressShows shows = ProgressShows::Count,
+                             std::FILE* out = stderr);
+    // As ProgressLine::update, the units done all by this run.
+    void update(long done, long total, double seconds, const std::string& detail);
+    void finish() { line_.finish(); }
+
+private:
+    ProgressLine line_;
+    double delay_;
+    bool shown_ = false;
 };
 
 }  // namespace fgr

@@ -14,6 +14,7 @@
 #include "camera/camera.hpp"
 #include "camera/camera_path_file.hpp"
 #include "camera/view_validation.hpp"
+#include "cli/progress.hpp"
 #include "commands.hpp"
 #include "device/kernel_assembly.hpp"
 #include "device/program_cache.hpp"
@@ -27,6 +28,7 @@
 #include "render/sample_budget.hpp"
 #include "scene/ifs/ifs.hpp"
 #include "tiled_render.hpp"
+#include "util/suggest.hpp"
 #include "util/timing.hpp"
 #include "view_options.hpp"
 
@@ -48,8 +50,11 @@ CameraPath find_camera_path(const Scene& scene, const std::string& argument) {
     }
     const CameraPath* path = scene.find_camera_path(argument);
     if (!path) {
-        throw UsageError(
-            fmt::format("scene '{}' has no camera path '{}' (see `fgr list`)", scene.id, argument));
+        std::vector<std::string> names;
+        for (const CameraPath& known : scene.camera_paths) names.push_back(known.name);
+        throw UsageError(unknown_name_message(
+            fmt::format("scene '{}' has no camera path '{}'", scene.id, argument), argument, names,
+            fmt::format(" (`fgr list {}` lists its camera paths)", scene.id)));
     }
     return *path;
 }
@@ -76,8 +81,12 @@ CameraView choose_view(const Scene& scene, const RenderOptions& options) {
     if (options.camera) {
         const NamedCamera* camera = scene.find_camera(*options.camera);
         if (!camera) {
-            throw UsageError(fmt::format("scene '{}' has no camera '{}' (see `fgr list`)", scene.id,
-                                         *options.camera));
+            std::vector<std::string> names;
+            for (const NamedCamera& known : scene.cameras) names.push_back(known.name);
+            throw UsageError(unknown_name_message(
+                fmt::format("scene '{}' has no camera '{}'", scene.id, *options.camera),
+                *options.camera, names,
+                fmt::format(" (`fgr list {}` lists its cameras)", scene.id)));
         }
         return overridden_view(camera->view, options.view_override);
     }
@@ -178,8 +187,8 @@ FrameRequest scene_request(const Scene& scene, const RenderOptions& options) {
     if (options.colour) {
         if (scene.find_param("colour_mode") == nullptr) {
             throw UsageError(fmt::format(
-                "scene '{}' has no colour modes (no colour_mode parameter; see `fgr list`)",
-                scene.id));
+                "scene '{}' has no colour modes (no colour_mode parameter; see `fgr list {}`)",
+                scene.id, scene.id));
         }
         set_param_from_text(scene, request.params, "colour_mode=" + *options.colour);
     }
@@ -301,21 +310,39 @@ void report_and_write(const Scene& scene, const FrameRequest& request, int sampl
     fmt::print("wrote {} ({}x{})\n", output.string(), frame.image.width, frame.image.height);
 }
 
+// A still's Renderer progress, drawn on `progress` with the rate in pixel samples a second.
+std::function<void(long, long)> still_progress(DelayedProgress& progress,
+                                               const FrameRequest& request) {
+    const double pixel_samples = double(request.width) * request.height * request.samples;
+    return [&progress, pixel_samples, start = std::chrono::steady_clock::time_point{}](
+               long done, long total) mutable {
+        // From the first launch: the kernel's build is no part of the render's pace.
+        if (done == 0) start = std::chrono::steady_clock::now();
+        const double seconds = seconds_since(start);
+        const double rate =
+            seconds > 0.0 ? pixel_samples * double(done) / double(total) / seconds : 0.0;
+        progress.update(done, total, seconds, format_rate(rate) + "samples/s");
+    };
+}
+
 // Renders `request` (render_still: the kernel, float or double), writes the file, prints the
-// figures.
+// figures; a render of more than a moment shows its progress on stderr.
 void render_to_file(const Scene& scene, const FrameRequest& request, const ComputeDevice& device,
                     ProgramCache& cache, const RenderOptions& options,
                     const std::filesystem::path& output) {
     StillJob job = still_job(scene, request, options);
     FrameRequest& reported = job.request;
     if (options.time_limit) reported.enough = deadline_after(*options.time_limit);
-    if (reported.samples >= 8) {
-        // Long multi-sample renders say how far they are, about every tenth of the way.
-        reported.on_sample = [step = std::max(1, reported.samples / 10)](int done, int total) {
-            if (done % step == 0 || done == total) spdlog::info("sample {}/{}", done, total);
-        };
+    DelayedProgress progress("render", ProgressShows::Percent);
+    reported.on_progress = still_progress(progress, reported);
+    Frame frame;
+    try {
+        frame = render_still(scene, reported, device, cache, job.settings);
+    } catch (...) {
+        progress.finish();
+        throw;
     }
-    const Frame frame = render_still(scene, reported, device, cache, job.settings);
+    progress.finish();
     report_and_write(scene, reported, reported.samples, options, job.aovs, frame, output);
 }
 
@@ -425,15 +452,22 @@ int render_all(const RenderOptions& options) {
 void add_frame_options(CLI::App* command, RenderOptions& options, int max_side) {
     const std::string tiled =
         max_side > kMaxImageSide ? " (over 16384 a side or 16 Mpx in all: rendered in tiles)" : "";
-    command->add_option("--width", options.width, "image width in pixels" + tiled)
+    // A view file's size stands in for the defaults (view_options.hpp).
+    command
+        ->add_option("--width", options.width,
+                     fmt::format("image width in pixels{} (default: {}, or the view's with --view)",
+                                 tiled, RenderOptions{}.width))
         ->check(CLI::Range(1, max_side));
-    command->add_option("--height", options.height, "image height in pixels")
+    command
+        ->add_option("--height", options.height,
+                     fmt::format("image height in pixels (default: {}, or the view's with --view)",
+                                 RenderOptions{}.height))
         ->check(CLI::Range(1, max_side));
     command->add_option("--set", options.assignments, "set a parameter: id=value (repeatable)")
         ->allow_extra_args(false);
     command->add_option("--colour", options.colour,
                         "colour mode: point, planes, axes or iterations, those the scene offers "
-                        "(see `fgr list`); the same as --set colour_mode=MODE");
+                        "(see `fgr list SCENE`); the same as --set colour_mode=MODE");
     command
         ->add_option("--spp", options.samples,
                      fmt::format("samples per pixel, jittered and averaged: anti-aliasing, depth "

@@ -57,20 +57,21 @@ void add_view_command(CLI::App& app, ViewCommandOptions& options) {
         "--colour",
         [&viewer](const std::string& mode) { viewer.assignments.push_back("colour_mode=" + mode); },
         "colour mode of the first scene (point, planes, axes, iterations: those it offers, see "
-        "`fgr list`); the same as --set colour_mode=MODE");
+        "`fgr list SCENE`); the same as --set colour_mode=MODE");
     view->add_option("--effects", viewer.effect_changes,
                      "change the first scene's effects, e.g. +shadows,-ambient_occlusion");
     view->add_option("--camera-path", options.camera_path_file,
                      "a .json camera path saved by the viewer, to play with P");
     view->add_option("--path", viewer.path_name,
-                     "the first scene's camera path P plays (default: its first; `fgr list` "
+                     "the first scene's camera path P plays (default: its first; `fgr list SCENE` "
                      "shows them), e.g. --path dive");
     add_view_override_options(view, options.view_override);
     add_projection_options(view, options.projection);
     view->add_option("--output-dir", viewer.output_dir,
                      "where F12 screenshots and saved camera paths go (default: .)");
     view->add_option("--replay", options.replay, "feed timed input events from a file");
-    view->add_option("--exit-after", options.exit_after, "quit after this many seconds")
+    view->add_option("--exit-after", options.exit_after,
+                     "quit after this many seconds (default: never)")
         ->check(CLI::PositiveNumber);
     view->add_flag("--dev", viewer.dev,
                    "scene development: reload a scene when its .cl source file is saved");

@@ -146,6 +146,28 @@ int work_group_size(const ComputeDevice& device) { return device.info.is_cpu ? 8
 
 // A cancellable frame runs in this many launches.
 constexpr int kCancelBands = 32;
+// A long frame that reports its progress runs in about this many launches in all (samples times
+// bands).
+constexpr int kProgressLaunches = 64;
+// A frame of fewer pixel samples reports its progress a sample at a time, however few it has: it
+// is short. Splitting a sample into bands costs a launch at a global offset, for which PoCL
+// compiles the kernel's work-group function once more (about half a second, then cached): worth
+// it only where it is a small part of the frame.
+constexpr long kBandedPixelSamples = 4L << 20;
+
+// Tiles a band of launch_tiles holds: whole work-groups, about 1/bands of them.
+int band_tiles(int tiles, int group, int bands) {
+    const int groups = (tiles + group - 1) / group;
+    return std::max(1, (groups + bands - 1) / bands) * group;
+}
+
+// The bands each sample's launch is split into: when a long frame reports its progress, enough for
+// about kProgressLaunches in all, at most kCancelBands; otherwise one.
+int progress_bands(const FrameRequest& request, const PixelRegion& region) {
+    const long pixel_samples = long(region.width) * region.height * request.samples;
+    if (!request.on_progress || pixel_samples < kBandedPixelSamples) return 1;
+    return std::clamp((kProgressLaunches + request.samples - 1) / request.samples, 1, kCancelBands);
+}
 
 cl::NDRange global_range(int items, int group) {
     return cl::NDRange(static_cast<size_t>((items + group - 1) / group) * group);
@@ -273,24 +295,30 @@ cl::Buffer Renderer::upload(const std::vector<float>& values) {
 }
 
 bool Renderer::launch_tiles(cl::Kernel& kernel, int tiles, int group,
-                            const std::function<bool()>& cancel) {
-    if (!cancel) {
+                            const std::function<bool()>& cancel, int bands,
+                            const std::function<void()>& band_done) {
+    if (cancel) bands = std::max(bands, kCancelBands);
+    if (bands <= 1) {
         device_.queue.enqueueNDRangeKernel(kernel, cl::NullRange, global_range(tiles, group),
                                            cl::NDRange(group));
+        if (band_done) {
+            device_.queue.finish();
+            band_done();
+        }
         return true;
     }
     // Bands of whole work-groups, offset through the global work offset (get_global_id includes
     // it), so cancelling costs at most one band.
-    const int groups = (tiles + group - 1) / group;
-    const int band = std::max(1, (groups + kCancelBands - 1) / kCancelBands) * group;
+    const int band = band_tiles(tiles, group, bands);
     for (int first = 0; first < tiles; first += band) {
-        if (cancel()) return false;
+        if (cancel && cancel()) return false;
         device_.queue.enqueueNDRangeKernel(kernel, cl::NDRange(first),
                                            global_range(std::min(band, tiles - first), group),
                                            cl::NDRange(group));
         device_.queue.finish();
+        if (band_done) band_done();
     }
-    return !cancel();
+    return !(cancel && cancel());
 }
 
 Frame Renderer::render(const FrameRequest& request) {
@@ -336,9 +364,22 @@ Frame Renderer::render(const FrameRequest& request) {
         }
     }
     int done = 0;
+    const int bands = progress_bands(request, region);
+    // The launches in all, as launch_tiles makes them (a cancellable frame's bands included).
+    const int band =
+        band_tiles(tiles, group, request.cancel ? std::max(bands, kCancelBands) : bands);
+    const long launches = static_cast<long>(request.samples) * ((tiles + band - 1) / band);
+    long launched = 0;
+    std::function<void()> band_done;
+    if (request.on_progress) {
+        request.on_progress(0, launches);
+        band_done = [&] { request.on_progress(++launched, launches); };
+    }
     while (done < request.samples) {
         render_kernel_.setArg(FGR_RENDER_ARG_SAMPLE, request.first_sample + done);
-        if (!launch_tiles(render_kernel_, tiles, group, request.cancel)) return cancelled_frame();
+        if (!launch_tiles(render_kernel_, tiles, group, request.cancel, bands, band_done)) {
+            return cancelled_frame();
+        }
         ++done;
         if (request.on_sample || request.enough) {
             device_.queue.finish();  // report each sample as it completes

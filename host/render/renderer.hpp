@@ -57,6 +57,10 @@ struct FrameRequest {
     int first_sample = 0;
     // Called after each finished sample with (samples done, samples in all), when set.
     std::function<void(int, int)> on_sample{};
+    // Called as the frame renders, when set, with the launches done and the launches in all (0 of
+    // them when the first starts): a launch a sample, or, in a frame of few samples and many
+    // pixels, each sample's launch split into bands of tiles, so that it reports its progress too.
+    std::function<void(long done, long total)> on_progress{};
     // Polled between bands of tiles, when set: returning true abandons the frame
     // (Frame::cancelled), so an interactive caller never waits for a slow frame it no longer wants.
     std::function<bool()> cancel{};
@@ -207,10 +211,11 @@ private:
     // timed frame (counted in build_report().build_ms).
     void warm_up();
     cl::Buffer upload(const std::vector<float>& values);
-    // Launches `kernel` (the render kernel or the mode's resolve kernel) over `tiles`; false
-    // when `cancel` (if set) asked to stop.
-    bool launch_tiles(cl::Kernel& kernel, int tiles, int group,
-                      const std::function<bool()>& cancel);
+    // Launches `kernel` (the render kernel or the mode's resolve kernel) over `tiles`, in `bands`
+    // launches (at least kCancelBands when `cancel` is set), calling `band_done` (if set) after
+    // each; false when `cancel` (if set) asked to stop.
+    bool launch_tiles(cl::Kernel& kernel, int tiles, int group, const std::function<bool()>& cancel,
+                      int bands = 1, const std::function<void()>& band_done = {});
     // Points as the probes take them (FGR_PROBE_POINT_PLANES: x, y, z as the nearest floats,
     // then x, y, z of what the floats miss of the double points), padded to whole packets, and
     // the packet count.

@@ -561,8 +561,8 @@ ParamInfo& builtin_named(Scene& scene, const std::string& id, uint32_t index) {
     for (ParamInfo& param : scene.params) {
         if (param.builtin && param.id == id) return param;
     }
-    reject("built-in default {}: '{}' is not a built-in parameter (`fgr list` shows them)", index,
-           printable(id));
+    reject("built-in default {}: '{}' is not a built-in parameter (`fgr list SCENE` shows them)",
+           index, printable(id));
 }
 
 // One scene-given default, checked as a plugin parameter's default is: finite, in range, whole

@@ -12,6 +12,7 @@
 
 #include "scene/scene_file.hpp"
 #include "scene/scene_index.hpp"
+#include "util/suggest.hpp"
 
 namespace fgr {
 namespace fs = std::filesystem;
@@ -146,10 +147,10 @@ std::optional<Scene> first_scene_with_id(const std::vector<fs::path>& directorie
     return std::nullopt;
 }
 
-std::string scene_ids(const std::vector<Scene>& scenes) {
-    std::string ids;
-    for (const auto& scene : scenes) ids += (ids.empty() ? "" : ", ") + scene.id;
-    return ids.empty() ? "none found" : ids;
+std::vector<std::string> scene_ids(const std::vector<Scene>& scenes) {
+    std::vector<std::string> ids;
+    for (const auto& scene : scenes) ids.push_back(scene.id);
+    return ids;
 }
 
 // `id` with its underscores read as dashes.
@@ -194,21 +195,34 @@ std::string unknown_scene_message(const Discovery& found, std::string_view id) {
         return fmt::format("unknown scene '{}': plugin {} was refused: {}", id,
                            refused->file.string(), refused->reason);
     }
-    std::string message =
-        fmt::format("unknown scene '{}' (available: {})", id, scene_ids(found.scenes));
+    std::string refused;
     if (!found.skipped.empty()) {
         // One of them may be the scene under another name: say which files were refused and why.
         constexpr std::size_t kShown = 3;
-        message += "; refused:";
+        refused = "refused:";
         for (std::size_t i = 0; i < std::min(found.skipped.size(), kShown); ++i) {
-            message += fmt::format("{} {} ({})", i == 0 ? "" : ",", found.skipped[i].file.string(),
+            refused += fmt::format("{} {} ({})", i == 0 ? "" : ",", found.skipped[i].file.string(),
                                    found.skipped[i].reason);
         }
         if (found.skipped.size() > kShown) {
-            message += fmt::format(" and {} more", found.skipped.size() - kShown);
+            refused += fmt::format(" and {} more", found.skipped.size() - kShown);
         }
     }
-    return message;
+    if (found.scenes.empty()) {
+        return fmt::format(
+            "unknown scene '{}' (no scenes found: `fgr list` names the folders "
+            "searched{}{})",
+            id, refused.empty() ? "" : "; ", refused);
+    }
+    // The nearest id, not every id: there are dozens.
+    const std::string suggestion = did_you_mean(id, scene_ids(found.scenes));
+    if (suggestion.empty()) {
+        return fmt::format("unknown scene '{}' (`fgr list` lists the scenes{}{})", id,
+                           refused.empty() ? "" : "; ", refused);
+    }
+    std::string message = fmt::format("unknown scene '{}'", id);
+    if (!refused.empty()) message += " (" + refused + ")";
+    return message + suggestion;
 }
 
 std::vector<fs::path> plugin_search_path(const fs::path& exe_dir) {

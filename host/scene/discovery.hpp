@@ -45,7 +45,8 @@ Discovery discover_scene(const std::vector<std::filesystem::path>& directories,
 // The one-line error for a scene id that `found` lacks. When a refused file is that scene (its
 // description declared the id, or, refused before the id could be read, its file name is the id,
 // e.g. liboops.so or oops.ifs.json for 'oops'), the message names the file and why it was refused;
-// otherwise it lists the scenes there are and the files that were refused.
+// otherwise it offers the nearest scene id (or points to `fgr list`) and names the files that were
+// refused.
 std::string unknown_scene_message(const Discovery& found, std::string_view id);
 
 }  // namespace fgr

@@ -7,6 +7,8 @@
 #include <charconv>
 #include <cmath>
 
+#include "util/suggest.hpp"
+
 namespace fgr {
 namespace {
 
@@ -43,14 +45,24 @@ std::string joined_choices(const ParamInfo& param) {
     return names;
 }
 
+// The names of the choices the scene offers, for "did you mean".
+std::vector<std::string> offered_choices(const ParamInfo& param) {
+    std::vector<std::string> names;
+    for (std::size_t i = 0; i < param.choices.size(); ++i) {
+        if (choice_offered(param, i)) names.push_back(param.choices[i]);
+    }
+    return names;
+}
+
 float parse_int(const ParamInfo& param, std::string_view text) {
     for (size_t i = 0; i < param.choices.size(); ++i) {
         if (param.choices[i] == trim(text)) return param.min_value + static_cast<float>(i);
     }
     if (!param.choices.empty() && !text.empty() &&
         std::isalpha(static_cast<unsigned char>(trim(text).front()))) {
-        throw UsageError(fmt::format("parameter '{}' takes {} or a number, not '{}'", param.id,
-                                     joined_choices(param), trim(text)));
+        throw UsageError(fmt::format("parameter '{}' takes {} or a number, not '{}'{}", param.id,
+                                     joined_choices(param), trim(text),
+                                     did_you_mean(trim(text), offered_choices(param))));
     }
     const float value = parse_number(param, text);
     if (value != std::floor(value)) {
@@ -149,8 +161,11 @@ void set_param_from_text(const Scene& scene, std::vector<float>& values,
         for (int c = 0; c < param_components(param.type); ++c) check_range(param, slot[c]);
         return;
     }
+    std::vector<std::string> ids;
+    for (const ParamInfo& param : scene.params) ids.push_back(param.id);
     throw UsageError(
-        fmt::format("scene '{}' has no parameter '{}' (see `fgr list`)", scene.id, id));
+        unknown_name_message(fmt::format("scene '{}' has no parameter '{}'", scene.id, id), id, ids,
+                             fmt::format(" (`fgr list {}` lists its parameters)", scene.id)));
 }
 
 std::string param_text(const ParamInfo& param, const float* value) {

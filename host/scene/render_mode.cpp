@@ -4,6 +4,10 @@
 
 #include <array>
 #include <stdexcept>
+#include <string>
+#include <vector>
+
+#include "util/suggest.hpp"
 
 namespace fgr {
 
@@ -40,8 +44,10 @@ RenderMode parse_render_mode(std::string_view name) {
     for (const RenderModeInfo& info : render_modes()) {
         if (info.name == name) return info.mode;
     }
-    throw std::invalid_argument(
-        fmt::format("unknown render mode '{}' (choose {})", name, render_mode_choices()));
+    std::vector<std::string> names;
+    for (const RenderModeInfo& info : render_modes()) names.emplace_back(info.name);
+    throw std::invalid_argument(fmt::format("unknown render mode '{}' (choose {}){}", name,
+                                            render_mode_choices(), did_you_mean(name, names)));
 }
 
 }  // namespace fgr

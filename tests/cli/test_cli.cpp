@@ -671,7 +671,7 @@ TEST_F(CliTest, SixteenBitOutputIsLinear) {
 }
 
 TEST_F(CliTest, ListShowsMandelbulbParametersCamerasAndPaths) {
-    const RunResult result = run({"list"});
+    const RunResult result = run({"list", "mandelbulb"});
     ASSERT_TRUE(result.exited) << result;
     ASSERT_EQ(result.exit_code, 0) << result;
     for (const char* word : {"mandelbulb", "power", "bailout", "variant", "iterations", "canonical",
@@ -798,7 +798,14 @@ TEST_F(CliWithOwnCache, ListShowsIfsScenesFromThePluginPath) {
     std::ofstream(plugins / "two.ifs.json")
         << R"({"format": "fgr-ifs", "version": 1, "id": "two-maps", "name": "Two maps",)"
         << R"( "maps": [{"scale": 0.5}, {"scale": 0.5, "translate": [1, 0, 0]}]})";
-    const RunResult result = run_with({"list"}, plugins);
+    const RunResult listed = run_with({"list"}, plugins);
+    ASSERT_EQ(listed.exit_code, 0) << listed;
+    // First, as the first folder's; a line, its kind in a column of its own.
+    const std::string line = listed.out.substr(0, listed.out.find('\n'));
+    EXPECT_EQ(line.rfind("two-maps ", 0), 0u) << listed.out;
+    EXPECT_NE(line.find(" IFS "), std::string::npos) << listed.out;
+    EXPECT_NE(line.find(" Two maps"), std::string::npos) << listed.out;
+    const RunResult result = run_with({"list", "two-maps"}, plugins);
     ASSERT_EQ(result.exit_code, 0) << result;
     EXPECT_NE(result.out.find("two-maps  Two maps"), std::string::npos) << result.out;
     EXPECT_NE(result.out.find("IFS file: " + (plugins / "two.ifs.json").string() + " (2 maps"),
@@ -811,7 +818,7 @@ TEST_F(CliWithOwnCache, ListShowsIfsScenesFromThePluginPath) {
 // and bounding sphere, not as an IFS file.
 TEST_F(CliWithOwnCache, ListShowsAnIfsPluginsMaps) {
     const fs::path plugins = fs::path(FGR_TEST_FIXTURE_DIR) / "ifs_plugin";
-    const RunResult result = run_with({"list"}, plugins);
+    const RunResult result = run_with({"list", "sierpinski-ifs-plugin"}, plugins);
     ASSERT_EQ(result.exit_code, 0) << result;
     EXPECT_NE(result.out.find("sierpinski-ifs-plugin  Sierpinski tetrahedron (IFS plugin)"),
               std::string::npos)
@@ -863,7 +870,9 @@ TEST_F(CliWithOwnCache, UnknownSceneNamesTheRefusedPluginAndWhy) {
     const RunResult other = run_with(
         {"render", "zzz", "-o", out_png().string(), "--width", "16", "--height", "12"}, refused);
     EXPECT_EQ(other.exit_code, 2) << other;
-    EXPECT_TRUE(contains_ignoring_case(other.err, "unknown scene 'zzz' (available: ")) << other;
+    EXPECT_TRUE(contains_ignoring_case(
+        other.err, "unknown scene 'zzz' (`fgr list` lists the scenes; refused: "))
+        << other;
     EXPECT_TRUE(contains_ignoring_case(
         other.err,
         (refused / "liboops.so").string() + " (parameter 'scale': default 3 outside [0.5, 2])"))
@@ -909,8 +918,9 @@ TEST_F(CliWithOwnCache, RendersEveryKindOfSceneFileByPath) {
             << "a plugin folder was scanned: " << result;
         if (!rendered) {
             EXPECT_EQ(result.exit_code, 2) << result;
-            EXPECT_EQ(result.err,
-                      "fgr: error: scene '" + id + "' has no camera 'nosuch' (see `fgr list`)\n")
+            EXPECT_EQ(result.err, "fgr: error: scene '" + id +
+                                      "' has no camera 'nosuch' (`fgr list " + id +
+                                      "` lists its cameras)\n")
                 << result;
             continue;
         }
@@ -1010,22 +1020,28 @@ TEST_F(CliWithOwnCache, TextScenesPassFgrCheck) {
     }
 }
 
-// Off a terminal, bench says how far each run is every quarter, none skipped: three frames per run
-// report 0, 1/3 and 2/3 done and then the end, which passes 75% and 100% at once.
-TEST_F(CliWithOwnCache, BenchProgressLinesNameEveryQuarterOfEveryRun) {
+// Off a terminal, a bench that runs past the delay (FGR_PROGRESS_DELAY, 0 here) says how far it is
+// over all its runs, about every tenth, with the run and the pace: three frames a run and two runs
+// are sixths of the whole, the end of the first run and the start of the second one line.
+TEST_F(CliWithOwnCache, BenchProgressLinesRunToTheEndWithTheRunAndPace) {
     const RunResult result =
         run_with({"bench", "mandelbulb", "--frames", "3", "--runs", "2", "--width", "16",
-                  "--height", "12", "-o", (dir() / "bench").string()});
+                  "--height", "12", "-o", (dir() / "bench").string()},
+                 {}, {{"FGR_PROGRESS_DELAY", "0"}});
     ASSERT_EQ(result.exit_code, 0) << result;
     std::vector<std::string> progress;
     std::istringstream lines(result.err);
     for (std::string line; std::getline(lines, line);) {
-        if (line.starts_with("fgr: info: run ")) progress.push_back(line.substr(11));
+        if (!line.starts_with("bench ")) continue;
+        const std::size_t pace = line.find(" fps | ");
+        EXPECT_NE(pace, std::string::npos) << line;
+        progress.push_back(line.substr(0, line.rfind(" | ", pace)));
     }
     const std::vector<std::string> expected = {
-        "run 1/2: 0%", "run 1/2: 25%", "run 1/2: 50%", "run 1/2: 75%", "run 1/2: 100%",
-        "run 2/2: 0%", "run 2/2: 25%", "run 2/2: 50%", "run 2/2: 75%", "run 2/2: 100%"};
+        "bench 0% | run 1/2",  "bench 17% | run 1/2", "bench 33% | run 1/2", "bench 50% | run 1/2",
+        "bench 67% | run 2/2", "bench 83% | run 2/2", "bench 100% | run 2/2"};
     EXPECT_EQ(progress, expected) << result;
+    EXPECT_NE(result.err.find(" fps | took "), std::string::npos) << result;
 }
 
 // A view typed as --eye/--target/--up/--fov is the view a camera path file with the same numbers

@@ -76,16 +76,13 @@ std::vector<GoldenCase> golden_cases(const std::vector<std::string>& ids) {
 
 std::vector<std::string> listed_scene_ids() {
     const test::TempDir folder("fgr_golden_list");
-    const test::RunResult listed = test::run_fgr({"list"}, folder.path());
+    const test::RunResult listed = test::run_fgr({"list", "--ids"}, folder.path());
     if (!listed.exited || listed.exit_code != 0) {
-        throw std::runtime_error("fgr list failed: " + listed.err);
+        throw std::runtime_error("fgr list --ids failed: " + listed.err);
     }
-    // A scene's line is "ID  Name - description"; its details are indented under it.
     std::vector<std::string> ids;
     for (const std::string& line : lines_of(listed.out)) {
-        const std::size_t gap = line.find("  ");
-        if (line.empty() || line[0] == ' ' || gap == std::string::npos) continue;
-        ids.push_back(line.substr(0, gap));
+        if (!line.empty()) ids.push_back(line);
     }
     return ids;
 }

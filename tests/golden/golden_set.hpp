@@ -42,7 +42,7 @@ inline constexpr int kGoldenHeight = 30;
 // and in double. A mode a scene does not offer is a case too: its error must not change either.
 std::vector<GoldenCase> golden_cases(const std::vector<std::string>& ids);
 
-// The scene ids `fgr list` prints, in its order.
+// The scene ids `fgr list --ids` prints, in its order.
 std::vector<std::string> listed_scene_ids();
 
 // Runs one case's render in a fresh folder of its own.

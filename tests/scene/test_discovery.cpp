@@ -267,8 +267,13 @@ TEST(DiscoverScene, AnUnknownIdGivesEverySceneForTheError) {
     const Discovery found = discover_scene(dirs.search_path(), "three", dirs.index);
     ASSERT_EQ(found.scenes.size(), 2u);
     EXPECT_EQ(found.skipped.size(), 1u);
-    EXPECT_NE(unknown_scene_message(found, "three").find("available: one, two"), std::string::npos)
-        << unknown_scene_message(found, "three");
+    // The nearest id when one is near, else where to find them; and the file refused.
+    EXPECT_EQ(unknown_scene_message(found, "three"),
+              "unknown scene 'three' (`fgr list` lists the scenes; refused: " +
+                  (dirs.second / "c.ifs.json").string() + " (" + found.skipped[0].reason + "))");
+    EXPECT_EQ(unknown_scene_message(found, "tow"),
+              "unknown scene 'tow' (refused: " + (dirs.second / "c.ifs.json").string() + " (" +
+                  found.skipped[0].reason + ")); did you mean 'two'?");
 }
 
 TEST(DiscoverScene, FilesRefusedBeforeTheSceneAreReported) {

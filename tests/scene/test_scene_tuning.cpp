@@ -210,10 +210,10 @@ TEST(SceneTuning, FgrRenderRefusesAColourModeTheSceneDoesNotOfferInOneLine) {
 
 TEST(SceneTuning, FgrListShowsOfferedColourModesOnly) {
     const test::TempDir dir("fgr_colour_modes_list");
-    const test::RunResult listed = test::run_fgr({"list"}, dir.path());
-    ASSERT_TRUE(listed.exited && listed.exit_code == 0) << listed;
-    // Each scene's block starts at its id at the start of a line; its colour_mode row follows.
+    // `fgr list SCENE` starts at the scene's id; its colour_mode row follows.
     const auto colour_row = [&](const std::string& id) {
+        const test::RunResult listed = test::run_fgr({"list", id}, dir.path());
+        EXPECT_TRUE(listed.exited && listed.exit_code == 0) << listed;
         const std::string text = "\n" + listed.out;
         const std::size_t block = text.find("\n" + id + "  ");
         EXPECT_NE(block, std::string::npos) << id << " not listed";
