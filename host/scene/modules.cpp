@@ -38,9 +38,9 @@ void refuse_missing_module(const std::filesystem::path& path) {
         if (path.filename() != origin.file_name) continue;
         if (!origin.built) {
             throw std::runtime_error(fmt::format(
-                "{} is not installed: this fgr was built with -D{}=OFF (install the {} package, "
-                "or build with -D{}=ON)",
-                origin.what, origin.option, origin.package, origin.option));
+                "{} is not in this fgr: it was built with -D{}=OFF (build with -D{}=ON, or "
+                "install the packages fgr and {})",
+                origin.what, origin.option, origin.option, origin.package));
         }
         throw std::runtime_error(fmt::format(
             "{} is not installed: {} is missing (install the {} package, or build with -D{}=ON)",
