@@ -31,7 +31,7 @@ fail() {
     echo "install_in_clean_root: FAILED: $*" >&2
     exit 1
 }
-step() { echo "== $*"; }
+step() { echo "== [${SECONDS} s] $*"; }
 
 # in_root COMMAND...: runs COMMAND in ROOT as root, with a plain environment and /proc, /sys and
 # /dev/shm mounted (fgr finds its files from /proc/self/exe; PoCL reads the CPU's topology and
@@ -129,4 +129,4 @@ in_root sh -ec 'cd /tmp && fgr new-scene my-scene > /dev/null &&
 grep -q "/usr/lib/.*cmake/fgr" "$root/tmp/my-scene/build/CMakeCache.txt" ||
     fail "the scene's build did not find the installed fgr-sdk's CMake package"
 
-echo "install_in_clean_root: all checks passed"
+echo "install_in_clean_root: all checks passed in ${SECONDS} s"
