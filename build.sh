@@ -17,6 +17,17 @@
 #   ./build.sh docs            the documentation site (mkdocs.yml) into BUILD_DIR/site, from the
 #                              pages in docs/ and the CLI reference fgr generates; any broken link
 #                              fails it
+#   ./build.sh package         the Debian packages fgr, fgr-viewer, fgr-video, fgr-mpi and fgr-sdk
+#                              from the build tree (built first where needed), into build/packages
+#                              (docs/packages.md)
+#   ./build.sh prepare-clean-root DIR
+#                              a clean Debian 12 root in DIR (mmdebstrap) with the runtime
+#                              libraries fgr's packages depend on: what test-package installs into
+#   ./build.sh test-package [DIR]
+#                              the packages, installed with apt into the prepared root DIR (else a
+#                              root made now) and run there (tests/package/); removes DIR after
+#   ./build.sh remove-clean-root DIR
+#                              removes a prepared root (refused while anything is mounted in it)
 #
 # Needs root or sudo only when packages are missing. BUILD_DIR (default: build) picks the build
 # tree, SANITIZE_BUILD_DIR (default: build-sanitize) the sanitizer build's.
@@ -49,6 +60,21 @@ test_packages=(
 # And to build the documentation site: MkDocs (Debian 12 has 1.4, with its themes).
 docs_packages=(mkdocs)
 
+# And to make the Debian packages: dpkg-shlibdeps (dpkg-dev, which needs `file`) derives their
+# Depends; mmdebstrap makes the clean root the packages are tested in.
+package_packages=(dpkg-dev file)
+clean_root_packages_tools=(mmdebstrap)
+# What the clean root is prepared with, so that test-package only installs fgr's .deb files: the
+# runtime libraries fgr's packages depend on and what building a scene with fgr-sdk needs. The test
+# fails when the packages' Depends do not ask for every one of them (apt-get autoremove), so this
+# list and the Depends stay in step; one missing here is only fetched during the test.
+clean_root_packages=(
+    ocl-icd-libopencl1 pocl-opencl-icd libspdlog1.10 libfmt9 libpng16-16 libtiff6 zlib1g
+    libopenexr-3-1-30 libstb0 cmake make gcc libc6-dev
+)
+debian_mirror=${DEBIAN_MIRROR:-http://deb.debian.org/debian}
+debian_security_mirror=${DEBIAN_SECURITY_MIRROR:-http://deb.debian.org/debian-security}
+
 # install_missing_packages PACKAGE...: apt-get installs those not installed yet.
 install_missing_packages() {
     local missing=()
@@ -68,8 +94,56 @@ install_missing_packages() {
 build() {
     local dir=$1
     shift
-    cmake -S "$repo" -B "$dir" -G Ninja -DCMAKE_BUILD_TYPE=Release -DFGR_BUILD_TESTS=ON "$@"
+    cmake -S "$repo" -B "$dir" -G Ninja -DCMAKE_BUILD_TYPE=Release -DFGR_BUILD_TESTS=ON \
+        "${prefix_option[@]}" "$@"
     cmake --build "$dir" -j "$jobs"
+}
+# The build tree is configured for the prefix the Debian packages install into, so GNUInstallDirs
+# picks Debian's multiarch libdir (lib/x86_64-linux-gnu) for the tree and the packages alike; fgr
+# finds its files relative to its binary, so `cmake --install build --prefix PREFIX` works as well.
+prefix_option=(-DCMAKE_INSTALL_PREFIX=/usr)
+
+# make_packages: the Debian packages from the build tree into $build_dir/packages. A tree built
+# already (./build.sh test) is packed as it is; a fresh one is configured without the tests first.
+make_packages() {
+    install_missing_packages "${build_packages[@]}" "${package_packages[@]}"
+    if [[ ! -f $build_dir/CMakeCache.txt ]]; then
+        cmake -S "$repo" -B "$build_dir" -G Ninja -DCMAKE_BUILD_TYPE=Release -DFGR_BUILD_TESTS=OFF \
+            "${prefix_option[@]}"
+    fi
+    cmake --build "$build_dir" -j "$jobs"
+    rm -rf "$build_dir/packages"
+    (cd "$build_dir" && cpack -G DEB -B "$build_dir/packages" > "$build_dir/cpack.log") ||
+        { cat "$build_dir/cpack.log" >&2; exit 1; }
+    rm -rf "$build_dir/packages/_CPack_Packages"
+    ls "$build_dir/packages"/*.deb
+}
+
+# prepare_clean_root DIR: a Debian 12 root in DIR (which must not exist or be empty) with apt, the
+# archive's lists and clean_root_packages, those marked as installed automatically (test-package's
+# autoremove check).
+prepare_clean_root() {
+    local dir=$1
+    install_missing_packages "${clean_root_packages_tools[@]}"
+    mmdebstrap --mode=root --variant=apt --skip=cleanup/apt/lists \
+        --include="$(IFS=,; echo "${clean_root_packages[*]}")" \
+        --customize-hook="chroot \"\$1\" apt-mark auto ${clean_root_packages[*]} > /dev/null" \
+        bookworm "$dir" \
+        "deb $debian_mirror bookworm main" "deb $debian_mirror bookworm-updates main" \
+        "deb $debian_security_mirror bookworm-security main"
+}
+
+# remove_root DIR: removes a root made by prepare_clean_root, refusing while anything is mounted
+# in it (the test mounts /proc only inside a private mount namespace).
+remove_root() {
+    local dir
+    dir=$(realpath -m "$1")
+    [[ -d $dir ]] || return 0
+    if findmnt -rn -o TARGET | grep -q "^$dir/"; then
+        echo "build.sh: something is still mounted in $dir; not removing it" >&2
+        return 1
+    fi
+    rm -rf --one-file-system "$dir"
 }
 
 command=${1:-render}
@@ -79,7 +153,7 @@ case "$command" in
         # Only fgr and its scenes, configured without the tests, whose packages (GoogleTest)
         # only the test commands install; they turn the tests back on in the same tree.
         cmake -S "$repo" -B "$build_dir" -G Ninja -DCMAKE_BUILD_TYPE=Release -DFGR_WERROR=OFF \
-            -DFGR_BUILD_TESTS=OFF
+            -DFGR_BUILD_TESTS=OFF "${prefix_option[@]}"
         cmake --build "$build_dir" -j "$jobs" --target fgr fgr_scenes
         "$build_dir/bin/fgr" render mandelbulb -o "${2:-mandelbulb.png}"
         ;;
@@ -132,8 +206,34 @@ case "$command" in
             mkdocs build --strict --config-file "$repo/mkdocs.yml"
         echo "build.sh: the site is in $build_dir/site (open index.html)"
         ;;
+    package)
+        make_packages
+        ;;
+    prepare-clean-root)
+        [[ $# -eq 2 ]] || { echo "usage: ./build.sh prepare-clean-root DIR" >&2; exit 2; }
+        prepare_clean_root "$2"
+        ;;
+    remove-clean-root)
+        [[ $# -eq 2 ]] || { echo "usage: ./build.sh remove-clean-root DIR" >&2; exit 2; }
+        remove_root "$2"
+        ;;
+    test-package)
+        install_missing_packages "${clean_root_packages_tools[@]}"
+        make_packages
+        if [[ $# -ge 2 ]]; then
+            root=$2
+        else
+            root=$(mktemp -d /tmp/fgr-clean-root.XXXXXX)
+            rmdir "$root"
+            trap 'remove_root "$root"' EXIT
+            prepare_clean_root "$root"
+        fi
+        trap 'remove_root "$root"' EXIT
+        "$repo/tests/package/install_in_clean_root.sh" "$build_dir/packages" "$root" "$build_dir"
+        ;;
     *)
-        echo "usage: ./build.sh [render [OUT.png] | test | test-slow | test-golden | test-sanitize | docs]" >&2
+        echo "usage: ./build.sh [render [OUT.png] | test | test-slow | test-golden | test-sanitize |" \
+            "docs | package | prepare-clean-root DIR | test-package [DIR]]" >&2
         exit 2
         ;;
 esac

@@ -8,8 +8,8 @@ write_basic_package_version_file(${CMAKE_BINARY_DIR}/${FGR_INSTALL_CMAKE_DIR}/fg
     VERSION ${PROJECT_VERSION} COMPATIBILITY SameMajorVersion)
 
 # Installed: targets from the export set, helper scripts beside the config.
-install(TARGETS fgr_plugin_api EXPORT fgrTargets)
-install(EXPORT fgrTargets NAMESPACE fgr:: DESTINATION ${FGR_INSTALL_CMAKE_DIR})
+install(TARGETS fgr_plugin_api EXPORT fgrTargets COMPONENT sdk)
+install(EXPORT fgrTargets NAMESPACE fgr:: DESTINATION ${FGR_INSTALL_CMAKE_DIR} COMPONENT sdk)
 set(FGR_CONFIG_KERNEL_DIR ${FGR_INSTALL_KERNEL_DIR})
 set(FGR_CONFIG_EXECUTABLE ${CMAKE_INSTALL_BINDIR}/fgr${CMAKE_EXECUTABLE_SUFFIX})
 configure_package_config_file(cmake/fgrConfig.cmake.in
@@ -17,10 +17,10 @@ configure_package_config_file(cmake/fgrConfig.cmake.in
     INSTALL_DESTINATION ${FGR_INSTALL_CMAKE_DIR}
     PATH_VARS FGR_CONFIG_KERNEL_DIR FGR_CONFIG_EXECUTABLE)
 install(FILES ${CMAKE_BINARY_DIR}/fgrConfig-install.cmake DESTINATION ${FGR_INSTALL_CMAKE_DIR}
-    RENAME fgrConfig.cmake)
+    RENAME fgrConfig.cmake COMPONENT sdk)
 install(FILES ${CMAKE_BINARY_DIR}/${FGR_INSTALL_CMAKE_DIR}/fgrConfigVersion.cmake
     cmake/FgrScenePlugin.cmake cmake/FgrInstallScene.cmake cmake/embed.cmake
-    DESTINATION ${FGR_INSTALL_CMAKE_DIR})
+    DESTINATION ${FGR_INSTALL_CMAKE_DIR} COMPONENT sdk)
 
 # Build tree: the same config, pointing at the source tree's headers and kernels.
 export(EXPORT fgrTargets NAMESPACE fgr::
@@ -41,9 +41,11 @@ endforeach()
 # (tests/installed_docs.sh): ABI.md keeps its place beside sdk/, the examples' images their place
 # in sdk/.
 file(GLOB sdk_images ${PROJECT_SOURCE_DIR}/sdk/*.png)
-install(FILES sdk/README.md ${sdk_images} DESTINATION ${CMAKE_INSTALL_DATADIR}/fgr/sdk)
-install(FILES plugin_api/ABI.md DESTINATION ${CMAKE_INSTALL_DATADIR}/fgr/plugin_api)
-install(DIRECTORY sdk/template sdk/examples DESTINATION ${CMAKE_INSTALL_DATADIR}/fgr/sdk)
+install(FILES sdk/README.md ${sdk_images} DESTINATION ${CMAKE_INSTALL_DATADIR}/fgr/sdk COMPONENT sdk)
+install(FILES plugin_api/ABI.md DESTINATION ${CMAKE_INSTALL_DATADIR}/fgr/plugin_api
+    COMPONENT sdk)
+install(DIRECTORY sdk/template sdk/examples DESTINATION ${CMAKE_INSTALL_DATADIR}/fgr/sdk
+    COMPONENT sdk)
 # The guide itself, the documentation site's SDK pages, goes beside sdk/ as it lies beside it in the
 # source tree (docs/sdk/), so its links to the examples' images and the ABI resolve in both.
 install(DIRECTORY docs/sdk/ DESTINATION ${CMAKE_INSTALL_DATADIR}/fgr/docs/sdk COMPONENT sdk)

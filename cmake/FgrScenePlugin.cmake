@@ -48,7 +48,7 @@ function(fgr_add_scene_plugin name)
         set_target_properties(${name} PROPERTIES LIBRARY_OUTPUT_DIRECTORY ${FGR_PLUGIN_OUTPUT_DIR})
     endif()
     if(FGR_INSTALL_PLUGIN_DIR)  # fgr's own plugins install beside the fgr binary
-        install(TARGETS ${name} LIBRARY DESTINATION ${FGR_INSTALL_PLUGIN_DIR})
+        install(TARGETS ${name} LIBRARY DESTINATION ${FGR_INSTALL_PLUGIN_DIR} COMPONENT renderer)
     endif()
     if(TARGET fgr_plugin_api)
         # fgr's own plugins: checked by ctest (SceneCheck.*), not while building.

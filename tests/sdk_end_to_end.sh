@@ -32,8 +32,10 @@ unset FGR_PLUGIN_PATH
 step "install into $prefix"
 cmake --install "$build_dir" --prefix "$prefix" > "$work/install.log"
 fgr=$prefix/bin/fgr
+# The libdir GNUInstallDirs chose (lib, or Debian's lib/x86_64-linux-gnu under the prefix /usr).
+libdir=$(sed -n 's/^CMAKE_INSTALL_LIBDIR:[A-Z]*=//p' "$build_dir/CMakeCache.txt")
 for file in bin/fgr include/fgr/plugin.h include/fgr/scene_helpers.h \
-            lib/cmake/fgr/fgrConfig.cmake lib/cmake/fgr/FgrScenePlugin.cmake \
+            "$libdir/cmake/fgr/fgrConfig.cmake" "$libdir/cmake/fgr/FgrScenePlugin.cmake" \
             share/fgr/kernels/fgr_sdf.cl share/fgr/sdk/README.md; do
     [[ -e $prefix/$file ]] || fail "install is missing $file"
 done

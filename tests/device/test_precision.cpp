@@ -30,7 +30,9 @@
 #include "render/renderer.hpp"
 #include "scene/parameters.hpp"
 #include "test_scenes.hpp"
+#ifdef FGR_TEST_VIEWER  // built with the viewer (FGR_BUILD_VIEWER)
 #include "viewer/render_worker.hpp"
+#endif
 
 namespace fgr {
 namespace {
@@ -449,6 +451,7 @@ CameraView looking_away(const CameraView& view) {
     return away;
 }
 
+#ifdef FGR_TEST_VIEWER
 // The precision fgr view renders `view` in: the last frame of the render thread, refined.
 bool viewer_renders_in_double(const std::shared_ptr<const Scene>& scene, const CameraView& view,
                               int width, int height) {
@@ -475,6 +478,7 @@ bool viewer_renders_in_double(const std::shared_ptr<const Scene>& scene, const C
     EXPECT_TRUE(in_double.has_value()) << "the viewer rendered no frame";
     return in_double.value_or(false);
 }
+#endif
 
 TEST_F(FloatAndDouble, RenderViewAndBenchDecideAlike) {
     constexpr int width = 64, height = 48;
@@ -495,10 +499,12 @@ TEST_F(FloatAndDouble, RenderViewAndBenchDecideAlike) {
             render_still(*bulb_, {width, height, rule.view, params}, *device_, cache_, still);
         EXPECT_EQ(rendered.double_precision, rule.in_double) << "fgr render";
 
+#ifdef FGR_TEST_VIEWER
         // fgr view
         auto scene = std::make_shared<const Scene>(*bulb_);
         EXPECT_EQ(viewer_renders_in_double(scene, rule.view, width, height), rule.in_double)
             << "fgr view";
+#endif
 
         // fgr bench, along a path that holds the view
         Scene benched = *bulb_;
