@@ -14,6 +14,7 @@
 #include "commands.hpp"
 #include "device/program_cache.hpp"
 #include "distributed/cluster.hpp"
+#include "reference.hpp"
 
 namespace fgr {
 namespace {
@@ -66,12 +67,14 @@ int run_cli(int argc, char** argv) {
     app.add_flag("-v,--verbose", verbose, "debug logging");
     std::string list_scene;
     bool list_formulas = false;
+    bool list_ids = false;
     CLI::App* list = app.add_subcommand(
         "list", "list the scenes found, with parameters, cameras and camera paths");
     list->add_option("scene", list_scene,
                      "list this scene (an id or a scene file) alone, describing each parameter");
     list->add_flag("--formulas", list_formulas,
                    "list the formula library instead: what formula scene files may iterate");
+    list->add_flag("--ids", list_ids, "print the scene ids alone, one a line (for scripts)");
     bool math_check = false;
     std::string info_file;
     CLI::App* info = app.add_subcommand(
@@ -99,21 +102,23 @@ int run_cli(int argc, char** argv) {
     add_cache_command(app, cache_options);
     EnvironmentOptions environment_options;
     add_environment_command(app, environment_options);
+    ReferenceOptions reference_options;
+    add_reference_commands(app, reference_options);
     if (argc < 2) {
         std::fputs(app.help().c_str(), stdout);
         return report_error(
             "no command given (commands: list, info, render, video, merge, view, check, "
-            "new-scene, bench, cache, environment)",
+            "new-scene, bench, cache, environment, completion)",
             kExitUsage);
     }
     if (const std::string first = argv[1];
         !first.empty() && first.front() != '-' && first != "list" && first != "info" &&
         first != "render" && first != "video" && first != "merge" && first != "view" &&
         first != "check" && first != "new-scene" && first != "bench" && first != "cache" &&
-        first != "environment") {
+        first != "environment" && !is_reference_command(first)) {
         return report_error(fmt::format("unknown command '{}' (commands: list, info, render, "
                                         "video, merge, view, check, new-scene, bench, cache, "
-                                        "environment)",
+                                        "environment, completion)",
                                         first),
                             kExitUsage);
     }
@@ -121,12 +126,18 @@ int run_cli(int argc, char** argv) {
         app.parse(argc, argv);
     } catch (const CLI::CallForHelp& help) {
         return app.exit(help);
+    } catch (const CLI::CallForVersion& version) {
+        return app.exit(version);
     } catch (const CLI::ParseError& error) {
         return report_error(error.what(), kExitUsage);
     }
     configure_logging(verbose, cluster);
     const auto run_command = [&](const std::string& command) {
+        if (command == "list" && list_ids) return command_list_ids();
         if (command == "list") return command_list(list_scene, list_formulas);
+        if (is_reference_command(command)) {
+            return command_reference(app, reference_options, command);
+        }
         if (command == "info" && !info_file.empty()) {
             if (math_check) throw UsageError("--math-check is for the devices, not a FILE");
             return command_info_file(info_file);

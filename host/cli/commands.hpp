@@ -158,6 +158,8 @@ void write_output(const std::filesystem::path& file, const std::string& text);
 // Every scene; with a scene id, that scene alone, each parameter with its description.
 // `fgr list`: the scenes found, or one described; with formulas, the formula library instead.
 int command_list(const std::string& scene_id, bool formulas);
+// `fgr list --ids`: the ids of the scenes found, one a line (what shell completion offers).
+int command_list_ids();
 // With `math_check`, each device's math self-test verdict per precision and packet width.
 int command_info(bool math_check);
 // `fgr info FILE`: the view an image file carries (image/embedded_view.hpp), printed as indented

@@ -137,6 +137,11 @@ void print_formulas() {
     }
 }
 
+int command_list_ids() {
+    for (const Scene& scene : discover().scenes) fmt::print("{}\n", scene.id);
+    return 0;
+}
+
 int command_list(const std::string& scene_id, bool formulas) {
     if (formulas) {
         print_formulas();
