@@ -714,8 +714,8 @@ std::string bash_completion_script(const CliCommand& top) {
     }
     out += "    esac\n}\n\n";
     out +=
-        R"sh(# Adds to COMPREPLY the files under $cur ending in one of the suffixes given (any file when
-# none is), and the directories.
+        R"sh(# Adds to COMPREPLY the files under $cur ending in one of the suffixes given
+# (any file when none is), and the directories.
 _fgr_files() {
     local file suffix
     compopt -o filenames 2>/dev/null
@@ -737,7 +737,9 @@ _fgr_files() {
 # with $cur. Scene ids come from the fgr being completed (`fgr list --ids`).
 _fgr_complete() {
     case $1 in
-    choices:*) mapfile -t -O "${#COMPREPLY[@]}" COMPREPLY < <(compgen -W "${1#choices:}" -- "$cur") ;;
+    choices:*)
+        mapfile -t -O "${#COMPREPLY[@]}" COMPREPLY < <(compgen -W "${1#choices:}" -- "$cur")
+        ;;
     scene)
         local ids
         ids=$("${COMP_WORDS[0]}" list --ids 2>/dev/null)
