@@ -18,7 +18,9 @@
 #include "util/version.hpp"
 
 namespace fgr {
-namespace {
+// A named namespace, not an anonymous one: fgr_cli's sources compile in unity batches, where the
+// file-local names of every file in a batch share one translation unit.
+namespace cli_reference {
 
 // --- Reading the App tree ------------------------------------------------------------------------
 
@@ -515,13 +517,7 @@ std::vector<std::string> opencl_platform_lines() {
     return lines;
 }
 
-}  // namespace
-
-std::string CliCommand::name() const {
-    std::string text = "fgr";
-    for (const std::string& part : path) text += " " + part;
-    return text;
-}
+// --- What reference.hpp declares (wrapped below) -------------------------------------------------
 
 CliCommand describe_cli(const CLI::App& app) { return describe_command(app, {}); }
 
@@ -892,9 +888,35 @@ bool is_reference_command(const std::string& command) {
     return command == "completion" || command == "__reference";
 }
 
+}  // namespace cli_reference
+
+std::string CliCommand::name() const {
+    std::string text = "fgr";
+    for (const std::string& part : path) text += " " + part;
+    return text;
+}
+
+CliCommand describe_cli(const CLI::App& app) { return cli_reference::describe_cli(app); }
+std::string cli_reference_markdown(const CliCommand& top) {
+    return cli_reference::cli_reference_markdown(top);
+}
+std::string cli_man_page(const CliCommand& top) { return cli_reference::cli_man_page(top); }
+std::string bash_completion_script(const CliCommand& top) {
+    return cli_reference::bash_completion_script(top);
+}
+std::string zsh_completion_script(const CliCommand& top) {
+    return cli_reference::zsh_completion_script(top);
+}
+std::string version_text() { return cli_reference::version_text(); }
+void add_reference_commands(CLI::App& app, ReferenceOptions& options) {
+    cli_reference::add_reference_commands(app, options);
+}
+bool is_reference_command(const std::string& command) {
+    return cli_reference::is_reference_command(command);
+}
 int command_reference(const CLI::App& app, const ReferenceOptions& options,
                       const std::string& command) {
-    const CliCommand top = describe_cli(app);
+    const CliCommand top = fgr::describe_cli(app);
     std::string text;
     if (command == "completion") {
         text = options.shell == "zsh" ? zsh_completion_script(top) : bash_completion_script(top);
