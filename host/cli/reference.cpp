@@ -10,6 +10,7 @@
 #include <cctype>
 #include <cstdint>
 #include <cstdio>
+#include <initializer_list>
 #include <string_view>
 
 #include "commands.hpp"
@@ -35,35 +36,43 @@ std::vector<std::string> split(std::string_view text, char separator) {
     }
 }
 
-bool is_number_type(const std::string& type) {
-    return type == "INT" || type == "UINT" || type == "FLOAT" || type == "NUMBER" ||
-           type == "POSITIVE" || type == "NONNEGATIVE";
-}
-
 bool has_name(const CliOption& option, std::string_view name) {
     return std::find(option.names.begin(), option.names.end(), name) != option.names.end();
 }
 
 // How a value completes: its choices, a scene, a file of the kinds the option reads, a
-// directory, or nothing (numbers). Scene arguments are named "scene" everywhere.
+// directory, or nothing. Scene arguments are named "scene" everywhere; the options that name files
+// and directories are listed here, by name (any other value, a number or a name such as --camera,
+// completes to nothing rather than to files it cannot be).
 void choose_completion(CliOption& option) {
     if (option.flag) return;
+    const auto named = [&option](std::initializer_list<std::string_view> names) {
+        return std::any_of(names.begin(), names.end(),
+                           [&option](std::string_view name) { return has_name(option, name); });
+    };
     if (!option.choices.empty()) {
         option.completion = ValueCompletion::Choices;
-    } else if (has_name(option, "scene") || has_name(option, "--scene")) {
+    } else if (named({"scene", "--scene"})) {
         option.completion = ValueCompletion::Scene;
-    } else if (is_number_type(option.type)) {
-        option.completion = ValueCompletion::None;
-    } else if (has_name(option, "--frames") || has_name(option, "--directory")) {
+    } else if (named({"--frames", "--dir", "--directory", "--output-dir"})) {
         option.completion = ValueCompletion::Directory;
-    } else {
+    } else if (named({"file", "parts", "--output", "--replay"})) {
         option.completion = ValueCompletion::Files;
-        if (has_name(option, "--kernel-source")) option.file_suffixes = {".cl"};
-        if (has_name(option, "--view")) {
-            option.file_suffixes = {".fgrview.json", ".png", ".exr", ".tif", ".tiff"};
-        }
-        if (has_name(option, "--camera-path")) option.file_suffixes = {".json"};
-        if (has_name(option, "--environment")) option.file_suffixes = {".hdr", ".exr"};
+    } else if (named({"--kernel-source"})) {
+        option.completion = ValueCompletion::Files;
+        option.file_suffixes = {".cl"};
+    } else if (named({"--view"})) {
+        option.completion = ValueCompletion::Files;
+        option.file_suffixes = {".fgrview.json", ".png", ".exr", ".tif", ".tiff"};
+    } else if (named({"--save-view"})) {
+        option.completion = ValueCompletion::Files;
+        option.file_suffixes = {".fgrview.json"};
+    } else if (named({"--camera-path"})) {
+        option.completion = ValueCompletion::Files;
+        option.file_suffixes = {".json"};
+    } else if (named({"--environment"})) {
+        option.completion = ValueCompletion::Files;
+        option.file_suffixes = {".hdr", ".exr"};
     }
 }
 

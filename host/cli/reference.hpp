@@ -14,7 +14,7 @@ namespace fgr {
 
 // How a value is completed in a shell.
 enum class ValueCompletion {
-    None,       // a number, or a flag's absence of a value: nothing to offer
+    None,       // nothing to offer: a number, a name, or no value at all (a flag)
     Choices,    // one of CliOption::choices
     Scene,      // a scene id (`fgr list --ids`) or a scene file
     Files,      // a file, ending in one of CliOption::file_suffixes (any file when there are none)

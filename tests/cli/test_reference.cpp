@@ -172,8 +172,12 @@ TEST_F(BashCompletionTest, CompletesCommandsOptionsChoicesAndSceneIds) {
     offers({"render", "--mode", ""}, "path");
     offers_exactly({"render", "--mode", "br"}, {"brute"});
     offers_exactly({"render", "--mode", "=", "pa"}, {"path"});
-    // A number completes to nothing; past an option's value comes the scene again.
+    // A number or a name completes to nothing (not to the files here: fgr.bash); past an
+    // option's value comes the scene again.
     offers_exactly({"render", "--width", ""}, {});
+    offers_exactly({"render", "--camera", ""}, {});
+    offers_exactly({"new-scene", ""}, {});
+    offers({"render", "-o", ""}, "fgr.bash");
     offers({"render", "--width", "64", "mandel"}, "mandelbulb");
     // Subcommands of subcommands, and their own options.
     offers_exactly({"cache", ""}, {"size", "clear"});
