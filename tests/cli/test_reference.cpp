@@ -296,19 +296,22 @@ std::string section_of(const std::string& markdown, const std::string& command) 
     return markdown.substr(start, end == std::string::npos ? std::string::npos : end - start);
 }
 
-// The commands `fgr --help` lists: CLI11's own listing of the App tree's visible subcommands.
+// The commands `fgr --help` lists: CLI11's own listing of the App tree's visible subcommands,
+// one a line under its heading, indented by a few spaces (deeper lines continue a description).
 std::vector<std::string> commands_in_help(const std::string& help) {
     std::vector<std::string> commands;
     bool in_section = false;
     for (const std::string& line : lines_of(help)) {
-        if (line == "Subcommands:" || line == "SUBCOMMANDS:") {
+        const std::size_t indent = line.find_first_not_of(' ');
+        if (line == "Subcommands:" || line == "SUBCOMMANDS:" || line == "Commands:" ||
+            line == "COMMANDS:") {
             in_section = true;
-        } else if (in_section && line.empty()) {
+        } else if (in_section && indent == std::string::npos) {
             in_section = false;
-        } else if (in_section) {
-            std::istringstream words(line);
-            std::string name;
-            if (words >> name) commands.push_back(name);
+        } else if (in_section && indent > 0 && indent <= 4) {
+            commands.push_back(line.substr(indent, line.find(' ', indent) - indent));
+        } else if (indent == 0) {
+            in_section = false;
         }
     }
     return commands;
