@@ -52,10 +52,11 @@ build_packages=(
 # And to test it: GoogleTest, Open MPI (optional to build fgr; with it, `mpirun -np N fgr render`
 # shares a render between ranks, and the tests run that), Mesa's software rasteriser under the
 # virtual X server the viewer tests run in, clinfo and gnuplot for the benchmark scripts,
-# clang-format for the style check, and jsonschema for the schemas' check.
+# clang-format for the style check, jsonschema for the schemas' check, and groff to check the man
+# page for warnings.
 test_packages=(
     libgtest-dev libopenmpi-dev openmpi-bin libgl1-mesa-dri xvfb xauth clinfo gnuplot-nox
-    clang-format python3-jsonschema
+    clang-format python3-jsonschema groff-base
 )
 # And to build the documentation site: MkDocs (Debian 12 has 1.4, with its themes).
 docs_packages=(mkdocs)

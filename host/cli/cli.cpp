@@ -14,6 +14,7 @@
 #include "commands.hpp"
 #include "device/program_cache.hpp"
 #include "distributed/cluster.hpp"
+#include "reference.hpp"
 #include "usage.hpp"
 
 namespace fgr {
@@ -97,6 +98,8 @@ int run_cli(int argc, char** argv) {
     add_cache_command(app, cache_options);
     EnvironmentOptions environment_options;
     add_environment_command(app, environment_options);
+    ReferenceOptions reference_options;
+    add_reference_commands(app, reference_options);
     group_options(app);
     if (argc < 2) {
         std::fputs(overview(app).c_str(), stdout);
@@ -110,6 +113,8 @@ int run_cli(int argc, char** argv) {
         app.parse(argc, argv);
     } catch (const CLI::CallForHelp& help) {
         return app.exit(help);
+    } catch (const CLI::CallForVersion& version) {
+        return app.exit(version);
     } catch (const CLI::ValidationError& error) {
         return report_error(invalid_value_message(error), kExitUsage);
     } catch (const CLI::ExtrasError& error) {
@@ -119,6 +124,9 @@ int run_cli(int argc, char** argv) {
     }
     configure_logging(verbose, cluster);
     const auto run_command = [&](const std::string& command) {
+        if (is_reference_command(command)) {
+            return command_reference(app, reference_options, command);
+        }
         if (command == "list") return command_list(list_options);
         if (command == "info" && !info_argument.empty()) {
             if (math_check)

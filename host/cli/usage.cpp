@@ -12,6 +12,7 @@
 #include <utility>
 
 #include "util/suggest.hpp"
+#include "util/version.hpp"
 
 namespace fgr {
 namespace {
@@ -195,7 +196,7 @@ std::string overview(const CLI::App& app) {
         {"fgr new-scene my-fractal", "start a scene of your own"},
     };
     std::string text =
-        fmt::format("fgr {}: real-time ray marching of 3D fractals\n\n", FGR_VERSION_STRING);
+        fmt::format("fgr {}: real-time ray marching of 3D fractals\n\n", fgr_version());
     std::size_t width = 0;
     for (const auto& example : kExamples) width = std::max(width, std::strlen(example.first));
     for (const auto& [example, what] : kExamples) {

@@ -13,6 +13,7 @@
 #include "scene/effects.hpp"
 #include "scene/scene.hpp"
 #include "scene/scene_limits.hpp"
+#include "util/version.hpp"
 
 namespace fgr {
 namespace {
@@ -208,7 +209,7 @@ ViewFile view_of_render(const Scene& scene, const FrameRequest& request,
         const std::filesystem::path absolute = std::filesystem::absolute(options.scene, error);
         view.scene_file = error ? options.scene : absolute.lexically_normal().string();
     }
-    view.fgr_version = FGR_VERSION_STRING;
+    view.fgr_version = fgr_version();
     view.width = request.width;
     view.height = request.height;
     view.bit_depth = options.bit_depth;

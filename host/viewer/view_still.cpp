@@ -9,6 +9,7 @@
 #include "render/sample_budget.hpp"
 #include "scene/effects.hpp"
 #include "scene/parameters.hpp"
+#include "util/version.hpp"
 
 namespace fgr::viewer {
 namespace {
@@ -35,7 +36,7 @@ ViewFile view_of_state(const ViewState& state, const EnvironmentChoice& environm
     ViewFile view;
     view.scene_id = scene.id;
     view.scene_fingerprint = scene_fingerprint(scene);
-    view.fgr_version = FGR_VERSION_STRING;
+    view.fgr_version = fgr_version();
     view.width = state.width;
     view.height = state.height;
     view.camera = state.view;
