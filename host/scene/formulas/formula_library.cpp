@@ -217,7 +217,8 @@ std::vector<Formula> build_library() {
                      "Hart, Sandin and Kauffman, SIGGRAPH 1989", D::Logarithmic, {}),
              12));
     // the quaternions' squares are not conformal: `fgr check` measured 1.3x overestimates
-    const Formula quaternion_base = stepping(quaternion_plain, 0.7f);
+    Formula quaternion_base = stepping(quaternion_plain, 0.7f);
+    quaternion_base.palette = 1;  // ocean: the hypercomplex shells cool beside the warm bulbs
     all.push_back(quaternion_base);
     Formula quaternion_julia = variant(quaternion_base, "quaternion_julia", "Quaternion Julia",
                                        {"hypercomplex", "quaternion", "julia"},
@@ -255,6 +256,7 @@ std::vector<Formula> build_library() {
                 "Dominic Rochon, 2000, in Corrado Segre's bicomplex numbers (1892)", D::Own, {}),
         12)));
     tetrabrot.distance_reiterates = true;
+    tetrabrot.palette = 1;  // ocean, as the other hypercomplex sets
     tetrabrot.view = view(1.4, -2.6, 1.6, -0.6, 0.0, 0.0, 50.0f);
     all.push_back(tetrabrot);
     Formula bicomplex_julia = variant(tetrabrot, "bicomplex_julia", "Bicomplex Julia",
