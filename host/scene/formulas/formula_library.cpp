@@ -129,6 +129,13 @@ Formula box(Formula f, double distance = 9.0) {
     return f;
 }
 
+// Box Julia sets and the Amazing Box: nearly every orbit takes all the steps, so the steps colour
+// them one flat shade; the point trap draws ornaments on their faces instead.
+Formula ornamented(Formula f) {
+    f.colour_mode = 0;  // point
+    return f;
+}
+
 Formula kifs(Formula f, double distance = 3.0) {
     f.iterations = 10;
     f.bailout = 10000.0f;
@@ -208,7 +215,7 @@ std::vector<Formula> build_library() {
          scalar("shift_s", "Shift s", -3.14159f, 3.14159f, 0.0f, "the fold's phase along s"),
          scalar("shift_t", "Shift t", -3.14159f, 3.14159f, 0.0f, "the fold's phase along t")})));
     riemann.bailout = 10.0f;
-    riemann.view = view(4.0, -4.6, 2.8, 0.0, 0.0, 0.0, 50.0f);
+    riemann.view = view(2.6, -3.0, 1.8, 0.0, 0.0, 0.0, 50.0f);
     all.push_back(riemann);
     // --- hypercomplex ---
     const Formula quaternion_plain = low_power(
@@ -280,11 +287,12 @@ std::vector<Formula> build_library() {
                       22.0));
     std::vector<FormulaParam> julia_box = mandelbox_params;
     julia_box.push_back(julia(1.0f, 1.0f, 1.0f));
-    all.push_back(
-        box(formula("mandelbox_julia", "Mandelbox Julia", "boxes", {"box", "folding", "julia"},
-                    "the Mandelbox's step with a fixed constant", "after Tom Lowe, 2010", D::Linear,
-                    julia_box),
-            16.0));
+    all.push_back(stepping(ornamented(box(formula("mandelbox_julia", "Mandelbox Julia", "boxes",
+                                                  {"box", "folding", "julia"},
+                                                  "the Mandelbox's step with a fixed constant",
+                                                  "after Tom Lowe, 2010", D::Linear, julia_box),
+                                          13.0)),
+                           0.9f));
     // Scale -1.5, as Mandelbulber 2's Amazing Box examples have it (-1.5 to -1.8): a box half the
     // size of scale 2's, its faces carved deeper, the turn breaking their symmetry.
     std::vector<FormulaParam> amazing_params = mandelbox_params;
@@ -295,7 +303,7 @@ std::vector<Formula> build_library() {
                     "Tglad's Amazing Box, fractalforums.com 2010 (Mandelbulber 2)", D::Linear,
                     amazing_params),
             7.0);
-    amazing.colour_mode = 0;  // the point trap draws ornaments on its carved faces
+    amazing = stepping(ornamented(amazing), 0.75f);
     add_rotation(amazing, 0.3f, 0.4f, 1.0f, 12.0f);
     all.push_back(amazing);
     Formula surf = box(formula(
@@ -311,6 +319,7 @@ std::vector<Formula> build_library() {
     // relief, seen obliquely from near it, as Mandelbulber 2's Amazing Surf examples look.
     add_rotation(surf, 1.0f, 0.5f, 0.0f, 25.0f);
     surf.view = view(3.0, -4.0, 2.5, 0.0, 0.0, 0.0, 50.0f);
+    surf = stepping(surf, 0.75f);
     all.push_back(surf);
     all.push_back(box(
         formula(
@@ -323,18 +332,21 @@ std::vector<Formula> build_library() {
              scalar("fixed_radius", "Fixed radius", 0.5f, 1.5f, 1.0f,
                     "the sphere fold's outer radius")}),
         22.0));
-    all.push_back(box(
-        formula(
-            "abox_julia", "ABox Julia", "boxes", {"box", "folding", "julia"},
-            "the ABox's step with a fixed constant",
-            "after Tglad's box fold (Mandelbulber 2's ABox Mod)", D::Linear,
-            {scalar("scale", "Scale", -3.0f, 3.0f, 2.0f, "the step's scale (|scale| at least 1.2)"),
-             vector("limits", "Folding limits", 0.5f, 1.5f, 1.0f, 1.0f, 1.3f, "per-axis box fold"),
-             scalar("min_radius", "Min radius", 0.1f, 1.5f, 0.5f, "the sphere fold's inner radius"),
-             scalar("fixed_radius", "Fixed radius", 0.5f, 1.5f, 1.0f,
-                    "the sphere fold's outer radius"),
-             julia(1.0f, 1.0f, 1.0f)}),
-        16.0));
+    all.push_back(stepping(
+        ornamented(box(formula("abox_julia", "ABox Julia", "boxes", {"box", "folding", "julia"},
+                               "the ABox's step with a fixed constant",
+                               "after Tglad's box fold (Mandelbulber 2's ABox Mod)", D::Linear,
+                               {scalar("scale", "Scale", -3.0f, 3.0f, 2.0f,
+                                       "the step's scale (|scale| at least 1.2)"),
+                                vector("limits", "Folding limits", 0.5f, 1.5f, 1.0f, 1.0f, 1.3f,
+                                       "per-axis box fold"),
+                                scalar("min_radius", "Min radius", 0.1f, 1.5f, 0.5f,
+                                       "the sphere fold's inner radius"),
+                                scalar("fixed_radius", "Fixed radius", 0.5f, 1.5f, 1.0f,
+                                       "the sphere fold's outer radius"),
+                                julia(1.0f, 1.0f, 1.0f)}),
+                       13.0)),
+        0.9f));
     std::vector<FormulaParam> amazing_julia_params = mandelbox_params;
     amazing_julia_params.push_back(julia(1.0f, 0.6f, 0.8f));
     Formula amazing_julia = box(formula("amazing_box_julia", "Amazing Box Julia", "boxes",
@@ -342,7 +354,8 @@ std::vector<Formula> build_library() {
                                         "the Amazing Box's step with a fixed constant",
                                         "after Tglad's Amazing Box, fractalforums.com 2010",
                                         D::Linear, amazing_julia_params),
-                                16.0);
+                                13.0);
+    amazing_julia = stepping(ornamented(amazing_julia), 0.9f);
     add_rotation(amazing_julia, 0.3f, 0.4f, 1.0f, 12.0f);
     all.push_back(amazing_julia);
     // --- kaleidoscopic IFS ---
@@ -417,7 +430,8 @@ std::vector<Formula> build_library() {
     apollonian.bailout = 1e10f;
     apollonian.max_bailout = 1e10f;
     apollonian.max_distance = 6.0f;
-    apollonian.view = view(2.2, -2.8, 1.7, 0.0, 0.0, 0.0, 50.0f);
+    // Near the cell, into its spheres (from further out, its cut faces hid them).
+    apollonian.view = view(1.2, -1.5, 0.9, 0.0, 0.0, 0.0, 50.0f);
     all.push_back(apollonian);
     Formula jos = inside_only(formula(
         "jos_kleinian", "Jos Leys' Kleinian", "kleinian", {"kleinian", "inversion", "mandelbulber"},
