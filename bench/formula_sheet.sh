@@ -5,7 +5,7 @@
 # hybrids"). LEVELS=N keeps N levels a channel (tile_pngs.py --levels): a smaller file.
 #
 #   bench/formula_sheet.sh            (SIZE=200x150 by default)
-#   SIZE=128x96 LEVELS=64 OUT=docs/images/formula-sheet.png bench/formula_sheet.sh   (the docs')
+#   SIZE=128x96 LEVELS=40 OUT=docs/images/formula-sheet.png bench/formula_sheet.sh   (the docs')
 #
 # Needs python3 (standard library only) to tile the PNGs.
 set -euo pipefail

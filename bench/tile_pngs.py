@@ -1,8 +1,8 @@
 #!/usr/bin/env python3
 """Tiles 8-bit RGB PNGs (fgr's renders) into one, COLUMNS to a row: tile_pngs.py COLUMNS OUT IN...
 
-With --levels=N first (2 to 256), each channel keeps N levels: 64 makes a sheet for the docs
-about two thirds the size, with no step visible at thumbnail size.
+With --levels=N first (2 to 256), each channel keeps N levels: 40 makes a sheet for the docs
+about 60% the size, with only a faint banding of the background at thumbnail size.
 
 Standard library only (png_io.py): reads the non-interlaced 8-bit RGB PNGs fgr writes."""
 import os
