@@ -1,9 +1,11 @@
 #!/usr/bin/env bash
 # The formula library's contact sheet: every formula scene fgr ships (plugins/formulas/, the
 # formulas alone, then the hybrids) rendered small from its default view, tiled six to a row into
-# bench/results/formula_sheet.png, and the order printed (README "Formula library and hybrids").
+# bench/results/formula_sheet.png (or OUT), and the order printed (README "Formula library and
+# hybrids"). LEVELS=N keeps N levels a channel (tile_pngs.py --levels): a smaller file.
 #
 #   bench/formula_sheet.sh            (SIZE=200x150 by default)
+#   SIZE=128x96 LEVELS=40 OUT=docs/images/formula-sheet.png bench/formula_sheet.sh   (the docs')
 #
 # Needs python3 (standard library only) to tile the PNGs.
 set -euo pipefail
@@ -32,7 +34,8 @@ for id in "${alone[@]}" "${hybrids[@]}"; do
     "$fgr" render "$id" --width "$width" --height "$height" -o "$tmp/$id.png" > /dev/null
     images+=("$tmp/$id.png")
 done
-mkdir -p "$repo/bench/results"
-python3 "$script_dir/tile_pngs.py" 6 "$repo/bench/results/formula_sheet.png" "${images[@]}"
-echo "wrote bench/results/formula_sheet.png, six a row:"
+out=${OUT:-$repo/bench/results/formula_sheet.png}
+mkdir -p "$(dirname "$out")"
+python3 "$script_dir/tile_pngs.py" --levels="${LEVELS:-256}" 6 "$out" "${images[@]}"
+echo "wrote $out, six a row:"
 printf '%s\n' "${alone[@]}" "${hybrids[@]}" | paste -d' ' - - - - - -

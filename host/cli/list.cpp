@@ -112,6 +112,7 @@ void print_scene(const Scene& scene) {
     }
     fmt::print("  parameters:\n");
     for (const auto& param : scene.params) {
+        if (!param_applies(scene, param)) continue;
         fmt::print("    {:<20} {:<7} {:<30} default {:<16} {} ({})\n", param.id,
                    param_type_name(param.type), range_text(param), default_text(param), param.label,
                    param.group);

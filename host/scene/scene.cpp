@@ -280,6 +280,20 @@ bool is_march_builtin_id(std::string_view id) {
     return false;
 }
 
+bool param_applies(const Scene& scene, const ParamInfo& param) {
+    if (!param.builtin) return true;
+    const std::string_view id = param.id;
+    // What marching a distance estimator reads, and the normal's finite differences.
+    const bool marching = id == "step_factor" || id == "over_relaxation" || id == "normal_epsilon";
+    if (scene.ifs != nullptr) {
+        // The tracer reads max_steps (its node budget), max_distance and hit_threshold; there is
+        // no brute-force mode for maps.
+        return !marching && id != "iterations" && !id.starts_with("brute_");
+    }
+    if (scene.inside_only()) return !marching && id != "max_steps";
+    return true;
+}
+
 void set_scene_scale(Scene& scene, float scale) {
     scene.scale = scale;
     Scene unit;

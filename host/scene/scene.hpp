@@ -119,6 +119,13 @@ void set_scene_scale(Scene& scene, float scale);
 // The built-ins whose defaults are the scene's march settings: a scene gives them there.
 bool is_march_builtin_id(std::string_view id);
 
+// Whether some mode the scene offers reads the parameter, so a list or a panel shows it. A scene's
+// own parameters always apply; of the built-ins, an IFS scene (traced exactly, shaded and path
+// modes) reads no DE iterations, step_factor, over_relaxation, normal_epsilon nor brute-force
+// settings, and an inside-only scene (brute force alone) no max_steps, step_factor,
+// over_relaxation nor normal_epsilon.
+bool param_applies(const Scene& scene, const ParamInfo& param);
+
 // Whether `id` names one of those built-in parameters (a scene may not declare it).
 bool is_builtin_param_id(std::string_view id);
 

@@ -1,6 +1,7 @@
 #pragma once
 // Scripted input for the viewer (`fgr view --replay FILE`): a text file of timed events that the
-// viewer feeds through the same handlers as real input, for tests and demos.
+// viewer feeds through the same handlers as real input, for tests and demos. A user-facing format:
+// docs/file-formats.md ("Viewer scripts") documents it; keep the two in step.
 //
 // One event a line: DELAY EVENT [ARGS...], DELAY being seconds after the previous event (after
 // the start for the first). Blank lines and lines starting with '#' are ignored.

@@ -14,6 +14,7 @@
 #include "render/sample_budget.hpp"
 #include "scene/parameters.hpp"
 #include "scene/render_mode.hpp"
+#include "scene/scene.hpp"
 #include "viewer/viewer_util.hpp"
 
 namespace fgr::viewer {
@@ -337,20 +338,25 @@ void ViewerPanel::draw_params_section() {
     const std::vector<int> offsets = param_offsets(current);
     std::vector<std::string> groups;  // in order of first appearance
     for (const ParamInfo& param : current.params) {
+        if (!param_applies(current, param)) continue;
         if (std::find(groups.begin(), groups.end(), param.group) == groups.end()) {
             groups.push_back(param.group);
         }
     }
     for (const std::string& group : groups) {
         const bool open_by_default = group != "Effects";
-        const std::string header = group.empty() ? "Parameters" : group;
+        // The built-in "Effects" group holds the effects' settings; the switches that compile
+        // them in have the "Effects" header of their own (draw_effects_section).
+        const std::string header = group.empty()        ? "Parameters"
+                                   : group == "Effects" ? "Effect settings"
+                                                        : group;
         if (!ImGui::CollapsingHeader(header.c_str(),
                                      open_by_default ? ImGuiTreeNodeFlags_DefaultOpen : 0)) {
             continue;
         }
         for (size_t i = 0; i < current.params.size(); ++i) {
             const ParamInfo& param = current.params[i];
-            if (param.group != group) continue;
+            if (param.group != group || !param_applies(current, param)) continue;
             ImGui::PushID(param.id.c_str());
             edit_param(param, &scenes_.session().params[static_cast<size_t>(offsets[i])]);
             ImGui::PopID();
@@ -362,7 +368,7 @@ void ViewerPanel::draw_params_section() {
 }
 
 void ViewerPanel::draw_effects_section(const WorkerStatus& status) {
-    if (!ImGui::CollapsingHeader("Effects (compiled in)", ImGuiTreeNodeFlags_DefaultOpen)) return;
+    if (!ImGui::CollapsingHeader("Effects", ImGuiTreeNodeFlags_DefaultOpen)) return;
     uint64_t& effects = scenes_.session().effects;
     // An IFS scene offers only the effects exact tracing supports (kIfsEffects).
     const uint64_t offered = FGR_EFFECT_ALL_V1 & supported_effects(scenes_.current());

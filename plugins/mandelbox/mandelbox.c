@@ -15,13 +15,15 @@ static const fgr_param_desc params[] = {
                     "sphere fold inverts in the sphere of this radius"),
     FGR_FLOAT_PARAM("bailout", "Bailout", "Fractal", 10.0f, 100000.0f, 10000.0f,
                     "escape radius; large keeps the DE continuous where the escape count changes"),
-    FGR_COLOUR_PARAMS(0, 1, 1.0f, 0.97f, 0.92f),
+    /* Coloured by the steps an orbit took, in ember: the point trap's rings wallpapered the
+     * faces and hid their carving. */
+    FGR_COLOUR_PARAMS(3, 0, 1.0f, 0.97f, 0.92f),
 };
 
-/* At scale 2 the set fills the cube [-6, 6]^3 (corner radius 10.4): the default view frames the
- * whole cube, the others look into its carved faces. */
+/* At scale 2 the set fills the cube [-6, 6]^3 (corner radius 10.4) and its faces bulge past it:
+ * the default view frames the whole cube with a margin, the others look into its carved faces. */
 static const fgr_camera cameras[] = {
-    FGR_CAMERA_Z_UP("front", 16.0f, -19.0f, 11.5f, 0.0f, 0.0f, 0.0f, 50.0f),
+    FGR_CAMERA_Z_UP("front", 21.0f, -24.9f, 15.1f, 0.0f, 0.0f, 0.0f, 50.0f),
     FGR_CAMERA_Z_UP("face", 2.0f, -13.0f, 2.5f, 0.0f, -6.0f, 0.0f, 60.0f),
     FGR_CAMERA_Z_UP("corner", 9.0f, -9.0f, 9.0f, 5.0f, -5.0f, 5.0f, 55.0f),
 };

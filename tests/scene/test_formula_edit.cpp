@@ -54,9 +54,10 @@ TEST(FormulaEdit, AddingAFormulaMakesAHybridWithPrefixedParameters) {
     EXPECT_EQ(hybrid.march.step_factor, std::min(bulb.march.step_factor, box.step_factor));
     EXPECT_EQ(hybrid.iterations, std::max(bulb.iterations, box.iterations));
     EXPECT_EQ(hybrid.distance, FormulaDistance::Logarithmic) << "the bulb's growth wins";
-    const Formula& quaternion = library("quaternion");
-    ASSERT_LT(quaternion.step_factor, bulb.march.step_factor);
-    EXPECT_EQ(with_formula_added(bulb, quaternion).march.step_factor, quaternion.step_factor)
+    const FormulaScene quaternion = shipped_formula("quaternion");
+    const Formula& careful = library("mandelbulb");
+    ASSERT_LT(careful.step_factor, quaternion.march.step_factor);
+    EXPECT_EQ(with_formula_added(quaternion, careful).march.step_factor, careful.step_factor)
         << "the march is as careful as its most careful formula";
 
     const Scene scene = formula_scene_to_scene(hybrid, "edited.formula.json");
@@ -159,8 +160,7 @@ TEST(FormulaEdit, TheUsersValuesTravelWithTheirSlots) {
     EXPECT_EQ(param_value(after, carried, "bailout"), 3.5f);
     EXPECT_EQ(param_value(after, carried, "max_steps"), 100.0f);
     const std::string box_param = "f1_" + library("amazing_box").params[0].id;
-    EXPECT_EQ(param_value(after, carried, box_param),
-              library("amazing_box").params[0].default_value[0])
+    EXPECT_EQ(param_value(after, carried, box_param), hybrid.sequence[1].values[0][0])
         << "the box's slot took the bulb's old place, not its values";
 }
 

@@ -18,7 +18,9 @@
 #include "fgr/scene_helpers.h"
 #include "render/renderer.hpp"
 #include "scene/description_validation.hpp"
+#include "scene/ifs/ifs.hpp"
 #include "scene/parameters.hpp"
+#include "scene/scene.hpp"
 #include "test_scenes.hpp"
 
 namespace fgr {
@@ -175,6 +177,52 @@ TEST(SceneTuning, KifsScenesDoNotOfferIterations) {
         set_param_from_text(scene, values, "colour_mode=iterations");
         EXPECT_EQ(param_value(scene, values, "colour_mode"), 3.0f) << file;
     }
+}
+
+// The built-ins `fgr list SCENE` and the viewer's panel show: those some mode of the scene's kind
+// reads. Pure host: no kernel is built.
+std::vector<std::string> applying_builtins(const Scene& scene) {
+    std::vector<std::string> ids;
+    for (const ParamInfo& param : scene.params) {
+        if (param.builtin && param_applies(scene, param)) ids.push_back(param.id);
+    }
+    return ids;
+}
+
+bool lists(const std::vector<std::string>& ids, const char* id) {
+    return std::find(ids.begin(), ids.end(), id) != ids.end();
+}
+
+TEST(SceneTuning, EachKindOfSceneListsTheBuiltInsItsModesRead) {
+    Scene de;
+    de.source = "real scene_de(vec3 p, PARAMS) { return v3_length(p) - 1.0f; }\n";
+    add_builtin_params(de);
+    const std::vector<std::string> all = applying_builtins(de);
+    EXPECT_EQ(all.size(), builtin_param_count()) << "a DE scene offers every mode";
+
+    Scene ifs = de;
+    ifs.ifs = std::make_shared<IfsScene>();
+    const std::vector<std::string> traced = applying_builtins(ifs);
+    for (const char* march : {"iterations", "step_factor", "over_relaxation", "normal_epsilon",
+                              "brute_samples", "brute_solid"}) {
+        EXPECT_FALSE(lists(traced, march)) << "an IFS scene lists " << march;
+    }
+    for (const char* read : {"max_steps", "max_distance", "hit_threshold", "exposure"}) {
+        EXPECT_TRUE(lists(traced, read)) << "an IFS scene does not list " << read;
+    }
+
+    Scene inside = de;
+    inside.source = "#define FGR_SCENE_INSIDE_ONLY\n" + de.source;
+    const std::vector<std::string> brute = applying_builtins(inside);
+    for (const char* march : {"max_steps", "step_factor", "over_relaxation", "normal_epsilon"}) {
+        EXPECT_FALSE(lists(brute, march)) << "an inside-only scene lists " << march;
+    }
+    for (const char* read : {"iterations", "hit_threshold", "max_distance", "brute_samples"}) {
+        EXPECT_TRUE(lists(brute, read)) << "an inside-only scene does not list " << read;
+    }
+    ParamInfo own;
+    own.id = "step_factor_of_its_own";
+    EXPECT_TRUE(param_applies(ifs, own)) << "a scene's own parameters always apply";
 }
 
 // A value a rebuilt scene no longer offers falls back to its default when the viewer reloads it.

@@ -77,12 +77,15 @@ Formula variant(Formula base, const char* name, const char* title, std::vector<s
     return base;
 }
 
-// Bulbs: polynomial steps, logarithmic distance; the DE overestimates a little (0.8 steps).
+// Bulbs: polynomial steps, logarithmic distance; the DE overestimates a little. 0.8 steps are
+// enough for the camera rays, but soft shadow rays, which march out of the creases, overshot into
+// the surface at 0.8 and 0.7 and speckled the bulbs with black pixels: 0.6 does not.
 Formula bulb(Formula f, int iterations = 10, float bailout = 4.0f) {
     f.iterations = iterations;
     f.bailout = bailout;
     f.max_bailout = 64.0f;  // r^16 of the largest power stays a float
-    f.step_factor = 0.8f;
+    f.step_factor = 0.6f;
+    f.palette = 0;  // ember: the bulbs' warm relief
     f.max_distance = 10.0f;
     f.view = view(2.0, -2.2, 1.2, 0.0, 0.0, 0.0, 50.0f);
     return f;
@@ -111,13 +114,25 @@ Formula inside_only(Formula f) {
     return f;
 }
 
+// Boxes: the whole box in view from a corner (`distance` about 1.9 times its half size, as far
+// again as its corner), 24 steps so that the folds carve its faces (at 12 they are nearly flat),
+// coloured by the steps an orbit took (the point trap's rings wallpapered the faces).
 Formula box(Formula f, double distance = 9.0) {
-    f.iterations = 12;
+    f.iterations = 24;
+    f.colour_mode = 3;  // iterations
+    f.palette = 0;      // ember
     f.bailout = 10000.0f;
     f.max_bailout = 1e6f;
     f.step_factor = 1.0f;
     f.max_distance = 40.0f;
     f.view = view(distance, -distance * 1.15, distance * 0.7, 0.0, 0.0, 0.0, 50.0f);
+    return f;
+}
+
+// Box Julia sets and the Amazing Box: nearly every orbit takes all the steps, so the steps colour
+// them one flat shade; the point trap draws ornaments on their faces instead.
+Formula ornamented(Formula f) {
+    f.colour_mode = 0;  // point
     return f;
 }
 
@@ -200,7 +215,7 @@ std::vector<Formula> build_library() {
          scalar("shift_s", "Shift s", -3.14159f, 3.14159f, 0.0f, "the fold's phase along s"),
          scalar("shift_t", "Shift t", -3.14159f, 3.14159f, 0.0f, "the fold's phase along t")})));
     riemann.bailout = 10.0f;
-    riemann.view = view(4.0, -4.6, 2.8, 0.0, 0.0, 0.0, 50.0f);
+    riemann.view = view(2.6, -3.0, 1.8, 0.0, 0.0, 0.0, 50.0f);
     all.push_back(riemann);
     // --- hypercomplex ---
     const Formula quaternion_plain = low_power(
@@ -209,7 +224,8 @@ std::vector<Formula> build_library() {
                      "Hart, Sandin and Kauffman, SIGGRAPH 1989", D::Logarithmic, {}),
              12));
     // the quaternions' squares are not conformal: `fgr check` measured 1.3x overestimates
-    const Formula quaternion_base = stepping(quaternion_plain, 0.7f);
+    Formula quaternion_base = stepping(quaternion_plain, 0.7f);
+    quaternion_base.palette = 1;  // ocean: the hypercomplex shells cool beside the warm bulbs
     all.push_back(quaternion_base);
     Formula quaternion_julia = variant(quaternion_base, "quaternion_julia", "Quaternion Julia",
                                        {"hypercomplex", "quaternion", "julia"},
@@ -247,6 +263,7 @@ std::vector<Formula> build_library() {
                 "Dominic Rochon, 2000, in Corrado Segre's bicomplex numbers (1892)", D::Own, {}),
         12)));
     tetrabrot.distance_reiterates = true;
+    tetrabrot.palette = 1;  // ocean, as the other hypercomplex sets
     tetrabrot.view = view(1.4, -2.6, 1.6, -0.6, 0.0, 0.0, 50.0f);
     all.push_back(tetrabrot);
     Formula bicomplex_julia = variant(tetrabrot, "bicomplex_julia", "Bicomplex Julia",
@@ -267,33 +284,42 @@ std::vector<Formula> build_library() {
     all.push_back(box(formula("mandelbox", "Mandelbox", "boxes", {"box", "folding"},
                               "scale * sphere_fold(box_fold(z)) + c",
                               "Tom Lowe, fractalforums.com 2010", D::Linear, mandelbox_params),
-                      16.0));
+                      22.0));
     std::vector<FormulaParam> julia_box = mandelbox_params;
     julia_box.push_back(julia(1.0f, 1.0f, 1.0f));
-    all.push_back(
-        box(formula("mandelbox_julia", "Mandelbox Julia", "boxes", {"box", "folding", "julia"},
-                    "the Mandelbox's step with a fixed constant", "after Tom Lowe, 2010", D::Linear,
-                    julia_box)));
+    all.push_back(stepping(ornamented(box(formula("mandelbox_julia", "Mandelbox Julia", "boxes",
+                                                  {"box", "folding", "julia"},
+                                                  "the Mandelbox's step with a fixed constant",
+                                                  "after Tom Lowe, 2010", D::Linear, julia_box),
+                                          13.0)),
+                           0.9f));
+    // Scale -1.5, as Mandelbulber 2's Amazing Box examples have it (-1.5 to -1.8): a box half the
+    // size of scale 2's, its faces carved deeper, the turn breaking their symmetry.
+    std::vector<FormulaParam> amazing_params = mandelbox_params;
+    amazing_params[0].default_value.fill(-1.5f);
     Formula amazing =
         box(formula("amazing_box", "Amazing Box", "boxes", {"box", "folding", "rotation"},
                     "the Mandelbox with a turn after the folds",
                     "Tglad's Amazing Box, fractalforums.com 2010 (Mandelbulber 2)", D::Linear,
-                    mandelbox_params),
-            16.0);
+                    amazing_params),
+            7.0);
+    amazing = stepping(ornamented(amazing), 0.75f);
     add_rotation(amazing, 0.3f, 0.4f, 1.0f, 12.0f);
     all.push_back(amazing);
-    Formula surf = box(
-        formula(
-            "amazing_surf", "Amazing Surf", "boxes", {"box", "folding", "surface", "rotation"},
-            "box fold on x and y only, sphere fold, scale: a surface along z",
-            "Kali and M. Benesi, fractalforums.com 2011 (Mandelbulber 2)", D::Linear,
-            {scalar("scale", "Scale", -3.0f, 3.0f, 1.8f, "the step's scale (|scale| at least 1.2)"),
-             vector("fold", "Fold", 0.0f, 2.0f, 1.0f, 1.0f, 0.0f,
-                    "the box fold's limits on x and y (z is not folded)"),
-             scalar("min_radius", "Min radius", 0.1f, 1.0f, 0.5f, "the sphere fold's inner radius"),
-             scalar("c_scale", "c scale", 0.0f, 2.0f, 1.0f, "how much of the point is added")}),
-        6.0);
-    add_rotation(surf, 0.0f, 0.0f, 1.0f, 0.0f);
+    Formula surf = box(formula(
+        "amazing_surf", "Amazing Surf", "boxes", {"box", "folding", "surface", "rotation"},
+        "box fold on x and y only, sphere fold, scale: a surface along z",
+        "Kali and M. Benesi, fractalforums.com 2011 (Mandelbulber 2)", D::Linear,
+        {scalar("scale", "Scale", -3.0f, 3.0f, 1.8f, "the step's scale (|scale| at least 1.2)"),
+         vector("fold", "Fold", 0.0f, 2.0f, 1.0f, 1.0f, 0.0f,
+                "the box fold's limits on x and y (z is not folded)"),
+         scalar("min_radius", "Min radius", 0.1f, 1.0f, 0.5f, "the sphere fold's inner radius"),
+         scalar("c_scale", "c scale", 0.0f, 2.0f, 1.0f, "how much of the point is added")}));
+    // Unturned, the surface is a flat slab: a turn about a tilted axis lifts its pattern into
+    // relief, seen obliquely from near it, as Mandelbulber 2's Amazing Surf examples look.
+    add_rotation(surf, 1.0f, 0.5f, 0.0f, 25.0f);
+    surf.view = view(3.0, -4.0, 2.5, 0.0, 0.0, 0.0, 50.0f);
+    surf = stepping(surf, 0.75f);
     all.push_back(surf);
     all.push_back(box(
         formula(
@@ -305,19 +331,22 @@ std::vector<Formula> build_library() {
              scalar("min_radius", "Min radius", 0.1f, 1.5f, 0.5f, "the sphere fold's inner radius"),
              scalar("fixed_radius", "Fixed radius", 0.5f, 1.5f, 1.0f,
                     "the sphere fold's outer radius")}),
-        16.0));
-    all.push_back(box(
-        formula(
-            "abox_julia", "ABox Julia", "boxes", {"box", "folding", "julia"},
-            "the ABox's step with a fixed constant",
-            "after Tglad's box fold (Mandelbulber 2's ABox Mod)", D::Linear,
-            {scalar("scale", "Scale", -3.0f, 3.0f, 2.0f, "the step's scale (|scale| at least 1.2)"),
-             vector("limits", "Folding limits", 0.5f, 1.5f, 1.0f, 1.0f, 1.3f, "per-axis box fold"),
-             scalar("min_radius", "Min radius", 0.1f, 1.5f, 0.5f, "the sphere fold's inner radius"),
-             scalar("fixed_radius", "Fixed radius", 0.5f, 1.5f, 1.0f,
-                    "the sphere fold's outer radius"),
-             julia(1.0f, 1.0f, 1.0f)}),
-        9.0));
+        22.0));
+    all.push_back(stepping(
+        ornamented(box(formula("abox_julia", "ABox Julia", "boxes", {"box", "folding", "julia"},
+                               "the ABox's step with a fixed constant",
+                               "after Tglad's box fold (Mandelbulber 2's ABox Mod)", D::Linear,
+                               {scalar("scale", "Scale", -3.0f, 3.0f, 2.0f,
+                                       "the step's scale (|scale| at least 1.2)"),
+                                vector("limits", "Folding limits", 0.5f, 1.5f, 1.0f, 1.0f, 1.3f,
+                                       "per-axis box fold"),
+                                scalar("min_radius", "Min radius", 0.1f, 1.5f, 0.5f,
+                                       "the sphere fold's inner radius"),
+                                scalar("fixed_radius", "Fixed radius", 0.5f, 1.5f, 1.0f,
+                                       "the sphere fold's outer radius"),
+                                julia(1.0f, 1.0f, 1.0f)}),
+                       13.0)),
+        0.9f));
     std::vector<FormulaParam> amazing_julia_params = mandelbox_params;
     amazing_julia_params.push_back(julia(1.0f, 0.6f, 0.8f));
     Formula amazing_julia = box(formula("amazing_box_julia", "Amazing Box Julia", "boxes",
@@ -325,7 +354,8 @@ std::vector<Formula> build_library() {
                                         "the Amazing Box's step with a fixed constant",
                                         "after Tglad's Amazing Box, fractalforums.com 2010",
                                         D::Linear, amazing_julia_params),
-                                9.0);
+                                13.0);
+    amazing_julia = stepping(ornamented(amazing_julia), 0.9f);
     add_rotation(amazing_julia, 0.3f, 0.4f, 1.0f, 12.0f);
     all.push_back(amazing_julia);
     // --- kaleidoscopic IFS ---
@@ -400,7 +430,8 @@ std::vector<Formula> build_library() {
     apollonian.bailout = 1e10f;
     apollonian.max_bailout = 1e10f;
     apollonian.max_distance = 6.0f;
-    apollonian.view = view(2.2, -2.8, 1.7, 0.0, 0.0, 0.0, 50.0f);
+    // Near the cell, into its spheres (from further out, its cut faces hid them).
+    apollonian.view = view(1.2, -1.5, 0.9, 0.0, 0.0, 0.0, 50.0f);
     all.push_back(apollonian);
     Formula jos = inside_only(formula(
         "jos_kleinian", "Jos Leys' Kleinian", "kleinian", {"kleinian", "inversion", "mandelbulber"},

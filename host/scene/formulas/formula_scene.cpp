@@ -243,8 +243,11 @@ Scene formula_scene_to_scene(const FormulaScene& formula_scene, const std::files
     bailout.max_value = formula_scene.max_bailout;
     bailout.default_value.fill(formula_scene.bailout);
     scene.params.push_back(bailout);
-    // The orbit-trap colouring's parameters, as FGR_COLOUR_PARAMS gives a plugin.
-    const fgr_param_desc colour[] = {FGR_COLOUR_PARAMS(0, 1, 1.0f, 0.96f, 0.9f)};
+    // The orbit-trap colouring's parameters, as FGR_COLOUR_PARAMS gives a plugin, starting as
+    // the first formula's scene does (as its view does).
+    const Formula& first = *formula_scene.sequence.front().formula;
+    const fgr_param_desc colour[] = {
+        FGR_COLOUR_PARAMS(first.colour_mode, first.palette, 1.0f, 0.96f, 0.9f)};
     for (ParamInfo& param : copy_param_descriptions(colour)) scene.params.push_back(param);
     add_builtin_params(scene);
     return scene;

@@ -79,6 +79,10 @@ struct Formula {
     float step_factor = 1.0f;
     float max_distance = 10.0f;
     CameraView view;
+    // How its scene is coloured at first: the colour_mode and palette enums' indices
+    // (point|planes|axes|iterations, ember|ocean|forest|pastel|mono).
+    int colour_mode = 0;
+    int palette = 1;
 };
 
 // "analytic", "delta" or "inside", as scene files spell it.
