@@ -1,4 +1,5 @@
 #!/usr/bin/env bash
+# SPDX-License-Identifier: Apache-2.0
 # Sets up, builds and runs fgr on Debian 12. The two commands the README gives:
 #
 #   ./build.sh render   install what building fgr needs, build fgr and the built-in scenes (no

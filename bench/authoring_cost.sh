@@ -1,4 +1,5 @@
 #!/usr/bin/env bash
+# SPDX-License-Identifier: Apache-2.0
 # What the iterate-function contract (kernels/fractals/fgr_iterate.cl) costs (docs/performance.md): each SDK
 # example written with it (sdk/examples/icosahedral-kifs, pseudo-kleinian) against the same maths
 # written out by hand in packet form (bench/authoring/*_packet.cl, timed through `fgr bench

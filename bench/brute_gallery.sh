@@ -1,4 +1,5 @@
 #!/usr/bin/env bash
+# SPDX-License-Identifier: Apache-2.0
 # The brute-force gallery and cost figures (docs/user-guide/brute-force.md): the inside-only scenes (no distance estimator:
 # stereographic-julia, bristorbrot) from two cameras each, and two DE scenes rendered from the sign of
 # their DE, all at 360x270 with 64 passes; then the convergence sweep of the Mandelbulb's depth

@@ -1,4 +1,5 @@
 #!/usr/bin/env python3
+# SPDX-License-Identifier: Apache-2.0
 """fgr's formula library against Mandelbulber 2: the hit silhouettes and the times.
 
     bench/compare_formulas_mandelbulber.py [--size WxH] [--rounds N] [--fixtures] [ID ...]

@@ -1,4 +1,5 @@
 #!/usr/bin/env bash
+# SPDX-License-Identifier: Apache-2.0
 # Compares fgr with Mandelbulber 2 (Debian's mandelbulber2, installed if missing) on one view:
 # camera (2, -2, 1) looking at the origin, up +z, vertical field of view 53.13 degrees (Mandelbulber's
 # fov 1; fgr takes the horizontal 67.38 degrees through a camera path file), 640x480, the

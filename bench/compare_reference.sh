@@ -1,4 +1,5 @@
 #!/usr/bin/env bash
+# SPDX-License-Identifier: Apache-2.0
 # Compares fgr with the scalar C++ reference renderer on the canonical Mandelbulb view.
 #
 #   bench/compare_reference.sh

@@ -1,4 +1,5 @@
 #!/usr/bin/env bash
+# SPDX-License-Identifier: Apache-2.0
 # Renders a deep zoom into the Mandelbulb in float and in double, side by side: a view 1e-7
 # units across, 2e-6 in front of the surface where the canonical view's central ray meets it
 # (bench/deep_zoom.json; the surface point comes from a double-precision march down to 1e-12).

@@ -1,4 +1,5 @@
 #!/usr/bin/env bash
+# SPDX-License-Identifier: Apache-2.0
 # What each effect costs: renders each scene's default view at 640x480 with no effects, with each
 # effect alone, and with all of them, alternately round by round (so machine noise hits every
 # configuration alike), and prints each configuration's best render_ms and its ratio to no effects

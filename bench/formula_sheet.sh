@@ -1,4 +1,5 @@
 #!/usr/bin/env bash
+# SPDX-License-Identifier: Apache-2.0
 # The formula library's contact sheet: every formula scene fgr ships (plugins/formulas/, the
 # formulas alone, then the hybrids) rendered small from its default view, tiled six to a row into
 # bench/results/formula_sheet.png (or OUT), and the order printed (README "Formula library and

@@ -1,4 +1,5 @@
 #!/usr/bin/env bash
+# SPDX-License-Identifier: Apache-2.0
 # The gigapixel benchmark (docs/user-guide/gigapixel.md): the Menger sponge at
 # 4000x3000 (tiled), 16000x12000 and 40000x30000, each as a streamed PNG, with its wall time and
 # peak memory (GNU time's maximum resident set size and fgr's own peak_memory_mib).

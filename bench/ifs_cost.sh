@@ -1,4 +1,5 @@
 #!/usr/bin/env bash
+# SPDX-License-Identifier: Apache-2.0
 # What exact IFS tracing costs as detail grows (docs/user-guide/ifs.md): each shipped IFS scene's default
 # view at 320x240 (shaded mode, default shadows), at every depth the slider allows, rendered three
 # times (the fastest counts): rays per second and nodes visited per pixel (fgr render --stats).

@@ -1,4 +1,5 @@
 #!/usr/bin/env bash
+# SPDX-License-Identifier: Apache-2.0
 # The IFS gallery (docs/user-guide/ifs.md): the six shipped IFS scenes (plugins/ifs/) from their default cameras at
 # 300x225, shaded with shadows and 4 samples per pixel, and the Menger sponge path traced under
 # the sky (256 samples per pixel). Run from the repository root after ./build.sh.

@@ -1,4 +1,5 @@
 #!/usr/bin/env bash
+# SPDX-License-Identifier: Apache-2.0
 # Speed-up of `mpirun -np 2 fgr ...` over one process on a 2-core machine, each rank on one core
 # (PoCL limited to one thread, ranks bound to cores), for a shaded still, a path-traced still and
 # a short video; and what rank 0 exchanged per tile or frame. Runs A/B alternating, best of

@@ -1,4 +1,5 @@
 #!/usr/bin/env bash
+# SPDX-License-Identifier: Apache-2.0
 # Why fgr marches packets of rays on CPUs: renders the canonical Mandelbulb view at each packet
 # width (rays per work-item) alternately, ROUNDS times, and prints the best render_ms of each and
 # its speedup over one ray per work-item (the layout a GPU uses).

@@ -1,4 +1,5 @@
 #!/usr/bin/env bash
+# SPDX-License-Identifier: Apache-2.0
 # The path tracer's convergence plot (docs/user-guide/render-modes.md): RMS error against a 4096-spp render of the
 # Mandelbulb in the studio (16x16, four bounces) at 4 to 256 samples per pixel, with independent
 # and with stratified samples, as tests/render/test_path_tracer.cpp's ErrorFallsAsOneOverRootSamples

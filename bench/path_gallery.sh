@@ -1,4 +1,5 @@
 #!/usr/bin/env bash
+# SPDX-License-Identifier: Apache-2.0
 # The path-traced gallery (docs/user-guide/render-modes.md): the bulb-stage scene under the default sky and in the
 # studio, and the Mandelbulb's canonical view under the sky, 256 samples per pixel each, plus the
 # studio environment fgr generates, written as .hdr and used from the file (so the IBL path from

@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: Apache-2.0
 """Reading and writing the PNGs the bench scripts handle, with Python's standard library only
 (zlib, struct): non-interlaced 8- and 16-bit grey, RGB, grey+alpha and RGBA."""
 import struct

@@ -1,4 +1,5 @@
 #!/usr/bin/env bash
+# SPDX-License-Identifier: Apache-2.0
 # What the cone-marched depth prepass saves: renders every built-in scene's default view with
 # `--prepass off` and `--prepass on`, alternately, ROUNDS times, and prints per scene the best
 # render_ms of each, the DE evaluations per pixel (primary march, normals and the prepass's cones),

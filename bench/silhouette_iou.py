@@ -1,4 +1,5 @@
 #!/usr/bin/env python3
+# SPDX-License-Identifier: Apache-2.0
 """Hit silhouettes of two renders and how well they agree (fgr against Mandelbulber 2).
 
     silhouette_iou.py A.png B.png [--diff OUT.png]     prints "iou <value> a_only <n> b_only <n>"

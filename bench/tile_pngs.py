@@ -1,4 +1,5 @@
 #!/usr/bin/env python3
+# SPDX-License-Identifier: Apache-2.0
 """Tiles 8-bit RGB PNGs (fgr's renders) into one, COLUMNS to a row: tile_pngs.py COLUMNS OUT IN...
 
 With --levels=N first (2 to 256), each channel keeps N levels: 40 makes a sheet for the docs

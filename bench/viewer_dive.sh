@@ -1,4 +1,5 @@
 #!/usr/bin/env bash
+# SPDX-License-Identifier: Apache-2.0
 # How sharp the viewer's preview is while flying: plays the Mandelbulb's `dive` camera path in
 # `fgr view` at 1280x720 with the 33 ms target, scripted (bench/viewer/dive.replay: wait for the
 # refined default view, press P, quit just before the 8 s path ends), under Xvfb, ROUNDS times,

@@ -1,4 +1,5 @@
 #!/usr/bin/env bash
+# SPDX-License-Identifier: Apache-2.0
 # Screenshot of the viewer window (panel included) for the docs: runs `fgr view` in a virtual X
 # server, waits until it has refined the still view, and grabs the screen with ImageMagick.
 #

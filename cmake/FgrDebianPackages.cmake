@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: Apache-2.0
 # Debian packages (./build.sh package, docs/packages.md): CPack's DEB generator makes one package
 # per install component.
 #

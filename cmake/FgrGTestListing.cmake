@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: Apache-2.0
 # fgr_list_gtest_cases(OUT EXECUTABLE FILTER WORKING_DIRECTORY): OUT gets the GoogleTest cases
 # EXECUTABLE runs under FILTER ("*" for all), as "Suite.Case" in the binary's order, DISABLED_
 # cases left out. For cmake -P scripts (FgrGroupGTests.cmake, tests/tier_coverage.cmake).

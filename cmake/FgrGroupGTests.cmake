@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: Apache-2.0
 # Run at build time by fgr_add_grouped_gtests (FgrGroupedTests.cmake), with cmake -P:
 #   TEST_EXECUTABLE, TEST_FILTER   the GoogleTest binary and the cases it selects
 #   GROUP_SIZE                     the most cases a ctest test runs

@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: Apache-2.0
 # fgr_add_grouped_gtests(TARGET NAME name FILTER filter GROUP_SIZE n
 #                        [TIMEOUT seconds] [LABELS label...] [ENVIRONMENT VAR=value...])
 #

@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: Apache-2.0
 # fgr_host_library(NAME [OPENCL] SOURCE...): one concept of the host, host/<concept>/, as a static
 # library; OPENCL when it uses the OpenCL C++ bindings (they are precompiled with its headers).
 # Its headers sit beside its sources and are included from host/ as "<concept>/<file>.hpp"; what a

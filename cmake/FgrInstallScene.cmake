@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: Apache-2.0
 # cmake -DPLUGIN=file.so -DDESTINATION=dir -P FgrInstallScene.cmake: copies a scene plugin into a
 # plugin folder (the install-scene target of FgrScenePlugin.cmake). The copy is written under a
 # hidden temporary name in the folder, which fgr's scan skips (it loads *.so), and renamed over

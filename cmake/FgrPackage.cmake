@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: Apache-2.0
 # The CMake package scene authors build against: `find_package(fgr)` gives the target
 # fgr::plugin_api (the plugin ABI headers) and the function fgr_add_scene_plugin(). Installed
 # into <prefix>/<libdir>/cmake/fgr; the build tree gets the same files under the same relative

@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: Apache-2.0
 # fgr_add_scene_plugin(NAME SOURCES file.c... [CL_SOURCES file.cl...])
 #
 # Builds the scene plugin NAME.so: a shared library that exports only fgr_scene_entry. Each

@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: Apache-2.0
 # Writes INPUT's bytes into OUTPUT as `static const char VARIABLE[] = {...};` (NUL-terminated),
 # plus `static const char VARIABLE_path[]`, INPUT's absolute path. Hex bytes rather than a raw
 # string literal: no length limit and no delimiter clashes.

@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: Apache-2.0
 # cmake -DFGR=... -DMAN=... -DBASH=... -DZSH=... -DREFERENCE=... -DGZIP=... -P generated_docs.cmake
 # Writes what is generated from fgr's command-line definitions by the fgr just built: the man page
 # (and MAN.gz, compressed reproducibly, for the package: CPack's DEB does not compress it), the

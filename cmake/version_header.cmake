@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: Apache-2.0
 # cmake -DSOURCE_DIR=... -DOUTPUT=... -DVERSION=... -P version_header.cmake
 # Writes OUTPUT, the header host/util/version.cpp includes: fgr's version (the project's, from the
 # top CMakeLists.txt) and the commit the source tree is at (`git describe`: the abbreviated hash,

@@ -1,4 +1,5 @@
 #!/usr/bin/env python3
+# SPDX-License-Identifier: Apache-2.0
 """Stages the documentation site's source for `mkdocs build` (./build.sh docs runs it).
 
     docs/stage.py REPO OUT [--cli-reference FILE]

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 /* Compiles plugin.h as C11; the build fails if the header stops being valid C. */
 #include "fgr/plugin.h"
 

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 /* Default options of the AddressSanitizer, UndefinedBehaviorSanitizer and LeakSanitizer runtimes
  * for fgr's sanitizer build (FGR_SANITIZE). The runtimes look these functions up in the
  * executable at start-up. */

@@ -1,4 +1,5 @@
 #!/usr/bin/env bash
+# SPDX-License-Identifier: Apache-2.0
 # architecture_check.sh CONCEPTS HOST_DIR: the host's folders use only what their targets link.
 #
 # CONCEPTS (host_concepts.txt, written by host/CMakeLists.txt) has one line per host folder:

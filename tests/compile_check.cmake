@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: Apache-2.0
 # Compiles one source file and checks the outcome, for tests that a header refuses bad code at
 # compile time (ctest: cmake -P compile_check.cmake with the variables below).
 #   COMPILER   the compiler to run

@@ -1,4 +1,5 @@
 #!/usr/bin/env bash
+# SPDX-License-Identifier: Apache-2.0
 # The installed documentation stands on its own (ctest runs it):
 #   1. install fgr into a temporary prefix,
 #   2. every relative link of every installed markdown file (the SDK guide's pages in

@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: Apache-2.0
 # The host refuses a shared layout header edited on its own: a copy of kernels/shared with two of
 # camera_frame's fields traded must fail host/device/kernel_layout.hpp's static_asserts, and the
 # unchanged copy must compile (so the refusal is the edit's). The device's side of the same edit

@@ -1,4 +1,5 @@
 #!/usr/bin/env bash
+# SPDX-License-Identifier: Apache-2.0
 # The new-user path, as a user would walk it (ctest runs it; so does CI):
 #   1. install fgr into a temporary prefix,
 #   2. `fgr new-scene` a scene outside any source tree and build it against that prefix only

@@ -1,9 +1,11 @@
 #!/usr/bin/env bash
+# SPDX-License-Identifier: Apache-2.0
 # style_check.sh REPO: the style the tree keeps (.clang-format, ../shared/STYLE.md), checked so a
 # change that breaks it fails. Prints every offence and exits 1, or exits 0 when there is none:
 #   - C and C++ sources are as clang-format writes them (includes sorted, 100 columns);
 #   - no C, C++ or OpenCL C line is over 100 columns;
 #   - comments and user docs say why, not when: no "issue N" (git log keeps the history);
+#   - every source file carries its SPDX licence line;
 #   - OpenCL C stays 1.2, which every driver takes: no variadic macro (NVIDIA's compiler refuses
 #     them, where PoCL's newer Clang lets them pass).
 # Frozen copies of old ABI headers and kernel libraries are left as they were frozen, and the
@@ -39,6 +41,17 @@ if history=$(git grep -nE '\b[Ii]ssue [0-9]+' -- host kernels plugin_api plugins
     failures=$((failures + 1))
 fi
 
+# Every source file names its licence (SPDX), so a file copied out of the tree keeps it. The
+# frozen copies stay as they were frozen; the scene template becomes the author's own file.
+mapfile -t licensed < <(git ls-files '*.c' '*.h' '*.cpp' '*.hpp' '*.cl' '*.cmake' '*.sh' '*.py' \
+    '*.gp' '*.in' '*.supp' '*CMakeLists.txt' .ci/run | grep -Ev "$frozen")
+if unlicensed=$(grep -L 'SPDX-License-Identifier: Apache-2.0' "${licensed[@]}") &&
+    [[ -n $unlicensed ]]; then
+    echo "$unlicensed"
+    echo "no SPDX-License-Identifier line: add '// SPDX-License-Identifier: Apache-2.0' (or '#')"
+    failures=$((failures + 1))
+fi
+
 mapfile -t kernel_sources < <(git ls-files '*.cl' | grep -Ev "$frozen")
 if variadic=$(grep -nE '^[[:space:]]*#[[:space:]]*define[[:space:]]+[A-Za-z_0-9]+\([^)]*\.\.\.' \
     "${kernel_sources[@]}") && [[ -n $variadic ]]; then
@@ -48,4 +61,5 @@ if variadic=$(grep -nE '^[[:space:]]*#[[:space:]]*define[[:space:]]+[A-Za-z_0-9]
 fi
 
 ((failures == 0)) || exit 1
-echo "style: clang-format clean, no line over 100 columns, no issue numbers, no variadic macros"
+echo "style: clang-format clean, no line over 100 columns, no issue numbers, every source licensed,"
+echo "  no variadic macros"

@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: Apache-2.0
 # The ctest tests of this build run every GoogleTest case of TEST_EXECUTABLE exactly once: none is
 # lost between the tiers' filters and the grouping (cmake/FgrGroupedTests.cmake), none runs twice,
 # and no test names a case the binary does not have. Run with cmake -P:

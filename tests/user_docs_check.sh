@@ -1,4 +1,5 @@
 #!/usr/bin/env bash
+# SPDX-License-Identifier: Apache-2.0
 # user_docs_check.sh REPO: the text users read is written for them, not as a record of how it was
 # made: no issue numbers, no "the brief", no "lab notebook", no "this session" in the README, the
 # changes, the documentation site's pages, the SDK's guide and template, the ABI, the benchmark

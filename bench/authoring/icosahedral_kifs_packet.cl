@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 /* The SDK example sdk/examples/icosahedral-kifs written out by hand in packet form, as scenes were
  * before the iterate-function contract: the loop, the rotation matrix built once, the fold
  * spelled out, the scale factor kept as one float for all lanes. bench/authoring_cost.sh times the

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 /* The SDK example sdk/examples/pseudo-kleinian written out by hand in packet form, as scenes were
  * before the iterate-function contract: the loop, the box fold and the inversion spelled out
  * per coordinate. bench/authoring_cost.sh times the example against it (`fgr bench

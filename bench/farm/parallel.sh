@@ -1,4 +1,5 @@
 #!/usr/bin/env bash
+# SPDX-License-Identifier: Apache-2.0
 # Rendering over ssh with GNU parallel and fgr's split and merge: parallel hands the pieces to the
 # hosts as they free up (a slow host takes fewer), brings each piece's file back (--return),
 # deletes it there (--cleanup) and retries a failed piece (--retries); this machine then merges.

@@ -1,4 +1,5 @@
 #!/usr/bin/env bash
+# SPDX-License-Identifier: Apache-2.0
 # Rendering on a Slurm cluster with fgr's split and merge: one job array renders the pieces, a job
 # that depends on it (afterok: only once every piece succeeded) merges them. Nothing passes between
 # the nodes but files, so run it in a directory every node sees (the cluster's shared home or

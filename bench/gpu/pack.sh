@@ -1,4 +1,5 @@
 #!/usr/bin/env bash
+# SPDX-License-Identifier: Apache-2.0
 # Packs a built fgr into one folder that runs on another x86-64 Linux machine with nothing
 # installed: fgr, its scene plugins, the test executable, every shared library they need (the
 # OpenCL ICD loader libOpenCL.so.1 included) and glibc with its loader, so the kit also runs where

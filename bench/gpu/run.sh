@@ -1,4 +1,5 @@
 #!/usr/bin/env bash
+# SPDX-License-Identifier: Apache-2.0
 # fgr's GPU checks, run from a kit that bench/gpu/pack.sh made (pack.sh copies this script into
 # it): finds the NVIDIA OpenCL driver and points the kit's ICD loader at it (else OpenCL's own
 # vendors, e.g. PoCL, are used), then runs, each step under a time limit and whatever the last one

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #pragma once
 // Pinhole camera geometry: the orthonormal basis of a view, the primary ray through a pixel, and
 // smooth interpolation of a view along a keyframed camera path.

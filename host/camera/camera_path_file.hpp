@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #pragma once
 // Camera paths as JSON files: what the viewer records and saves, and what
 // `fgr render --camera-path FILE.json --time T` renders.

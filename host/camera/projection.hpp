@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #pragma once
 // Cameras beyond the pinhole: how image pixels map to rays. The kernel's camera
 // (kernels/modes/fgr_camera.cl: camera_view_point, primary_direction, camera_origin) does the same

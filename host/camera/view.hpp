@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #pragma once
 // Where a camera stands and looks: a view, a named one, and a path of keyframed views. Plain data
 // that scenes carry and every front end edits; camera.hpp turns a view into rays.

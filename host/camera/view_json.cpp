@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #include "camera/view_json.hpp"
 
 #include "camera/view_validation.hpp"

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #pragma once
 // Views in fgr's JSON files (camera path files, IFS and formula scene files): read and checked as
 // plugins' cameras are, and written so they read back exactly.

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #include "camera/view_override.hpp"
 
 #include <spdlog/fmt/fmt.h>

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #pragma once
 // A viewpoint typed on the command line (`--eye X,Y,Z --target X,Y,Z [--up X,Y,Z] [--fov DEG]`
 // of fgr render, view and bench): the texts parsed, and laid over a scene's camera.

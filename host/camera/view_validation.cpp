@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #include "camera/view_validation.hpp"
 
 #include <fmt/format.h>

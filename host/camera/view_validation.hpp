@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #pragma once
 // Whether a camera view can be rendered: the one check behind a plugin's cameras and keyframes
 // (description_validation.cpp), camera path files (camera_path_file.cpp) and every view a

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // fgr bench: the benchmark protocol along a camera path (the accuracy sweep, `fgr bench accuracy`,
 // is in bench_accuracy.cpp).
 #include <fmt/format.h>

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // fgr bench accuracy: the accuracy-for-time knobs swept against a reference render, with a plot.
 #include <fmt/format.h>
 #include <spdlog/spdlog.h>

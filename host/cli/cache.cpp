@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // fgr cache: the kernel cache directory's size (`fgr cache size`) and emptying it
 // (`fgr cache clear`). Programs and the math self-test's verdicts are its entries.
 #include <fmt/format.h>

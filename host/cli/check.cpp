@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // fgr check: the numerical checks of diagnostics/scene_check.hpp on one scene, given by id or as a
 // scene file, with a report a scene's author can act on; --compile only builds the kernel (what
 // the SDK template's build runs, so a typo in the .cl fails `cmake --build` with its file and

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // run_cli: registers every command's options, parses, runs the command given and turns what it
 // throws into a one-line error and an exit code.
 #include "cli.hpp"

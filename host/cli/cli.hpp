@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #pragma once
 // The `fgr` command line: list, info, render, video, view, new-scene, bench, cache. Returns the
 // process exit code: 0 on success, 2 for bad command-line input, 1 for failures while running.

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #pragma once
 // The `fgr` executable's commands, one file each (list.cpp, info.cpp, render.cpp, video.cpp,
 // merge.cpp, view.cpp, check.cpp, bench.cpp, bench_accuracy.cpp, new_scene.cpp, cache.cpp), and

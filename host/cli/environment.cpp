@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // fgr environment: writes one of the environment maps fgr generates (the studio, the daylight
 // sky) as an equirectangular .hdr or .exr file, to look at, edit, or light other renderers with.
 #include "render/environment.hpp"

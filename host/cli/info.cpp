@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // fgr info: the OpenCL devices, numbered for --device, and on request their math self-test; given
 // an image or view file, the view it carries; given a scene, the scene in full (as fgr list SCENE).
 #include <fmt/format.h>

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // fgr list: every scene found, a line each (id, kind, description); fgr list SCENE (and fgr info
 // SCENE): that scene in full, its parameters described, its cameras, camera paths and effects.
 #include <fmt/format.h>

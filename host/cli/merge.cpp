@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // fgr merge: parts rendered apart (fgr render --part, --tile I/N, --seed S; on a farm) joined into
 // one image file, or a directory of frames (fgr video --frames DIR --frame-range A:B, on many
 // machines) encoded into one video.

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // fgr new-scene: a scene plugin project from the SDK template, ready to build, or (--text) one text
 // scene file, ready to render.
 #include <fmt/format.h>

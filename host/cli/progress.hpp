@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #pragma once
 // A progress line for long work on stderr: "tiles 37/120 (31%) | 12.3 Mrays/s | ETA 1m23s",
 // redrawn in place on a terminal at most a few times a second, and as a plain line about every

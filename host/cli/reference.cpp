@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // The CLI reference, the man page, the completion scripts and `fgr --version`, generated from the
 // configured CLI::App tree (reference.hpp).
 #include "reference.hpp"

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #pragma once
 // What is generated from the command line's own definitions, so that it cannot drift from them:
 // the CLI reference of the docs site (markdown), the man page fgr(1) (roff), the bash and zsh

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // fgr render: one image of a scene to a PNG file, or every scene's default view (--all).
 #include <fmt/format.h>
 #include <fnmatch.h>  // POSIX: the shell's wildcards for --all's scene pattern

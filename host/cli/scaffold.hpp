@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #pragma once
 // `fgr new-scene`: a new scene plugin project from the SDK template (sdk/template, built into fgr
 // so it works from any install): a CMakeLists.txt that finds the installed fgr, a C file with the

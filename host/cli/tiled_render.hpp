@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #pragma once
 // fgr render in tiles: what makes a render tiled, and the tiled render itself (the progress
 // line, Ctrl-C, --resume), on top of output/tiled/tiled_still.hpp. Under mpirun the tiles are

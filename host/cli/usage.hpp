@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #pragma once
 // What the command line says about itself: the overview `fgr` alone prints, the help's headings
 // and defaults, and the one-line errors for a mistyped command or option, each offering the

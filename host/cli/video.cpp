@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // fgr video: a scene's camera path rendered frame by frame and encoded in-process (FFmpeg's
 // libraries) into a video file, and/or written as a PNG or EXR frame sequence. Frame i is
 // `fgr render --camera-path P --time t` at t = start + i / fps with the same options. The frame

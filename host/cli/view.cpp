@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // fgr view: the interactive viewer (fgr_viewer) with the command line's options.
 #include <fmt/format.h>
 

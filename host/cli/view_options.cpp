@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // View files on the command line: `fgr render VIEW.fgrview.json`, `--view FILE` (a view file or an
 // image that carries one) under any option typed, and `--save-view FILE`.
 #include "view_options.hpp"

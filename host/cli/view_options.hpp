@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #pragma once
 // View files on the command line (view_file/view_file.hpp): reading one as the start of a render
 // under the options typed, and writing the view of a render.

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #pragma once
 // The kernel cache directory on disk (ProgramCache::default_directory()): compiled programs
 // (<key>.bin, program_cache.cpp), the device math self-test's verdicts (math-<key>.txt,

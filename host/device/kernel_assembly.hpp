@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #pragma once
 // Assembling a scene's OpenCL program: switches + kernel library prelude + generated parameter
 // accessors + the scene's source + the library's marching, shading and entry points. Every

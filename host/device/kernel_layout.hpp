@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #pragma once
 // What the host and the kernels exchange, as the kernels declare it (kernels/shared/): structs
 // passed by value, the light lists' layouts, which plane holds what and each kernel argument's

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #pragma once
 // The device math self-test: before fgr renders at a (precision, packet width) on a device, the
 // OpenCL built-ins its kernels use run on vectors of that width with edge lanes (0, -0,

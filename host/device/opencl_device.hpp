@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #pragma once
 // OpenCL platforms and devices: enumeration for `fgr info`, and opening one device with a
 // context and an in-order queue for rendering.

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #pragma once
 // Building OpenCL programs once per (source, switches, device): in memory for the process, and as
 // device binaries on disk across runs, so a second `fgr render` skips the compiler. The disk

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #pragma once
 // `fgr bench accuracy SCENE`: what accuracy costs in time. Each knob that trades one for the other
 // (hit threshold, max steps, DE iterations, step factor, over-relaxation, normal epsilon, samples

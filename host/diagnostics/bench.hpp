@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #pragma once
 // `fgr bench SCENE`: the benchmark protocol. A scene's benchmark camera path is played at a fixed
 // resolution, either in real time for a fixed duration (the camera at each frame is where the

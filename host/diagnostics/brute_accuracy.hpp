@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #pragma once
 // `fgr bench accuracy SCENE --mode brute`: what the brute-force mode's depth costs in time. The
 // scene's first view is rendered with 1, 2, 4, ... passes and each depth buffer is compared with a

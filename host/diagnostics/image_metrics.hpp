@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #pragma once
 // How far one image is from another: RMSE on linear values, and SSIM (the structural similarity
 // index of Wang, Bovik, Sheikh and Simoncelli, "Image quality assessment: from error visibility to

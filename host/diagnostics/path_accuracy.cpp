@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // `fgr bench accuracy SCENE --mode path`: what the path tracer's noise costs in time. Every
 // point renders the scene's first camera with one knob changed from the given settings and is
 // compared with a long render (see run_path_accuracy_sweep in accuracy.hpp).

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // The checks of `fgr check` (diagnostics/scene_check.hpp). Each one measures, keeps the first
 // problem it meets (and how many there were) and turns the measurement into advice for the scene's
 // author. The tolerances are those of tests/diagnostics/test_scene_stability.cpp, which runs these

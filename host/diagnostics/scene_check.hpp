@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #pragma once
 // Checking any scene's numerics, as `fgr check` does and tests/diagnostics/test_scene_stability.cpp
 // does for every built scene: the DE stays finite at hard points and at every parameter's extremes,

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #pragma once
 // The processes of one fgr job: the ranks of an MPI job when mpirun started fgr (and fgr was
 // built with MPI), or this process alone. Rank 0 coordinates: it hands out work, gathers the

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #pragma once
 // A FrameDispatch over the ranks of a Cluster: the frames are the farm's tasks
 // (distributed/task_farm.hpp), cross between ranks as bytes (distributed/frame_wire.hpp) and reach

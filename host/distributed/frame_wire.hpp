@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #pragma once
 // Frames and encoded tiles as bytes, to send between ranks of one job (same machine type, same
 // build: native byte order, no versioning).

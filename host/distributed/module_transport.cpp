@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // fgr built with MPI: the transport is the module libfgr_mpi.so (transport.hpp), loaded only when
 // a launcher started several ranks. A plain `fgr render` does not start MPI either: its runtime
 // would cost start-up time and, on some systems, print warnings about networks it cannot use.

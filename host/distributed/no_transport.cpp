@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // fgr built without MPI: every process is a job of its own. Started by mpirun on several ranks,
 // it says so (rank 0 only) instead of letting N copies race to write the same file.
 #include "distributed/cluster.hpp"

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #pragma once
 // One still shared out by seed, for a mode whose samples differ with the seed (the path tracer,
 // SampleBudget::seeded): task t renders the whole image with the job's samples per pixel and seed

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #include "distributed/task_farm.hpp"
 
 #include <fmt/format.h>

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #pragma once
 // Work shared out over the ranks of a Cluster, as a farm: rank 0 hands tasks out in order to
 // whichever rank asks next (so a slow rank or a slow task holds no one else up) and gathers the

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #pragma once
 // How ranks exchange bytes: MPI (mpi_transport.cpp) when fgr was built with it, nothing otherwise
 // (no_transport.cpp). Cluster puts its messages on top.

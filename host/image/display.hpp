@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #pragma once
 // What a screen shows of scene-referred linear RGB: an exposure, a tone curve, then the sRGB
 // curve at 8 bits. The renderer, the viewer, stills, tiles and merged parts all encode through

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Reading the embedded view by walking each format's structure with bounded reads (image/
 // embedded_view.hpp). The libraries' own readers are not used for this: libpng skips a text chunk
 // past its allocation limit without saying so, OpenEXR 3.1 allocates what an untrusted header

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #pragma once
 // The text document an image file carries beside its pixels: the view that made the image (a JSON
 // document), written into every PNG, TIFF and OpenEXR file fgr writes and read back without

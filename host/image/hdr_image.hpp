@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #pragma once
 // High-dynamic-range images in memory: linear RGB floats, as environment maps are loaded and
 // generated and as the path tracer's estimate is written out.

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #pragma once
 // High-dynamic-range image files: Radiance .hdr (RGBE) and OpenEXR .exr, read as environment maps
 // and written as the path tracer's output (with optional extra layers: albedo, normal, depth).

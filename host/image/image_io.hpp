@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #pragma once
 // RGB and RGBA images and their PNG files: 8-bit sRGB for display, 16-bit linear for further
 // processing. Alpha is straight (un-associated), as PNG specifies: a pixel's colour is the

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #pragma once
 // libpng's error and warning handlers as fgr's PNG readers and writers use them (image_io.cpp,
 // tiled/streaming_image.cpp), and the compression and the embedded view both writers write.

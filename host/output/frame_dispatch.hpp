@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #pragma once
 // Frames of one job rendered somewhere and handed back in order: the frames of a video, the seeds
 // of a still. Where they are rendered is the dispatch's business: this process, or the ranks of an

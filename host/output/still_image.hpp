@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #pragma once
 // One still image of a scene, as `fgr render` makes it: the scene's kernel built with the
 // requested switches and render mode, float or double chosen for the view, the frame rendered and

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #pragma once
 // What a still's file holds at each pixel, converted from a Frame one band of rows at a time, so
 // the whole-image writers (write_still) and a tiled writer that streams bands share one

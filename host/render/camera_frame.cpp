@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #include "render/camera_frame.hpp"
 
 #include <glm/geometric.hpp>

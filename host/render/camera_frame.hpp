@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #pragma once
 // The camera as the kernels receive it: shared by the renderer and the cone prepass, which both
 // launch kernels that take it.

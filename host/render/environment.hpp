@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #pragma once
 // Environments for the path tracer: generated environment maps (a photographic studio, a
 // Preetham daylight sky with its sun, a uniform map for furnace tests), the tables that let the

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #pragma once
 // What the path tracer (render mode "path") is asked to do beyond the view: how long paths run,
 // which sampling strategies it combines, and the environment that lights the scene (chosen and

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #pragma once
 // Float or double lanes for a render. Float is ~2x faster and resolves any view whose pixels are
 // coarser than a few float steps of the coordinates; a deep zoom needs double, where float would

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #pragma once
 // Rendering one scene on one OpenCL device: builds (or fetches from the cache) the scene's
 // program once, then renders frames whose camera and parameters change freely without a rebuild.

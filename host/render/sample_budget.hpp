@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #pragma once
 // How many samples a render takes in each render mode, what one sample is there, and how many fgr
 // accepts: asked here by the command line, the viewer, tiled stills, parts, video frames and the

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #include "scene/description_validation.hpp"
 
 #include <spdlog/fmt/fmt.h>

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #pragma once
 // Validating a plugin's scene description (fgr_scene_desc) and copying it into a host-owned Scene:
 // the ABI version and struct sizes, ids and names, string lengths, parameter ranges and types,

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #pragma once
 // Finding scenes (plugins and scene files): the search path and the scan of its directories.
 

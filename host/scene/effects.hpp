@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #pragma once
 // The effects a scene can be rendered with: their names on the command line and in files, the
 // compile-time switch each one is in the kernel, and which effects each kind of scene and mode can

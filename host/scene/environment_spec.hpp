@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #pragma once
 // What an environment is called: `--environment`'s value, and a scene's own environment (ABI 1.5
 // `fgr_scene_desc::environment`, a scene file's "environment"), which the path mode lights the

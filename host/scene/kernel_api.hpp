@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #pragma once
 // The version of the kernel library's API a scene's OpenCL source is written for (see
 // kernels/core/fgr_types.cl): the host reads it from the source and defines it before the library,

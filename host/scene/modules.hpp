@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #pragma once
 // fgr's own modules: parts of fgr built as shared objects beside the plugin directory
 // (<prefix>/lib/fgr/, built or installed) and loaded the first time a command needs them, so the

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #pragma once
 // Parameter values as the kernel reads them: one float per scalar, three per vec3/colour, in the
 // scene's parameter order. The OpenCL accessors (param_<id>) index the same layout.

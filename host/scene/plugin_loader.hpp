@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #pragma once
 // Loading scene plugins: dlopen one file, look up its single entry symbol, validate and copy the
 // description it returns (description_validation.hpp), and unload it again on any failure.

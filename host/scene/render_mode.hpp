@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #pragma once
 // Render modes: how a frame's pixels are computed from the scene. Each mode is one kernel file
 // (kernels/fgr_mode_<name>.cl, entry point fgr_render) and one host module

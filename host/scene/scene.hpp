@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #pragma once
 // The host's own copy of a scene description: everything a plugin described, validated and owned
 // by the host, so the plugin's memory is never touched after loading.

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #pragma once
 // The scene a command names: `fgr render|view|check|video|bench SCENE` take a scene id or a scene
 // file by path. Which of the two an argument is, and what kind of file, is decided in one place

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #pragma once
 // Scene files of every kind, by name: a plugin (`*.so`, plugin_loader.hpp), an IFS file
 // (`*.ifs.json`, ifs.hpp), a formula file (`*.formula.json`, formulas.hpp) or a text scene (`*.cl`

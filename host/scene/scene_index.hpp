@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #pragma once
 // The scene index: which scene id each scene file held when it was last loaded, so that finding
 // one scene by id (`fgr render ID`, `fgr check ID`, ...) loads that scene's file and not every

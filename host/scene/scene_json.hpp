@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #pragma once
 // What fgr's JSON scene files (IFS scenes `NAME.ifs.json`, formula scenes `NAME.formula.json`)
 // read the same way: the file itself (bounded in size), the header (format, version, id, name,

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #pragma once
 // The limits and naming rules every scene keeps, whatever it comes from: a plugin's description
 // (description_validation.cpp) or a JSON scene file (scene_json.cpp). The host enforces them;

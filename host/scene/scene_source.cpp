@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // A plugin's embedded scene source against its recorded .cl file (scene/scene_source.hpp).
 #include "scene/scene_source.hpp"
 

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #pragma once
 // A plugin's scene source against its .cl file on disk. Plugins built with fgr_add_scene_plugin
 // embed their .cl file and record its absolute path as the source name: `--dev` (fgr render,

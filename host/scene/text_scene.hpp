@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #pragma once
 // Text scenes: a scene in one OpenCL C file, `NAME.cl`, no compiler needed. The file starts (after
 // blank space) with a block comment whose first word is `fgr-scene` and whose rest is a JSON

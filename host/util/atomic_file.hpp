@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #pragma once
 // Writing files so that readers see either the old file or the whole new one, never a partial
 // write: the content goes to a temporary beside the target, is flushed to disk, then renamed.

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #pragma once
 // The keys of fgr's disk caches (compiled kernels, the viewer's thumbnails): a 64-bit FNV-1a hash
 // of everything that decides an entry, part by part. Each part is followed by a separator, so

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #pragma once
 // Failure messages fgr gives the same way everywhere: an errno value's text, and a file that
 // cannot be written.

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #pragma once
 // Reading a whole file into memory in one read at the file's size (a cache entry, a band of a
 // tiled render, an image, a plugin to copy), and a C file closed by its owner.

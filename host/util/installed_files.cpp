@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #include "util/installed_files.hpp"
 
 #include <fmt/format.h>

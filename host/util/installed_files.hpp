@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #pragma once
 // Where fgr's installed files are, found from the running executable: the build tree has the
 // install layout (bin/, lib/fgr/plugins/, share/fgr/schemas/), so a built fgr and an installed one

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #pragma once
 // Reading fgr's JSON files (camera path files, IFS and formula scene files): the checks their
 // fields share, so a number or a version is read and refused the same way in every file. Each

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #pragma once
 // ASCII lower case, for comparisons that ignore case: file extensions, search words.
 

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #include "util/parallel_bands.hpp"
 
 #include <algorithm>

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #pragma once
 // Host loops over a frame's values spread over the CPU's threads.
 

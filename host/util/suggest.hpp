@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #pragma once
 // "Did you mean": the known name closest to a mistyped one (a scene id, an option, a mode, a
 // parameter or one of its choices), so a one-line error can offer it instead of listing them all.

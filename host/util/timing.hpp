@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #pragma once
 // Wall-clock time spent since a moment, on the steady clock, as the figures fgr reports it, and
 // deadlines on the same clock.

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #include "util/version.hpp"
 
 #include "fgr_version_info.h"  // generated into the build tree (cmake/version_header.cmake)

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #pragma once
 // Which fgr this is: the version (the project's, set once in the top CMakeLists.txt) and the
 // commit it was built from. Only util/version.cpp sees the generated header, so a new commit

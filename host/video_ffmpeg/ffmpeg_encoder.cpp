@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // FFmpeg's side of `fgr video` and `fgr merge`'s videos: the module fgr loads on first use (see
 // host/output/video/video_backend.hpp for why it is not linked in).
 #include <fmt/format.h>

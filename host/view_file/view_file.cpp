@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #include "view_file/view_file.hpp"
 
 #include <fmt/format.h>

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #pragma once
 // View files (NAME.fgrview.json): everything that decides an image, kept so that a view found in
 // the viewer or on the command line can be rendered again, shared, and embedded in the images it

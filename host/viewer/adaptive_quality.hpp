@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #pragma once
 // Adaptive quality: while the view changes, render at a reduced resolution that holds a target
 // frame time; once it is still, refine: the full-resolution centre sample, then one jittered

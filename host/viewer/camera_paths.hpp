@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #pragma once
 // Camera paths in the viewer: the current scene's own, the one recorded with K and the file given
 // with --camera-path; playing the selected one (P) and recording keyframes. Private to fgr_viewer.

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #pragma once
 // Notices new and changed files by polling their modification time and size: the plugin folders
 // (every file named like a scene file in them: *.so plugins, *.ifs.json and *.formula.json files

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #pragma once
 // The viewer's free-flying camera: a position, a unit forward direction and the scene's world up.
 // Mouse look turns forward about world up (yaw) and about the camera's right axis (pitch), never

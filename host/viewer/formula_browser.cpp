@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #include "viewer/formula_browser.hpp"
 
 #include <fmt/format.h>

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #pragma once
 // The formula browser (B): a window of the scenes' thumbnails with a search field; clicking one
 // shows it. The thumbnails render on a worker of their own while the view is idle. Private to

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #pragma once
 // Frame-time statistics the viewer prints on exit (`fgr view --stats`).
 

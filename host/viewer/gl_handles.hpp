@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #pragma once
 // RAII over the viewer's SDL, OpenGL and Dear ImGui handles, each releasing what it made.
 // Private to fgr_viewer.

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #pragma once
 // The viewer's hot reload: watching the plugin folders and the scenes' files (and with --dev the
 // scenes' .cl sources), having the render thread build a new version of a scene that changed, and

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #pragma once
 // The hybrid editor: the panel's "Formula sequence" section for a formula scene (the formulas it
 // iterates, their order and repeats) and "Save as". An edit makes a new scene that the render

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #include "viewer/input_handler.hpp"
 
 #include <backends/imgui_impl_sdl.h>

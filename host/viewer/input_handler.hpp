@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #pragma once
 // The viewer's input: the window's events (handed to Dear ImGui first), the key bindings, looking
 // around with the right mouse button, the wheel's speed factor, and flying the camera by the held

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #pragma once
 // How the user asks the viewer to render, beyond the scene and its session: set on the command
 // line, then changed in the panel. Private to fgr_viewer.

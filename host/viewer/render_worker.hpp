@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #pragma once
 // The viewer's render thread. The window thread posts the state to show (latest wins) and takes
 // finished frames; it never waits on OpenCL. The worker builds kernels (keeping the last image on

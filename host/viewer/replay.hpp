@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #pragma once
 // Scripted input for the viewer (`fgr view --replay FILE`): a text file of timed events that the
 // viewer feeds through the same handlers as real input, for tests and demos. A user-facing format:

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #include "viewer/replay_driver.hpp"
 
 #include <SDL2/SDL.h>

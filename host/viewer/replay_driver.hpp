@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #pragma once
 // Plays a replay script (`fgr view --replay FILE`, replay.hpp) into the viewer: input events go
 // to SDL's queue as if the user made them, the browser's and the hybrid editor's events to those

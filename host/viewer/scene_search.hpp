@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #pragma once
 // The formula browser's search: which scenes a query finds. A scene is found by its id, name and
 // tags, and a formula scene also by its formulas' names, titles and families; every word of the

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #pragma once
 // The scenes the viewer can show, the one it shows, and what the user made of each scene shown so
 // far: its session. Hot reload and the hybrid editor replace a scene by a new version of it; the

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #pragma once
 // The formula browser's thumbnails: each scene's default view rendered small and at low quality,
 // kept in memory for the session and on disk (PNG files under the kernel cache's directory,

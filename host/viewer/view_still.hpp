@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #pragma once
 // The viewer's view as a view file (view_file/view_file.hpp), and the still a view file renders
 // to. Ctrl+S saves the view; F12 renders the still of the view it would save, through the

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #pragma once
 // The views the window thread hands to the render thread. A change of anything that decides the
 // image starts a new generation, on which the render thread restarts refinement; a view counts as

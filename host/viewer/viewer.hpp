@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #pragma once
 // `fgr view`: the interactive window. Rendering runs on its own thread, so input and the panel
 // never wait on a slow frame; see docs/tutorial/viewer.md for the controls.

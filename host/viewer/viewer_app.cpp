@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #include "viewer/viewer_app.hpp"
 
 #include <SDL2/SDL.h>

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #pragma once
 // The viewer application: it owns the window, the render worker and the viewer's parts, hands
 // each part what it asks for through the part's host (a struct of callbacks), and runs the window

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // The entry point of libfgr_viewer.so, the viewer as the module `fgr view` loads (viewer.hpp).
 #include "viewer/viewer.hpp"
 

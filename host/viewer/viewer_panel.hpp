@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #pragma once
 // The viewer's Dear ImGui panel (Tab): the status line, scenes, cameras and paths, a widget per
 // parameter, effects, render mode, adaptive quality and messages; the help window (H) and the

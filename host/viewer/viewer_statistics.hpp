@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #pragma once
 // The frame counts and times `fgr view --stats` prints on exit. Private to fgr_viewer.
 

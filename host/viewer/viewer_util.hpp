@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #pragma once
 // Small helpers the viewer's parts share. Private to fgr_viewer.
 

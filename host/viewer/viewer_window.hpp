@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #pragma once
 // The viewer's window: SDL, the window, its OpenGL context and Dear ImGui on it, opened together
 // and closed in reverse order. Private to fgr_viewer.

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 /* fgr kernel library: powers, sines and parities that are right in every lane.
  *
  * A vector built-in can be wrong where the scalar one is right. Debian's PoCL AVX-512 library

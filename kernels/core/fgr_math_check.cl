@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 /* fgr kernel library: the device math self-test (host/device/math_check.cpp).
  *
  * Runs the maths the kernel library calls on lanes (fgr_math.cl's helpers and the plain

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 /* fgr kernel library: packet types.
  *
  * Every scene function works on a packet of FGR_WIDTH rays at once. On a CPU (PoCL) the host

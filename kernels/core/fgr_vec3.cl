@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 /* fgr kernel library: vec3 arithmetic on packets. OpenCL C has no operator overloading, so these
  * short functions stand in for +, -, * on vectors. Masks: combine with & and |, negate with !
  * (both keep true lanes at -1 for vectors and 1 for scalars, which select() and fgr_any expect). */

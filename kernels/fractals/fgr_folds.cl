@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 /* fgr kernel library: space folds for IFS and Mandelbox-type fractals.
  *
  * A fold maps space onto a fundamental region, so one copy of the geometry stands for many. Folds

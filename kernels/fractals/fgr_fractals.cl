@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 /* fgr kernel library: fractal formulas shared by scenes.
  *
  * Mandelbulb: the iteration z -> z^n + c with z^n taken in spherical coordinates

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 /* fgr kernel library: orbit scenes (kernel API 2).
  *
  * Most fractals are "apply a step to z a number of times, then measure": Mandelbox, KIFS,

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 /* fgr kernel library: what a scene's surface is, for the code after the scene's source.
  *
  * A scene gives a distance estimator, `real scene_de(vec3 p, PARAMS)`, an inside test,

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 /* fgr kernel library: exact ray tracing of IFS scenes (geometry kind "ifs").
  *
  * An IFS scene is the attractor of affine maps w_i(x) = A_i x + b_i. A ball B with w_i(B) inside

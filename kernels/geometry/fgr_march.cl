@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 /* fgr kernel library: sphere tracing of a packet of rays.
  *
  * A ray hits when the distance estimate falls below the pixel's footprint at that distance:

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 /* fgr kernel library: the cone-marched depth prepass.
  *
  * Every primary ray used to start its march at the eye and pay for the empty space its

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 /* fgr kernel library: probes that evaluate the scene's DE and normals at given points, for
  * tests and for the host's tools (the DE at the camera decides auto precision). They share the
  * image layout macros of fgr_camera.cl; their planes (FGR_PROBE_*_PLANE) and arguments

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 /* fgr kernel library: the camera and the image's layout, shared by every render mode's entry
  * point (fgr_mode_*.cl).
  *

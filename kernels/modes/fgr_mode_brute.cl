@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 /* fgr render mode "brute": rendering without a distance estimator, after Syntopia's "Rendering 3D
  * fractals without a distance estimator". Only the scene's inside test is used (a DE scene's is
  * its DE's sign against the hit threshold, see fgr_geometry.cl), so this mode renders sets no DE

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 /* fgr render mode "path": unbiased Monte Carlo path tracing of the scene's DE surface.
  *
  * Each launch adds one sample to every pixel: a camera ray (jittered in the pixel and, with depth

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 /* fgr render mode "shaded": Blinn-Phong with the scene's lights plus the effects it asks for
  * (shadows, occlusion, reflections, refraction, glow, fog, depth of field), one primary ray per
  * pixel and sample. The fast mode, and the one the viewer previews with.

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 /* fgr kernel library: sampling, where every render mode's random numbers come from. One hash
  * (lowbias32, sampler_mix) makes them all, in two generators:
  *

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 /* fgr kernel library: signed distance functions on packets, after Inigo Quilez's catalogue
  * (https://iquilezles.org/articles/distfunctions/), written for fgr's types and z-up world.
  *

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 /* fgr kernel library: materials and their BSDFs, for the path tracer.
  *
  * A material is a diffuse (Lambertian) lobe plus a glossy GGX microfacet lobe:

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 /* fgr kernel library: colouring by orbit traps.
  *
  * While a fractal iterates z, an orbit trap keeps the closest the orbit came to some shape. The

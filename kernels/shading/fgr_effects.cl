@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 /* fgr kernel library: effects applied along the primary ray (fog, glow). Each exists only when its
  * switch is compiled in. (Where a sample's ray leaves the pixel and the lens is sampling's:
  * sample_camera in fgr_sampler.cl.) */

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 /* fgr kernel library: environment lighting, lookup and importance sampling.
  *
  * An environment is an equirectangular map (host/render/environment.hpp builds its tables)

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 /* fgr kernel library: lighting. Blinn-Phong with the scene's lights, in linear RGB; the host
  * encodes to sRGB afterwards. Lights arrive as FGR_LIGHT_FLOATS floats each: type, vector,
  * colour, intensity (shared/fgr_layout_lights.h). */

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 /* fgr: the index of each kernel argument the host sets (see fgr_layout_types.h for how this header
  * is shared). OpenCL C cannot name an argument's position in a signature, so each kernel's
  * parameter list is written in this order beside a reference to these names, and the device

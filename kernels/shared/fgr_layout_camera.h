@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 /* fgr: the camera as the host sends it to every render mode and the prepass (see
  * fgr_layout_types.h for how this header is shared). fgr_camera.cl maps pixels to rays with it;
  * host/camera/projection.hpp describes each projection's layout, host/render/camera_frame.cpp

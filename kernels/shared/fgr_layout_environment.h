@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 /* fgr: the path tracer's environment as the kernels receive it, by value beside the tables'
  * flat buffer env_data (see fgr_layout_types.h for how this header is shared).
  * host/render/environment.hpp builds the tables and fills it; fgr_environment.cl looks the map

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 /* fgr: the light lists the render modes read from a __constant float buffer, each light a fixed
  * number of floats at these offsets (see fgr_layout_types.h for how this header is shared). */
 #ifndef FGR_LAYOUT_LIGHTS_H

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 /* fgr: the path tracer's settings as fgr_mode_path.cl receives them, by value (see
  * fgr_layout_types.h for how this header is shared); host/render/modes/path_mode.cpp fills them
  * from PathSettings. */

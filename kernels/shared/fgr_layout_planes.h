@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 /* fgr: how the kernels' outputs are laid out in memory, and which plane holds what (see
  * fgr_layout_types.h for how this header is shared).
  *

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 /* fgr: what the host and the kernels exchange, written once for both (kernels/shared/).
  *
  * These headers are the common subset of C++20 and OpenCL C 1.2: #defines, and structs whose

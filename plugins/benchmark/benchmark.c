@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 /* The benchmark scene: several fractal and primitive geometries, two lights, ambient occlusion,
  * soft shadows and reflections, and a fixed 12-second camera path ("benchmark") for timing. */
 #include "benchmark_cl.h" /* benchmark_cl: the OpenCL source, embedded at build time */

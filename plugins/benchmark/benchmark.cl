@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 /* Benchmark scene: fractal and primitive geometry together on a reflective floor, lit by a sun and
  * a point light, with ambient occlusion, soft shadows and reflections. It exercises every part of
  * the renderer at once, so `fgr bench` figures on it say how a realistic scene performs.

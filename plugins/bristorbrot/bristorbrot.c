@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 /* The Bristorbrot scene plugin: Doug Bristor's non-conformal quadratic map of R^3 as a Julia set
  * (default) or a Mandelbrot set. Inside-only (no distance estimate, see bristorbrot.cl): rendered
  * by the brute-force mode. */

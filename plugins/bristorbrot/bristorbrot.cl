@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 /* Bristorbrot: the escape-time fractal of Doug Bristor's quadratic map of R^3,
  *
  *     (x, y, z) -> (x^2 - y^2 - z^2,  y (2x - k z),  z (2x + k y)) + c

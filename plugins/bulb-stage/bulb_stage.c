@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 /* The bulb-stage scene plugin: a metal Mandelbulb on a tiled floor, path traced by default
  * (ABI 1.2's default_mode), lit by the sky's sun (its key light, a disc of the sun's size). */
 #include <stddef.h>

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 /* Bulb stage: a polished Mandelbulb standing on a tiled floor, made for the path tracer (its
  * default mode): the floor catches the fractal's soft shadow and its reflected light, and the
  * metal shows the sky or studio around it. In the shaded mode the same scene is lit by its sun

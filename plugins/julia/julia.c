@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 /* The quaternion Julia scene plugin: a 3D slice of the 4D Julia set of q -> q^2 + c, with the
  * analytic running-derivative DE. */
 #include <stddef.h>

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 /* Quaternion Julia set: the iteration q -> q^2 + c on quaternions q = x + y i + z j + w k, seen as
  * the 3D slice w = slice_w of the 4D set. One step is the formula library's
  * formula_quaternion_julia (kernels/fractals/formulas/hypercomplex.cl, its quaternion_square and

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 /* The Mandelbox scene plugin: box fold, sphere fold and scale, with the running-derivative DE. */
 #include <stddef.h>
 

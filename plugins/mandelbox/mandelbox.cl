@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 /* Mandelbox (Tom Lowe, 2010): the iteration z -> scale * sphere_fold(box_fold(z)) + p, one step
  * of which is the formula library's formula_mandelbox (kernels/fractals/formulas/boxes.cl, with the
  * scale kept at |scale| >= 1.2, below which every point is inside).

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 /* The Mandelbulb scene plugin: power-n Mandelbulb with the analytic running-derivative DE.
  * Its default camera is the canonical view fgr is benchmarked on (see bench/). */
 #include <stddef.h>

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 /* Mandelbulb scene: the power-n Mandelbulb of kernels/fractals/fgr_fractals.cl (mandelbulb_de,
  * where the formulas are spelled out) with this scene's parameters, coloured by its orbit. */
 

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 /* The Menger sponge scene plugin: a kaleidoscopic IFS of cube folds with the middle-layer
  * correction, centred at the origin in the cube [-1, 1]^3. The DE is in menger.cl. */
 #include <stddef.h>

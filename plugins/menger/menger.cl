@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 /* Menger sponge as a kaleidoscopic IFS (Knighty's KIFS, as in Syntopia's Fragmentarium).
  *
  * Each iteration folds space into the cube's fundamental region x >= y >= z >= 0 (fold_menger),

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 /* The SDF gallery scene plugin: every primitive, combinator and transform of the kernel library's
  * kernels/sdf/fgr_sdf.cl on a 6 x 4 grid of slots, front row to back: primitives, more primitives
  * with elongate / onion / round, the six combinators, the non-rigid transforms. */

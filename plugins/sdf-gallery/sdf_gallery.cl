@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 /* SDF gallery: every primitive, combinator and transform of kernels/sdf/fgr_sdf.cl, one per plinth
  * slot on a 6 x 4 grid standing on a platform.
  *

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 /* The Sierpinski tetrahedron scene plugin: a kaleidoscopic IFS of tetrahedral folds, standing on
  * a face with its apex up the z axis. The DE is in sierpinski.cl. */
 #include <stddef.h>

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 /* Sierpinski tetrahedron as a kaleidoscopic IFS (Knighty's KIFS, as in Syntopia's Fragmentarium).
  *
  * Each iteration folds space into the quarter nearest the corner (1, 1, 1) of the tetrahedron

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 /* The stereographic quaternion Julia scene plugin: R^3 lifted onto the unit 3-sphere by the
  * inverse stereographic projection, inside where q -> q^2 + c stays bounded. Inside-only (no
  * distance estimate, see stereographic_julia.cl): rendered by the brute-force mode. */

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 /* Stereographic quaternion Julia set: every point p of R^3 is lifted onto the unit 3-sphere of
  * the quaternions by the inverse stereographic projection, and belongs to the set when the
  * quaternion Julia iteration q -> q^2 + c started there stays bounded.

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Camera basis, primary rays and keyframed camera paths.
 
 #include <gtest/gtest.h>

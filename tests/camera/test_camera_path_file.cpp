@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Camera path JSON files: what the viewer saves is what `fgr render --camera-path FILE` reads back,
 // and every malformed file is refused with a one-line reason.
 #include <gtest/gtest.h>

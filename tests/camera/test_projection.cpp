@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Cameras beyond the pinhole (camera/projection.hpp, kernels/modes/fgr_camera.cl): small spheres
 // placed in known world directions must appear where the projection's own formulas (written out
 // here, apart from both implementations) put them, in the images the kernels render; stereo pairs

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // The fgr command line, run as a child process: every bad input is one "fgr: error: " line on
 // stderr, a non-zero exit and no output file; valid renders write an 8-bit RGB PNG of the asked
 // size and print render_ms and hits.

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // What is generated from the command line's definitions (cli/reference.hpp): `fgr --version`, the
 // bash and zsh completion scripts driven as a shell would, the man page through groff's warnings,
 // and the markdown reference against the commands and options the App tree has.

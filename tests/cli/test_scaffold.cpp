@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // `fgr new-scene`: names derived from the id, placeholders filled, the project written all at
 // once into a new or empty directory and never over anything else. (Building the result against
 // an installed fgr is tests/sdk_end_to_end.sh.)

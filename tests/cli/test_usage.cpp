@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // What the command line says about itself (cli/usage.hpp, fgr list, fgr info SCENE, the progress
 // of a still): the overview without a command, a line a scene, help under headings with defaults,
 // "did you mean" in the errors, and a progress line that reaches 100%. None of these build a

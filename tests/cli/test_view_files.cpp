@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // View files on the command line: `fgr render … --save-view V` then `fgr render V`, or
 // `fgr render --view IMAGE`, gives the same bytes in every mode; a view names the environment that
 // lit the render; options typed override the view; a scene changed since the view was saved is

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 /*
  * A scene description written with fgr/scene_helpers.h, compiled as C11 and as C++ by the
  * SceneHelpers* ctest tests (tests/CMakeLists.txt, compile_check.cmake). As written it compiles;

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // The kernel cache directory: which files are entries (programs and math self-test verdicts), the
 // size limit from FGR_CACHE_MAX_MB, eviction of the least recently used, clearing; and
 // ProgramCache keeping its disk entries that way (a disk hit marks the entry used, a store evicts

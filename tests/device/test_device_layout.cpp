@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // The layouts the host and the kernels share (kernels/shared/fgr_layout_*.h), checked on the
 // device: the OpenCL compiler reports each shared struct's size and each field's offset and they
 // must equal the host's (whose own are pinned by static_asserts in device/kernel_layout.hpp), and

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Kernel assembly: the switches a program is built with, the generated parameter accessors, build
 // errors mapped to the scene's own lines, the on-disk program cache, and parameters that change
 // without a rebuild.

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // The device math self-test: it passes where the built-ins are right, it catches a built-in that
 // corrupts one lane, its verdict is cached on disk, and a broken (precision, width) pair is
 // replaced by a narrower width that passes.

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Numerical precision: `--precision auto` picks double only for views finer than float resolves,
 // the double pipeline renders an ordinary view like float at every packet width it supports, the
 // kernel's double DE agrees with a long-double C++ DE to the float rounding of its result, and in

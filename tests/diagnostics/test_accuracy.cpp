@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // `fgr bench accuracy`: image error metrics, the Pareto front, and a sweep that measures every knob
 // against a reference render, with its CSV, gnuplot script and plot.
 #include <fmt/format.h>

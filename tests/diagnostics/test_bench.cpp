@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // The benchmark protocol: figures from frame times, the choice of camera path, fixed-frame and
 // fixed-duration runs, the precision of each frame, and the JSON / CSV / command-line outputs.
 #include <gtest/gtest.h>

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // `fgr check`, `fgr render --dev` and the stale-plugin warning, run as a child process: a report
 // that names the fault and the fix, exit 1 on a failed check, compiler errors with the scene's
 // file and line, and a plugin whose .cl file changed after it was built said so in one line.

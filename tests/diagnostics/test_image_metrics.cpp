@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Image metrics (diagnostics/image_metrics.hpp): SSIM against closed forms of its three terms,
 // against scikit-image's implementation on synthetic image pairs, and its properties; display luma,
 // the sRGB decoding of 8-bit images, and linear RMSE.

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Numerical stability of scenes, through the checks `fgr check` runs (diagnostics/scene_check.hpp):
 // the DE never overestimates, nothing produces NaN or Inf in the hard cases (the origin, huge
 // points, a camera inside the fractal, every parameter at its extremes, every camera path), and

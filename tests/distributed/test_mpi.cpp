@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // fgr under MPI (host/distributed). In process: results that arrive out of order are handed on
 // in task order, a farm of one process runs every task, frames and tiles cross the wire intact.
 // Then `mpirun -np 3` on this machine (loopback, oversubscribed).

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // A still shared out by seed (distributed/seed_split.hpp), as `fgr render --mode path` under
 // mpirun shares it, with a stand-in renderer so it runs without a device or MPI: task t renders
 // with seed + t and the job's samples, the frames are added in task order weighted by their

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #pragma once
 // The golden set: every scene in every mode and precision it offers, rendered small by the `fgr`
 // command line, with what decides the user's result recorded (exit code, error lines, the

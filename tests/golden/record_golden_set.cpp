@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // fgr_golden_record FILE [JOBS] [SCENE...]: renders the golden set of every scene the built fgr
 // lists and writes it to FILE (tests/golden/golden_set.json). Record it before a change that must
 // not change what users see, at the commit before it; test_golden_set.cpp renders it again.

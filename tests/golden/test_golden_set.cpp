@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Renders the golden set (golden_set.hpp) again and compares every case with its record.
 
 #include <gtest/gtest.h>

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // The view an image file carries (image/embedded_view.hpp): written by the PNG and EXR writers
 // and read back the same, pixels unchanged by it; nothing read from a file without one; and the
 // reader on untrusted files: truncated and mutated files of every format, other files, FIFOs and

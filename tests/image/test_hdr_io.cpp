@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // HDR image files: Radiance .hdr and OpenEXR .exr reading (hand-made files, orientation, bad and
 // fuzzed input) and writing (round trips, layers as named, atomic replacement).
 

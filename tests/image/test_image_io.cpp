@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // PNG writing (atomic replacement, failure cleanup) and reading.
 
 #include <gtest/gtest.h>

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // The path tracer's materials (kernels/shading/fgr_bsdf.cl), run as the kernels run them: through
 // test kernels built on the kernel library at each packet width and precision. Truths are
 // independent of the kernel's formulas: χ² goodness of fit of the sampled directions against the

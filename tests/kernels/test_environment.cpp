@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Environments: the kernel's lookup and importance sampling (fgr_environment.cl), run through test
 // kernels at every packet width and precision and judged against host truths (χ² of the sampled
 // directions against the kernel's own pdf integrated over bins, the pdf's integral, the Monte

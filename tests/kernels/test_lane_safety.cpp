@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Every scene renders finite colour, depth and normals at every precision and packet width the
 // device supports, with a view that puts misses, hits and the origin's neighbourhood in the same
 // packets: where a vector built-in lets one lane corrupt another (Debian's PoCL AVX-512 library

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // The kernel's Mandelbulb DE (packets, complex powers for integer exponents) against a plain C++
 // DE written from the trigonometric formulas, in double precision, for both angle conventions.
 #include <gtest/gtest.h>

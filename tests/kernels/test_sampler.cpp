@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // The path tracer's sampler (kernels/sampling/fgr_sampler.cl), run through a test kernel at every
 // packet width and precision. What is asserted are properties an Owen-scrambled Sobol sampler must
 // have whatever its code: every aligned block of 2^k samples of a pixel is a (0,k,2)-net in each

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // kernels/sdf/fgr_sdf.cl, evaluated by the kernel through inline scenes, against double-precision
 // C++ references: exact distance functions must match the true distance, bounds must never exceed
 // it and must agree with it on which side of the surface a point lies, and the non-rigid transforms

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Every writer of the output library passes the view on (image/embedded_view.hpp): write_still in
 // each format, the streamed writers of tiled stills and merges, a video's frame files (one view
 // for all, or each frame its own) and its container's metadata. Frames are made by hand and the

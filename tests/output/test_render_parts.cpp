@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Split and merge for schedulers (output/parts/render_parts.hpp, fgr render --part/--tile, fgr
 // merge, fgr video --frame-range, fgr merge --frames): tiles merge into exactly the whole render
 // (PNG bytes, EXR floats, the brute mode's neighbour-reading shading included); parts of different

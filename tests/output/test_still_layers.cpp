@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Alpha and layers (host/output/still_layers.hpp): every render mode, on DE and IFS scenes,
 // gives a ball's analytic depth, normal and albedo, coverage 1 on it, 0 off it and the fraction of
 // hitting samples at its edge; the plain shaded kernel is untouched by the switch; and the CLI's

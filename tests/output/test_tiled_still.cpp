@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Tiled stills (output/tiled/tiled_still.hpp): a tiled render equals the untiled one pixel for
 // pixel in every mode, including the brute-force mode whose shading reads neighbours across tile
 // seams; the streaming PNG, EXR and TIFF writers give files that read back as the frame; an

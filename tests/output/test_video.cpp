@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // fgr video, run as a child process, and its library parts: frame times along a camera path, the
 // encoder's temporary file, decoded frames against `fgr render --camera-path P --time t` of the
 // same settings (PSNR for the lossy H.264, exact for PNG sequences), the frame count and duration

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // The video frame loop (output/video/video_render.hpp) with a stand-in renderer, so it runs
 // without a device: which frames are rendered with which view, the order and the names they are
 // written under, what travels from the process that rendered a frame, what a process that only

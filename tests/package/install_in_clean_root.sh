@@ -1,4 +1,5 @@
 #!/usr/bin/env bash
+# SPDX-License-Identifier: Apache-2.0
 # install_in_clean_root.sh PACKAGE_DIR ROOT [BUILD_DIR]: fgr's Debian packages, installed into a
 # clean Debian 12 root as a user's machine would get them.
 #

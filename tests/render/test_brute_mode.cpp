@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // The brute-force mode (kernels/modes/fgr_mode_brute.cl): rendering from an inside test alone. Its
 // depth agrees with the sphere tracer's on DE scenes, only comes closer over passes, and bisection
 // halves its error per step; screen-space normals match DE normals, screen-space occlusion

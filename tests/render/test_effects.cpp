@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Effects: each compile-time effect changes the image where it should and nowhere else, measured
 // on small inline scenes built for the check: shadows and their penumbrae, both ambient
 // occlusions, glow, fog, reflections, depth of field, anti-aliasing over samples, effects that

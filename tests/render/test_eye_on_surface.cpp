@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // A camera on the surface (DE <= 0 at the eye): its rays march out of the surface instead of
 // spending max_steps at the eye (kernels/geometry/fgr_march.cl). The Mandelbox's fixed point, the
 // origin, has DE exactly 0; a camera there used to render blank with every ray out of steps.

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Exact IFS ray tracing (kernels/geometry/fgr_ifs.cl): the kernel against the analytic bounding
 // sphere and against the double-precision reference traversal (trace_ifs_ray), at every packet
 // width.

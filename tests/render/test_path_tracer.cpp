@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // The path tracer (render mode "path") against truths a physicist would accept, at small sizes on
 // the CPU device: furnaces (a closed system under uniform light where the answer is known), a
 // closed form (a camera inside an emitting, reflecting sphere), strategies that must agree in mean

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // The cone-marched depth prepass (kernels/geometry/fgr_prepass.cl): camera rays started where their
 // block's cone stopped must find what rays started at the eye find. Every scene the prepass
 // serves, in every projection and in the path mode, renders with and without it: hit or miss

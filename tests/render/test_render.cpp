@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Rendering: the canonical view against a scalar C++ march, the same image at every packet width,
 // determinism, partial tiles, lighting, and parameters and camera paths reaching the image.
 #include <gtest/gtest.h>

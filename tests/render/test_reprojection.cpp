@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Temporal reprojection (render/prepass/reprojection.hpp): the viewer's previews start camera rays
 // from the previous frame's depths seen from the new view. Hints must fall short of the surface the
 // new ray meets (a plane seen from a moved camera: every hint within the margin below the true

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Each render mode's sample budget (render/sample_budget.hpp): the samples a still takes unless
 // told, what a sample is (a pass in the brute mode), what the viewer accumulates, which modes'
 // samples differ with the seed, the limits and their errors; and that the command line's stills

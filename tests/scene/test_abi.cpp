@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // The plugin ABI: struct layouts pinned, version packing, and copy_scene_description's validation
 // of in-memory descriptions, valid and malformed.
 

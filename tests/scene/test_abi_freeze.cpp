@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // The ABI 1.0 and 1.1 freezes. tests/fixtures/frozen_v1 builds a plugin against the frozen copy of
 // the 1.0 header (tests/abi_v1/fgr/plugin.h); here the current host loads it with every field
 // intact and renders it, its table of 1.0 offsets and sizes matches the current header's, the same

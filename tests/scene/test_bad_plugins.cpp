@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Bad plugins: NULL or missing fields, an empty id, duplicate ids across folders, absurd numbers,
 // 10^6 parameters, a 100 MiB source, an entry returning NULL and a kernel that does not compile
 // are each refused or reported with the file and the reason, and the host keeps working. The

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Plugin discovery and loading from disk, using the fixture plugins in FGR_TEST_FIXTURE_DIR and,
 // when built, the real mandelbulb plugin in FGR_TEST_PLUGIN_DIR.
 

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // The hybrid editor's edits of a formula scene's sequence (scene/formulas/formula_edit.hpp): what
 // each edit does to the sequence, the settings that follow from it and the scene's parameters, what
 // it refuses, and that the user's values travel with their slots.

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // The formula library and formula scene files (scene/formulas/formulas.hpp): every formula has its
 // kernel function; the shipped files load (30 formulas and 5 hybrids at least); bad files are
 // refused in one line naming the file, fuzzed ones too; a formula in two slots renders as the

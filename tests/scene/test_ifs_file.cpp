@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // IFS scene files (scene/ifs/ifs.hpp): the shipped files (plugins/ifs/) parse and their geometry is
 // what it claims (bounding spheres that hold, attractors that match the DE scenes they copy), bad
 // files are refused with one line naming the file and the map, a seeded fuzz test of the reader,

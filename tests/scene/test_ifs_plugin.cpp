@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // A compiled plugin that hands over IFS maps instead of a distance estimator (ABI 1.3,
 // fgr_scene_desc::ifs_maps): tests/fixtures/ifs_plugin builds the shipped sierpinski.ifs.json as a
 // plugin. It loads as an IFS scene with the maps it handed over, renders the same depth planes as

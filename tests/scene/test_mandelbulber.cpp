@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // fgr's formula library against Mandelbulber 2: for every case in
 // bench/mandelbulber_formulas.json whose agreement is claimed, fgr renders the formula scene with
 // the case's parameters and camera, and its hit silhouette (`--alpha`) must cover the same

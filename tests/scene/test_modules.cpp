@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // fgr's modules (scene/modules.hpp): the viewer, video encoding and the MPI transport are shared
 // objects fgr loads when a command needs them. fgr itself must not link what they link (that was
 // the point: FFmpeg's, SDL's and Open MPI's libraries cost every process start-up time); without a

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Scene authoring: the kernel API versions (a scene says which one its source is
 // written for; a frozen version-1 scene keeps compiling; version-2 names stay out of version 1),
 // the version-2 helpers that take what a vec3 parameter gives and the folds (checked by their

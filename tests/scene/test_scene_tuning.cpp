@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // What a scene tunes beyond fgr's defaults (ABI 1.4): its own defaults for built-in parameters
 // (rendered with, shown as its own), its length scale (the distance-like built-ins' defaults follow
 // it) and the colour modes it offers (the others refused in one line and not listed).

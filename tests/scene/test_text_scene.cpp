@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Text scenes (scene/text_scene.hpp): a header with every key reaches the Scene as a plugin's
 // description would; the defaults; each key's bad value is refused in one line naming the key;
 // seeded fuzzing of the header; discovery of a folder with a text scene, a header-less .cl and a

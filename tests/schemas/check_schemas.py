@@ -1,4 +1,5 @@
 #!/usr/bin/env python3
+# SPDX-License-Identifier: Apache-2.0
 """The JSON Schemas of fgr's file formats (schemas/*.schema.json) against what fgr reads and writes.
 
   check_schemas.py SOURCE_DIR BUILD_DIR            the test (ctest SchemaCheck)

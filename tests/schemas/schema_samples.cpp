@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // What tests/schemas/check_schemas.py checks the schemas (schemas/*.schema.json) against, from the
 // C++ side:
 //

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #pragma once
 // Running a program as a child process for tests: arguments, working directory and environment
 // changes in; exit status, signal, timeout and captured stdout / stderr out. Plus a temporary

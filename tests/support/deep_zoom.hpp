@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #pragma once
 // Deep zooms into the Mandelbulb, where float's coordinates are coarser than a pixel: the views
 // `--precision auto` must render in double.

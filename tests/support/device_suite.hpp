@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #pragma once
 // A test suite's OpenCL device and memory-only kernel cache (hermetic: nothing on disk), opened
 // once for the suite's tests and closed after them. Derive a fixture from DeviceSuite<> (or

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Each test case starts with a fresh kernel cache of its own (hermetic_caches.hpp), also when the
 // cases of a group share a process (tests/CMakeLists.txt), so that no case sees a binary or a math
 // verdict another left behind, in whatever order or company it runs.

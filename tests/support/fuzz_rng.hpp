@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #pragma once
 // The random numbers of the seeded fuzz tests (plugin descriptions, IFS files). Deterministic on
 // every platform: only mt19937_64's raw output is used, no <random> distributions (their results

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Keeps the tests off the user's caches. Before main() runs (and so before OpenCL, Mesa or any
 // test reads them), this process's environment points:
 //   - fgr's kernel cache (FGR_CACHE_DIR) at a fresh directory of its own, removed at exit, so no

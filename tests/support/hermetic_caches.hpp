@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #pragma once
 // Where the running test case keeps fgr's kernel cache: a fresh directory of its own, which
 // ProgramCache::default_directory() (FGR_CACHE_DIR) names too. See hermetic_caches.cpp.

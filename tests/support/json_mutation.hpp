@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #pragma once
 // Mutations of JSON documents for the seeded fuzz tests of fgr's scene files (IFS files, formula
 // files): to the text (bytes deleted, inserted, duplicated, the text cut short) or to the parsed

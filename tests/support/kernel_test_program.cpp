@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #include "kernel_test_program.hpp"
 
 #include <fmt/format.h>

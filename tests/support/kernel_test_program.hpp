@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #pragma once
 // Building a test kernel on top of the kernel library, so device-side helpers (the sampler, the
 // BSDFs, the environment) are tested as the kernels run them: at each packet width and precision,

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #pragma once
 // A plain C++ Mandelbulb, written straight from the formulas with trigonometry, to check the
 // kernel's DE (which uses complex powers for integer exponents) and its march against.

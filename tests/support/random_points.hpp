@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #pragma once
 // Reproducible test points: `count` points uniform in the cube [-extent, extent]^3, from `seed`.
 

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #pragma once
 // Small renders the tests ask of a scene: its default view at a test's size, and whether a point
 // is in its solid.

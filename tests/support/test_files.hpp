@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #pragma once
 // Files and folders the tests share: where this build put fgr, its plugins and the test fixtures,
 // and whole-file reads and writes. (child_process.hpp has read_file and TempDir.)

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // The cases of a group share a process, never a kernel cache: each finds its own empty, whichever
 // ran before it (the two cases below are one suite, so one group: one process, in this order).
 #include <gtest/gtest.h>

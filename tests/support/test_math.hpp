@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #pragma once
 // Numbers the tests share: π, a quiet NaN, and the χ² test's p-value.
 

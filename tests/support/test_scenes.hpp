@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #pragma once
 // Scenes for tests: built directly in C++ (no plugin) where a known, tiny DE is needed, or loaded
 // from the plugins this build made.

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #pragma once
 // The SDK guide's text scene example (docs/sdk/text-scenes.md, "A scene in ten lines of text"),
 // read from the guide itself so the tests render what the guide shows and the two cannot drift.

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #pragma once
 // Decoding what `fgr video` wrote, for tests: every frame of a file's video stream as sRGB bytes.
 

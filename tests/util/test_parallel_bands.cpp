@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // in_parallel_bands (util/parallel_bands.hpp): every index of the range done exactly once.
 
 #include <gtest/gtest.h>

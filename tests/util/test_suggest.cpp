@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // "Did you mean": the edit distance the suggestions rank by, and which names are near enough to
 // offer.
 

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // The small helpers in host/util that the host's concepts share: each does what its callers'
 // messages and figures rely on.
 

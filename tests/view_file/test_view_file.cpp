@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // View files: the text round trip keeps every value exactly, every bad key is one line naming it,
 // parameters read back through --set to the same float bits, and mutated files never crash the
 // reader.

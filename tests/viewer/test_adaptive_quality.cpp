@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Adaptive quality: the preview scale that holds the target frame time, the pass sequence from
 // preview to refinement to idle, the cost average, and scaled image sizes.
 

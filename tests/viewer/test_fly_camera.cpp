@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // The viewer's fly camera: conversion from and to scene views, mouse-look turns with the pole
 // clamp, movement along the local axes, and the DE-driven travel speed and step limit.
 

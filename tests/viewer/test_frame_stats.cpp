@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Frame-time statistics: the summary of known data (nearest-rank p95), rejected samples, and the
 // exact text of the summary line.
 

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Pieces of the viewer's hot reload: the file watcher reports new and changed plugins (and
 // watched sources) once they hold still, never what was there at the start, and a new version of a
 // scene keeps the user's values of the parameters it still has. (The viewer reloading a rebuilt

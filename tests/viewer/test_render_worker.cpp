@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // The viewer's render thread without a window: a still view is refined sample by sample to the
 // cap and then left alone, a moving view gets reduced-resolution previews, a newer view abandons
 // refinement of an older one, a kernel that fails to build is reported while the worker keeps

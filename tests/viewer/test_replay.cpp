@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Replay scripts: parsing of every event kind and of malformed lines (messages name FILE:LINE),
 // loading from disk, and playback against a clock including wait_idle pauses.
 

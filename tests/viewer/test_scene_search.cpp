@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // The formula browser's search (viewer/scene_search.hpp): a scene is found by its id, name
 // and tags, a formula scene also by its formulas' names, titles and families; every word of the
 // query must be found, ignoring case.

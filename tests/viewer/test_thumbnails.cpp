@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // The formula browser's thumbnail cache (viewer/thumbnails.hpp): the key follows everything
 // that decides a thumbnail's image, and thumbnails on disk come back as they were stored, in the
 // kernel cache's folder.

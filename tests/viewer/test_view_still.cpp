@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // The viewer's view as a view file and the still of a view (viewer/view_still.hpp), without a
 // window or a device: the view of the viewer's state keeps the state through the file, and the
 // still the viewer renders a view with is the one `fgr render` makes of that view (the same

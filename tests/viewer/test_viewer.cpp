@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // `fgr view` end to end, in a virtual X server (xvfb-run, SDL's X11 driver): replayed input moves
 // the camera and switches scenes, F12 writes a full-resolution PNG equal to `fgr render`'s image
 // of the same view, Ctrl+S saves the view and `fgr render` renders it to the screenshot's bytes,

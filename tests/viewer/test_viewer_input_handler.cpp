@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // The viewer's key bindings without a window: each key the help window lists runs its command,
 // Ctrl matters only to S (Ctrl+S saves the view, S alone flies backwards) and K (Ctrl+K saves the
 // recorded path, K alone records a keyframe), and the flying keys, which act while held, run

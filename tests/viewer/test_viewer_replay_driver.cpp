@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // A replay script fed into the viewer without a window: input events reach SDL's queue addressed
 // to the viewer's window (a mouse button without a position at its centre), a wait holds the rest
 // of the script until what it waits for has happened, a resize keeps the view from counting as

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // The viewer's view tracker without a window: a view whose image inputs are unchanged keeps its
 // generation (the render thread goes on refining it), a change of any one of them starts a new
 // generation and counts as interactive until the view settles, and the view is refined only when

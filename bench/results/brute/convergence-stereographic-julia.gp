@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: Apache-2.0
 set terminal pngcairo size 960,400 font ',10'
 set output 'convergence-stereographic-julia.png'
 set datafile separator ','

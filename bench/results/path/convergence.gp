@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: Apache-2.0
 set terminal pngcairo size 640,420 font ",10"
 set output "bench/results/path/convergence.png"
 set logscale xy

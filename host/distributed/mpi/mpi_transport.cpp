@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // The MPI transport: MPI_COMM_WORLD, point-to-point byte messages of one tag. Only the main
 // thread calls MPI (MPI_THREAD_FUNNELED): rank 0's own renderer thread never does. Built as the
 // module libfgr_mpi.so (transport.hpp), which calls nothing of fgr's but this file.

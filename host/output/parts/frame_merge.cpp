@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #include "output/parts/frame_merge.hpp"
 
 #include <fmt/format.h>

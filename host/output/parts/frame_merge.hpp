@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #pragma once
 // Renders of the same image with different seeds (MPI ranks, or `fgr render --part` runs on a
 // farm) merged into one: each pixel's estimate is the mean of its samples, so the merged value is

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Part files (output/parts/render_parts.hpp): rendering a region into one, reading one's header and
 // rows.
 #include "output/parts/part_file.hpp"

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #pragma once
 // A part file's channels and its reader (output/parts/render_parts.hpp), shared by rendering a part
 // and merging parts.

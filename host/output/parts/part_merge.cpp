@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Merging parts (output/parts/render_parts.hpp): the checks that they make one image, and the band
 // by band merge into an output file.
 #include <fmt/format.h>

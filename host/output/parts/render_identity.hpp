@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #pragma once
 // What an image is, as text fields: the settings that decide every pixel of a render (scene and
 // kernel, size, view, parameters, mode, effects, precision, projection, path tracing but its

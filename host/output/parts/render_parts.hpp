@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #pragma once
 // Renders split for schedulers (Slurm job arrays, GNU parallel over ssh, a studio farm) and
 // merged again, with no protocol of fgr's own: each job writes a file, one merge reads them all.

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Row encoding (tiled/row_encoder.hpp).
 #include "output/tiled/row_encoder.hpp"
 

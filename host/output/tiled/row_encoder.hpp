@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #pragma once
 // A frame's pixels encoded into an output file's interleaved samples a row at a time, through the
 // conversions whole-image stills use (output/still_layers.hpp), so a file streamed in pieces (a

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Row-streaming PNG, OpenEXR and TIFF writers (output/tiled/streaming_image.hpp). Each holds only
 // the library's own buffers (a few rows at most); the caller's band of rows is written and dropped.
 #include "output/tiled/streaming_image.hpp"

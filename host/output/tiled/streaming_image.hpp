@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #pragma once
 // Image files written a band of rows at a time, top to bottom, so an image far larger than memory
 // (a gigapixel still) passes through a buffer of a few rows: PNG through libpng row by row,

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #pragma once
 // The tile store of a tiled still: a directory beside the output holding each finished band of
 // encoded rows, zlib-compressed, and render.json, what the render was (the identity: scene,

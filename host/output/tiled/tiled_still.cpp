@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Tiled stills (output/tiled/tiled_still.hpp): the plan, the loop over bands and tiles, and the
 // encoding of a tile's pixels into the output's samples. The tile store is in tile_store.cpp.
 #include "output/tiled/tiled_still.hpp"

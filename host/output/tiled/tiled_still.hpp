@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #pragma once
 // Stills of any size (up to kMaxTiledImageSide a side), rendered a tile at a time and streamed
 // to a PNG, EXR or TIFF file a band of rows at a time, so memory is bounded by the band, not the

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #pragma once
 // The FFmpeg half of video encoding, built as a module of its own (libfgr_video_ffmpeg.so,
 // host/video_ffmpeg/) that fgr loads the first time something encodes a video. FFmpeg's libraries

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // VideoEncoder: the file handling (a temporary beside the output, renamed at the end) here; the
 // encoding in the FFmpeg module, loaded the first time a video is checked or written.
 #include "output/video/video_encoder.hpp"

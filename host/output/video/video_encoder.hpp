@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #pragma once
 // Encoding frames into a video file in-process with FFmpeg's libraries (libavcodec, libavformat,
 // libswscale). The container comes from the file's extension (.mp4, .mkv, .webm, .gif, .webp,

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #include "output/video/video_frames.hpp"
 
 #include <spdlog/spdlog.h>

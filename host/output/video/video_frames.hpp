@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #pragma once
 // Rendering the frames of a video as `fgr render` renders stills (the same kernel switches, the
 // same non-finite check), but with the kernel built once for the whole video instead of per

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #include "output/video/video_render.hpp"
 
 #include <fmt/format.h>

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #pragma once
 // A video of a camera path, frame by frame: the view of each frame, rendering the frames and
 // writing them, in order, into the encoder and/or a sequence of frame files. Frame i is the still

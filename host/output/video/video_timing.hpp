@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #pragma once
 // Which moments of a camera path a video shows: frame i is the path at time start + i / fps, for
 // every i whose time falls before start + duration. The path's own clock is the keyframes' times

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #pragma once
 // What a render mode's host module does for Renderer: the kernel's own arguments (after the
 // FGR_RENDER_ARGS_COUNT every mode takes, see device/kernel_layout.hpp) and the planes it writes

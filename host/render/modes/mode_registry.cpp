@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Which host module serves which render mode.
 #include <array>
 #include <glm/geometric.hpp>

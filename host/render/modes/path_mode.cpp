@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #include "render/modes/path_mode.hpp"
 
 #include <algorithm>

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Render mode "shaded" (kernels/modes/fgr_mode_shaded.cl): its arguments are the scene's lights;
 // with stats it writes each pixel's march steps (nodes visited in IFS scenes), whether they ran
 // out, its secondary rays' DE evaluations and either its IFS heap's high-water mark or its packet's

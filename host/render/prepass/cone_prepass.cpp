@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #include "render/prepass/cone_prepass.hpp"
 
 #include <numeric>

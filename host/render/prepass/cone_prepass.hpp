@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #pragma once
 // The cone-marched depth prepass (kernels/geometry/fgr_prepass.cl) for Renderer: one cone per block
 // of FGR_PREPASS_BLOCK x FGR_PREPASS_BLOCK pixels finds how far the block's camera rays can start

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #pragma once
 // Temporal reprojection of a frame's depths into the next view: where the previous frame saw the
 // surface, seen from the new camera, gives each new pixel a hint of how far its camera ray can

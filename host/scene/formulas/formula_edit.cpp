@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Edits of a formula scene's sequence (scene/formulas/formula_edit.hpp).
 #include "scene/formulas/formula_edit.hpp"
 

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #pragma once
 // Edits of a formula scene's sequence, as the viewer's hybrid editor makes them: add a formula,
 // remove, move or repeat a slot. Each returns the edited scene, whose settings that follow from

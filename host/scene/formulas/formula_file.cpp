@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Formula scene files (`NAME.formula.json`): reading and checking. The format is in sdk/README.md
 // ("Formula scenes and hybrids"); what it shares with IFS files (header, cameras, paths, lights)
 // is read by scene_json.

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // The formula library's table: what each kernels/fractals/formulas/<family>.cl function takes,
 // where it comes from, and what its scene starts with. The kernel function's arguments after (z, w,
 // dr, c) are its params in this order (then the rotation, for those that have one).

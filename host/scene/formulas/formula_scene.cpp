@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // A formula scene as the host renders it: its parameters and the OpenCL source written from the
 // sequence (scene/formulas/formulas.hpp).
 #include <fmt/format.h>

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #pragma once
 // The formula library and formula scenes. A formula is one step of an escape-time iteration,
 // formula_NAME(&z, &w, &dr, c, parameters...) in kernels/fractals/formulas/<family>.cl; a formula

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #pragma once
 // IFS scenes: fractals given as iterated function systems of affine maps, read from JSON files
 // (`*.ifs.json` in any plugin folder) and rendered exactly by ray tracing the hierarchy of

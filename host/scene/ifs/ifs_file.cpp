@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // IFS scene files (`NAME.ifs.json`): reading, validating, and the bounding sphere of the maps.
 // The format is documented in sdk/README.md ("IFS scenes").
 #include <fmt/format.h>

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // An IFS file's scene as the rest of fgr sees it: a Scene with the maps attached (Scene::ifs), the
 // depth slider, and kernel source generated from the maps (ifs_source.hpp).
 #include <algorithm>

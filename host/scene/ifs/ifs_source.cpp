@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Generated OpenCL C for IFS scenes: the maps as constant tables for kernels/geometry/fgr_ifs.cl.
 #include "scene/ifs/ifs_source.hpp"
 

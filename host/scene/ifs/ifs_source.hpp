@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #pragma once
 // The OpenCL C source an IFS scene hands the kernel assembly in place of a distance estimator.
 

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // The reference IFS ray tracer: kernels/geometry/fgr_ifs.cl's traversal in double precision, with
 // an unbounded heap, for tests and host-side queries.
 #include <algorithm>

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 /* fgr formula library: boxes. Folds (isometries), a sphere fold that inverts (its scale goes
  * into dr) and a scale, plus c: the orbit grows linearly once it escapes, so the distance is
  * r / |dr| (Tom Lowe's Mandelbox, fractalforums.com, 2010; the estimate as Rrrola and Tglad gave

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 /* fgr formula library: bulbs. Powers of triplex numbers and their relatives, iterated as
  * z <- f(z) + c from z = c. Every step here is a polynomial map of degree n, so an escaping orbit
  * grows like r^(n^k): the distance is the logarithmic estimate 0.5 log(r) r / dr, dr the running

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 /* fgr formula library: hypercomplex numbers. Four-dimensional algebras iterated from (c, 0), the
  * image their slice w = 0 (the fourth component, carried in w). Polynomial maps: the distance is
  * the logarithmic estimate with r the four-dimensional length (Hart, Sandin and Kauffman,

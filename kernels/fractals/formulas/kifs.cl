@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 /* fgr formula library: kaleidoscopic IFS (Knighty, "Kaleidoscopic (escape time) IFS",
  * fractalforums.com 2010). A fold into the symmetry group's fundamental region (an isometry), an
  * optional rotation, and a scale about a vertex: z <- s R fold(z) - offset (s - 1). No + c: the

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 /* fgr formula library: Kleinian-group limit sets, by folds and sphere inversions. Their
  * distances are to thin surfaces around the orbit's end, divided by how much the inversions
  * magnified space: each formula here names its own (formula_NAME_distance), which a scene uses

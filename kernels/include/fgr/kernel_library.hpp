@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #pragma once
 // The OpenCL C kernel library, embedded in the binary. A scene's program is
 //   switches + prelude files + parameter accessors + the formula families the scene calls

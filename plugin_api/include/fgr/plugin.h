@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 /*
  * fgr scene plugin ABI, version 1 (minor 5: see FGR_ABI_VERSION_MINOR and plugin_api/ABI.md).
  *

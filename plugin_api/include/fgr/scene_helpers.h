@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 /*
  * Conveniences for writing scene descriptions in C: initialisers for the common structs. Not part
  * of the ABI contract itself (they only expand to fgr/plugin.h initialisers); C11 and C++.

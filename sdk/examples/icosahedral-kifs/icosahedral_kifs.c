@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 /* The SDK guide's iterate-function example: an icosahedral kaleidoscopic IFS with a rotation in
  * the loop. The DE is in icosahedral_kifs.cl; this file describes parameters, cameras, a path,
  * lights and effects. */

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 /* Icosahedral kaleidoscopic IFS (after Knighty): fold space into one of the 120 mirror images
  * the icosahedron's symmetry divides it into, turn it, blow it up about the icosahedron's vertex;
  * repeat. Folds and turns are isometries and dr undoes the blow-ups, so (|z| - 1) / dr is a lower

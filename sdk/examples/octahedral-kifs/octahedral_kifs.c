@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 /* The SDK guide's worked example: an octahedral kaleidoscopic IFS. The DE is in
  * octahedral_kifs.cl; this file describes parameters, cameras, a path, lights and effects. */
 #include "fgr/scene_helpers.h"

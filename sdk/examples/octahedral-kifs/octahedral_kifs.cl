@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 /* Octahedral kaleidoscopic IFS (after Knighty's KIFS family): six half-size octahedra at the
  * vertices of an octahedron, each made of six smaller ones, and so on; a twist per level turns it
  * into a coral of crystals.

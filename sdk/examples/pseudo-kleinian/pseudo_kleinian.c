@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 /* The SDK guide's second iterate-function example: Knighty's pseudo-Kleinian. The DE is in
  * pseudo_kleinian.cl; this file describes parameters, cameras, a path, lights and effects. */
 #include "fgr/scene_helpers.h"

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 /* Knighty's pseudo-Kleinian: a box fold and an inversion in a sphere, repeated, approximate the
  * limit set of a Kleinian group; the distance is to a thin surface around the orbit's end, divided
  * by how much the inversions magnified space. */
