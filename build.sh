@@ -74,6 +74,9 @@ clean_root_packages=(
     ocl-icd-libopencl1 pocl-opencl-icd libspdlog1.10 libfmt9 libpng16-16 libtiff6 zlib1g
     libopenexr-3-1-30 libstb0 cmake make gcc libc6-dev
 )
+# And what a user's system has that the test uses to read the man page and complete a command
+# line; installed as wanted (not as dependencies), so the autoremove check leaves them alone.
+clean_root_tools=(man-db bash-completion)
 debian_mirror=${DEBIAN_MIRROR:-http://deb.debian.org/debian}
 debian_security_mirror=${DEBIAN_SECURITY_MIRROR:-http://deb.debian.org/debian-security}
 
@@ -128,7 +131,7 @@ prepare_clean_root() {
     local dir=$1
     install_missing_packages "${clean_root_packages_tools[@]}"
     mmdebstrap --mode=root --variant=apt --skip=cleanup/apt/lists \
-        --include="$(IFS=,; echo "${clean_root_packages[*]}")" \
+        --include="$(IFS=,; echo "${clean_root_packages[*]}" "${clean_root_tools[*]}" | tr ' ' ,)" \
         --customize-hook="chroot \"\$1\" apt-mark auto ${clean_root_packages[*]} > /dev/null" \
         bookworm "$dir" \
         "deb $debian_mirror bookworm main" "deb $debian_mirror bookworm-updates main" \

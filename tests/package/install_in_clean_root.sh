@@ -18,8 +18,9 @@
 #     Depends missing from a package shows here
 #   - apt resolves fgr-viewer, fgr-video and fgr-mpi too (--simulate: nothing downloaded)
 #   - inside the root: `fgr list` lists mandelbulb, `fgr render mandelbulb` writes a PNG that is not
-#     a blank image, `fgr new-scene` + cmake build a scene out of tree against the installed
-#     fgr-sdk (find_package(fgr)), and fgr renders it by path
+#     a blank image, `man fgr` shows the page, bash-completion loads fgr's script and completes a
+#     scene id, `fgr new-scene` + cmake build a scene out of tree against the installed fgr-sdk
+#     (find_package(fgr)), and fgr renders it by path
 #
 # Runs as root (chroot). The chroot gets /proc, /sys and /dev/shm in a private mount namespace,
 # gone when each command ends, so nothing stays mounted in ROOT.
@@ -111,14 +112,35 @@ done
 step "fgr list, fgr render mandelbulb"
 in_root fgr list > "$root/tmp/list.txt" 2>&1 || { cat "$root/tmp/list.txt"; fail "fgr list"; }
 grep -qw mandelbulb "$root/tmp/list.txt" || { cat "$root/tmp/list.txt"; fail "fgr list does not list mandelbulb"; }
-in_root sh -c 'cd /tmp && fgr render mandelbulb -o mandelbulb.png --width 160 --height 120' \
+in_root sh -c 'cd /tmp && fgr render mandelbulb -o mandelbulb.png' \
     > "$root/tmp/render.txt" 2>&1 || { cat "$root/tmp/render.txt"; fail "fgr render mandelbulb"; }
 png=$root/tmp/mandelbulb.png
 [[ -f $png ]] || fail "fgr render wrote no mandelbulb.png"
-# A blank 160x120 image compresses to well under a kilobyte; the Mandelbulb takes tens.
+# A blank 640x480 image compresses to a few kilobytes; the Mandelbulb takes a hundred or more.
 size=$(stat -c %s "$png")
-((size > 4000)) || fail "mandelbulb.png is $size bytes: a blank image?"
+((size > 20000)) || fail "mandelbulb.png is $size bytes: a blank image?"
 echo "mandelbulb.png: $size bytes"
+
+step "man fgr, and bash completing a scene id"
+# The root has man-db and bash-completion as a user's system would (build.sh's clean_root_tools).
+in_root sh -c 'MANPAGER=cat MANWIDTH=100 man fgr' > "$root/tmp/man.txt" 2> "$root/tmp/man-errors.txt" ||
+    { cat "$root/tmp/man-errors.txt"; fail "man fgr"; }
+for section in NAME SYNOPSIS COMMANDS; do
+    grep -q "^$section" "$root/tmp/man.txt" || fail "man fgr has no $section section"
+done
+grep -q "fgr render" "$root/tmp/man.txt" || fail "man fgr does not describe fgr render"
+# bash-completion finds fgr's script where the package put it, on first use, as an
+# interactive shell would; the function it registers completes a scene id from `fgr list --ids`.
+in_root bash -c 'source /usr/share/bash-completion/bash_completion
+    __load_completion fgr || exit 3
+    function=$(complete -p fgr | sed -E "s/.* -F ([^ ]+) .*/\1/")
+    COMP_WORDS=(fgr render mandel); COMP_CWORD=2; COMP_LINE="fgr render mandel"
+    COMP_POINT=${#COMP_LINE}
+    "$function" fgr mandel render
+    printf "%s\n" "${COMPREPLY[@]}"' > "$root/tmp/completion.txt" 2>&1 ||
+    { cat "$root/tmp/completion.txt"; fail "bash-completion does not load fgr's completion"; }
+grep -qx mandelbulb "$root/tmp/completion.txt" ||
+    { cat "$root/tmp/completion.txt"; fail "bash does not complete 'fgr render mandel' to mandelbulb"; }
 
 step "a scene built against the installed fgr-sdk, rendered by path"
 in_root sh -ec 'cd /tmp && fgr new-scene my-scene > /dev/null &&
