@@ -120,6 +120,8 @@ int run_cli(int argc, char** argv) {
         return report_error(invalid_value_message(error), kExitUsage);
     } catch (const CLI::ExtrasError& error) {
         return report_error(unexpected_arguments_message(app, error), kExitUsage);
+    } catch (const CLI::RequiredError& error) {
+        return report_error(required_option_message(app, error), kExitUsage);
     } catch (const CLI::ParseError& error) {
         return report_error(error.what(), kExitUsage);
     }

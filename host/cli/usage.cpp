@@ -276,4 +276,10 @@ std::string unexpected_arguments_message(const CLI::App& app, const CLI::ExtrasE
                    : fmt::format("{} (`{} --help` lists its options)", unknown, name);
 }
 
+std::string required_option_message(const CLI::App& app, const CLI::RequiredError& error) {
+    const std::vector<std::string> unexpected = command_parsed(app)->remaining();
+    if (unexpected.empty()) return error.what();
+    return unexpected_arguments_message(app, CLI::ExtrasError(unexpected));
+}
+
 }  // namespace fgr

@@ -30,6 +30,10 @@ std::string unknown_command_message(const CLI::App& app, const std::string& type
 // CLI11's "The following arguments were not expected: ..." as fgr says it, for the command being
 // parsed: "unknown option '--widht' for `fgr render`; did you mean '--width'?".
 std::string unexpected_arguments_message(const CLI::App& app, const CLI::ExtrasError& error);
+// CLI11 checks required options before it refuses unknown ones, so `fgr render mandelbulb --widht
+// 8` would hear only that --output is required: an argument the command does not take, if any, is
+// named first (as unexpected_arguments_message does), since it is likely what was meant.
+std::string required_option_message(const CLI::App& app, const CLI::RequiredError& error);
 
 // CLI11's message for a value outside an option's choices ("--mode: pth not in
 // {shaded,path,brute}") with the nearest choice offered.

@@ -129,6 +129,10 @@ TEST_F(Usage, MistypedNamesOfferTheNearestOne) {
               "fgr: error: unknown scene 'zzz' (`fgr list` lists the scenes)");
     EXPECT_EQ(usage_error({"render", "mandelbulb", "-o", o, "--widht", "8"}),
               "fgr: error: unknown option '--widht' for `fgr render`; did you mean '--width'?");
+    // The mistyped option, not the --output it left out, is what the user needs to hear first.
+    EXPECT_EQ(usage_error({"render", "mandelbulb", "--widht", "8"}),
+              "fgr: error: unknown option '--widht' for `fgr render`; did you mean '--width'?");
+    EXPECT_EQ(usage_error({"render", "mandelbulb"}), "fgr: error: --output is required");
     EXPECT_EQ(usage_error({"cache", "clera"}),
               "fgr: error: unknown command 'clera' for `fgr cache`; did you mean 'clear'?");
     // An option of the command above, typed after the one below.
