@@ -17,6 +17,7 @@
 #include "commands.hpp"
 #include "device/cache_directory.hpp"
 #include "scene/kernel_api.hpp"
+#include "util/strings.hpp"
 #include "util/version.hpp"
 
 namespace fgr {
@@ -25,17 +26,6 @@ namespace fgr {
 namespace cli_reference {
 
 // --- Reading the App tree ------------------------------------------------------------------------
-
-std::vector<std::string> split(std::string_view text, char separator) {
-    std::vector<std::string> parts;
-    std::size_t start = 0;
-    while (true) {
-        const std::size_t end = text.find(separator, start);
-        parts.emplace_back(text.substr(start, end - start));
-        if (end == std::string_view::npos) return parts;
-        start = end + 1;
-    }
-}
 
 bool has_name(const CliOption& option, std::string_view name) {
     return std::find(option.names.begin(), option.names.end(), name) != option.names.end();

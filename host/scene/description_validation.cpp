@@ -24,6 +24,7 @@
 #include "scene/ifs/ifs.hpp"
 #include "scene/kernel_api.hpp"
 #include "scene/render_mode.hpp"
+#include "util/strings.hpp"
 
 namespace fgr {
 namespace {
@@ -133,17 +134,6 @@ bool is_name(std::string_view name) {
     if (name.empty() || name.size() > kMaxIdLength) return false;
     return std::all_of(name.begin(), name.end(),
                        [](char c) { return is_lower_or_digit(c) || c == '_' || c == '-'; });
-}
-
-std::vector<std::string> split(std::string_view text, char separator) {
-    std::vector<std::string> parts;
-    std::size_t start = 0;
-    while (true) {
-        const std::size_t end = text.find(separator, start);
-        parts.emplace_back(text.substr(start, end - start));
-        if (end == std::string_view::npos) return parts;
-        start = end + 1;
-    }
 }
 
 // --- Numbers -------------------------------------------------------------------------------------

@@ -1,9 +1,11 @@
 // SPDX-License-Identifier: Apache-2.0
 #pragma once
-// Text for one-line messages: a path as messages quote it.
+// Text helpers: a path as messages quote it, a list split at its separators.
 
 #include <filesystem>
 #include <string>
+#include <string_view>
+#include <vector>
 
 namespace fgr {
 
@@ -16,6 +18,18 @@ inline std::string quoted(const std::filesystem::path& path) {
     text += path.native();
     text += '\'';
     return text;
+}
+
+// The pieces of `text` between each `separator`, empty ones kept: "a,,b" gives "a", "", "b".
+inline std::vector<std::string> split(std::string_view text, char separator) {
+    std::vector<std::string> parts;
+    std::size_t start = 0;
+    while (true) {
+        const std::size_t end = text.find(separator, start);
+        parts.emplace_back(text.substr(start, end - start));
+        if (end == std::string_view::npos) return parts;
+        start = end + 1;
+    }
 }
 
 }  // namespace fgr
