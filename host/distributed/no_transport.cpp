@@ -11,7 +11,8 @@ std::unique_ptr<Transport> join_transport(int*, char***, Membership& membership)
         membership.rank = launcher_world_rank();
         membership.unavailable =
             "this fgr was built without MPI, so it cannot share a render between mpirun's ranks "
-            "(install libopenmpi-dev and rebuild; see the README)";
+            "(install libopenmpi-dev and build with -DFGR_MPI=ON, or install the packages fgr and "
+            "fgr-mpi)";
     }
     return nullptr;
 }

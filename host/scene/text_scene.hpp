@@ -4,7 +4,7 @@
 // blank space) with a block comment whose first word is `fgr-scene` and whose rest is a JSON
 // object describing the scene as a plugin's fgr_scene_desc does; the whole file, that comment
 // included, is the scene's source, so the OpenCL compiler's line numbers are the file's (the SDK
-// guide, sdk/README.md, "A scene in ten lines of text"). The header is turned into an
+// guide's page docs/sdk/text-scenes.md). The header is turned into an
 // fgr_scene_desc and checked by copy_scene_description, so a text scene is refused exactly as a
 // plugin with the same description would be.
 

@@ -32,7 +32,7 @@
  * parentheses pass through.)
  *
  * Cost: the step is the loop's body, so the scene compiles to the loop one would write out by
- * hand in packet form, and costs the same (README: "Scene authoring cost"). A constant
+ * hand in packet form, and costs the same (docs/performance.md, "Scene authoring cost"). A constant
  * FGR_NO_BAILOUT removes the bailout test and its masks from the loop altogether. */
 
 #if FGR_KERNEL_API >= 2

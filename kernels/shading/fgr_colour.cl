@@ -14,7 +14,7 @@
  *     #define FGR_SCENE_HAS_COLOUR
  *     FGR_TRAP_COLOURED_SCENE(iterate)
  *
- * declaring the parameters with FGR_COLOUR_PARAMS (see sdk/README.md):
+ * declaring the parameters with FGR_COLOUR_PARAMS (see docs/sdk/describing.md):
  *   colour_mode  point|planes|axes|iterations  which trap drives the palette
  *   palette      one of FGR_PALETTE_NAMES        the colour ramp
  *   base_colour  colour                          multiplies the palette (the scene's own tint)

@@ -39,7 +39,7 @@ void take_slot_values(FormulaScene& scene, const Scene& running, const std::vect
 std::vector<float> values_after_edit(const Scene& before, const std::vector<float>& values,
                                      const Scene& after, const FormulaScene& edited);
 
-// The scene as a formula file (sdk/README.md "Formula scenes and hybrids") that reads back as the
+// The scene as a formula file (docs/sdk/formulas.md) that reads back as the
 // same sequence, settings, cameras, paths and lights: every value written, the distance and
 // estimate only where the sequence would not give them by itself; its "$schema" the schema beside
 // the running executable (util/installed_files.hpp).

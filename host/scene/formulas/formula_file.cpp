@@ -1,6 +1,6 @@
 // SPDX-License-Identifier: Apache-2.0
-// Formula scene files (`NAME.formula.json`): reading and checking. The format is in sdk/README.md
-// ("Formula scenes and hybrids"); what it shares with IFS files (header, cameras, paths, lights)
+// Formula scene files (`NAME.formula.json`): reading and checking. The format is in
+// docs/sdk/formulas.md; what it shares with IFS files (header, cameras, paths, lights)
 // is read by scene_json.
 #include <fmt/format.h>
 

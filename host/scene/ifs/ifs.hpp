@@ -96,12 +96,13 @@ IfsScene parse_ifs_json(const std::string& text, const std::string& origin);
 IfsScene read_ifs_file(const std::filesystem::path& file);
 
 // Checks an IFS scene's maps and depths, wherever they came from (an IFS file or a plugin's
-// fgr_ifs_map array), as sdk/README.md's "Validation" says: 1 to kIfsMaxMaps maps, each with finite
-// numbers of at most 1e6 in size, colour components in [0, 1], contractive (largest singular value
-// below 1) and invertible (smallest above 1e-9 times the largest); depths in [0, kIfsMaxDepth] with
-// the default at most the maximum. Sets each map's `contraction` and the scene's `bounds`
-// (ifs_bounding_sphere), which must stay within 1e5 of the origin. Throws IfsError with a one-line
-// reason that names the map ("<map_word> 2 is not contractive (...)") but no file: callers add it.
+// fgr_ifs_map array), as docs/sdk/ifs.md's "Validation" says: 1 to kIfsMaxMaps maps, each with
+// finite numbers of at most 1e6 in size, colour components in [0, 1], contractive (largest singular
+// value below 1) and invertible (smallest above 1e-9 times the largest); depths in [0,
+// kIfsMaxDepth] with the default at most the maximum. Sets each map's `contraction` and the scene's
+// `bounds` (ifs_bounding_sphere), which must stay within 1e5 of the origin. Throws IfsError with a
+// one-line reason that names the map ("<map_word> 2 is not contractive (...)") but no file: callers
+// add it.
 void validate_ifs_maps(IfsScene& scene, std::string_view map_word = "map");
 
 // Sets the depth slider's default and maximum from what a file or plugin gave, either, both or

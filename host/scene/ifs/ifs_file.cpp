@@ -1,6 +1,6 @@
 // SPDX-License-Identifier: Apache-2.0
 // IFS scene files (`NAME.ifs.json`): reading, validating, and the bounding sphere of the maps.
-// The format is documented in sdk/README.md ("IFS scenes").
+// The format is documented in docs/sdk/ifs.md.
 #include <fmt/format.h>
 
 #include <algorithm>
