@@ -54,10 +54,10 @@ build_packages=(
 # shares a render between ranks, and the tests run that), Mesa's software rasteriser under the
 # virtual X server the viewer tests run in, clinfo and gnuplot for the benchmark scripts,
 # clang-format for the style check, jsonschema for the schemas' check, and groff to check the man
-# page for warnings.
+# page for warnings, and zsh to check its completion script.
 test_packages=(
     libgtest-dev libopenmpi-dev openmpi-bin libgl1-mesa-dri xvfb xauth clinfo gnuplot-nox
-    clang-format python3-jsonschema groff-base
+    clang-format python3-jsonschema groff-base zsh
 )
 # And to build the documentation site: MkDocs (Debian 12 has 1.4, with its themes).
 docs_packages=(mkdocs)

@@ -201,9 +201,8 @@ TEST_F(BashCompletionTest, SceneArgumentsCompleteSceneFilesAndDirectories) {
 
 TEST_F(ReferenceTest, ZshCompletionScriptIsValidZsh) {
     const fs::path zsh = on_path("zsh");
-    // zsh is not among the test packages (installing it costs CI more than this check is worth):
-    // the check runs where zsh is installed.
-    if (zsh.empty()) GTEST_SKIP() << "no zsh";
+    // zsh is a test package (build.sh): a check that quietly skipped would never run in CI.
+    ASSERT_FALSE(zsh.empty()) << "zsh not found: it is one of the test packages build.sh installs";
     const fs::path script = written({"completion", "zsh"}, "_fgr");
     const RunResult result = test::run_child(zsh, {"-n", script.string()}, {});
     EXPECT_TRUE(result.exited && result.exit_code == 0 && result.err.empty()) << result;
@@ -217,9 +216,12 @@ TEST_F(ReferenceTest, ZshCompletionScriptIsValidZsh) {
 // --- The man page --------------------------------------------------------------------------------
 
 // groff's warnings (all of them: -ww) about a man page, or nothing when groff is missing.
-std::optional<std::string> groff_warnings(const fs::path& page) {
+// groff and zsh are test packages (build.sh): the checks that need them fail without them rather
+// than skip, so they cannot quietly stop running in CI.
+std::string groff_warnings(const fs::path& page) {
     const fs::path groff = on_path("groff");
-    if (groff.empty()) return std::nullopt;
+    EXPECT_FALSE(groff.empty()) << "groff not found: groff-base is one of the test packages";
+    if (groff.empty()) return "no groff";
     const RunResult result = test::run_child(groff, {"-man", "-ww", "-z", page.string()}, {});
     EXPECT_TRUE(result.exited && result.exit_code == 0) << result;
     return result.err;
@@ -236,9 +238,7 @@ TEST_F(ReferenceTest, ManPageHasItsSectionsAndRendersWithoutWarnings) {
     EXPECT_NE(text.find(".SS \"fgr render"), std::string::npos);
     EXPECT_NE(text.find("\\fB\\-\\-width\\fR"), std::string::npos);
     EXPECT_NE(text.find("FGR_PLUGIN_PATH"), std::string::npos);
-    const std::optional<std::string> warnings = groff_warnings(page);
-    if (!warnings) GTEST_SKIP() << "no groff";
-    EXPECT_EQ(*warnings, "");
+    EXPECT_EQ(groff_warnings(page), "");
 }
 
 // Text that roff and the shells read as syntax stays text: dashes, a leading dot or quote,
@@ -263,9 +263,7 @@ TEST(ReferenceEscaping, AwkwardDescriptionsStayText) {
     EXPECT_EQ(page.find("never shown"), std::string::npos);
     test::TempDir dir("fgr_reference_escaping");
     test::write_text(dir.path() / "odd.1", page);
-    if (const std::optional<std::string> warnings = groff_warnings(dir.path() / "odd.1")) {
-        EXPECT_EQ(*warnings, "") << page;
-    }
+    EXPECT_EQ(groff_warnings(dir.path() / "odd.1"), "") << page;
 
     const std::string markdown = cli_reference_markdown(top);
     EXPECT_NE(markdown.find("## fgr odd-one"), std::string::npos);
@@ -274,7 +272,7 @@ TEST(ReferenceEscaping, AwkwardDescriptionsStayText) {
     for (const auto& [shell, script] : {std::pair{"bash", bash_completion_script(top)},
                                         std::pair{"zsh", zsh_completion_script(top)}}) {
         const fs::path program = on_path(shell);
-        if (program.empty()) continue;
+        ASSERT_FALSE(program.empty()) << shell << " not found: it is one of the test packages";
         const fs::path file = dir.path() / fmt::format("completion.{}", shell);
         test::write_text(file, script);
         const RunResult result = test::run_child(program, {"-n", file.string()}, {});
