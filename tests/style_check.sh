@@ -2,7 +2,7 @@
 # SPDX-License-Identifier: Apache-2.0
 # style_check.sh REPO: the style the tree keeps (.clang-format, ../shared/STYLE.md), checked so a
 # change that breaks it fails. Prints every offence and exits 1, or exits 0 when there is none:
-#   - C and C++ sources are as clang-format writes them (includes sorted, 100 columns);
+#   - C, C++ and OpenCL C sources are as clang-format writes them (includes sorted, 100 columns);
 #   - no C, C++ or OpenCL C line is over 100 columns;
 #   - comments and user docs say why, not when: no "issue N" (git log keeps the history);
 #   - every source file carries its SPDX licence line;
@@ -17,11 +17,11 @@ failures=0
 
 report=$(mktemp)
 trap 'rm -f "$report"' EXIT
-mapfile -t sources < <(git ls-files '*.c' '*.h' '*.cpp' '*.hpp' | grep -Ev "$frozen")
+mapfile -t sources < <(git ls-files '*.c' '*.h' '*.cpp' '*.hpp' '*.cl' | grep -Ev "$frozen")
 if ! clang-format --dry-run --Werror "${sources[@]}" 2>"$report"; then
     grep -E '^[^ ].*(warning|error):' "$report" | head -n 40 || true
     echo "clang-format would change $(grep -c 'error:' "$report") places: run"
-    echo "  clang-format -i \$(git ls-files '*.c' '*.h' '*.cpp' '*.hpp' | grep -Ev '$frozen')"
+    echo "  clang-format -i \$(git ls-files '*.c' '*.h' '*.cpp' '*.hpp' '*.cl' | grep -Ev '$frozen')"
     failures=$((failures + 1))
 fi
 

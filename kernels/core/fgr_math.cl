@@ -59,13 +59,14 @@ inline real fgr_sin_cos_float(real x, int want_cos) {
     const mask octant_of = convert_mask(ax * 1.27323954473516f); /* 4 / pi, truncated */
     const mask even = octant_of + (octant_of & 1); /* the remainder lies in [-pi/4, pi/4] */
     const real j = convert_real(even);
-    const real r = ((ax - j * 0.78515625f) - j * 2.4187564849853515625e-4f) -
-                   j * 3.77489497744594108e-8f;
+    const real r =
+        ((ax - j * 0.78515625f) - j * 2.4187564849853515625e-4f) - j * 3.77489497744594108e-8f;
     const real z = r * r;
     const real sin_r =
         ((-1.9515295891e-4f * z + 8.3321608736e-3f) * z - 1.6666654611e-1f) * z * r + r;
-    const real cos_r = ((2.443315711809948e-5f * z - 1.388731625493765e-3f) * z +
-                        4.166664568298827e-2f) * z * z - 0.5f * z + 1.0f;
+    const real cos_r =
+        ((2.443315711809948e-5f * z - 1.388731625493765e-3f) * z + 4.166664568298827e-2f) * z * z -
+        0.5f * z + 1.0f;
     /* By octant 0, 2, 4, 6, sin(ax) is sin_r, cos_r, -sin_r, -cos_r; cos(ax) two octants on. */
     const mask turn = (even + (want_cos ? 2 : 0)) & 7;
     const real value = select(sin_r, cos_r, (turn == 2) | (turn == 6));

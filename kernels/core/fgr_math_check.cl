@@ -23,17 +23,17 @@ typedef FGR_LANES(float, double) lane_scalar;
  * takes a fraction of a second.) One work-item per group keeps PoCL from compiling a work-item
  * loop around each. Kernel names: keep in step with host/device/math_check.cpp; arguments in the
  * order of FGR_MATH_CHECK_ARG_* (shared/fgr_layout_arguments.h). */
-#define FGR_CHECK_KERNEL(name, expression)                                                      \
-    __kernel __attribute__((reqd_work_group_size(1, 1, 1))) void fgr_check_##name(             \
+#define FGR_CHECK_KERNEL(name, expression)                                                       \
+    __kernel __attribute__((reqd_work_group_size(1, 1, 1))) void fgr_check_##name(               \
         __global const lane_scalar* a, __global const lane_scalar* b, __global lane_scalar* out, \
-        int first_case) {                                                                       \
-        const int c = first_case + (int)get_global_id(0);                                       \
-        const real x = load_lanes(c, a);                                                        \
-        const real y = load_lanes(c, b);                                                        \
-        real result = expression;                                                               \
-        (void)y;                                                                                \
-        FGR_CHECK_FAULT_##name;                                                                 \
-        store_lanes(result, c, out);                                                            \
+        int first_case) {                                                                        \
+        const int c = first_case + (int)get_global_id(0);                                        \
+        const real x = load_lanes(c, a);                                                         \
+        const real y = load_lanes(c, b);                                                         \
+        real result = expression;                                                                \
+        (void)y;                                                                                 \
+        FGR_CHECK_FAULT_##name;                                                                  \
+        store_lanes(result, c, out);                                                             \
     }
 
 /* A planted fault for the self-test's own test: exp's first two lanes trade places. */

@@ -82,21 +82,21 @@ inline vec3 bulb_power_real(vec3 z, real r, real r_n, float n, int latitude_form
 
 /* One Mandelbulb iteration for the lanes still inside the bailout: z -> z^power + p and the
  * running derivative, with integer_power choosing the trigonometry-free form. */
-#define FGR_BULB_ITERATE(integer_power)                                                    \
-    do {                                                                                   \
-        real r_pow;                                                                        \
-        vec3 z_n;                                                                          \
-        if (integer_power) {                                                               \
-            r_pow = fgr_pown(r, (int)power - 1);                                           \
-            z_n = bulb_power_integer(z, r, r_pow * r, (int)power, latitude_form);          \
-        } else {                                                                           \
-            r_pow = fgr_pow(r, fgr_real(power - 1.0f));                                    \
-            z_n = bulb_power_real(z, r, r_pow * r, power, latitude_form);                  \
-        }                                                                                  \
-        dr = select(dr, power * r_pow * dr + 1.0f, active);                                \
-        z = v3_select(z, v3_add(z_n, p), active);                                          \
-        r = v3_length(z);                                                                  \
-        if (record) *trap = trap_update(*trap, z, active);                                 \
+#define FGR_BULB_ITERATE(integer_power)                                           \
+    do {                                                                          \
+        real r_pow;                                                               \
+        vec3 z_n;                                                                 \
+        if (integer_power) {                                                      \
+            r_pow = fgr_pown(r, (int)power - 1);                                  \
+            z_n = bulb_power_integer(z, r, r_pow * r, (int)power, latitude_form); \
+        } else {                                                                  \
+            r_pow = fgr_pow(r, fgr_real(power - 1.0f));                           \
+            z_n = bulb_power_real(z, r, r_pow * r, power, latitude_form);         \
+        }                                                                         \
+        dr = select(dr, power * r_pow * dr + 1.0f, active);                       \
+        z = v3_select(z, v3_add(z_n, p), active);                                 \
+        r = v3_length(z);                                                         \
+        if (record) *trap = trap_update(*trap, z, active);                        \
     } while (0)
 
 /* The Mandelbulb's distance estimate at p: iterates z -> z^power + p at most `iterations` times
@@ -125,4 +125,3 @@ inline real mandelbulb_de(vec3 p, float power, float bailout, int iterations, in
     /* r = 0 never escapes (the origin is inside): distance 0, never log(0) * 0 = NaN. */
     return select(0.5f * log(r) * r / dr, fgr_real(0.0f), r <= 0.0f);
 }
-

@@ -52,26 +52,25 @@
 /* Lanes whose |z| passed the bailout keep their z and dr (an escaped orbit's distance is read
  * where it escaped). `!(r2 > bailout2)` rather than `r2 <= bailout2`: with a constant infinite
  * bailout the compiler sees an always-true mask and drops the bookkeeping. */
-#define FGR_ITERATE                                                                             \
-        for (int i = 0; i < fgr_iterations; ++i) {                                             \
-            const mask fgr_active = !(v3_length2(z) > fgr_bailout2);                           \
-            if (!fgr_any(fgr_active)) break;                                                   \
-            const vec3 fgr_z_before = z;                                                       \
-            const real fgr_dr_before = dr;                                                     \
-            {
-
-#define FGR_DISTANCE(distance)                                                                  \
-            }                                                                                  \
-            z = v3_select(fgr_z_before, z, fgr_active);                                        \
-            dr = select(fgr_dr_before, dr, fgr_active);                                        \
-            if (fgr_record) *fgr_trap = trap_update(*fgr_trap, z, fgr_active);                 \
-        }                                                                                      \
-        return (distance);                                                                     \
-    }                                                                                          \
-    real scene_de(vec3 p, PARAMS) {                                                            \
-        orbit_trap unused;                                                                     \
-        return fgr_scene_orbit(p, PARAMS_PASS, 0, &unused);                                    \
-    }                                                                                          \
+#define FGR_ITERATE                                              \
+    for (int i = 0; i < fgr_iterations; ++i) {                   \
+        const mask fgr_active = !(v3_length2(z) > fgr_bailout2); \
+        if (!fgr_any(fgr_active)) break;                         \
+        const vec3 fgr_z_before = z;                             \
+        const real fgr_dr_before = dr;                           \
+        {
+#define FGR_DISTANCE(distance)                                         \
+    }                                                                  \
+    z = v3_select(fgr_z_before, z, fgr_active);                        \
+    dr = select(fgr_dr_before, dr, fgr_active);                        \
+    if (fgr_record) *fgr_trap = trap_update(*fgr_trap, z, fgr_active); \
+    }                                                                  \
+    return (distance);                                                 \
+    }                                                                  \
+    real scene_de(vec3 p, PARAMS) {                                    \
+        orbit_trap unused;                                             \
+        return fgr_scene_orbit(p, PARAMS_PASS, 0, &unused);            \
+    }                                                                  \
     FGR_PASTE(FGR_ORBIT_COLOUR_, FGR_SCENE_HAS_COLOUR)(fgr_scene_orbit)
 
 /* scene_colour from the orbit when the scene said `#define FGR_SCENE_HAS_COLOUR` (empty, or 1):

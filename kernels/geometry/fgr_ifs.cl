@@ -53,16 +53,16 @@ typedef struct ifs_node {
     ifs_real entry; /* where the ray enters the node's ellipsoid (may be < 0: it starts inside) */
     ifs_real size;  /* an upper bound of the ellipsoid's radius in world units */
     int depth;
-    int top;        /* the first map on the path from the root (-1 at the root): the colour */
-    ulong recent;   /* the last maps applied, newest in the low bits (10 of them) */
-    int resolved;   /* a leaf whose entry is where the ray meets its shape: the hit itself */
+    int top;      /* the first map on the path from the root (-1 at the root): the colour */
+    ulong recent; /* the last maps applied, newest in the low bits (10 of them) */
+    int resolved; /* a leaf whose entry is where the ray meets its shape: the hit itself */
 } ifs_node;
 
 /* What one lane's trace found. */
 typedef struct ifs_hit {
     ifs_real t;
     int hit;
-    int visited;    /* nodes taken out of the heap or stack */
+    int visited;   /* nodes taken out of the heap or stack */
     int heap_peak; /* most nodes the heap held (-1: it would have overflowed; traced depth first) */
     ifs_node leaf;
 } ifs_hit;
@@ -91,8 +91,8 @@ inline ifs_frame ifs_then(ifs_frame f, __constant const ifs_real* m) {
     then.row0 = (ifs_real3)(dot(r0, c0), dot(r0, c1), dot(r0, c2));
     then.row1 = (ifs_real3)(dot(r1, c0), dot(r1, c1), dot(r1, c2));
     then.row2 = (ifs_real3)(dot(r2, c0), dot(r2, c1), dot(r2, c2));
-    then.offset = (ifs_real3)(dot(r0, f.offset), dot(r1, f.offset), dot(r2, f.offset)) +
-                  ifs_table_row(m, 3);
+    then.offset =
+        (ifs_real3)(dot(r0, f.offset), dot(r1, f.offset), dot(r2, f.offset)) + ifs_table_row(m, 3);
     return then;
 }
 
@@ -317,9 +317,8 @@ inline ifs_hit ifs_trace_depth_first(ifs_real3 o, ifs_real3 d, ifs_real travelle
 
 /* A ray whose heap is full, traced again depth first (which needs no heap), counting the
  * `visited` nodes the heap had taken already. */
-inline ifs_hit ifs_retrace_depth_first(ifs_real3 o, ifs_real3 d, ifs_real travelled,
-                                       ifs_real reach, float footprint, int max_depth,
-                                       int max_nodes, int visited) {
+inline ifs_hit ifs_retrace_depth_first(ifs_real3 o, ifs_real3 d, ifs_real travelled, ifs_real reach,
+                                       float footprint, int max_depth, int max_nodes, int visited) {
     ifs_hit exact =
         ifs_trace_depth_first(o, d, travelled, reach, footprint, max_depth, max_nodes, 0);
     exact.visited += visited;
@@ -416,8 +415,7 @@ inline ifs_real3 ifs_ball_normal(ifs_node leaf, ifs_real3 hit_point) {
 
 /* The surface normal at a leaf hit: the face of the polytope the ray entered through (exact), or
  * for ball leaves the average of ifs_ball_normal. */
-inline ifs_real3 ifs_normal(ifs_node leaf, ifs_real3 o, ifs_real3 d, ifs_real t,
-                            int max_depth) {
+inline ifs_real3 ifs_normal(ifs_node leaf, ifs_real3 o, ifs_real3 d, ifs_real t, int max_depth) {
 #if FGR_IFS_LEAF_PLANES > 0
     if (!ifs_draws_polytope(leaf, max_depth)) return ifs_ball_normal(leaf, o + t * d);
     ifs_real entry;

@@ -50,11 +50,11 @@ typedef struct march_result {
 
 /* How far and how finely rays march: the built-in quality parameters, read once per kernel. */
 typedef struct march_limits {
-    float footprint;    /* hit when DE < footprint * t: hit_threshold * pixel_angle */
+    float footprint; /* hit when DE < footprint * t: hit_threshold * pixel_angle */
     int max_steps;
     float max_distance;
-    float step_factor;  /* rays advance step_factor * DE */
-    float relaxation;   /* over-relaxation: step_factor * DE * relaxation while it is safe */
+    float step_factor; /* rays advance step_factor * DE */
+    float relaxation;  /* over-relaxation: step_factor * DE * relaxation while it is safe */
 } march_limits;
 
 inline march_limits scene_march_limits(float pixel_angle, PARAMS) {
@@ -78,9 +78,8 @@ march_result ifs_trace_rays(vec3 origin, vec3 dir, mask active, real travelled, 
                             march_limits limits, int any_hit, PARAMS);
 #endif
 
-inline march_result march_rays_core(vec3 origin, vec3 dir, mask active, real start,
-                                    real travelled, real reach, march_limits limits,
-                                    int departing, PARAMS) {
+inline march_result march_rays_core(vec3 origin, vec3 dir, mask active, real start, real travelled,
+                                    real reach, march_limits limits, int departing, PARAMS) {
 #ifdef FGR_GEOMETRY_IFS
     (void)departing; /* an exact hit ahead of the origin never is the surface the ray leaves */
     (void)start;     /* the prepass never runs for IFS scenes */
@@ -157,10 +156,10 @@ inline march_result march_rays_core(vec3 origin, vec3 dir, mask active, real sta
              * step. */
             real travel = limits.step_factor * last_step;
             real fall = fmax(last_radius - radius, 0.0f);
-            real stride = (1.9f * radius - shrink) * travel /
-                          fmax(travel + fall, fgr_real(FGR_MIN_LENGTH));
-            stride = select(radius, clamp(stride, radius, radius * limits.relaxation),
-                            last_step > 0.0f);
+            real stride =
+                (1.9f * radius - shrink) * travel / fmax(travel + fall, fgr_real(FGR_MIN_LENGTH));
+            stride =
+                select(radius, clamp(stride, radius, radius * limits.relaxation), last_step > 0.0f);
             /* A stretched step is checked at the point it reaches, but a ray stops once past
              * `reach` (a shadow ray at its light): a stretch that would end there is never
              * checked and could jump an occluder just before the light, so it is taken plain. */
@@ -176,9 +175,9 @@ inline march_result march_rays_core(vec3 origin, vec3 dir, mask active, real sta
         }
         if (any_leaving && fgr_any(escaping & active)) {
             /* Still in the surface: out by |DE|, or at least the escape step, never relaxed. */
-            real escape = fmax(fabs(dist) * limits.step_factor,
-                               fmax(t_here * limits.footprint,
-                                    fgr_real(FGR_ESCAPE_STEP * limits.max_distance)));
+            real escape = fmax(
+                fabs(dist) * limits.step_factor,
+                fmax(t_here * limits.footprint, fgr_real(FGR_ESCAPE_STEP * limits.max_distance)));
             mask in_surface = escaping & active;
             result.t = select(result.t, t_here + escape, in_surface);
             last_step = select(last_step, fgr_real(0.0f), in_surface);
@@ -215,8 +214,8 @@ inline march_result march_rays_occluded(vec3 origin, vec3 dir, mask active, real
     (void)departing;
     return ifs_trace_rays(origin, dir, active, travelled, reach, limits, 1, PARAMS_PASS);
 #else
-    return march_rays_core(origin, dir, active, fgr_real(0.0f), travelled, reach, limits,
-                           departing, PARAMS_PASS);
+    return march_rays_core(origin, dir, active, fgr_real(0.0f), travelled, reach, limits, departing,
+                           PARAMS_PASS);
 #endif
 }
 

@@ -63,23 +63,20 @@ inline int prepass_blocks_y(camera_frame camera) {
 /* Where the rays of pixels (px, py) start their march: the prepass's distance for each lane's
  * block (0 where there was no prepass: the host fills the buffer with zeros). Lanes past the
  * region's edge read its last block. */
-inline real march_start_of(__global const float* starts, tile_pixels pixels,
-                           camera_frame camera) {
+inline real march_start_of(__global const float* starts, tile_pixels pixels, camera_frame camera) {
     const int blocks_x = prepass_blocks_x(camera), blocks_y = prepass_blocks_y(camera);
 #if FGR_WIDTH == 1
-    const int bx = min((int)pixels.px / FGR_PREPASS_BLOCK - prepass_first_block_x(camera),
-                       blocks_x - 1);
-    const int by = min((int)pixels.py / FGR_PREPASS_BLOCK - prepass_first_block_y(camera),
-                       blocks_y - 1);
+    const int bx =
+        min((int)pixels.px / FGR_PREPASS_BLOCK - prepass_first_block_x(camera), blocks_x - 1);
+    const int by =
+        min((int)pixels.py / FGR_PREPASS_BLOCK - prepass_first_block_y(camera), blocks_y - 1);
     return fgr_real(starts[by * blocks_x + bx]);
 #else
     real start;
     for (int lane = 0; lane < FGR_WIDTH; ++lane) {
-        const int bx = min((int)pixels.px[lane] / FGR_PREPASS_BLOCK -
-                               prepass_first_block_x(camera),
+        const int bx = min((int)pixels.px[lane] / FGR_PREPASS_BLOCK - prepass_first_block_x(camera),
                            blocks_x - 1);
-        const int by = min((int)pixels.py[lane] / FGR_PREPASS_BLOCK -
-                               prepass_first_block_y(camera),
+        const int by = min((int)pixels.py[lane] / FGR_PREPASS_BLOCK - prepass_first_block_y(camera),
                            blocks_y - 1);
         start[lane] = starts[by * blocks_x + bx];
     }
@@ -107,10 +104,10 @@ inline real march_start_with_hint(real start, real hint, vec3 origin, vec3 dir, 
 /* Where the camera rays of tile `tile` start: their block's prepass distance, moved on by the
  * reprojected hints where the render has them (has_hints). The hint's DE evaluation is added to
  * *evaluations. Every DE mode's entry point starts its camera rays here. */
-inline real camera_ray_start(__global const float* march_starts,
-                             __global const float* march_hints, int has_hints, int tile,
-                             tile_pixels pixels, camera_frame camera, vec3 origin, vec3 dir,
-                             mask active, march_limits limits, mask* evaluations, PARAMS) {
+inline real camera_ray_start(__global const float* march_starts, __global const float* march_hints,
+                             int has_hints, int tile, tile_pixels pixels, camera_frame camera,
+                             vec3 origin, vec3 dir, mask active, march_limits limits,
+                             mask* evaluations, PARAMS) {
     const real start = march_start_of(march_starts, pixels, camera);
     if (!has_hints) return start;
     return march_start_with_hint(start, fgr_load(tile, march_hints), origin, dir, active, limits,
@@ -119,8 +116,7 @@ inline real camera_ray_start(__global const float* march_starts,
 
 /* The unit direction through the point (pixel_x, pixel_y) in [0, 1]^2 of pixel (px, py): a
  * stereo pair's eye follows the pixel, as in primary_direction. */
-inline vec3 prepass_direction(camera_frame camera, real px, real py, real pixel_x,
-                              real pixel_y) {
+inline vec3 prepass_direction(camera_frame camera, real px, real py, real pixel_x, real pixel_y) {
     camera_sample s;
     s.pixel_x = pixel_x;
     s.pixel_y = pixel_y;
@@ -148,8 +144,7 @@ __kernel void fgr_prepass(__global float* starts, int block_plane, int packet_co
     /* Point i of 0, 1, 2 across the block is x0 + i * mid: in pixel x0 + min(i * mid, B - 1),
      * at 0, 0 or 1 across it. */
     const float mid = 0.5f * FGR_PREPASS_BLOCK;
-    const vec3 axis = prepass_direction(camera, x0 + mid, y0 + mid, fgr_real(0.0f),
-                                        fgr_real(0.0f));
+    const vec3 axis = prepass_direction(camera, x0 + mid, y0 + mid, fgr_real(0.0f), fgr_real(0.0f));
     real chord = fgr_real(0.0f);
     for (int j = 0; j <= 2; ++j) {
         const float into_y = fmin(mid * (float)j, FGR_PREPASS_BLOCK - 1.0f);
@@ -185,8 +180,7 @@ __kernel void fgr_prepass(__global float* starts, int block_plane, int packet_co
         const real advance = (limits.step_factor * dist - t * margin) / (1.0f + margin);
         /* At the eye: a DE of 0 or less leaves the block to the march's escape rule. */
         active &= (step > 0) | (dist > 0.0f);
-        const mask moves = active & (advance > FGR_PREPASS_STOP * t * margin) &
-                           (advance > 0.0f);
+        const mask moves = active & (advance > FGR_PREPASS_STOP * t * margin) & (advance > 0.0f);
         t = select(t, t + advance, moves);
         active = moves & (t <= limits.max_distance);
     }

@@ -138,8 +138,8 @@ inline vec3 primary_direction(camera_frame camera, real px, real py, camera_samp
         const real r = sqrt(dx * dx + dy * dy);
         const real theta = fmin(r, 1.0f) * camera.fisheye_half_fov;
         /* sin(theta) / r, tending to the half fov at the centre. */
-        const real across = select(fgr_sin(theta) / fmax(r, 1e-7f),
-                                   fgr_real(camera.fisheye_half_fov), r < 1e-7f);
+        const real across =
+            select(fgr_sin(theta) / fmax(r, 1e-7f), fgr_real(camera.fisheye_half_fov), r < 1e-7f);
         return v3_add(v3_scale(forward, fgr_cos(theta)),
                       v3_add(v3_scale(right, across * dx), v3_scale(up, across * dy)));
     }
@@ -147,8 +147,8 @@ inline vec3 primary_direction(camera_frame camera, real px, real py, camera_samp
      * view's axis at the convergence distance (eye_side is 0 for a single view). */
     const real shift = -point.eye_side * (0.5f * camera.eye_separation / camera.convergence);
     const real u = (2.0f * point.x / point.width - 1.0f) * camera.tan_half_fov + shift;
-    const real v = (1.0f - 2.0f * point.y / point.height) * camera.tan_half_fov *
-                   (point.height / point.width);
+    const real v =
+        (1.0f - 2.0f * point.y / point.height) * camera.tan_half_fov * (point.height / point.width);
     return v3_add(forward, v3_add(v3_scale(right, u), v3_scale(up, v)));
 }
 
@@ -202,9 +202,9 @@ inline camera_ray camera_ray_through(camera_frame camera, real px, real py, came
      * eye + through_pixel * focus_distance; a panorama's is unit, focusing on a sphere. The lens
      * lies across the view's axis, so a panorama's sideways rays blur less. */
     const vec3 focus = v3_mad(ray.origin, through_pixel, fgr_real(param_focus_distance));
-    ray.origin = v3_add(ray.origin,
-                        v3_add(v3_scale(splat_float4(camera.right), s.lens_x * param_aperture),
-                               v3_scale(splat_float4(camera.up), s.lens_y * param_aperture)));
+    ray.origin =
+        v3_add(ray.origin, v3_add(v3_scale(splat_float4(camera.right), s.lens_x * param_aperture),
+                                  v3_scale(splat_float4(camera.up), s.lens_y * param_aperture)));
     ray.dir = v3_normalize(v3_sub(focus, ray.origin));
 #endif
     return ray;
@@ -223,16 +223,16 @@ inline camera_ray camera_ray_through(camera_frame camera, real px, real py, came
  *               where it did not run): march_start_of
  *   march_hints, has_hints  reprojected start hints, a plane laid out as the image's (when
  *               has_hints is set): march_start_with_hint */
-#define FGR_RENDER_ARGS                                                                        \
+#define FGR_RENDER_ARGS                                                                      \
     __global float *planes, int plane_size, int tile_count, camera_frame camera, int sample, \
-        PARAMS, __global const float *march_starts, __global const float *march_hints,        \
+        PARAMS, __global const float *march_starts, __global const float *march_hints,       \
         int has_hints
 
 /* The pixels of one tile, one per lane. */
 typedef struct tile_pixels {
-    real px, py;  /* each lane's pixel, in the whole image */
-    mask inside;  /* lanes past the region's edge (partial tiles) or outside a fisheye's image
-                   * circle start inactive and cost no steps */
+    real px, py; /* each lane's pixel, in the whole image */
+    mask inside; /* lanes past the region's edge (partial tiles) or outside a fisheye's image
+                  * circle start inactive and cost no steps */
 } tile_pixels;
 
 /* Tiles across the region. */

@@ -45,11 +45,11 @@ typedef FGR_LANE_TYPE(int) index_lanes;
 #define fgr_gather(plane, i) \
     convert_real((float4)((plane)[(i).s0], (plane)[(i).s1], (plane)[(i).s2], (plane)[(i).s3]))
 #elif FGR_WIDTH == 8
-#define fgr_gather(plane, i)                                                                 \
+#define fgr_gather(plane, i)                                                                  \
     convert_real((float8)((plane)[(i).s0], (plane)[(i).s1], (plane)[(i).s2], (plane)[(i).s3], \
                           (plane)[(i).s4], (plane)[(i).s5], (plane)[(i).s6], (plane)[(i).s7]))
 #elif FGR_WIDTH == 16
-#define fgr_gather(plane, i)                                                                  \
+#define fgr_gather(plane, i)                                                                   \
     convert_real((float16)((plane)[(i).s0], (plane)[(i).s1], (plane)[(i).s2], (plane)[(i).s3], \
                            (plane)[(i).s4], (plane)[(i).s5], (plane)[(i).s6], (plane)[(i).s7], \
                            (plane)[(i).s8], (plane)[(i).s9], (plane)[(i).sa], (plane)[(i).sb], \
@@ -87,8 +87,8 @@ inline mask brute_target(vec3 eye, vec3 dir, float footprint, PARAMS) {
  * every packet width. A pass draws many numbers a pixel, one a stratum, so the stratum goes into
  * the seed beside the pass (fgr_sampler.cl's hashed numbers). */
 inline real brute_random(real px, real py, int pass, int index) {
-    const uint_lanes seed = sampler_pixel_seed(px, py, pass) ^
-                            (uint_lanes)((uint)(index + 1) * 2654435761u);
+    const uint_lanes seed =
+        sampler_pixel_seed(px, py, pass) ^ (uint_lanes)((uint)(index + 1) * 2654435761u);
     return sampler_hashed_unit(sampler_mix(sampler_mix(seed)));
 }
 
@@ -108,7 +108,7 @@ inline real brute_pass(vec3 eye, vec3 dir, float footprint, real best, mask acti
     const int count = max(param_brute_samples, 1);
     const real stratum = (end - near) / (float)count;
     real clear = fgr_real(near); /* the last sample outside the solid */
-    real solid_at = end;          /* the first sample in it */
+    real solid_at = end;         /* the first sample in it */
     mask found = (mask)(0);
     for (int i = 0; i < count; ++i) {
         if (!fgr_any(active)) break;
@@ -174,13 +174,13 @@ __kernel void fgr_render(FGR_RENDER_ARGS, __global float* state) {
 inline real brute_depth_at(__global const float* state, index_lanes x, index_lanes y,
                            index_lanes from_x, index_lanes from_y, camera_frame camera) {
     const index_lanes lx = x - camera.region_x, ly = y - camera.region_y;
-    const index_lanes on_region = (lx >= 0) & (lx < camera.region_width) & (ly >= 0) &
-                                  (ly < camera.region_height);
+    const index_lanes on_region =
+        (lx >= 0) & (lx < camera.region_width) & (ly >= 0) & (ly < camera.region_height);
     const index_lanes cx = clamp(lx, 0, camera.region_width - 1);
     const index_lanes cy = clamp(ly, 0, camera.region_height - 1);
-    const index_lanes index = ((cy / FGR_TILE_H) * region_tiles_x(camera) + cx / FGR_TILE_W) *
-                                  FGR_WIDTH +
-                              (cy % FGR_TILE_H) * FGR_TILE_W + cx % FGR_TILE_W;
+    const index_lanes index =
+        ((cy / FGR_TILE_H) * region_tiles_x(camera) + cx / FGR_TILE_W) * FGR_WIDTH +
+        (cy % FGR_TILE_H) * FGR_TILE_W + cx % FGR_TILE_W;
     const mask same_view = camera_same_view(camera, convert_real(x), convert_real(y),
                                             convert_real(from_x), convert_real(from_y));
     return select(fgr_real(-1.0f), fgr_gather(state, index), index_truth(on_region) & same_view);
@@ -195,9 +195,8 @@ inline vec3 brute_world_point(camera_frame camera, vec3 eye, index_lanes x, inde
  * neighbours continue the surface (second-order accurate), otherwise towards whichever neighbour
  * continues it best (the smaller depth jump), so a pixel at a silhouette takes its tangent from
  * the side it belongs to. *valid is false where neither neighbour does. */
-inline vec3 brute_tangent(__global const float* state, camera_frame camera, vec3 eye,
-                          index_lanes x, index_lanes y, real depth, vec3 centre, int dx, int dy,
-                          mask* valid) {
+inline vec3 brute_tangent(__global const float* state, camera_frame camera, vec3 eye, index_lanes x,
+                          index_lanes y, real depth, vec3 centre, int dx, int dy, mask* valid) {
     const real before = brute_depth_at(state, x - dx, y - dy, x, y, camera);
     const real after = brute_depth_at(state, x + dx, y + dy, x, y, camera);
     const mask has_before = before >= 0.0f, has_after = after >= 0.0f;
@@ -209,8 +208,8 @@ inline vec3 brute_tangent(__global const float* state, camera_frame camera, vec3
     const mask central = has_before & has_after & (jump_before <= limit) & (jump_after <= limit);
     const vec3 after_point = brute_world_point(camera, eye, x + dx, y + dy, after);
     const vec3 before_point = brute_world_point(camera, eye, x - dx, y - dy, before);
-    const vec3 one_sided = v3_select(v3_sub(centre, before_point), v3_sub(after_point, centre),
-                                     use_after);
+    const vec3 one_sided =
+        v3_select(v3_sub(centre, before_point), v3_sub(after_point, centre), use_after);
     return v3_select(one_sided, v3_sub(after_point, before_point), central);
 }
 
@@ -237,9 +236,7 @@ inline void brute_disc_point(int k, real radius, real spin, real* ox, real* oy) 
     *oy = radius * fraction * fgr_sin(angle);
 }
 
-inline real brute_spin(real px, real py) {
-    return 6.28318531f * brute_random(px, py, -1, 0);
-}
+inline real brute_spin(real px, real py) { return 6.28318531f * brute_random(px, py, -1, 0); }
 
 /* Screen-space ambient occlusion with its radius in world units (ao_radius): each disc sample's
  * world point occludes by how far it rises above the tangent plane (the cosine of its direction
@@ -247,12 +244,11 @@ inline real brute_spin(real px, real py) {
  * radius / d (at most 4) and fading as 1 - (d / radius)^2 to nothing at the radius. An open face
  * gives 1, a crease or a pit less. */
 inline real brute_occlusion(__global const float* state, camera_frame camera, vec3 eye,
-                            index_lanes x, index_lanes y, real px, real py, real depth,
-                            vec3 centre, vec3 n, mask hit, PARAMS) {
+                            index_lanes x, index_lanes y, real px, real py, real depth, vec3 centre,
+                            vec3 n, mask hit, PARAMS) {
     const float radius = param_ao_radius;
-    const real pixels =
-        clamp(radius / (depth * camera.pixel_angle), 1.0f,
-              fmin(0.25f * (float)camera.width, (float)FGR_BRUTE_MAX_REACH));
+    const real pixels = clamp(radius / (depth * camera.pixel_angle), 1.0f,
+                              fmin(0.25f * (float)camera.width, (float)FGR_BRUTE_MAX_REACH));
     const real spin = brute_spin(px, py);
     real occluded = fgr_real(0.0f);
     for (int k = 0; k < FGR_SSAO_SAMPLES; ++k) {
@@ -278,9 +274,9 @@ inline real brute_occlusion(__global const float* state, camera_frame camera, ve
  * towards it lies in the solid: brute_samples * 2 stratified samples between a few footprints off
  * the surface and `reach`, spaced quadratically (densest near the surface, where occluders cast
  * the sharpest shadows). */
-inline real brute_visibility(vec3 eye, vec3 dir, real depth, vec3 to_light, real reach,
-                             mask lit, mask target, real px, real py, int light,
-                             camera_frame camera, PARAMS) {
+inline real brute_visibility(vec3 eye, vec3 dir, real depth, vec3 to_light, real reach, mask lit,
+                             mask target, real px, real py, int light, camera_frame camera,
+                             PARAMS) {
     const real pixel = depth * camera.pixel_angle;
     const vec3 start = v3_mad(eye, dir, depth - 2.0f * pixel); /* back out of the solid */
     const real first = 4.0f * pixel;
@@ -294,9 +290,8 @@ inline real brute_visibility(vec3 eye, vec3 dir, real depth, vec3 to_light, real
         const real t = first + (reach - first) * f * f;
         /* A DE scene's surface as seen from the camera: its footprint grows with the whole
          * way the light travels from the eye. */
-        const mask solid =
-            open & (surface_inside(v3_mad(start, to_light, t), footprint * (depth + t),
-                                   PARAMS_PASS) == target);
+        const mask solid = open & (surface_inside(v3_mad(start, to_light, t),
+                                                  footprint * (depth + t), PARAMS_PASS) == target);
         blocked |= solid;
         open &= !solid;
     }
@@ -326,8 +321,8 @@ inline vec3 brute_lighting(vec3 eye, vec3 dir, real depth, vec3 p, vec3 n, vec3 
         const vec3 l = light_direction(light, p, param_max_distance, &falloff, &reach);
         const real diffuse = fmax(v3_dot(n, l), 0.0f);
         const vec3 half_vector = v3_normalize(v3_add(l, to_eye));
-        const real specular = FGR_SPECULAR * fgr_pown(fmax(v3_dot(n, half_vector), 0.0f),
-                                                      FGR_SHININESS);
+        const real specular =
+            FGR_SPECULAR * fgr_pown(fmax(v3_dot(n, half_vector), 0.0f), FGR_SHININESS);
         real strength = light[FGR_LIGHT_INTENSITY] * falloff *
                         select(fgr_real(0.0f), fgr_real(1.0f), diffuse > 0.0f);
 #if defined(FGR_EFFECT_SHADOWS) || defined(FGR_EFFECT_SOFT_SHADOWS)
@@ -345,8 +340,8 @@ inline vec3 brute_lighting(vec3 eye, vec3 dir, real depth, vec3 p, vec3 n, vec3 
 #ifdef FGR_EFFECT_GLOW
 /* The seed's outer glow: a pixel that missed lightens by the share of its neighbours (within
  * 1/48 of the image's width) that hit, times glow_strength, in glow_colour. */
-inline vec3 brute_glow(vec3 colour, __global const float* state, camera_frame camera,
-                       index_lanes x, index_lanes y, real px, real py, mask missed, PARAMS) {
+inline vec3 brute_glow(vec3 colour, __global const float* state, camera_frame camera, index_lanes x,
+                       index_lanes y, real px, real py, mask missed, PARAMS) {
     if (!fgr_any(missed)) return colour;
     const real pixels =
         fgr_real(fmin(fmax(3.0f, (float)camera.width / 48.0f), (float)FGR_BRUTE_MAX_REACH));
@@ -392,8 +387,8 @@ __kernel void fgr_brute_shade(FGR_RENDER_ARGS, __global const float* state,
         ao = brute_occlusion(state, camera, eye, x, y, px, py, safe_depth, p, n, hit, PARAMS_PASS);
 #endif
         const vec3 surface_albedo = scene_colour(p, PARAMS_PASS);
-        const vec3 lit = brute_lighting(eye, dir, safe_depth, p, n, surface_albedo, ao, hit, px,
-                                        py, camera, lights, light_count, PARAMS_PASS);
+        const vec3 lit = brute_lighting(eye, dir, safe_depth, p, n, surface_albedo, ao, hit, px, py,
+                                        camera, lights, light_count, PARAMS_PASS);
         colour = v3_select(colour, lit, hit);
         albedo = v3_select(albedo, surface_albedo, hit);
         normal = v3_select(normal, n, hit);

@@ -83,9 +83,7 @@ inline vec3 sample_cone(vec3 axis, real cos_max, real u1, real u2) {
 }
 
 /* Solid-angle pdf of sample_cone. */
-inline real cone_pdf(real cos_max) {
-    return 1.0f / (6.28318530717958647692f * (1.0f - cos_max));
-}
+inline real cone_pdf(real cos_max) { return 1.0f / (6.28318530717958647692f * (1.0f - cos_max)); }
 
 /* The weight of radiance a BSDF-sampled ray found on a light that light sampling also reaches:
  * `light_sampled` lanes left a vertex where light sampling ran (not a camera ray, not a mirror
@@ -115,8 +113,8 @@ inline vec3 escaped_radiance(vec3 dir, mask light_sampled, bool mis, real bsdf_p
         }
         const mask in_disc = v3_dot(dir, light_vec3(light, FGR_PATH_LIGHT_VECTOR)) >= cos_max;
         if (!fgr_any(in_disc)) continue;
-        const real w = escaped_weight(light_sampled, mis, bsdf_pdf,
-                                      fgr_real(pick * cone_pdf(cos_max)));
+        const real w =
+            escaped_weight(light_sampled, mis, bsdf_pdf, fgr_real(pick * cone_pdf(cos_max)));
         const vec3 disc = v3_scale(light_vec3(light, FGR_PATH_LIGHT_RADIANCE), w);
         radiance = v3_add(radiance, v3_select(v3_splat(0.0f, 0.0f, 0.0f), disc, in_disc));
     }
@@ -128,8 +126,8 @@ inline vec3 escaped_radiance(vec3 dir, mask light_sampled, bool mis, real bsdf_p
  * leaves alone) and how far a shadow ray must look. */
 typedef struct light_sample {
     vec3 dir;
-    vec3 radiance;  /* already divided by the pick probability for delta lights */
-    real pdf;       /* solid-angle pdf, pick included; 0 marks a delta light */
+    vec3 radiance; /* already divided by the pick probability for delta lights */
+    real pdf;      /* solid-angle pdf, pick included; 0 marks a delta light */
     real reach;
 } light_sample;
 
@@ -147,8 +145,7 @@ inline light_sample sample_light(vec3 p, real u_pick, real u1, real u2,
     for (int i = 0; i < settings.light_count; ++i) {
         __constant const float* light = lights + i * FGR_PATH_LIGHT_FLOATS;
         const float pick = light[FGR_PATH_LIGHT_PICK_UNTIL] - picked_before;
-        const mask chosen =
-            (u_pick >= picked_before) & (u_pick < light[FGR_PATH_LIGHT_PICK_UNTIL]);
+        const mask chosen = (u_pick >= picked_before) & (u_pick < light[FGR_PATH_LIGHT_PICK_UNTIL]);
         picked_before = light[FGR_PATH_LIGHT_PICK_UNTIL];
         if (!fgr_any(chosen)) continue;
         const vec3 vector = light_vec3(light, FGR_PATH_LIGHT_VECTOR);
@@ -194,9 +191,9 @@ __kernel void fgr_render(FGR_RENDER_ARGS, __constant const float* lights, path_s
      * measure what stratification buys): the first point of a sequence scrambled anew for every
      * sample, which is a uniformly random point. */
     const bool independent = (settings.flags & FGR_PATH_INDEPENDENT) != 0;
-    sampler rng = sampler_start(pixels.px, pixels.py, independent ? 0 : sample,
-                                independent ? settings.seed + (uint)sample * 0x9e3779b9u
-                                            : settings.seed);
+    sampler rng =
+        sampler_start(pixels.px, pixels.py, independent ? 0 : sample,
+                      independent ? settings.seed + (uint)sample * 0x9e3779b9u : settings.seed);
     const real2 in_pixel = sampler_next_2d(&rng);
     const real2 on_lens = sampler_next_2d(&rng);
     camera_sample jitter;
@@ -239,8 +236,7 @@ __kernel void fgr_render(FGR_RENDER_ARGS, __constant const float* lights, path_s
                          active, limits, &hint_evaluations, PARAMS_PASS);
     for (int bounce = 0; fgr_any(active); ++bounce) {
         const march_result hit =
-            bounce == 0 ? march_camera_rays(origin, dir, active, camera_start, limits,
-                                            PARAMS_PASS)
+            bounce == 0 ? march_camera_rays(origin, dir, active, camera_start, limits, PARAMS_PASS)
                         : march_rays_departing(origin, dir, active, seen_at,
                                                fgr_real(limits.max_distance), limits, PARAMS_PASS);
 #ifdef FGR_STATS
@@ -259,8 +255,8 @@ __kernel void fgr_render(FGR_RENDER_ARGS, __constant const float* lights, path_s
         const vec3 p = v3_mad(origin, dir, hit.t);
         if (bounce == 0) seen_at = hit.t;
         const real path_length = seen_at;
-        const real eps = fmax(path_length * camera.pixel_angle * param_normal_epsilon,
-                              FGR_MIN_LENGTH);
+        const real eps =
+            fmax(path_length * camera.pixel_angle * param_normal_epsilon, FGR_MIN_LENGTH);
         vec3 n = surface_normal(hit, p, eps, PARAMS_PASS);
 #if defined(FGR_STATS) && !defined(FGR_GEOMETRY_IFS)
         lane_steps += select((mask)(0), (mask)(4), active);
@@ -277,9 +273,9 @@ __kernel void fgr_render(FGR_RENDER_ARGS, __constant const float* lights, path_s
         radiance = v3_select(radiance, v3_add(radiance, v3_mul(throughput, m.emission)), active);
         if (bounce == 0) {
             depth = select(depth, hit.t, active);
-            first_albedo = v3_select(first_albedo, v3_min(v3_add(m.albedo, m.specular),
-                                                          v3_splat(1.0f, 1.0f, 1.0f)),
-                                     active);
+            first_albedo =
+                v3_select(first_albedo,
+                          v3_min(v3_add(m.albedo, m.specular), v3_splat(1.0f, 1.0f, 1.0f)), active);
             first_normal = v3_select(first_normal, n, active);
             alpha = select(alpha, fgr_real(1.0f), active);
         }
@@ -294,12 +290,11 @@ __kernel void fgr_render(FGR_RENDER_ARGS, __constant const float* lights, path_s
 
         /* Next-event estimation, where the surface is not a perfect mirror there. */
         if (light_sampling) {
-            const light_sample light = sample_light(p, light_pick, light_u.x, light_u.y, lights,
-                                                    settings, limits.max_distance,
-                                                    ENVIRONMENT_PASS);
+            const light_sample light =
+                sample_light(p, light_pick, light_u.x, light_u.y, lights, settings,
+                             limits.max_distance, ENVIRONMENT_PASS);
             const vec3 f = bsdf_eval(m, n, wo, light.dir);
-            mask lit = active & (v3_dot(light.dir, n) > 0.0f) &
-                       (fmax(fmax(f.x, f.y), f.z) > 0.0f) &
+            mask lit = active & (v3_dot(light.dir, n) > 0.0f) & (fmax(fmax(f.x, f.y), f.z) > 0.0f) &
                        (fmax(fmax(light.radiance.x, light.radiance.y), light.radiance.z) > 0.0f);
             if (fgr_any(lit)) {
                 const march_result shadow = march_rays_occluded(
@@ -310,14 +305,14 @@ __kernel void fgr_render(FGR_RENDER_ARGS, __constant const float* lights, path_s
 #endif
                 lit &= !shadow.hit;
                 const mask delta_light = light.pdf <= 0.0f;
-                const real w = select(mis ? power_heuristic(light.pdf,
-                                                            bsdf_pdf(m, n, wo, light.dir))
-                                          : fgr_real(1.0f),
-                                      fgr_real(1.0f), delta_light);
+                const real w =
+                    select(mis ? power_heuristic(light.pdf, bsdf_pdf(m, n, wo, light.dir))
+                               : fgr_real(1.0f),
+                           fgr_real(1.0f), delta_light);
                 const real scale = select(w / light.pdf, fgr_real(1.0f), delta_light);
                 const vec3 contribution = v3_scale(v3_mul(f, light.radiance), scale);
-                radiance = v3_select(radiance,
-                                     v3_add(radiance, v3_mul(throughput, contribution)), lit);
+                radiance =
+                    v3_select(radiance, v3_add(radiance, v3_mul(throughput, contribution)), lit);
             }
         }
 
@@ -368,8 +363,7 @@ __kernel void fgr_render(FGR_RENDER_ARGS, __constant const float* lights, path_s
 #endif
 #ifdef FGR_AOVS
     /* alpha is 1 or 0 for one sample: the whole radiance of a sample whose camera ray hit. */
-    __global float* foreground =
-        planes + FGR_PATH_FOREGROUND_PLANE(FGR_STATS_ON) * plane_size;
+    __global float* foreground = planes + FGR_PATH_FOREGROUND_PLANE(FGR_STATS_ON) * plane_size;
     accumulate_plane(radiance.x * alpha, sample, tile, foreground);
     accumulate_plane(radiance.y * alpha, sample, tile, foreground + plane_size);
     accumulate_plane(radiance.z * alpha, sample, tile, foreground + 2 * plane_size);

@@ -75,9 +75,8 @@ __kernel void fgr_render(FGR_RENDER_ARGS, __constant const float* lights, int li
         first_albedo = v3_select(first_albedo, hit_albedo, hit.hit);
         first_normal = v3_select(first_normal, n, hit.hit);
 #endif
-        vec3 lit = shade_surface(p, n, hit_albedo, dir, eps, hit.steps,
-                                 hit.t, hit.hit, 1, limits, lights, light_count,
-                                 secondary_steps, PARAMS_PASS);
+        vec3 lit = shade_surface(p, n, hit_albedo, dir, eps, hit.steps, hit.t, hit.hit, 1, limits,
+                                 lights, light_count, secondary_steps, PARAMS_PASS);
 #ifdef FGR_EFFECT_REFRACTION
         lit = add_refraction(lit, p, n, dir, eps, hit.t, hit.hit, limits, lights, light_count,
                              secondary_steps, PARAMS_PASS);
@@ -126,8 +125,8 @@ __kernel void fgr_render(FGR_RENDER_ARGS, __constant const float* lights, int li
         fgr_store(convert_real(secondary_steps[1]), tile,
                   planes + FGR_SHADED_SECONDARY_PACKET_STEPS_PLANE * plane_size);
 #endif
-        mask exhausted = inside & !hit.hit & (hit.steps >= step_cap) &
-                         (hit.t <= limits.max_distance);
+        mask exhausted =
+            inside & !hit.hit & (hit.steps >= step_cap) & (hit.t <= limits.max_distance);
         fgr_store(convert_real(hit.steps), tile, planes + FGR_SHADED_STEPS_PLANE * plane_size);
         fgr_store(select(fgr_real(0.0f), fgr_real(1.0f), exhausted), tile,
                   planes + FGR_SHADED_OUT_OF_STEPS_PLANE * plane_size);
@@ -136,4 +135,3 @@ __kernel void fgr_render(FGR_RENDER_ARGS, __constant const float* lights, int li
     }
 #endif
 }
-

@@ -66,13 +66,13 @@ typedef struct sampler {
 
 /* A well-mixed 32-bit hash (Chris Wellons' lowbias32): every input bit flips each output bit
  * with probability close to 1/2. The one hash of the kernel library's random numbers. */
-#define FGR_SAMPLER_MIX(x)     \
-    do {                       \
-        (x) ^= (x) >> 16;      \
-        (x) *= 0x7feb352du;    \
-        (x) ^= (x) >> 15;      \
-        (x) *= 0x846ca68bu;    \
-        (x) ^= (x) >> 16;      \
+#define FGR_SAMPLER_MIX(x)  \
+    do {                    \
+        (x) ^= (x) >> 16;   \
+        (x) *= 0x7feb352du; \
+        (x) ^= (x) >> 15;   \
+        (x) *= 0x846ca68bu; \
+        (x) ^= (x) >> 16;   \
     } while (0)
 
 inline uint_lanes sampler_mix(uint_lanes x) {
@@ -100,13 +100,13 @@ inline real sampler_hashed_unit(uint_lanes hashed) {
 }
 
 /* The bits of x in reverse order (bit 0 becomes bit 31). */
-#define FGR_SAMPLER_REVERSE(x)                                         \
-    do {                                                               \
-        (x) = (((x) >> 1) & 0x55555555u) | (((x) & 0x55555555u) << 1); \
-        (x) = (((x) >> 2) & 0x33333333u) | (((x) & 0x33333333u) << 2); \
-        (x) = (((x) >> 4) & 0x0f0f0f0fu) | (((x) & 0x0f0f0f0fu) << 4); \
-        (x) = (((x) >> 8) & 0x00ff00ffu) | (((x) & 0x00ff00ffu) << 8); \
-        (x) = ((x) >> 16) | ((x) << 16);                               \
+#define FGR_SAMPLER_REVERSE(x)                                       \
+    do {                                                             \
+        (x) = (((x) >> 1) & 0x55555555u) | (((x)&0x55555555u) << 1); \
+        (x) = (((x) >> 2) & 0x33333333u) | (((x)&0x33333333u) << 2); \
+        (x) = (((x) >> 4) & 0x0f0f0f0fu) | (((x)&0x0f0f0f0fu) << 4); \
+        (x) = (((x) >> 8) & 0x00ff00ffu) | (((x)&0x00ff00ffu) << 8); \
+        (x) = ((x) >> 16) | ((x) << 16);                             \
     } while (0)
 
 inline uint_lanes sampler_reverse_bits(uint_lanes x) {
@@ -174,8 +174,8 @@ inline sampler sampler_start(real px, real py, int sample, uint seed) {
 
 /* The shuffled sample index of the next dimension slot, and its two scrambling seeds. */
 inline uint_lanes sampler_next_slot(sampler* s, uint_lanes* seed_x, uint_lanes* seed_y) {
-    const uint_lanes slot = sampler_mix(s->pixel ^ (uint_lanes)(sampler_mix_uniform(
-                                                       s->dimension * 0x9e3779b9u + 0x632be5abu)));
+    const uint_lanes slot = sampler_mix(
+        s->pixel ^ (uint_lanes)(sampler_mix_uniform(s->dimension * 0x9e3779b9u + 0x632be5abu)));
     s->dimension += 1u;
     const uint_lanes seed_index = sampler_mix(slot ^ 0x1b873593u);
     *seed_x = sampler_mix(slot ^ 0xcc9e2d51u);

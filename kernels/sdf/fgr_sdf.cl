@@ -86,8 +86,8 @@ inline real sd_cone(vec3 p, float half_height, float bottom_radius, float top_ra
     /* Side segment: top rim + t * (down the side), t in [0, 1]. */
     const float side_x = top_radius - bottom_radius, side_z = 2.0f * half_height;
     const float side_len2 = fmax(side_x * side_x + side_z * side_z, 1e-30f);
-    real t = clamp(((top_radius - rho) * side_x + (half_height - p.z) * side_z) / side_len2, 0.0f,
-                   1.0f);
+    real t =
+        clamp(((top_radius - rho) * side_x + (half_height - p.z) * side_z) / side_len2, 0.0f, 1.0f);
     real side_dx = rho - top_radius + side_x * t;
     real side_dz = p.z - half_height + side_z * t;
     /* Inside: left of the side segment and between the caps. */

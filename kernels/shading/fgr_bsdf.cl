@@ -72,9 +72,7 @@ typedef struct bsdf_sample {
 #define FGR_BSDF_MIN_COS 1e-9f
 
 /* Rec. 709 luminance of linear RGB. */
-inline real bsdf_luminance(vec3 c) {
-    return 0.2126f * c.x + 0.7152f * c.y + 0.0722f * c.z;
-}
+inline real bsdf_luminance(vec3 c) { return 0.2126f * c.x + 0.7152f * c.y + 0.0722f * c.z; }
 
 inline real bsdf_max3(vec3 c) { return fmax(c.x, fmax(c.y, c.z)); }
 
@@ -110,12 +108,12 @@ inline vec3 bsdf_to_world(bsdf_frame f, vec3 v) {
 /* What sampling and evaluation need from a material at one wo, its inputs clamped to their
  * ranges (so a scene's stray value cannot make a weight negative or a pdf NaN). */
 typedef struct bsdf_lobes {
-    vec3 kd;        /* diffuse reflectance: (1 - max(F0)) albedo */
-    vec3 f0;        /* the glossy lobe's F0 */
-    real f90;       /* its Fresnel at grazing: 1, fading to 0 for F0 below 2% */
-    real alpha;     /* GGX alpha */
-    mask delta;     /* alpha below FGR_BSDF_MIN_ALPHA: the glossy lobe is a mirror */
-    real p_glossy;  /* probability of sampling the glossy lobe */
+    vec3 kd;       /* diffuse reflectance: (1 - max(F0)) albedo */
+    vec3 f0;       /* the glossy lobe's F0 */
+    real f90;      /* its Fresnel at grazing: 1, fading to 0 for F0 below 2% */
+    real alpha;    /* GGX alpha */
+    mask delta;    /* alpha below FGR_BSDF_MIN_ALPHA: the glossy lobe is a mirror */
+    real p_glossy; /* probability of sampling the glossy lobe */
 } bsdf_lobes;
 
 /* Schlick's Fresnel at cos_d = wo.h (in [0, 1]): F0 + (F90 - F0) (1 - cos_d)^5. */

@@ -26,9 +26,9 @@
 #define FGR_TRAP_ITERATIONS 3
 
 typedef struct orbit_trap {
-    real point;      /* min |z|: distance to the origin */
+    real point;  /* min |z|: distance to the origin */
     real planes; /* min over the orbit of min(|x|, |y|, |z|): distance to the coordinate planes */
-    real axes;       /* min distance to the x, y and z axes */
+    real axes;   /* min distance to the x, y and z axes */
     real iterations; /* iterations the lane took (the escape-time colouring) */
 } orbit_trap;
 
@@ -65,24 +65,34 @@ inline vec3 palette(real t, int index) {
     float3 c = (float3)(1.0f, 1.0f, 1.0f), d = (float3)(0.0f, 0.10f, 0.20f);
     switch (index) {
         case 0: /* ember: deep reds to gold */
-            a = (float3)(0.55f, 0.35f, 0.25f); b = (float3)(0.45f, 0.35f, 0.25f);
-            c = (float3)(1.0f, 1.0f, 1.0f); d = (float3)(0.0f, 0.08f, 0.18f);
+            a = (float3)(0.55f, 0.35f, 0.25f);
+            b = (float3)(0.45f, 0.35f, 0.25f);
+            c = (float3)(1.0f, 1.0f, 1.0f);
+            d = (float3)(0.0f, 0.08f, 0.18f);
             break;
         case 1: /* ocean: teal to ivory */
-            a = (float3)(0.35f, 0.50f, 0.60f); b = (float3)(0.30f, 0.30f, 0.30f);
-            c = (float3)(1.0f, 1.0f, 1.0f); d = (float3)(0.55f, 0.45f, 0.35f);
+            a = (float3)(0.35f, 0.50f, 0.60f);
+            b = (float3)(0.30f, 0.30f, 0.30f);
+            c = (float3)(1.0f, 1.0f, 1.0f);
+            d = (float3)(0.55f, 0.45f, 0.35f);
             break;
         case 2: /* forest: moss to sand */
-            a = (float3)(0.45f, 0.50f, 0.35f); b = (float3)(0.30f, 0.30f, 0.25f);
-            c = (float3)(1.0f, 1.0f, 1.0f); d = (float3)(0.10f, 0.20f, 0.30f);
+            a = (float3)(0.45f, 0.50f, 0.35f);
+            b = (float3)(0.30f, 0.30f, 0.25f);
+            c = (float3)(1.0f, 1.0f, 1.0f);
+            d = (float3)(0.10f, 0.20f, 0.30f);
             break;
         case 3: /* pastel: the full hue circle, soft */
-            a = (float3)(0.65f, 0.65f, 0.65f); b = (float3)(0.30f, 0.30f, 0.30f);
-            c = (float3)(1.0f, 1.0f, 1.0f); d = (float3)(0.0f, 0.33f, 0.67f);
+            a = (float3)(0.65f, 0.65f, 0.65f);
+            b = (float3)(0.30f, 0.30f, 0.30f);
+            c = (float3)(1.0f, 1.0f, 1.0f);
+            d = (float3)(0.0f, 0.33f, 0.67f);
             break;
         default: /* mono: greys */
-            a = (float3)(0.6f, 0.6f, 0.6f); b = (float3)(0.3f, 0.3f, 0.3f);
-            c = (float3)(1.0f, 1.0f, 1.0f); d = (float3)(0.0f, 0.0f, 0.0f);
+            a = (float3)(0.6f, 0.6f, 0.6f);
+            b = (float3)(0.3f, 0.3f, 0.3f);
+            c = (float3)(1.0f, 1.0f, 1.0f);
+            d = (float3)(0.0f, 0.0f, 0.0f);
             break;
     }
     const float two_pi = 6.28318531f;
@@ -95,39 +105,47 @@ inline vec3 palette(real t, int index) {
 inline vec3 trap_colour(orbit_trap trap, int mode, int palette_index, vec3 base) {
     real t;
     switch (mode) {
-        case FGR_TRAP_POINT: t = 1.6f * trap.point; break;
-        case FGR_TRAP_PLANES: t = 3.0f * sqrt(fmax(trap.planes, 0.0f)); break;
-        case FGR_TRAP_AXES: t = 2.5f * sqrt(fmax(trap.axes, 0.0f)); break;
-        default: t = 0.08f * trap.iterations; break;
+        case FGR_TRAP_POINT:
+            t = 1.6f * trap.point;
+            break;
+        case FGR_TRAP_PLANES:
+            t = 3.0f * sqrt(fmax(trap.planes, 0.0f));
+            break;
+        case FGR_TRAP_AXES:
+            t = 2.5f * sqrt(fmax(trap.axes, 0.0f));
+            break;
+        default:
+            t = 0.08f * trap.iterations;
+            break;
     }
     vec3 ramp = palette(t, palette_index);
     return v3_mul(v3_max(ramp, v3_splat(0.0f, 0.0f, 0.0f)), base);
 }
 
 /* scene_colour from the orbit trap `iterate` records, for the (few) points being shaded. */
-#define FGR_TRAP_COLOUR_FUNCTION(iterate)                                                   \
-    vec3 scene_colour(vec3 p, PARAMS) {                                                     \
-        orbit_trap trap = trap_init();                                                      \
-        iterate(p, PARAMS_PASS, 1, &trap);                                                  \
-        return trap_colour(trap, param_colour_mode, param_palette,                          \
-                           fgr_param_lanes(param_base_colour));                             \
+#define FGR_TRAP_COLOUR_FUNCTION(iterate)                          \
+    vec3 scene_colour(vec3 p, PARAMS) {                            \
+        orbit_trap trap = trap_init();                             \
+        iterate(p, PARAMS_PASS, 1, &trap);                         \
+        return trap_colour(trap, param_colour_mode, param_palette, \
+                           fgr_param_lanes(param_base_colour));    \
     }
 
 /* scene_de and scene_colour of a fractal coloured by its orbit: `iterate` runs the iteration once
  * for the distance, and again recording the orbit trap at the (few) points being shaded. */
-#define FGR_TRAP_COLOURED_SCENE(iterate)                                                    \
-    real scene_de(vec3 p, PARAMS) {                                                         \
-        orbit_trap unused;                                                                  \
-        return iterate(p, PARAMS_PASS, 0, &unused);                                         \
-    }                                                                                       \
+#define FGR_TRAP_COLOURED_SCENE(iterate)            \
+    real scene_de(vec3 p, PARAMS) {                 \
+        orbit_trap unused;                          \
+        return iterate(p, PARAMS_PASS, 0, &unused); \
+    }                                               \
     FGR_TRAP_COLOUR_FUNCTION(iterate)
 
 /* The same for an inside-only scene (fgr_geometry.cl): `iterate` returns the lanes whose orbit
  * stayed bounded, and defines scene_inside and scene_colour. Put `#define FGR_SCENE_INSIDE_ONLY`
  * on a line of its own above it: the host reads that line to know the scene has no DE. */
-#define FGR_TRAP_COLOURED_INSIDE_SCENE(iterate)                                             \
-    mask scene_inside(vec3 p, PARAMS) {                                                     \
-        orbit_trap unused;                                                                  \
-        return iterate(p, PARAMS_PASS, 0, &unused);                                         \
-    }                                                                                       \
+#define FGR_TRAP_COLOURED_INSIDE_SCENE(iterate)     \
+    mask scene_inside(vec3 p, PARAMS) {             \
+        orbit_trap unused;                          \
+        return iterate(p, PARAMS_PASS, 0, &unused); \
+    }                                               \
     FGR_TRAP_COLOUR_FUNCTION(iterate)

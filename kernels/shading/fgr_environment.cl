@@ -61,8 +61,7 @@ inline int env_cell(ENV_SCALAR x, int count) {
  * sin(half_height), the difference of the band's cosines without cancellation. */
 inline real env_texel_solid_angle(real row, environment_info env) {
     const real band = ENV_PI / (float)env.height;
-    return (4.0f * ENV_PI / (float)env.width) * fgr_sin((row + 0.5f) * band) *
-           fgr_sin(0.5f * band);
+    return (4.0f * ENV_PI / (float)env.width) * fgr_sin((row + 0.5f) * band) * fgr_sin(0.5f * band);
 }
 
 /* For each lane's direction: the texel it falls in (row and column as reals) and that texel's
@@ -126,8 +125,8 @@ inline real environment_pdf(vec3 dir, ENVIRONMENT) {
  * solid-angle pdf in *pdf (> 0 for every direction it returns). */
 inline vec3 environment_sample(real u1, real u2, ENVIRONMENT, real* pdf) {
     ENV_SCALAR su1[FGR_WIDTH], su2[FGR_WIDTH];
-    ENV_SCALAR rows[FGR_WIDTH], columns[FGR_WIDTH], fraction_v[FGR_WIDTH],
-        fraction_u[FGR_WIDTH], p[FGR_WIDTH];
+    ENV_SCALAR rows[FGR_WIDTH], columns[FGR_WIDTH], fraction_v[FGR_WIDTH], fraction_u[FGR_WIDTH],
+        p[FGR_WIDTH];
     /* NaN lanes become 0 through fmax; u = 1 would leave the CDF's last interval. */
     env_from_lanes(fmin(fmax(u1, fgr_real(0.0f)), fgr_real(ENV_ONE_BELOW)), su1);
     env_from_lanes(fmin(fmax(u2, fgr_real(0.0f)), fgr_real(ENV_ONE_BELOW)), su2);
@@ -157,9 +156,9 @@ inline vec3 environment_sample(real u1, real u2, ENVIRONMENT, real* pdf) {
     const real band_width = 2.0f * fgr_sin(mid) * fgr_sin(half_band);
     const real z = clamp(cos_top - env_to_lanes(fraction_v) * band_width, -1.0f, 1.0f);
     const real sin_theta = sqrt(fmax(1.0f - z * z, fgr_real(0.0f)));
-    const real phi = 2.0f * ENV_PI *
-                     ((env_to_lanes(columns) + env_to_lanes(fraction_u)) / (float)env.width +
-                      env.transform.x);
+    const real phi =
+        2.0f * ENV_PI *
+        ((env_to_lanes(columns) + env_to_lanes(fraction_u)) / (float)env.width + env.transform.x);
     *pdf = env_to_lanes(p) / env_texel_solid_angle(row, env);
     return v3(-sin_theta * fgr_cos(phi), sin_theta * fgr_sin(phi), z);
 }

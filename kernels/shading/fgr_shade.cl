@@ -199,8 +199,7 @@ inline vec3 shade_surface(vec3 p, vec3 n, vec3 albedo, vec3 view_dir, real eps, 
         vec3 l = light_direction(light, p, limits.max_distance, &falloff, &reach);
         real diffuse = fmax(v3_dot(n, l), 0.0f);
         vec3 half_vector = v3_normalize(v3_add(l, to_eye));
-        real specular = FGR_SPECULAR * fgr_pown(fmax(v3_dot(n, half_vector), 0.0f),
-                                                  FGR_SHININESS);
+        real specular = FGR_SPECULAR * fgr_pown(fmax(v3_dot(n, half_vector), 0.0f), FGR_SHININESS);
         real strength = light[FGR_LIGHT_INTENSITY] * falloff *
                         select(fgr_real(0.0f), fgr_real(1.0f), diffuse > 0.0f);
 #if defined(FGR_EFFECT_SHADOWS) || defined(FGR_EFFECT_SOFT_SHADOWS)
@@ -212,7 +211,7 @@ inline vec3 shade_surface(vec3 p, vec3 n, vec3 albedo, vec3 view_dir, real eps, 
 #endif
         vec3 light_colour = light_vec3(light, FGR_LIGHT_COLOUR);
         vec3 lit = v3(albedo.x * diffuse + specular, albedo.y * diffuse + specular,
-                 albedo.z * diffuse + specular);
+                      albedo.z * diffuse + specular);
         colour = v3_add(colour, v3_scale(v3_mul(lit, light_colour), strength));
     }
     return colour;
@@ -237,7 +236,7 @@ inline vec3 add_reflection(vec3 colour, vec3 p, vec3 n, vec3 dir, real eps, real
                            int light_count, mask* work, PARAMS) {
     real throughput = fgr_real(1.0f); /* how much of this path's light reaches the eye */
     vec3 result = colour;
-    vec3 mirror_colour = colour;      /* colour of the surface the current bounce leaves */
+    vec3 mirror_colour = colour; /* colour of the surface the current bounce leaves */
     for (int bounce = 0; bounce < param_reflection_bounces; ++bounce) {
         if (!fgr_any(surface)) break;
         real cos_in = fmax(-v3_dot(dir, n), 0.0f);
@@ -247,8 +246,8 @@ inline vec3 add_reflection(vec3 colour, vec3 p, vec3 n, vec3 dir, real eps, real
         real fresnel = r0 + (1.0f - r0) * grazing * grazing * grazing * grazing * grazing;
         surface &= r0 > 0.0f;
         vec3 start = leave_surface(p, n, travelled, limits);
-        march_result next = march_rays_after(start, reflected, surface, travelled, limits,
-                                             PARAMS_PASS);
+        march_result next =
+            march_rays_after(start, reflected, surface, travelled, limits, PARAMS_PASS);
         fgr_count_work(work, next.steps);
         vec3 seen = background(reflected);
         vec3 q = v3_mad(start, reflected, next.t);
@@ -256,10 +255,9 @@ inline vec3 add_reflection(vec3 colour, vec3 p, vec3 n, vec3 dir, real eps, real
         vec3 q_normal = n;
         if (fgr_any(next.hit)) {
             q_normal = surface_normal(next, q, q_eps, PARAMS_PASS);
-            vec3 q_colour = shade_surface(q, q_normal, surface_albedo(next, q, PARAMS_PASS),
-                                          reflected, q_eps, next.steps,
-                                          travelled + next.t, next.hit, 0, limits, lights,
-                                          light_count, work, PARAMS_PASS);
+            vec3 q_colour = shade_surface(
+                q, q_normal, surface_albedo(next, q, PARAMS_PASS), reflected, q_eps, next.steps,
+                travelled + next.t, next.hit, 0, limits, lights, light_count, work, PARAMS_PASS);
             seen = v3_select(seen, q_colour, next.hit);
         }
         /* This surface shows (1 - F) of its own colour and F of what it reflects. */
@@ -334,8 +332,8 @@ inline vec3 add_refraction(vec3 colour, vec3 p, vec3 n, vec3 dir, real eps, real
     mask inside = (transmission > 0.0f) & (k_in >= 0.0f);
     if (!fgr_any(inside)) return colour;
     vec3 albedo = scene_colour(p, PARAMS_PASS);
-    vec3 d = v3_normalize(v3_add(v3_scale(dir, eta_in),
-                                 v3_scale(n, eta_in * cos_in - sqrt(fmax(k_in, 0.0f)))));
+    vec3 d = v3_normalize(
+        v3_add(v3_scale(dir, eta_in), v3_scale(n, eta_in * cos_in - sqrt(fmax(k_in, 0.0f)))));
     /* The hit lies up to a footprint outside the surface; start two more inside, so the crossing
      * does not take the surface it enters for the one it leaves. */
     vec3 start = v3_mad(p, n, -surface_offset(p, travelled, 3.0f, limits));
@@ -345,8 +343,8 @@ inline vec3 add_refraction(vec3 colour, vec3 p, vec3 n, vec3 dir, real eps, real
     for (int bounce = 0; bounce <= FGR_INNER_BOUNCES; ++bounce) {
         if (!fgr_any(inside)) break;
         mask reached;
-        const real t = cross_solid(start, d, inside, travelled + path, limits, &reached,
-                                   work, PARAMS_PASS);
+        const real t =
+            cross_solid(start, d, inside, travelled + path, limits, &reached, work, PARAMS_PASS);
         path = select(path, path + t, inside);
         inside &= reached; /* lanes lost inside stop here and keep the surface colour */
         const vec3 q = v3_mad(start, d, t);
@@ -356,9 +354,9 @@ inline vec3 add_refraction(vec3 colour, vec3 p, vec3 n, vec3 dir, real eps, real
         const real cos_out = fmax(v3_dot(d, q_normal), 0.0f);
         const real k_out = 1.0f - param_ior * param_ior * (1.0f - cos_out * cos_out);
         const mask exits = inside & (k_out >= 0.0f);
-        const vec3 refracted = v3_normalize(v3_add(
-            v3_scale(d, fgr_real(param_ior)),
-            v3_scale(q_normal, sqrt(fmax(k_out, 0.0f)) - param_ior * cos_out)));
+        const vec3 refracted =
+            v3_normalize(v3_add(v3_scale(d, fgr_real(param_ior)),
+                                v3_scale(q_normal, sqrt(fmax(k_out, 0.0f)) - param_ior * cos_out)));
         exit_point = v3_select(exit_point, q, exits);
         exit_normal = v3_select(exit_normal, q_normal, exits);
         out_dir = v3_select(out_dir, refracted, exits);
@@ -367,24 +365,22 @@ inline vec3 add_refraction(vec3 colour, vec3 p, vec3 n, vec3 dir, real eps, real
         inside &= !exits;
         const vec3 reflected = v3_normalize(v3_mad(d, q_normal, -2.0f * cos_out));
         d = v3_select(d, reflected, inside);
-        start = v3_select(start,
-                          v3_mad(q, q_normal, -surface_offset(q, travelled + path, 3.0f, limits)),
-                          inside);
+        start = v3_select(
+            start, v3_mad(q, q_normal, -surface_offset(q, travelled + path, 3.0f, limits)), inside);
     }
     if (!fgr_any(leaves)) return colour;
     vec3 behind_start = leave_surface(exit_point, exit_normal, travelled + path, limits);
-    march_result behind = march_rays_after(behind_start, out_dir, leaves, travelled + path, limits,
-                                           PARAMS_PASS);
+    march_result behind =
+        march_rays_after(behind_start, out_dir, leaves, travelled + path, limits, PARAMS_PASS);
     fgr_count_work(work, behind.steps);
     vec3 seen = background(out_dir);
     if (fgr_any(behind.hit)) {
         vec3 q = v3_mad(behind_start, out_dir, behind.t);
         real q_eps = fmax((travelled + path + behind.t) * limits.footprint * 0.5f, FGR_MIN_LENGTH);
         vec3 q_normal = surface_normal(behind, q, q_eps, PARAMS_PASS);
-        vec3 q_colour = shade_surface(q, q_normal, surface_albedo(behind, q, PARAMS_PASS),
-                                      out_dir, q_eps, behind.steps,
-                                      travelled + path + behind.t, behind.hit, 0, limits, lights,
-                                      light_count, work, PARAMS_PASS);
+        vec3 q_colour = shade_surface(q, q_normal, surface_albedo(behind, q, PARAMS_PASS), out_dir,
+                                      q_eps, behind.steps, travelled + path + behind.t, behind.hit,
+                                      0, limits, lights, light_count, work, PARAMS_PASS);
         seen = v3_select(seen, q_colour, behind.hit);
     }
     /* Beer-Lambert: each colour channel decays at a rate that grows as the albedo darkens. */

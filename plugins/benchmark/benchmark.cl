@@ -62,8 +62,8 @@ inline real menger_sponge(vec3 p, int levels) {
 }
 
 inline real bench_sponge(vec3 p) {
-    vec3 in_object = op_scale_point(op_rotate_z(op_translate(p, BENCH_SPONGE_CENTRE), 0.5f),
-                                BENCH_SPONGE_HALF);
+    vec3 in_object =
+        op_scale_point(op_rotate_z(op_translate(p, BENCH_SPONGE_CENTRE), 0.5f), BENCH_SPONGE_HALF);
     real bound = sd_box(in_object, v3_splat(1.0f, 1.0f, 1.0f));
     if (fgr_all(bound > 0.1f)) return op_scale_distance(bound, BENCH_SPONGE_HALF);
     return op_scale_distance(far_lanes_get_bound(bound, menger_sponge(in_object, 4)),
@@ -96,8 +96,8 @@ inline real bulb_lower(vec3 p) {
     return op_scale_distance(sd_sphere(in_object, 1.25f), BENCH_BULB_SCALE) - 1e-5f;
 }
 inline real sponge_lower(vec3 p) {
-    vec3 in_object = op_scale_point(op_rotate_z(op_translate(p, BENCH_SPONGE_CENTRE), 0.5f),
-                                    BENCH_SPONGE_HALF);
+    vec3 in_object =
+        op_scale_point(op_rotate_z(op_translate(p, BENCH_SPONGE_CENTRE), 0.5f), BENCH_SPONGE_HALF);
     return op_scale_distance(sd_box(in_object, v3_splat(1.0f, 1.0f, 1.0f)), BENCH_SPONGE_HALF) -
            1e-5f;
 }

@@ -145,8 +145,8 @@ inline real object_repeat(vec3 p, PARAMS) {
     /* An endless lattice of small cubes, seen through a ball. */
     const float spacing = 0.5f * param_spacing;
     vec3 q = op_repeat(op_rotate_z(p, 0.5f), v3_splat(spacing, spacing, spacing));
-    real cubes = sd_round_box(q, v3_splat(0.3f * spacing, 0.3f * spacing, 0.3f * spacing),
-                              0.05f * spacing);
+    real cubes =
+        sd_round_box(q, v3_splat(0.3f * spacing, 0.3f * spacing, 0.3f * spacing), 0.05f * spacing);
     return op_intersection(cubes, sd_sphere(p, 0.8f));
 }
 
@@ -167,33 +167,55 @@ inline real object_rotate_scale(vec3 p) {
  * lane). */
 inline real object_de(int index, vec3 p, PARAMS) {
     switch (index) {
-        case 0: return sd_sphere(p, 0.8f);
-        case 1: return sd_box(op_rotate_z(p, 0.5f), v3_splat(0.55f, 0.55f, 0.55f));
-        case 2: return object_round_box(p, PARAMS_PASS);
-        case 3: return object_torus(p);
-        case 4: return sd_cylinder(p, 0.55f, 0.75f);
+        case 0:
+            return sd_sphere(p, 0.8f);
+        case 1:
+            return sd_box(op_rotate_z(p, 0.5f), v3_splat(0.55f, 0.55f, 0.55f));
+        case 2:
+            return object_round_box(p, PARAMS_PASS);
+        case 3:
+            return object_torus(p);
+        case 4:
+            return sd_cylinder(p, 0.55f, 0.75f);
         case 5:
             return sd_capsule(p, v3_splat(-0.35f, 0.15f, -0.55f), v3_splat(0.35f, -0.15f, 0.55f),
                               0.3f);
-        case 6: return sd_cone(p, 0.75f, 0.65f, 0.12f);
-        case 7: return sd_octahedron(op_rotate_z(p, 0.3f), 0.9f);
-        case 8: return sd_tetrahedron(op_rotate_z(p, 0.785398f), 0.5f);
+        case 6:
+            return sd_cone(p, 0.75f, 0.65f, 0.12f);
+        case 7:
+            return sd_octahedron(op_rotate_z(p, 0.3f), 0.9f);
+        case 8:
+            return sd_tetrahedron(op_rotate_z(p, 0.785398f), 0.5f);
         case 9:
             return sd_sphere(op_elongate(op_rotate_z(p, 0.5f), v3_splat(0.35f, 0.0f, 0.3f)), 0.4f);
-        case 10: return object_onion(p);
-        case 11: return object_rounded_cross(p, PARAMS_PASS);
-        case 12: return object_union(p);
-        case 13: return object_subtraction(p);
-        case 14: return object_intersection(p);
-        case 15: return object_smooth_union(p, PARAMS_PASS);
-        case 16: return object_smooth_subtraction(p, PARAMS_PASS);
-        case 17: return object_smooth_intersection(p, PARAMS_PASS);
-        case 18: return object_twist(p, PARAMS_PASS);
-        case 19: return object_bend(p, PARAMS_PASS);
-        case 20: return object_displaced(p, PARAMS_PASS);
-        case 21: return object_repeat_limited(p, PARAMS_PASS);
-        case 22: return object_repeat(p, PARAMS_PASS);
-        default: return object_rotate_scale(p);
+        case 10:
+            return object_onion(p);
+        case 11:
+            return object_rounded_cross(p, PARAMS_PASS);
+        case 12:
+            return object_union(p);
+        case 13:
+            return object_subtraction(p);
+        case 14:
+            return object_intersection(p);
+        case 15:
+            return object_smooth_union(p, PARAMS_PASS);
+        case 16:
+            return object_smooth_subtraction(p, PARAMS_PASS);
+        case 17:
+            return object_smooth_intersection(p, PARAMS_PASS);
+        case 18:
+            return object_twist(p, PARAMS_PASS);
+        case 19:
+            return object_bend(p, PARAMS_PASS);
+        case 20:
+            return object_displaced(p, PARAMS_PASS);
+        case 21:
+            return object_repeat_limited(p, PARAMS_PASS);
+        case 22:
+            return object_repeat(p, PARAMS_PASS);
+        default:
+            return object_rotate_scale(p);
     }
 }
 

@@ -30,9 +30,9 @@
 /* World to fractal coordinates: a rotation taking world +z to the diagonal (1, 1, 1), so the
  * tetrahedron stands on a face with its apex up the z axis at (0, 0, sqrt(3)). */
 inline vec3 tetrahedron_frame(vec3 p) {
-    const float3 across = (float3)(0.70710678f, -0.70710678f, 0.0f);   /* world x */
+    const float3 across = (float3)(0.70710678f, -0.70710678f, 0.0f);       /* world x */
     const float3 depth = (float3)(0.40824829f, 0.40824829f, -0.81649658f); /* world y */
-    const float up = SIERPINSKI_INV_SQRT3;                                /* world z */
+    const float up = SIERPINSKI_INV_SQRT3;                                 /* world z */
     return v3(across.x * p.x + depth.x * p.y + up * p.z, across.y * p.x + depth.y * p.y + up * p.z,
               depth.z * p.y + up * p.z);
 }

@@ -58,8 +58,8 @@ inline void formula_amazing_box(vec3* z, real* w, real* dr, const vec3 c, float 
  * "Amazing Surf"): the box fold on x and y only, so the set spreads into a surface along z; then
  * the sphere fold (fixed radius 1), the scale and a rotation, and c times c_scale added with its
  * x and y exchanged, as the original does. */
-inline void formula_amazing_surf(vec3* z, real* w, real* dr, const vec3 c, float scale,
-                                 vec3 fold, float min_radius, float c_scale, rotation3 turn) {
+inline void formula_amazing_surf(vec3* z, real* w, real* dr, const vec3 c, float scale, vec3 fold,
+                                 float min_radius, float c_scale, rotation3 turn) {
     (void)w;
     vec3 p = *z;
     p.x = fabs(p.x + fold.x) - fabs(p.x - fold.x) - p.x;

@@ -123,8 +123,7 @@ inline vec3 triplex_multiply(vec3 a, vec3 b) {
     return v3(k * (a.x * b.x - a.y * b.y), k * (a.x * b.y + a.y * b.x), ra * b.z + rb * a.z);
 }
 
-inline void formula_lambdabulb(vec3* z, real* w, real* dr, const vec3 c, float power,
-                               vec3 lambda) {
+inline void formula_lambdabulb(vec3* z, real* w, real* dr, const vec3 c, float power, vec3 lambda) {
     (void)w;
     (void)c;
     real r_pow;

@@ -129,8 +129,8 @@ inline void bicomplex_square(vec3* z, real* w) {
  * set) or the Julia set of k, from the orbit u <- u^2 + k and its derivative by the start,
  * u' <- 2 u u' (+ 1 for the Mandelbrot set, where k moves with the start), stopping past
  * `bailout`. */
-inline real complex_set_distance(complex_packet u, complex_packet k, int mandelbrot,
-                                 int iterations, float bailout) {
+inline real complex_set_distance(complex_packet u, complex_packet k, int mandelbrot, int iterations,
+                                 float bailout) {
     complex_packet du = {fgr_real(1.0f), fgr_real(0.0f)};
     real potential_scale = fgr_real(1.0f);
     real r2 = u.re * u.re + u.im * u.im;

@@ -33,8 +33,8 @@ inline vec3 formula_sierpinski_step(vec3 p, rotation3 turn, vec3 offset, float s
     return v3_sub(op_rotate(fold_sierpinski(p), turn), v3_scale(offset, fgr_real(shift)));
 }
 
-inline void formula_sierpinski(vec3* z, real* w, real* dr, const vec3 c, float scale,
-                               vec3 offset, rotation3 turn) {
+inline void formula_sierpinski(vec3* z, real* w, real* dr, const vec3 c, float scale, vec3 offset,
+                               rotation3 turn) {
     (void)w;
     (void)c;
     *z = v3_scale(formula_sierpinski_step(*z, turn, offset, (scale - 1.0f) / scale),
@@ -43,8 +43,8 @@ inline void formula_sierpinski(vec3* z, real* w, real* dr, const vec3 c, float s
 }
 
 /* Octahedral KIFS: the octahedron's (the cube's) fold, scale 2 about a vertex (1, 0, 0). */
-inline void formula_octahedral(vec3* z, real* w, real* dr, const vec3 c, float scale,
-                               vec3 offset, rotation3 turn) {
+inline void formula_octahedral(vec3* z, real* w, real* dr, const vec3 c, float scale, vec3 offset,
+                               rotation3 turn) {
     (void)w;
     (void)c;
     const vec3 p = op_rotate(fold_menger(*z), turn);
@@ -53,8 +53,8 @@ inline void formula_octahedral(vec3* z, real* w, real* dr, const vec3 c, float s
 }
 
 /* Icosahedral KIFS: the icosahedral fold, scale about the icosahedron's vertex (times `size`). */
-inline void formula_icosahedral(vec3* z, real* w, real* dr, const vec3 c, float scale,
-                                float size, rotation3 turn) {
+inline void formula_icosahedral(vec3* z, real* w, real* dr, const vec3 c, float scale, float size,
+                                rotation3 turn) {
     (void)w;
     (void)c;
     const vec3 p = op_rotate(fold_icosahedral(*z), turn);
@@ -63,8 +63,8 @@ inline void formula_icosahedral(vec3* z, real* w, real* dr, const vec3 c, float 
 }
 
 /* Dodecahedral KIFS: the same fold, scale about the dodecahedron's vertex (times `size`). */
-inline void formula_dodecahedral(vec3* z, real* w, real* dr, const vec3 c, float scale,
-                                 float size, rotation3 turn) {
+inline void formula_dodecahedral(vec3* z, real* w, real* dr, const vec3 c, float scale, float size,
+                                 rotation3 turn) {
     (void)w;
     (void)c;
     const vec3 p = op_rotate(fold_dodecahedral(*z), turn);
@@ -100,8 +100,7 @@ inline real formula_menger_distance(vec3 z, real w, real dr, vec3 c, float scale
     return sd_box(z, v3_splat(1.0f, 1.0f, 1.0f)) / dr;
 }
 
-inline real formula_sierpinski_distance(vec3 z, real w, real dr, vec3 c, float scale,
-                                        vec3 offset) {
+inline real formula_sierpinski_distance(vec3 z, real w, real dr, vec3 c, float scale, vec3 offset) {
     (void)w;
     (void)c;
     (void)scale;
@@ -109,8 +108,7 @@ inline real formula_sierpinski_distance(vec3 z, real w, real dr, vec3 c, float s
     return sd_tetrahedron(z, 1.0f) / dr;
 }
 
-inline real formula_octahedral_distance(vec3 z, real w, real dr, vec3 c, float scale,
-                                        vec3 offset) {
+inline real formula_octahedral_distance(vec3 z, real w, real dr, vec3 c, float scale, vec3 offset) {
     (void)w;
     (void)c;
     (void)scale;
@@ -118,8 +116,7 @@ inline real formula_octahedral_distance(vec3 z, real w, real dr, vec3 c, float s
     return sd_octahedron(z, 1.0f) / dr;
 }
 
-inline real formula_icosahedral_distance(vec3 z, real w, real dr, vec3 c, float scale,
-                                         float size) {
+inline real formula_icosahedral_distance(vec3 z, real w, real dr, vec3 c, float scale, float size) {
     (void)w;
     (void)c;
     (void)scale;

@@ -6,8 +6,8 @@
 
 /* Pseudo-Kleinian (Knighty, fractalforums.com 2011; the SDK guide's example): a per-axis box fold,
  * an inversion in the sphere of squared radius `size`, and an offset. */
-inline void formula_pseudo_kleinian(vec3* z, real* w, real* dr, const vec3 c, vec3 box,
-                                    float size, vec3 offset, float thickness) {
+inline void formula_pseudo_kleinian(vec3* z, real* w, real* dr, const vec3 c, vec3 box, float size,
+                                    vec3 offset, float thickness) {
     (void)w;
     (void)c;
     (void)thickness;
@@ -17,16 +17,15 @@ inline void formula_pseudo_kleinian(vec3* z, real* w, real* dr, const vec3 c, ve
 }
 
 /* Knighty's "thingy": the surface |rxy z| = thickness, its distance roughly (|rxy z| - t) / |z|. */
-inline real formula_pseudo_kleinian_distance(vec3 z, real w, real dr, vec3 c, vec3 box,
-                                             float size, vec3 offset, float thickness) {
+inline real formula_pseudo_kleinian_distance(vec3 z, real w, real dr, vec3 c, vec3 box, float size,
+                                             vec3 offset, float thickness) {
     (void)w;
     (void)c;
     (void)box;
     (void)size;
     (void)offset;
     const real rxy = sqrt(z.x * z.x + z.y * z.y);
-    return 0.5f * (fabs(rxy * z.z) - thickness) /
-           sqrt(v3_length2(z) + thickness + 1e-20f) / dr;
+    return 0.5f * (fabs(rxy * z.z) - thickness) / sqrt(v3_length2(z) + thickness + 1e-20f) / dr;
 }
 
 /* Apollonian gasket (after Paul Nylander's and Knighty's sphere-inversion form, 2010): space

@@ -8,10 +8,10 @@
 #define FGR_SCENE_HAS_COLOUR
 
 FGR_ORBIT(min(param_iterations, 30), FGR_NO_BAILOUT)
-    const rotation3 turn = rotation_about_axis(param_axis, param_angle);
+const rotation3 turn = rotation_about_axis(param_axis, param_angle);
 FGR_ITERATE
-    z = fold_icosahedral(z);
-    z = op_rotate(z, turn);
-    z = scale_about(z, param_scale, icosahedron_vertex());
-    dr *= param_scale;
+z = fold_icosahedral(z);
+z = op_rotate(z, turn);
+z = scale_about(z, param_scale, icosahedron_vertex());
+dr *= param_scale;
 FGR_DISTANCE((v3_length(z) - 1.0f) / dr)

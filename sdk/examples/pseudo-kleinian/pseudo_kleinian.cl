@@ -13,7 +13,7 @@ inline real thingy(vec3 z, float thickness) {
 
 FGR_ORBIT(param_iterations, FGR_NO_BAILOUT)
 FGR_ITERATE
-    z = fold_box_axes(z, param_box);
-    z = fold_sphere(z, &dr, 1e-6f, param_size);
-    z = v3_add(z, param_offset);
+z = fold_box_axes(z, param_box);
+z = fold_sphere(z, &dr, 1e-6f, param_size);
+z = v3_add(z, param_offset);
 FGR_DISTANCE(thingy(z, param_thickness) / dr)
