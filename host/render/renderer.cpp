@@ -156,6 +156,12 @@ constexpr int kProgressLaunches = 64;
 // it only where it is a small part of the frame.
 constexpr long kBandedPixelSamples = 4L << 20;
 
+// The bands launch_tiles splits a launch into: a cancellable one into at least kCancelBands, so
+// that cancelling costs at most one band.
+int launch_bands(const std::function<bool()>& cancel, int bands) {
+    return cancel ? std::max(bands, kCancelBands) : bands;
+}
+
 // Tiles a band of launch_tiles holds: whole work-groups, about 1/bands of them.
 int band_tiles(int tiles, int group, int bands) {
     const int groups = (tiles + group - 1) / group;
@@ -298,7 +304,7 @@ cl::Buffer Renderer::upload(const std::vector<float>& values) {
 bool Renderer::launch_tiles(cl::Kernel& kernel, int tiles, int group,
                             const std::function<bool()>& cancel, int bands,
                             const std::function<void()>& band_done) {
-    if (cancel) bands = std::max(bands, kCancelBands);
+    bands = launch_bands(cancel, bands);
     if (bands <= 1) {
         device_.queue.enqueueNDRangeKernel(kernel, cl::NullRange, global_range(tiles, group),
                                            cl::NDRange(group));
@@ -367,8 +373,7 @@ Frame Renderer::render(const FrameRequest& request) {
     int done = 0;
     const int bands = progress_bands(request, region);
     // The launches in all, as launch_tiles makes them (a cancellable frame's bands included).
-    const int band =
-        band_tiles(tiles, group, request.cancel ? std::max(bands, kCancelBands) : bands);
+    const int band = band_tiles(tiles, group, launch_bands(request.cancel, bands));
     const long launches = static_cast<long>(request.samples) * ((tiles + band - 1) / band);
     long launched = 0;
     std::function<void()> band_done;
