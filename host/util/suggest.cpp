@@ -2,16 +2,15 @@
 #include "util/suggest.hpp"
 
 #include <algorithm>
-#include <cctype>
+
+#include "util/lower_case.hpp"
 
 namespace fgr {
-namespace {
 
-char folded(char c) { return static_cast<char>(std::tolower(static_cast<unsigned char>(c))); }
-
-}  // namespace
-
-std::size_t edit_distance(std::string_view a, std::string_view b) {
+std::size_t edit_distance(std::string_view first, std::string_view second) {
+    // Case does not count: both in lower case once, not a character at a time.
+    const std::string a = lower_case(first);
+    const std::string b = lower_case(second);
     // Three rows of the dynamic programme: the swap of two neighbours looks two rows back.
     const std::size_t columns = b.size() + 1;
     std::vector<std::size_t> before(columns), previous(columns), row(columns);
@@ -19,10 +18,9 @@ std::size_t edit_distance(std::string_view a, std::string_view b) {
     for (std::size_t i = 1; i <= a.size(); ++i) {
         row[0] = i;
         for (std::size_t j = 1; j < columns; ++j) {
-            const bool same = folded(a[i - 1]) == folded(b[j - 1]);
+            const bool same = a[i - 1] == b[j - 1];
             row[j] = std::min({previous[j] + 1, row[j - 1] + 1, previous[j - 1] + (same ? 0 : 1)});
-            if (i > 1 && j > 1 && folded(a[i - 1]) == folded(b[j - 2]) &&
-                folded(a[i - 2]) == folded(b[j - 1])) {
+            if (i > 1 && j > 1 && a[i - 1] == b[j - 2] && a[i - 2] == b[j - 1]) {
                 row[j] = std::min(row[j], before[j - 2] + 1);
             }
         }

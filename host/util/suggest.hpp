@@ -12,9 +12,9 @@
 namespace fgr {
 
 // The optimal string alignment distance (restricted Damerau-Levenshtein): how many insertions,
-// deletions, substitutions and swaps of two neighbouring characters turn `a` into `b`, compared
-// without regard to ASCII case.
-std::size_t edit_distance(std::string_view a, std::string_view b);
+// deletions, substitutions and swaps of two neighbouring characters turn `first` into `second`,
+// compared without regard to ASCII case.
+std::size_t edit_distance(std::string_view first, std::string_view second);
 
 // The candidate closest to `typed`, when it is close enough to be what was meant: at most a third
 // of typed's length in edits (at least one), and fewer edits than typed has characters. The first
