@@ -5,6 +5,7 @@
 
 #include <fgr/plugin.h>
 #include <fmt/format.h>
+#include <fmt/ranges.h>
 
 #include <CL/opencl.hpp>
 #include <algorithm>
@@ -134,10 +135,7 @@ std::vector<const CliCommand*> all_commands(const CliCommand& top) {
 }
 
 std::string joined(const std::vector<std::string>& parts, std::string_view separator) {
-    std::string text;
-    for (const std::string& part : parts)
-        text += (text.empty() ? "" : std::string(separator)) + part;
-    return text;
+    return fmt::format("{}", fmt::join(parts, separator));
 }
 
 // "fgr render [OPTIONS] [scene]", "fgr merge [OPTIONS] parts...", "fgr cache COMMAND".
