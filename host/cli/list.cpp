@@ -204,11 +204,7 @@ void add_list_command(CLI::App& app, ListOptions& options) {
 }
 
 int command_list_scene(const std::string& argument) {
-    if (scene_argument_kind(argument) != SceneArgumentKind::Id) {
-        print_scene(scene_from_argument(argument));
-        return 0;
-    }
-    print_scene(find_scene(discover(), argument));
+    print_scene(scene_from_argument(argument));
     return 0;
 }
 
