@@ -5,10 +5,8 @@
 #include <spdlog/spdlog.h>
 
 #include <algorithm>
-#include <chrono>
 #include <cmath>
 #include <filesystem>
-#include <optional>
 #include <string>
 
 #include "cli/progress.hpp"
@@ -16,7 +14,6 @@
 #include "device/program_cache.hpp"
 #include "render/renderer.hpp"
 #include "render/sample_budget.hpp"
-#include "util/timing.hpp"
 
 namespace fgr {
 namespace {
@@ -25,14 +22,11 @@ namespace {
 // second. It is called before each frame of a run and once at its end: every call but a run's
 // first ends a frame.
 BenchProgress bench_progress(DelayedProgress& progress, int runs) {
-    return [&progress, runs, frames = 0L, current = -1,
-            start = std::optional<std::chrono::steady_clock::time_point>()](int run,
-                                                                            double done) mutable {
-        // From the first frame: the kernels' build is no part of the pace.
-        if (!start) start = std::chrono::steady_clock::now();
+    return [&progress, runs, frames = 0L, current = -1, clock = PaceClock()](int run,
+                                                                             double done) mutable {
         if (run == current) ++frames;
         current = run;
-        const double seconds = seconds_since(*start);
+        const double seconds = clock.seconds();
         const auto permille = std::lround(1000.0 * (run + std::clamp(done, 0.0, 1.0)) / runs);
         progress.update(permille, 1000, seconds,
                         fmt::format("run {}/{} | {:.1f} fps", run + 1, runs,

@@ -4,10 +4,8 @@
 #include <spdlog/spdlog.h>
 
 #include <algorithm>
-#include <chrono>
 #include <cstdlib>
 #include <filesystem>
-#include <optional>
 #include <string>
 
 #include "cli/progress.hpp"
@@ -16,7 +14,6 @@
 #include "diagnostics/brute_accuracy.hpp"
 #include "render/renderer.hpp"
 #include "render/sample_budget.hpp"
-#include "util/timing.hpp"
 
 namespace fgr {
 
@@ -54,10 +51,8 @@ namespace {
 
 // The sweep's progress on `progress`: renders done of all, what renders now and the pace.
 AccuracyProgress accuracy_progress(DelayedProgress& progress) {
-    return [&progress, start = std::optional<std::chrono::steady_clock::time_point>()](
-               int done, int total, const std::string& what) mutable {
-        if (!start) start = std::chrono::steady_clock::now();
-        const double seconds = seconds_since(*start);
+    return [&progress, clock = PaceClock()](int done, int total, const std::string& what) mutable {
+        const double seconds = clock.seconds();
         progress.update(done, total, seconds,
                         fmt::format("{} | {:.2g} renders/s", what,
                                     seconds > 0.0 ? double(done) / seconds : 0.0));

@@ -6,7 +6,10 @@
 
 #include <chrono>
 #include <cstdio>
+#include <optional>
 #include <string>
+
+#include "util/timing.hpp"
 
 namespace fgr {
 
@@ -42,6 +45,19 @@ private:
     bool open_ = false;  // a line is drawn and not ended
     std::chrono::steady_clock::time_point last_draw_{};
     long last_tenth_ = -1;
+};
+
+// Seconds since it was first read: a pace measured from the first unit reported, so that the
+// kernels' build before it is no part of it.
+class PaceClock {
+public:
+    double seconds() {
+        if (!start_) start_ = std::chrono::steady_clock::now();
+        return seconds_since(*start_);
+    }
+
+private:
+    std::optional<std::chrono::steady_clock::time_point> start_;
 };
 
 // The seconds a render may take before it shows its progress: 2, or FGR_PROGRESS_DELAY's when set
