@@ -6,7 +6,11 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
+#include <set>
 #include <stdexcept>
+#include <vector>
+
+#include "util/files.hpp"
 
 namespace fgr::json_fields {
 namespace {
@@ -107,9 +111,118 @@ bool nests_deeper_than(std::string_view text, int limit) {
     return false;
 }
 
+namespace {
+
+constexpr std::size_t kShownLength = 40;
+
+// Appends `value` to `out` until out holds more than kShownLength characters: a walk that stops
+// where the message stops, so neither the value's size nor its depth matters.
+void append_shown(const json& value, std::string& out) {
+    if (out.size() > kShownLength) return;
+    if (value.is_array()) {
+        out += '[';
+        bool first = true;
+        for (const json& item : value) {
+            if (out.size() > kShownLength) return;
+            if (!first) out += ',';
+            first = false;
+            append_shown(item, out);
+        }
+        out += ']';
+    } else if (value.is_object()) {
+        out += '{';
+        bool first = true;
+        for (const auto& item : value.items()) {
+            if (out.size() > kShownLength) return;
+            if (!first) out += ',';
+            first = false;
+            append_shown(json(item.key().substr(0, kShownLength + 1)), out);
+            out += ':';
+            append_shown(item.value(), out);
+        }
+        out += '}';
+    } else if (value.is_string()) {
+        // Only the part that can be shown is escaped; cutting may split a UTF-8 sequence, which
+        // the replacing dump turns into U+FFFD.
+        const json shortened = value.get_ref<const std::string&>().substr(0, kShownLength + 1);
+        out += shortened.dump(-1, ' ', /*ensure_ascii=*/true, json::error_handler_t::replace);
+    } else {
+        out += value.dump();
+    }
+}
+
+// nlohmann's parse error without its "[json.exception.parse_error.101] " tag, shortened: its
+// "last read" quotes the token, which may be a whole long string.
+std::string syntax_error_text(const std::string& library_text) {
+    std::string text = library_text;
+    if (const auto tag_end = text.find("] "); text.starts_with("[json.") && tag_end != text.npos) {
+        text.erase(0, tag_end + 2);
+    }
+    constexpr std::size_t kLongest = 160;
+    if (text.size() > kLongest) text = text.substr(0, kLongest) + "...";
+    for (char& c : text) {
+        if (static_cast<unsigned char>(c) < 0x20 || c == 0x7f) c = '?';
+    }
+    return text;
+}
+
+// Thrown from the parser's callback when an object repeats a key; caught in parse_document.
+struct DuplicateKey {
+    std::string key;
+};
+
+}  // namespace
+
+json parse_document(std::string_view text, const std::string& what) {
+    if (const auto nul = text.find('\0'); nul != text.npos) {
+        fail("{}: a NUL byte at offset {} (a JSON file is text)", what, nul);
+    }
+    if (nests_deeper_than(text, kMaxDocumentDepth)) {
+        fail("{}: arrays and objects nest deeper than {} levels", what, kMaxDocumentDepth);
+    }
+    // The keys seen in each object being parsed, innermost last.
+    std::vector<std::set<std::string>> open_objects;
+    const json::parser_callback_t refuse_duplicates = [&](int, json::parse_event_t event,
+                                                          json& parsed) {
+        switch (event) {
+            case json::parse_event_t::object_start:
+                open_objects.emplace_back();
+                break;
+            case json::parse_event_t::object_end:
+                if (!open_objects.empty()) open_objects.pop_back();
+                break;
+            case json::parse_event_t::key: {
+                const auto& key = parsed.get_ref<const std::string&>();
+                if (!open_objects.back().insert(key).second) throw DuplicateKey{key};
+                break;
+            }
+            default:
+                break;
+        }
+        return true;
+    };
+    try {
+        return json::parse(text, refuse_duplicates);
+    } catch (const DuplicateKey& duplicate) {
+        fail("{}: the key {} appears twice in one object", what, shown(json(duplicate.key)));
+    } catch (const json::exception& error) {
+        fail("{}: {}", what, syntax_error_text(error.what()));
+    }
+}
+
+json read_document(const std::filesystem::path& file, std::uintmax_t max_bytes,
+                   const std::string& what) {
+    std::string text;
+    if (const std::string failure = read_file_bytes(file, text, max_bytes); !failure.empty()) {
+        fail("{}: {}", what, failure);
+    }
+    return parse_document(text, what);
+}
+
 std::string shown(const json& value) {
-    std::string text = value.dump(-1, ' ', /*ensure_ascii=*/true, json::error_handler_t::replace);
-    if (text.size() > 40) text = text.substr(0, 40) + "...";
+    std::string text;
+    append_shown(value, text);
+    if (text.size() > kShownLength) text = text.substr(0, kShownLength) + "...";
     return text;
 }
 

@@ -8,6 +8,7 @@
 #include <fmt/format.h>
 
 #include <cstdint>
+#include <filesystem>
 #include <glm/vec3.hpp>
 #include <initializer_list>
 #include <nlohmann/json.hpp>
@@ -58,8 +59,26 @@ void check_schema_key(const nlohmann::json& document);
 // library.
 bool nests_deeper_than(std::string_view text, int limit);
 
-// A JSON value as it may appear in a one-line message: dumped with non-ASCII escaped, shortened to
-// about 40 characters.
+// How deep arrays and objects may nest in any file fgr reads: far deeper than any of its formats
+// needs, far shallower than a recursion that could exhaust the stack.
+inline constexpr int kMaxDocumentDepth = 64;
+
+// The one way fgr parses a JSON file: the whole `text` is one JSON value and nothing else. Refused,
+// with std::runtime_error("<what>: <reason>") on one line: a NUL byte (the JSON library would take
+// it for the end and ignore what follows), nesting deeper than kMaxDocumentDepth (checked before
+// parsing), a key twice in one object (the formats promise that no key passes silently, and a
+// second copy would silently win), anything after the value, and every syntax error (its text
+// shortened).
+nlohmann::json parse_document(std::string_view text, const std::string& what);
+
+// read_file_bytes of `file` (a regular file of at most max_bytes), then parse_document. Failures
+// read "<what>: <reason>".
+nlohmann::json read_document(const std::filesystem::path& file, std::uintmax_t max_bytes,
+                             const std::string& what);
+
+// A JSON value as it may appear in a one-line message: non-ASCII escaped, shortened to about 40
+// characters. Only as much of the value as is shown is visited, so a huge or deep value costs no
+// more than a small one.
 std::string shown(const nlohmann::json& value);
 
 }  // namespace fgr::json_fields

@@ -3,6 +3,7 @@
 // messages and figures rely on.
 
 #include <gtest/gtest.h>
+#include <sys/stat.h>
 
 #include <cerrno>
 #include <chrono>
@@ -81,8 +82,29 @@ TEST(UtilFiles, ReadFileBytesSaysWhyAndLeavesNothingOnFailure) {
     EXPECT_EQ(bytes.size(), 10u);
 
     text = "left over";
-    EXPECT_NE(read_file_bytes(dir.path(), text), "") << "a directory is no file to read";
+    EXPECT_EQ(read_file_bytes(dir.path(), text), "not a regular file (a directory)");
     EXPECT_EQ(text, "");
+}
+
+// A FIFO named like a file is refused at once, never opened for a read that waits for a writer
+// forever; the checks for libraries that open paths themselves say the same.
+TEST(UtilFiles, FifoIsRefusedWithoutBlocking) {
+    const test::TempDir dir("fgr_util_files");
+    const auto fifo = dir.path() / "frame.png";
+    ASSERT_EQ(::mkfifo(fifo.c_str(), 0600), 0);
+    std::string text;
+    EXPECT_EQ(read_file_bytes(fifo, text), "not a regular file (a FIFO)");
+    std::string reason;
+    EXPECT_EQ(open_regular_file(fifo, reason), nullptr);
+    EXPECT_EQ(reason, "not a regular file (a FIFO)");
+    EXPECT_EQ(regular_file_problem(fifo), "not a regular file (a FIFO)");
+    EXPECT_EQ(regular_file_problem(dir.path()), "not a regular file (a directory)");
+
+    const auto file = write_bytes(dir.path() / "ten.bin", "0123456789");
+    EXPECT_NE(open_regular_file(file, reason), nullptr);
+    EXPECT_EQ(reason, "");
+    EXPECT_EQ(regular_file_problem(file, 9), "file too large (10 bytes; the limit is 9)");
+    EXPECT_EQ(regular_file_problem(file), "");
 }
 
 // A moment set back by a known amount: the figures are at least that, in their unit, and not
