@@ -46,8 +46,8 @@ endfunction()
 
 fgr_package_copyright(renderer fgr "a real-time renderer of 3D fractals" renderer.txt
     licence-expat.txt licence-bsd-3-clause.txt)
-# The licence files and the list of third-party licences, for every install of fgr.
-install(FILES LICENSE NOTICE docs/third-party-licences.md
+# Licences, the trust model and the third-party licences, for every install of fgr.
+install(FILES LICENSE NOTICE SECURITY.md docs/third-party-licences.md
     DESTINATION ${CMAKE_INSTALL_DATAROOTDIR}/doc/fgr COMPONENT renderer)
 if(EXISTS ${PROJECT_SOURCE_DIR}/CHANGES.md)
     install(FILES CHANGES.md DESTINATION ${CMAKE_INSTALL_DATAROOTDIR}/doc/fgr COMPONENT renderer)

@@ -5,7 +5,7 @@
     docs/stage.py REPO OUT [--cli-reference FILE]
 
 Writes OUT, the site's docs_dir: every page of REPO/docs/, the pages that live elsewhere in the
-tree (plugin_api/ABI.md as sdk/abi.md, CHANGES.md as changes.md), the CLI reference the program
+tree (plugin_api/ABI.md as sdk/abi.md, CHANGES.md as changes.md, SECURITY.md as security.md), the CLI reference the program
 generates (FILE, as reference/cli.md), and every other file of the tree a page links to (pictures
 in bench/results/, the JSON Schemas, a script), copied under _repo/ with its path in the tree.
 
@@ -27,6 +27,7 @@ import unicodedata
 PAGES_ELSEWHERE = {
     "plugin_api/ABI.md": "sdk/abi.md",
     "CHANGES.md": "changes.md",
+    "SECURITY.md": "security.md",
 }
 # Pages the build generates: (the page's path as if it were in the tree, its place in the site).
 GENERATED_CLI_REFERENCE = ("docs/reference/cli.md", "reference/cli.md")

@@ -7,7 +7,7 @@
 # none. (StyleCheck keeps issue numbers out of the sources' comments too.)
 set -euo pipefail
 cd "$1"
-mapfile -t files < <(git ls-files README.md CHANGES.md 'docs/*.md' 'sdk/*.md' plugin_api/ABI.md \
+mapfile -t files < <(git ls-files README.md CHANGES.md SECURITY.md 'docs/*.md' 'sdk/*.md' plugin_api/ABI.md \
     'bench/*.md' tests/golden/README.md)
 ((${#files[@]} > 5)) || { echo "user_docs_check: only ${#files[@]} files found: is REPO right?"; exit 1; }
 if found=$(grep -n -i -E '\bissues? #?[0-9]+|\bthe brief\b|\blab notebook\b|\bthis session\b' \
