@@ -16,6 +16,7 @@
 #include "image/png_errors.hpp"
 #include "util/atomic_file.hpp"
 #include "util/errors.hpp"
+#include "util/files.hpp"
 #include "util/strings.hpp"
 
 namespace fgr {
@@ -261,9 +262,11 @@ void write_pixels_atomically(const fs::path& path, const PngPixels& image) {
 
 // Opens PATH for decoding into READER: the file, its signature, libpng's structs.
 void open_png_reader(PngReader& reader, const fs::path& path) {
-    reader.file = std::fopen(path.c_str(), "rb");
+    // Only a regular file: a FIFO named like a frame would block the read forever.
+    std::string reason;
+    reader.file = open_regular_file(path, reason).release();
     if (reader.file == nullptr) {
-        fail_png_read(path, errno_message(errno));
+        fail_png_read(path, reason);
     }
     if (!has_png_signature(reader.file)) {
         fail_png_read(path, "not a PNG file");

@@ -2,6 +2,7 @@
 // PNG writing (atomic replacement, failure cleanup) and reading.
 
 #include <gtest/gtest.h>
+#include <sys/stat.h>
 #include <unistd.h>
 
 #include <cstdint>
@@ -132,6 +133,20 @@ TEST_F(ImageIo, ReadingATextFileThrows) {
     const fs::path file = directory_ / "notes.png";
     std::ofstream(file) << "this is not a PNG file, only text\n";
     EXPECT_THROW(read_png(file), std::runtime_error);
+}
+
+// A FIFO named like a frame (fgr merge --frames reads whatever a folder holds) is refused at once
+// with the reason, never opened for a read that waits for a writer forever.
+TEST_F(ImageIo, ReadingAFifoIsRefusedWithoutBlocking) {
+    const fs::path fifo = directory_ / "frame_00001.png";
+    ASSERT_EQ(::mkfifo(fifo.c_str(), 0600), 0);
+    try {
+        read_png(fifo);
+        FAIL() << "a FIFO was read";
+    } catch (const std::runtime_error& error) {
+        EXPECT_NE(std::string(error.what()).find("not a regular file (a FIFO)"), std::string::npos)
+            << error.what();
+    }
 }
 
 TEST_F(ImageIo, ReadingAMissingFileThrows) {
