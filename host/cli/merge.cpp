@@ -19,6 +19,7 @@
 #include "output/tiled/streaming_image.hpp"
 #include "output/video/video_encoder.hpp"
 #include "render/sample_budget.hpp"
+#include "util/interruption.hpp"
 #include "view_file/view_file.hpp"
 
 namespace fgr {
@@ -178,6 +179,7 @@ int merge_frames_into_video(const MergeOptions& options) {
     try {
         VideoEncoder encoder(options.output, settings);
         encoder.add_frame(first);
+        hold_for_test("merge");
         for (size_t i = 1; i < frames.size(); ++i) {
             const Image8 image = read_frame(frames[i]);
             if (image.width != first.width || image.height != first.height) {
@@ -237,6 +239,8 @@ void add_merge_command(CLI::App& app, MergeOptions& options) {
 }
 
 int command_merge(const MergeOptions& options) {
+    // A merge does not stop midway: a signal removes its temporary output and ends it at once.
+    install_interrupt_handlers();
     if (!options.frames_directory.empty()) return merge_frames_into_video(options);
     if (options.parts.empty()) {
         throw UsageError(

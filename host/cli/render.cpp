@@ -29,6 +29,7 @@
 #include "render/sample_budget.hpp"
 #include "scene/ifs/ifs.hpp"
 #include "tiled_render.hpp"
+#include "util/interruption.hpp"
 #include "util/suggest.hpp"
 #include "util/timing.hpp"
 #include "view_options.hpp"
@@ -554,6 +555,9 @@ void add_render_command(CLI::App& app, RenderOptions& options) {
 }
 
 int command_render(const RenderOptions& typed_options) {
+    // A signal removes the temporary of any file being written (tiled renders and parts stop
+    // cleanly between tiles instead).
+    install_interrupt_handlers();
     RenderOptions options = typed_options;
     std::optional<ViewFile> view;
     if (const std::optional<std::string> argument = view_argument(options)) {

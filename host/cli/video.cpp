@@ -9,7 +9,6 @@
 
 #include <atomic>
 #include <chrono>
-#include <csignal>
 #include <filesystem>
 #include <nlohmann/json.hpp>
 #include <optional>
@@ -31,28 +30,12 @@
 #include "output/video/video_render.hpp"
 #include "output/video/video_timing.hpp"
 #include "scene/scene_json.hpp"
+#include "util/interruption.hpp"
 #include "util/timing.hpp"
 #include "view_options.hpp"
 
 namespace fgr {
 namespace {
-
-// Set by SIGINT (Ctrl-C): the frame loop stops, and the encoder removes its temporary file.
-volatile std::sig_atomic_t interrupted = 0;
-
-extern "C" void on_interrupt(int) { interrupted = 1; }
-
-// Catches Ctrl-C while it lives, then gives SIGINT back its previous handler.
-class InterruptGuard {
-public:
-    InterruptGuard() : previous_(std::signal(SIGINT, on_interrupt)) { interrupted = 0; }
-    ~InterruptGuard() { std::signal(SIGINT, previous_); }
-    InterruptGuard(const InterruptGuard&) = delete;
-    InterruptGuard& operator=(const InterruptGuard&) = delete;
-
-private:
-    void (*previous_)(int);
-};
 
 // Throws UsageError unless `file`'s directory exists and can be written into.
 void check_writable_directory_of(const std::filesystem::path& file) {
@@ -223,6 +206,7 @@ CameraPath video_camera_path(const Scene& scene, const RenderOptions& frame_opti
 }  // namespace
 
 int command_video(const VideoOptions& typed_options) {
+    install_interrupt_handlers();
     VideoOptions options = typed_options;
     const std::optional<ViewFile> view = apply_view_argument(options);
     if (options.frame.scene.empty()) {
@@ -277,11 +261,13 @@ int command_video(const VideoOptions& typed_options) {
         video_metadata(frame_view, CameraPathFile{scene.id, path}, timing);
 
     Cluster& cluster = Cluster::current();
-    InterruptGuard interrupt_guard;
+    // Ctrl-C or SIGTERM stops between frames (and within one); the encoder and the frame writer
+    // remove their temporaries.
+    const InterruptScope interrupt_scope;
     std::optional<ProgressLine> progress;
     std::chrono::steady_clock::time_point started;
     VideoHooks hooks;
-    hooks.interrupted = [] { return interrupted != 0; };
+    hooks.interrupted = interrupted;
     hooks.started = [&](const std::string& encoder) {
         spdlog::info("{} frames at {:g} fps: path time {:g} to {:g} s, {}{}{}", frames.views.size(),
                      timing.fps, timing.start, timing.frame_time(timing.frame_count() - 1),
@@ -298,12 +284,23 @@ int command_video(const VideoOptions& typed_options) {
         const double seconds = seconds_since(started);
         progress->update(done, frames.count(), done, seconds,
                          fmt::format("{:.2f} fps", seconds > 0.0 ? double(done) / seconds : 0.0));
+        hold_for_test("frame");
     };
     hooks.stopped = [&] { progress->finish(); };
     FarmFrameDispatch dispatch(cluster);
-    const VideoResult result = render_video(
-        frames, job.request, [&](const FrameRequest& request) { return renderer.render(request); },
-        output, dispatch, hooks);
+    VideoResult result;
+    try {
+        result = render_video(
+            frames, job.request,
+            [&](const FrameRequest& request) { return renderer.render(request); }, output, dispatch,
+            hooks);
+    } catch (const std::runtime_error&) {
+        if (!dispatch.lost().empty()) throw RuntimeFailure(dispatch.lost());
+        if (!interrupted()) throw;
+        spdlog::error("interrupted: no video written{}",
+                      options.output.empty() ? "" : fmt::format(" to '{}'", options.output));
+        return interrupted_exit_code();
+    }
     if (!result.wrote) return 0;
     if (!options.output.empty()) {
         fmt::print("wrote {} ({} frames, {}x{}, {:g} fps, {})\n", options.output,

@@ -1,15 +1,18 @@
 // SPDX-License-Identifier: Apache-2.0
 #include "util/atomic_file.hpp"
 
+#include <signal.h>
 #include <unistd.h>
 
 #include <atomic>
 #include <cerrno>
+#include <regex>
 #include <stdexcept>
 #include <system_error>
 #include <utility>
 
 #include "util/errors.hpp"
+#include "util/interruption.hpp"
 
 namespace fgr {
 namespace {
@@ -28,6 +31,7 @@ fs::path temporary_path_for(const fs::path& target) {
 // Deletes the file on scope exit unless it was committed (renamed into place).
 struct TemporaryFile {
     fs::path path;
+    TemporaryFileRegistration registration{path};  // a signal removes it too
     bool committed = false;
 
     explicit TemporaryFile(fs::path temporary) : path(std::move(temporary)) {}
@@ -42,6 +46,26 @@ struct TemporaryFile {
 };
 
 }  // namespace
+
+int remove_stale_temporaries(const fs::path& target) {
+    const fs::path directory = target.has_parent_path() ? target.parent_path() : fs::path(".");
+    const std::string prefix = target.filename().string() + ".tmp-";
+    const std::regex suffix(R"(([0-9]{1,9})-[0-9]{1,9})");
+    int removed = 0;
+    std::error_code error;
+    for (const auto& entry : fs::directory_iterator(directory, error)) {
+        const std::string name = entry.path().filename().string();
+        std::smatch match;
+        const std::string rest = name.starts_with(prefix) ? name.substr(prefix.size()) : "";
+        if (rest.empty() || !std::regex_match(rest, match, suffix)) continue;
+        const pid_t pid = static_cast<pid_t>(std::stol(match[1]));
+        // A process that still runs (or that this one may not signal) may still be writing it.
+        if (pid == ::getpid() || ::kill(pid, 0) == 0 || errno != ESRCH) continue;
+        std::error_code ignored;
+        removed += fs::remove(entry.path(), ignored) ? 1 : 0;
+    }
+    return removed;
+}
 
 PendingFile::PendingFile(fs::path target)
     : target_(std::move(target)), temporary_(temporary_path_for(target_)) {}

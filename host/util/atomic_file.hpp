@@ -9,6 +9,8 @@
 #include <string>
 #include <string_view>
 
+#include "util/interruption.hpp"
+
 namespace fgr {
 
 // Calls write_temporary(temporary path) — which returns "" on success, else the reason it
@@ -22,9 +24,14 @@ std::string replace_file_atomically(
 // the reason.
 std::string close_durably(std::FILE*& file);
 
+// Removes the temporaries of `target` (named after it, with the writer's process id) left by
+// processes that no longer run: a writer killed with SIGKILL, or one that crashed. Returns how many
+// it removed.
+int remove_stale_temporaries(const std::filesystem::path& target);
+
 // A file written over time (a streamed image) under a temporary name beside `target`: commit()
 // renames it into place; destroying it uncommitted (an error, Ctrl-C) removes the temporary, so
-// `target` never holds a partial file.
+// `target` never holds a partial file. A signal removes the temporary too (interruption.hpp).
 class PendingFile {
 public:
     explicit PendingFile(std::filesystem::path target);
@@ -41,6 +48,7 @@ public:
 private:
     std::filesystem::path target_;
     std::filesystem::path temporary_;
+    TemporaryFileRegistration registration_{temporary_};  // a signal removes it too
     bool committed_ = false;
 };
 

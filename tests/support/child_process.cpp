@@ -8,6 +8,7 @@
 #include <sys/wait.h>
 #include <unistd.h>
 
+#include <algorithm>
 #include <array>
 #include <cerrno>
 #include <cstdlib>
@@ -125,6 +126,7 @@ RunResult run_child(const fs::path& program, const std::vector<std::string>& arg
         {{out_pipe.read_end(), POLLIN, 0}, {err_pipe.read_end(), POLLIN, 0}}};
     std::array<std::string*, 2> sinks{&result.out, &result.err};
     int open_streams = 2;
+    bool watched = false;
     while (open_streams > 0) {
         const auto left = std::chrono::duration_cast<std::chrono::milliseconds>(
             deadline - std::chrono::steady_clock::now());
@@ -133,7 +135,11 @@ RunResult run_child(const fs::path& program, const std::vector<std::string>& arg
             kill(pid, SIGKILL);
             break;
         }
-        const int ready = poll(polled.data(), polled.size(), static_cast<int>(left.count()));
+        // With a watch, a look every few milliseconds until it has acted.
+        const long wait_ms = options.watch && !watched ? std::min<long>(left.count(), 5)
+                                                       : static_cast<long>(left.count());
+        const int ready = poll(polled.data(), polled.size(), static_cast<int>(wait_ms));
+        if (options.watch && !watched) watched = options.watch(pid, result.err);
         if (ready < 0) {
             if (errno == EINTR) continue;
             kill(pid, SIGKILL);
@@ -182,6 +188,10 @@ std::string read_file(const fs::path& file) {
 RunResult run_fgr(const std::vector<std::string>& args, const std::filesystem::path& working_dir) {
     ChildOptions options;
     options.working_dir = working_dir;
+    return run_fgr(args, options);
+}
+
+RunResult run_fgr(const std::vector<std::string>& args, ChildOptions options) {
     options.environment["FGR_PLUGIN_PATH"] = std::nullopt;
     return run_child(FGR_TEST_FGR_EXE, args, options);
 }

@@ -4,8 +4,11 @@
 // changes in; exit status, signal, timeout and captured stdout / stderr out. Plus a temporary
 // directory that removes itself.
 
+#include <sys/types.h>
+
 #include <chrono>
 #include <filesystem>
+#include <functional>
 #include <map>
 #include <optional>
 #include <ostream>
@@ -34,6 +37,10 @@ struct ChildOptions {
     // Variables set (a value) or removed (nullopt) in the child's copy of this environment.
     std::map<std::string, std::optional<std::string>> environment;
     std::chrono::seconds timeout{120};  // then the child is killed and reported as timed out
+    // Called every few milliseconds while the child runs, with its pid and its stderr so far,
+    // until it returns true: a test acts on an event it observes (a file appearing, a line
+    // printed), e.g. by signalling the child.
+    std::function<bool(pid_t, const std::string&)> watch{};
 };
 
 // Runs `program` with `args` (stdin from /dev/null), capturing stdout and stderr.
@@ -43,6 +50,8 @@ RunResult run_child(const std::filesystem::path& program, const std::vector<std:
 // Runs the built fgr with `args` in `working_dir`. The child gets this environment minus
 // FGR_PLUGIN_PATH, so it finds its plugins next to itself, as an installed fgr does.
 RunResult run_fgr(const std::vector<std::string>& args, const std::filesystem::path& working_dir);
+// The same with `options` (their environment minus FGR_PLUGIN_PATH).
+RunResult run_fgr(const std::vector<std::string>& args, ChildOptions options);
 
 class TempDir {
 public:

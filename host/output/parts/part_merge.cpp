@@ -17,6 +17,7 @@
 #include "output/tiled/row_encoder.hpp"
 #include "output/tiled/streaming_image.hpp"
 #include "render/sample_budget.hpp"
+#include "util/interruption.hpp"
 
 namespace fgr {
 namespace {
@@ -272,6 +273,7 @@ MergeResult merge_parts(const MergePlan& plan, TiledOutput output, size_t band_b
         }
         writer->write_rows(band.data(), rows);
         ++result.bands;
+        hold_for_test("merge");
     }
     writer->finish();
     return result;

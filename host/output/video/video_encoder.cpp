@@ -50,6 +50,7 @@ VideoEncoder::VideoEncoder(const std::filesystem::path& output, VideoSettings se
     if (settings.codec.empty()) settings.codec = state_->backend.default_codec(output);
     // Beside the output (same file system, so the rename is atomic), hidden, named after it.
     temporary_ = output.parent_path() / fmt::format(".{}.partial", output.filename().string());
+    registration_ = std::make_unique<TemporaryFileRegistration>(temporary_);
     try {
         state_->encoder = state_->backend.open(output, temporary_, settings, &description_);
     } catch (...) {

@@ -12,6 +12,7 @@
 #include <string>
 
 #include "image/image_io.hpp"
+#include "util/interruption.hpp"
 
 namespace fgr {
 
@@ -60,6 +61,8 @@ private:
     struct State;
     std::unique_ptr<State> state_;
     std::filesystem::path output_, temporary_;
+    // A signal removes the temporary too (util/interruption.hpp).
+    std::unique_ptr<TemporaryFileRegistration> registration_;
     std::string description_;
     bool finished_ = false;
 };
