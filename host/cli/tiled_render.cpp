@@ -8,7 +8,6 @@
 #include <algorithm>
 #include <chrono>
 #include <cmath>
-#include <csignal>
 #include <filesystem>
 #include <optional>
 #include <regex>
@@ -24,39 +23,11 @@
 #include "render/precision.hpp"
 #include "render/renderer.hpp"
 #include "scene/parameters.hpp"
+#include "util/interruption.hpp"
 #include "util/timing.hpp"
 
 namespace fgr {
 namespace {
-
-volatile std::sig_atomic_t interrupt_signal = 0;
-
-void note_interrupt(int signal) { interrupt_signal = signal; }
-
-// Catches Ctrl-C (and SIGTERM) while it lives, so a render stops between tiles and cleans up
-// instead of dying with a partial file; the previous handlers come back after.
-class InterruptCatcher {
-public:
-    InterruptCatcher() {
-        interrupt_signal = 0;
-        struct sigaction action {};
-        action.sa_handler = note_interrupt;
-        sigemptyset(&action.sa_mask);
-        sigaction(SIGINT, &action, &previous_int_);
-        sigaction(SIGTERM, &action, &previous_term_);
-    }
-    ~InterruptCatcher() {
-        sigaction(SIGINT, &previous_int_, nullptr);
-        sigaction(SIGTERM, &previous_term_, nullptr);
-    }
-    InterruptCatcher(const InterruptCatcher&) = delete;
-    InterruptCatcher& operator=(const InterruptCatcher&) = delete;
-    static bool caught() { return interrupt_signal != 0; }
-
-private:
-    struct sigaction previous_int_ {};
-    struct sigaction previous_term_ {};
-};
 
 double peak_memory_mib() {
     rusage usage{};
@@ -137,16 +108,17 @@ int write_tiles(Cluster& cluster, const TiledRender& render, const TaskWork& wor
                         format_rate(seconds > 0.0 ? double(rays) / seconds : 0.0) + "rays/s");
     };
     FarmSettings farm;
-    farm.interrupted = [] { return InterruptCatcher::caught(); };
+    farm.interrupted = interrupted;
     std::vector<int64_t> tiles(file->tiles_to_render().begin(), file->tiles_to_render().end());
     FarmOutcome outcome;
     try {
         outcome = run_farm(cluster, tiles, work, place, farm);
         if (outcome.finished) file->finish();
     } catch (const std::runtime_error& error) {
-        // Ctrl-C reaches every rank: a tile abandoned for it is no failure of that rank.
+        // Ctrl-C reaches every rank: a tile abandoned for it is no failure of that rank. A rank
+        // that died is, even when mpirun stopped this one for it.
         progress.finish();
-        if (!InterruptCatcher::caught()) {
+        if (!interrupted() || dynamic_cast<const RankLost*>(&error) != nullptr) {
             if (file->keep_store_if_useful()) {
                 spdlog::info("the finished bands are kept in '{}' for --resume",
                              file->store_path().string());
@@ -155,14 +127,20 @@ int write_tiles(Cluster& cluster, const TiledRender& render, const TaskWork& wor
         }
     }
     progress.finish();
-    if (!outcome.finished || InterruptCatcher::caught()) {
+    if (!outcome.finished || interrupted()) {
         const std::filesystem::path store = file->store_path();
-        file.reset();  // removes the unfinished file, keeps the store
-        spdlog::error(
-            "interrupted: nothing written to '{}'; the finished bands are kept in '{}': "
-            "run the same command with --resume to continue",
-            options.output, store.string());
-        return 130;
+        const bool kept = file->keep_store_if_useful();
+        file.reset();  // removes the unfinished file
+        if (kept) {
+            spdlog::error(
+                "interrupted: nothing written to '{}'; the finished bands are kept in '{}': "
+                "run the same command with --resume to continue",
+                options.output, store.string());
+        } else {
+            spdlog::error("interrupted: nothing written to '{}' (no band was finished yet)",
+                          options.output);
+        }
+        return interrupted_exit_code();
     }
     const double seconds = seconds_since(start);
     fmt::print("render_ms {:.1f}\n", seconds * 1000.0);
@@ -197,9 +175,10 @@ int render_tiled(const Scene& scene, const FrameRequest& request, const ComputeD
     output.display = display_transform(scene, whole.params);
     output.embedded_view = options.embedded_view;
 
-    InterruptCatcher catcher;
+    // Ctrl-C or SIGTERM stops between tiles (and within them), keeping the finished bands.
+    const InterruptScope interrupt_scope;
     FrameRequest tile_request = whole;
-    tile_request.cancel = [] { return InterruptCatcher::caught(); };
+    tile_request.cancel = interrupted;
     const TiledRender render = [&] {
         try {
             return TiledRender(renderer, tile_request, output,
@@ -250,11 +229,11 @@ int render_part_file(const Scene& scene, const FrameRequest& request, const Comp
         }
     }
 
-    InterruptCatcher catcher;
+    const InterruptScope interrupt_scope;
     ProgressLine progress("launches");
     PartSettings settings;
     settings.tile_size = options.tile_size.value_or(kDefaultTileSize);
-    settings.interrupted = [] { return InterruptCatcher::caught(); };
+    settings.interrupted = interrupted;
     settings.embedded_view = options.embedded_view;
     const auto start = std::chrono::steady_clock::now();
     const PixelRegion rendered = rendered_region(part);
@@ -276,7 +255,7 @@ int render_part_file(const Scene& scene, const FrameRequest& request, const Comp
     progress.finish();
     if (result.interrupted) {
         spdlog::error("interrupted: nothing written to '{}'", options.output);
-        return 130;
+        return interrupted_exit_code();
     }
     const PixelRegion& region = result.region;
     fmt::print("render_ms {:.1f}\n", result.render_ms);

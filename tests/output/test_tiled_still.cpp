@@ -10,6 +10,8 @@
 #include <ImfHeader.h>
 #include <ImfInputFile.h>
 #include <gtest/gtest.h>
+#include <signal.h>
+#include <sys/stat.h>
 #include <tiffio.h>
 
 #include <cmath>
@@ -32,6 +34,7 @@
 #include "render/renderer.hpp"
 #include "scene/ifs/ifs.hpp"
 #include "scene/parameters.hpp"
+#include "test_files.hpp"
 #include "test_scenes.hpp"
 
 namespace fgr {
@@ -310,7 +313,9 @@ TEST_F(TiledStillTest, AnInterruptedRenderResumesToTheSameImage) {
     EXPECT_FALSE(fs::exists(tile_store_path(output.path))) << "the store goes with a finished file";
 }
 
-// A damaged band file is rendered again, not trusted.
+// A damaged band file is rendered again, not trusted: bytes flipped, a hit count past the band's
+// pixels (--resume once reported it as the image's), or a FIFO or a directory named like the band
+// (which once blocked --resume and aborted it).
 TEST_F(TiledStillTest, ADamagedBandIsRenderedAgain) {
     const Scene scene = test::built_scene("menger.so");
     auto built = renderer(scene, RenderMode::Shaded);
@@ -319,30 +324,46 @@ TEST_F(TiledStillTest, ADamagedBandIsRenderedAgain) {
     output.path = temp_.path() / "a.png";
     TiledSettings settings;
     settings.tile_size = 32;
-    render_tiled_still(*built, whole, output, settings);
+    const long expected_hits = render_tiled_still(*built, whole, output, settings).hits;
     const std::vector<uint8_t> expected = read_png(output.path).rgb;
 
-    // Three bands of four tiles: stopped in the last, after two whole bands.
-    long done = 0;
-    TiledSettings stopping = settings;
-    stopping.on_progress = [&done](const TiledProgress& progress) { done = progress.tiles_done; };
-    stopping.interrupted = [&done] { return done >= 9; };
-    output.path = temp_.path() / "b.png";
-    ASSERT_TRUE(render_tiled_still(*built, whole, output, stopping).interrupted);
-    const fs::path band = tile_store_path(output.path) / "band_000000.z";
-    ASSERT_TRUE(fs::exists(band));
-    std::string bytes = test::read_file(band);
-    bytes[bytes.size() / 2] = char(bytes[bytes.size() / 2] ^ 0x55);
-    {
-        std::FILE* file = std::fopen(band.c_str(), "wb");
-        std::fwrite(bytes.data(), 1, bytes.size(), file);
-        std::fclose(file);
+    enum class Damage { FlippedByte, HugeHitCount, Fifo, Directory };
+    for (const Damage damage :
+         {Damage::FlippedByte, Damage::HugeHitCount, Damage::Fifo, Damage::Directory}) {
+        SCOPED_TRACE(static_cast<int>(damage));
+        // Three bands of four tiles: stopped in the last, after two whole bands.
+        long done = 0;
+        TiledSettings stopping = settings;
+        stopping.on_progress = [&done](const TiledProgress& progress) {
+            done = progress.tiles_done;
+        };
+        stopping.interrupted = [&done] { return done >= 9; };
+        output.path = temp_.path() / "b.png";
+        ASSERT_TRUE(render_tiled_still(*built, whole, output, stopping).interrupted);
+        const fs::path band = tile_store_path(output.path) / "band_000000.z";
+        ASSERT_TRUE(fs::exists(band));
+        std::string bytes = test::read_file(band);
+        if (damage == Damage::FlippedByte) bytes[bytes.size() / 2] ^= 0x55;
+        if (damage == Damage::HugeHitCount) {
+            const int64_t hits = 136580477;
+            std::memcpy(bytes.data() + 32, &hits, sizeof hits);  // the header's hit count
+        }
+        fs::remove(band);
+        if (damage == Damage::Fifo) {
+            ASSERT_EQ(::mkfifo(band.c_str(), 0600), 0);
+        } else if (damage == Damage::Directory) {
+            fs::create_directories(band / "inside");
+        } else {
+            test::write_text(band, bytes);
+        }
+        TiledSettings resuming = settings;
+        resuming.resume = true;
+        const TiledResult resumed = render_tiled_still(*built, whole, output, resuming);
+        EXPECT_EQ(resumed.tiles_resumed, resumed.plan.tiles_per_band())
+            << "band 1 kept, band 0 redone";
+        EXPECT_EQ(read_png(output.path).rgb, expected);
+        EXPECT_EQ(resumed.hits, expected_hits) << "the hits of the image, not of a header";
     }
-    TiledSettings resuming = settings;
-    resuming.resume = true;
-    const TiledResult resumed = render_tiled_still(*built, whole, output, resuming);
-    EXPECT_EQ(resumed.tiles_resumed, resumed.plan.tiles_per_band()) << "band 1 kept, band 0 redone";
-    EXPECT_EQ(read_png(output.path).rgb, expected);
 }
 
 TEST(TilePlan, BandsStayWithinTheMemoryBudgetAndTilesAlignToPackets) {
@@ -413,42 +434,96 @@ TEST(TiledStillCli, TiledPngAtThreeThousandPixelsEqualsTheUntiledRender) {
     EXPECT_EQ(read_png(temp.path() / "tiled.png").rgb, read_png(temp.path() / "untiled.png").rgb);
 }
 
-// Ctrl-C mid-render: nothing at the output path; the same command with --resume then writes the
-// image an uninterrupted render gives. (Whenever the signal lands, both hold; when it lands
-// during the tiles, the exit code is 130 and the tile store is kept.) A render that finishes
-// before the signal (a much faster machine) skips the test.
-TEST(TiledStillCli, CtrlCLeavesNoFileAndResumeFinishesTheSameImage) {
-    test::TempDir temp("fgr_tiled_interrupt");
-    const std::vector<std::string> args{"render",   "mandelbulb", "--width",     "2400",
-                                        "--height", "1800",       "--tile-size", "128"};
-    auto whole = args;
-    whole.insert(whole.end(), {"-o", "whole.png"});
-    ASSERT_EQ(test::run_fgr(whole, temp.path()).exit_code, 0);
+// A tiled render stopped by a signal once its tile store holds the first band, and then resumed.
+// The moment is observed, not guessed: with FGR_TEST_HOLD=band fgr waits after storing its first
+// band until a signal arrives, and the test sends the signal once it sees the band's file, so the
+// render can neither finish first nor be stopped before it has a band to resume from, however
+// fast or loaded the machine. Menger 64x48 in 16-pixel tiles: three bands of four tiles.
+class TiledStillInterruption : public ::testing::Test {
+protected:
+    static std::vector<std::string> args(const std::string& output) {
+        return {"render", "menger", "--width", "64",          "--height",
+                "48",     "-o",     output,    "--tile-size", "16"};
+    }
 
-    auto interrupted = args;
-    interrupted.insert(interrupted.begin(),
-                       {"--preserve-status", "-s", "INT", "3", FGR_TEST_FGR_EXE});
-    interrupted.insert(interrupted.end(), {"-o", "out.png"});
-    test::ChildOptions options;
-    options.working_dir = temp.path();
-    const test::RunResult stopped = test::run_child("/usr/bin/timeout", interrupted, options);
-    if (stopped.exit_code == 0) GTEST_SKIP() << "finished before the signal";
-    EXPECT_FALSE(fs::exists(temp.path() / "out.png"));
-    for (const auto& entry : fs::directory_iterator(temp.path())) {
-        const std::string name = entry.path().filename().string();
-        EXPECT_TRUE(name == "whole.png" || name == "out.png.fgr-tiles") << "left behind: " << name;
+    // The file an uninterrupted render writes (once per process).
+    static const std::string& uninterrupted() {
+        static const std::string bytes = [] {
+            test::TempDir temp("fgr_tiled_whole");
+            const test::RunResult run = test::run_fgr(args("whole.png"), temp.path());
+            EXPECT_EQ(run.exit_code, 0) << run;
+            return test::read_file(temp.path() / "whole.png");
+        }();
+        return bytes;
     }
-    // Caught (not killed before the handler was in place): exit 130, the store kept, said so.
-    if (stopped.err.find("interrupted:") != std::string::npos) {
-        EXPECT_EQ(stopped.exit_code, 130) << stopped;
-        EXPECT_TRUE(fs::exists(temp.path() / "out.png.fgr-tiles"));
+
+    // The render to out.png, sent `signal` once band 0 is in its tile store.
+    test::RunResult stopped_by(int signal) {
+        test::ChildOptions options;
+        options.working_dir = temp_.path();
+        options.environment["FGR_TEST_HOLD"] = "band";
+        const fs::path band = temp_.path() / "out.png.fgr-tiles" / "band_000000.z";
+        options.watch = [&band, signal](pid_t pid, const std::string&) {
+            if (!fs::exists(band)) return false;
+            ::kill(pid, signal);
+            return true;
+        };
+        return test::run_fgr(args("out.png"), options);
+    }
+
+    // The same command with --resume: the uninterrupted render's file, byte for byte, from the
+    // bands kept, and nothing else left in the directory.
+    void expect_resume_finishes_the_same_image() {
+        auto resume = args("out.png");
+        resume.push_back("--resume");
+        const test::RunResult resumed = test::run_fgr(resume, temp_.path());
+        ASSERT_EQ(resumed.exit_code, 0) << resumed;
+        EXPECT_NE(resumed.out.find("tiles 12 (4 from an earlier run"), std::string::npos)
+            << resumed;
+        EXPECT_EQ(test::read_file(temp_.path() / "out.png"), uninterrupted());
+        EXPECT_EQ(test::directory_listing(temp_.path()), std::vector<std::string>{"out.png"})
+            << "no temporary, no tile store left";
+    }
+
+    // A signal fgr catches: it stops between tiles, writes nothing, keeps the store and says how
+    // to resume; exit 128 + the signal.
+    void expect_caught(int signal) {
+        ASSERT_FALSE(uninterrupted().empty());
+        const test::RunResult stopped = stopped_by(signal);
+        ASSERT_TRUE(stopped.exited) << stopped;
+        EXPECT_EQ(stopped.exit_code, 128 + signal) << stopped;
+        EXPECT_NE(stopped.err.find("holding after the first band"), std::string::npos) << stopped;
+        EXPECT_NE(stopped.err.find("interrupted: nothing written to 'out.png'"), std::string::npos)
+            << stopped;
         EXPECT_NE(stopped.err.find("--resume"), std::string::npos) << stopped;
+        EXPECT_EQ(test::directory_listing(temp_.path()),
+                  std::vector<std::string>{"out.png.fgr-tiles"})
+            << "no file at the output path and no temporary";
+        expect_resume_finishes_the_same_image();
     }
-    auto resume = args;
-    resume.insert(resume.end(), {"-o", "out.png", "--resume"});
-    const test::RunResult resumed = test::run_fgr(resume, temp.path());
-    ASSERT_EQ(resumed.exit_code, 0) << resumed;
-    EXPECT_EQ(read_png(temp.path() / "out.png").rgb, read_png(temp.path() / "whole.png").rgb);
+
+    test::TempDir temp_{"fgr_tiled_interrupt"};
+};
+
+TEST_F(TiledStillInterruption, CtrlCLeavesNoFileAndResumeFinishesTheSameImage) {
+    expect_caught(SIGINT);
+}
+
+TEST_F(TiledStillInterruption, SigtermLeavesNoFileAndResumeFinishesTheSameImage) {
+    expect_caught(SIGTERM);
+}
+
+// Killed outright (SIGKILL: no handler runs), the render leaves its temporary output beside the
+// store; --resume removes it and finishes the same image.
+TEST_F(TiledStillInterruption, KillNineThenResumeFinishesTheSameImageAndRemovesTheTemporary) {
+    ASSERT_FALSE(uninterrupted().empty());
+    const test::RunResult killed = stopped_by(SIGKILL);
+    ASSERT_EQ(killed.term_signal, SIGKILL) << killed;
+    const std::vector<std::string> left = test::directory_listing(temp_.path());
+    ASSERT_EQ(left.size(), 2u) << ::testing::PrintToString(left);
+    EXPECT_EQ(left[0], "out.png.fgr-tiles");
+    EXPECT_EQ(left[1].rfind("out.png.tmp-", 0), 0u) << "the killed run's temporary: " << left[1];
+    expect_resume_finishes_the_same_image();
 }
 
 TEST(TiledStillCli, BadInputIsAOneLineErrorWithNothingWritten) {

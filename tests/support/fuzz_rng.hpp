@@ -6,7 +6,9 @@
 
 #include <cstddef>
 #include <cstdint>
+#include <cstdlib>
 #include <random>
+#include <string>
 
 namespace fgr::test {
 
@@ -30,5 +32,18 @@ public:
 private:
     std::mt19937_64 engine_;
 };
+
+// How many cases a fuzz test runs: FGR_FUZZ_CASES, default 10000 (a longer run before a release
+// sets more).
+inline std::uint64_t fuzz_case_count() {
+    const char* text = std::getenv("FGR_FUZZ_CASES");
+    return text != nullptr && *text != '\0' ? std::stoull(text) : 10000;
+}
+
+// The seed of a fuzz test's case 0 (case i is seeded with base + i): FGR_FUZZ_SEED, default fixed.
+inline std::uint64_t fuzz_base_seed() {
+    const char* text = std::getenv("FGR_FUZZ_SEED");
+    return text != nullptr && *text != '\0' ? std::stoull(text) : 20260529;
+}
 
 }  // namespace fgr::test

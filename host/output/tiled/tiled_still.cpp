@@ -18,6 +18,8 @@
 #include "output/still_layers.hpp"
 #include "output/tiled/row_encoder.hpp"
 #include "output/tiled/tile_store.hpp"
+#include "util/atomic_file.hpp"
+#include "util/interruption.hpp"
 #include "util/timing.hpp"
 
 namespace fgr {
@@ -131,6 +133,9 @@ TiledFile::TiledFile(const TiledRender& render, const TiledOutput& output, bool 
     : plan_(render.plan()),
       pixel_bytes_(render.layout().pixel_bytes()),
       store_path_(tile_store_path(output.path)) {
+    // A run killed outright (SIGKILL, a crash) leaves its temporary output: the run that replaces
+    // it removes it.
+    if (resume) remove_stale_temporaries(output.path);
     // The file first: if it cannot be written, no tile store is made either.
     writer_ = open_streaming_image(output.path, output.format, plan_.width, plan_.height,
                                    render.layout(), {}, output.embedded_view);
@@ -143,7 +148,7 @@ TiledFile::TiledFile(const TiledRender& render, const TiledOutput& output, bool 
     for (int b = 0; b < plan_.bands(); ++b) {
         if (resume) {
             scratch.resize(pixel_bytes_ * size_t(plan_.width) * size_t(band_rows(b)));
-            band_in_store_[size_t(b)] = store_->load_band(b, scratch).has_value();
+            band_in_store_[size_t(b)] = store_->load_band(b, band_pixels(b), scratch).has_value();
         }
         if (band_in_store_[size_t(b)]) continue;
         for (int t = 0; t < plan_.tiles_per_band(); ++t) {
@@ -158,6 +163,8 @@ TiledFile::~TiledFile() = default;
 int TiledFile::band_rows(int band) const {
     return std::min(plan_.band_rows, plan_.height - band * plan_.band_rows);
 }
+
+long TiledFile::band_pixels(int band) const { return long(plan_.width) * band_rows(band); }
 
 void TiledFile::add(long index, const EncodedTile& tile) {
     const int band = static_cast<int>(index / plan_.tiles_per_band());
@@ -189,7 +196,7 @@ void TiledFile::write_ready_bands() {
         const int b = next_band_;
         if (band_in_store_[size_t(b)]) {
             kept.resize(pixel_bytes_ * size_t(plan_.width) * size_t(band_rows(b)));
-            const std::optional<long> hits = store_->load_band(b, kept);
+            const std::optional<long> hits = store_->load_band(b, band_pixels(b), kept);
             if (!hits)
                 throw std::runtime_error(fmt::format("band {} of the tile store vanished", b));
             hits_ += *hits;
@@ -201,6 +208,7 @@ void TiledFile::write_ready_bands() {
             hits_ += it->second.hits;
             writer_->write_rows(it->second.rows.data(), band_rows(b));
             open_.erase(it);
+            hold_for_test("band");
         }
         ++next_band_;
     }

@@ -164,7 +164,8 @@ class TileStore;
 class TiledFile {
 public:
     // Opens the output (std::runtime_error when it cannot be written) and the tile store
-    // (resumed with `resume`; refused as TileStore says).
+    // (resumed with `resume`; refused as TileStore says). Resuming removes the temporary output a
+    // killed run left (remove_stale_temporaries) and takes the bands the store holds valid.
     TiledFile(const TiledRender& render, const TiledOutput& output, bool resume);
     ~TiledFile();
     TiledFile(const TiledFile&) = delete;
@@ -190,6 +191,7 @@ private:
         long hits = 0;
     };
     int band_rows(int band) const;
+    long band_pixels(int band) const;
     void write_ready_bands();
 
     TilePlan plan_;
