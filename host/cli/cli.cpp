@@ -17,6 +17,7 @@
 #include "distributed/cluster.hpp"
 #include "reference.hpp"
 #include "usage.hpp"
+#include "util/interruption.hpp"
 
 namespace fgr {
 namespace {
@@ -43,9 +44,11 @@ int report_error(const std::string& message, int code) {
         cluster.report_failure(line);
         return code;
     }
+    // Said first: when a rank died, mpirun may end this one while it dismisses the others.
+    std::fprintf(stderr, "fgr: error: %s\n", line.c_str());
+    std::fflush(stderr);
     // No rank is left waiting for rank 0, however it ended.
     cluster.dismiss_workers();
-    std::fprintf(stderr, "fgr: error: %s\n", line.c_str());
     return code;
 }
 
@@ -157,8 +160,9 @@ int run_cli(int argc, char** argv) {
         }
         const int code = run_command(command);
         if (cluster.coordinator()) {
+            // After a signal the workers stopped too, which is no failure of theirs.
             if (const std::string failure = Cluster::current().dismiss_workers();
-                !failure.empty()) {
+                !failure.empty() && !interrupted()) {
                 return report_error(failure, kExitFailure);
             }
         }

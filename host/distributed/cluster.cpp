@@ -2,8 +2,10 @@
 #include "distributed/cluster.hpp"
 
 #include <fmt/format.h>
+#include <signal.h>
 #include <unistd.h>
 
+#include <cerrno>
 #include <chrono>
 #include <cstdlib>
 #include <cstring>
@@ -70,6 +72,7 @@ Cluster& Cluster::join(int* argc, char*** argv) {
     cluster.unavailable_ = membership.unavailable;
     cluster.finished_.assign(size_t(cluster.size_), false);
     cluster.owed_reply_.assign(size_t(cluster.size_), false);
+    cluster.peers_.assign(size_t(cluster.size_), {});
     return cluster;
 }
 
@@ -110,6 +113,14 @@ std::optional<Message> Cluster::try_receive(int from) {
     traffic_.bytes += long(bytes.size());
     if (coordinator()) {
         if (message.kind == MessageKind::Failure) finished_[size_t(sender)] = true;
+        if (message.kind == MessageKind::Ready && sender > 0 && sender < size_) {
+            // "PID HOST" (ready_payload); anything else leaves the worker unwatched.
+            const std::string text(message.payload.begin(), message.payload.end());
+            const size_t space = text.find(' ');
+            if (space != std::string::npos && space > 0 && space < 12) {
+                peers_[size_t(sender)] = {std::atol(text.c_str()), text.substr(space + 1)};
+            }
+        }
         // A worker that asked waits for the answer; if rank 0 fails before giving it,
         // dismiss_workers does.
         owed_reply_[size_t(sender)] =
@@ -144,7 +155,13 @@ std::string Cluster::dismiss_workers() {
         if (worker_active(r) && owed_reply_[size_t(r)]) send(r, MessageKind::Done, -1);
     }
     while (any_active()) {
-        const Message message = receive();
+        std::optional<Message> arrived = try_receive();
+        if (!arrived) {
+            vanished_worker();  // a worker whose process is gone owes no message
+            std::this_thread::sleep_for(std::chrono::microseconds(200));
+            continue;
+        }
+        const Message& message = *arrived;
         if (message.kind == MessageKind::Failure) {
             if (failure.empty())
                 failure = std::string(message.payload.begin(), message.payload.end());
@@ -161,6 +178,22 @@ void Cluster::report_failure(const std::string& message) {
     const std::string text = name() + ": " + message;
     send(0, MessageKind::Failure, -1,
          std::span(reinterpret_cast<const uint8_t*>(text.data()), text.size()));
+}
+
+std::vector<uint8_t> Cluster::ready_payload() const {
+    const std::string text = fmt::format("{} {}", long(::getpid()), host_);
+    return {text.begin(), text.end()};
+}
+
+std::optional<std::string> Cluster::vanished_worker() {
+    for (int r = 1; r < size_; ++r) {
+        const Peer& peer = peers_[size_t(r)];
+        if (!worker_active(r) || peer.pid <= 0 || peer.host != host_) continue;
+        if (::kill(static_cast<pid_t>(peer.pid), 0) == 0 || errno != ESRCH) continue;
+        finished_[size_t(r)] = true;  // no answer is owed to a process that is gone
+        return fmt::format("rank {} ({})", r, peer.host);
+    }
+    return std::nullopt;
 }
 
 void Cluster::leave() {

@@ -77,6 +77,13 @@ public:
     // A worker that failed: tells rank 0 (which prints it, naming this rank) and stops.
     void report_failure(const std::string& message);
 
+    // A worker's first message (Ready) carries its process id and node (ready_payload); rank 0
+    // keeps them. Rank 0: an active worker on rank 0's own node whose process is gone (killed,
+    // crashed: it said nothing) is marked finished and named, "rank 1 (node7)"; nullopt when
+    // there is none. Workers on other nodes cannot be seen this way (mpirun names them).
+    std::vector<uint8_t> ready_payload() const;
+    std::optional<std::string> vanished_worker();
+
     const Traffic& traffic() const { return traffic_; }
 
     // Ends the MPI job (MPI_Finalize); the cluster is alone after.
@@ -94,6 +101,11 @@ private:
     std::string host_;
     std::vector<bool> finished_;    // rank 0: per worker
     std::vector<bool> owed_reply_;  // rank 0: the worker asked and waits for an answer
+    struct Peer {
+        long pid = 0;
+        std::string host;
+    };
+    std::vector<Peer> peers_;  // rank 0: what each worker's Ready said
     bool failure_reported_ = false;
     Traffic traffic_;
     std::string unavailable_;

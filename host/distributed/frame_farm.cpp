@@ -25,7 +25,12 @@ bool FarmFrameDispatch::run(const std::vector<int64_t>& tasks, const FrameWork& 
     };
     FarmSettings settings = settings_;
     if (interrupted) settings.interrupted = interrupted;
-    outcome_ = run_farm(cluster_, tasks, bytes_of, collect, settings);
+    try {
+        outcome_ = run_farm(cluster_, tasks, bytes_of, collect, settings);
+    } catch (const RankLost& error) {
+        lost_ = error.what();
+        throw;
+    }
     return outcome_.finished;
 }
 

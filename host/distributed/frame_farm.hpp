@@ -26,11 +26,15 @@ public:
 
     // What the last run's farm did (rank 0): the tasks each rank rendered, for the figures.
     const FarmOutcome& outcome() const { return outcome_; }
+    // The rank the last run lost (RankLost's message), "" when none: the video reports it
+    // rather than the interruption that followed.
+    const std::string& lost() const { return lost_; }
 
 private:
     Cluster& cluster_;
     FarmSettings settings_;
     FarmOutcome outcome_;
+    std::string lost_;
 };
 
 }  // namespace fgr

@@ -14,6 +14,8 @@
 #include <thread>
 #include <unordered_map>
 
+#include "util/interruption.hpp"
+
 namespace fgr {
 namespace {
 
@@ -88,7 +90,7 @@ private:
 };
 
 void run_worker(Cluster& cluster, const TaskWork& work) {
-    cluster.send(0, MessageKind::Ready, -1);
+    cluster.send(0, MessageKind::Ready, -1, cluster.ready_payload());
     while (true) {
         const Message message = cluster.receive(0);
         if (message.kind == MessageKind::Done) return;
@@ -98,6 +100,7 @@ void run_worker(Cluster& cluster, const TaskWork& work) {
         }
         const std::vector<uint8_t> result = work(message.task);
         cluster.send(0, MessageKind::Result, message.task, result);
+        hold_for_test("task");
     }
 }
 
@@ -159,8 +162,24 @@ FarmOutcome run_coordinator(Cluster& cluster, const std::vector<int64_t>& tasks,
         }
     };
     LocalWorker local(work);
+    // A worker killed outright says nothing, and mpirun then stops the whole job (rank 0 with
+    // SIGTERM): rank 0 looks for such a worker now and then, and when it is stopped, so that the
+    // job ends naming the rank that died rather than only as interrupted.
+    const auto check_workers = [&] {
+        if (const std::optional<std::string> rank = cluster.vanished_worker()) {
+            throw RankLost(*rank + ": its process ended without a word (killed, or crashed)");
+        }
+    };
+    auto last_check = std::chrono::steady_clock::now();
     while (!schedule.all_back()) {
-        if (settings.interrupted && settings.interrupted()) return outcome;
+        if (settings.interrupted && settings.interrupted()) {
+            check_workers();
+            return outcome;
+        }
+        if (std::chrono::steady_clock::now() - last_check > std::chrono::milliseconds(50)) {
+            check_workers();
+            last_check = std::chrono::steady_clock::now();
+        }
         bool busy = false;
         while (std::optional<Message> message = cluster.try_receive()) {
             busy = true;

@@ -65,9 +65,17 @@ struct RankFailure : std::runtime_error {
     using std::runtime_error::runtime_error;
 };
 
+// Thrown on rank 0 when a worker on its node ended without a word (killed, crashed:
+// Cluster::vanished_worker), also when rank 0 was stopped meanwhile (mpirun ends the job when a
+// rank dies): the rank's death, not the stop, is what to report.
+struct RankLost : RankFailure {
+    using RankFailure::RankFailure;
+};
+
 // Runs `tasks` (ids, handed out in this order) over every rank of `cluster`. Rank 0 returns when
 // every result went to `sink` (finished) or `interrupted` stopped it; workers return when rank 0
-// has no more tasks for them. Throws RankFailure (rank 0) for a failed worker; whatever
+// has no more tasks for them. Throws RankFailure (rank 0) for a failed worker, RankLost for one
+// whose process is gone; whatever
 // `work` or `sink` throws propagates on the rank it was thrown on.
 FarmOutcome run_farm(Cluster& cluster, const std::vector<int64_t>& tasks, const TaskWork& work,
                      const ResultSink& sink, const FarmSettings& settings = {});

@@ -6,12 +6,15 @@
 // ranks render; a path-traced still over 3 ranks is the mean of the three seeds' renders with 3x
 // the samples, the same file run to run, and agrees with one process taking all the samples
 // within 3 standard errors; a video over 3 ranks has every frame once and in order; a rank that
-// cannot open its device ends the job at once with one message naming it, nothing written.
+// cannot open its device, or that is killed, ends the job at once with one message naming it,
+// nothing written.
 #include <gtest/gtest.h>
+#include <signal.h>
 
 #include <algorithm>
 #include <cmath>
 #include <filesystem>
+#include <functional>
 #include <map>
 #include <optional>
 #include <regex>
@@ -22,6 +25,7 @@
 #include "distributed/frame_wire.hpp"
 #include "distributed/task_farm.hpp"
 #include "image/hdr_io.hpp"
+#include "test_files.hpp"
 #include "video_decoding.hpp"
 
 namespace fgr {
@@ -47,17 +51,27 @@ std::vector<std::string> mpirun_options() {
             "none"};
 }
 
-// Runs mpirun with the programs of `ranks` (MPMD: one fgr command line per rank), in `dir`.
+// Runs mpirun with the programs of `ranks` (MPMD: one fgr command line per rank), in `dir`; a
+// command line that starts with "env" runs fgr under /usr/bin/env (for a variable of that rank
+// alone: "env", "NAME=VALUE", fgr's arguments...). `watch` as ChildOptions::watch.
 test::RunResult run_mpi(const std::vector<std::vector<std::string>>& ranks, const fs::path& dir,
-                        bool rank0_renders = true) {
+                        bool rank0_renders = true,
+                        std::function<bool(pid_t, const std::string&)> watch = {}) {
     std::vector<std::string> args = mpirun_options();
     for (size_t r = 0; r < ranks.size(); ++r) {
         if (r > 0) args.push_back(":");
-        args.insert(args.end(), {"-np", "1", FGR_TEST_FGR_EXE});
-        args.insert(args.end(), ranks[r].begin(), ranks[r].end());
+        args.insert(args.end(), {"-np", "1"});
+        auto rest = ranks[r].begin();
+        if (rest != ranks[r].end() && *rest == "env") {
+            args.insert(args.end(), {"/usr/bin/env", *++rest});
+            ++rest;
+        }
+        args.push_back(FGR_TEST_FGR_EXE);
+        args.insert(args.end(), rest, ranks[r].end());
     }
     test::ChildOptions options;
     options.working_dir = dir;
+    options.watch = std::move(watch);
     options.environment["FGR_PLUGIN_PATH"] = std::nullopt;
     options.environment["OMPI_ALLOW_RUN_AS_ROOT"] = "1";
     options.environment["OMPI_ALLOW_RUN_AS_ROOT_CONFIRM"] = "1";
@@ -314,6 +328,39 @@ TEST_F(MpiTest, ARankThatFailsEndsTheJobWithOneMessageNamingIt) {
     EXPECT_EQ(errors, 1u) << failed.err;
     EXPECT_FALSE(fs::exists(dir() / "out.png"));
     EXPECT_FALSE(fs::exists(dir() / "out.png.fgr-tiles"));
+}
+
+// A rank killed outright says nothing; rank 0, which watches the workers on its node, ends the
+// job with one line naming it, and leaves no temporary file. Ranks 1 and 2 hold after their first
+// tile (FGR_TEST_HOLD=task; rank 0 only schedules), so the job cannot finish first; the first of
+// them to say so is killed with SIGKILL once it has.
+TEST_F(MpiTest, ARankThatIsKilledEndsTheJobWithOneLineNamingIt) {
+    const std::vector<std::string> render = {"render", "menger",      "--width", "64", "--height",
+                                             "48",     "--tile-size", "16",      "-o", "out.png"};
+    std::vector<std::string> held = {"env", "FGR_TEST_HOLD=task"};
+    held.insert(held.end(), render.begin(), render.end());
+    const auto kill_first_holder = [](pid_t, const std::string& err) {
+        std::smatch match;
+        const std::regex holding("holding after the first task [^\\n]*pid ([0-9]+)");
+        if (!std::regex_search(err, match, holding)) return false;
+        ::kill(static_cast<pid_t>(std::stol(match[1])), SIGKILL);
+        return true;
+    };
+    const test::RunResult run = run_mpi({render, held, held}, dir(), false, kill_first_holder);
+    EXPECT_FALSE(run.timed_out) << run;
+    EXPECT_FALSE(run.exited && run.exit_code == 0) << run;
+    EXPECT_TRUE(std::regex_search(run.err, std::regex("fgr: error: rank [12] \\([^)]+\\): its "
+                                                      "process ended without a word")))
+        << run.err;
+    size_t errors = 0;
+    for (size_t at = run.err.find("fgr: error:"); at != std::string::npos;
+         at = run.err.find("fgr: error:", at + 1)) {
+        ++errors;
+    }
+    EXPECT_EQ(errors, 1u) << run.err;
+    for (const std::string& name : test::directory_listing(dir())) {
+        EXPECT_TRUE(name == "out.png.fgr-tiles") << "left behind: " << name;
+    }
 }
 
 TEST_F(MpiTest, CommandsThatDoNotShareWorkAreRefusedUnderMpirun) {
