@@ -108,7 +108,8 @@ inline real light_visibility(vec3 p, vec3 to_light, mask lit, real travelled, re
                              march_limits limits, mask* work, PARAMS) {
     real visibility = select(fgr_real(0.0f), fgr_real(1.0f), lit);
     real t = fgr_real(0.0f);
-    real previous = fgr_real(1e10f);
+    real previous = fgr_real(0.0f);   /* the DE at the last sample */
+    real previous_t = fgr_real(0.0f); /* and where it was taken */
     mask active = lit;
     const real floor_length = rounding_floor(p);
     for (int step = 0; step < limits.max_steps; ++step) {
@@ -117,20 +118,32 @@ inline real light_visibility(vec3 p, vec3 to_light, mask lit, real travelled, re
         fgr_count_if(work[0], active);
         work[1] += (mask)(1);
         mask blocked = active & (dist < (t + travelled) * limits.footprint);
-        /* Closest approach between this sample and the previous one (the two DE spheres'
-         * intersection), not just at the samples: without it, long steps leave bands. */
-        real along = dist * dist / (2.0f * previous);
-        real closest = sqrt(fmax(dist * dist - along * along, 0.0f));
+        /* Closest approach between this sample and the previous one, not just at the samples
+         * (without it, long steps leave bands): the circle where the two DE spheres, of radii
+         * `previous` and `dist` with centres `gap` apart, meet; its plane lies `along` back from
+         * this sample and its radius is `closest`. It says how near the ray may pass the surface
+         * between the two samples only where its plane lies between them (0 < along < gap).
+         * Elsewhere one sphere covers the other over the whole step and the nearest the surface
+         * comes is at a sample: this one's DE here, the previous one's counted a step ago. Fractal
+         * DEs are no exact distances: the Mandelbulb's grows by 1 to 1.4 per unit along a shadow
+         * ray leaving it (0.5 r log r from r = e on), the spheres then touch or nest with their
+         * circle, of radius near 0, behind the previous sample, and taking it there put black
+         * specks on lit surfaces. The first sample has no previous one (gap 0). */
+        const real gap = t - previous_t;
+        real along =
+            ((dist - previous) * (dist + previous) + gap * gap) / fmax(2.0f * gap, floor_length);
+        along = select(fgr_real(0.0f), along, (along > 0.0f) & (along < gap));
+        const real closest = sqrt(fmax(dist * dist - along * along, 0.0f));
         /* Penumbra: visibility is min over the ray of k * DE / t, so a ray that passes an
          * occluder at distance d after travelling t is dimmed by how narrowly it missed; the
-         * sharpness k is the built-in parameter shadow_sharpness. */
+         * sharpness k is the built-in parameter shadow_sharpness. t - along is never below the
+         * previous sample's t, so off a lit surface (t = 0 at the first sample) only the floor
+         * divides, and a sample that is not blocked has a DE far above it. */
         real penumbra = param_shadow_sharpness * closest / fmax(t - along, floor_length);
-        /* On the first steps off a flat lit surface the two DE spheres nest (along = dist, so
-         * t - along <= 0): no closest approach to measure there, and using it speckled lit
-         * floors with black pixels. */
-        visibility = select(visibility, fmin(visibility, penumbra), active & (t > along));
+        visibility = select(visibility, fmin(visibility, penumbra), active);
         visibility = select(visibility, fgr_real(0.0f), blocked);
         previous = select(previous, dist, active);
+        previous_t = select(previous_t, t, active);
         active &= !blocked & (visibility > 0.002f);
         /* Capped steps sample the penumbra of thin occluders the shadow ray passes. The cap is a
          * quarter of the distance covered plus 2% of the primary ray's length: lengths of the
