@@ -3,8 +3,14 @@
 // when built, the real mandelbulb plugin in FGR_TEST_PLUGIN_DIR.
 
 #include <gtest/gtest.h>
+#include <sys/socket.h>
+#include <sys/stat.h>
+#include <sys/un.h>
+#include <unistd.h>
 
+#include <algorithm>
 #include <chrono>
+#include <cstdint>
 #include <cstdlib>
 #include <filesystem>
 #include <fstream>
@@ -304,6 +310,69 @@ TEST(DiscoverScene, ADamagedIndexIsRebuiltAndRemovedFilesLeaveIt) {
     fs::remove(gone);
     ASSERT_EQ(discover_scene(dirs.search_path(), "target", dirs.index).scenes.size(), 1u);
     EXPECT_EQ(SceneIndex::read(dirs.index).size(), 1u);
+}
+
+// --- Entries named like scene files that are no file to read -------------------------------------
+
+// A Unix socket bound at `file` (closed at once: the entry stays).
+void make_socket(const fs::path& file) {
+    const int handle = socket(AF_UNIX, SOCK_STREAM, 0);
+    ASSERT_GE(handle, 0);
+    sockaddr_un address{};
+    address.sun_family = AF_UNIX;
+    ASSERT_LT(file.native().size(), sizeof(address.sun_path));
+    std::copy(file.native().begin(), file.native().end(), address.sun_path);
+    ASSERT_EQ(bind(handle, reinterpret_cast<const sockaddr*>(&address), sizeof(address)), 0);
+    close(handle);
+}
+
+// A plugin folder whose scene-named entries are a FIFO, a directory, a socket, a loop of links
+// and a dangling link, beside one good scene: each odd entry is skipped with its own reason, never
+// opened (a FIFO opened for reading would wait for a writer forever), by the full scan and by the
+// search for one id alike.
+TEST(Discovery, EntriesThatAreNoRegularFileAreSkippedEachWithWhy) {
+    SceneDirectories dirs;
+    write_ifs_scene(dirs.first, "z.ifs.json", "target");
+    ASSERT_EQ(mkfifo((dirs.first / "fifo.ifs.json").c_str(), 0600), 0);
+    fs::create_directories(dirs.first / "folder.so");
+    fs::create_symlink("loop_b.formula.json", dirs.first / "loop_a.formula.json");
+    fs::create_symlink("loop_a.formula.json", dirs.first / "loop_b.formula.json");
+    fs::create_symlink("missing.ifs.json", dirs.first / "dangling.ifs.json");
+    // Short: a socket's path has a limit of about 100 bytes.
+    test::TempDir short_root{"fgr_sock"};
+    make_socket(short_root.path() / "s.cl");
+    // First, so that the search for one id passes it on its way to the scene.
+    const std::vector<fs::path> search_path = {short_root.path(), dirs.first};
+
+    const auto expect_all_skipped = [&](const Discovery& found) {
+        ASSERT_EQ(found.scenes.size(), 1u);
+        EXPECT_EQ(found.scenes[0].id, "target");
+        EXPECT_EQ(found.skipped.size(), 6u);
+        expect_skipped(found, "fifo.ifs.json", "not a regular file: a FIFO");
+        expect_skipped(found, "folder.so", "not a regular file: a directory");
+        expect_skipped(found, "s.cl", "not a regular file: a socket");
+        expect_skipped(found, "loop_a.formula.json",
+                       "not a regular file: a symbolic link that cannot be followed (");
+        expect_skipped(found, "loop_b.formula.json", "a symbolic link that cannot be followed");
+        expect_skipped(found, "dangling.ifs.json", "a symbolic link that cannot be followed");
+    };
+    expect_all_skipped(discover_scenes(search_path));
+    for (int run = 0; run < 2; ++run) {
+        expect_all_skipped(discover_scene(search_path, "target", dirs.index));
+    }
+}
+
+// A file name with a newline and a terminal escape in it is shown escaped in the refusal, which
+// stays one line.
+TEST(Discovery, ControlCharactersInAFileNameAreShownEscaped) {
+    SceneDirectories dirs;
+    std::ofstream(dirs.first / "bad\n\x1b[31mname.ifs.json") << "{}";
+    const Discovery found = discover_scenes(dirs.search_path());
+    ASSERT_EQ(found.skipped.size(), 1u);
+    const std::string message = unknown_scene_message(found, "bad");
+    EXPECT_EQ(message.find('\n'), std::string::npos) << message;
+    EXPECT_EQ(message.find('\x1b'), std::string::npos) << message;
+    EXPECT_NE(message.find("bad\\n\\x1b[31mname.ifs.json"), std::string::npos) << message;
 }
 
 TEST(MandelbulbPlugin, LoadsFromThePluginDirectory) {
