@@ -19,6 +19,8 @@
 #include <vector>
 
 #include "child_process.hpp"
+#include "fuzz_rng.hpp"
+#include "json_mutation.hpp"
 #include "scene/discovery.hpp"
 #include "scene/plugin_loader.hpp"
 #include "scene/scene_index.hpp"
@@ -310,6 +312,39 @@ TEST(DiscoverScene, ADamagedIndexIsRebuiltAndRemovedFilesLeaveIt) {
     fs::remove(gone);
     ASSERT_EQ(discover_scene(dirs.search_path(), "target", dirs.index).scenes.size(), 1u);
     EXPECT_EQ(SceneIndex::read(dirs.index).size(), 1u);
+}
+
+// 10^4 seeded damaged indexes (FGR_FUZZ_CASES, FGR_FUZZ_SEED; a failure prints its seed): a valid
+// index with its text, structure or values mutated. Parsing one never throws or crashes, and a
+// search through it, written to its file, still finds the scene (every 500th case, as that writes
+// and loads files).
+TEST(FuzzSceneIndex, ADamagedIndexIsReadOrDroppedNeverACrash) {
+    SceneDirectories dirs;
+    write_ifs_scene(dirs.first, "a.ifs.json", "other");
+    write_ifs_scene(dirs.first, "b.ifs.json", "target");
+    ASSERT_EQ(discover_scene(dirs.search_path(), "target", dirs.index).scenes.size(), 1u);
+    const std::string valid = test::read_file(dirs.index);
+    ASSERT_EQ(SceneIndex::read(dirs.index).size(), 2u);
+    const std::uint64_t base = test::fuzz_base_seed(0x5363656e65496478);  // "SceneIdx"
+    const std::uint64_t cases = test::fuzz_case_count();
+    for (std::uint64_t i = 0; i < cases; ++i) {
+        const std::uint64_t seed = base + i;
+        test::FuzzRng rng(seed);
+        std::string text = valid;
+        test::mutate_document(text, rng, rng.range(1, 3));
+        std::string problem;
+        ASSERT_NO_THROW((void)SceneIndex::parse(text, problem)) << "seed " << seed;
+        ASSERT_EQ(problem.find('\n'), std::string::npos) << "seed " << seed << ": " << problem;
+        if (i % 500 != 0) continue;
+        test::write_text(dirs.index, text);
+        ASSERT_NO_THROW((void)SceneIndex::read(dirs.index)) << "seed " << seed;
+        // An index that names another id for the file is stale data, not a crash: the search then
+        // scans everything, and still finds it.
+        const Discovery found = discover_scene(dirs.search_path(), "target", dirs.index);
+        ASSERT_TRUE(std::any_of(found.scenes.begin(), found.scenes.end(),
+                                [](const Scene& scene) { return scene.id == "target"; }))
+            << "seed " << seed;
+    }
 }
 
 // --- Entries named like scene files that are no file to read -------------------------------------
