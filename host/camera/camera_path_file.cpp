@@ -1,13 +1,12 @@
 // SPDX-License-Identifier: Apache-2.0
 #include "camera/camera_path_file.hpp"
 
-#include <fstream>
 #include <nlohmann/json.hpp>
-#include <sstream>
 #include <stdexcept>
 
 #include "camera/view_json.hpp"
 #include "util/atomic_file.hpp"
+#include "util/files.hpp"
 #include "util/installed_files.hpp"
 #include "util/json_fields.hpp"
 #include "util/strings.hpp"
@@ -20,6 +19,9 @@ using nlohmann::json;
 constexpr const char* kFormat = "fgr-camera-path";
 constexpr int kVersion = 1;
 constexpr const char* kSchema = "camera-path.schema.json";
+// Far above any recorded path (a keyframe is about 300 bytes: this is some 50000 of them), far
+// below what would strain memory once parsed.
+constexpr std::uintmax_t kMaxCameraPathBytes = std::uintmax_t{16} << 20;
 
 using json_fields::fail;
 
@@ -48,8 +50,7 @@ std::string camera_path_json(const CameraPathFile& file) {
 }
 
 CameraPathFile parse_camera_path_json(const std::string& text) {
-    const json document = json::parse(text, nullptr, /*allow_exceptions=*/false);
-    if (document.is_discarded()) fail("not valid JSON");
+    const json document = json_fields::parse_document(text, "not valid JSON");
     if (!document.is_object()) fail("must be a JSON object");
     // Compared as JSON: value("format", "") throws a type_error when "format" is not a string.
     if (!document.contains("format") || document.at("format") != kFormat) {
@@ -82,12 +83,13 @@ CameraPathFile parse_camera_path_json(const std::string& text) {
 }
 
 CameraPathFile read_camera_path_file(const std::filesystem::path& file) {
-    std::ifstream in(file, std::ios::binary);
-    if (!in) throw std::runtime_error("cannot read camera path " + quoted(file));
-    std::ostringstream text;
-    text << in.rdbuf();
+    std::string text;
+    if (const std::string failure = read_file_bytes(file, text, kMaxCameraPathBytes);
+        !failure.empty()) {
+        throw std::runtime_error("cannot read camera path " + quoted(file) + ": " + failure);
+    }
     try {
-        return parse_camera_path_json(text.str());
+        return parse_camera_path_json(text);
     } catch (const std::runtime_error& error) {
         throw std::runtime_error("camera path " + quoted(file) + ": " + error.what());
     }

@@ -18,6 +18,7 @@
 #include "reference.hpp"
 #include "usage.hpp"
 #include "util/interruption.hpp"
+#include "util/strings.hpp"
 
 namespace fgr {
 namespace {
@@ -37,8 +38,9 @@ void configure_logging(bool verbose, const Cluster& cluster) {
 
 int report_error(const std::string& message, int code) {
     Cluster& cluster = Cluster::current();
-    // Errors are one line: keep only the first line of messages that carry more.
-    const std::string line = message.substr(0, message.find('\n'));
+    // Errors are one line: keep only the first line of messages that carry more, and show any
+    // control character left in it (a file name's) escaped.
+    const std::string line = printable_text(message.substr(0, message.find('\n')));
     if (!cluster.coordinator()) {
         // Rank 0 prints it, naming this rank; every rank printing the same error would bury it.
         cluster.report_failure(line);

@@ -14,6 +14,7 @@
 #include "scene/scene_index.hpp"
 #include "scene/scene_source.hpp"
 #include "util/atomic_file.hpp"
+#include "util/strings.hpp"
 
 namespace fgr {
 Discovery discover() { return discover_scenes(plugin_search_path(executable_dir())); }
@@ -380,8 +381,8 @@ CameraView overridden_view(const CameraView& base, const ViewOverrideText& text)
 void check_output_directory(const std::filesystem::path& file) {
     const auto directory = file.has_parent_path() ? file.parent_path() : ".";
     if (std::error_code error; !std::filesystem::is_directory(directory, error)) {
-        throw UsageError(fmt::format("cannot write '{}': directory '{}' does not exist",
-                                     file.string(), directory.string()));
+        throw UsageError(fmt::format("cannot write {}: directory {} does not exist", quoted(file),
+                                     quoted(directory)));
     }
 }
 

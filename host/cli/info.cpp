@@ -13,6 +13,7 @@
 #include "device/program_cache.hpp"
 #include "image/embedded_view.hpp"
 #include "output/tiled/streaming_image.hpp"
+#include "util/strings.hpp"
 #include "view_file/view_file.hpp"
 
 namespace fgr {
@@ -38,7 +39,7 @@ void print_math_check(const DeviceInfo& info) {
 // What made the image or view: the view's summary, and how to render it again.
 void print_view(const std::filesystem::path& file, const ViewFile& view) {
     fmt::print("{}", view_summary(view));
-    fmt::print("render it again: fgr render --view {} -o OUTPUT\n", file.string());
+    fmt::print("render it again: fgr render --view {} -o OUTPUT\n", printable_path(file));
 }
 
 }  // namespace
@@ -56,13 +57,13 @@ int command_info_file(const std::filesystem::path& file) {
     if (!document) {
         throw RuntimeFailure(fmt::format(
             "{}: no fgr view embedded (not written by fgr, or written before views were embedded)",
-            file.string()));
+            printable_path(file)));
     }
     try {
         print_view(file, parse_view_file(*document));
     } catch (const std::runtime_error& error) {
         throw RuntimeFailure(fmt::format("{}: the fgr view it carries cannot be read: {}",
-                                         file.string(), error.what()));
+                                         printable_path(file), error.what()));
     }
     return 0;
 }

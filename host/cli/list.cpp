@@ -16,6 +16,7 @@
 #include "scene/scene_argument.hpp"
 #include "scene/text_scene.hpp"
 #include "util/lower_case.hpp"
+#include "util/strings.hpp"
 
 namespace fgr {
 namespace {
@@ -95,14 +96,14 @@ void print_scene(const Scene& scene) {
             "  {}: {} ({} maps; bounding sphere centre {:.4g} {:.4g} {:.4g}, radius "
             "{:.4g})\n",
             is_ifs_file_name(scene.plugin_file) ? "IFS file" : "IFS plugin",
-            scene.plugin_file.string(), scene.ifs->maps.size(), scene.ifs->bounds.centre.x,
+            printable_path(scene.plugin_file), scene.ifs->maps.size(), scene.ifs->bounds.centre.x,
             scene.ifs->bounds.centre.y, scene.ifs->bounds.centre.z, scene.ifs->bounds.radius);
     } else if (is_formula_file_name(scene.plugin_file)) {
-        fmt::print("  formula file: {}\n", scene.plugin_file.string());
+        fmt::print("  formula file: {}\n", printable_path(scene.plugin_file));
     } else if (is_text_scene_file_name(scene.plugin_file)) {
-        fmt::print("  text scene: {}\n", scene.plugin_file.string());
+        fmt::print("  text scene: {}\n", printable_path(scene.plugin_file));
     } else {
-        fmt::print("  plugin: {}\n", scene.plugin_file.string());
+        fmt::print("  plugin: {}\n", printable_path(scene.plugin_file));
     }
     if (!scene.tags.empty()) fmt::print("  tags: {}\n", fmt::join(scene.tags, ", "));
     if (scene.scale != 1.0f) {
@@ -222,7 +223,7 @@ int command_list(const ListOptions& options) {
     if (found.scenes.empty()) {
         fmt::print("no scenes found; searched:\n");
         for (const auto& dir : plugin_search_path(executable_dir()))
-            fmt::print("  {}\n", dir.string());
+            fmt::print("  {}\n", printable_path(dir));
         return 0;
     }
     print_scene_lines(found.scenes);

@@ -30,6 +30,7 @@
 #include "scene/ifs/ifs.hpp"
 #include "tiled_render.hpp"
 #include "util/interruption.hpp"
+#include "util/strings.hpp"
 #include "util/suggest.hpp"
 #include "util/timing.hpp"
 #include "view_options.hpp"
@@ -45,8 +46,9 @@ CameraPath find_camera_path(const Scene& scene, const std::string& argument) {
             throw UsageError(error.what());
         }
         if (!file.scene.empty() && file.scene != scene.id) {
-            spdlog::warn("camera path '{}' was recorded in scene '{}', rendering it in '{}'",
-                         argument, file.scene, scene.id);
+            spdlog::warn("camera path {} was recorded in scene '{}', rendering it in '{}'",
+                         quoted(std::filesystem::path(argument)), printable_text(file.scene),
+                         scene.id);
         }
         return file.path;
     }
@@ -104,8 +106,8 @@ void check_output_path(const std::filesystem::path& output) {
     const auto directory = output.has_parent_path() ? output.parent_path() : ".";
     std::error_code error;
     if (!std::filesystem::is_directory(directory, error)) {
-        throw RuntimeFailure(fmt::format("cannot write '{}': directory '{}' does not exist",
-                                         output.string(), directory.string()));
+        throw RuntimeFailure(fmt::format("cannot write {}: directory {} does not exist",
+                                         quoted(output), quoted(directory)));
     }
 }
 
@@ -309,7 +311,7 @@ void report_and_write(const Scene& scene, const FrameRequest& request, int sampl
     } catch (const std::runtime_error& error) {
         throw RuntimeFailure(error.what());
     }
-    fmt::print("wrote {} ({}x{})\n", output.string(), frame.image.width, frame.image.height);
+    fmt::print("wrote {} ({}x{})\n", printable_path(output), frame.image.width, frame.image.height);
 }
 
 // A still's Renderer progress, drawn on `progress` with the rate in pixel samples a second.
@@ -433,7 +435,7 @@ int render_all(const RenderOptions& options) {
     std::error_code error;
     std::filesystem::create_directories(directory, error);
     if (error || !std::filesystem::is_directory(directory)) {
-        throw RuntimeFailure(fmt::format("cannot create directory '{}'", directory.string()));
+        throw RuntimeFailure(fmt::format("cannot create directory {}", quoted(directory)));
     }
     const ComputeDevice device = device_opening.take();
     ProgramCache cache(ProgramCache::default_directory());

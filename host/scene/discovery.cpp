@@ -13,6 +13,7 @@
 
 #include "scene/scene_file.hpp"
 #include "scene/scene_index.hpp"
+#include "util/strings.hpp"
 #include "util/suggest.hpp"
 
 namespace fgr {
@@ -31,28 +32,70 @@ std::vector<fs::path> split_path_list(std::string_view list) {
     return directories;
 }
 
-// Regular files (or links to them) named *.so, *.ifs.json or *.formula.json, and *.cl files that
-// start with a text scene's header, sorted by file name so the load order, and thus which of two
-// duplicate ids wins, does not depend on the filesystem's directory order.
-std::vector<fs::path> plugin_files_in(const fs::path& directory) {
-    std::vector<fs::path> files;
+// What a directory entry named like a scene file is when it is not a regular file (or a link to
+// one): "" for a regular file, else why it cannot be a scene ("a FIFO", "a symbolic link that
+// cannot be followed (Too many levels of symbolic links)"). Only the entry's status is read: a
+// FIFO is never opened.
+std::string not_a_scene_file(const fs::directory_entry& entry) {
+    std::error_code error;
+    const fs::file_status status = entry.status(error);
+    if (error || !fs::exists(status)) {
+        std::error_code link_error;
+        if (entry.is_symlink(link_error)) {
+            return "a symbolic link that cannot be followed (" +
+                   (error ? error.message() : std::string("its target does not exist")) + ")";
+        }
+        return "its status cannot be read (" + error.message() + ")";
+    }
+    switch (status.type()) {
+        case fs::file_type::regular:
+            return "";
+        case fs::file_type::directory:
+            return "a directory";
+        case fs::file_type::fifo:
+            return "a FIFO";
+        case fs::file_type::socket:
+            return "a socket";
+        case fs::file_type::block:
+            return "a block device";
+        case fs::file_type::character:
+            return "a character device";
+        default:
+            return "not a regular file";
+    }
+}
+
+// The entries of a plugin directory named like scene files, sorted by file name so the load
+// order, and thus which of two duplicate ids wins, does not depend on the filesystem's directory
+// order: regular files (or links to them) named *.so, *.ifs.json or *.formula.json, and *.cl
+// files that start with a text scene's header; and the entries so named that are no file to read
+// (a directory, a FIFO, a socket, a device, a dangling link or a loop of links), each with why.
+struct PluginEntry {
+    fs::path file;
+    std::string unreadable;  // why it is no file to read; empty for a file
+};
+
+std::vector<PluginEntry> plugin_entries_in(const fs::path& directory) {
+    std::vector<PluginEntry> entries;
     std::error_code error;
     // Explicit increment(error): the range-for form would throw on a read error mid-directory.
     for (fs::directory_iterator it(directory, error), end; !error && it != end;
          it.increment(error)) {
-        std::error_code status_error;
-        if (is_scene_file_name(it->path()) && it->is_regular_file(status_error) &&
-            is_scene_file(it->path())) {
-            files.push_back(it->path());
+        if (!is_scene_file_name(it->path())) continue;
+        if (std::string why = not_a_scene_file(*it); !why.empty()) {
+            entries.push_back({it->path(), "not a regular file: " + why});
+        } else if (is_scene_file(it->path())) {
+            entries.push_back({it->path(), {}});
         }
     }
     if (error) {
-        spdlog::debug("plugin directory {} not scanned fully: {}", directory.string(),
+        spdlog::debug("plugin directory {} not scanned fully: {}", printable_path(directory),
                       error.message());
     }
-    std::sort(files.begin(), files.end(),
-              [](const fs::path& a, const fs::path& b) { return a.filename() < b.filename(); });
-    return files;
+    std::sort(entries.begin(), entries.end(), [](const PluginEntry& a, const PluginEntry& b) {
+        return a.file.filename() < b.file.filename();
+    });
+    return entries;
 }
 
 // The same directory can appear twice (e.g. $FGR_PLUGIN_PATH naming the default folder); scanning
@@ -68,7 +111,7 @@ class DirectoryWalk {
 public:
     bool first_visit(const fs::path& directory) {
         if (scanned_directories_.insert(canonical_or_self(directory)).second) return true;
-        spdlog::debug("plugin directory {} already scanned", directory.string());
+        spdlog::debug("plugin directory {} already scanned", printable_path(directory));
         return false;
     }
 
@@ -78,16 +121,22 @@ private:
 
 void warn_skipped(const SkippedPlugin& skipped) {
     spdlog::warn(
-        "skipping plugin {}: {}{}", skipped.file.string(),
+        "skipping plugin {}: {}{}", printable_path(skipped.file),
         skipped.declared_id.empty() ? "" : fmt::format("scene '{}': ", skipped.declared_id),
-        skipped.reason);
+        printable_text(skipped.reason));
 }
 
 class SceneCollector {
 public:
     void scan(const fs::path& directory) {
         if (!walk_.first_visit(directory)) return;
-        for (const fs::path& file : plugin_files_in(directory)) load(file);
+        for (PluginEntry& entry : plugin_entries_in(directory)) {
+            if (entry.unreadable.empty()) {
+                load(entry.file);
+            } else {
+                skip(entry.file, std::move(entry.unreadable));
+            }
+        }
     }
 
     Discovery take() { return std::move(discovery_); }
@@ -99,9 +148,9 @@ private:
         const auto [existing, inserted] = loaded_from_.emplace(result.scene->id, file);
         if (!inserted) {
             return skip(file, fmt::format("duplicate scene id '{}' (already loaded from {})",
-                                          result.scene->id, existing->second.string()));
+                                          result.scene->id, printable_path(existing->second)));
         }
-        spdlog::debug("loaded scene '{}' from {}", result.scene->id, file.string());
+        spdlog::debug("loaded scene '{}' from {}", result.scene->id, printable_path(file));
         discovery_.scenes.push_back(std::move(*result.scene));
     }
 
@@ -124,7 +173,14 @@ std::optional<Scene> first_scene_with_id(const std::vector<fs::path>& directorie
     DirectoryWalk walk;
     for (const fs::path& directory : directories) {
         if (!walk.first_visit(directory)) continue;
-        const std::vector<fs::path> files = plugin_files_in(directory);
+        std::vector<fs::path> files;
+        for (PluginEntry& entry : plugin_entries_in(directory)) {
+            if (entry.unreadable.empty()) {
+                files.push_back(entry.file);
+            } else {
+                refused.push_back({entry.file, std::move(entry.unreadable)});
+            }
+        }
         index.keep_only(directory, std::set<fs::path>(files.begin(), files.end()));
         for (const fs::path& file : files) {
             const std::optional<FileStamp> stamp = file_stamp(file);
@@ -140,7 +196,7 @@ std::optional<Scene> first_scene_with_id(const std::vector<fs::path>& directorie
             }
             if (stamp) index.record(file, *stamp, result.scene->id);
             if (result.scene->id == id) {
-                spdlog::debug("loaded scene '{}' from {}", id, file.string());
+                spdlog::debug("loaded scene '{}' from {}", id, printable_path(file));
                 return std::move(result.scene);
             }
         }
@@ -194,7 +250,7 @@ const SkippedPlugin* refused_scene(const Discovery& found, std::string_view id) 
 std::string unknown_scene_message(const Discovery& found, std::string_view id) {
     if (const SkippedPlugin* refused = refused_scene(found, id)) {
         return fmt::format("unknown scene '{}': plugin {} was refused: {}", id,
-                           refused->file.string(), refused->reason);
+                           printable_path(refused->file), printable_text(refused->reason));
     }
     std::string refused;
     if (!found.skipped.empty()) {
@@ -202,8 +258,9 @@ std::string unknown_scene_message(const Discovery& found, std::string_view id) {
         constexpr std::size_t kShown = 3;
         refused = "refused:";
         for (std::size_t i = 0; i < std::min(found.skipped.size(), kShown); ++i) {
-            refused += fmt::format("{} {} ({})", i == 0 ? "" : ",", found.skipped[i].file.string(),
-                                   found.skipped[i].reason);
+            refused +=
+                fmt::format("{} {} ({})", i == 0 ? "" : ",", printable_path(found.skipped[i].file),
+                            printable_text(found.skipped[i].reason));
         }
         if (found.skipped.size() > kShown) {
             refused += fmt::format(" and {} more", found.skipped.size() - kShown);

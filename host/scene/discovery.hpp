@@ -31,7 +31,9 @@ struct Discovery {
 // Loads every scene file (scene/scene_file.hpp: *.so plugins, *.ifs.json IFS files,
 // *.formula.json formula files and *.cl text scenes) in each directory, sorted together by name
 // within a directory; missing directories, and .cl files without a text scene's header, are
-// ignored. Each skipped file gets one warning log line naming the file and the reason.
+// ignored. Each skipped file gets one warning log line naming the file and the reason, and so does
+// each entry named like a scene file that is no regular file (a directory, a FIFO, a socket, a
+// dangling link or a loop of links), which is never opened.
 Discovery discover_scenes(const std::vector<std::filesystem::path>& directories);
 
 // Scene `id` alone, as discover_scenes(directories) would find it (the first file in search

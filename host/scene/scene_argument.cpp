@@ -11,6 +11,7 @@
 #include "scene/parameters.hpp"
 #include "scene/plugin_loader.hpp"
 #include "scene/text_scene.hpp"
+#include "util/strings.hpp"
 
 namespace fgr {
 namespace {
@@ -54,14 +55,14 @@ SceneArgumentKind scene_argument_kind(const std::string& argument) {
     throw UsageError(
         fmt::format("{}: {}: fgr opens scene plugins (*.so), IFS files (*.ifs.json), formula files "
                     "(*.formula.json) and text scenes (*.cl), or a scene id (`fgr list`)",
-                    argument, is_file ? "not a scene file" : "no such file"));
+                    printable_text(argument), is_file ? "not a scene file" : "no such file"));
 }
 
 Scene load_scene_argument_file(const fs::path& file, SceneArgumentKind kind) {
     LoadResult loaded;
     switch (kind) {
         case SceneArgumentKind::Id:
-            throw UsageError(fmt::format("'{}' is a scene id, not a file", file.string()));
+            throw UsageError(fmt::format("{} is a scene id, not a file", quoted(file)));
         case SceneArgumentKind::PluginFile:
             // dlopen searches the library path for a name without a '/'.
             loaded = load_scene_plugin(file.has_parent_path() ? file : fs::path(".") / file);
@@ -77,7 +78,9 @@ Scene load_scene_argument_file(const fs::path& file, SceneArgumentKind kind) {
             loaded = load_text_scene(file);
             break;
     }
-    if (!loaded.scene) throw UsageError(fmt::format("{}: {}", file.string(), loaded.error));
+    if (!loaded.scene) {
+        throw UsageError(fmt::format("{}: {}", printable_path(file), printable_text(loaded.error)));
+    }
     return std::move(*loaded.scene);
 }
 

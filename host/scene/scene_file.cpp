@@ -8,6 +8,7 @@
 #include "scene/ifs/ifs.hpp"
 #include "scene/plugin_loader.hpp"
 #include "scene/text_scene.hpp"
+#include "util/strings.hpp"
 
 namespace fgr {
 
@@ -38,7 +39,7 @@ LoadResult load_data_scene(const std::filesystem::path& file, Load load) {
         return LoadResult{load(), {}};
     } catch (const FileError& error) {
         std::string reason = error.what();
-        const std::string prefix = file.string() + ": ";
+        const std::string prefix = printable_path(file) + ": ";
         if (reason.rfind(prefix, 0) == 0) reason.erase(0, prefix.size());
         return LoadResult{std::nullopt, reason};
     } catch (const std::exception& error) {

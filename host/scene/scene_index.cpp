@@ -1,14 +1,17 @@
 // SPDX-License-Identifier: Apache-2.0
 #include "scene/scene_index.hpp"
 
+#include <fmt/format.h>
 #include <spdlog/spdlog.h>
 #include <sys/stat.h>
 
 #include <exception>
 #include <nlohmann/json.hpp>
 
-#include "scene/scene_json.hpp"
 #include "util/atomic_file.hpp"
+#include "util/files.hpp"
+#include "util/json_fields.hpp"
+#include "util/strings.hpp"
 
 namespace fgr {
 namespace fs = std::filesystem;
@@ -37,17 +40,15 @@ std::optional<FileStamp> file_stamp(const fs::path& file) {
                      static_cast<std::uintmax_t>(status.st_ino)};
 }
 
-SceneIndex SceneIndex::read(const fs::path& file) {
+SceneIndex SceneIndex::parse(std::string_view text, std::string& problem) {
+    problem.clear();
     SceneIndex index;
-    std::error_code error;
-    if (!fs::exists(file, error)) return index;
     try {
-        const json document =
-            json::parse(scene_json::read_bounded(file, kMaxIndexBytes, "a scene index"));
-        if (document.value("format", "") != kFormat || document.value("version", 0) != kVersion) {
-            spdlog::debug("{} is not a scene index of version {}: rebuilt", file.string(),
-                          kVersion);
-            return index;
+        const json document = json_fields::parse_document(text, "not valid JSON");
+        if (!document.is_object() || document.value("format", "") != kFormat ||
+            document.value("version", 0) != kVersion) {
+            problem = fmt::format("not a scene index of version {}", kVersion);
+            return SceneIndex{};
         }
         for (const json& entry : document.at("files")) {
             const FileStamp stamp{entry.at("size").get<std::uintmax_t>(),
@@ -56,9 +57,21 @@ SceneIndex SceneIndex::read(const fs::path& file) {
             index.entries_[fs::path(entry.at("path").get<std::string>())] =
                 Entry{stamp, entry.at("id").get<std::string>()};
         }
-    } catch (const std::exception& failure) {
-        spdlog::debug("scene index {} unusable ({}): rebuilt", file.string(), failure.what());
+    } catch (const std::exception& failure) {  // parse_document's, and the JSON library's
+        problem = failure.what();
         return SceneIndex{};
+    }
+    return index;
+}
+
+SceneIndex SceneIndex::read(const fs::path& file) {
+    std::error_code error;
+    if (!fs::exists(file, error)) return {};
+    std::string text;
+    std::string problem = read_file_bytes(file, text, kMaxIndexBytes);
+    SceneIndex index = problem.empty() ? parse(text, problem) : SceneIndex{};
+    if (!problem.empty()) {
+        spdlog::debug("scene index {} unusable ({}): rebuilt", printable_path(file), problem);
     }
     return index;
 }
@@ -107,7 +120,8 @@ void SceneIndex::write(const fs::path& file) const {
         fs::create_directories(file.parent_path(), ignored);
         write_text_file_atomically(file, document.dump(1) + "\n");
     } catch (const std::exception& failure) {
-        spdlog::debug("could not write the scene index {}: {}", file.string(), failure.what());
+        spdlog::debug("could not write the scene index {}: {}", printable_path(file),
+                      failure.what());
     }
 }
 

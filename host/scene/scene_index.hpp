@@ -12,6 +12,7 @@
 #include <optional>
 #include <set>
 #include <string>
+#include <string_view>
 
 namespace fgr {
 
@@ -35,6 +36,9 @@ public:
     // The index in `file`; empty when the file is missing, unreadable, too large or not a scene
     // index (logged at debug level: it is rebuilt).
     static SceneIndex read(const std::filesystem::path& file);
+    // The index `text` holds (json_fields::parse_document's rules); empty, with `problem` set to
+    // why, when it is not a scene index this fgr reads. Never throws.
+    static SceneIndex parse(std::string_view text, std::string& problem);
 
     // The id `file` held when indexed with this stamp; nothing when it is not indexed or has
     // changed since.

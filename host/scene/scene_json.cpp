@@ -6,7 +6,6 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
-#include <fstream>
 #include <glm/geometric.hpp>
 #include <glm/trigonometric.hpp>
 #include <numbers>
@@ -17,7 +16,9 @@
 #include "scene/description_validation.hpp"
 #include "scene/environment_spec.hpp"
 #include "scene/scene_limits.hpp"
+#include "util/files.hpp"
 #include "util/json_fields.hpp"
+#include "util/strings.hpp"
 
 namespace fgr::scene_json {
 namespace {
@@ -42,43 +43,16 @@ Light light_from(const json& entry, std::size_t index);
 
 }  // namespace
 
-std::string read_bounded(const std::filesystem::path& file, std::size_t max_bytes,
-                         const std::string& kind) {
-    std::ifstream in(file, std::ios::binary);
-    if (!in) fail("{}: cannot open the file", file.string());
+std::string read_bounded(const std::filesystem::path& file, std::size_t max_bytes) {
     std::string text;
-    // One byte past the limit at most, so a huge file is refused without reading it all; in
-    // chunks, so a small file costs a small buffer (a buffer of the limit, zeroed for each of the
-    // six IFS files, was most of the time discovery took).
-    std::array<char, 64 * 1024> chunk;
-    while (in && text.size() <= max_bytes) {
-        const std::size_t wanted = std::min(chunk.size(), max_bytes + 1 - text.size());
-        in.read(chunk.data(), static_cast<std::streamsize>(wanted));
-        text.append(chunk.data(), static_cast<std::size_t>(in.gcount()));
-    }
-    if (in.bad()) fail("{}: cannot read the file", file.string());
-    if (text.size() > max_bytes) {
-        fail("{}: larger than the {} bytes {} may have", file.string(), max_bytes, kind);
+    if (const std::string failure = read_file_bytes(file, text, max_bytes); !failure.empty()) {
+        fail("{}: {}", printable_path(file), failure);
     }
     return text;
 }
 
-json parse_object(const std::string& text) {
-    json document;
-    try {
-        document = json::parse(text);
-    } catch (const json::exception& error) {
-        // "[json.exception.parse_error.101] parse error at line 3, column 5: ..." without the tag
-        // (or out_of_range.406, a number too large for a double: "number overflow parsing ...").
-        std::string message = error.what();
-        if (const std::size_t tag = message.find("] "); tag != std::string::npos) {
-            message.erase(0, tag + 2);
-        }
-        for (char& c : message) {
-            if (static_cast<unsigned char>(c) < 0x20) c = ' ';
-        }
-        fail("not valid JSON: {}", message);
-    }
+json parse_object(std::string_view text) {
+    json document = json_fields::parse_document(text, "not valid JSON");
     if (!document.is_object()) fail("must be a JSON object");
     return document;
 }
@@ -95,7 +69,7 @@ Header header_from(const json& document) {
     Header header;
     header.id = text_from(document, "id", "", true);
     if (!is_scene_id(header.id)) {
-        fail("\"id\" '{}' {} (at most {} characters)", printable(header.id),
+        fail("\"id\" '{}' {} (at most {} characters)", printable_excerpt(header.id),
              scene_limits::kSceneIdRule, kMaxIdLength);
     }
     header.name = text_from(document, "name", "", true);
@@ -142,7 +116,7 @@ void require_object(const json& value, const std::string& where) {
 std::string camera_name_from(const json& object, const std::string& where) {
     const std::string name = text_from(object, "name", where, true);
     if (!is_camera_name(name)) {
-        fail("{}: name '{}' {} (at most {} characters)", where, printable(name),
+        fail("{}: name '{}' {} (at most {} characters)", where, printable_excerpt(name),
              scene_limits::kCameraNameRule, kMaxIdLength);
     }
     return name;

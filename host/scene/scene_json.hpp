@@ -10,6 +10,7 @@
 #include <filesystem>
 #include <nlohmann/json.hpp>
 #include <string>
+#include <string_view>
 #include <vector>
 
 #include "scene/scene.hpp"
@@ -37,13 +38,15 @@ Scene scene_of_file(const FileData& data, std::string source, const char* suffix
     return scene;
 }
 
-// The file's bytes, refused (std::runtime_error "<file>: ...") past max_bytes without reading
-// more than one byte beyond; read in 64 KiB chunks, so a small file costs a small buffer.
-std::string read_bounded(const std::filesystem::path& file, std::size_t max_bytes,
-                         const std::string& kind);
+// The file's bytes (util/files.hpp read_file_bytes: a regular file of at most max_bytes, checked
+// before anything is read), else std::runtime_error "<file>: <why>", the file's name as
+// printable_path shows it.
+std::string read_bounded(const std::filesystem::path& file, std::size_t max_bytes);
 
-// The document `text` parses to: a JSON object, else "not valid JSON: <where and why>".
-nlohmann::json parse_object(const std::string& text);
+// The document `text` parses to through json_fields::parse_document (no NUL byte, nesting at most
+// 64 deep, no key twice, nothing after the value): a JSON object, else "not valid JSON: <why>" or
+// "must be a JSON object".
+nlohmann::json parse_object(std::string_view text);
 
 // "format" must be `format` and "version" the integer `version`.
 void check_format(const nlohmann::json& document, const char* format, int version);

@@ -4,10 +4,12 @@
 
 #include <fmt/format.h>
 
-#include <fstream>
-#include <sstream>
 #include <stdexcept>
 #include <system_error>
+
+#include "scene/scene_limits.hpp"
+#include "util/files.hpp"
+#include "util/strings.hpp"
 
 namespace fgr {
 
@@ -24,11 +26,12 @@ std::optional<std::filesystem::path> recorded_source_file(const Scene& scene) {
 }
 
 std::string read_source_file(const std::filesystem::path& file) {
-    std::ifstream in(file, std::ios::binary);
-    std::ostringstream text;
-    text << in.rdbuf();
-    if (!in || in.bad()) throw std::runtime_error(fmt::format("cannot read {}", file.string()));
-    return text.str();
+    std::string text;
+    if (const std::string failure = read_file_bytes(file, text, scene_limits::kMaxSourceBytes);
+        !failure.empty()) {
+        throw std::runtime_error(fmt::format("cannot read {}: {}", printable_path(file), failure));
+    }
+    return text;
 }
 
 std::string stale_source_warning(const Scene& scene) {

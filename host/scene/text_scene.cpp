@@ -5,8 +5,8 @@
 
 #include <array>
 #include <cstdint>
+#include <cstdio>
 #include <deque>
-#include <fstream>
 #include <initializer_list>
 #include <limits>
 #include <nlohmann/json.hpp>
@@ -21,7 +21,9 @@
 #include "scene/effects.hpp"
 #include "scene/scene_json.hpp"
 #include "scene/scene_limits.hpp"
+#include "util/files.hpp"
 #include "util/json_fields.hpp"
+#include "util/strings.hpp"
 
 // The reader's pieces live in a namespace of their own: this file is compiled in one unity
 // translation unit with the other JSON readers, whose helpers have the same plain names.
@@ -692,13 +694,14 @@ bool is_text_scene_file(const fs::path& file) {
 }
 
 bool file_has_text_scene_header(const fs::path& file) {
-    std::error_code error;
-    if (!fs::is_regular_file(file, error)) return false;
-    std::ifstream in(file, std::ios::binary);
+    // Opened only when it is a regular file, checked on the open descriptor: a FIFO named x.cl
+    // never blocks the scan.
+    std::string reason;
+    const FilePointer in = open_regular_file(file, reason);
+    if (in == nullptr) return false;
     std::array<char, kTextSceneSniffBytes> start{};
-    in.read(start.data(), static_cast<std::streamsize>(start.size()));
-    return starts_with_text_scene_header(
-        std::string_view(start.data(), static_cast<std::size_t>(in.gcount())));
+    const std::size_t read = std::fread(start.data(), 1, start.size(), in.get());
+    return starts_with_text_scene_header(std::string_view(start.data(), read));
 }
 
 LoadResult parse_text_scene(std::string_view text, const fs::path& file) {
@@ -743,10 +746,10 @@ LoadResult parse_text_scene(std::string_view text, const fs::path& file) {
 LoadResult load_text_scene(const fs::path& file) {
     std::string text;
     try {
-        text = scene_json::read_bounded(file, scene_limits::kMaxSourceBytes, "a text scene");
+        text = scene_json::read_bounded(file, scene_limits::kMaxSourceBytes);
     } catch (const std::runtime_error& error) {
         std::string reason = error.what();
-        const std::string prefix = file.string() + ": ";
+        const std::string prefix = printable_path(file) + ": ";
         if (reason.starts_with(prefix)) reason.erase(0, prefix.size());
         return text_header::failure(std::move(reason));
     }

@@ -23,6 +23,7 @@
 #include "util/files.hpp"
 #include "util/installed_files.hpp"
 #include "util/json_fields.hpp"
+#include "util/strings.hpp"
 
 namespace fgr {
 namespace {
@@ -142,6 +143,11 @@ template <typename Parse>
 auto parsed_value(const json& object, const char* key, const std::string& where,
                   const std::string& fallback, Parse parse) {
     const std::string text = string_from(object, key, where, false, fallback);
+    // Every name these take is a word: a longer text is refused without quoting all of it.
+    constexpr std::size_t kLongestName = 40;
+    if (text.size() > kLongestName) {
+        fail("\"{}\": '{}' is no name it takes", key_path(where, key), printable_excerpt(text));
+    }
     try {
         return parse(text);
     } catch (const std::exception& error) {
@@ -520,7 +526,7 @@ ViewFile read_view_file(const std::filesystem::path& file) {
         }
         return parse_view_file(text);
     } catch (const std::runtime_error& error) {
-        throw std::runtime_error(fmt::format("{}: {}", file.string(), error.what()));
+        throw std::runtime_error(fmt::format("{}: {}", printable_path(file), error.what()));
     }
 }
 
@@ -534,7 +540,7 @@ void write_view_file(const std::filesystem::path& file, const ViewFile& view) {
             return out ? std::string() : std::string("write failed");
         });
     if (!failure.empty()) {
-        throw std::runtime_error(fmt::format("cannot write {}: {}", file.string(), failure));
+        throw std::runtime_error(fmt::format("cannot write {}: {}", printable_path(file), failure));
     }
 }
 

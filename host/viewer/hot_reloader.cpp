@@ -12,6 +12,7 @@
 #include "scene/discovery.hpp"
 #include "scene/scene_file.hpp"
 #include "scene/scene_source.hpp"
+#include "util/strings.hpp"
 
 namespace fgr::viewer {
 namespace {
@@ -70,8 +71,8 @@ void HotReloader::reload_plugin(const std::filesystem::path& file) {
     // was), an IFS, formula or text scene file read again.
     LoadResult loaded = reload_scene_file(file);
     if (!loaded.scene) {
-        const std::string message =
-            fmt::format("{}: {} (keeping the version loaded before)", file.string(), loaded.error);
+        const std::string message = fmt::format("{}: {} (keeping the version loaded before)",
+                                                printable_path(file), printable_text(loaded.error));
         spdlog::error("{}", message);
         host_.add_message(message);
         host_.show_refused(message, "");
@@ -81,7 +82,7 @@ void HotReloader::reload_plugin(const std::filesystem::path& file) {
     auto candidate = std::make_shared<const Scene>(std::move(*loaded.scene));
     const std::optional<size_t> same_id = scenes_.find(candidate->id);
     if (!same_id) {
-        spdlog::info("new scene '{}' from {}", candidate->id, file.string());
+        spdlog::info("new scene '{}' from {}", candidate->id, printable_path(file));
         host_.add_message(fmt::format("new scene '{}'", candidate->id));
         scenes_.add(candidate);
         // An IFS scene's source is generated, not a file to watch.
@@ -95,14 +96,14 @@ void HotReloader::reload_plugin(const std::filesystem::path& file) {
     }
     const std::shared_ptr<const Scene>& running = scenes_.at(*same_id);
     if (running->plugin_file != candidate->plugin_file) {
-        spdlog::warn("{}: scene '{}' is already loaded from {}; ignored", file.string(),
-                     candidate->id, running->plugin_file.string());
+        spdlog::warn("{}: scene '{}' is already loaded from {}; ignored", printable_path(file),
+                     candidate->id, printable_path(running->plugin_file));
         ++changes_handled_;
         return;
     }
     const SceneSession* session = scenes_.session_of(*same_id);
     const uint64_t effects = session ? session->effects : candidate->effects;
-    spdlog::info("{} changed: building the new '{}'", file.string(), candidate->id);
+    spdlog::info("{} changed: building the new '{}'", printable_path(file), candidate->id);
     host_.build({candidate, running, effects});
 }
 
@@ -121,7 +122,7 @@ void HotReloader::reload_source(const std::filesystem::path& file) {
         edited.source = text;
         const SceneSession* session = scenes_.session_of(i);
         const uint64_t effects = session ? session->effects : edited.effects;
-        spdlog::info("{} changed: building the new '{}'", file.string(), edited.id);
+        spdlog::info("{} changed: building the new '{}'", printable_path(file), edited.id);
         host_.build({std::make_shared<const Scene>(std::move(edited)), scenes_.at(i), effects});
     }
 }

@@ -7,13 +7,15 @@
 #include <array>
 #include <charconv>
 #include <cmath>
-#include <fstream>
 #include <limits>
 #include <sstream>
 #include <stdexcept>
 #include <string_view>
 #include <system_error>
 #include <utility>
+
+#include "util/files.hpp"
+#include "util/strings.hpp"
 
 namespace fgr::viewer {
 namespace {
@@ -254,16 +256,20 @@ std::vector<ReplayEvent> parse_replay(std::istream& input, const std::string& so
 }
 
 std::vector<ReplayEvent> load_replay(const std::filesystem::path& file) {
-    const std::string name = file.string();
+    const std::string name = printable_path(file);
     std::error_code error;
     if (std::filesystem::is_directory(file, error)) {
         throw std::runtime_error(
             fmt::format("cannot read replay file '{}': it is a directory", name));
     }
-    std::ifstream input(file);
-    if (!input) {
-        throw std::runtime_error(fmt::format("cannot read replay file '{}'", name));
+    // A script of a few hundred lines; bounded, and read whole (a FIFO is refused, not waited on).
+    constexpr std::uintmax_t kMaxReplayBytes = std::uintmax_t{16} << 20;
+    std::string text;
+    if (const std::string failure = read_file_bytes(file, text, kMaxReplayBytes);
+        !failure.empty()) {
+        throw std::runtime_error(fmt::format("cannot read replay file '{}': {}", name, failure));
     }
+    std::istringstream input(text);
     return parse_replay(input, name);
 }
 

@@ -3,6 +3,7 @@
 // and every malformed file is refused with a one-line reason.
 #include <gtest/gtest.h>
 
+#include <cstdint>
 #include <filesystem>
 #include <fstream>
 #include <nlohmann/json.hpp>
@@ -12,6 +13,8 @@
 
 #include "camera/camera.hpp"
 #include "camera/camera_path_file.hpp"
+#include "fuzz_rng.hpp"
+#include "json_mutation.hpp"
 #include "util/installed_files.hpp"
 
 namespace fgr {
@@ -255,6 +258,69 @@ TEST(CameraPathFile, WrittenFilesNameTheirSchemaAndReadBack) {
     nlohmann::json elsewhere = written;
     elsewhere["$schema"] = "https://example.org/camera-path.schema.json";
     EXPECT_EQ(parse_camera_path_json(elsewhere.dump()).path.name, "recorded");
+}
+
+// A value nested 100000 deep where "version" or "format" stands (which once crashed the reader
+// printing it), a key given twice, bytes after a NUL or after the document: refused, one line.
+TEST(CameraPathFile, HostileDocumentsAreRefusedWithOneLine) {
+    const std::string deep = std::string(100000, '[') + std::string(100000, ']');
+    const std::string valid = camera_path_json(sample_path());
+    const std::vector<std::pair<std::string, std::string>> cases = {
+        {R"({"format": "fgr-camera-path", "version": )" + deep + R"(, "keyframes": []})",
+         "nest deeper than 64 levels"},
+        {R"({"format": )" + deep + R"(, "version": 1, "keyframes": []})",
+         "nest deeper than 64 levels"},
+        {R"({"format": "fgr-camera-path", "version": 1, "version": 1, "keyframes": []})",
+         "the key \"version\" appears twice"},
+        {valid + std::string(1, '\0') + "{}", "a NUL byte at offset"},
+        {valid + "{}", "not valid JSON"},
+    };
+    for (const auto& [text, reason] : cases) {
+        try {
+            parse_camera_path_json(text);
+            ADD_FAILURE() << "accepted: " << text.substr(0, 80);
+        } catch (const std::runtime_error& error) {
+            const std::string message = error.what();
+            EXPECT_NE(message.find(reason), std::string::npos)
+                << "for " << text.substr(0, 80) << " got: " << message;
+            EXPECT_EQ(message.find('\n'), std::string::npos) << message;
+            EXPECT_LT(message.size(), 400u) << message.substr(0, 400);
+        }
+    }
+}
+
+// 10^4 seeded mutations (FGR_FUZZ_CASES, FGR_FUZZ_SEED) of valid files: of the text, its structure
+// and its values. Each is read or refused with one line, never a crash; what is read writes back
+// to a file that reads the same.
+TEST(FuzzCameraPath, SeededCasesNeverCrash) {
+    const std::vector<std::string> seeds = {
+        camera_path_json(sample_path()),
+        two_keyframes(R"({"time": 1, "position": [0, 1, 0], "target": [0, 0, 0], "fov": 50})")};
+    const std::uint64_t base = test::fuzz_base_seed(0x43616d5061746831);  // "CamPath1"
+    const std::uint64_t cases = test::fuzz_case_count();
+    std::uint64_t accepted = 0;
+    for (std::uint64_t i = 0; i < cases; ++i) {
+        const std::uint64_t seed = base + i;
+        test::FuzzRng rng(seed);
+        std::string text = seeds[rng.below(seeds.size())];
+        test::mutate_document(text, rng, rng.range(1, 3));
+        try {
+            const CameraPathFile file = parse_camera_path_json(text);
+            ++accepted;
+            const CameraPathFile again = parse_camera_path_json(camera_path_json(file));
+            ASSERT_EQ(again.path.keyframes.size(), file.path.keyframes.size()) << "seed " << seed;
+        } catch (const std::runtime_error& error) {
+            const std::string message = error.what();
+            ASSERT_FALSE(message.empty()) << "seed " << seed;
+            ASSERT_EQ(message.find('\n'), std::string::npos) << "seed " << seed << ": " << message;
+            ASSERT_LT(message.size(), 400u) << "seed " << seed << ": " << message;
+        }
+    }
+    // Both outcomes are exercised, not just refusals.
+    if (cases >= 1000) {
+        EXPECT_GT(accepted, cases / 20);
+        EXPECT_LT(accepted, cases * 19 / 20);
+    }
 }
 
 TEST(CameraPathFile, OnlyJsonArgumentsAreTakenForFiles) {

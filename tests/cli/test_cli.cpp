@@ -7,6 +7,7 @@
 #include <ImfHeader.h>
 #include <ImfRgbaFile.h>
 #include <gtest/gtest.h>
+#include <sys/stat.h>
 
 #include <algorithm>
 #include <array>
@@ -815,6 +816,46 @@ TEST_F(CliWithOwnCache, ListShowsIfsScenesFromThePluginPath) {
     EXPECT_NE(result.out.find("ifs_depth"), std::string::npos) << result.out;
 }
 
+// A scene file nested 100000 deep and a FIFO named like a scene in a plugin folder (which once
+// crashed, and would hang, every command that looks for scenes) are each one warning line: the
+// other scenes are listed and loaded. A camera path nested as deep is refused in one line.
+TEST_F(CliWithOwnCache, HostileSceneFilesAreOneWarningEachAndBreakNothingElse) {
+    const fs::path plugins = dir() / "plugins";
+    fs::create_directories(plugins);
+    const std::string deep = std::string(100000, '[') + std::string(100000, ']');
+    std::ofstream(plugins / "a.ifs.json") << R"({"format": "fgr-ifs", "version": )" << deep << "}";
+    ASSERT_EQ(mkfifo((plugins / "fifo.ifs.json").c_str(), 0600), 0);
+    std::ofstream(plugins / "two.ifs.json")
+        << R"({"format": "fgr-ifs", "version": 1, "id": "two-maps", "name": "Two maps",)"
+        << R"( "maps": [{"scale": 0.5}, {"scale": 0.5, "translate": [1, 0, 0]}]})";
+    for (const std::vector<std::string>& args :
+         {std::vector<std::string>{"list"}, std::vector<std::string>{"list", "two-maps"}}) {
+        const RunResult result = run_with(args, plugins);
+        ASSERT_EQ(result.exit_code, 0) << result;
+        EXPECT_NE(result.out.find("two-maps"), std::string::npos) << result.out;
+        if (args.size() > 1) continue;  // a scene found by id reports only what it passed
+        std::vector<std::string> warnings;
+        std::istringstream lines(result.err);
+        for (std::string line; std::getline(lines, line);) {
+            if (line.find("skipping plugin") != std::string::npos) warnings.push_back(line);
+        }
+        ASSERT_EQ(warnings.size(), 2u) << result.err.substr(0, 2000);
+        EXPECT_NE(warnings[0].find("a.ifs.json: "), std::string::npos) << warnings[0];
+        EXPECT_NE(warnings[0].find("nest deeper than 64 levels"), std::string::npos) << warnings[0];
+        EXPECT_LT(warnings[0].size(), 300u);
+        EXPECT_NE(warnings[1].find("fifo.ifs.json: not a regular file: a FIFO"), std::string::npos)
+            << warnings[1];
+    }
+    std::ofstream(dir() / "p.json")
+        << R"({"format": "fgr-camera-path", "version": )" << deep << R"(, "keyframes": []})";
+    const RunResult render =
+        run_with({"render", "mandelbulb", "--camera-path", "p.json", "--time", "1", "-o", "x.png"});
+    EXPECT_EQ(render.exit_code, 2) << render;
+    EXPECT_NE(render.err.find("camera path 'p.json': "), std::string::npos) << render.err;
+    EXPECT_LT(render.err.size(), 300u) << render.err.substr(0, 300);
+    EXPECT_FALSE(fs::exists(dir() / "x.png"));
+}
+
 // A compiled plugin that hands over IFS maps (ABI 1.3) is listed as an IFS plugin, with its maps
 // and bounding sphere, not as an IFS file.
 TEST_F(CliWithOwnCache, ListShowsAnIfsPluginsMaps) {
@@ -964,7 +1005,7 @@ TEST_F(CliWithOwnCache, ABadSceneFileIsRefusedInOneLineNamingIt) {
         {{"list", "bad.cl"}, refused},
         {{"view", "bad.cl"}, refused},  // refused before a window would open
         {{"render", "missing.ifs.json", "-o", out_png().string()},
-         "fgr: error: missing.ifs.json: cannot open the file"},
+         "fgr: error: missing.ifs.json: No such file or directory"},
         {{"render", "./notes.txt", "-o", out_png().string()},
          "fgr: error: ./notes.txt: not a scene file: fgr opens scene plugins (*.so), IFS files "
          "(*.ifs.json), formula files (*.formula.json) and text scenes (*.cl), or a scene id "

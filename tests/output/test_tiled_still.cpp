@@ -30,6 +30,7 @@
 #include "image/embedded_view.hpp"
 #include "image/image_io.hpp"
 #include "output/still_layers.hpp"
+#include "output/tiled/tile_store.hpp"
 #include "output/tiled/tiled_still.hpp"
 #include "render/renderer.hpp"
 #include "scene/ifs/ifs.hpp"
@@ -363,6 +364,32 @@ TEST_F(TiledStillTest, ADamagedBandIsRenderedAgain) {
             << "band 1 kept, band 0 redone";
         EXPECT_EQ(read_png(output.path).rgb, expected);
         EXPECT_EQ(resumed.hits, expected_hits) << "the hits of the image, not of a header";
+    }
+}
+
+// A render.json that is no JSON, nested 100000 deep, holds a key twice or is not an object is
+// refused in one line naming the file, never with the JSON library's own message.
+TEST(TileStoreManifest, ADamagedRenderJsonIsRefusedInOneLineNamingIt) {
+    const test::TempDir dir("fgr_tile_store");
+    const std::filesystem::path store = dir.path() / "out.png.tiles";
+    std::filesystem::create_directories(store);
+    const std::string deep = std::string(100000, '[') + std::string(100000, ']');
+    for (const std::string& text :
+         {std::string("{"), R"({"fgr_tile_store": )" + deep + "}",
+          std::string(R"({"fgr_tile_store": 1, "fgr_tile_store": 1, "render": {}})"),
+          std::string(R"({"fgr_tile_store": "1", "render": {}})"), std::string("[1]"),
+          std::string(R"({"fgr_tile_store": 1, "render": 7})")}) {
+        test::write_text(store / "render.json", text);
+        try {
+            TileStore(store, nlohmann::json{{"scene", "x"}}, true, dir.path() / "out.png");
+            ADD_FAILURE() << "resumed from " << text.substr(0, 60);
+        } catch (const std::runtime_error& error) {
+            const std::string message = error.what();
+            EXPECT_NE(message.find("out.png.tiles"), std::string::npos) << message;
+            EXPECT_EQ(message.find('\n'), std::string::npos) << message;
+            EXPECT_EQ(message.find("json.exception"), std::string::npos) << message;
+            EXPECT_LT(message.size(), 400u) << message;
+        }
     }
 }
 

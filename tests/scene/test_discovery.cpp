@@ -3,8 +3,14 @@
 // when built, the real mandelbulb plugin in FGR_TEST_PLUGIN_DIR.
 
 #include <gtest/gtest.h>
+#include <sys/socket.h>
+#include <sys/stat.h>
+#include <sys/un.h>
+#include <unistd.h>
 
+#include <algorithm>
 #include <chrono>
+#include <cstdint>
 #include <cstdlib>
 #include <filesystem>
 #include <fstream>
@@ -13,6 +19,8 @@
 #include <vector>
 
 #include "child_process.hpp"
+#include "fuzz_rng.hpp"
+#include "json_mutation.hpp"
 #include "scene/discovery.hpp"
 #include "scene/plugin_loader.hpp"
 #include "scene/scene_index.hpp"
@@ -304,6 +312,102 @@ TEST(DiscoverScene, ADamagedIndexIsRebuiltAndRemovedFilesLeaveIt) {
     fs::remove(gone);
     ASSERT_EQ(discover_scene(dirs.search_path(), "target", dirs.index).scenes.size(), 1u);
     EXPECT_EQ(SceneIndex::read(dirs.index).size(), 1u);
+}
+
+// 10^4 seeded damaged indexes (FGR_FUZZ_CASES, FGR_FUZZ_SEED; a failure prints its seed): a valid
+// index with its text, structure or values mutated. Parsing one never throws or crashes, and a
+// search through it, written to its file, still finds the scene (every 500th case, as that writes
+// and loads files).
+TEST(FuzzSceneIndex, ADamagedIndexIsReadOrDroppedNeverACrash) {
+    SceneDirectories dirs;
+    write_ifs_scene(dirs.first, "a.ifs.json", "other");
+    write_ifs_scene(dirs.first, "b.ifs.json", "target");
+    ASSERT_EQ(discover_scene(dirs.search_path(), "target", dirs.index).scenes.size(), 1u);
+    const std::string valid = test::read_file(dirs.index);
+    ASSERT_EQ(SceneIndex::read(dirs.index).size(), 2u);
+    const std::uint64_t base = test::fuzz_base_seed(0x5363656e65496478);  // "SceneIdx"
+    const std::uint64_t cases = test::fuzz_case_count();
+    for (std::uint64_t i = 0; i < cases; ++i) {
+        const std::uint64_t seed = base + i;
+        test::FuzzRng rng(seed);
+        std::string text = valid;
+        test::mutate_document(text, rng, rng.range(1, 3));
+        std::string problem;
+        ASSERT_NO_THROW((void)SceneIndex::parse(text, problem)) << "seed " << seed;
+        ASSERT_EQ(problem.find('\n'), std::string::npos) << "seed " << seed << ": " << problem;
+        if (i % 500 != 0) continue;
+        test::write_text(dirs.index, text);
+        ASSERT_NO_THROW((void)SceneIndex::read(dirs.index)) << "seed " << seed;
+        // An index that names another id for the file is stale data, not a crash: the search then
+        // scans everything, and still finds it.
+        const Discovery found = discover_scene(dirs.search_path(), "target", dirs.index);
+        ASSERT_TRUE(std::any_of(found.scenes.begin(), found.scenes.end(),
+                                [](const Scene& scene) { return scene.id == "target"; }))
+            << "seed " << seed;
+    }
+}
+
+// --- Entries named like scene files that are no file to read -------------------------------------
+
+// A Unix socket bound at `file` (closed at once: the entry stays).
+void make_socket(const fs::path& file) {
+    const int handle = socket(AF_UNIX, SOCK_STREAM, 0);
+    ASSERT_GE(handle, 0);
+    sockaddr_un address{};
+    address.sun_family = AF_UNIX;
+    ASSERT_LT(file.native().size(), sizeof(address.sun_path));
+    std::copy(file.native().begin(), file.native().end(), address.sun_path);
+    ASSERT_EQ(bind(handle, reinterpret_cast<const sockaddr*>(&address), sizeof(address)), 0);
+    close(handle);
+}
+
+// A plugin folder whose scene-named entries are a FIFO, a directory, a socket, a loop of links
+// and a dangling link, beside one good scene: each odd entry is skipped with its own reason, never
+// opened (a FIFO opened for reading would wait for a writer forever), by the full scan and by the
+// search for one id alike.
+TEST(Discovery, EntriesThatAreNoRegularFileAreSkippedEachWithWhy) {
+    SceneDirectories dirs;
+    write_ifs_scene(dirs.first, "z.ifs.json", "target");
+    ASSERT_EQ(mkfifo((dirs.first / "fifo.ifs.json").c_str(), 0600), 0);
+    fs::create_directories(dirs.first / "folder.so");
+    fs::create_symlink("loop_b.formula.json", dirs.first / "loop_a.formula.json");
+    fs::create_symlink("loop_a.formula.json", dirs.first / "loop_b.formula.json");
+    fs::create_symlink("missing.ifs.json", dirs.first / "dangling.ifs.json");
+    // Short: a socket's path has a limit of about 100 bytes.
+    test::TempDir short_root{"fgr_sock"};
+    make_socket(short_root.path() / "s.cl");
+    // First, so that the search for one id passes it on its way to the scene.
+    const std::vector<fs::path> search_path = {short_root.path(), dirs.first};
+
+    const auto expect_all_skipped = [&](const Discovery& found) {
+        ASSERT_EQ(found.scenes.size(), 1u);
+        EXPECT_EQ(found.scenes[0].id, "target");
+        EXPECT_EQ(found.skipped.size(), 6u);
+        expect_skipped(found, "fifo.ifs.json", "not a regular file: a FIFO");
+        expect_skipped(found, "folder.so", "not a regular file: a directory");
+        expect_skipped(found, "s.cl", "not a regular file: a socket");
+        expect_skipped(found, "loop_a.formula.json",
+                       "not a regular file: a symbolic link that cannot be followed (");
+        expect_skipped(found, "loop_b.formula.json", "a symbolic link that cannot be followed");
+        expect_skipped(found, "dangling.ifs.json", "a symbolic link that cannot be followed");
+    };
+    expect_all_skipped(discover_scenes(search_path));
+    for (int run = 0; run < 2; ++run) {
+        expect_all_skipped(discover_scene(search_path, "target", dirs.index));
+    }
+}
+
+// A file name with a newline and a terminal escape in it is shown escaped in the refusal, which
+// stays one line.
+TEST(Discovery, ControlCharactersInAFileNameAreShownEscaped) {
+    SceneDirectories dirs;
+    std::ofstream(dirs.first / "bad\n\x1b[31mname.ifs.json") << "{}";
+    const Discovery found = discover_scenes(dirs.search_path());
+    ASSERT_EQ(found.skipped.size(), 1u);
+    const std::string message = unknown_scene_message(found, "bad");
+    EXPECT_EQ(message.find('\n'), std::string::npos) << message;
+    EXPECT_EQ(message.find('\x1b'), std::string::npos) << message;
+    EXPECT_NE(message.find("bad\\n\\x1b[31mname.ifs.json"), std::string::npos) << message;
 }
 
 TEST(MandelbulbPlugin, LoadsFromThePluginDirectory) {

@@ -4,8 +4,8 @@
 // files are refused with one line naming the file and the map, a seeded fuzz test of the reader,
 // and discovery of IFS files beside plugins.
 //
-// Reproduce a fuzz failure with FGR_FUZZ_CASE=<case seed> (printed with it); FGR_FUZZ_CASES=<n>
-// runs more or fewer cases.
+// Reproduce a fuzz failure with FGR_FUZZ_SEED=<case seed> FGR_FUZZ_CASES=1 (the seed is printed
+// with it); FGR_FUZZ_CASES=<n> runs more or fewer cases.
 
 #include <gtest/gtest.h>
 #include <spdlog/spdlog.h>
@@ -498,6 +498,32 @@ TEST(IfsFile, BadFilesAreRefusedInOneLineNamingTheFileAndTheMap) {
     }
 }
 
+// A light's "type" nested 100000 deep (which once crashed the reader printing it), a key given
+// twice, bytes after a NUL or after the document: refused in one short line naming the file.
+TEST(IfsFile, HostileDocumentsAreRefusedInOneShortLine) {
+    const std::string deep = std::string(100000, '[') + std::string(100000, ']');
+    json doc = minimal(sierpinski_maps());
+    doc["lights"] = {{{"type", "DEEP"}, {"position", {0, 0, 2}}}};
+    std::string light = doc.dump();
+    light.replace(light.find("\"DEEP\""), 6, deep);
+    std::string twice = minimal(sierpinski_maps()).dump();
+    twice.insert(1, R"("name": "Other", )");
+    const std::vector<std::pair<std::string, std::string>> cases = {
+        {light, "nest deeper than 64 levels"},
+        {twice, "the key \"name\" appears twice"},
+        {minimal(sierpinski_maps()).dump() + std::string(1, '\0') + "junk", "a NUL byte at offset"},
+        {minimal(sierpinski_maps()).dump() + " {}", "not valid JSON"},
+    };
+    for (const auto& [text, expected] : cases) {
+        const std::string message = refusal(text);
+        ASSERT_FALSE(message.empty()) << "accepted: " << text.substr(0, 80);
+        EXPECT_EQ(message.rfind("bad.ifs.json: ", 0), 0u) << message;
+        EXPECT_EQ(message.find('\n'), std::string::npos) << message;
+        EXPECT_LT(message.size(), 400u) << message.substr(0, 400);
+        EXPECT_NE(message.find(expected), std::string::npos) << message;
+    }
+}
+
 // "$schema" names the file's JSON Schema for editors (schemas/ifs.schema.json): taken at the top
 // level, and not read.
 TEST(IfsFile, ASchemaReferenceIsAcceptedAtTheTopLevel) {
@@ -516,14 +542,15 @@ TEST(IfsFile, ReadingNamesTheFile) {
         EXPECT_EQ(std::string(error.what()).rfind(missing.string() + ": ", 0), 0u) << error.what();
     }
     // One byte over the limit is refused for its size; a file of exactly the limit is read (and
-    // refused only for not being JSON). The file is read in chunks, so both sit on chunk edges.
+    // refused only for not being JSON).
     const fs::path big = dir.path() / "big.ifs.json";
     write_text(big, std::string(kIfsMaxFileBytes + 1, ' '));
     try {
         (void)read_ifs_file(big);
         FAIL() << "read an oversized file";
     } catch (const IfsError& error) {
-        EXPECT_NE(std::string(error.what()).find("larger than"), std::string::npos) << error.what();
+        EXPECT_NE(std::string(error.what()).find("file too large"), std::string::npos)
+            << error.what();
     }
     const fs::path limit = dir.path() / "limit.ifs.json";
     write_text(limit, std::string(kIfsMaxFileBytes, ' '));
@@ -531,7 +558,8 @@ TEST(IfsFile, ReadingNamesTheFile) {
         (void)read_ifs_file(limit);
         FAIL() << "parsed a file of spaces";
     } catch (const IfsError& error) {
-        EXPECT_EQ(std::string(error.what()).find("larger than"), std::string::npos) << error.what();
+        EXPECT_EQ(std::string(error.what()).find("file too large"), std::string::npos)
+            << error.what();
     }
 }
 
@@ -624,6 +652,30 @@ TEST(IfsDiscovery, FindsGoodFilesAndSkipsBadOnesWithTheirReason) {
         << reasons["again.ifs.json"];
 }
 
+// One file nested 100000 deep in a plugin folder is one refused file: every other scene is still
+// listed and found by id, through the scene index or not.
+TEST(IfsDiscovery, ADeeplyNestedFileIsRefusedAndTheOthersStillLoad) {
+    const test::TempDir dir("fgr_ifs_deep");
+    const std::string deep = std::string(100000, '[') + std::string(100000, ']');
+    write_text(dir.path() / "a.ifs.json",
+               R"({"format": "fgr-ifs", "version": )" + deep + R"(, "id": "a", "maps": []})");
+    write_text(dir.path() / "good.ifs.json", read_text(kIfsDir / "sierpinski.ifs.json"));
+    spdlog::set_level(spdlog::level::err);
+    const Discovery all = discover_scenes({dir.path()});
+    const Discovery one =
+        discover_scene({dir.path()}, "sierpinski-ifs", dir.path() / "index" / "scenes.json");
+    spdlog::set_level(spdlog::level::info);
+    for (const Discovery* found : {&all, &one}) {
+        ASSERT_EQ(found->scenes.size(), 1u);
+        EXPECT_EQ(found->scenes[0].id, "sierpinski-ifs");
+        ASSERT_EQ(found->skipped.size(), 1u);
+        EXPECT_EQ(found->skipped[0].file.filename(), "a.ifs.json");
+        EXPECT_NE(found->skipped[0].reason.find("nest deeper than 64 levels"), std::string::npos)
+            << found->skipped[0].reason;
+        EXPECT_LT(found->skipped[0].reason.size(), 200u);
+    }
+}
+
 TEST(IfsDiscovery, ReloadReadsTheFileAgain) {
     const test::TempDir dir("fgr_ifs_reload");
     const fs::path file = dir.path() / "scene.ifs.json";
@@ -652,22 +704,15 @@ TEST(IfsDiscovery, TheBuildsPluginFolderHoldsTheShippedFiles) {
 // --- Fuzzing parse_ifs_json ----------------------------------------------------------------------
 //
 // Each case starts from a shipped file or a small valid document and applies a few mutations: to
-// the text (bytes deleted, inserted, duplicated, the text cut short) or to the parsed value (a
-// number, string, array or object swapped for a nasty one, a key removed or misspelt, an array
-// grown). The checks: nothing but IfsError escapes, a refusal is one line naming the file, and an
-// accepted scene keeps the invariants the renderer relies on.
+// the text (bytes deleted, inserted, duplicated, the text cut short), to its structure (nesting far
+// too deep, a key given twice, huge numbers, NUL bytes, bytes after the document) or to the parsed
+// value (a number, string, array or object swapped for a nasty one, a key removed or misspelt, an
+// array grown). The checks: nothing but IfsError escapes, a refusal is one short line naming the
+// file, and an accepted scene keeps the invariants the renderer relies on.
 
 constexpr uint64_t kIfsFuzzSeed = 0x49465346757a7a31;  // "IFSFuzz1"
-constexpr int kIfsFuzzCases = 10000;
 
 using Rng = test::FuzzRng;
-using test::mutate_text;
-using test::mutate_value;
-
-uint64_t fuzz_cases() {
-    if (const char* cases = std::getenv("FGR_FUZZ_CASES")) return std::strtoull(cases, nullptr, 10);
-    return kIfsFuzzCases;
-}
 
 void check_case(const std::string& text, uint64_t case_seed, bool& accepted) {
     accepted = false;
@@ -700,49 +745,33 @@ void check_case(const std::string& text, uint64_t case_seed, bool& accepted) {
             << "case " << case_seed << ": " << message;
         ASSERT_EQ(message.find('\n'), std::string::npos) << "case " << case_seed << ": " << message;
         ASSERT_GT(message.size(), std::string("fuzz.ifs.json: ").size()) << "case " << case_seed;
+        ASSERT_LT(message.size(), 500u) << "case " << case_seed << ": " << message;
     }
 }
 
-TEST(IfsFuzz, ParsesOrRefusesEveryMutatedFile) {
+TEST(FuzzIfsFile, ParsesOrRefusesEveryMutatedFile) {
     std::vector<std::string> seeds;
     for (const fs::path& file : shipped_ifs_files()) seeds.push_back(read_text(file));
     seeds.push_back(minimal(sierpinski_maps()).dump());
     ASSERT_FALSE(seeds.empty());
 
-    std::vector<uint64_t> case_seeds;
-    if (const char* only = std::getenv("FGR_FUZZ_CASE")) {
-        case_seeds.push_back(std::strtoull(only, nullptr, 0));
-    } else {
-        Rng seeder(kIfsFuzzSeed);
-        for (uint64_t i = 0; i < fuzz_cases(); ++i) case_seeds.push_back(seeder.next());
-    }
+    const uint64_t base = test::fuzz_base_seed(kIfsFuzzSeed);
+    const uint64_t cases = test::fuzz_case_count();
     int accepted = 0;
-    for (const uint64_t case_seed : case_seeds) {
+    for (uint64_t i = 0; i < cases; ++i) {
+        const uint64_t case_seed = base + i;
         Rng rng(case_seed);
         std::string text = seeds[rng.below(seeds.size())];
-        const std::size_t mutations = 1 + rng.below(3);
-        for (std::size_t m = 0; m < mutations; ++m) {
-            if (rng.chance(0.3)) {
-                mutate_text(text, rng);
-            } else {
-                json document = json::parse(text, nullptr, /*allow_exceptions=*/false);
-                if (document.is_discarded()) {
-                    mutate_text(text, rng);
-                } else {
-                    mutate_value(document, rng);
-                    text = document.dump(-1, ' ', false, json::error_handler_t::replace);
-                }
-            }
-        }
+        test::mutate_document(text, rng, rng.range(1, 3));
         bool ok = false;
         check_case(text, case_seed, ok);
         if (::testing::Test::HasFatalFailure()) return;
         accepted += ok ? 1 : 0;
     }
     // Both outcomes are exercised, not just refusals.
-    if (case_seeds.size() >= 1000) {
-        EXPECT_GT(accepted, static_cast<int>(case_seeds.size() / 20));
-        EXPECT_LT(accepted, static_cast<int>(case_seeds.size() * 19 / 20));
+    if (cases >= 1000) {
+        EXPECT_GT(accepted, static_cast<int>(cases / 20));
+        EXPECT_LT(accepted, static_cast<int>(cases * 19 / 20));
     }
 }
 

@@ -33,17 +33,23 @@ private:
     std::mt19937_64 engine_;
 };
 
-// How many cases a fuzz test runs: FGR_FUZZ_CASES, default 10000 (a longer run before a release
-// sets more).
+// How many cases a seeded fuzz test runs: $FGR_FUZZ_CASES, else 10000 (the CI's number; a longer
+// run before a release sets more).
 inline std::uint64_t fuzz_case_count() {
-    const char* text = std::getenv("FGR_FUZZ_CASES");
-    return text != nullptr && *text != '\0' ? std::stoull(text) : 10000;
+    if (const char* cases = std::getenv("FGR_FUZZ_CASES"); cases != nullptr && *cases != '\0') {
+        return std::strtoull(cases, nullptr, 0);
+    }
+    return 10000;
 }
 
-// The seed of a fuzz test's case 0 (case i is seeded with base + i): FGR_FUZZ_SEED, default fixed.
-inline std::uint64_t fuzz_base_seed() {
-    const char* text = std::getenv("FGR_FUZZ_SEED");
-    return text != nullptr && *text != '\0' ? std::stoull(text) : 20260529;
+// The seed of a fuzz test's first case: $FGR_FUZZ_SEED, else `fixed` (each test may have its
+// own). Case i is seeded with base + i, so a failure's message names the one seed that reproduces
+// it: FGR_FUZZ_SEED=<seed> FGR_FUZZ_CASES=1.
+inline std::uint64_t fuzz_base_seed(std::uint64_t fixed = 20260529) {
+    if (const char* seed = std::getenv("FGR_FUZZ_SEED"); seed != nullptr && *seed != '\0') {
+        return std::strtoull(seed, nullptr, 0);
+    }
+    return fixed;
 }
 
 }  // namespace fgr::test

@@ -3,7 +3,10 @@
 
 #include <cstdint>
 #include <iterator>
+#include <string_view>
 #include <vector>
+
+#include "util/json_fields.hpp"
 
 namespace fgr::test {
 namespace {
@@ -114,6 +117,144 @@ void mutate_text(std::string& text, FuzzRng& rng) {
         default:
             text.resize(at);
             break;
+    }
+}
+
+namespace {
+
+// Where values start in `text` outside strings: after ':' , ',' or '[' (blanks skipped).
+std::vector<std::size_t> value_starts(const std::string& text) {
+    std::vector<std::size_t> starts;
+    bool in_string = false;
+    for (std::size_t i = 0; i < text.size(); ++i) {
+        const char c = text[i];
+        if (in_string) {
+            if (c == '\\') {
+                ++i;
+            } else if (c == '"') {
+                in_string = false;
+            }
+        } else if (c == '"') {
+            in_string = true;
+        } else if (c == ':' || c == ',' || c == '[') {
+            std::size_t at = i + 1;
+            while (at < text.size() && (text[at] == ' ' || text[at] == '\n')) ++at;
+            starts.push_back(at);
+        }
+    }
+    return starts;
+}
+
+// The end of the scalar starting at `at` (a number, a literal or a string); `at` for a bracket.
+std::size_t scalar_end(const std::string& text, std::size_t at) {
+    if (at >= text.size()) return at;
+    if (text[at] == '"') {
+        for (std::size_t i = at + 1; i < text.size(); ++i) {
+            if (text[i] == '\\') {
+                ++i;
+            } else if (text[i] == '"') {
+                return i + 1;
+            }
+        }
+        return text.size();
+    }
+    std::size_t end = at;
+    while (end < text.size() && std::string_view(",]}: \n").find(text[end]) == std::string::npos &&
+           text[end] != '{' && text[end] != '[') {
+        ++end;
+    }
+    return end;
+}
+
+std::string nested(FuzzRng& rng) {
+    static const std::size_t kDepths[] = {63, 64, 65, 1000, 100000};
+    const std::size_t depth = rng.pick(kDepths);
+    const bool closed = rng.chance(0.8);
+    switch (rng.below(3)) {
+        case 0:
+            return std::string(depth, '[') + (closed ? std::string(depth, ']') : "");
+        case 1: {
+            std::string text;
+            text.reserve(depth * 6);
+            for (std::size_t i = 0; i < depth; ++i) text += "{\"a\":";
+            return text + "0" + (closed ? std::string(depth, '}') : "");
+        }
+        default:
+            return std::string(depth, '[') + "\"x\"" + (closed ? std::string(depth, ']') : "");
+    }
+}
+
+std::string huge_number(FuzzRng& rng) {
+    switch (rng.below(4)) {
+        case 0:
+            return "1e" + std::to_string(309 + rng.below(100000));
+        case 1:
+            return "-" + std::string(1 + rng.below(2000), '9');
+        case 2:
+            return "18446744073709551616";
+        default:
+            return "0." + std::string(1 + rng.below(2000), '0') + "1e-400";
+    }
+}
+
+}  // namespace
+
+void mutate_structure(std::string& text, FuzzRng& rng) {
+    const std::vector<std::size_t> starts = value_starts(text);
+    const std::size_t at =
+        starts.empty() ? rng.below(text.size() + 1) : starts[rng.below(starts.size())];
+    switch (rng.below(6)) {
+        case 0:  // a value nested too deep
+            text.replace(at, scalar_end(text, at) - at, nested(rng));
+            break;
+        case 1: {  // a key of the object that holds `at` given again, first
+            const std::size_t open = text.rfind('{', at);
+            if (open == std::string::npos) break;
+            const std::size_t key = text.find('"', open);
+            const std::size_t key_end = key == std::string::npos ? key : scalar_end(text, key);
+            if (key_end == std::string::npos || key_end >= text.size()) break;
+            const std::string copy = text.substr(key, key_end - key);
+            static const char* const kValues[] = {"0", "\"x\"", "null", "[]", "{}", "1e308"};
+            text.insert(open + 1, copy + ":" + rng.pick(kValues) + ",");
+            break;
+        }
+        case 2:  // a number no double holds
+            text.replace(at, scalar_end(text, at) - at, huge_number(rng));
+            break;
+        case 3:  // a NUL byte, anywhere
+            text.insert(rng.below(text.size() + 1), 1, '\0');
+            break;
+        case 4: {  // bytes after the document
+            static const char* const kTrailing[] = {"x", "{}", " []", "\0{\"a\":1}", ",", "}"};
+            text += rng.pick(kTrailing);
+            break;
+        }
+        default:  // an escaped NUL or control character inside a string
+            if (const std::size_t quote = text.find('"', at); quote != std::string::npos) {
+                static const char* const kEscapes[] = {"\\u0000", "\\u001b[31m", "\\n"};
+                text.insert(quote + 1, rng.pick(kEscapes));
+            }
+            break;
+    }
+}
+
+void mutate_document(std::string& text, FuzzRng& rng, int count) {
+    for (int m = 0; m < count; ++m) {
+        const double kind = rng.unit();
+        if (kind < 0.15) {
+            mutate_structure(text, rng);
+            continue;
+        }
+        // Parsed only when shallow: walking or dumping a deep value recurses through it.
+        const bool deep = json_fields::nests_deeper_than(text, 200);
+        json document = deep ? json() : json::parse(text, nullptr, /*allow_exceptions=*/false);
+        if (kind < 0.4 || deep || document.is_discarded()) {
+            mutate_text(text, rng);
+        } else {
+            mutate_value(document, rng);
+            text =
+                document.dump(rng.chance(0.5) ? 1 : -1, ' ', false, json::error_handler_t::replace);
+        }
     }
 }
 

@@ -42,6 +42,27 @@ TEST(UtilStrings, QuotedPathIsItsTextBetweenSingleQuotes) {
     EXPECT_EQ(quoted("out/mandel bulb.png"), "'out/mandel bulb.png'");
     EXPECT_EQ(quoted("it's.exr"), "'it's.exr'");
     EXPECT_EQ(quoted(""), "''");
+    EXPECT_EQ(quoted("a\nb.png"), "'a\\nb.png'");
+}
+
+// Control characters and bytes that are not UTF-8 are escaped, so a file name cannot break a
+// message into lines or send the terminal an escape; valid non-ASCII text is kept.
+TEST(UtilStrings, PrintableTextEscapesControlCharactersAndBytesThatAreNotUtf8) {
+    EXPECT_EQ(printable_text("plain/path-1.ifs.json"), "plain/path-1.ifs.json");
+    EXPECT_EQ(printable_text("a\nb\rc\td"), "a\\nb\\rc\\td");
+    EXPECT_EQ(printable_text("\x1b[31mred\x7f"), "\\x1b[31mred\\x7f");
+    EXPECT_EQ(printable_text(std::string("nul\0byte", 8)), "nul\\x00byte");
+    EXPECT_EQ(printable_text("fractale-\xc3\xa9t\xc3\xa9 \xe2\x82\xac \xf0\x9f\x8c\x80"),
+              "fractale-\xc3\xa9t\xc3\xa9 \xe2\x82\xac \xf0\x9f\x8c\x80");
+    // A stray continuation byte, a lead byte cut short, an overlong '/', a surrogate, past
+    // U+10FFFF, a C1 control (U+009B, a terminal's CSI) and a right-to-left override.
+    EXPECT_EQ(printable_text("\x80|\xc3|\xc0\xaf|\xed\xa0\x80|\xf4\x90\x80\x80"),
+              "\\x80|\\xc3|\\xc0\\xaf|\\xed\\xa0\\x80|\\xf4\\x90\\x80\\x80");
+    EXPECT_EQ(printable_text("a\xc2\x9b"
+                             "b\xe2\x80\xae"
+                             "c"),
+              "a\\xc2\\x9bb\\u202ec");
+    EXPECT_EQ(printable_path("/tmp/x\ny.so"), "/tmp/x\\ny.so");
 }
 
 std::filesystem::path write_bytes(const std::filesystem::path& file, const std::string& bytes) {

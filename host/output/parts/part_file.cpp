@@ -19,6 +19,7 @@
 #include "image/embedded_view.hpp"
 #include "output/parts/render_identity.hpp"
 #include "output/tiled/streaming_image.hpp"
+#include "util/json_fields.hpp"
 #include "util/lower_case.hpp"
 #include "util/timing.hpp"
 
@@ -223,6 +224,13 @@ PartInfo read_part_info(const fs::path& path) {
     if (attribute == nullptr) not_a_part(path, "its header has no fgr.part");
     PartInfo info;
     info.path = path;
+    try {
+        // The one checked parse (depth, duplicate keys, NUL bytes, trailing bytes) first; then
+        // again keeping the keys' order, in which the identity's fields are compared and named.
+        (void)json_fields::parse_document(attribute->value(), "damaged");
+    } catch (const std::runtime_error& error) {
+        not_a_part(path, fmt::format("its fgr.part header is {}", error.what()));
+    }
     try {
         const nlohmann::ordered_json json = nlohmann::ordered_json::parse(attribute->value());
         if (json.at("fgr_part").get<int>() != kPartVersion) not_a_part(path, "another version");

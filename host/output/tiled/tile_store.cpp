@@ -13,6 +13,7 @@
 #include "output/parts/render_identity.hpp"
 #include "util/atomic_file.hpp"
 #include "util/files.hpp"
+#include "util/json_fields.hpp"
 
 namespace fgr {
 namespace {
@@ -99,9 +100,11 @@ nlohmann::json read_manifest(const fs::path& manifest) {
     }
     nlohmann::json kept;
     try {
-        kept = nlohmann::json::parse(text);
-    } catch (const nlohmann::json::exception& parse_error) {
-        throw damaged("not valid JSON: " + excerpt(parse_error.what(), 160));
+        // The one checked parse: nesting at most 64 deep (the identity's values are dumped into
+        // messages below), no key twice, no NUL byte, nothing after the document.
+        kept = json_fields::parse_document(text, "not valid JSON");
+    } catch (const std::runtime_error& parse_error) {
+        throw damaged(parse_error.what());
     }
     const auto version = kept.is_object() ? kept.find("fgr_tile_store") : kept.end();
     const auto render = kept.is_object() ? kept.find("render") : kept.end();

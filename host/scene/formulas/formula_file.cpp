@@ -15,6 +15,7 @@
 #include "scene/formulas/formulas.hpp"
 #include "scene/scene_json.hpp"
 #include "util/json_fields.hpp"
+#include "util/strings.hpp"
 
 namespace fgr {
 namespace {
@@ -84,7 +85,8 @@ FormulaSlot slot_from(const json& entry, std::size_t index) {
     FormulaSlot slot;
     slot.formula = find_formula(name);
     if (slot.formula == nullptr) {
-        fail("{}: unknown formula '{}' (known: {})", where, printable(name), known_formulas());
+        fail("{}: unknown formula '{}' (known: {})", where, printable_excerpt(name),
+             known_formulas());
     }
     if (entry.contains("repeat")) {
         slot.repeat = integer_from(entry, "repeat", 1, kFormulaMaxRepeat, where);
@@ -103,7 +105,7 @@ FormulaSlot slot_from(const json& entry, std::size_t index) {
                 std::string ids;
                 for (const FormulaParam& p : params) ids += (ids.empty() ? "" : ", ") + p.id;
                 fail("{}: {} has no parameter '{}' ({})", params_where, slot.formula->name,
-                     printable(key), ids.empty() ? "it has none" : "its: " + ids);
+                     printable_excerpt(key), ids.empty() ? "it has none" : "its: " + ids);
             }
             slot.values[static_cast<std::size_t>(found - params.begin())] =
                 param_value(value, *found, params_where);
@@ -285,11 +287,11 @@ FormulaScene parse_formula_json(const std::string& text, const std::string& orig
 FormulaScene read_formula_file(const std::filesystem::path& file) {
     std::string text;
     try {
-        text = scene_json::read_bounded(file, kFormulaMaxFileBytes, "a formula file");
+        text = scene_json::read_bounded(file, kFormulaMaxFileBytes);
     } catch (const std::runtime_error& error) {
         throw FormulaError(error.what());
     }
-    return parse_formula_json(text, file.string());
+    return parse_formula_json(text, printable_path(file));
 }
 
 }  // namespace fgr

@@ -26,6 +26,7 @@
 #include "scene/ifs/ifs.hpp"
 #include "scene/scene_json.hpp"
 #include "util/json_fields.hpp"
+#include "util/strings.hpp"
 
 namespace fgr {
 namespace {
@@ -293,7 +294,7 @@ IfsLeaf leaf_from(const json& document, const IfsBounds& bounds) {
         }
     } else {
         fail("\"leaf\" \"shape\" '{}' must be \"ball\", \"box\" or \"tetrahedron\"",
-             printable(leaf.shape));
+             printable_excerpt(leaf.shape));
     }
     for (const glm::dvec3& corner : corners) {
         if (glm::length(corner - bounds.centre) > bounds.radius * (1.0 + 1e-6)) {
@@ -475,11 +476,11 @@ IfsScene parse_ifs_json(const std::string& text, const std::string& origin) {
 IfsScene read_ifs_file(const std::filesystem::path& file) {
     std::string text;
     try {
-        text = scene_json::read_bounded(file, kIfsMaxFileBytes, "an IFS file");
+        text = scene_json::read_bounded(file, kIfsMaxFileBytes);
     } catch (const std::runtime_error& error) {
         throw IfsError(error.what());
     }
-    return parse_ifs_json(text, file.string());
+    return parse_ifs_json(text, printable_path(file));
 }
 
 // One-sided Jacobi (Hestenes 1958): plane rotations applied to the columns until they are
