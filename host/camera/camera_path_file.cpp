@@ -1,13 +1,12 @@
 // SPDX-License-Identifier: Apache-2.0
 #include "camera/camera_path_file.hpp"
 
-#include <fstream>
 #include <nlohmann/json.hpp>
-#include <sstream>
 #include <stdexcept>
 
 #include "camera/view_json.hpp"
 #include "util/atomic_file.hpp"
+#include "util/files.hpp"
 #include "util/installed_files.hpp"
 #include "util/json_fields.hpp"
 #include "util/strings.hpp"
@@ -72,6 +71,9 @@ CameraPathFile parse_camera_path_json(const std::string& text) {
     }
     const json& keyframes = document.at("keyframes");
     if (keyframes.size() < 2) fail("a camera path needs at least two keyframes");
+    if (keyframes.size() > kMaxPathKeyframes) {
+        fail("{} keyframes: a camera path has at most {}", keyframes.size(), kMaxPathKeyframes);
+    }
     for (std::size_t i = 0; i < keyframes.size(); ++i) {
         file.path.keyframes.push_back(keyframe_from(keyframes[i], i));
         if (i > 0 && !(file.path.keyframes[i].time > file.path.keyframes[i - 1].time)) {
@@ -82,12 +84,13 @@ CameraPathFile parse_camera_path_json(const std::string& text) {
 }
 
 CameraPathFile read_camera_path_file(const std::filesystem::path& file) {
-    std::ifstream in(file, std::ios::binary);
-    if (!in) throw std::runtime_error("cannot read camera path " + quoted(file));
-    std::ostringstream text;
-    text << in.rdbuf();
+    std::string text;
+    if (const std::string problem = read_file_bytes(file, text, kMaxCameraPathFileBytes);
+        !problem.empty()) {
+        throw std::runtime_error("cannot read camera path " + quoted(file) + ": " + problem);
+    }
     try {
-        return parse_camera_path_json(text.str());
+        return parse_camera_path_json(text);
     } catch (const std::runtime_error& error) {
         throw std::runtime_error("camera path " + quoted(file) + ": " + error.what());
     }
