@@ -238,6 +238,8 @@ int command_video(const VideoOptions& typed_options) {
     std::tie(frames.first, frames.last) = frames_to_render(options, frame_count);
     const StillJob job = still_job(scene, scene_request(scene, frame_options), frame_options);
     const ComputeDevice device = open_requested_device(frame_options.device);
+    check_render_cost(scene, job, frame_options, device.info, double(frames.count()),
+                      static_cast<double>(Cluster::current().size()));
     ProgramCache cache(ProgramCache::default_directory());
     VideoFrameRenderer renderer(scene, device, cache, job.settings);
     // From every view of the video, so a frame range renders its frames as the whole video does.

@@ -145,6 +145,7 @@ struct IfsTraceRules {
     double travelled = 0.0;
     double reach = 1e30;
     int normal_levels = kIfsNormalLevels;
+    long max_nodes = 0;  // nodes taken out before the ray gives up, as the kernel's; 0: no limit
 };
 
 IfsRayHit trace_ifs_ray(const IfsScene& ifs, const glm::dvec3& origin, const glm::dvec3& dir,
