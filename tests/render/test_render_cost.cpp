@@ -178,6 +178,47 @@ TEST(RenderCost, TheShippedIfsScenesPassAndTheirEstimatesBoundTheReference) {
     }
 }
 
+// A 3D fern: a frond map that shrinks by 0.85 a level (with a slight turn), two leaflets and a
+// stem. Its tip (the frond map's fixed point) is only reached at the deepest level: a file that
+// gave no depth used to stop at 6 and draw a large ball there. Now the depth follows the
+// footprint up to the cap, and the estimate stays within the default's budget.
+TEST(IfsCost, ASlowlyShrinkingFrondReachesItsTipWithoutADepthGiven) {
+    const json maps = {{{"scale", 0.85},
+                        {"rotate", {{"axis", {0, 1, 0}}, {"degrees", 4}}},
+                        {"translate", {0, 0, 0.5}}},
+                       {{"scale", 0.3},
+                        {"rotate", {{"axis", {0, 1, 0}}, {"degrees", 50}}},
+                        {"translate", {0, 0, 0.3}}},
+                       {{"scale", 0.3},
+                        {"rotate", {{"axis", {0, 1, 0}}, {"degrees", -50}}},
+                        {"translate", {0, 0, 0.3}}},
+                       {{"scale", {0.05, 0.05, 0.2}}}};
+    const IfsScene fern = parse_ifs_json(ifs_text(maps, -1, "fern"), "fern.ifs.json");
+    EXPECT_EQ(fern.default_depth, kIfsMaxDepth);
+    EXPECT_EQ(fern.max_depth, kIfsMaxDepth);
+    const CameraView view = fern.cameras.front().view;
+    const double footprint = pixel_angle(camera_basis(view), 640);
+    const double distance = glm::length(view.position - fern.bounds.centre) - fern.bounds.radius;
+    const IfsCost cost = estimate_ifs_cost(fern, fern.default_depth, footprint, distance);
+    EXPECT_LE(cost.nodes_per_ray, kIfsDefaultDepthNodes);
+    EXPECT_EQ(cost.levels, kIfsMaxDepth);
+    // The ray through the tip ends in a leaf at the cap, whose ball is a fiftieth of the whole.
+    const IfsMap& frond = fern.maps[0];
+    const glm::dvec3 tip = glm::inverse(glm::dmat3(1.0) - frond.linear) * frond.offset;
+    IfsTraceRules rules;
+    rules.max_depth = fern.default_depth;
+    rules.footprint = footprint;
+    const IfsRayHit hit =
+        trace_ifs_ray(fern, view.position, glm::normalize(tip - view.position), rules);
+    ASSERT_TRUE(hit.hit);
+    EXPECT_EQ(hit.depth, kIfsMaxDepth);
+    const Scene scene = ifs_scene_to_scene(fern, "fern.ifs.json");
+    const RenderCost render =
+        estimate_render_cost(scene, default_request(scene, 640, 480), RenderMode::Shaded);
+    EXPECT_EQ(cost_refusal(render, 1.0, estimated_pace(small_cpu()), kCostLimitSeconds, "O"), "")
+        << render.costly;
+}
+
 // Path tracing at the largest size and sample count, and the brute mode at the finest sampling
 // and most passes, imply days: refused, saying what to change. Their defaults pass.
 TEST(RenderCost, AbsurdPathAndBruteSettingsAreRefusedAndDefaultsPass) {

@@ -5,8 +5,10 @@
 
 #include <algorithm>
 #include <cmath>
+#include <glm/geometric.hpp>
 #include <vector>
 
+#include "camera/camera.hpp"
 
 namespace fgr {
 namespace {
@@ -111,6 +113,15 @@ int deepest_affordable_ifs_depth(const IfsScene& ifs, int depth, double footprin
         }
     }
     return low;
+}
+
+void settle_ifs_default_depth(IfsScene& scene) {
+    if (!scene.default_depth_from_cost || scene.cameras.empty()) return;
+    const CameraView& view = scene.cameras.front().view;
+    const double footprint = pixel_angle(camera_basis(view), 640);
+    const double distance = glm::length(view.position - scene.bounds.centre) - scene.bounds.radius;
+    scene.default_depth = deepest_affordable_ifs_depth(scene, scene.max_depth, footprint, distance,
+                                                       kIfsDefaultDepthNodes);
 }
 
 }  // namespace fgr

@@ -42,4 +42,14 @@ IfsCost estimate_ifs_cost(const IfsScene& ifs, int depth, double footprint, doub
 int deepest_affordable_ifs_depth(const IfsScene& ifs, int depth, double footprint, double distance,
                                  double nodes_per_ray);
 
+// Nodes a ray of the default view may open at the default depth a file or plugin left to fgr:
+// a sixty-fourth of what the kernel lets a ray visit at the default max_steps (256 x 256).
+inline constexpr double kIfsDefaultDepthNodes = 1024.0;
+
+// When the scene's default depth was not given (IfsScene::default_depth_from_cost): lowers it from
+// the maximum to the deepest whose estimate, for a 640-pixel-wide image of its first camera at
+// the default hit threshold, stays within kIfsDefaultDepthNodes. Needs the maps validated and
+// the cameras set.
+void settle_ifs_default_depth(IfsScene& scene);
+
 }  // namespace fgr
