@@ -312,9 +312,10 @@ void write_path_file(const fs::path& file, long keyframes, double last_time = -1
     std::string text = R"({"format": "fgr-camera-path", "version": 1, "keyframes": [)";
     text.reserve(static_cast<size_t>(keyframes) * 60 + 100);
     for (long i = 0; i < keyframes; ++i) {
-        const double time = i + 1 == keyframes && last_time >= 0.0 ? last_time : double(i);
-        text += fmt::format(R"({}{{"time": {}, "position": [0, -3, 0], "target": [0, 0, 0]}})",
-                            i == 0 ? "" : ",", time);
+        const bool last = i + 1 == keyframes && last_time >= 0.0;
+        text += i == 0 ? R"({"time": )" : R"(,{"time": )";
+        text += last ? fmt::format("{}", last_time) : std::to_string(i);
+        text += R"(, "position": [0, -3, 0], "target": [0, 0, 0]})";
     }
     text += "]}\n";
     test::write_text(file, text);
