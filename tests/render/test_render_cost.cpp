@@ -21,6 +21,7 @@
 #include "camera/camera.hpp"
 #include "camera/projection.hpp"
 #include "child_process.hpp"
+#include "cli/commands.hpp"
 #include "render/render_cost.hpp"
 #include "scene/ifs/ifs.hpp"
 #include "scene/ifs/ifs_cost.hpp"
@@ -243,6 +244,35 @@ TEST(RenderCost, AbsurdPathAndBruteSettingsAreRefusedAndDefaultsPass) {
         EXPECT_NE(refusal.find("--spp"), std::string::npos) << refusal;
         EXPECT_NE(refusal.find("OVERRIDE"), std::string::npos) << refusal;
     }
+}
+
+// What fgr render and fgr video do with the estimate: refuse (UsageError) unless --no-cost-limit;
+// under --time-limit, which bounds the render, only an IFS whose rays would stop unfinished.
+TEST(RenderCost, TheCommandsRefuseUnlessTheLimitIsLiftedOrATimeLimitBoundsTheRender) {
+    const Scene bulb = test::built_scene("mandelbulb.so");
+    StillJob path;
+    path.settings.mode = RenderMode::Path;
+    path.request = default_request(bulb, 16384, 16384);
+    path.request.samples = 4096;
+    const Scene overlapping = scene_of(overlapping_ifs_text(), "overlapping.ifs.json");
+    StillJob ifs;
+    ifs.request = default_request(overlapping, 16, 12);
+    RenderOptions options;
+    EXPECT_THROW(check_render_cost(bulb, path, options, small_cpu()), UsageError);
+    EXPECT_THROW(check_render_cost(overlapping, ifs, options, small_cpu()), UsageError);
+    // A video of frames that each pass can be refused as a whole.
+    StillJob small = path;
+    small.request.width = 64;
+    small.request.height = 48;
+    small.request.samples = 16;
+    EXPECT_NO_THROW(check_render_cost(bulb, small, options, small_cpu()));
+    EXPECT_THROW(check_render_cost(bulb, small, options, small_cpu(), 1e6), UsageError);
+    options.time_limit = 60.0;
+    EXPECT_NO_THROW(check_render_cost(bulb, path, options, small_cpu()));
+    EXPECT_THROW(check_render_cost(overlapping, ifs, options, small_cpu()), UsageError);
+    options.no_cost_limit = true;
+    EXPECT_NO_THROW(check_render_cost(bulb, path, options, small_cpu()));
+    EXPECT_NO_THROW(check_render_cost(overlapping, ifs, options, small_cpu()));
 }
 
 // `fgr render` of the overlapping IFS file: one line, at once, before any kernel is built.
