@@ -595,7 +595,7 @@ int command_render(const RenderOptions& typed_options) {
     const ViewFile rendered_view = view_of_render(scene, request, options);
     options.embedded_view = view_file_text(rendered_view);
     const ComputeDevice device = device_opening.take();
-    if (!part_render_wanted(options)) {
+    if (!part_render_wanted(options)) {  // a part checks its own rows (render_part_file)
         check_render_cost(scene, still_job(scene, request, options), options, device.info, 1.0,
                           static_cast<double>(Cluster::current().size()));
     }
