@@ -50,8 +50,8 @@ VideoTiming video_timing(const CameraPath& path, double fps, std::optional<doubl
     if (const double frames = frames_in(timing.duration, fps);
         !(frames <= static_cast<double>(kMaxVideoFrames))) {
         throw std::invalid_argument(fmt::format(
-            "{:g} s of camera path '{}' at {:g} fps is {:.0f} frames, over the limit of {} frames a "
-            "video (render it in parts with --start and --duration, or at a lower --fps)",
+            "{:g} s of camera path '{}' at {:g} fps is {:.0f} frames, over the limit of {} "
+            "frames a video (render it in parts with --start and --duration, or at a lower --fps)",
             timing.duration, path.name, fps, frames, kMaxVideoFrames));
     }
     // The last frame's time must lie on the path, as `fgr render --time` would take it.
