@@ -81,8 +81,9 @@ RenderCost estimate_render_cost(const Scene& scene, const FrameRequest& request,
     RenderCost cost;
     const std::vector<float>& params = request.params;
     const double iterations = std::max(1.0, param_or_default(scene, params, "iterations"));
-    const double march = std::min(kTypicalMarchSteps, param_or_default(scene, params, "max_steps")) *
-                         iterations * kMarchIterationSteps;
+    const double march =
+        std::min(kTypicalMarchSteps, param_or_default(scene, params, "max_steps")) * iterations *
+        kMarchIterationSteps;
     if (scene.ifs) {
         ifs_cost(scene, request, cost);
         if (mode == RenderMode::Path) cost.steps_per_sample *= path_rays(request.path);

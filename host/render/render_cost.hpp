@@ -6,11 +6,12 @@
 // progress (the renderer splits its launches into bands by it).
 //
 // Work is counted in steps, the time of one IFS ball test; a DE formula's iteration or an inside
-// test's costs a fixed fraction of one (render_cost.cpp). Per pixel sample: a marched ray takes up
-// to `max_steps` DE evaluations of `iterations` each (counted at kTypicalMarchSteps); the path
-// mode traces a ray per bounce; the brute mode makes `brute_samples` + `brute_bisection` inside
-// tests a pass; an IFS ray the tests scene/ifs/ifs_cost.hpp estimates. The pace a device keeps is a rough figure per compute unit,
-// measured on a 2-core CPU with PoCL; the estimate says "about" for that reason.
+// test's costs a fixed fraction of one (kMarchIterationSteps, kInsideIterationSteps). Per pixel
+// sample: a marched ray takes up to `max_steps` DE evaluations of `iterations` each (counted at
+// kTypicalMarchSteps); the path mode traces a ray per bounce; the brute mode makes `brute_samples`
+// + `brute_bisection` inside tests a pass; an IFS ray the tests scene/ifs/ifs_cost.hpp estimates.
+// The pace a device keeps is a rough figure per compute unit, measured on a 2-core CPU with PoCL;
+// the estimate says "about" for that reason.
 
 #include <cstdint>
 #include <string>
