@@ -19,10 +19,6 @@ using nlohmann::json;
 constexpr const char* kFormat = "fgr-camera-path";
 constexpr int kVersion = 1;
 constexpr const char* kSchema = "camera-path.schema.json";
-// Far above any recorded path (a keyframe is about 300 bytes: this is some 50000 of them), far
-// below what would strain memory once parsed.
-constexpr std::uintmax_t kMaxCameraPathBytes = std::uintmax_t{16} << 20;
-
 using json_fields::fail;
 
 Keyframe keyframe_from(const json& entry, std::size_t index) {
@@ -73,6 +69,9 @@ CameraPathFile parse_camera_path_json(const std::string& text) {
     }
     const json& keyframes = document.at("keyframes");
     if (keyframes.size() < 2) fail("a camera path needs at least two keyframes");
+    if (keyframes.size() > kMaxPathKeyframes) {
+        fail("{} keyframes: a camera path has at most {}", keyframes.size(), kMaxPathKeyframes);
+    }
     for (std::size_t i = 0; i < keyframes.size(); ++i) {
         file.path.keyframes.push_back(keyframe_from(keyframes[i], i));
         if (i > 0 && !(file.path.keyframes[i].time > file.path.keyframes[i - 1].time)) {
@@ -84,9 +83,9 @@ CameraPathFile parse_camera_path_json(const std::string& text) {
 
 CameraPathFile read_camera_path_file(const std::filesystem::path& file) {
     std::string text;
-    if (const std::string failure = read_file_bytes(file, text, kMaxCameraPathBytes);
-        !failure.empty()) {
-        throw std::runtime_error("cannot read camera path " + quoted(file) + ": " + failure);
+    if (const std::string problem = read_file_bytes(file, text, kMaxCameraPathFileBytes);
+        !problem.empty()) {
+        throw std::runtime_error("cannot read camera path " + quoted(file) + ": " + problem);
     }
     try {
         return parse_camera_path_json(text);

@@ -12,6 +12,7 @@
 // editors (schemas/camera-path.schema.json, which agrees with the reader) and is not read; any
 // other key is refused, so a misspelt one never passes silently.
 
+#include <cstdint>
 #include <filesystem>
 #include <string>
 
@@ -28,9 +29,13 @@ struct CameraPathFile {
 // the running executable (util/installed_files.hpp).
 std::string camera_path_json(const CameraPathFile& file);
 
-// Parses and validates: no unknown keys, at least two keyframes, strictly increasing finite
-// times, finite vectors, position != target, fov in (0, 180). Throws std::runtime_error with a
-// one-line reason.
+// A camera path file larger than this is refused before it is read: kMaxPathKeyframes keyframes
+// of about a kilobyte each at most.
+inline constexpr std::uintmax_t kMaxCameraPathFileBytes = std::uintmax_t{16} << 20;
+
+// Parses and validates: no unknown keys, 2 to kMaxPathKeyframes keyframes, strictly increasing
+// finite times, finite vectors, position != target, fov in (0, 180). Throws std::runtime_error with
+// a one-line reason.
 CameraPathFile parse_camera_path_json(const std::string& text);
 
 // Reads `file`; errors name the file.

@@ -3,6 +3,7 @@
 // Where a camera stands and looks: a view, a named one, and a path of keyframed views. Plain data
 // that scenes carry and every front end edits; camera.hpp turns a view into rays.
 
+#include <cstddef>
 #include <glm/vec3.hpp>
 #include <string>
 #include <vector>
@@ -28,6 +29,10 @@ struct Keyframe {
     float time = 0.0f;
     CameraView view;
 };
+
+// The most keyframes a camera path may have, wherever it comes from (a scene, an IFS file, a
+// camera path file): a path of more is refused before its keyframes are read.
+inline constexpr std::size_t kMaxPathKeyframes = 10000;
 
 struct CameraPath {
     std::string name;

@@ -206,7 +206,8 @@ struct RenderOptions {
     std::string effect_changes;  // "+shadows,-ambient_occlusion": over the scene's own effects
     ModeOptions mode;
     std::optional<double> time_limit;  // seconds: stop adding samples after this long
-    std::string aovs;                  // "albedo,normal,depth,alpha": EXR layers beside the image
+    bool no_cost_limit = false;  // render even what the estimate says takes hours (render_cost)
+    std::string aovs;            // "albedo,normal,depth,alpha": EXR layers beside the image
     bool alpha = false;  // coverage as alpha: RGBA PNG (straight), EXR A (premultiplied colour)
     bool dev = false;    // read the scene's .cl file from disk, not the plugin's embedded copy
     std::optional<int> tile_size;  // render in tiles of about this side (also implied by size)
@@ -240,6 +241,12 @@ struct StillJob {
     Aovs aovs;
 };
 StillJob still_job(const Scene& scene, const FrameRequest& request, const RenderOptions& options);
+// Refuses (UsageError, one line: the estimate, what is costly, what to change and the override)
+// `frames` frames of `job` whose estimated time on `device` (shared by `devices` of them) is over
+// the limit, or an IFS scene whose rays would stop unfinished (render/render_cost.hpp), unless
+// --no-cost-limit. A render under --time-limit is bounded by it and checked for the second only.
+void check_render_cost(const Scene& scene, const StillJob& job, const RenderOptions& options,
+                       const DeviceInfo& device, double frames = 1.0, double devices = 1.0);
 // A camera path given by name (one of the scene's) or as a JSON file the viewer saved
 // (UsageError when there is no such path or the file cannot be read).
 CameraPath find_camera_path(const Scene& scene, const std::string& argument);

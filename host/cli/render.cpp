@@ -7,6 +7,7 @@
 #include <algorithm>
 #include <cctype>
 #include <chrono>
+#include <cmath>
 #include <filesystem>
 #include <optional>
 #include <string>
@@ -25,6 +26,7 @@
 #include "output/still_image.hpp"
 #include "output/tiled/streaming_image.hpp"
 #include "output/tiled/tiled_still.hpp"
+#include "render/render_cost.hpp"
 #include "render/renderer.hpp"
 #include "render/sample_budget.hpp"
 #include "scene/ifs/ifs.hpp"
@@ -231,6 +233,17 @@ StillJob still_job(const Scene& scene, const FrameRequest& request, const Render
         }
     }
     return StillJob{settings, reported, aovs};
+}
+
+void check_render_cost(const Scene& scene, const StillJob& job, const RenderOptions& options,
+                       const DeviceInfo& device, double frames, double devices) {
+    if (options.no_cost_limit) return;
+    const RenderCost cost = estimate_render_cost(scene, job.request, job.settings.mode);
+    const double limit = options.time_limit ? INFINITY : kCostLimitSeconds;
+    const std::string refusal =
+        cost_refusal(cost, frames, estimated_pace(device) * std::max(devices, 1.0), limit,
+                     "pass --no-cost-limit to render it anyway");
+    if (!refusal.empty()) throw UsageError(refusal);
 }
 
 namespace {
@@ -505,6 +518,10 @@ void add_frame_options(CLI::App* command, RenderOptions& options, int max_side) 
                       "(as `fgr view --dev`): try an edit without rebuilding the plugin");
     add_device_options(command, options.device, options.packet_width);
     add_projection_options(command, options.projection);
+    command->add_flag("--no-cost-limit", options.no_cost_limit,
+                      "render even when the estimate says it takes over an hour, or that an IFS "
+                      "scene's rays would stop unfinished (refused otherwise, saying what to "
+                      "change)");
 }
 
 void add_render_command(CLI::App& app, RenderOptions& options) {
@@ -580,6 +597,10 @@ int command_render(const RenderOptions& typed_options) {
     const ViewFile rendered_view = view_of_render(scene, request, options);
     options.embedded_view = view_file_text(rendered_view);
     const ComputeDevice device = device_opening.take();
+    if (!part_render_wanted(options)) {  // a part checks its own rows (render_part_file)
+        check_render_cost(scene, still_job(scene, request, options), options, device.info, 1.0,
+                          static_cast<double>(Cluster::current().size()));
+    }
     ProgramCache cache(ProgramCache::default_directory());
     if (part_render_wanted(options)) {
         if (!Cluster::current().alone()) {

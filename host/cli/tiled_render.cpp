@@ -217,8 +217,6 @@ void check_part_options(const RenderOptions& options) {
 int render_part_file(const Scene& scene, const FrameRequest& request, const ComputeDevice& device,
                      ProgramCache& cache, const RenderOptions& options) {
     const StillJob job = still_job(scene, request, options);
-    PrecisionRenderers renderers(device, cache, scene, still_switches(device, job.settings));
-    Renderer& renderer = choose_still_renderer(renderers, scene, job.request, device, job.settings);
     FrameRequest part = job.request;
     if (options.tile) {
         const auto [index, count] = part_tile(options);
@@ -228,6 +226,10 @@ int render_part_file(const Scene& scene, const FrameRequest& request, const Comp
             throw UsageError(error.what());
         }
     }
+    // A part's own rows are what this process renders.
+    check_render_cost(scene, StillJob{job.settings, part, job.aovs}, options, device.info);
+    PrecisionRenderers renderers(device, cache, scene, still_switches(device, job.settings));
+    Renderer& renderer = choose_still_renderer(renderers, scene, job.request, device, job.settings);
 
     const InterruptScope interrupt_scope;
     ProgressLine progress("launches");

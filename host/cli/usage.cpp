@@ -86,6 +86,7 @@ std::string heading_of(const std::string& command, const std::string& name) {
         {"--spp", "Render mode and quality"},
         {"--samples", "Render mode and quality"},
         {"--time-limit", "Render mode and quality"},
+        {"--no-cost-limit", "Render mode and quality"},
         {"--prepass", "Render mode and quality"},
         {"--precision", "Render mode and quality"},
         {"--target-ms", "Render mode and quality"},

@@ -227,19 +227,24 @@ int command_video(const VideoOptions& typed_options) {
     VideoFrames frames;
     try {
         frames.timing = video_timing(path, options.fps, options.start, options.duration);
-        frames.views = frame_views(path, frames.timing);
+        check_frame_views(path, frames.timing);
+        frames.view = frame_views(path, frames.timing);
     } catch (const std::invalid_argument& error) {
         throw UsageError(error.what());
     }
     const VideoTiming& timing = frames.timing;
-    std::tie(frames.first, frames.last) = frames_to_render(options, timing.frame_count());
+    // video_timing bounds the count by kMaxVideoFrames, well inside an int.
+    const int frame_count = static_cast<int>(timing.frame_count());
+    std::tie(frames.first, frames.last) = frames_to_render(options, frame_count);
     const StillJob job = still_job(scene, scene_request(scene, frame_options), frame_options);
     const ComputeDevice device = open_requested_device(frame_options.device);
+    check_render_cost(scene, job, frame_options, device.info, double(frames.count()),
+                      static_cast<double>(Cluster::current().size()));
     ProgramCache cache(ProgramCache::default_directory());
     VideoFrameRenderer renderer(scene, device, cache, job.settings);
     // From every view of the video, so a frame range renders its frames as the whole video does.
     const bool in_double =
-        renderer.choose_precision(frames.views, job.request.width, job.request.params);
+        renderer.choose_precision(frame_count, frames.view, job.request.width, job.request.params);
 
     VideoOutput output;
     output.file = options.output;
@@ -254,7 +259,7 @@ int command_video(const VideoOptions& typed_options) {
     ViewFile frame_view = view_of_render(scene, job.request, frame_options);
     frame_view.precision = in_double ? Precision::Double : Precision::Float;
     output.frame_view = [&frames, frame_view](int index) mutable {
-        frame_view.camera = frames.views[static_cast<std::size_t>(index)];
+        frame_view.camera = frames.view(index);
         return view_file_text(frame_view);
     };
     output.encoding.embedded_view =
@@ -269,13 +274,13 @@ int command_video(const VideoOptions& typed_options) {
     VideoHooks hooks;
     hooks.interrupted = interrupted;
     hooks.started = [&](const std::string& encoder) {
-        spdlog::info("{} frames at {:g} fps: path time {:g} to {:g} s, {}{}{}", frames.views.size(),
+        spdlog::info("{} frames at {:g} fps: path time {:g} to {:g} s, {}{}{}", frame_count,
                      timing.fps, timing.start, timing.frame_time(timing.frame_count() - 1),
                      in_double ? "double" : "float", encoder.empty() ? "" : ", encoding " + encoder,
                      cluster.alone() ? "" : fmt::format(", over {} MPI ranks", cluster.size()));
         if (options.frame_range) {
             spdlog::info("rendering frames {} to {} ({} of {})", frames.first, frames.last,
-                         frames.count(), frames.views.size());
+                         frames.count(), frame_count);
         }
         progress.emplace("frames");
         started = std::chrono::steady_clock::now();
@@ -303,9 +308,8 @@ int command_video(const VideoOptions& typed_options) {
     }
     if (!result.wrote) return 0;
     if (!options.output.empty()) {
-        fmt::print("wrote {} ({} frames, {}x{}, {:g} fps, {})\n", options.output,
-                   frames.views.size(), job.request.width, job.request.height, timing.fps,
-                   result.encoder);
+        fmt::print("wrote {} ({} frames, {}x{}, {:g} fps, {})\n", options.output, frame_count,
+                   job.request.width, job.request.height, timing.fps, result.encoder);
     }
     if (!options.frames_directory.empty()) {
         fmt::print("wrote {} frames ({} to {}) to {}\n", frames.count(), frames.first, frames.last,

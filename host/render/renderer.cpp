@@ -23,6 +23,7 @@
 #include "render/camera_frame.hpp"
 #include "render/modes/mode_kernel.hpp"
 #include "render/prepass/cone_prepass.hpp"
+#include "render/render_cost.hpp"
 #include "render/sample_budget.hpp"
 #include "scene/parameters.hpp"
 #include "util/parallel_bands.hpp"
@@ -169,10 +170,17 @@ int band_tiles(int tiles, int group, int bands) {
 }
 
 // The bands each sample's launch is split into: when a long frame reports its progress, enough for
-// about kProgressLaunches in all, at most kCancelBands; otherwise one.
-int progress_bands(const FrameRequest& request, const PixelRegion& region) {
-    const long pixel_samples = long(region.width) * region.height * request.samples;
-    if (!request.on_progress || pixel_samples < kBandedPixelSamples) return 1;
+// about kProgressLaunches in all, at most kCancelBands; otherwise one. A frame is long by its
+// estimated cost (render/render_cost.hpp), as many steps as kBandedPixelSamples plain samples or
+// more, so that a costly frame of few pixels (an IFS scene whose rays open many nodes) reports its
+// progress too.
+int progress_bands(const FrameRequest& request, const PixelRegion& region, const Scene& scene,
+                   RenderMode mode) {
+    if (!request.on_progress) return 1;
+    const double pixel_samples = double(region.width) * region.height * request.samples;
+    const double weight = std::max(
+        1.0, estimate_render_cost(scene, request, mode).steps_per_sample / kPlainSampleSteps);
+    if (pixel_samples * weight < double(kBandedPixelSamples)) return 1;
     return std::clamp((kProgressLaunches + request.samples - 1) / request.samples, 1, kCancelBands);
 }
 
@@ -371,7 +379,7 @@ Frame Renderer::render(const FrameRequest& request) {
         }
     }
     int done = 0;
-    const int bands = progress_bands(request, region);
+    const int bands = progress_bands(request, region, scene_, switches_.mode);
     // The launches in all, as launch_tiles makes them (a cancellable frame's bands included).
     const int band = band_tiles(tiles, group, launch_bands(request.cancel, bands));
     const long launches = static_cast<long>(request.samples) * ((tiles + band - 1) / band);

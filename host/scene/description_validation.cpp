@@ -22,6 +22,7 @@
 #include "scene/effects.hpp"
 #include "scene/environment_spec.hpp"
 #include "scene/ifs/ifs.hpp"
+#include "scene/ifs/ifs_cost.hpp"
 #include "scene/kernel_api.hpp"
 #include "scene/render_mode.hpp"
 #include "util/strings.hpp"
@@ -715,6 +716,7 @@ Scene copy_ifs_checked(const fgr_scene_desc& desc, Scene named) {
     ifs.cameras = copy_cameras(desc);
     ifs.camera_paths = copy_camera_paths(desc);
     ifs.lights = copy_lights(desc);
+    settle_ifs_default_depth(ifs);
     const uint64_t effects = copy_effects(desc.effects);
     if (const uint64_t unsupported = effects & ~kIfsEffects) {
         reject(

@@ -8,6 +8,8 @@
 #include <cstdint>
 #include <string_view>
 
+#include "camera/view.hpp"
+
 namespace fgr {
 
 namespace scene_limits {
@@ -23,7 +25,7 @@ inline constexpr std::size_t kMaxSourceBytes = std::size_t{4} << 20;
 inline constexpr std::uint32_t kMaxCameras = 256;
 inline constexpr std::uint32_t kMaxCameraPaths = 256;
 inline constexpr std::uint32_t kMinKeyframes = 2;
-inline constexpr std::uint32_t kMaxKeyframes = 10000;
+inline constexpr std::uint32_t kMaxKeyframes = kMaxPathKeyframes;
 inline constexpr std::uint32_t kMaxLights = 16;
 inline constexpr float kMaxAngularRadiusDegrees = 45.0f;
 

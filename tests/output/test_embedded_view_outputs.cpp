@@ -141,11 +141,11 @@ VideoFrames three_frames() {
     VideoFrames frames;
     frames.timing.fps = 2.0;
     frames.timing.duration = 3.0;
-    for (int i = 0; i < 6; ++i) {
+    frames.view = [](std::int64_t i) {
         CameraView view;
         view.position = {double(i), -3.0, 0.0};
-        frames.views.push_back(view);
-    }
+        return view;
+    };
     frames.first = 1;
     frames.last = 3;
     return frames;

@@ -86,6 +86,27 @@ TEST(VideoTiming, RefusesFpsDurationAndStartOffThePath) {
     EXPECT_NO_THROW(video_timing(path, 30.0, {}, 10.0));
 }
 
+// A camera path long enough for more frames than an int holds (143165577 s at 30 fps is
+// 2^32 + 14 frames, which once wrapped to a short video) or than memory holds views for (5e7 s at
+// 30 fps): refused with the count and the limit, before any frame's view is computed.
+TEST(VideoTiming, FrameCountsPastTheLimitAreRefusedWithTheCountAndTheLimit) {
+    for (const auto& [end, frames] :
+         {std::pair{143165577.0f, "4294967"}, std::pair{5e7f, "1500000000 frames"}}) {
+        try {
+            video_timing(path_from(0.0f, end), 30.0, {}, {});
+            FAIL() << "a path of " << end << " s was accepted";
+        } catch (const std::invalid_argument& error) {
+            const std::string message = error.what();
+            EXPECT_NE(message.find(frames), std::string::npos) << message;
+            EXPECT_NE(message.find("over the limit of 1000000"), std::string::npos) << message;
+        }
+    }
+    EXPECT_EQ(video_timing(path_from(0.0f, 100000.0f), 10.0, {}, {}).frame_count(),
+              kMaxVideoFrames);
+    EXPECT_THROW(video_timing(path_from(0.0f, 100000.0f), 10.0001, {}, {}), std::invalid_argument);
+    EXPECT_THROW(video_timing(path_from(0.0f, 10.0f), 1e300, {}, {}), std::invalid_argument);
+}
+
 // --- The encoder's file -------------------------------------------------------------------------
 
 Image8 grey_image(int width, int height, uint8_t level) {
@@ -283,6 +304,56 @@ TEST_F(VideoCommandTest, ExrFramesCarryTheAovLayers) {
         channels.push_back(channel.name());
     }
     EXPECT_EQ(channels, (std::vector<std::string>{"A", "B", "G", "R", "depth.Z"}));
+}
+
+// A camera path file of `keyframes` keyframes, one second apart (the last at `last_time` when
+// given), looking at the origin from -3 y.
+void write_path_file(const fs::path& file, long keyframes, double last_time = -1.0) {
+    std::string text = R"({"format": "fgr-camera-path", "version": 1, "keyframes": [)";
+    text.reserve(static_cast<size_t>(keyframes) * 60 + 100);
+    for (long i = 0; i < keyframes; ++i) {
+        const bool last = i + 1 == keyframes && last_time >= 0.0;
+        text += i == 0 ? R"({"time": )" : R"(,{"time": )";
+        text += last ? fmt::format("{}", last_time) : std::to_string(i);
+        text += R"(, "position": [0, -3, 0], "target": [0, 0, 0]})";
+    }
+    text += "]}\n";
+    test::write_text(file, text);
+}
+
+// `fgr video mandelbulb --camera-path FILE`: one error line mentioning `mention`, nothing written
+// beside the path file.
+void expect_path_refused(const fs::path& dir, const fs::path& path_file,
+                         const std::string& mention) {
+    const std::vector<std::string> args{
+        "video",    "mandelbulb", "--camera-path", path_file.string(),
+        "-o",       "v.mp4",      "--width",       "64",
+        "--height", "48"};
+    const RunResult result = run_fgr(args, dir);
+    ASSERT_TRUE(result.exited) << result;
+    EXPECT_NE(result.exit_code, 0) << result;
+    std::string err = result.err;
+    if (!err.empty() && err.back() == '\n') err.pop_back();
+    EXPECT_EQ(err.rfind("fgr: error: ", 0), 0u) << result;
+    EXPECT_EQ(err.find('\n'), std::string::npos) << "more than one line: " << result;
+    EXPECT_NE(err.find(mention), std::string::npos)
+        << "should mention " << mention << ": " << result;
+    EXPECT_EQ(directory_listing(dir), std::vector<std::string>{path_file.filename().string()});
+}
+
+// Keyframes at 0 and 143165577 s made 224 frames with exit 0 (the count wrapped), at 0 and 5e7 s
+// 1.5e9 views before the first frame; a file of 10^6 keyframes ran past a minute at 2.7 GB.
+TEST(VideoLimits, LongPathsAndHugeKeyframeCountsAreRefusedInOneLine) {
+    const test::TempDir dir("fgr_video_limits");
+    const fs::path path_file = dir.path() / "p.json";
+    write_path_file(path_file, 2, 143165577.0);
+    expect_path_refused(dir.path(), path_file, "over the limit of 1000000");
+    write_path_file(path_file, 2, 5e7);
+    expect_path_refused(dir.path(), path_file, "1500000000 frames");
+    write_path_file(path_file, 10001);
+    expect_path_refused(dir.path(), path_file, "10001 keyframes: a camera path has at most 10000");
+    write_path_file(path_file, 1000000);
+    expect_path_refused(dir.path(), path_file, "file too large");
 }
 
 // --- Bad input ----------------------------------------------------------------------------------

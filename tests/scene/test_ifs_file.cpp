@@ -577,8 +577,10 @@ TEST(IfsFile, DefaultsFrameTheBoundingSphere) {
     ASSERT_EQ(ifs.lights.size(), 1u);
     EXPECT_EQ(ifs.lights[0].type, LightType::Directional);
     EXPECT_EQ(ifs.description, "");
-    EXPECT_EQ(ifs.default_depth, 6);
-    EXPECT_EQ(ifs.max_depth, 12);
+    // No depth given: the footprint rule decides, up to the cap (the tetrahedron's estimate at
+    // its default view is far within the default's budget).
+    EXPECT_EQ(ifs.default_depth, kIfsMaxDepth);
+    EXPECT_EQ(ifs.max_depth, kIfsMaxDepth);
 }
 
 // A file may name the path mode's environment, which its scene keeps; without one it has none.

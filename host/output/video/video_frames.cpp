@@ -23,12 +23,14 @@ Renderer& VideoFrameRenderer::build(bool double_precision) {
     return build_still_renderer(renderers_, scene_, device_, settings_, double_precision);
 }
 
-bool VideoFrameRenderer::choose_precision(const std::vector<CameraView>& views, int width,
-                                          const std::vector<float>& params) {
+bool VideoFrameRenderer::choose_precision(std::int64_t frames,
+                                          const std::function<CameraView(std::int64_t)>& view_of,
+                                          int width, const std::vector<float>& params) {
     PrecisionChooser chooser(device_.info,
                              [](const std::string& warning) { spdlog::warn("{}", warning); });
     in_double_ = false;
-    for (const CameraView& view : views) {
+    for (std::int64_t i = 0; i < frames; ++i) {
+        const CameraView view = view_of(i);
         const auto distance = [&] { return surface_distance(build(false), view, params); };
         if (chooser.in_double(settings_.precision, view, width, distance)) {
             in_double_ = true;

@@ -20,17 +20,22 @@ bool asked_to_stop(const VideoHooks& hooks) { return hooks.interrupted && hooks.
 
 }  // namespace
 
-std::vector<CameraView> frame_views(const CameraPath& path, const VideoTiming& timing) {
-    std::vector<CameraView> views;
-    for (int i = 0; i < timing.frame_count(); ++i) {
-        const float time = timing.frame_time(i);
-        views.push_back(evaluate_camera_path(path, time));
-        if (const std::string problem = computed_view_problem(views.back()); !problem.empty()) {
-            throw std::invalid_argument(
-                fmt::format("camera path '{}' at time {}: {}", path.name, time, problem));
-        }
+CameraView frame_view(const CameraPath& path, const VideoTiming& timing, std::int64_t index) {
+    const float time = timing.frame_time(index);
+    CameraView view = evaluate_camera_path(path, time);
+    if (const std::string problem = computed_view_problem(view); !problem.empty()) {
+        throw std::invalid_argument(
+            fmt::format("camera path '{}' at time {}: {}", path.name, time, problem));
     }
-    return views;
+    return view;
+}
+
+void check_frame_views(const CameraPath& path, const VideoTiming& timing) {
+    for (std::int64_t i = 0; i < timing.frame_count(); ++i) frame_view(path, timing, i);
+}
+
+FrameViews frame_views(const CameraPath& path, const VideoTiming& timing) {
+    return [path, timing](std::int64_t index) { return frame_view(path, timing, index); };
 }
 
 std::filesystem::path video_frame_file(const VideoOutput& output, int index) {
@@ -46,7 +51,7 @@ VideoResult render_video(const VideoFrames& frames, FrameRequest request,
     // and the planes too when frame files are written (an EXR's layers, a 16-bit PNG's colour).
     const FrameWork work = [&](int64_t index) {
         FrameRequest frame_request = request;
-        frame_request.view = frames.views[size_t(index)];
+        frame_request.view = frames.view(index);
         Frame frame = render(frame_request);
         if (asked_to_stop(hooks)) throw std::runtime_error(kInterrupted);
         if (frame_files) return frame;

@@ -6,6 +6,7 @@
 // `fgr render --camera-path P --time t` give the same pixels. Where the frames are rendered is the
 // caller's FrameDispatch: this process, or the ranks of an MPI job.
 
+#include <cstdint>
 #include <filesystem>
 #include <functional>
 #include <string>
@@ -19,20 +20,30 @@
 
 namespace fgr {
 
-// The view of each frame along `path`, each one checked as a still's view is: throws
-// std::invalid_argument "camera path 'P' at time t: <problem>" for the first that cannot be
-// rendered (a path whose camera passes through its target).
-std::vector<CameraView> frame_views(const CameraPath& path, const VideoTiming& timing);
+// The view of frame `index` along `path`, checked as a still's view is: throws
+// std::invalid_argument "camera path 'P' at time t: <problem>" when it cannot be rendered (a path
+// whose camera passes through its target).
+CameraView frame_view(const CameraPath& path, const VideoTiming& timing, std::int64_t index);
+
+// Checks every frame's view (frame_view) one at a time, keeping none: a path that cannot be
+// rendered somewhere fails before the first frame. Throws as frame_view.
+void check_frame_views(const CameraPath& path, const VideoTiming& timing);
+
+// A frame's view, computed when the frame is rendered: a video never holds all its views at once.
+using FrameViews = std::function<CameraView(std::int64_t index)>;
 
 // The frames of a video, and which of them to render.
 struct VideoFrames {
     VideoTiming timing;
-    std::vector<CameraView> views;  // every frame's, so a range renders as the whole video does
-    int first = 0;                  // the frames to render: first .. last, inclusive
+    FrameViews view;  // every frame's, so a range renders as the whole video does
+    int first = 0;    // the frames to render: first .. last, inclusive
     int last = 0;
 
     long count() const { return long(last) - long(first) + 1; }
 };
+
+// The frames of `path` at `timing`, their views frame_view's.
+FrameViews frame_views(const CameraPath& path, const VideoTiming& timing);
 
 // What a video writes: a video file, frame files, or both.
 struct VideoOutput {

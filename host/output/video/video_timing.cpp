@@ -5,15 +5,27 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdint>
+#include <limits>
 #include <stdexcept>
 
 namespace fgr {
 
-int VideoTiming::frame_count() const {
-    return std::max(1, static_cast<int>(std::lround(duration * fps)));
+namespace {
+
+// duration x fps rounded, at least one, before any conversion to an integer: a product past the
+// 64-bit range (or not finite) is reported as over the limit rather than wrapped.
+double frames_in(double duration, double fps) { return std::max(1.0, std::round(duration * fps)); }
+
+}  // namespace
+
+std::int64_t VideoTiming::frame_count() const {
+    const double frames = frames_in(duration, fps);
+    return frames < 9e18 ? static_cast<std::int64_t>(frames)
+                         : std::numeric_limits<std::int64_t>::max();
 }
 
-float VideoTiming::frame_time(int index) const {
+float VideoTiming::frame_time(std::int64_t index) const {
     return static_cast<float>(start + static_cast<double>(index) / fps);
 }
 
@@ -34,6 +46,13 @@ VideoTiming video_timing(const CameraPath& path, double fps, std::optional<doubl
     if (!(timing.duration > 0.0) || !std::isfinite(timing.duration)) {
         throw std::invalid_argument(fmt::format(
             "--duration must be a positive number of seconds (got {})", timing.duration));
+    }
+    if (const double frames = frames_in(timing.duration, fps);
+        !(frames <= static_cast<double>(kMaxVideoFrames))) {
+        throw std::invalid_argument(fmt::format(
+            "{:g} s of camera path '{}' at {:g} fps is {:.0f} frames, over the limit of {} "
+            "frames a video (render it in parts with --start and --duration, or at a lower --fps)",
+            timing.duration, path.name, fps, frames, kMaxVideoFrames));
     }
     // The last frame's time must lie on the path, as `fgr render --time` would take it.
     const float last_frame = timing.frame_time(timing.frame_count() - 1);

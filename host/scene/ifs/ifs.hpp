@@ -71,6 +71,10 @@ struct IfsScene {
     std::vector<IfsMap> maps;
     int default_depth = 6;
     int max_depth = 12;
+    // The file or plugin gave no default depth (set_ifs_depths): the default is the maximum,
+    // lowered where the maps make that costly (settle_ifs_default_depth), and the footprint rule
+    // stops rays sooner.
+    bool default_depth_from_cost = false;
     std::vector<NamedCamera> cameras;  // [0] is the default view
     std::vector<CameraPath> camera_paths;
     std::vector<Light> lights;
@@ -106,8 +110,10 @@ IfsScene read_ifs_file(const std::filesystem::path& file);
 void validate_ifs_maps(IfsScene& scene, std::string_view map_word = "map");
 
 // Sets the depth slider's default and maximum from what a file or plugin gave, either, both or
-// neither: neither gives 6 and 12, a default d alone max(12, d) as the maximum, a maximum m alone
-// min(6, m) as the default. Range checks are validate_ifs_maps's.
+// neither: the maximum defaults to kIfsMaxDepth, the default to the maximum, which
+// settle_ifs_default_depth then lowers where the maps would make it costly; the pixel footprint
+// stops each ray where detail falls below a pixel, so only a map that shrinks slowly goes deep.
+// Range checks are validate_ifs_maps's.
 void set_ifs_depths(IfsScene& scene, std::optional<int> default_depth,
                     std::optional<int> max_depth);
 
@@ -145,6 +151,7 @@ struct IfsTraceRules {
     double travelled = 0.0;
     double reach = 1e30;
     int normal_levels = kIfsNormalLevels;
+    long max_nodes = 0;  // nodes taken out before the ray gives up, as the kernel's; 0: no limit
 };
 
 IfsRayHit trace_ifs_ray(const IfsScene& ifs, const glm::dvec3& origin, const glm::dvec3& dir,

@@ -24,6 +24,7 @@
 #include "camera/view_validation.hpp"
 #include "scene/description_validation.hpp"
 #include "scene/ifs/ifs.hpp"
+#include "scene/ifs/ifs_cost.hpp"
 #include "scene/scene_json.hpp"
 #include "util/json_fields.hpp"
 #include "util/strings.hpp"
@@ -52,9 +53,6 @@ constexpr double kMaxMapNumber = 1e6;
 constexpr double kSingularRatio = 1e-9;
 // How far from the origin the attractor's bounding sphere may reach.
 constexpr double kMaxExtent = 1e5;
-// Defaults for files that leave the depth out.
-constexpr int kDefaultDepth = 6;
-constexpr int kDefaultMaxDepth = 12;
 
 // Validation stops at the first problem with a one-line reason; parse_ifs_json puts the file's
 // name in front. json_fields throws std::runtime_error the same way.
@@ -366,6 +364,7 @@ IfsScene parse_ifs_document(const std::string& text) {
     scene.lights = scene_json::lights_from(document);
     if (scene.lights.empty()) scene.lights.push_back(scene_json::default_light());
     scene.environment = scene_json::environment_from(document);
+    settle_ifs_default_depth(scene);
     return scene;
 }
 
@@ -442,10 +441,9 @@ glm::dvec3 minimise_radius(const std::vector<Contraction>& maps, glm::dvec3 star
 
 void set_ifs_depths(IfsScene& scene, std::optional<int> default_depth,
                     std::optional<int> max_depth) {
-    scene.default_depth = default_depth.value_or(kDefaultDepth);
-    scene.max_depth = max_depth.value_or(kDefaultMaxDepth);
-    if (default_depth && !max_depth) scene.max_depth = std::max(kDefaultMaxDepth, *default_depth);
-    if (max_depth && !default_depth) scene.default_depth = std::min(kDefaultDepth, *max_depth);
+    scene.max_depth = max_depth.value_or(kIfsMaxDepth);
+    scene.default_depth = default_depth.value_or(scene.max_depth);
+    scene.default_depth_from_cost = !default_depth.has_value();
 }
 
 void validate_ifs_maps(IfsScene& scene, std::string_view map_word) {

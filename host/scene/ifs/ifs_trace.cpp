@@ -205,7 +205,7 @@ IfsRayHit trace_ifs_ray(const IfsScene& ifs, const glm::dvec3& origin, const glm
     std::priority_queue<Node, std::vector<Node>, LaterEntry> heap;
     heap.push(root);
     result.heap_peak = 1;
-    while (!heap.empty()) {
+    while (!heap.empty() && (rules.max_nodes <= 0 || result.visited < rules.max_nodes)) {
         Node node = heap.top();
         heap.pop();
         ++result.visited;

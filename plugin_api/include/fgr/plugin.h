@@ -291,8 +291,8 @@ typedef struct fgr_scene_desc {
     uint32_t ifs_map_count;
     /* The depth slider's default and maximum: levels of maps applied at most before a node's
      * bounding ellipsoid counts as the surface. Each in [0, 24], default <= max; 0 means "not
-     * given", as in an IFS file that leaves it out: neither gives 6 and 12, a default d alone
-     * gives max(12, d) as the maximum, a maximum m alone gives min(6, m) as the default. */
+     * given", as in an IFS file that leaves it out: the maximum is then 24, the default the
+     * maximum, lowered where the maps would make it costly (docs/sdk/ifs.md). */
     uint32_t ifs_default_depth;
     uint32_t ifs_max_depth;
 

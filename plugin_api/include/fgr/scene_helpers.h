@@ -205,7 +205,7 @@ constexpr uint64_t fgr_source_length(const char (&)[N]) {
     }
 
 /* A whole IFS scene description (ABI 1.3): no source and no parameters of its own, the maps of a
- * static array, the depth slider's default and maximum (0: fgr's defaults, 6 and 12). */
+ * static array, the depth slider's default and maximum (0: fgr's defaults, as in an IFS file). */
 #define FGR_IFS_SCENE(id, name, description, maps, default_depth, max_depth, cameras, paths,       \
                       lights, effects)                                                             \
     {                                                                                              \
