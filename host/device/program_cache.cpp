@@ -12,6 +12,7 @@
 #include <string_view>
 #include <vector>
 
+#include "device/program_entry.hpp"
 #include "util/content_hash.hpp"
 #include "util/files.hpp"
 #include "util/timing.hpp"
@@ -109,7 +110,7 @@ cl::Program ProgramCache::build(const ComputeDevice& device, const AssembledProg
     const std::filesystem::path file =
         directory_.empty() ? std::filesystem::path() : directory_ / (key + ".bin");
     cl::Program built;
-    if (!file.empty()) built = load_binary(device, program, file);
+    if (!file.empty()) built = load_binary(device, program, key, file);
     if (built()) {
         result.origin = BuildReport::Origin::Disk;
         touch_cache_entry(file);  // recently used: the last to be evicted
@@ -129,7 +130,7 @@ cl::Program ProgramCache::build(const ComputeDevice& device, const AssembledProg
         if (const std::string log = build_log(built, device.device); log.size() > 1) {
             spdlog::debug("OpenCL build log:\n{}", log);
         }
-        if (!file.empty()) store_binary(built, file);
+        if (!file.empty()) store_binary(built, key, file);
     }
     result.build_ms = elapsed_ms(start);
     spdlog::debug("program {} ready in {:.0f} ms ({})", key, result.build_ms,
@@ -139,23 +140,48 @@ cl::Program ProgramCache::build(const ComputeDevice& device, const AssembledProg
 }
 
 cl::Program ProgramCache::load_binary(const ComputeDevice& device, const AssembledProgram& program,
-                                      const std::filesystem::path& file) {
-    std::vector<unsigned char> bytes;
-    if (!read_file_bytes(file, bytes).empty() || bytes.empty()) return {};
-    try {
-        cl::Program loaded(device.context, {device.device}, cl::Program::Binaries{bytes});
-        loaded.build({device.device}, full_options(program).c_str());
-        return loaded;
-    } catch (const cl::Error& error) {
-        // A stale or damaged cache entry is not an error: drop it and compile afresh.
-        spdlog::debug("ignoring cached program {}: {}", file.string(), cl_error_name(error.err()));
-        std::error_code ignored;
-        std::filesystem::remove(file, ignored);
-        return {};
+                                      const std::string& key, const std::filesystem::path& file) {
+    namespace fs = std::filesystem;
+    std::error_code error;
+    const fs::file_status status = fs::status(file, error);
+    if (error || !fs::exists(status)) return {};  // no entry (or none that can be looked at)
+    std::string problem;
+    if (!fs::is_regular_file(status)) {
+        problem = "not a regular file";
+    } else {
+        std::string entry;
+        problem = read_file_bytes(file, entry, kMaxProgramEntryBytes);
+        if (!problem.empty() && !fs::exists(file, error)) return {};  // evicted meanwhile
+        if (problem.empty()) {
+            const ProgramEntryCheck check = check_program_entry(entry, key);
+            problem = check.problem;
+            if (problem.empty()) {
+                try {
+                    const std::vector<unsigned char> binary(check.binary.begin(),
+                                                            check.binary.end());
+                    cl::Program loaded(device.context, {device.device},
+                                       cl::Program::Binaries{binary});
+                    loaded.build({device.device}, full_options(program).c_str());
+                    return loaded;
+                } catch (const cl::Error& refused) {
+                    problem =
+                        fmt::format("the driver refused it: {}", cl_error_name(refused.err()));
+                }
+            }
+        }
     }
+    // The cache only saves time: a bad entry costs one compile, never the render.
+    const bool removed = fs::remove(file, error);
+    spdlog::warn(
+        "kernel cache entry '{}' is unusable ({}): {}compiling the program again", file.string(),
+        problem,
+        removed ? "removed it, "
+                : fmt::format("cannot remove it ({}), ", error ? error.message() : "it is gone"));
+    return {};
 }
 
-void ProgramCache::store_binary(const cl::Program& program, const std::filesystem::path& file) {
+void ProgramCache::store_binary(const cl::Program& program, const std::string& key,
+                                const std::filesystem::path& file) {
     std::string failure;
     try {
         const auto binaries = program.getInfo<CL_PROGRAM_BINARIES>();
@@ -165,7 +191,9 @@ void ProgramCache::store_binary(const cl::Program& program, const std::filesyste
         }
         const std::vector<unsigned char>& binary = binaries.front();
         failure = store_cache_entry(
-            file, std::string_view(reinterpret_cast<const char*>(binary.data()), binary.size()),
+            file,
+            program_entry(
+                std::string_view(reinterpret_cast<const char*>(binary.data()), binary.size()), key),
             size_limit_);
     } catch (const std::exception& error) {
         failure = error.what();

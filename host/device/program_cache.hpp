@@ -68,9 +68,13 @@ public:
     std::uintmax_t size_limit() const { return size_limit_; }
 
 private:
+    // The entry `file` of the program `key` names, built; none when there is no entry, or when it
+    // is unusable (not a regular file, damaged, refused by the driver): then it is removed with a
+    // warning, and the caller compiles the program again.
     cl::Program load_binary(const ComputeDevice& device, const AssembledProgram& program,
-                            const std::filesystem::path& file);
-    void store_binary(const cl::Program& program, const std::filesystem::path& file);
+                            const std::string& key, const std::filesystem::path& file);
+    void store_binary(const cl::Program& program, const std::string& key,
+                      const std::filesystem::path& file);
 
     std::filesystem::path directory_;
     std::uintmax_t size_limit_;
