@@ -19,6 +19,7 @@
 #include "output/tiled/streaming_image.hpp"
 #include "output/video/video_encoder.hpp"
 #include "render/sample_budget.hpp"
+#include "util/files.hpp"
 #include "util/interruption.hpp"
 #include "view_file/view_file.hpp"
 
@@ -117,6 +118,9 @@ int merge_parts_into_image(const MergeOptions& options) {
 
 // --- Frames into a video -------------------------------------------------------------------------
 
+// A frame's PNG file at most: a 16384-pixel square frame of noise, compressed as badly as PNG can.
+constexpr std::uintmax_t kMaxFrameBytes = std::uintmax_t{1} << 30;
+
 // The directory's frame_NNNNN.png files by number; UsageError when there are none or one is
 // missing between frame 0 and the last.
 std::vector<fs::path> numbered_frames(const fs::path& directory) {
@@ -129,7 +133,14 @@ std::vector<fs::path> numbered_frames(const fs::path& directory) {
     for (const auto& entry : fs::directory_iterator(directory, error)) {
         std::smatch match;
         const std::string file = entry.path().filename().string();
-        if (std::regex_match(file, match, name)) found[std::stol(match[1])] = entry.path();
+        if (!std::regex_match(file, match, name)) continue;
+        // Named like a frame, so meant as one: refused here, before any frame is encoded.
+        if (const std::string problem = regular_file_problem(entry.path(), kMaxFrameBytes);
+            !problem.empty()) {
+            throw UsageError(
+                fmt::format("frame '{}' cannot be read: {}", entry.path().string(), problem));
+        }
+        found[std::stol(match[1])] = entry.path();
     }
     if (found.empty()) {
         throw UsageError(
@@ -152,6 +163,10 @@ std::vector<fs::path> numbered_frames(const fs::path& directory) {
 }
 
 Image8 read_frame(const fs::path& file) {
+    // Again as it is read: the directory may have changed since it was listed.
+    if (const std::string problem = regular_file_problem(file, kMaxFrameBytes); !problem.empty()) {
+        throw RuntimeFailure(fmt::format("frame '{}' cannot be read: {}", file.string(), problem));
+    }
     try {
         return read_png(file);
     } catch (const std::runtime_error& error) {

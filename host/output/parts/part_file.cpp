@@ -11,15 +11,26 @@
 #include <fmt/format.h>
 
 #include <algorithm>
+#include <cerrno>
 #include <chrono>
+#include <cstdint>
+#include <cstdio>
 #include <cstring>
+#include <limits>
 #include <nlohmann/json.hpp>
+#include <optional>
 #include <stdexcept>
+#include <string_view>
+#include <utility>
 
 #include "image/embedded_view.hpp"
 #include "output/parts/render_identity.hpp"
 #include "output/tiled/streaming_image.hpp"
-#include "util/json_fields.hpp"
+#include "render/sample_budget.hpp"
+#include "scene/render_mode.hpp"
+#include "scene/scene.hpp"
+#include "util/errors.hpp"
+#include "util/files.hpp"
 #include "util/lower_case.hpp"
 #include "util/timing.hpp"
 
@@ -97,6 +108,164 @@ float* put_pixel(const Frame& frame, size_t i, bool layers, float* out) {
         fmt::format("'{}' is not an fgr part ({}): parts are written by "
                     "fgr render --part or --tile",
                     path.string(), why));
+}
+
+// The keys of a part header (part_header), every one required.
+constexpr std::string_view kHeaderKeys[] = {"fgr_part", "seed",    "width",    "height",
+                                            "region",   "samples", "exposure", "tone_map",
+                                            "layers",   "identity"};
+// More than image_identity gives, few enough that comparing parts stays cheap.
+constexpr std::size_t kMaxIdentityFields = 64;
+constexpr std::size_t kMaxExcerpt = 40;
+
+// A value as a message may quote it: short, on one line.
+std::string excerpt(const nlohmann::ordered_json& value) {
+    if (value.is_object()) return "an object";
+    if (value.is_array()) return "an array";
+    std::string text = value.dump(-1, ' ', true, nlohmann::json::error_handler_t::replace);
+    if (text.size() > kMaxExcerpt) text = text.substr(0, kMaxExcerpt) + "...";
+    return text;
+}
+
+// A key or text in double quotes, escaped and bounded.
+std::string header_text(std::string_view text) {
+    return excerpt(nlohmann::ordered_json(std::string(text.substr(0, kMaxExcerpt + 1))));
+}
+
+// `value` when it is a whole number in [low, high].
+std::optional<long long> whole_in(const nlohmann::ordered_json& value, long long low,
+                                  long long high) {
+    if (value.is_number_unsigned()) {
+        const auto number = value.get<std::uint64_t>();
+        if (number > static_cast<std::uint64_t>(high)) return std::nullopt;
+        const auto fits = static_cast<long long>(number);
+        return fits >= low ? std::optional<long long>(fits) : std::nullopt;
+    }
+    if (!value.is_number_integer()) return std::nullopt;
+    const auto number = value.get<long long>();
+    return number >= low && number <= high ? std::optional<long long>(number) : std::nullopt;
+}
+
+// The exposure parameter's range, which every scene has (scene.cpp), so every part was rendered
+// within it.
+std::pair<float, float> exposure_range() {
+    static const std::pair<float, float> range = [] {
+        Scene scene;
+        add_builtin_params(scene);
+        const ParamInfo* exposure = scene.find_param("exposure");
+        if (exposure == nullptr) throw std::logic_error("no built-in exposure parameter");
+        return std::pair<float, float>{exposure->min_value, exposure->max_value};
+    }();
+    return range;
+}
+
+// The fields of a part's header, each checked as it is taken: a damaged or forged header is
+// refused naming the file and the field, before anything is sized from it.
+struct HeaderFields {
+    const nlohmann::ordered_json& json;
+    const fs::path& path;
+
+    // `field`: one or more quoted keys.
+    [[noreturn]] void bad(const std::string& field, const std::string& why) const {
+        throw std::runtime_error(fmt::format("'{}' is a damaged fgr part: its header's {} {}",
+                                             path.string(), field, why));
+    }
+    const nlohmann::ordered_json& at(const char* key) const {
+        const auto found = json.find(key);
+        if (found == json.end()) bad(header_text(key), "is missing");
+        return *found;
+    }
+    long long whole(const char* key, long long low, long long high) const {
+        const nlohmann::ordered_json& value = at(key);
+        const std::optional<long long> number = whole_in(value, low, high);
+        if (!number) {
+            bad(header_text(key),
+                fmt::format("is {}, not a whole number in [{}, {}]", excerpt(value), low, high));
+        }
+        return *number;
+    }
+    double number(const char* key, float low, float high) const {
+        const nlohmann::ordered_json& value = at(key);
+        if (!value.is_number() ||
+            !(value.get<double>() >= double{low} && value.get<double>() <= double{high})) {
+            bad(header_text(key),
+                fmt::format("is {}, not a number in [{}, {}]", excerpt(value), low, high));
+        }
+        return value.get<double>();
+    }
+};
+
+// What an OpenEXR header may hold in a part: fgr writes a few KB (its view at most
+// kMaxEmbeddedViewBytes).
+constexpr std::uint64_t kMaxPartHeaderBytes = std::uint64_t{4} << 20;
+constexpr std::size_t kMaxExrNameBytes = 255;  // an attribute's name or type (long names)
+
+// OpenEXR sizes each header attribute's buffer from the size the file states, before it reads
+// the value: a damaged 1 KB file can make it allocate gigabytes. Walks the header first (magic,
+// version, then name, type, size and value of each attribute), refusing a single-part file whose
+// attributes do not fit in it or in kMaxPartHeaderBytes. Returns "" or the reason.
+std::string exr_header_problem(const fs::path& path) {
+    const FilePointer file(std::fopen(path.c_str(), "rb"));
+    if (file == nullptr) return errno_message(errno);
+    std::error_code error;
+    const std::uintmax_t size = fs::file_size(path, error);
+    if (error) return error.message();
+    unsigned char start[8];
+    if (std::fread(start, 1, sizeof start, file.get()) != sizeof start ||
+        !(start[0] == 0x76 && start[1] == 0x2f && start[2] == 0x31 && start[3] == 0x01)) {
+        return "not an OpenEXR file";
+    }
+    if (start[5] & 0x18) return "a multi-part or deep OpenEXR file, not a part";
+    std::uint64_t at = sizeof start;
+    const auto text = [&](std::string& out) {
+        out.clear();
+        for (int c; (c = std::fgetc(file.get())) != 0;) {
+            if (c == EOF || out.size() == kMaxExrNameBytes) return false;
+            out += static_cast<char>(c);
+        }
+        at += out.size() + 1;
+        return true;
+    };
+    for (std::string name, type;;) {
+        if (!text(name)) return "its header is cut short or damaged";
+        if (name.empty()) return "";  // the end of the header
+        unsigned char bytes[4];
+        if (!text(type) || std::fread(bytes, 1, sizeof bytes, file.get()) != sizeof bytes) {
+            return "its header is cut short or damaged";
+        }
+        at += sizeof bytes;
+        const std::uint64_t value = std::uint64_t{bytes[0]} | std::uint64_t{bytes[1]} << 8 |
+                                    std::uint64_t{bytes[2]} << 16 | std::uint64_t{bytes[3]} << 24;
+        if (value > kMaxPartHeaderBytes || at + value > size || at + value > kMaxPartHeaderBytes) {
+            return fmt::format("its header attribute {} claims {} bytes, more than {}",
+                               header_text(name), value,
+                               at + value > size ? "the file holds" : "a part's header may hold");
+        }
+        if (std::fseek(file.get(), static_cast<long>(value), SEEK_CUR) != 0) {
+            return errno_message(errno);
+        }
+        at += value;
+    }
+}
+
+// The part's windows and channels, as its header says: the display window the whole image, the
+// data window its region, every channel of its planes there.
+void check_part_layout(const Imf::Header& header, const PartInfo& info) {
+    const Imath::Box2i data = header.dataWindow(), display = header.displayWindow();
+    const PixelRegion& r = info.region;
+    if (display.min != Imath::V2i(0, 0) ||
+        display.max != Imath::V2i(info.width - 1, info.height - 1) ||
+        data.min != Imath::V2i(r.x, r.y) ||
+        data.max != Imath::V2i(r.x + r.width - 1, r.y + r.height - 1)) {
+        not_a_part(info.path, "its windows do not match its fgr.part header");
+    }
+    for (const std::string& channel : part_channels(info.layers)) {
+        const Imf::Channel* found = header.channels().findChannel(channel);
+        if (found == nullptr) not_a_part(info.path, fmt::format("it has no {} channel", channel));
+        if (found->xSampling != 1 || found->ySampling != 1) {
+            not_a_part(info.path, fmt::format("its {} channel is subsampled", channel));
+        }
+    }
 }
 
 }  // namespace
@@ -211,7 +380,113 @@ PartResult render_part(Renderer& renderer, const FrameRequest& request,
     return result;
 }
 
+PartInfo parse_part_header(std::string_view text, const fs::path& path) {
+    nlohmann::ordered_json json;
+    try {
+        json = nlohmann::ordered_json::parse(text);
+    } catch (const nlohmann::json::exception& error) {
+        not_a_part(path, fmt::format("its fgr.part header is damaged: {}", error.what()));
+    }
+    if (!json.is_object()) not_a_part(path, "its fgr.part header is not a JSON object");
+    const HeaderFields fields{json, path};
+    if (fields.whole("fgr_part", 0, std::numeric_limits<int>::max()) != kPartVersion) {
+        not_a_part(path, "another version");
+    }
+    for (const auto& [key, value] : json.items()) {
+        if (std::find(std::begin(kHeaderKeys), std::end(kHeaderKeys), key) ==
+            std::end(kHeaderKeys)) {
+            fields.bad(header_text(key), "is not a part header's key");
+        }
+    }
+    PartInfo info;
+    info.path = path;
+    info.width = static_cast<int>(fields.whole("width", 1, kMaxPartSide));
+    info.height = static_cast<int>(fields.whole("height", 1, kMaxPartSide));
+    const nlohmann::ordered_json& region = fields.at("region");
+    if (!region.is_array() || region.size() != 4) {
+        fields.bad(header_text("region"),
+                   fmt::format("is {}, not [x, y, width, height]", excerpt(region)));
+    }
+    // Each number within the image, given those before it.
+    const auto region_value = [&](std::size_t i, long long low, long long high) {
+        const std::optional<long long> number = whole_in(region[i], low, high);
+        if (!number) {
+            fields.bad(header_text("region"),
+                       fmt::format("has {} at {}, not a whole number in [{}, {}]",
+                                   excerpt(region[i]), i, low, high));
+        }
+        return static_cast<int>(*number);
+    };
+    info.region.x = region_value(0, 0, info.width - 1);
+    info.region.y = region_value(1, 0, info.height - 1);
+    info.region.width = region_value(2, 1, info.width - info.region.x);
+    info.region.height = region_value(3, 1, info.height - info.region.y);
+    info.samples = static_cast<int>(fields.whole("samples", 1, kMaxSamples));
+    info.seed = static_cast<uint32_t>(fields.whole("seed", 0, UINT32_MAX));
+    const auto [min_exposure, max_exposure] = exposure_range();
+    info.display.exposure =
+        static_cast<float>(fields.number("exposure", min_exposure, max_exposure));
+    const long long tone = fields.whole("tone_map", 0, std::numeric_limits<int>::max());
+    constexpr ToneMap kToneMaps[] = {ToneMap::Clamp, ToneMap::Reinhard, ToneMap::Aces};
+    if (std::none_of(std::begin(kToneMaps), std::end(kToneMaps),
+                     [&](ToneMap known) { return static_cast<long long>(known) == tone; })) {
+        fields.bad(header_text("tone_map"),
+                   fmt::format("is {}, not a tone map (0 clamp, 1 Reinhard, 2 ACES)", tone));
+    }
+    info.display.tone_map = static_cast<ToneMap>(tone);
+    const nlohmann::ordered_json& layers = fields.at("layers");
+    if (!layers.is_boolean()) {
+        fields.bad(header_text("layers"), fmt::format("is {}, not true or false", excerpt(layers)));
+    }
+    info.layers = layers.get<bool>();
+
+    const nlohmann::ordered_json& identity = fields.at("identity");
+    if (!identity.is_object() || identity.empty() || identity.size() > kMaxIdentityFields) {
+        fields.bad(header_text("identity"),
+                   fmt::format("is {}, not an object of 1 to {} text fields", excerpt(identity),
+                               kMaxIdentityFields));
+    }
+    for (const auto& [key, value] : identity.items()) {
+        if (!value.is_string()) {
+            fields.bad(header_text("identity"),
+                       fmt::format("has {} as {}, not text", excerpt(value), header_text(key)));
+        }
+        info.identity.emplace_back(key, value.get<std::string>());
+    }
+    // The numbers the merge uses must be the ones the identity, which parts are matched by, says.
+    const auto agree = [&](const char* key, const std::string& expected,
+                           const std::string& numbers) {
+        const auto found = identity.find(key);
+        const std::string said = found == identity.end() ? "none" : found->get<std::string>();
+        if (said != expected) {
+            fields.bad(numbers,
+                       fmt::format("say {} but its identity's {} is {}", header_text(expected),
+                                   header_text(key), header_text(said)));
+        }
+    };
+    agree("size", size_identity(info.width, info.height),
+          header_text("width") + " and " + header_text("height"));
+    agree("display", display_identity(info.display),
+          header_text("exposure") + " and " + header_text("tone_map"));
+    agree("layers", layers_identity(info.layers), header_text("layers"));
+    const auto mode = identity.find("mode");
+    info.mode = mode == identity.end() ? "" : mode->get<std::string>();
+    const auto modes = render_modes();
+    if (std::none_of(modes.begin(), modes.end(),
+                     [&](const RenderModeInfo& known) { return known.name == info.mode; })) {
+        fields.bad(header_text("identity"),
+                   fmt::format("has the mode {}, which is no render mode", header_text(info.mode)));
+    }
+    return info;
+}
+
 PartInfo read_part_info(const fs::path& path) {
+    if (const std::string problem = regular_file_problem(path); !problem.empty()) {
+        throw std::runtime_error(fmt::format("cannot read '{}': {}", path.string(), problem));
+    }
+    if (const std::string problem = exr_header_problem(path); !problem.empty()) {
+        throw std::runtime_error(fmt::format("cannot read '{}': {}", path.string(), problem));
+    }
     Imf::Header::setMaxImageSize(kMaxPartSide, kMaxPartSide);
     std::unique_ptr<Imf::InputFile> file;
     try {
@@ -222,52 +497,8 @@ PartInfo read_part_info(const fs::path& path) {
     const Imf::Header& header = file->header();
     const auto* attribute = header.findTypedAttribute<Imf::StringAttribute>(kPartAttribute);
     if (attribute == nullptr) not_a_part(path, "its header has no fgr.part");
-    PartInfo info;
-    info.path = path;
-    try {
-        // The one checked parse (depth, duplicate keys, NUL bytes, trailing bytes) first; then
-        // again keeping the keys' order, in which the identity's fields are compared and named.
-        (void)json_fields::parse_document(attribute->value(), "damaged");
-    } catch (const std::runtime_error& error) {
-        not_a_part(path, fmt::format("its fgr.part header is {}", error.what()));
-    }
-    try {
-        const nlohmann::ordered_json json = nlohmann::ordered_json::parse(attribute->value());
-        if (json.at("fgr_part").get<int>() != kPartVersion) not_a_part(path, "another version");
-        info.width = json.at("width").get<int>();
-        info.height = json.at("height").get<int>();
-        const auto& region = json.at("region");
-        info.region = {region.at(0).get<int>(), region.at(1).get<int>(), region.at(2).get<int>(),
-                       region.at(3).get<int>()};
-        info.samples = json.at("samples").get<int>();
-        info.seed = json.at("seed").get<uint32_t>();
-        info.display = {json.at("exposure").get<float>(),
-                        static_cast<ToneMap>(json.at("tone_map").get<int>())};
-        info.layers = json.at("layers").get<bool>();
-        for (const auto& [key, value] : json.at("identity").items()) {
-            info.identity.emplace_back(key, value.get<std::string>());
-        }
-    } catch (const nlohmann::json::exception& error) {
-        not_a_part(path, fmt::format("its fgr.part header is damaged: {}", error.what()));
-    }
-    for (const auto& [key, value] : info.identity) {
-        if (key == "mode") info.mode = value;
-    }
-    const Imath::Box2i data = header.dataWindow(), display = header.displayWindow();
-    const PixelRegion& r = info.region;
-    if (display.min != Imath::V2i(0, 0) ||
-        display.max != Imath::V2i(info.width - 1, info.height - 1) ||
-        data.min != Imath::V2i(r.x, r.y) ||
-        data.max != Imath::V2i(r.x + r.width - 1, r.y + r.height - 1) || r.width < 1 ||
-        r.height < 1 || r.x < 0 || r.y < 0 || r.x + r.width > info.width ||
-        r.y + r.height > info.height || info.samples < 1) {
-        not_a_part(path, "its windows do not match its fgr.part header");
-    }
-    for (const std::string& channel : part_channels(info.layers)) {
-        if (header.channels().findChannel(channel) == nullptr) {
-            not_a_part(path, fmt::format("it has no {} channel", channel));
-        }
-    }
+    PartInfo info = parse_part_header(attribute->value(), path);
+    check_part_layout(header, info);
     if (const auto* view = header.findTypedAttribute<Imf::StringAttribute>(kExrViewAttribute)) {
         info.view = view->value();
         if (info.view.size() > kMaxEmbeddedViewBytes) not_a_part(path, "its view is too large");
@@ -283,6 +514,8 @@ PartReader::PartReader(const PartInfo& info) : info_(info) {
         throw std::runtime_error(
             fmt::format("cannot read '{}': {}", info.path.string(), error.what()));
     }
+    // The file may have changed since its header was read: the rows read must still be there.
+    check_part_layout(file_->header(), info);
 }
 
 PartReader::~PartReader() = default;

@@ -4,6 +4,7 @@
 #include <fmt/format.h>
 
 #include <algorithm>
+#include <limits>
 #include <map>
 #include <memory>
 #include <set>
@@ -93,6 +94,53 @@ void check_same_render(const std::vector<PartInfo>& parts) {
     }
 }
 
+// What the merge sizes and shows by, the same in every part and inside the image: the width and
+// height (the first part's: the image's), the regions, the samples, the layers and the display
+// transform. read_part_info checks these numbers against each part's identity; here they are
+// checked against one another, so that no part can make the merge write outside its rows.
+void check_same_numbers(const std::vector<PartInfo>& parts) {
+    const PartInfo& first = parts.front();
+    if (first.width < 1 || first.height < 1 || first.width > kMaxTiledImageSide ||
+        first.height > kMaxTiledImageSide) {
+        throw std::invalid_argument(fmt::format("'{}' is {}x{}, not an image fgr renders",
+                                                first.path.string(), first.width, first.height));
+    }
+    for (const PartInfo& part : parts) {
+        if (part.width != first.width || part.height != first.height) {
+            throw std::invalid_argument(
+                fmt::format("'{}' is {}x{} but '{}' is {}x{}: the parts of one image have one size",
+                            part.path.string(), part.width, part.height, first.path.string(),
+                            first.width, first.height));
+        }
+        const PixelRegion& r = part.region;
+        if (r.x < 0 || r.y < 0 || r.width < 1 || r.height < 1 ||
+            long(r.x) + r.width > first.width || long(r.y) + r.height > first.height) {
+            throw std::invalid_argument(fmt::format(
+                "'{}' has its region ({}x{} at {}, {}) outside its {}x{} image", part.path.string(),
+                r.width, r.height, r.x, r.y, first.width, first.height));
+        }
+        if (part.samples < 1 || part.samples > kMaxSamples) {
+            throw std::invalid_argument(fmt::format("'{}' has {} samples per pixel, not 1 to {}",
+                                                    part.path.string(), part.samples, kMaxSamples));
+        }
+        if (part.layers != first.layers) {
+            throw std::invalid_argument(fmt::format(
+                "'{}' {} the layers' planes but '{}' {}: parts of one image have the same layers",
+                part.path.string(), part.layers ? "has" : "lacks", first.path.string(),
+                first.layers ? "has" : "lacks"));
+        }
+        if (part.display.exposure != first.display.exposure ||
+            part.display.tone_map != first.display.tone_map) {
+            throw std::invalid_argument(fmt::format(
+                "'{}' and '{}' differ in their display transform (exposure {:.9g} tone map {} and "
+                "exposure {:.9g} tone map {})",
+                first.path.string(), part.path.string(), first.display.exposure,
+                static_cast<int>(first.display.tone_map), part.display.exposure,
+                static_cast<int>(part.display.tone_map)));
+        }
+    }
+}
+
 // Parts grouped by region, top to bottom and left to right; two parts of a region must be
 // different samples (different seeds of the path tracer).
 std::vector<PartGroup> group_by_region(const std::vector<PartInfo>& parts) {
@@ -113,6 +161,12 @@ std::vector<PartGroup> group_by_region(const std::vector<PartInfo>& parts) {
                 "{} and '{}' are the same samples (seed {}): give each part of a region its own "
                 "--seed",
                 named(parts[other]), parts[i].path.string(), parts[i].seed));
+        }
+        if (group.samples > std::numeric_limits<int>::max() - parts[i].samples) {
+            throw std::invalid_argument(
+                fmt::format("{} and its region's other parts have more samples per pixel than "
+                            "fgr counts",
+                            named(parts[i])));
         }
         group.parts.push_back(i);
         group.samples += parts[i].samples;
@@ -215,6 +269,7 @@ void check_layers(const MergePlan& plan, const TiledOutput& output) {
 MergePlan plan_merge(std::vector<PartInfo> parts) {
     if (parts.empty()) throw std::invalid_argument("no parts to merge");
     check_same_render(parts);
+    check_same_numbers(parts);
     MergePlan plan;
     plan.width = parts.front().width;
     plan.height = parts.front().height;

@@ -64,6 +64,17 @@ std::string kernel_text(const Renderer& renderer) {
 
 }  // namespace
 
+std::string size_identity(int width, int height) { return fmt::format("{}x{}", width, height); }
+
+std::string display_identity(const DisplayTransform& display) {
+    return fmt::format("exposure {:.9g} tone map {}", display.exposure,
+                       static_cast<int>(display.tone_map));
+}
+
+std::string layers_identity(bool layers) {
+    return layers ? "colour, depth, albedo, normal, alpha, foreground" : "colour, depth";
+}
+
 IdentityFields image_identity(const Renderer& renderer, const FrameRequest& request,
                               const DisplayTransform& display) {
     const KernelSwitches& switches = renderer.switches();
@@ -72,7 +83,7 @@ IdentityFields image_identity(const Renderer& renderer, const FrameRequest& requ
         params += fmt::format("{}{:.9g}", params.empty() ? "" : " ", value);
     return {
         {"scene", renderer.scene().id},
-        {"size", fmt::format("{}x{}", request.width, request.height)},
+        {"size", size_identity(request.width, request.height)},
         {"mode", std::string(render_mode_name(switches.mode))},
         {"effects", effect_names(switches.effects)},
         {"precision", switches.double_precision ? "double" : "float"},
@@ -80,10 +91,8 @@ IdentityFields image_identity(const Renderer& renderer, const FrameRequest& requ
         {"view", view_text(request.view)},
         {"parameters", params},
         {"path tracing", switches.mode == RenderMode::Path ? path_text(request.path) : "none"},
-        {"display", fmt::format("exposure {:.9g} tone map {}", display.exposure,
-                                static_cast<int>(display.tone_map))},
-        {"layers",
-         switches.aovs ? "colour, depth, albedo, normal, alpha, foreground" : "colour, depth"},
+        {"display", display_identity(display)},
+        {"layers", layers_identity(switches.aovs)},
         {"kernel", kernel_text(renderer)},
     };
 }

@@ -23,4 +23,10 @@ using IdentityFields = std::vector<std::pair<std::string, std::string>>;
 IdentityFields image_identity(const Renderer& renderer, const FrameRequest& request,
                               const DisplayTransform& display);
 
+// The identity's "size", "display" and "layers" fields, which a part's header also gives as
+// numbers: its reader checks the two agree.
+std::string size_identity(int width, int height);
+std::string display_identity(const DisplayTransform& display);
+std::string layers_identity(bool layers);
+
 }  // namespace fgr

@@ -79,7 +79,10 @@ struct PartInfo {
     std::string view;     // the view it carries ("": none), as the part was rendered
 };
 
-// Throws std::runtime_error ("cannot read '<path>': ...", or "'<path>' is not an fgr part ...").
+// Throws std::runtime_error, one line naming the file: "cannot read '<path>': ..." (not a regular
+// file, not OpenEXR), "'<path>' is not an fgr part (...)", or "'<path>' is a damaged fgr part:
+// its header's "FIELD" ..." (a field of the wrong type or outside its range, or numbers that
+// disagree with the identity: parse_part_header in part_file.hpp).
 PartInfo read_part_info(const std::filesystem::path& path);
 
 // Parts of the same region: independent samples of the same pixels.
@@ -99,10 +102,11 @@ struct MergePlan {
     bool layers = false;
 };
 
-// Checks that `parts` make one image and how: throws std::invalid_argument (one line, naming the
-// files) for parts of different renders (the first differing field), two parts of a region with
-// the same seed, regions that overlap, pixels no part covers (the first missing rows), or
-// regions with different samples per pixel.
+// Checks that `parts` make one image and how, before anything is allocated for them: throws
+// std::invalid_argument (one line, naming the files) for parts of different renders (the first
+// differing field), of different sizes, layers or display transforms, a region outside the image,
+// two parts of a region with the same seed, regions that overlap, pixels no part covers (the
+// first missing rows), or regions with different samples per pixel.
 MergePlan plan_merge(std::vector<PartInfo> parts);
 
 struct MergeResult {
