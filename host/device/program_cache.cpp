@@ -143,30 +143,24 @@ cl::Program ProgramCache::load_binary(const ComputeDevice& device, const Assembl
                                       const std::string& key, const std::filesystem::path& file) {
     namespace fs = std::filesystem;
     std::error_code error;
-    const fs::file_status status = fs::status(file, error);
-    if (error || !fs::exists(status)) return {};  // no entry (or none that can be looked at)
-    std::string problem;
-    if (!fs::is_regular_file(status)) {
-        problem = "not a regular file";
-    } else {
-        std::string entry;
-        problem = read_file_bytes(file, entry, kMaxProgramEntryBytes);
-        if (!problem.empty() && !fs::exists(file, error)) return {};  // evicted meanwhile
+    if (!fs::exists(fs::symlink_status(file, error))) return {};  // no entry
+    std::string entry;
+    // Refuses what is not a regular file (a directory, a FIFO: never waited on) and huge files.
+    std::string problem = read_file_bytes(file, entry, kMaxProgramEntryBytes);
+    if (!problem.empty() && !fs::exists(fs::symlink_status(file, error))) {
+        return {};  // evicted meanwhile by another process
+    }
+    if (problem.empty()) {
+        const ProgramEntryCheck check = check_program_entry(entry, key);
+        problem = check.problem;
         if (problem.empty()) {
-            const ProgramEntryCheck check = check_program_entry(entry, key);
-            problem = check.problem;
-            if (problem.empty()) {
-                try {
-                    const std::vector<unsigned char> binary(check.binary.begin(),
-                                                            check.binary.end());
-                    cl::Program loaded(device.context, {device.device},
-                                       cl::Program::Binaries{binary});
-                    loaded.build({device.device}, full_options(program).c_str());
-                    return loaded;
-                } catch (const cl::Error& refused) {
-                    problem =
-                        fmt::format("the driver refused it: {}", cl_error_name(refused.err()));
-                }
+            try {
+                const std::vector<unsigned char> binary(check.binary.begin(), check.binary.end());
+                cl::Program loaded(device.context, {device.device}, cl::Program::Binaries{binary});
+                loaded.build({device.device}, full_options(program).c_str());
+                return loaded;
+            } catch (const cl::Error& refused) {
+                problem = fmt::format("the driver refused it: {}", cl_error_name(refused.err()));
             }
         }
     }
