@@ -135,7 +135,9 @@ TEST(FuzzKernelCacheEntry, OnlyUnchangedEntriesPass) {
             ASSERT_EQ(check.problem.find('\n'), std::string::npos) << "case seed " << seed;
         }
     }
-    if (cases >= 1000) EXPECT_GT(accepted, cases / 20) << "the sound case is exercised too";
+    if (cases >= 1000) {
+        EXPECT_GT(accepted, cases / 20) << "the sound case is exercised too";
+    }
 }
 
 // --- On disk, through ProgramCache ---------------------------------------------------------------

@@ -43,11 +43,11 @@ namespace {
 namespace fs = std::filesystem;
 using json = nlohmann::json;
 
-constexpr int kWidth = 8, kHeight = 4;
+constexpr int kPartWidth = 8, kPartHeight = 4;
 
-// The header fgr writes for a part of a kWidth x kHeight shaded render (part_file.cpp's
+// The header fgr writes for a part of a kPartWidth x kPartHeight shaded render (part_file.cpp's
 // part_header), its region rows first_row .. first_row + rows - 1.
-json part_header(int first_row, int rows, int width = kWidth, int height = kHeight) {
+json part_header(int first_row, int rows, int width = kPartWidth, int height = kPartHeight) {
     const DisplayTransform display{1.0f, ToneMap::Aces};
     json identity = {
         {"scene", "sphere"},
@@ -141,11 +141,11 @@ bool one_line(const std::string& text) {
 
 TEST(PartHeader, TheHeaderFgrWritesIsRead) {
     const PartInfo info = parse_part_header(part_header(2, 2).dump(), "p.exr");
-    EXPECT_EQ(info.width, kWidth);
-    EXPECT_EQ(info.height, kHeight);
+    EXPECT_EQ(info.width, kPartWidth);
+    EXPECT_EQ(info.height, kPartHeight);
     EXPECT_EQ(info.region.x, 0);
     EXPECT_EQ(info.region.y, 2);
-    EXPECT_EQ(info.region.width, kWidth);
+    EXPECT_EQ(info.region.width, kPartWidth);
     EXPECT_EQ(info.region.height, 2);
     EXPECT_EQ(info.display.tone_map, ToneMap::Aces);
     EXPECT_EQ(info.mode, "shaded");
@@ -206,6 +206,24 @@ TEST(PartHeader, EachBadFieldIsRefusedNamingTheFileAndTheField) {
                 << c.what << ": " << message;
             EXPECT_NE(message.find(c.field), std::string::npos) << c.what << ": " << message;
             EXPECT_TRUE(one_line(message)) << message;
+        }
+    }
+}
+
+// JSON no part header is: nested past the bound, a key twice, bytes after the value, a NUL.
+TEST(PartHeader, MalformedJsonIsRefusedNamingTheFile) {
+    const std::string header = part_header(0, 2).dump();
+    for (const std::string& text :
+         {std::string(100000, '[') + std::string(100000, ']'), "{\"width\": 8, " + header.substr(1),
+          header + " {}", header + std::string(1, '\0') + "x", std::string("[1, 2]")}) {
+        try {
+            parse_part_header(text, "dir/p.exr");
+            ADD_FAILURE() << "read: " << text.substr(0, 60);
+        } catch (const std::runtime_error& error) {
+            const std::string message = error.what();
+            EXPECT_TRUE(message.starts_with("'dir/p.exr' is not an fgr part (")) << message;
+            EXPECT_TRUE(one_line(message)) << message;
+            EXPECT_LT(message.size(), 300u) << message;
         }
     }
 }
@@ -470,7 +488,9 @@ TEST(FuzzPartFile, MutatedHeadersAreReadSoundOrRefusedInOneLine) {
             ASSERT_TRUE(one_line(message)) << "case seed " << seed << ": " << message;
         }
     }
-    if (cases >= 1000) EXPECT_GT(read, cases / 50) << "sound headers are exercised too";
+    if (cases >= 1000) {
+        EXPECT_GT(read, cases / 50) << "sound headers are exercised too";
+    }
 }
 
 // Seeded damage to a part file (cut short, bytes flipped or overwritten, both), merged with a
@@ -522,7 +542,9 @@ TEST(FuzzPartFile, DamagedPartFilesAreMergedOrRefused) {
             ASSERT_TRUE(one_line(error.what())) << "case seed " << seed << ": " << error.what();
         }
     }
-    if (cases >= 1000) EXPECT_GT(planned, cases / 100) << "damage that reads is exercised too";
+    if (cases >= 1000) {
+        EXPECT_GT(planned, cases / 100) << "damage that reads is exercised too";
+    }
 }
 
 // Seeded damage to the PNG frames `fgr merge --frames` reads (cut short, bytes flipped): read as

@@ -31,6 +31,7 @@
 #include "scene/scene.hpp"
 #include "util/errors.hpp"
 #include "util/files.hpp"
+#include "util/json_fields.hpp"
 #include "util/lower_case.hpp"
 #include "util/timing.hpp"
 
@@ -116,25 +117,14 @@ constexpr std::string_view kHeaderKeys[] = {"fgr_part", "seed",    "width",    "
                                             "layers",   "identity"};
 // More than image_identity gives, few enough that comparing parts stays cheap.
 constexpr std::size_t kMaxIdentityFields = 64;
-constexpr std::size_t kMaxExcerpt = 40;
 
-// A value as a message may quote it: short, on one line.
-std::string excerpt(const nlohmann::ordered_json& value) {
-    if (value.is_object()) return "an object";
-    if (value.is_array()) return "an array";
-    std::string text = value.dump(-1, ' ', true, nlohmann::json::error_handler_t::replace);
-    if (text.size() > kMaxExcerpt) text = text.substr(0, kMaxExcerpt) + "...";
-    return text;
-}
-
-// A key or text in double quotes, escaped and bounded.
+// A key or text as a message may quote it: in double quotes, escaped, bounded.
 std::string header_text(std::string_view text) {
-    return excerpt(nlohmann::ordered_json(std::string(text.substr(0, kMaxExcerpt + 1))));
+    return json_fields::shown(nlohmann::json(std::string(text.substr(0, 64))));
 }
 
 // `value` when it is a whole number in [low, high].
-std::optional<long long> whole_in(const nlohmann::ordered_json& value, long long low,
-                                  long long high) {
+std::optional<long long> whole_in(const nlohmann::json& value, long long low, long long high) {
     if (value.is_number_unsigned()) {
         const auto number = value.get<std::uint64_t>();
         if (number > static_cast<std::uint64_t>(high)) return std::nullopt;
@@ -162,7 +152,7 @@ std::pair<float, float> exposure_range() {
 // The fields of a part's header, each checked as it is taken: a damaged or forged header is
 // refused naming the file and the field, before anything is sized from it.
 struct HeaderFields {
-    const nlohmann::ordered_json& json;
+    const nlohmann::json& json;
     const fs::path& path;
 
     // `field`: one or more quoted keys.
@@ -170,26 +160,26 @@ struct HeaderFields {
         throw std::runtime_error(fmt::format("'{}' is a damaged fgr part: its header's {} {}",
                                              path.string(), field, why));
     }
-    const nlohmann::ordered_json& at(const char* key) const {
+    const nlohmann::json& at(const char* key) const {
         const auto found = json.find(key);
         if (found == json.end()) bad(header_text(key), "is missing");
         return *found;
     }
     long long whole(const char* key, long long low, long long high) const {
-        const nlohmann::ordered_json& value = at(key);
+        const nlohmann::json& value = at(key);
         const std::optional<long long> number = whole_in(value, low, high);
         if (!number) {
-            bad(header_text(key),
-                fmt::format("is {}, not a whole number in [{}, {}]", excerpt(value), low, high));
+            bad(header_text(key), fmt::format("is {}, not a whole number in [{}, {}]",
+                                              json_fields::shown(value), low, high));
         }
         return *number;
     }
     double number(const char* key, float low, float high) const {
-        const nlohmann::ordered_json& value = at(key);
+        const nlohmann::json& value = at(key);
         if (!value.is_number() ||
             !(value.get<double>() >= double{low} && value.get<double>() <= double{high})) {
-            bad(header_text(key),
-                fmt::format("is {}, not a number in [{}, {}]", excerpt(value), low, high));
+            bad(header_text(key), fmt::format("is {}, not a number in [{}, {}]",
+                                              json_fields::shown(value), low, high));
         }
         return value.get<double>();
     }
@@ -381,11 +371,11 @@ PartResult render_part(Renderer& renderer, const FrameRequest& request,
 }
 
 PartInfo parse_part_header(std::string_view text, const fs::path& path) {
-    nlohmann::ordered_json json;
+    nlohmann::json json;
     try {
-        json = nlohmann::ordered_json::parse(text);
-    } catch (const nlohmann::json::exception& error) {
-        not_a_part(path, fmt::format("its fgr.part header is damaged: {}", error.what()));
+        json = json_fields::parse_document(text, "its fgr.part header is damaged");
+    } catch (const std::runtime_error& error) {
+        not_a_part(path, error.what());
     }
     if (!json.is_object()) not_a_part(path, "its fgr.part header is not a JSON object");
     const HeaderFields fields{json, path};
@@ -402,10 +392,10 @@ PartInfo parse_part_header(std::string_view text, const fs::path& path) {
     info.path = path;
     info.width = static_cast<int>(fields.whole("width", 1, kMaxPartSide));
     info.height = static_cast<int>(fields.whole("height", 1, kMaxPartSide));
-    const nlohmann::ordered_json& region = fields.at("region");
+    const nlohmann::json& region = fields.at("region");
     if (!region.is_array() || region.size() != 4) {
         fields.bad(header_text("region"),
-                   fmt::format("is {}, not [x, y, width, height]", excerpt(region)));
+                   fmt::format("is {}, not [x, y, width, height]", json_fields::shown(region)));
     }
     // Each number within the image, given those before it.
     const auto region_value = [&](std::size_t i, long long low, long long high) {
@@ -413,7 +403,7 @@ PartInfo parse_part_header(std::string_view text, const fs::path& path) {
         if (!number) {
             fields.bad(header_text("region"),
                        fmt::format("has {} at {}, not a whole number in [{}, {}]",
-                                   excerpt(region[i]), i, low, high));
+                                   json_fields::shown(region[i]), i, low, high));
         }
         return static_cast<int>(*number);
     };
@@ -434,25 +424,32 @@ PartInfo parse_part_header(std::string_view text, const fs::path& path) {
                    fmt::format("is {}, not a tone map (0 clamp, 1 Reinhard, 2 ACES)", tone));
     }
     info.display.tone_map = static_cast<ToneMap>(tone);
-    const nlohmann::ordered_json& layers = fields.at("layers");
+    const nlohmann::json& layers = fields.at("layers");
     if (!layers.is_boolean()) {
-        fields.bad(header_text("layers"), fmt::format("is {}, not true or false", excerpt(layers)));
+        fields.bad(header_text("layers"),
+                   fmt::format("is {}, not true or false", json_fields::shown(layers)));
     }
     info.layers = layers.get<bool>();
 
-    const nlohmann::ordered_json& identity = fields.at("identity");
+    const nlohmann::json& identity = fields.at("identity");
     if (!identity.is_object() || identity.empty() || identity.size() > kMaxIdentityFields) {
         fields.bad(header_text("identity"),
-                   fmt::format("is {}, not an object of 1 to {} text fields", excerpt(identity),
-                               kMaxIdentityFields));
+                   fmt::format("is {}, not an object of 1 to {} text fields",
+                               json_fields::shown(identity), kMaxIdentityFields));
     }
     for (const auto& [key, value] : identity.items()) {
         if (!value.is_string()) {
-            fields.bad(header_text("identity"),
-                       fmt::format("has {} as {}, not text", excerpt(value), header_text(key)));
+            fields.bad(
+                header_text("identity"),
+                fmt::format("has {} as {}, not text", json_fields::shown(value), header_text(key)));
         }
+    }
+    // In the order written (image_identity's, the most telling first), which a mismatch follows.
+    const nlohmann::ordered_json ordered = nlohmann::ordered_json::parse(text);
+    for (const auto& [key, value] : ordered.at("identity").items()) {
         info.identity.emplace_back(key, value.get<std::string>());
     }
+
     // The numbers the merge uses must be the ones the identity, which parts are matched by, says.
     const auto agree = [&](const char* key, const std::string& expected,
                            const std::string& numbers) {
