@@ -10,6 +10,7 @@
 
 #include <filesystem>
 #include <functional>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -212,6 +213,48 @@ TEST(ProgramCacheEntries, ADamagedEntryIsRemovedWithAWarningAndCompiledAgain) {
     ProgramCache(dir.path()).build(device, program, &report);
     EXPECT_EQ(report.origin, BuildReport::Origin::Disk);
     EXPECT_TRUE(log.lines().empty()) << ::testing::PrintToString(log.lines());
+}
+
+// The reproducer as found, through fgr render: the scene's program's entry cut to 100 bytes,
+// then to half its size. Before entries had a header, each such render crashed (SIGSEGV, PoCL's
+// assertion) until `fgr cache clear`; now it succeeds, saying once per entry what was wrong.
+TEST(ProgramCacheEntries, ARenderWithDamagedEntriesSucceedsAndSaysSo) {
+    const test::TempDir dir("fgr_damaged_cache");
+    const fs::path cache = dir.path() / "kernels";
+    test::ChildOptions options;
+    options.working_dir = dir.path();
+    options.environment["FGR_CACHE_DIR"] = cache.string();
+    options.environment["FGR_PLUGIN_PATH"] = std::nullopt;
+    const std::vector<std::string> render{"render",   "mandelbulb", "--width", "16",
+                                          "--height", "12",         "-o",      "out.png"};
+    const test::RunResult first = test::run_child(test::kFgrExe, render, options);
+    ASSERT_EQ(first.exit_code, 0) << first;
+    std::vector<fs::path> programs;
+    for (const fs::directory_entry& entry : fs::directory_iterator(cache)) {
+        // The scene's program, not the math self-test's (math-<key>.txt keeps its verdict: a
+        // second render does not build it).
+        const fs::path verdict = cache / ("math-" + entry.path().stem().string() + ".txt");
+        if (entry.path().extension() == ".bin" && !fs::exists(verdict)) {
+            programs.push_back(entry.path());
+        }
+    }
+    ASSERT_FALSE(programs.empty());
+    for (const bool half : {false, true}) {
+        SCOPED_TRACE(half ? "cut to half" : "cut to 100 bytes");
+        for (const fs::path& program : programs) {
+            fs::resize_file(program, half ? fs::file_size(program) / 2 : 100);
+        }
+        const test::RunResult again = test::run_child(test::kFgrExe, render, options);
+        ASSERT_TRUE(again.exited) << again;
+        EXPECT_EQ(again.exit_code, 0) << again;
+        for (const fs::path& program : programs) {
+            const std::string warning = "warning: kernel cache entry '" + program.string() + "'";
+            const std::size_t at = again.err.find(warning);
+            EXPECT_NE(at, std::string::npos) << again.err;
+            EXPECT_EQ(again.err.find(warning, at + 1), std::string::npos) << again.err;
+            EXPECT_GT(fs::file_size(program), 100u) << "stored again";
+        }
+    }
 }
 
 }  // namespace
