@@ -68,6 +68,7 @@ LIMITS = [
     ("view.schema.json", "/properties/scene/properties/id/maxLength", "id_length"),
     ("part-identity.schema.json", "/properties/width/maximum", "image_side"),
     ("part-identity.schema.json", "/properties/height/maximum", "image_side"),
+    ("part-identity.schema.json", "/properties/samples/maximum", "samples"),
 ]
 # The scene files' shared parts, checked in each schema that has them.
 for _schema in ("ifs.schema.json", "formula.schema.json", "text-scene.schema.json"):
@@ -543,6 +544,7 @@ BAD = {
         ("tone map 7", setting("/tone_map", 7)),
         ("a region of three numbers", setting("/region", [0, 0, 32])),
         ("a width of 0", setting("/width", 0)),
+        ("samples of 4097", setting("/samples", 4097)),
     ],
     "view.schema.json": [
         ("a misspelt key", renamed("/camera", "camrea")),
