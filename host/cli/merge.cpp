@@ -138,7 +138,7 @@ std::vector<fs::path> numbered_frames(const fs::path& directory) {
         if (const std::string problem = regular_file_problem(entry.path(), kMaxFrameBytes);
             !problem.empty()) {
             throw UsageError(
-                fmt::format("frame '{}' cannot be read: {}", entry.path().string(), problem));
+                fmt::format("frame {} cannot be read: {}", quoted(entry.path()), problem));
         }
         found[std::stol(match[1])] = entry.path();
     }
@@ -165,7 +165,7 @@ std::vector<fs::path> numbered_frames(const fs::path& directory) {
 Image8 read_frame(const fs::path& file) {
     // Again as it is read: the directory may have changed since it was listed.
     if (const std::string problem = regular_file_problem(file, kMaxFrameBytes); !problem.empty()) {
-        throw RuntimeFailure(fmt::format("frame '{}' cannot be read: {}", file.string(), problem));
+        throw RuntimeFailure(fmt::format("frame {} cannot be read: {}", quoted(file), problem));
     }
     try {
         return read_png(file);

@@ -15,6 +15,7 @@
 #include "device/program_entry.hpp"
 #include "util/content_hash.hpp"
 #include "util/files.hpp"
+#include "util/strings.hpp"
 #include "util/timing.hpp"
 
 namespace fgr {
@@ -167,7 +168,7 @@ cl::Program ProgramCache::load_binary(const ComputeDevice& device, const Assembl
     // The cache only saves time: a bad entry costs one compile, never the render.
     const bool removed = fs::remove(file, error);
     spdlog::warn(
-        "kernel cache entry '{}' is unusable ({}): {}compiling the program again", file.string(),
+        "kernel cache entry {} is unusable ({}): {}compiling the program again", quoted(file),
         problem,
         removed ? "removed it, "
                 : fmt::format("cannot remove it ({}), ", error ? error.message() : "it is gone"));

@@ -33,6 +33,7 @@
 #include "util/files.hpp"
 #include "util/json_fields.hpp"
 #include "util/lower_case.hpp"
+#include "util/strings.hpp"
 #include "util/timing.hpp"
 
 namespace fgr {
@@ -106,9 +107,9 @@ float* put_pixel(const Frame& frame, size_t i, bool layers, float* out) {
 
 [[noreturn]] void not_a_part(const fs::path& path, const std::string& why) {
     throw std::runtime_error(
-        fmt::format("'{}' is not an fgr part ({}): parts are written by "
+        fmt::format("{} is not an fgr part ({}): parts are written by "
                     "fgr render --part or --tile",
-                    path.string(), why));
+                    quoted(path), why));
 }
 
 // The keys of a part header (part_header), every one required.
@@ -157,8 +158,8 @@ struct HeaderFields {
 
     // `field`: one or more quoted keys.
     [[noreturn]] void bad(const std::string& field, const std::string& why) const {
-        throw std::runtime_error(fmt::format("'{}' is a damaged fgr part: its header's {} {}",
-                                             path.string(), field, why));
+        throw std::runtime_error(
+            fmt::format("{} is a damaged fgr part: its header's {} {}", quoted(path), field, why));
     }
     const nlohmann::json& at(const char* key) const {
         const auto found = json.find(key);
@@ -286,7 +287,7 @@ PartResult render_part(Renderer& renderer, const FrameRequest& request,
                        const PartSettings& settings) {
     if (lower_extension(path) != ".exr") {
         throw std::invalid_argument(
-            fmt::format("a part is an OpenEXR file: '{}' must end in .exr", path.string()));
+            fmt::format("a part is an OpenEXR file: {} must end in .exr", quoted(path)));
     }
     PartResult result;
     result.region = rendered_region(request);
@@ -479,17 +480,17 @@ PartInfo parse_part_header(std::string_view text, const fs::path& path) {
 
 PartInfo read_part_info(const fs::path& path) {
     if (const std::string problem = regular_file_problem(path); !problem.empty()) {
-        throw std::runtime_error(fmt::format("cannot read '{}': {}", path.string(), problem));
+        throw std::runtime_error(fmt::format("cannot read {}: {}", quoted(path), problem));
     }
     if (const std::string problem = exr_header_problem(path); !problem.empty()) {
-        throw std::runtime_error(fmt::format("cannot read '{}': {}", path.string(), problem));
+        throw std::runtime_error(fmt::format("cannot read {}: {}", quoted(path), problem));
     }
     Imf::Header::setMaxImageSize(kMaxPartSide, kMaxPartSide);
     std::unique_ptr<Imf::InputFile> file;
     try {
         file = std::make_unique<Imf::InputFile>(path.c_str());
     } catch (const std::exception& error) {
-        throw std::runtime_error(fmt::format("cannot read '{}': {}", path.string(), error.what()));
+        throw std::runtime_error(fmt::format("cannot read {}: {}", quoted(path), error.what()));
     }
     const Imf::Header& header = file->header();
     const auto* attribute = header.findTypedAttribute<Imf::StringAttribute>(kPartAttribute);
@@ -509,7 +510,7 @@ PartReader::PartReader(const PartInfo& info) : info_(info) {
         file_ = std::make_unique<Imf::InputFile>(info.path.c_str());
     } catch (const std::exception& error) {
         throw std::runtime_error(
-            fmt::format("cannot read '{}': {}", info.path.string(), error.what()));
+            fmt::format("cannot read {}: {}", quoted(info.path), error.what()));
     }
     // The file may have changed since its header was read: the rows read must still be there.
     check_part_layout(file_->header(), info);
@@ -557,7 +558,7 @@ Frame PartReader::read_rows(int first_row, int rows) {
         file_->readPixels(first_row, first_row + rows - 1);
     } catch (const std::exception& error) {
         throw std::runtime_error(
-            fmt::format("cannot read '{}': {}", info_.path.string(), error.what()));
+            fmt::format("cannot read {}: {}", quoted(info_.path), error.what()));
     }
     return frame;
 }

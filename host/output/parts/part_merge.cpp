@@ -19,6 +19,7 @@
 #include "output/tiled/streaming_image.hpp"
 #include "render/sample_budget.hpp"
 #include "util/interruption.hpp"
+#include "util/strings.hpp"
 
 namespace fgr {
 namespace {
@@ -33,7 +34,7 @@ std::string region_text(const PixelRegion& region, int width) {
 }
 
 std::string named(const PartInfo& part) {
-    return fmt::format("'{}' ({})", part.path.string(), region_text(part.region, part.width));
+    return fmt::format("{} ({})", quoted(part.path), region_text(part.region, part.width));
 }
 
 // The first field in which `part` differs from `first` (which fixes the order), or "".
@@ -87,8 +88,8 @@ void check_same_render(const std::vector<PartInfo>& parts) {
         const std::string field = first_difference(parts[0], parts[i], &mine, &theirs);
         if (!field.empty()) {
             throw std::invalid_argument(
-                fmt::format("'{}' and '{}' are not parts of one image: they differ in {} ({})",
-                            parts[0].path.string(), parts[i].path.string(), field,
+                fmt::format("{} and {} are not parts of one image: they differ in {} ({})",
+                            quoted(parts[0].path), quoted(parts[i].path), field,
                             difference_text(mine, theirs)));
         }
     }
@@ -102,39 +103,39 @@ void check_same_numbers(const std::vector<PartInfo>& parts) {
     const PartInfo& first = parts.front();
     if (first.width < 1 || first.height < 1 || first.width > kMaxTiledImageSide ||
         first.height > kMaxTiledImageSide) {
-        throw std::invalid_argument(fmt::format("'{}' is {}x{}, not an image fgr renders",
-                                                first.path.string(), first.width, first.height));
+        throw std::invalid_argument(fmt::format("{} is {}x{}, not an image fgr renders",
+                                                quoted(first.path), first.width, first.height));
     }
     for (const PartInfo& part : parts) {
         if (part.width != first.width || part.height != first.height) {
             throw std::invalid_argument(
-                fmt::format("'{}' is {}x{} but '{}' is {}x{}: the parts of one image have one size",
-                            part.path.string(), part.width, part.height, first.path.string(),
+                fmt::format("{} is {}x{} but {} is {}x{}: the parts of one image have one size",
+                            quoted(part.path), part.width, part.height, quoted(first.path),
                             first.width, first.height));
         }
         const PixelRegion& r = part.region;
         if (r.x < 0 || r.y < 0 || r.width < 1 || r.height < 1 ||
             long(r.x) + r.width > first.width || long(r.y) + r.height > first.height) {
             throw std::invalid_argument(fmt::format(
-                "'{}' has its region ({}x{} at {}, {}) outside its {}x{} image", part.path.string(),
+                "{} has its region ({}x{} at {}, {}) outside its {}x{} image", quoted(part.path),
                 r.width, r.height, r.x, r.y, first.width, first.height));
         }
         if (part.samples < 1 || part.samples > kMaxSamples) {
-            throw std::invalid_argument(fmt::format("'{}' has {} samples per pixel, not 1 to {}",
-                                                    part.path.string(), part.samples, kMaxSamples));
+            throw std::invalid_argument(fmt::format("{} has {} samples per pixel, not 1 to {}",
+                                                    quoted(part.path), part.samples, kMaxSamples));
         }
         if (part.layers != first.layers) {
             throw std::invalid_argument(fmt::format(
-                "'{}' {} the layers' planes but '{}' {}: parts of one image have the same layers",
-                part.path.string(), part.layers ? "has" : "lacks", first.path.string(),
+                "{} {} the layers' planes but {} {}: parts of one image have the same layers",
+                quoted(part.path), part.layers ? "has" : "lacks", quoted(first.path),
                 first.layers ? "has" : "lacks"));
         }
         if (part.display.exposure != first.display.exposure ||
             part.display.tone_map != first.display.tone_map) {
             throw std::invalid_argument(fmt::format(
-                "'{}' and '{}' differ in their display transform (exposure {:.9g} tone map {} and "
+                "{} and {} differ in their display transform (exposure {:.9g} tone map {} and "
                 "exposure {:.9g} tone map {})",
-                first.path.string(), part.path.string(), first.display.exposure,
+                quoted(first.path), quoted(part.path), first.display.exposure,
                 static_cast<int>(first.display.tone_map), part.display.exposure,
                 static_cast<int>(part.display.tone_map)));
         }
@@ -153,14 +154,14 @@ std::vector<PartGroup> group_by_region(const std::vector<PartInfo>& parts) {
             if (parts[other].seed != parts[i].seed) continue;
             if (!seeded_samples(parts[i].mode)) {
                 throw std::invalid_argument(fmt::format(
-                    "{} and '{}' render the same pixels in the {} mode, which repeats its "
+                    "{} and {} render the same pixels in the {} mode, which repeats its "
                     "samples: only --mode path renders independent samples (--seed S)",
-                    named(parts[other]), parts[i].path.string(), parts[i].mode));
+                    named(parts[other]), quoted(parts[i].path), parts[i].mode));
             }
             throw std::invalid_argument(fmt::format(
-                "{} and '{}' are the same samples (seed {}): give each part of a region its own "
+                "{} and {} are the same samples (seed {}): give each part of a region its own "
                 "--seed",
-                named(parts[other]), parts[i].path.string(), parts[i].seed));
+                named(parts[other]), quoted(parts[i].path), parts[i].seed));
         }
         if (group.samples > std::numeric_limits<int>::max() - parts[i].samples) {
             throw std::invalid_argument(
