@@ -259,6 +259,22 @@ TEST(PartPlan, PartsOfAnotherSizeLayersOrDisplayAreRefused) {
     refused({part("a.exr", 0, 2), bright}, "display transform");
 }
 
+// Identities that differ are quoted in the refusal, each side shortened: a damaged part's identity
+// field can hold text of any length, and the message stays one short line.
+TEST(PartPlan, DifferingIdentitiesAreQuotedShortened) {
+    json long_view = part_header(2, 2);
+    long_view["identity"]["view"] = std::string(5000, '7') + " x";
+    try {
+        plan_merge({parse_part_header(part_header(0, 2).dump(), "a.exr"),
+                    parse_part_header(long_view.dump(), "b.exr")});
+        ADD_FAILURE() << "planned parts of two views";
+    } catch (const std::invalid_argument& error) {
+        const std::string message = error.what();
+        EXPECT_NE(message.find("not parts of one image"), std::string::npos) << message;
+        EXPECT_LT(message.size(), 400u) << message;
+    }
+}
+
 // --- fgr merge on damaged and forged parts -------------------------------------------------------
 
 class MergeRefusals : public ::testing::Test {

@@ -75,11 +75,13 @@ std::string difference_text(const std::string& mine, const std::string& theirs) 
     if (a.size() == b.size() && a.size() > 4) {
         for (size_t i = 0; i < a.size(); ++i) {
             if (a[i] != b[i]) {
-                return fmt::format("value {} of {}: '{}' and '{}'", i + 1, a.size(), a[i], b[i]);
+                return fmt::format("value {} of {}: '{}' and '{}'", i + 1, a.size(),
+                                   printable_excerpt(a[i]), printable_excerpt(b[i]));
             }
         }
     }
-    return fmt::format("'{}' and '{}'", mine, theirs);
+    // Each side shortened: a damaged part's identity can hold text of any length.
+    return fmt::format("'{}' and '{}'", printable_excerpt(mine, 80), printable_excerpt(theirs, 80));
 }
 
 void check_same_render(const std::vector<PartInfo>& parts) {
