@@ -20,6 +20,7 @@
 
 #include "child_process.hpp"
 #include "fuzz_rng.hpp"
+#include "json_mutation.hpp"
 #include "output/tiled/tile_store.hpp"
 #include "test_files.hpp"
 
@@ -269,6 +270,39 @@ TEST_F(TileStoreTest, ADamagedRenderJsonIsAOneLineErrorNamingIt) {
     fs::remove(manifest);
     ASSERT_EQ(::mkfifo(manifest.c_str(), 0600), 0);
     EXPECT_THROW(open(), std::runtime_error) << "a FIFO is refused, not waited on";
+}
+
+// render.json mutated as a person, a disk or a hostile file might (deep nesting, duplicate keys,
+// huge numbers, wrong types, truncation, stray bytes): resuming either takes a store whose
+// identity still matches or refuses in one short line, never a crash or the JSON library's text.
+TEST(FuzzTileStoreManifest, SeededCasesResumeOrRefuseInOneLine) {
+    const test::TempDir temp("fgr_tile_store_fuzz");
+    const fs::path store = temp.path() / "out.png.fgr-tiles";
+    const fs::path output = temp.path() / "out.png";
+    const nlohmann::json identity = {{"scene", "mandelbulb"},
+                                     {"samples", 4},
+                                     {"seed", 0},
+                                     {"size", "64x48"},
+                                     {"view", "eye 0 0 3 target 0 0 0 up 0 1 0 fov 45"},
+                                     {"tiles", "16 rows a band, 64 columns a tile, 4 padding"}};
+    TileStore(store, identity, false, output);
+    const std::string written = test::read_file(store / "render.json");
+    const uint64_t cases = test::fuzz_case_count(), base = test::fuzz_base_seed(20261129);
+    for (uint64_t i = 0; i < cases; ++i) {
+        const uint64_t seed = base + i;
+        test::FuzzRng rng(seed);
+        std::string text = written;
+        test::mutate_document(text, rng, 1 + int(rng.below(3)));
+        test::write_text(store / "render.json", text);
+        try {
+            TileStore(store, identity, true, output);
+        } catch (const std::runtime_error& error) {
+            const std::string message = error.what();
+            ASSERT_EQ(message.find('\n'), std::string::npos) << "seed " << seed << ": " << message;
+            ASSERT_LT(message.size(), 400u) << "seed " << seed << ": " << message.substr(0, 400);
+            ASSERT_EQ(message.find("json.exception"), std::string::npos) << "seed " << seed;
+        }
+    }
 }
 
 }  // namespace
