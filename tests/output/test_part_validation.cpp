@@ -532,8 +532,8 @@ TEST(FuzzPartFile, DamagedPartFilesAreMergedOrRefused) {
         if (how != 0) {
             for (int n = rng.range(1, 8); n > 0 && !bytes.empty(); --n) {
                 uint8_t& byte = bytes[rng.below(bytes.size())];
-                byte =
-                    rng.chance(0.5) ? byte ^ uint8_t(1u << rng.below(8)) : uint8_t(rng.below(256));
+                byte = static_cast<uint8_t>(rng.chance(0.5) ? byte ^ (1u << rng.below(8))
+                                                            : rng.below(256));
             }
         }
         // A new file each time: truncating one that holds data makes ext4 flush it on close.
@@ -582,8 +582,8 @@ TEST(FuzzMergeFrames, DamagedFramesAreReadOrRefused) {
         if (how != 0) {
             for (int n = rng.range(1, 8); n > 0 && !bytes.empty(); --n) {
                 uint8_t& byte = bytes[rng.below(bytes.size())];
-                byte =
-                    rng.chance(0.5) ? byte ^ uint8_t(1u << rng.below(8)) : uint8_t(rng.below(256));
+                byte = static_cast<uint8_t>(rng.chance(0.5) ? byte ^ (1u << rng.below(8))
+                                                            : rng.below(256));
             }
         }
         // A new file each time: truncating one that holds data makes ext4 flush it on close.
