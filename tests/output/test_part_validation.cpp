@@ -132,6 +132,25 @@ void rewrite_part_header(const fs::path& path, const std::function<void(json&)>&
     fs::rename(temporary, path);
 }
 
+// `sound` as a disk or a transfer might damage it, written to `damaged`: cut short, bytes flipped
+// or replaced, or both. A new file each time: truncating one that holds data makes ext4 flush it
+// on close.
+void write_damaged_copy(const std::vector<uint8_t>& sound, const fs::path& damaged,
+                        test::FuzzRng& rng) {
+    std::vector<uint8_t> bytes = sound;
+    const int how = rng.below(3);
+    if (how != 1) bytes.resize(rng.below(bytes.size()));
+    if (how != 0) {
+        for (int n = rng.range(1, 8); n > 0 && !bytes.empty(); --n) {
+            uint8_t& byte = bytes[rng.below(bytes.size())];
+            byte = static_cast<uint8_t>(rng.chance(0.5) ? byte ^ (1u << rng.below(8))
+                                                        : rng.below(256));
+        }
+    }
+    fs::remove(damaged);
+    test::write_bytes(damaged, bytes);
+}
+
 // One line (a trailing newline aside).
 bool one_line(const std::string& text) {
     return text.substr(0, text.find_last_not_of('\n') + 1).find('\n') == std::string::npos;
@@ -526,19 +545,7 @@ TEST(FuzzPartFile, DamagedPartFilesAreMergedOrRefused) {
     for (std::uint64_t i = 0; i < cases; ++i) {
         const std::uint64_t seed = base + i;
         test::FuzzRng rng(seed);
-        std::vector<uint8_t> bytes = sound;
-        const int how = rng.below(3);
-        if (how != 1) bytes.resize(rng.below(bytes.size()));
-        if (how != 0) {
-            for (int n = rng.range(1, 8); n > 0 && !bytes.empty(); --n) {
-                uint8_t& byte = bytes[rng.below(bytes.size())];
-                byte = static_cast<uint8_t>(rng.chance(0.5) ? byte ^ (1u << rng.below(8))
-                                                            : rng.below(256));
-            }
-        }
-        // A new file each time: truncating one that holds data makes ext4 flush it on close.
-        fs::remove(damaged);
-        test::write_bytes(damaged, bytes);
+        write_damaged_copy(sound, damaged, rng);
         try {
             const MergePlan plan = plan_merge({top, read_part_info(damaged)});
             ++planned;
@@ -576,19 +583,7 @@ TEST(FuzzMergeFrames, DamagedFramesAreReadOrRefused) {
     for (std::uint64_t i = 0; i < cases; ++i) {
         const std::uint64_t seed = base + i;
         test::FuzzRng rng(seed);
-        std::vector<uint8_t> bytes = sound;
-        const int how = rng.below(3);
-        if (how != 1) bytes.resize(rng.below(bytes.size()));
-        if (how != 0) {
-            for (int n = rng.range(1, 8); n > 0 && !bytes.empty(); --n) {
-                uint8_t& byte = bytes[rng.below(bytes.size())];
-                byte = static_cast<uint8_t>(rng.chance(0.5) ? byte ^ (1u << rng.below(8))
-                                                            : rng.below(256));
-            }
-        }
-        // A new file each time: truncating one that holds data makes ext4 flush it on close.
-        fs::remove(damaged);
-        test::write_bytes(damaged, bytes);
+        write_damaged_copy(sound, damaged, rng);
         try {
             const Image8 image = read_png(damaged);
             ASSERT_EQ(image.rgb.size(), size_t(image.width) * size_t(image.height) * 3)
