@@ -159,6 +159,12 @@ struct Frame {
     std::vector<float> normal;
     std::vector<float> alpha;
     std::vector<float> foreground;
+    // Path mode: per pixel (row-major) the samples it received, which differ between pixels under
+    // adaptive sampling, and the estimated variance of the pixel's linear RGB estimate (of the
+    // mean over its samples, not of one sample; 3 floats a pixel), which guides adaptive sampling
+    // and the denoiser. Empty where a mode does not estimate them.
+    std::vector<float> samples_per_pixel;
+    std::vector<float> variance;
     std::optional<LaneStats> lane_stats;  // path mode built with stats
     std::optional<IfsLevels> ifs_levels;  // IFS scenes in the shaded mode
     // Render mode "brute" built with stats: inside tests per pixel, all passes of this frame.
