@@ -107,8 +107,14 @@ struct ModeOptions {
     bool no_mis = false;
     bool no_scene_lights = false;
     uint32_t seed = 0;
+    bool denoise = false;  // --denoise (render, video; the viewer's toggle starts on)
 };
 void add_mode_options(CLI::App* command, ModeOptions& options);
+// --denoise, in the path tracer's group (render, video and view).
+void add_denoise_option(CLI::App* command, bool& denoise, const std::string& what);
+// UsageError unless `mode` is the path tracer's (--denoise filters its noise, and no other mode
+// has any) and `samples` per pixel are at least 2 (the noise is measured from two halves).
+void check_denoise(RenderMode mode, int samples);
 // The mode to render `scene` in: --mode, else the scene's own; UsageError for an unknown name or
 // a mode the scene cannot render in (check_mode_supported).
 RenderMode chosen_mode(const ModeOptions& options, const Scene& scene);

@@ -218,6 +218,22 @@ void add_mode_options(CLI::App* command, ModeOptions& options) {
     command->add_option("--seed", options.seed, "noise pattern of the path tracer")->group(path);
 }
 
+void add_denoise_option(CLI::App* command, bool& denoise, const std::string& what) {
+    command->add_flag("--denoise", denoise, what)->group("Path tracing (--mode path)");
+}
+
+void check_denoise(RenderMode mode, int samples) {
+    if (mode != RenderMode::Path) {
+        throw UsageError(fmt::format(
+            "--denoise is for the path tracer (--mode path): the {} mode's image has no noise "
+            "to filter",
+            render_mode_name(mode)));
+    }
+    if (samples < 2) {
+        throw UsageError("--denoise needs at least 2 samples per pixel (--spp 2 or more)");
+    }
+}
+
 RenderMode chosen_mode(const ModeOptions& options, const Scene& scene) {
     if (!options.mode) return scene.default_mode;
     try {

@@ -23,6 +23,7 @@
 #include "distributed/cluster.hpp"
 #include "distributed/frame_farm.hpp"
 #include "distributed/seed_split.hpp"
+#include "output/denoised_frame.hpp"
 #include "output/still_image.hpp"
 #include "output/tiled/streaming_image.hpp"
 #include "output/tiled/tiled_still.hpp"
@@ -137,6 +138,7 @@ void check_render_options(const RenderOptions& options) {
         if (part_render_wanted(options)) {
             throw UsageError("--part and --tile are for one SCENE, not --all");
         }
+        if (options.mode.denoise) throw UsageError("--denoise is for one SCENE, not --all");
         return;
     }
     if (options.scene.empty()) throw UsageError("render needs a SCENE (see `fgr list`) or --all");
@@ -157,6 +159,11 @@ void check_render_options(const RenderOptions& options) {
     if (!options.aovs.empty() && !exr) throw UsageError("--aov needs an .exr output");
     if (exr && options.bit_depth != 8) throw UsageError("--bit-depth is for PNG and TIFF output");
     if (!part_render_wanted(options) && tiled_render_wanted(options)) check_tiled_options(options);
+    if (options.mode.denoise && (part_render_wanted(options) || tiled_render_wanted(options))) {
+        throw UsageError(
+            "--denoise filters the whole image at once: not with a tiled render (--tile-size, "
+            "over 16 Mpx), --part or --tile (denoise the merged image's EXR instead)");
+    }
 }
 
 FrameRequest default_request(const Scene& scene, const RenderOptions& options) {
@@ -342,6 +349,28 @@ std::function<void(long, long)> still_progress(DelayedProgress& progress,
     };
 }
 
+// `request` rendered as render_still renders it, in two halves of its samples for the variance
+// the denoiser needs (render_with_variance), then denoised (denoise_frame; its time is part of
+// render_ms and printed as denoise_ms).
+Frame render_denoised(const Scene& scene, const FrameRequest& request, const ComputeDevice& device,
+                      ProgramCache& cache, const StillSettings& settings) {
+    check_denoise(settings.mode, request.samples);
+    PrecisionRenderers renderers(device, cache, scene, still_switches(device, settings));
+    Frame frame = render_with_variance(request, [&](const FrameRequest& half) {
+        Frame rendered =
+            choose_still_renderer(renderers, scene, half, device, settings).render(half);
+        check_finite_frame(scene, rendered);
+        return rendered;
+    });
+    const auto started = std::chrono::steady_clock::now();
+    denoise_frame(frame, display_transform(scene, request.params), DenoiseSettings{});
+    const double denoise_ms = elapsed_ms(started);
+    frame.render_ms += denoise_ms;
+    fmt::print("denoise_ms {:.1f} ({})\n", denoise_ms,
+               denoise_method_name(DenoiseSettings{}.method));
+    return frame;
+}
+
 // Renders `request` (render_still: the kernel, float or double), writes the file, prints the
 // figures; a render of more than a moment shows its progress on stderr.
 void render_to_file(const Scene& scene, const FrameRequest& request, const ComputeDevice& device,
@@ -354,7 +383,8 @@ void render_to_file(const Scene& scene, const FrameRequest& request, const Compu
     reported.on_progress = still_progress(progress, reported);
     Frame frame;
     try {
-        frame = render_still(scene, reported, device, cache, job.settings);
+        frame = options.mode.denoise ? render_denoised(scene, reported, device, cache, job.settings)
+                                     : render_still(scene, reported, device, cache, job.settings);
     } catch (...) {
         progress.finish();
         throw;
@@ -507,6 +537,10 @@ void add_frame_options(CLI::App* command, RenderOptions& options, int max_side) 
                       "coverage as alpha with the background removed: an RGBA PNG (straight "
                       "alpha), or an EXR's A channel (colour premultiplied)");
     add_mode_options(command, options.mode);
+    add_denoise_option(command, options.mode.denoise,
+                       "denoise the path-traced image, guided by its albedo, normal and depth "
+                       "(--mode path; the samples are rendered in two halves to measure the "
+                       "noise); an EXR keeps the raw image as the layer raw.R/G/B");
     add_prepass_option(command, options.prepass);
     command->add_option("--effects", options.effect_changes,
                         "change the scene's effects, e.g. +shadows,-ambient_occlusion");
@@ -594,6 +628,10 @@ int command_render(const RenderOptions& typed_options) {
     if (view) warn_if_scene_changed(*view, scene);
     FrameRequest request = scene_request(scene, options);
     request.view = choose_view(scene, options);
+    if (options.mode.denoise) {
+        const RenderMode mode = chosen_mode(options.mode, scene);
+        check_denoise(mode, still_samples(mode, options.samples));
+    }
     const ViewFile rendered_view = view_of_render(scene, request, options);
     options.embedded_view = view_file_text(rendered_view);
     const ComputeDevice device = device_opening.take();
@@ -612,6 +650,9 @@ int command_render(const RenderOptions& typed_options) {
                                 rendered_view);
     }
     if (Cluster& cluster = Cluster::current(); !cluster.alone()) {
+        if (options.mode.denoise) {
+            throw UsageError("--denoise is for renders of one process (without mpirun)");
+        }
         return saved_view_after(
             render_across_ranks(cluster, scene, request, device, cache, options), options,
             rendered_view, cluster.coordinator());

@@ -25,10 +25,12 @@
 #include "device/program_cache.hpp"
 #include "distributed/cluster.hpp"
 #include "distributed/frame_farm.hpp"
+#include "output/denoised_frame.hpp"
 #include "output/video/video_encoder.hpp"
 #include "output/video/video_frames.hpp"
 #include "output/video/video_render.hpp"
 #include "output/video/video_timing.hpp"
+#include "render/sample_budget.hpp"
 #include "scene/scene_json.hpp"
 #include "util/interruption.hpp"
 #include "util/timing.hpp"
@@ -236,6 +238,10 @@ int command_video(const VideoOptions& typed_options) {
     // video_timing bounds the count by kMaxVideoFrames, well inside an int.
     const int frame_count = static_cast<int>(timing.frame_count());
     std::tie(frames.first, frames.last) = frames_to_render(options, frame_count);
+    if (frame_options.mode.denoise) {
+        const RenderMode mode = chosen_mode(frame_options.mode, scene);
+        check_denoise(mode, still_samples(mode, frame_options.samples));
+    }
     const StillJob job = still_job(scene, scene_request(scene, frame_options), frame_options);
     const ComputeDevice device = open_requested_device(frame_options.device);
     check_render_cost(scene, job, frame_options, device.info, double(frames.count()),
@@ -297,8 +303,17 @@ int command_video(const VideoOptions& typed_options) {
     try {
         result = render_video(
             frames, job.request,
-            [&](const FrameRequest& request) { return renderer.render(request); }, output, dispatch,
-            hooks);
+            [&](const FrameRequest& request) {
+                if (!frame_options.mode.denoise) return renderer.render(request);
+                // Each frame on its own: two halves of its samples for the noise, then filtered.
+                Frame frame = render_with_variance(
+                    request, [&](const FrameRequest& half) { return renderer.render(half); });
+                if (!frame.cancelled) {
+                    denoise_frame(frame, output.still.display, DenoiseSettings{});
+                }
+                return frame;
+            },
+            output, dispatch, hooks);
     } catch (const std::runtime_error&) {
         if (!dispatch.lost().empty()) throw RuntimeFailure(dispatch.lost());
         if (!interrupted()) throw;

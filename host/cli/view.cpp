@@ -82,6 +82,9 @@ void add_view_command(CLI::App& app, ViewCommandOptions& options) {
                          "while the view is finer than float resolves (flying in deep), per frame");
     add_device_options(view, viewer.device, viewer.packet_width);
     add_mode_options(view, options.mode);
+    add_denoise_option(view, options.mode.denoise,
+                       "start with the path-traced image shown denoised (the panel's denoise "
+                       "checkbox; N toggles it)");
     view->add_option("--view", options.view,
                      "open a view: a .fgrview.json file (as Ctrl+S saves it) or an image fgr "
                      "wrote (it carries its view): its scene, camera, parameters, effects, mode "
@@ -120,6 +123,7 @@ int command_view(ViewCommandOptions& options) {
         }
     }
     viewer.path = path_settings_from(options.mode);
+    viewer.denoise = options.mode.denoise;
     viewer.environment = environment_choice_from(options.mode);
     if (viewer.environment.kind == EnvironmentKind::File) {
         // A bad file is refused before a window opens.

@@ -72,6 +72,7 @@ void apply_mode(ModeOptions& mode, const ViewFile& view, const TypedOptions& typ
     if (!typed.has("turbidity")) mode.turbidity = path.turbidity;
     if (!typed.has("sun-elevation")) mode.sun_elevation = path.sun_elevation;
     if (!typed.has("sun-azimuth")) mode.sun_azimuth = path.sun_azimuth;
+    if (!typed.has("denoise")) mode.denoise = path.denoise;
 }
 
 // The view's parameters as --set takes them, then those typed, which so win.
@@ -246,6 +247,7 @@ ViewFile view_of_render(const Scene& scene, const FrameRequest& request,
         path.turbidity = choices.turbidity;
         path.sun_elevation = choices.sun_elevation;
         path.sun_azimuth = choices.sun_azimuth;
+        path.denoise = choices.denoise;
         view.path = path;
     }
     return view;

@@ -136,6 +136,10 @@ std::vector<ExrLayer> exr_layers(const Frame& frame, const Aovs& aovs, RowBand b
         layers.push_back(std::move(depth));
     }
     if (aovs.alpha) layers.push_back({"", {"A"}, band_values(frame, frame.alpha, 1, band)});
+    if (!frame.raw_linear.empty()) {
+        require_layer(frame, frame.raw_linear, 3, "raw");
+        layers.push_back({"raw", {"R", "G", "B"}, band_values(frame, frame.raw_linear, 3, band)});
+    }
     return layers;
 }
 

@@ -57,7 +57,8 @@ void rgba8_rows(const Frame& frame, const DisplayTransform& display, RowBand ban
 void rgba16_linear_rows(const Frame& frame, float exposure, RowBand band, std::span<uint16_t> out);
 
 // The EXR layers of the band: R, G, B (the linear colour as rendered; the premultiplied
-// foreground when aovs.alpha), then albedo.R/G/B, normal.X/Y/Z, depth.Z and A as `aovs` asks.
+// foreground when aovs.alpha), then albedo.R/G/B, normal.X/Y/Z, depth.Z and A as `aovs` asks,
+// and raw.R/G/B, the colour as rendered, when R, G, B are denoised (Frame::raw_linear).
 std::vector<ExrLayer> exr_layers(const Frame& frame, const Aovs& aovs, RowBand band);
 
 }  // namespace fgr

@@ -165,6 +165,9 @@ struct Frame {
     // and the denoiser. Empty where a mode does not estimate them.
     std::vector<float> samples_per_pixel;
     std::vector<float> variance;
+    // The linear colour as rendered, when `linear` holds a denoised image of it (3 floats a
+    // pixel); empty otherwise.
+    std::vector<float> raw_linear;
     std::optional<LaneStats> lane_stats;  // path mode built with stats
     std::optional<IfsLevels> ifs_levels;  // IFS scenes in the shaded mode
     // Render mode "brute" built with stats: inside tests per pixel, all passes of this frame.

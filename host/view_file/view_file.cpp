@@ -295,7 +295,7 @@ void read_path(const json& document, ViewFile& view) {
         path,
         {"seed", "bounces", "roulette_depth", "radiance_clamp", "light_sampling", "mis",
          "scene_lights", "environment", "environment_rotation", "environment_intensity",
-         "turbidity", "sun_elevation", "sun_azimuth"},
+         "turbidity", "sun_elevation", "sun_azimuth", "denoise"},
         "\"path\"");
     ViewPathChoices choices;
     choices.seed = static_cast<uint32_t>(integer_in(path, "seed", "path", 0, UINT32_MAX, 0));
@@ -306,6 +306,7 @@ void read_path(const json& document, ViewFile& view) {
     choices.light_sampling = bool_from(path, "light_sampling", "path", true);
     choices.mis = bool_from(path, "mis", "path", true);
     choices.scene_lights = bool_from(path, "scene_lights", "path", true);
+    choices.denoise = bool_from(path, "denoise", "path", false);
     choices.environment = string_from(path, "environment", "path", false, "sky");
     if (choices.environment.empty()) fail("\"path.environment\": must not be empty");
     choices.environment_rotation = float_in(path, "environment_rotation", "path", -1e6, 1e6, 0.0f);
@@ -362,6 +363,7 @@ json path_json(const ViewPathChoices& path) {
     if (path.turbidity) object["turbidity"] = float_json(*path.turbidity);
     if (path.sun_elevation) object["sun_elevation"] = float_json(*path.sun_elevation);
     if (path.sun_azimuth) object["sun_azimuth"] = float_json(*path.sun_azimuth);
+    if (path.denoise) object["denoise"] = true;
     return object;
 }
 
@@ -581,8 +583,9 @@ std::string view_summary(const ViewFile& view) {
         text += fmt::format("--set {}\n", parameter_assignment(parameter));
     }
     if (view.path) {
-        text += fmt::format("path seed {} bounces {} environment {}\n", view.path->seed,
-                            view.path->bounces, view.path->environment);
+        text += fmt::format("path seed {} bounces {} environment {}{}\n", view.path->seed,
+                            view.path->bounces, view.path->environment,
+                            view.path->denoise ? " denoised" : "");
     }
     return text;
 }

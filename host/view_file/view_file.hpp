@@ -45,6 +45,7 @@ struct ViewPathChoices {
     std::optional<float> turbidity;
     std::optional<float> sun_elevation;
     std::optional<float> sun_azimuth;
+    bool denoise = false;  // the image denoised (`--denoise`), the raw estimate kept in EXR files
     bool operator==(const ViewPathChoices&) const = default;
 };
 

@@ -48,6 +48,8 @@ std::optional<ViewerCommand> command_for_key(SDL_Scancode key, bool ctrl) {
             return ViewerCommand::ToggleFullscreen;
         case SDL_SCANCODE_B:
             return ViewerCommand::ToggleBrowser;
+        case SDL_SCANCODE_N:
+            return ViewerCommand::ToggleDenoise;
         default:
             return std::nullopt;
     }

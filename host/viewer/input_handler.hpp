@@ -30,6 +30,7 @@ enum class ViewerCommand {
     TogglePanel,
     ToggleFullscreen,
     ToggleBrowser,
+    ToggleDenoise,
 };
 
 // The command bound to pressing `key` (`ctrl`: with Ctrl held); none for unbound keys and for the

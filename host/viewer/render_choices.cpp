@@ -12,6 +12,7 @@ RenderChoices::RenderChoices(const ViewerOptions& options)
       mode(options.mode),
       projection(options.projection),
       path(options.path),
+      denoise(options.denoise),
       environment(options.environment) {
     quality.target_ms = options.target_ms;
     quality.sample_cap = options.sample_cap;

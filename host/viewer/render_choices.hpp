@@ -29,7 +29,8 @@ struct RenderChoices {
     Precision precision = Precision::Auto;
     std::optional<RenderMode> mode;  // unset: each scene's own
     Projection projection;
-    PathSettings path;  // path mode's settings; the environment is prepared per scene
+    PathSettings path;     // path mode's settings; the environment is prepared per scene
+    bool denoise = false;  // path mode: show the accumulating image denoised
     EnvironmentChoice environment;
 };
 

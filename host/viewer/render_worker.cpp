@@ -7,7 +7,10 @@
 #include <algorithm>
 #include <cmath>
 #include <glm/geometric.hpp>
+#include <span>
 
+#include "denoise/denoise.hpp"
+#include "output/denoised_frame.hpp"
 #include "output/still_image.hpp"
 #include "render/sample_budget.hpp"
 #include "scene/parameters.hpp"
@@ -366,6 +369,8 @@ void RenderWorker::refine(Renderer& renderer, const ViewState& state, int sample
                  renderer.switches().double_precision, state.generation});
         return;
     }
+    const bool denoising = state.denoise && state.mode == RenderMode::Path;
+    if (denoising) accumulate_features(frame, sample == 0);
     if (sample == 0) {
         ifs_depth_reached_ = frame.ifs_levels ? frame.ifs_levels->deepest : -1;
         accumulation_ = std::move(frame.linear);
@@ -377,11 +382,66 @@ void RenderWorker::refine(Renderer& renderer, const ViewState& state, int sample
     }
     for (size_t i = 0; i < accumulation_.size(); ++i) accumulation_[i] += frame.linear[i];
     ++accumulated_samples_;
-    publish({display_image(*state.scene, state.params, accumulation_, state.width, state.height,
-                           1.0f / static_cast<float>(accumulated_samples_)),
-             1.0f, accumulated_samples_, frame.render_ms,
+    const float inverse = 1.0f / static_cast<float>(accumulated_samples_);
+    Image8 image = denoising ? denoised_preview(state)
+                             : display_image(*state.scene, state.params, accumulation_, state.width,
+                                             state.height, inverse);
+    publish({std::move(image), 1.0f, accumulated_samples_, frame.render_ms,
              samples_per_second(state.width, state.height, frame.render_ms),
              renderer.switches().double_precision, state.generation});
+}
+
+void RenderWorker::accumulate_features(const Frame& frame, bool first) {
+    const auto add = [first](std::vector<float>& sum, const std::vector<float>& values) {
+        if (first || sum.size() != values.size()) {
+            sum = values;
+        } else {
+            for (size_t i = 0; i < sum.size(); ++i) sum[i] += values[i];
+        }
+    };
+    std::vector<float> squares(frame.linear.size());
+    for (size_t i = 0; i < squares.size(); ++i) squares[i] = frame.linear[i] * frame.linear[i];
+    add(squares_, squares);
+    add(albedo_sum_, frame.albedo);
+    add(normal_sum_, frame.normal);
+    add(alpha_sum_, frame.alpha);
+    if (first) first_depth_ = frame.depth;
+}
+
+Image8 RenderWorker::denoised_preview(const ViewState& state) {
+    // Each sample is an independent estimate, so the variance of their mean is the samples'
+    // variance over their count.
+    const float n = static_cast<float>(accumulated_samples_);
+    const size_t values = accumulation_.size();
+    std::vector<float> mean(values), variance(values);
+    for (size_t i = 0; i < values; ++i) {
+        mean[i] = accumulation_[i] / n;
+        const float spread = std::max(squares_[i] / n - mean[i] * mean[i], 0.0f);
+        variance[i] = spread / (n - 1.0f);
+    }
+    const auto averaged = [n](const std::vector<float>& sum) {
+        std::vector<float> out(sum.size());
+        for (size_t i = 0; i < sum.size(); ++i) out[i] = sum[i] / n;
+        return out;
+    };
+    const std::vector<float> albedo = averaged(albedo_sum_), normal = averaged(normal_sum_),
+                             alpha = averaged(alpha_sum_);
+    const size_t pixels = size_t(state.width) * size_t(state.height);
+    const auto plane = [pixels](const std::vector<float>& sum, size_t per_pixel) {
+        return sum.size() == pixels * per_pixel ? std::span<const float>(sum)
+                                                : std::span<const float>();
+    };
+    try {
+        const std::vector<float> denoised =
+            denoise(DenoiseInput{state.width, state.height, mean, variance, plane(albedo, 3),
+                                 plane(normal, 3), plane(first_depth_, 1), plane(alpha, 1)},
+                    DenoiseSettings{DenoiseMethod::Atrous, 0});
+        return display_image(*state.scene, state.params, denoised, state.width, state.height, 1.0f);
+    } catch (const std::invalid_argument& error) {
+        // Planes that do not match (a frame without them): the raw image, said once.
+        spdlog::warn("denoising the preview: {}", error.what());
+        return display_image(*state.scene, state.params, mean, state.width, state.height, 1.0f);
+    }
 }
 
 void RenderWorker::take_screenshot(const ScreenshotRequest& request) {
@@ -402,7 +462,16 @@ void RenderWorker::take_screenshot(const ScreenshotRequest& request) {
         if (failures_.count({&scene, still.settings.effects, false, still.settings.mode})) {
             return not_taken(kNoKernel);  // the view's own build failed: no second try
         }
-        const Frame frame = render_still(scene, still.request, device_, cache_, still.settings);
+        Frame frame;
+        if (view.path && view.path->denoise && view.samples >= 2) {
+            // As `fgr render --denoise` renders it: two halves of the samples, then filtered.
+            frame = render_with_variance(still.request, [&](const FrameRequest& half) {
+                return render_still(scene, half, device_, cache_, still.settings);
+            });
+            denoise_frame(frame, still.output.display, DenoiseSettings{});
+        } else {
+            frame = render_still(scene, still.request, device_, cache_, still.settings);
+        }
         write_still(request.file, frame, still.output);
         spdlog::info("screenshot: wrote {} ({}x{}, {} spp, {:.0f} ms)", request.file.string(),
                      view.width, view.height, still.request.samples, frame.render_ms);

@@ -50,6 +50,9 @@ struct ViewState {
     RenderMode mode = RenderMode::Shaded;
     PathSettings path;         // mode Path: bounces, strategies, the environment (null: the sky)
     bool interactive = false;  // the view is changing: preview frames, no refinement
+    // Mode Path: the accumulating image is shown denoised (denoise/denoise.hpp, the a-trous
+    // filter), guided by the samples' variance and the first hit's albedo, normal and depth.
+    bool denoise = false;
     uint64_t generation = 0;
     bool operator==(const ViewState&) const = default;
 };
@@ -167,6 +170,10 @@ private:
     std::vector<float> preview_start_hints(const Renderer& renderer, const ViewState& state,
                                            int width, int height) const;
     void refine(Renderer& renderer, const ViewState& state, int sample);
+    // The denoised preview's sums, added from one more sample (`first`: sample 0, which starts
+    // them), and the image of the samples so far, denoised.
+    void accumulate_features(const Frame& frame, bool first);
+    Image8 denoised_preview(const ViewState& state);
     void take_screenshot(const ScreenshotRequest& request);
     void probe_camera(Renderer& renderer, const ViewState& state);
     void publish(DisplayFrame frame);
@@ -190,6 +197,9 @@ private:
     int accumulated_samples_ = 0;
     int ifs_depth_reached_ = -1;       // of the last frame that reported it (sample 0 or a preview)
     std::vector<float> accumulation_;  // sum of linear RGB over the samples
+    // For the denoised preview: sums of the squares of linear RGB, of albedo, normal and alpha
+    // over the samples, and sample 0's depth (empty unless the state denoises).
+    std::vector<float> squares_, albedo_sum_, normal_sum_, alpha_sum_, first_depth_;
     // The last preview's depths and what they were rendered with: the next preview starts its
     // rays from them, reprojected (render/prepass/reprojection.hpp), when only the camera moved.
     struct LastPreview {

@@ -54,6 +54,7 @@ ViewFile view_of_state(const ViewState& state, const EnvironmentChoice& environm
     // What lit the frames: the scene's own environment when the user chose none.
     if (state.mode == RenderMode::Path) {
         view.path = path_choices_of(state.path, with_scene_environment(environment, scene));
+        view.path->denoise = state.denoise;
     }
     return view;
 }

@@ -35,9 +35,11 @@ struct ViewerOptions {
     Precision precision = Precision::Auto;  // float, double or per view; the panel changes it
     std::optional<RenderMode> mode;         // shaded or path; default: each scene's own
     PathSettings path;                      // path mode's settings (its environment unset)
-    EnvironmentChoice environment;          // what lights path-traced scenes; the panel changes it
-    std::vector<std::string> assignments;   // --set id=value for the first scene
-    std::string effect_changes;             // --effects for the first scene
+    bool denoise =
+        false;  // path mode's accumulating image shown denoised; the panel and N toggle it
+    EnvironmentChoice environment;         // what lights path-traced scenes; the panel changes it
+    std::vector<std::string> assignments;  // --set id=value for the first scene
+    std::string effect_changes;            // --effects for the first scene
     std::optional<std::filesystem::path> camera_path_file;  // load (and list) a recorded path
     std::string path_name;  // --path: the first scene's path P plays (default: its first)
     std::optional<ViewOverride> start_view;  // --eye, --target, --up, --fov: the first view

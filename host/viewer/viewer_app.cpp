@@ -189,6 +189,7 @@ ViewState ViewerApp::current_state() {
     state.mode = choices_.mode_for(scenes_.current());
     if (state.mode == RenderMode::Path) {
         state.path = choices_.path;
+        state.denoise = choices_.denoise;
         std::string fallback_reason;
         state.path.environment =
             environments_.prepare(scenes_.current(), choices_.environment, &fallback_reason);
@@ -349,6 +350,9 @@ void ViewerApp::run_command(ViewerCommand command) {
             break;
         case ViewerCommand::ToggleBrowser:
             browser_.toggle();
+            break;
+        case ViewerCommand::ToggleDenoise:
+            choices_.denoise = !choices_.denoise;
             break;
     }
 }

@@ -46,6 +46,7 @@ const std::pair<const char*, const char*> kKeyBindings[] = {
     {"Tab", "show / hide the panel"},
     {"F11", "fullscreen"},
     {"B", "formula browser: thumbnails of the scenes, search"},
+    {"N", "path mode: denoise the accumulating image on or off"},
     {"H or F1", "this help"},
     {"Escape", "quit"}};
 
@@ -432,6 +433,12 @@ void ViewerPanel::draw_mode_section() {
         ImGui::SetTooltip(
             "the scene's own lights shine besides the environment (under the sky its sun takes "
             "the key light's place); off: the environment alone, as a furnace test wants");
+    }
+    ImGui::Checkbox("denoise (N)", &choices_.denoise);
+    if (ImGui::IsItemHovered()) {
+        ImGui::SetTooltip(
+            "show the accumulating image denoised, guided by its albedo, normal and depth (an "
+            "a-trous filter; F12 and saved views denoise with --denoise's filter)");
     }
 }
 

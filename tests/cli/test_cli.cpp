@@ -4,7 +4,9 @@
 // size and print render_ms and hits.
 
 #include <ImfChannelList.h>
+#include <ImfFrameBuffer.h>
 #include <ImfHeader.h>
+#include <ImfInputFile.h>
 #include <ImfRgbaFile.h>
 #include <gtest/gtest.h>
 #include <sys/stat.h>
@@ -29,6 +31,7 @@
 
 #include "child_process.hpp"
 #include "cli/commands.hpp"
+#include "image/embedded_view.hpp"
 #include "image/hdr_io.hpp"
 #include "image/image_io.hpp"
 #include "test_files.hpp"
@@ -272,6 +275,19 @@ const std::vector<BadInput> kBadInputs = {
      {"turbidity", "sky"}},
     {"TurbidityOutOfRange", render_args({"--mode", "path", "--turbidity", "40"}), 2, {"turbidity"}},
     {"NegativeClamp", render_args({"--mode", "path", "--clamp", "-1"}), 2, {"clamp"}},
+    {"DenoiseOutsidePathMode",
+     render_args({"--mode", "shaded", "--denoise"}),
+     2,
+     {"--denoise", "path"}},
+    {"DenoiseOneSample",
+     render_args({"--mode", "path", "--denoise", "--spp", "1"}),
+     2,
+     {"--denoise", "2 samples"}},
+    {"DenoiseTiled",
+     render_args({"--mode", "path", "--denoise", "--tile-size", "64"}),
+     2,
+     {"--denoise", "tiled"}},
+    {"DenoiseAll", {"render", "--all", "-o", "{out}", "--denoise"}, 2, {"--denoise", "--all"}},
     {"AovWithPng", render_args({"--aov", "albedo"}), 2, {"aov", ".exr"}},
     {"UnknownAov", render_args({"--aov", "velocity"}), 2, {"velocity"}, "out.exr"},
     {"ZeroTimeLimit", render_args({"--time-limit", "0"}), 2, {"time-limit"}},
@@ -463,6 +479,41 @@ TEST_F(CliTest, PathModeWritesAnExrWithItsLayersAndStopsAtATimeLimit) {
     EXPECT_NE(limited.err.find("--time-limit"), std::string::npos) << limited;
     EXPECT_EQ(limited.out.find("samples_per_pixel 4096"), std::string::npos) << limited;
     EXPECT_TRUE(fs::exists(dir() / "limited.png"));
+}
+
+// --denoise: the EXR's R, G, B are the denoised image and raw.R/G/B the estimate as rendered,
+// beside the layers asked for, and the view the file carries says it was denoised.
+TEST_F(CliTest, DenoisedPathRenderKeepsTheRawImageInItsExr) {
+    const fs::path exr = dir() / "denoised.exr";
+    const RunResult result =
+        run({"render", "mandelbulb", "--mode", "path", "--spp", "4", "--denoise", "-o",
+             exr.string(), "--width", "24", "--height", "16", "--aov", "albedo,normal,depth"});
+    ASSERT_EQ(result.exit_code, 0) << result;
+    EXPECT_NE(result.out.find("samples_per_pixel 4\n"), std::string::npos) << result;
+    EXPECT_NE(result.out.find("denoise_ms"), std::string::npos) << result;
+    Imf::InputFile file(exr.string().c_str());
+    const auto read = [&](const char* name) {
+        std::vector<float> values(24 * 16);
+        Imf::FrameBuffer buffer;
+        buffer.insert(name, Imf::Slice(Imf::FLOAT, reinterpret_cast<char*>(values.data()),
+                                       sizeof(float), sizeof(float) * 24));
+        file.setFrameBuffer(buffer);
+        file.readPixels(0, 15);
+        return values;
+    };
+    for (const char* name : {"raw.R", "raw.G", "raw.B", "albedo.R", "normal.X", "depth.Z"}) {
+        ASSERT_NE(file.header().channels().findChannel(name), nullptr) << name;
+    }
+    const std::vector<float> denoised = read("G"), raw = read("raw.G");
+    double difference = 0.0;
+    for (size_t i = 0; i < raw.size(); ++i) {
+        ASSERT_TRUE(std::isfinite(denoised[i]) && std::isfinite(raw[i])) << i;
+        difference += std::fabs(denoised[i] - raw[i]);
+    }
+    EXPECT_GT(difference, 0.0) << "the denoised image is the raw one";
+    const std::optional<std::string> view = read_embedded_view(exr);
+    ASSERT_TRUE(view.has_value());
+    EXPECT_NE(view->find("\"denoise\": true"), std::string::npos) << *view;
 }
 
 // A scene with no DE renders by default in the brute mode, with its passes and inside tests

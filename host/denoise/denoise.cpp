@@ -1,0 +1,377 @@
+// SPDX-License-Identifier: Apache-2.0
+#include "denoise/denoise.hpp"
+
+#include <fmt/format.h>
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <cstddef>
+#include <functional>
+#include <stdexcept>
+#include <thread>
+
+#include "util/parallel_bands.hpp"
+
+namespace fgr {
+namespace {
+
+// Colour: Rousselle, Knaus and Zwicker's variance-cancelled distance ("Adaptive rendering with
+// non-local means filtering", SIGGRAPH Asia 2012, eq. 4): the squared difference less what the
+// two variances explain (alpha), over the variances scaled by k^2. kEpsilon only keeps 0/0 away:
+// with no variance any difference at all is an edge.
+// Rousselle et al. use k = 0.45 with variances from many samples; the variance here comes from
+// few (two halves, or the viewer's samples) and is noisier, so both filters take a wider k,
+// measured on path-traced fractals against 2048-sample references (docs/user-guide/denoising.md).
+constexpr float kColourAlpha = 1.0f;
+constexpr float kColourK = 2.0f;
+constexpr float kAtrousColourK = 4.0f;
+constexpr float kEpsilon = 1e-12f;
+// Features (squared differences over these squared): albedo and coverage in [0, 1], unit
+// normals, and depth relative to the nearer pixel's, per pixel of distance between the two.
+// Joint NL-means takes the smaller of its colour and feature weights where a-trous multiplies
+// them, so it measured best with albedo and normal weights half as wide (kNlMeansFeatureScale).
+constexpr float kSigmaAlbedo = 0.1f;
+constexpr float kSigmaNormal = 0.3f;
+constexpr float kSigmaAlpha = 0.1f;
+constexpr float kSigmaDepthPerPixel = 0.02f;
+constexpr float kNlMeansFeatureScale = 0.5f;
+constexpr float kSurfaceFactor = 1.0f / (kNlMeansFeatureScale * kNlMeansFeatureScale);
+// Joint NL-means: 15x15 window, 3x3 patches (Rousselle et al. 2013 use 21x21 and 7x7 for
+// offline renders; these keep a 640x480 still under a second on two cores).
+constexpr int kWindowRadius = 7;
+constexpr int kPatchRadius = 1;
+// A-trous: five passes of a 3x3 binomial kernel ([1 2 1] / 4 each way), taps 1, 2, 4, 8, 16
+// pixels apart. Dammertz et al. use the 5x5 B3 spline; the 3x3 kernel costs 9 taps a pass
+// instead of 25 and measured as well on our renders (the weights, not the kernel, shape the
+// result).
+constexpr int kAtrousPasses = 5;
+constexpr int kAtrousRadius = 1;
+constexpr std::array<float, 3> kKernel = {0.25f, 0.5f, 0.25f};
+
+// A pixel's features, each scaled by the inverse of its width so that the feature distance is a
+// plain sum of squares; absent features are 0 everywhere and so never differ.
+struct Guide {
+    std::array<float, 3> albedo{};
+    std::array<float, 3> normal{};
+    float alpha = 0.0f;
+    float depth = 0.0f;  // as given: < 0 where the camera ray missed
+};
+
+struct Planes {
+    int width = 0;
+    int height = 0;
+    std::vector<float> colour;    // 3 a pixel; 0 where invalid
+    std::vector<float> variance;  // 3 a pixel, >= 0; 0 where invalid
+    std::vector<unsigned char> valid;
+    std::vector<Guide> guides;
+    size_t index(int x, int y) const { return size_t(y) * size_t(width) + size_t(x); }
+};
+
+void check_plane(std::span<const float> plane, size_t pixels, int channels, const char* name,
+                 bool required) {
+    if (plane.empty() && !required) return;
+    if (plane.size() != pixels * size_t(channels)) {
+        throw std::invalid_argument(
+            fmt::format("denoise: the {} plane holds {} floats, not the {} of {} pixels x {}", name,
+                        plane.size(), pixels * size_t(channels), pixels, channels));
+    }
+}
+
+bool finite_at(std::span<const float> plane, size_t pixel, int channels) {
+    if (plane.empty()) return true;
+    for (int c = 0; c < channels; ++c) {
+        if (!std::isfinite(plane[pixel * size_t(channels) + size_t(c)])) return false;
+    }
+    return true;
+}
+
+Planes prepare(const DenoiseInput& input) {
+    if (input.width <= 0 || input.height <= 0) {
+        throw std::invalid_argument(
+            fmt::format("denoise: a {}x{} image has no pixels", input.width, input.height));
+    }
+    const size_t pixels = size_t(input.width) * size_t(input.height);
+    check_plane(input.colour, pixels, 3, "colour", true);
+    check_plane(input.variance, pixels, 3, "variance", true);
+    check_plane(input.albedo, pixels, 3, "albedo", false);
+    check_plane(input.normal, pixels, 3, "normal", false);
+    check_plane(input.depth, pixels, 1, "depth", false);
+    check_plane(input.alpha, pixels, 1, "alpha", false);
+    Planes planes{input.width,
+                  input.height,
+                  std::vector<float>(pixels * 3, 0.0f),
+                  std::vector<float>(pixels * 3, 0.0f),
+                  std::vector<unsigned char>(pixels, 0),
+                  std::vector<Guide>(pixels)};
+    for (size_t p = 0; p < pixels; ++p) {
+        const bool valid = finite_at(input.colour, p, 3) && finite_at(input.variance, p, 3) &&
+                           finite_at(input.albedo, p, 3) && finite_at(input.normal, p, 3) &&
+                           finite_at(input.depth, p, 1) && finite_at(input.alpha, p, 1);
+        planes.valid[p] = valid ? 1 : 0;
+        if (!valid) continue;
+        Guide& guide = planes.guides[p];
+        for (size_t c = 0; c < 3; ++c) {
+            planes.colour[3 * p + c] = input.colour[3 * p + c];
+            planes.variance[3 * p + c] = std::max(input.variance[3 * p + c], 0.0f);
+            if (!input.albedo.empty()) guide.albedo[c] = input.albedo[3 * p + c] / kSigmaAlbedo;
+            if (!input.normal.empty()) guide.normal[c] = input.normal[3 * p + c] / kSigmaNormal;
+        }
+        if (!input.alpha.empty()) guide.alpha = input.alpha[p] / kSigmaAlpha;
+        if (!input.depth.empty()) guide.depth = input.depth[p];
+    }
+    return planes;
+}
+
+// The variance of a few samples is itself noisy: averaged over the 3x3 pixels around (among the
+// valid ones whose camera rays met the surface, or missed it, alike), as SVGF prefilters it.
+std::vector<float> smoothed_variance(const Planes& planes) {
+    std::vector<float> out(planes.variance.size(), 0.0f);
+    const auto missed = [&](size_t p) { return planes.guides[p].depth < 0.0f; };
+    in_parallel_bands(size_t(planes.height), 16, [&](size_t first, size_t last) {
+        for (int y = int(first); y < int(last); ++y) {
+            for (int x = 0; x < planes.width; ++x) {
+                const size_t p = planes.index(x, y);
+                if (!planes.valid[p]) continue;
+                std::array<float, 3> sum{};
+                int count = 0;
+                for (int dy = -1; dy <= 1; ++dy) {
+                    for (int dx = -1; dx <= 1; ++dx) {
+                        const int qx = x + dx, qy = y + dy;
+                        if (qx < 0 || qy < 0 || qx >= planes.width || qy >= planes.height) continue;
+                        const size_t q = planes.index(qx, qy);
+                        if (!planes.valid[q] || missed(q) != missed(p)) continue;
+                        for (size_t c = 0; c < 3; ++c) sum[c] += planes.variance[3 * q + c];
+                        ++count;
+                    }
+                }
+                for (size_t c = 0; c < 3; ++c) out[3 * p + c] = sum[c] / float(count);
+            }
+        }
+    });
+    return out;
+}
+
+// Weights below exp(-kNegligible) are left out (under 1e-9 of the pixel's own).
+constexpr float kNegligible = 20.0f;
+
+// How unlike two pixels' features are, as an exponent (0 for equal ones, the weight is
+// exp(-exponent)); past kNegligible when one camera ray hit the surface and the other missed.
+// `distance` in pixels between them; `surface_factor` multiplies the albedo and normal terms.
+float feature_exponent(const Guide& p, const Guide& q, float distance, float surface_factor) {
+    if ((p.depth < 0.0f) != (q.depth < 0.0f)) return 2.0f * kNegligible;
+    float surface = 0.0f;
+    for (size_t c = 0; c < 3; ++c) {
+        const float da = p.albedo[c] - q.albedo[c], dn = p.normal[c] - q.normal[c];
+        surface += da * da + dn * dn;
+    }
+    const float dalpha = p.alpha - q.alpha;
+    float exponent = surface * surface_factor + dalpha * dalpha;
+    if (p.depth > 0.0f) {
+        const float relative = std::fabs(p.depth - q.depth) /
+                               (std::min(p.depth, q.depth) * kSigmaDepthPerPixel * distance);
+        exponent += relative * relative;
+    }
+    return exponent;
+}
+
+// Rousselle et al.'s per-pixel colour distance of p and q, summed over the channels (not yet
+// divided by them).
+float colour_distance(const float* cp, const float* vp, const float* cq, const float* vq, float k) {
+    float sum = 0.0f;
+    for (int c = 0; c < 3; ++c) {
+        const float d = cp[c] - cq[c];
+        const float noise = kColourAlpha * (vp[c] + std::min(vp[c], vq[c]));
+        sum += (d * d - noise) / (kEpsilon + k * k * (vp[c] + vq[c]));
+    }
+    return sum;
+}
+
+// A neighbour noisier than the pixel counts in proportion to how much less it knows (the ratio of
+// their variances, as an inverse-variance mean weighs estimates of one value): a converged pixel
+// takes nothing from noisy neighbours, however alike their colours.
+float precision_weight(const float* vp, const float* vq) {
+    const float p = vp[0] + vp[1] + vp[2], q = vq[0] + vq[1] + vq[2];
+    return q <= p ? 1.0f : (p + kEpsilon) / (q + kEpsilon);
+}
+
+// Rows a thread takes at least: enough pixels to be worth a thread, and small images still
+// split (so that the tests see the bands join up).
+size_t band_length(const Planes& planes) { return size_t(std::max(4, 512 / planes.width)); }
+
+void run_bands(const Planes& planes, int threads, const std::function<void(size_t, size_t)>& work) {
+    if (threads == 1) {
+        work(0, size_t(planes.height));
+    } else {
+        in_parallel_bands(size_t(planes.height), band_length(planes), work);
+    }
+}
+
+std::vector<float> atrous(const Planes& planes, const DenoiseSettings& settings) {
+    std::vector<float> colour = planes.colour, variance = smoothed_variance(planes);
+    std::vector<float> next_colour(colour.size()), next_variance(variance.size());
+    for (int pass = 0; pass < kAtrousPasses; ++pass) {
+        const int step = 1 << pass;
+        run_bands(planes, settings.threads, [&](size_t first, size_t last) {
+            for (int y = int(first); y < int(last); ++y) {
+                for (int x = 0; x < planes.width; ++x) {
+                    const size_t p = planes.index(x, y);
+                    const float* cp = &colour[3 * p];
+                    const float* vp = &variance[3 * p];
+                    if (!planes.valid[p]) {
+                        std::copy(cp, cp + 3, &next_colour[3 * p]);
+                        std::copy(vp, vp + 3, &next_variance[3 * p]);
+                        continue;
+                    }
+                    const Guide& gp = planes.guides[p];
+                    std::array<float, 3> sum{}, sum_variance{};
+                    float weights = 0.0f;
+                    for (int j = -kAtrousRadius; j <= kAtrousRadius; ++j) {
+                        const int qy = y + j * step;
+                        if (qy < 0 || qy >= planes.height) continue;
+                        for (int i = -kAtrousRadius; i <= kAtrousRadius; ++i) {
+                            const int qx = x + i * step;
+                            if (qx < 0 || qx >= planes.width) continue;
+                            const size_t q = planes.index(qx, qy);
+                            if (!planes.valid[q]) continue;
+                            const float* cq = &colour[3 * q];
+                            const float* vq = &variance[3 * q];
+                            float w = kKernel[size_t(i + kAtrousRadius)] *
+                                      kKernel[size_t(j + kAtrousRadius)];
+                            if (q != p) {
+                                const float distance =
+                                    float(step * std::max(std::abs(i), std::abs(j)));
+                                const float exponent =
+                                    std::max(colour_distance(cp, vp, cq, vq, kAtrousColourK) / 3.0f,
+                                             0.0f) +
+                                    feature_exponent(gp, planes.guides[q], distance, 1.0f);
+                                if (exponent > kNegligible) continue;
+                                w *= std::exp(-exponent) * precision_weight(vp, vq);
+                            }
+                            weights += w;
+                            for (size_t c = 0; c < 3; ++c) {
+                                sum[c] += w * cq[c];
+                                sum_variance[c] += w * w * vq[c];
+                            }
+                        }
+                    }
+                    for (size_t c = 0; c < 3; ++c) {
+                        next_colour[3 * p + c] = sum[c] / weights;
+                        next_variance[3 * p + c] = sum_variance[c] / (weights * weights);
+                    }
+                }
+            }
+        });
+        colour.swap(next_colour);
+        variance.swap(next_variance);
+    }
+    return colour;
+}
+
+std::vector<float> nl_means(const Planes& planes, const DenoiseSettings& settings) {
+    const std::vector<float> variance = smoothed_variance(planes);
+    const int w = planes.width, h = planes.height;
+    std::vector<float> out(planes.colour.size());
+    run_bands(planes, settings.threads, [&](size_t first, size_t last) {
+        const int y0 = int(first), y1 = int(last);
+        const int rows = y1 - y0 + 2 * kPatchRadius;
+        // Per offset: each pixel pair's colour distance over the band's rows and the patch's
+        // margin (distance), summed along rows over the patch (row_sums), then down columns.
+        std::vector<float> distance(size_t(rows) * size_t(w)), row_sums(distance.size());
+        std::vector<float> sum(size_t(y1 - y0) * size_t(w) * 3, 0.0f);
+        std::vector<float> weights(size_t(y1 - y0) * size_t(w), 0.0f);
+        const auto clamp_x = [w](int x) { return std::clamp(x, 0, w - 1); };
+        const auto clamp_y = [h](int y) { return std::clamp(y, 0, h - 1); };
+        for (int oy = -kWindowRadius; oy <= kWindowRadius; ++oy) {
+            for (int ox = -kWindowRadius; ox <= kWindowRadius; ++ox) {
+                const bool self = ox == 0 && oy == 0;
+                if (!self) {
+                    for (int r = 0; r < rows; ++r) {
+                        const int y = clamp_y(y0 - kPatchRadius + r);
+                        const int qy = clamp_y(y + oy);
+                        for (int x = 0; x < w; ++x) {
+                            const size_t p = planes.index(x, y),
+                                         q = planes.index(clamp_x(x + ox), qy);
+                            distance[size_t(r) * size_t(w) + size_t(x)] =
+                                colour_distance(&planes.colour[3 * p], &variance[3 * p],
+                                                &planes.colour[3 * q], &variance[3 * q], kColourK);
+                        }
+                    }
+                    for (int r = 0; r < rows; ++r) {
+                        const float* in = &distance[size_t(r) * size_t(w)];
+                        float* row = &row_sums[size_t(r) * size_t(w)];
+                        for (int x = 0; x < w; ++x) {
+                            float s = 0.0f;
+                            for (int k = -kPatchRadius; k <= kPatchRadius; ++k)
+                                s += in[clamp_x(x + k)];
+                            row[x] = s;
+                        }
+                    }
+                }
+                constexpr float patch_terms =
+                    3.0f * float((2 * kPatchRadius + 1) * (2 * kPatchRadius + 1));
+                const float distance_pixels = float(std::max(std::abs(ox), std::abs(oy)));
+                for (int y = y0; y < y1; ++y) {
+                    const int qy = y + oy;
+                    if (qy < 0 || qy >= h) continue;
+                    const int r = y - y0 + kPatchRadius;
+                    for (int x = 0; x < w; ++x) {
+                        const int qx = x + ox;
+                        if (qx < 0 || qx >= w) continue;
+                        const size_t p = planes.index(x, y), q = planes.index(qx, qy);
+                        if (!planes.valid[p] || !planes.valid[q]) continue;
+                        float weight = 1.0f;
+                        if (!self) {
+                            float patch = 0.0f;
+                            for (int k = -kPatchRadius; k <= kPatchRadius; ++k) {
+                                patch += row_sums[size_t(r + k) * size_t(w) + size_t(x)];
+                            }
+                            const float colour = patch / patch_terms;
+                            if (colour > kNegligible) continue;
+                            // The smaller of the two weights (Rousselle et al. 2013).
+                            const float exponent = std::max(
+                                colour, feature_exponent(planes.guides[p], planes.guides[q],
+                                                         distance_pixels, kSurfaceFactor));
+                            if (exponent > kNegligible) continue;
+                            weight = std::exp(-exponent) *
+                                     precision_weight(&variance[3 * p], &variance[3 * q]);
+                        }
+                        const size_t o = size_t(y - y0) * size_t(w) + size_t(x);
+                        weights[o] += weight;
+                        for (size_t c = 0; c < 3; ++c)
+                            sum[3 * o + c] += weight * planes.colour[3 * q + c];
+                    }
+                }
+            }
+        }
+        for (int y = y0; y < y1; ++y) {
+            for (int x = 0; x < w; ++x) {
+                const size_t p = planes.index(x, y), o = size_t(y - y0) * size_t(w) + size_t(x);
+                for (size_t c = 0; c < 3; ++c) {
+                    out[3 * p + c] = planes.valid[p] ? sum[3 * o + c] / weights[o] : 0.0f;
+                }
+            }
+        }
+    });
+    return out;
+}
+
+}  // namespace
+
+std::vector<float> denoise(const DenoiseInput& input, const DenoiseSettings& settings) {
+    const Planes planes = prepare(input);
+    std::vector<float> out = settings.method == DenoiseMethod::Atrous ? atrous(planes, settings)
+                                                                      : nl_means(planes, settings);
+    // Pixels the filter could not trust keep what they had, NaN included.
+    for (size_t p = 0; p < planes.valid.size(); ++p) {
+        if (planes.valid[p]) continue;
+        for (size_t c = 0; c < 3; ++c) out[3 * p + c] = input.colour[3 * p + c];
+    }
+    return out;
+}
+
+const char* denoise_method_name(DenoiseMethod method) {
+    return method == DenoiseMethod::Atrous ? "a-trous" : "nl-means";
+}
+
+}  // namespace fgr
