@@ -107,6 +107,8 @@ struct ModeOptions {
     bool no_mis = false;
     bool no_scene_lights = false;
     uint32_t seed = 0;
+    float noise_threshold = 0.0f;  // adaptive sampling's relative error; 0: off
+    int min_samples = 0;           // adaptive sampling's first round; 0: automatic
 };
 void add_mode_options(CLI::App* command, ModeOptions& options);
 // The mode to render `scene` in: --mode, else the scene's own; UsageError for an unknown name or

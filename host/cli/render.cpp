@@ -26,6 +26,7 @@
 #include "output/still_image.hpp"
 #include "output/tiled/streaming_image.hpp"
 #include "output/tiled/tiled_still.hpp"
+#include "render/adaptive_sampling.hpp"
 #include "render/render_cost.hpp"
 #include "render/renderer.hpp"
 #include "render/sample_budget.hpp"
@@ -157,6 +158,12 @@ void check_render_options(const RenderOptions& options) {
     if (!options.aovs.empty() && !exr) throw UsageError("--aov needs an .exr output");
     if (exr && options.bit_depth != 8) throw UsageError("--bit-depth is for PNG and TIFF output");
     if (!part_render_wanted(options) && tiled_render_wanted(options)) check_tiled_options(options);
+    if (options.mode.noise_threshold > 0.0f &&
+        (part_render_wanted(options) || tiled_render_wanted(options))) {
+        throw UsageError(
+            "--noise-threshold decides each pixel's samples from the whole image's rounds: not "
+            "with --part, --tile or a tiled render (give --spp)");
+    }
 }
 
 FrameRequest default_request(const Scene& scene, const RenderOptions& options) {
@@ -256,12 +263,21 @@ void report_and_write(const Scene& scene, const FrameRequest& request, int sampl
     fmt::print("render_ms {:.1f}\n", frame.render_ms);
     fmt::print("hits {}\n", frame.hits);
     fmt::print("samples_per_pixel {}\n", frame.samples);
-    if (options.time_limit && frame.samples < samples_asked) {
+    if (frame.adaptive) {
+        spdlog::info("{}", adaptive_summary(*frame.adaptive));
+        fmt::print("adaptive_converged_share {:.4f}\n", frame.adaptive->share_converged);
+        fmt::print("adaptive_mean_error {:.5f}\n", frame.adaptive->mean_error);
+        fmt::print("adaptive_error_p95 {:.5f}\n", frame.adaptive->error_p95);
+        fmt::print("adaptive_spp_min_mean_max {:g} {:.2f} {:g}\n", frame.adaptive->min_spp,
+                   frame.adaptive->mean_spp, frame.adaptive->max_spp);
+        fmt::print("adaptive_samples_saved {:.4f}\n", frame.adaptive->saved());
+    }
+    if (options.time_limit && frame.samples < samples_asked && !frame.adaptive) {
         spdlog::info("--time-limit {:g} s reached after {} of {} samples per pixel",
                      *options.time_limit, frame.samples, samples_asked);
     }
-    fmt::print("samples_per_second {:.0f}\n", double(frame.samples) * request.width *
-                                                  request.height /
+    const double mean_samples = frame.adaptive ? frame.adaptive->mean_spp : double(frame.samples);
+    fmt::print("samples_per_second {:.0f}\n", mean_samples * request.width * request.height /
                                                   std::max(frame.render_ms / 1000.0, 1e-9));
     if (frame.lane_stats) {
         fmt::print("lane_utilisation {:.3f} ({} rays per work-item)\n",
@@ -393,6 +409,11 @@ int render_samples_across_ranks(Cluster& cluster, const Scene& scene, const Fram
 int render_across_ranks(Cluster& cluster, const Scene& scene, const FrameRequest& request,
                         const ComputeDevice& device, ProgramCache& cache,
                         const RenderOptions& options) {
+    if (options.mode.noise_threshold > 0.0f) {
+        throw UsageError(
+            "--noise-threshold decides each pixel's samples from its own rounds: under mpirun the "
+            "ranks sum fixed samples with their own seeds (give --spp)");
+    }
     if (sample_budget(chosen_mode(options.mode, scene)).seeded && !tiled_render_wanted(options)) {
         if (options.stats)
             throw UsageError("--stats is for renders of one process (without mpirun)");

@@ -1,0 +1,274 @@
+// SPDX-License-Identifier: Apache-2.0
+#include "render/adaptive_sampling.hpp"
+
+#include <fmt/format.h>
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <vector>
+
+namespace fgr {
+namespace {
+
+// One pixel's state between rounds.
+struct PixelState {
+    double estimate[3] = {0.0, 0.0, 0.0};      // sum of weight * round mean
+    double weight = 0.0;                       // committed weights so far; 1 once done
+    double weight_terms = 0.0;                 // sum of weight^2 / round samples (the variance's)
+    double sum[3] = {0.0, 0.0, 0.0};           // plain sum of every sample (planning only)
+    double variance_sum[3] = {0.0, 0.0, 0.0};  // per-sample variance estimates, one a round
+    int variance_rounds = 0;
+    long samples = 0;
+    bool done = false;
+    // This round's plan.
+    long take = 0;
+    double round_weight = 0.0;
+};
+
+// A pixel's per-sample relative variance (channels' mean variance over the squared mean value),
+// from its rounds so far.
+double relative_sample_variance(const PixelState& pixel) {
+    if (pixel.samples == 0) return 0.0;
+    double variance = 0.0, mean = 0.0;
+    for (int c = 0; c < 3; ++c) {
+        if (pixel.variance_rounds > 0) variance += pixel.variance_sum[c] / pixel.variance_rounds;
+        mean += pixel.sum[c] / double(pixel.samples);
+    }
+    variance /= 3.0;
+    mean = std::max(mean / 3.0, double(kRelativeErrorFloor));
+    return variance / (mean * mean);
+}
+
+// Each pixel's relative variance, the larger of its own and its 3x3 neighbourhood's mean: one
+// pixel's estimate has a degree of freedom a round, and a bright light one pixel saw is likely
+// near its neighbours too.
+std::vector<double> planning_variances(const std::vector<PixelState>& pixels, int width,
+                                       int height) {
+    std::vector<double> own(pixels.size());
+    for (size_t i = 0; i < pixels.size(); ++i) own[i] = relative_sample_variance(pixels[i]);
+    std::vector<double> planned(pixels.size());
+    for (int y = 0; y < height; ++y) {
+        for (int x = 0; x < width; ++x) {
+            double sum = 0.0;
+            int count = 0;
+            for (int dy = -1; dy <= 1; ++dy) {
+                for (int dx = -1; dx <= 1; ++dx) {
+                    const int nx = x + dx, ny = y + dy;
+                    if (nx < 0 || ny < 0 || nx >= width || ny >= height) continue;
+                    sum += own[static_cast<size_t>(ny) * width + nx];
+                    ++count;
+                }
+            }
+            const size_t i = static_cast<size_t>(y) * width + x;
+            planned[i] = std::max(own[i], sum / count);
+        }
+    }
+    return planned;
+}
+
+// The samples a pixel still needs for its final estimate's relative variance to reach
+// threshold^2, if the remaining weight were spread over them evenly, given the relative
+// per-sample variance `relative`; at least 1 and at most what the cap leaves.
+long samples_needed(const PixelState& pixel, double relative, double threshold, long cap) {
+    const long left = cap - pixel.samples;
+    if (left <= 1) return std::max(left, 1L);
+    if (relative <= 0.0) return 1;
+    const double room = threshold * threshold / relative - pixel.weight_terms;
+    if (room <= 0.0) return left;
+    const double rest = 1.0 - pixel.weight;
+    const double needed = std::ceil(rest * rest / room);
+    return static_cast<long>(std::clamp(needed, 1.0, double(left)));
+}
+
+}  // namespace
+
+double relative_error(const float* rgb, const float* variance) {
+    double mean = 0.0, var = 0.0;
+    for (int c = 0; c < 3; ++c) {
+        mean += rgb[c];
+        var += std::max(variance[c], 0.0f);
+    }
+    mean = std::max(mean / 3.0, double(kRelativeErrorFloor));
+    return std::sqrt(var / 3.0) / mean;
+}
+
+int default_min_samples(int cap) { return std::min(cap, std::max(4, cap / 32)); }
+
+Frame render_adaptive(Renderer& renderer, const FrameRequest& request, AdaptiveRule rule) {
+    const PixelRegion region = rendered_region(request);
+    const int width = region.width, height = region.height;
+    const size_t count = static_cast<size_t>(region.pixels());
+    const long cap = request.samples;
+    const double threshold = request.path.noise_threshold;
+    const long min_samples =
+        std::clamp<long>(request.path.min_samples > 0 ? request.path.min_samples
+                                                      : default_min_samples(request.samples),
+                         std::min(2L, cap), cap);
+    std::vector<PixelState> pixels(count);
+
+    FrameRequest round = request;
+    round.path.noise_threshold = 0.0f;
+    round.on_sample = {};
+    round.on_progress = {};
+    round.enough = {};
+    round.sample_limits.assign(count, 0.0f);
+
+    Frame result;
+    std::vector<double> albedo(count * 3, 0.0), normal(count * 3, 0.0), alpha(count, 0.0),
+        foreground;
+    long started = request.first_sample;  // the continuing pixels' next sample
+    int rounds = 0;
+    bool finishing = false;
+    double render_ms = 0.0;
+    while (true) {
+        // Plan the round from the earlier ones alone.
+        const long batch =
+            rounds == 0 ? min_samples
+                        : std::min(std::max(min_samples, (started - request.first_sample) / 2),
+                                   cap - (started - request.first_sample));
+        const std::vector<double> relative = rounds > 0 && rule == AdaptiveRule::Unbiased
+                                                 ? planning_variances(pixels, width, height)
+                                                 : std::vector<double>(count, 0.0);
+        bool any = false;
+        for (size_t i = 0; i < count; ++i) {
+            PixelState& pixel = pixels[i];
+            pixel.take = 0;
+            if (pixel.done) continue;
+            any = true;
+            pixel.take = batch;
+            if (rule == AdaptiveRule::Unbiased) {
+                // The weight this round's mean gets: its share of what the pixel is now expected
+                // to need, so that the rounds of a pixel that keeps needing every sample get
+                // plain-average weights; a pixel's last round takes all the weight left.
+                const long needed =
+                    rounds == 0 ? cap : samples_needed(pixel, relative[i], threshold, cap);
+                long planned = std::max(needed, 1L);
+                if (finishing) planned = std::min(planned, batch);
+                pixel.take = std::min(planned, batch);
+                pixel.round_weight = (1.0 - pixel.weight) * double(pixel.take) / double(planned);
+                if (pixel.take == planned) pixel.done = true;  // its last round
+            }
+            round.sample_limits[i] = static_cast<float>(started + pixel.take);
+        }
+        if (!any || batch <= 0) break;
+        round.first_sample = static_cast<int>(started);
+        round.samples = static_cast<int>(batch);
+        Frame frame = renderer.render(round);
+        if (frame.cancelled) return frame;
+        render_ms += frame.render_ms;
+        if (rounds == 0) {
+            result = frame;  // depth, hits and the first round's statistics
+            if (!frame.foreground.empty()) foreground.assign(count * 3, 0.0);
+        } else if (frame.lane_stats && result.lane_stats) {
+            result.lane_stats->lane_evaluations += frame.lane_stats->lane_evaluations;
+            result.lane_stats->packet_evaluations += frame.lane_stats->packet_evaluations;
+        }
+        ++rounds;
+        started += batch;
+        for (size_t i = 0; i < count; ++i) {
+            PixelState& pixel = pixels[i];
+            if (pixel.take == 0) continue;
+            const double take = double(pixel.take);
+            if (rule == AdaptiveRule::Naive) pixel.round_weight = take;  // normalised at the end
+            const double w = pixel.round_weight;
+            for (int c = 0; c < 3; ++c) {
+                const double mean = frame.linear[i * 3 + c];
+                pixel.estimate[c] += w * mean;
+                pixel.sum[c] += mean * take;
+                albedo[i * 3 + c] += w * frame.albedo[i * 3 + c];
+                normal[i * 3 + c] += w * frame.normal[i * 3 + c];
+                if (!foreground.empty()) foreground[i * 3 + c] += w * frame.foreground[i * 3 + c];
+            }
+            alpha[i] += w * frame.alpha[i];
+            if (frame.variance[i * 3] >= 0.0f) {
+                for (int c = 0; c < 3; ++c) {
+                    pixel.variance_sum[c] += double(frame.variance[i * 3 + c]) * take;
+                }
+                ++pixel.variance_rounds;
+            }
+            pixel.weight += w;
+            pixel.weight_terms += w * w / take;
+            pixel.samples += pixel.take;
+            if (rule == AdaptiveRule::Naive) {
+                // Stops on what its own samples show, those samples included in its average.
+                const double own = relative_sample_variance(pixel);
+                pixel.done =
+                    pixel.samples >= cap || own / double(pixel.samples) <= threshold * threshold;
+            }
+        }
+        if (request.on_sample) {
+            request.on_sample(static_cast<int>(started - request.first_sample),
+                              static_cast<int>(cap));
+        }
+        if (request.enough && !finishing && request.enough()) finishing = true;
+    }
+
+    // The frame: each pixel's weighted estimate and the variance of it.
+    result.samples_per_pixel.assign(count, 0.0f);
+    result.variance.assign(count * 3, -1.0f);
+    std::vector<double> errors(count);
+    AdaptiveReport report;
+    report.threshold = static_cast<float>(threshold);
+    report.rounds = rounds;
+    report.cap = static_cast<int>(cap);
+    report.min_samples = static_cast<int>(min_samples);
+    report.min_spp = std::numeric_limits<float>::max();
+    long converged = 0;
+    double total = 0.0;
+    for (size_t i = 0; i < count; ++i) {
+        const PixelState& pixel = pixels[i];
+        const double norm = rule == AdaptiveRule::Naive ? double(pixel.weight) : 1.0;
+        for (int c = 0; c < 3; ++c) {
+            result.linear[i * 3 + c] = static_cast<float>(pixel.estimate[c] / norm);
+            result.albedo[i * 3 + c] = static_cast<float>(albedo[i * 3 + c] / norm);
+            result.normal[i * 3 + c] = static_cast<float>(normal[i * 3 + c] / norm);
+            if (!foreground.empty()) {
+                result.foreground[i * 3 + c] = static_cast<float>(foreground[i * 3 + c] / norm);
+            }
+            if (pixel.variance_rounds > 0) {
+                const double per_sample = pixel.variance_sum[c] / pixel.variance_rounds;
+                const double terms =
+                    rule == AdaptiveRule::Naive ? 1.0 / double(pixel.samples) : pixel.weight_terms;
+                result.variance[i * 3 + c] = static_cast<float>(per_sample * terms);
+            }
+        }
+        result.alpha[i] = static_cast<float>(alpha[i] / norm);
+        const float spp = static_cast<float>(pixel.samples);
+        result.samples_per_pixel[i] = spp;
+        report.min_spp = std::min(report.min_spp, spp);
+        report.max_spp = std::max(report.max_spp, spp);
+        total += spp;
+        errors[i] = relative_error(&result.linear[i * 3], &result.variance[i * 3]);
+        converged += errors[i] <= threshold;
+    }
+    if (count > 0) {
+        report.mean_spp = total / double(count);
+        report.share_converged = double(converged) / double(count);
+        double error_sum = 0.0;
+        for (double error : errors) error_sum += error;
+        report.mean_error = error_sum / double(count);
+        const size_t p95 = std::min(count - 1, static_cast<size_t>(0.95 * double(count)));
+        std::nth_element(errors.begin(), errors.begin() + static_cast<long>(p95), errors.end());
+        report.error_p95 = errors[p95];
+    } else {
+        report.min_spp = 0.0f;
+    }
+    result.samples = static_cast<int>(report.max_spp);
+    result.adaptive = report;
+    result.image = display_image(renderer.scene(), request.params, result.linear, width, height);
+    result.render_ms = render_ms;
+    return result;
+}
+
+std::string adaptive_summary(const AdaptiveReport& report) {
+    return fmt::format(
+        "adaptive sampling to relative error {:g}: {:.1f}% of pixels at or below it (estimated "
+        "error mean {:.4f}, 95th percentile {:.4f}); samples per pixel {:g} / {:.1f} / {:g} "
+        "(min / mean / max) of {} in {} rounds, {:.0f}% fewer than fixed sampling",
+        report.threshold, 100.0 * report.share_converged, report.mean_error, report.error_p95,
+        report.min_spp, report.mean_spp, report.max_spp, report.cap, report.rounds,
+        100.0 * report.saved());
+}
+
+}  // namespace fgr
