@@ -5,6 +5,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdint>
 #include <limits>
 #include <vector>
 
@@ -19,6 +20,9 @@ struct PixelState {
     double sum[3] = {0.0, 0.0, 0.0};           // plain sum of every sample (planning only)
     double variance_sum[3] = {0.0, 0.0, 0.0};  // per-sample variance estimates, one a round
     int variance_rounds = 0;
+    // The last round's estimate (negative: none): the one round no decision looked at, so the
+    // variance reported for the final estimate is free of the selection the decisions made.
+    double last_variance[3] = {-1.0, -1.0, -1.0};
     long samples = 0;
     bool done = false;
     // This round's plan.
@@ -69,16 +73,32 @@ std::vector<double> planning_variances(const std::vector<PixelState>& pixels, in
 
 // The samples a pixel still needs for its final estimate's relative variance to reach
 // threshold^2, if the remaining weight were spread over them evenly, given the relative
-// per-sample variance `relative`; at least 1 and at most what the cap leaves.
-long samples_needed(const PixelState& pixel, double relative, double threshold, long cap) {
+// per-sample variance `relative`; at least `least` (a last round that rests on a sample or two
+// would carry most of the pixel's weight on them) and at most what the cap leaves.
+long samples_needed(const PixelState& pixel, double relative, double threshold, long least,
+                    long cap) {
     const long left = cap - pixel.samples;
-    if (left <= 1) return std::max(left, 1L);
-    if (relative <= 0.0) return 1;
+    if (left <= least) return std::max(left, 1L);
+    if (relative <= 0.0) return least;
     const double room = threshold * threshold / relative - pixel.weight_terms;
     if (room <= 0.0) return left;
     const double rest = 1.0 - pixel.weight;
     const double needed = std::ceil(rest * rest / room);
-    return static_cast<long>(std::clamp(needed, 1.0, double(left)));
+    return static_cast<long>(std::clamp(needed, double(least), double(left)));
+}
+
+// The seed of round `round`: the request's own for the first, so that its samples are a fixed
+// render's first ones, then well mixed (a murmur3 finaliser) so that rounds never share a
+// sequence.
+uint32_t round_seed(uint32_t seed, int round) {
+    if (round == 0) return seed;
+    uint32_t h = seed ^ (static_cast<uint32_t>(round) * 0x9e3779b9u);
+    h ^= h >> 16;
+    h *= 0x85ebca6bu;
+    h ^= h >> 13;
+    h *= 0xc2b2ae35u;
+    h ^= h >> 16;
+    return h;
 }
 
 }  // namespace
@@ -117,16 +137,14 @@ Frame render_adaptive(Renderer& renderer, const FrameRequest& request, AdaptiveR
     Frame result;
     std::vector<double> albedo(count * 3, 0.0), normal(count * 3, 0.0), alpha(count, 0.0),
         foreground;
-    long started = request.first_sample;  // the continuing pixels' next sample
+    long started = 0;  // samples the continuing pixels have taken
     int rounds = 0;
     bool finishing = false;
     double render_ms = 0.0;
     while (true) {
         // Plan the round from the earlier ones alone.
         const long batch =
-            rounds == 0 ? min_samples
-                        : std::min(std::max(min_samples, (started - request.first_sample) / 2),
-                                   cap - (started - request.first_sample));
+            rounds == 0 ? min_samples : std::min(std::max(min_samples, started / 2), cap - started);
         const std::vector<double> relative = rounds > 0 && rule == AdaptiveRule::Unbiased
                                                  ? planning_variances(pixels, width, height)
                                                  : std::vector<double>(count, 0.0);
@@ -142,17 +160,22 @@ Frame render_adaptive(Renderer& renderer, const FrameRequest& request, AdaptiveR
                 // to need, so that the rounds of a pixel that keeps needing every sample get
                 // plain-average weights; a pixel's last round takes all the weight left.
                 const long needed =
-                    rounds == 0 ? cap : samples_needed(pixel, relative[i], threshold, cap);
+                    rounds == 0 ? cap
+                                : samples_needed(pixel, relative[i], threshold, min_samples, cap);
                 long planned = std::max(needed, 1L);
                 if (finishing) planned = std::min(planned, batch);
                 pixel.take = std::min(planned, batch);
                 pixel.round_weight = (1.0 - pixel.weight) * double(pixel.take) / double(planned);
                 if (pixel.take == planned) pixel.done = true;  // its last round
             }
-            round.sample_limits[i] = static_cast<float>(started + pixel.take);
+            round.sample_limits[i] = static_cast<float>(pixel.take);
         }
         if (!any || batch <= 0) break;
-        round.first_sample = static_cast<int>(started);
+        // Each round draws samples 0 .. batch - 1 of sequences scrambled afresh: stratified among
+        // themselves and independent of the earlier rounds its plan came from (later points of
+        // one scrambled sequence depend on its earlier ones, which biased the mean by 0.5%).
+        round.first_sample = 0;
+        round.path.seed = round_seed(request.path.seed, rounds);
         round.samples = static_cast<int>(batch);
         Frame frame = renderer.render(round);
         if (frame.cancelled) return frame;
@@ -183,9 +206,13 @@ Frame render_adaptive(Renderer& renderer, const FrameRequest& request, AdaptiveR
             alpha[i] += w * frame.alpha[i];
             if (frame.variance[i * 3] >= 0.0f) {
                 for (int c = 0; c < 3; ++c) {
-                    pixel.variance_sum[c] += double(frame.variance[i * 3 + c]) * take;
+                    const double per_sample = double(frame.variance[i * 3 + c]) * take;
+                    pixel.variance_sum[c] += per_sample;
+                    pixel.last_variance[c] = per_sample;
                 }
                 ++pixel.variance_rounds;
+            } else {
+                for (double& v : pixel.last_variance) v = -1.0;
             }
             pixel.weight += w;
             pixel.weight_terms += w * w / take;
@@ -198,8 +225,7 @@ Frame render_adaptive(Renderer& renderer, const FrameRequest& request, AdaptiveR
             }
         }
         if (request.on_sample) {
-            request.on_sample(static_cast<int>(started - request.first_sample),
-                              static_cast<int>(cap));
+            request.on_sample(static_cast<int>(started), static_cast<int>(cap));
         }
         if (request.enough && !finishing && request.enough()) finishing = true;
     }
@@ -227,7 +253,12 @@ Frame render_adaptive(Renderer& renderer, const FrameRequest& request, AdaptiveR
                 result.foreground[i * 3 + c] = static_cast<float>(foreground[i * 3 + c] / norm);
             }
             if (pixel.variance_rounds > 0) {
-                const double per_sample = pixel.variance_sum[c] / pixel.variance_rounds;
+                // The unbiased rule's last round was decided before it was seen; the naive
+                // rule's every round took part in its decisions alike.
+                const double per_sample =
+                    rule == AdaptiveRule::Unbiased && pixel.last_variance[c] >= 0.0
+                        ? pixel.last_variance[c]
+                        : pixel.variance_sum[c] / pixel.variance_rounds;
                 const double terms =
                     rule == AdaptiveRule::Naive ? 1.0 / double(pixel.samples) : pixel.weight_terms;
                 result.variance[i * 3 + c] = static_cast<float>(per_sample * terms);

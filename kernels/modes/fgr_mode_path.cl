@@ -195,10 +195,10 @@ inline mask sample_wanted(int sample, int tile, __global const float* planes, in
 inline void accumulate_odd_half(vec3 radiance, int sample, int tile, __global float* planes,
                                 int plane_size) {
     const real odd = fgr_real((float)(sample & 1));
-    __global float* half = planes + FGR_PATH_ODD_RADIANCE_PLANE * plane_size;
-    accumulate_plane(radiance.x * odd, sample, tile, half);
-    accumulate_plane(radiance.y * odd, sample, tile, half + plane_size);
-    accumulate_plane(radiance.z * odd, sample, tile, half + 2 * plane_size);
+    __global float* odd_planes = planes + FGR_PATH_ODD_RADIANCE_PLANE * plane_size;
+    accumulate_plane(radiance.x * odd, sample, tile, odd_planes);
+    accumulate_plane(radiance.y * odd, sample, tile, odd_planes + plane_size);
+    accumulate_plane(radiance.z * odd, sample, tile, odd_planes + 2 * plane_size);
 }
 
 __kernel void fgr_render(FGR_RENDER_ARGS, __constant const float* lights, path_settings settings,

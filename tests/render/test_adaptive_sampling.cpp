@@ -23,6 +23,8 @@
 #include "test_scenes.hpp"
 
 namespace fgr {
+// Named, so that the unity build's other path tests' helpers of the same names stay apart.
+namespace adaptive_sampling_test {
 namespace {
 
 constexpr int kSphere = 0;        // a unit sphere seen from outside
@@ -132,7 +134,7 @@ protected:
                                 int samples) {
         std::vector<float> params = default_param_values(*scene_);
         set_param_from_text(*scene_, params, "shape=" + std::to_string(shape));
-        set_param_from_text(*scene_, params, material);
+        if (!material.empty()) set_param_from_text(*scene_, params, material);
         FrameRequest request;
         request.width = kSize;
         request.height = kSize;
@@ -180,6 +182,29 @@ TEST_F(AdaptiveSampling, MeanMatchesTheClosedFormAndFixedSampling) {
     const Frame adaptive =
         renderer().render(request(kInsideSphere, "emission=0.5,0.5,0.5", path, 64));
     ASSERT_TRUE(adaptive.adaptive.has_value());
+    if (getenv("DEBUG_SEEDS")) {
+        for (int stratified = 0; stratified < 2; ++stratified) {
+            double total = 0.0, total_fixed = 0.0;
+            for (uint32_t seed = 100; seed < 120; ++seed) {
+                PathSettings p = path;
+                p.seed = seed;
+                p.stratified = stratified;
+                total +=
+                    estimate(
+                        renderer().render(request(kInsideSphere, "emission=0.5,0.5,0.5", p, 64)),
+                        kEveryPixel)
+                        .mean;
+                p.noise_threshold = 0.0f;
+                total_fixed +=
+                    estimate(
+                        renderer().render(request(kInsideSphere, "emission=0.5,0.5,0.5", p, 16)),
+                        kEveryPixel)
+                        .mean;
+            }
+            std::printf("stratified %d: adaptive mean over 20 seeds %.5f fixed %.5f\n", stratified,
+                        total / 20, total_fixed / 20);
+        }
+    }
     std::printf("%s\n", adaptive_summary(*adaptive.adaptive).c_str());
     const Estimate exact{1.0, 0.0, 1};
     EXPECT_TRUE(agree(estimate(adaptive, kEveryPixel), exact, "adaptive against 1"));
@@ -206,13 +231,27 @@ TEST_F(AdaptiveSampling, RareBrightLightBiasesTheNaiveRuleOnly) {
     path.noise_threshold = 0.1f;
     path.min_samples = 4;
     FrameRequest adaptive_request = request(kSphere, "", path, 128);
-    const Frame unbiased = render_adaptive(renderer(), adaptive_request, AdaptiveRule::Unbiased);
     const Frame naive = render_adaptive(renderer(), adaptive_request, AdaptiveRule::Naive);
-    std::printf("unbiased rule: %s\nnaive rule: %s\n", adaptive_summary(*unbiased.adaptive).c_str(),
-                adaptive_summary(*naive.adaptive).c_str());
-    EXPECT_TRUE(agree(estimate(unbiased, on_sphere), truth, "default rule against the truth"));
+    // The default rule's estimates are noisy where a pixel's last round rests on a few samples
+    // that found the sun: the mean of 6 seeds' images (independent) makes the test sharp.
+    Estimate unbiased;
+    double spp = 0.0;
+    constexpr int kSeeds = 6;
+    for (int seed = 0; seed < kSeeds; ++seed) {
+        adaptive_request.path.seed = 11 + 101 * static_cast<uint32_t>(seed);
+        const Frame frame = render_adaptive(renderer(), adaptive_request, AdaptiveRule::Unbiased);
+        if (seed == 0) std::printf("default rule: %s\n", adaptive_summary(*frame.adaptive).c_str());
+        const Estimate one = estimate(frame, on_sphere);
+        unbiased.mean += one.mean / kSeeds;
+        unbiased.standard_error += one.standard_error * one.standard_error / (kSeeds * kSeeds);
+        unbiased.pixels += one.pixels;
+        spp += frame.adaptive->mean_spp / kSeeds;
+    }
+    unbiased.standard_error = std::sqrt(unbiased.standard_error);
+    std::printf("naive rule: %s\n", adaptive_summary(*naive.adaptive).c_str());
+    EXPECT_TRUE(agree(unbiased, truth, "default rule against the truth"));
     // Fewer samples than fixed sampling's cap, or the test shows nothing.
-    EXPECT_LT(unbiased.adaptive->mean_spp, 128.0 * 0.8);
+    EXPECT_LT(spp, 128.0 * 0.8);
     EXPECT_FALSE(agree(estimate(naive, on_sphere), truth, "naive rule against the truth"));
     EXPECT_LT(estimate(naive, on_sphere).mean, truth.mean);
 }
@@ -266,6 +305,14 @@ TEST_F(AdaptiveSampling, VarianceEstimateMatchesTheSpread) {
             const double e = frame.variance[i * 3] - estimated;
             spread_of_estimates += e * e;
         }
+        if (getenv("DEBUG_ADAPTIVE")) {
+            for (size_t i = 0; i < n; ++i) {
+                const double d = frame.linear[i * 3] - mean;
+                if (d * d > 0.1 || frame.samples_per_pixel[i] < 10)
+                    std::printf("pixel %zu value %.3f spp %.0f var %.4g\n", i, frame.linear[i * 3],
+                                frame.samples_per_pixel[i], frame.variance[i * 3]);
+            }
+        }
         const double empirical = m2 / double(n - 1);
         m4 /= double(n);
         // Standard errors: of a sample variance, sqrt((m4 - s^4) / n); of a mean, s / sqrt(n).
@@ -287,25 +334,35 @@ TEST_F(AdaptiveSampling, VarianceEstimateMatchesTheSpread) {
     check(renderer().render(request(kInsideSphere, "emission=0.5,0.5,0.5", path, 64)), "adaptive");
 }
 
-// Fixed sampling fills the sample counts and variance too (the denoiser reads them), and the
-// request's per-pixel limits leave a pixel's samples at its limit.
-TEST_F(AdaptiveSampling, SampleLimitsGiveEachPixelItsOwnCount) {
-    PathSettings path = lit_by(1.0f, false);
-    path.light_sampling = false;  // then every sample of a white convex body reads exactly 1
-    path.mis = false;
-    FrameRequest limited = request(kSphere, "albedo=1,1,1", path, 8);
+// Fixed sampling fills the sample counts and variance too (the denoiser reads them), and a pixel
+// whose limit stops it after its first samples reads what a render of only those samples reads.
+TEST_F(AdaptiveSampling, SampleLimitsGiveEachPixelItsOwnSamples) {
+    PathSettings path = lit_by(0.5f, true);
+    path.seed = 4;
+    const Frame two = renderer().render(request(kSphere, "", path, 2));
+    const Frame eight = renderer().render(request(kSphere, "", path, 8));
+    FrameRequest limited = request(kSphere, "", path, 8);
     limited.sample_limits.assign(kSize * kSize, 8.0f);
     for (int i = 0; i < kSize * kSize; i += 3) limited.sample_limits[i] = 2.0f;
     const Frame frame = renderer().render(limited);
     ASSERT_EQ(frame.samples_per_pixel.size(), size_t(kSize * kSize));
     ASSERT_EQ(frame.variance.size(), size_t(kSize * kSize * 3));
+    ASSERT_EQ(eight.variance.size(), size_t(kSize * kSize * 3));
     for (int i = 0; i < kSize * kSize; ++i) {
+        const Frame& same = i % 3 == 0 ? two : eight;
         EXPECT_EQ(frame.samples_per_pixel[i], i % 3 == 0 ? 2.0f : 8.0f) << i;
-        // A white furnace: every sample reads 1, whatever the count.
-        EXPECT_NEAR(frame.linear[i * 3], 1.0f, 1e-4f) << i;
-        EXPECT_NEAR(frame.variance[i * 3], 0.0f, 1e-8f) << i;
+        EXPECT_EQ(eight.samples_per_pixel[i], 8.0f) << i;
+        for (int c = 0; c < 3; ++c) {
+            const float tolerance = 1e-5f * std::max(1.0f, same.linear[i * 3 + c]);
+            EXPECT_NEAR(frame.linear[i * 3 + c], same.linear[i * 3 + c], tolerance) << i;
+            EXPECT_NEAR(frame.variance[i * 3 + c], same.variance[i * 3 + c],
+                        1e-4f * std::max(1e-3f, same.variance[i * 3 + c]))
+                << i;
+            EXPECT_GE(eight.variance[i * 3 + c], 0.0f) << i;
+        }
     }
 }
 
 }  // namespace
+}  // namespace adaptive_sampling_test
 }  // namespace fgr
