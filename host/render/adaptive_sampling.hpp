@@ -14,6 +14,7 @@
 // every sample, and its last round carries the rest (measured in the user guide).
 
 #include <string>
+#include <vector>
 
 #include "render/renderer.hpp"
 
@@ -34,6 +35,54 @@ enum class AdaptiveRule {
     // A pixel stops when its own samples so far look converged and averages them all: biased.
     // Only the tests use it, to show the bias the default rule avoids.
     Naive,
+};
+
+struct AdaptivePixel;
+
+// The rounds one at a time, for a caller that renders and shows them itself (the viewer):
+// next_round's request goes to Renderer::render, its frame to add_round, until next_round says
+// there is none.
+class AdaptiveSampler {
+public:
+    // `request` as render_adaptive takes it.
+    explicit AdaptiveSampler(const FrameRequest& request,
+                             AdaptiveRule rule = AdaptiveRule::Unbiased);
+    ~AdaptiveSampler();
+    AdaptiveSampler(AdaptiveSampler&&) noexcept;
+    AdaptiveSampler& operator=(AdaptiveSampler&&) noexcept;
+
+    // The next round's request, planned from the earlier rounds alone; null once every pixel is
+    // done. Valid until the next call.
+    const FrameRequest* next_round();
+    // That round's frame (Renderer::render's, not cancelled).
+    void add_round(const Frame& frame);
+    // Makes the next round every pixel's last (a time limit): the image stays unbiased.
+    void finish_next_round() { finishing_ = true; }
+    bool finished() const { return finished_; }
+    // Samples the pixels still going have taken.
+    long samples_started() const { return started_; }
+    // The estimate so far, with each pixel's samples, variance and the report. Before the last
+    // round (a preview of the rounds so far) each pixel's rounds are scaled to a whole weight.
+    Frame frame(const Scene& scene) const;
+
+private:
+    FrameRequest request_;
+    AdaptiveRule rule_;
+    int width_ = 0, height_ = 0;
+    size_t count_ = 0;
+    long cap_ = 0;
+    long min_samples_ = 0;
+    double threshold_ = 0.0;
+    std::vector<AdaptivePixel> pixels_;
+    FrameRequest round_;
+    Frame result_;
+    std::vector<double> albedo_, normal_, alpha_, foreground_;
+    long started_ = 0;  // samples the continuing pixels have taken
+    long batch_ = 0;    // the planned round's samples
+    int rounds_ = 0;
+    bool finishing_ = false;
+    bool finished_ = false;
+    double render_ms_ = 0.0;
 };
 
 // Renders `request` (path mode, request.path.noise_threshold > 0) on `renderer` in rounds;
