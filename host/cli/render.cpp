@@ -151,6 +151,12 @@ void check_render_options(const RenderOptions& options) {
     }
     parsed_view_override(options.view_override);  // a malformed vector fails before any loading
     check_output_path(options.output);
+    if (options.mode.noise_threshold > 0.0f &&
+        (part_render_wanted(options) || tiled_render_wanted(options))) {
+        throw UsageError(
+            "--noise-threshold decides each pixel's samples from the whole image's rounds: not "
+            "with --part, --tile or a tiled render (give --spp)");
+    }
     if (part_render_wanted(options)) {
         check_part_options(options);
     }
@@ -158,11 +164,12 @@ void check_render_options(const RenderOptions& options) {
     if (!options.aovs.empty() && !exr) throw UsageError("--aov needs an .exr output");
     if (exr && options.bit_depth != 8) throw UsageError("--bit-depth is for PNG and TIFF output");
     if (!part_render_wanted(options) && tiled_render_wanted(options)) check_tiled_options(options);
-    if (options.mode.noise_threshold > 0.0f &&
+    const Aovs aovs = parse_aovs(options.aovs);
+    if ((aovs.samples || aovs.variance) &&
         (part_render_wanted(options) || tiled_render_wanted(options))) {
         throw UsageError(
-            "--noise-threshold decides each pixel's samples from the whole image's rounds: not "
-            "with --part, --tile or a tiled render (give --spp)");
+            "--aov samples and variance are written by a render of the whole image in one "
+            "process: not with --part, --tile or a tiled render");
     }
 }
 
@@ -216,6 +223,11 @@ StillJob still_job(const Scene& scene, const FrameRequest& request, const Render
     settings.precision = options.precision;
     settings.mode = chosen_mode(options.mode, scene);
     const Aovs aovs = parse_aovs(options.aovs);
+    if ((aovs.samples || aovs.variance) && settings.mode != RenderMode::Path) {
+        throw UsageError(fmt::format(
+            "--aov samples and variance are the path mode's (the {} mode estimates no variance)",
+            render_mode_name(settings.mode)));
+    }
     // Every mode renders every layer; the kernel writes alpha and layers only when asked.
     settings.aovs = options.alpha || aovs.need_aov_planes();
     if (settings.mode == RenderMode::Brute) {
@@ -409,6 +421,11 @@ int render_samples_across_ranks(Cluster& cluster, const Scene& scene, const Fram
 int render_across_ranks(Cluster& cluster, const Scene& scene, const FrameRequest& request,
                         const ComputeDevice& device, ProgramCache& cache,
                         const RenderOptions& options) {
+    if (const Aovs aovs = parse_aovs(options.aovs); aovs.samples || aovs.variance) {
+        throw UsageError(
+            "--aov samples and variance are for renders of one process: under mpirun the ranks' "
+            "sums carry neither");
+    }
     if (options.mode.noise_threshold > 0.0f) {
         throw UsageError(
             "--noise-threshold decides each pixel's samples from its own rounds: under mpirun the "
@@ -523,7 +540,8 @@ void add_frame_options(CLI::App* command, RenderOptions& options, int max_side) 
         ->check(CLI::IsMember({8, 16}));
     command->add_option("--aov", options.aovs,
                         "EXR layers beside the linear image, in every mode: albedo,normal,depth,"
-                        "alpha (alpha: as --alpha)");
+                        "alpha (alpha: as --alpha); in path mode also samples (per pixel) and "
+                        "variance (of each pixel's estimate)");
     command->add_flag("--alpha", options.alpha,
                       "coverage as alpha with the background removed: an RGBA PNG (straight "
                       "alpha), or an EXR's A channel (colour premultiplied)");

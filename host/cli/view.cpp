@@ -120,11 +120,6 @@ int command_view(ViewCommandOptions& options) {
         }
     }
     viewer.path = path_settings_from(options.mode);
-    if (viewer.path.noise_threshold > 0.0f) {
-        throw UsageError(
-            "--noise-threshold is for fgr render and fgr video: the viewer accumulates one sample "
-            "per pixel a pass");
-    }
     viewer.environment = environment_choice_from(options.mode);
     if (viewer.environment.kind == EnvironmentKind::File) {
         // A bad file is refused before a window opens.

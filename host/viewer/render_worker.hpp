@@ -25,6 +25,7 @@
 #include "device/opencl_device.hpp"
 #include "device/program_cache.hpp"
 #include "image/image_io.hpp"
+#include "render/adaptive_sampling.hpp"
 #include "render/path_settings.hpp"
 #include "render/precision.hpp"
 #include "render/prepass/reprojection.hpp"
@@ -167,6 +168,9 @@ private:
     std::vector<float> preview_start_hints(const Renderer& renderer, const ViewState& state,
                                            int width, int height) const;
     void refine(Renderer& renderer, const ViewState& state, int sample);
+    // Path mode with a noise threshold: one round of adaptive sampling a pass (sample 0 starts
+    // them), up to the standing view's sample cap.
+    void refine_adaptive(Renderer& renderer, const ViewState& state, int sample);
     void take_screenshot(const ScreenshotRequest& request);
     void probe_camera(Renderer& renderer, const ViewState& state);
     void publish(DisplayFrame frame);
@@ -190,6 +194,7 @@ private:
     int accumulated_samples_ = 0;
     int ifs_depth_reached_ = -1;       // of the last frame that reported it (sample 0 or a preview)
     std::vector<float> accumulation_;  // sum of linear RGB over the samples
+    std::optional<AdaptiveSampler> adaptive_;  // the rounds so far, under a noise threshold
     // The last preview's depths and what they were rendered with: the next preview starts its
     // rays from them, reprojected (render/prepass/reprojection.hpp), when only the camera moved.
     struct LastPreview {
