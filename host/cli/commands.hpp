@@ -108,6 +108,8 @@ struct ModeOptions {
     bool no_scene_lights = false;
     uint32_t seed = 0;
     bool denoise = false;  // --denoise (render, video; the viewer's toggle starts on)
+    float noise_threshold = 0.0f;  // adaptive sampling's relative error; 0: off
+    int min_samples = 0;           // adaptive sampling's first round; 0: automatic
 };
 void add_mode_options(CLI::App* command, ModeOptions& options);
 // --denoise, in the path tracer's group (render, video and view).

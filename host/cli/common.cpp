@@ -216,6 +216,19 @@ void add_mode_options(CLI::App* command, ModeOptions& options) {
                    "furnace test with --environment uniform wants")
         ->group(path);
     command->add_option("--seed", options.seed, "noise pattern of the path tracer")->group(path);
+    command
+        ->add_option("--noise-threshold", options.noise_threshold,
+                     "adaptive sampling: each pixel stops once the relative standard error of its "
+                     "estimate is about this (e.g. 0.01), --spp being the most it takes; 0: off "
+                     "(every pixel takes --spp samples)")
+        ->check(CLI::Range(0.0f, 1.0f))
+        ->group(path);
+    command
+        ->add_option("--min-spp", options.min_samples,
+                     "adaptive sampling: samples every pixel takes before any stops (default: "
+                     "--spp / 32, at least 4)")
+        ->check(CLI::Range(2, 1 << 20))
+        ->group(path);
 }
 
 void add_denoise_option(CLI::App* command, bool& denoise, const std::string& what) {
@@ -235,14 +248,22 @@ void check_denoise(RenderMode mode, int samples) {
 }
 
 RenderMode chosen_mode(const ModeOptions& options, const Scene& scene) {
-    if (!options.mode) return scene.default_mode;
-    try {
-        const RenderMode mode = parse_render_mode(*options.mode);
-        check_mode_supported(scene, mode);  // before any kernel is built for it
-        return mode;
-    } catch (const std::invalid_argument& error) {
-        throw UsageError(error.what());
+    RenderMode mode = scene.default_mode;
+    if (options.mode) {
+        try {
+            mode = parse_render_mode(*options.mode);
+            check_mode_supported(scene, mode);  // before any kernel is built for it
+        } catch (const std::invalid_argument& error) {
+            throw UsageError(error.what());
+        }
     }
+    if (mode != RenderMode::Path && (options.noise_threshold > 0.0f || options.min_samples > 0)) {
+        throw UsageError(fmt::format(
+            "--noise-threshold and --min-spp are for --mode path (the {} mode takes the same "
+            "samples everywhere)",
+            render_mode_name(mode)));
+    }
+    return mode;
 }
 
 PathSettings path_settings_from(const ModeOptions& options) {
@@ -254,6 +275,8 @@ PathSettings path_settings_from(const ModeOptions& options) {
     settings.mis = !options.no_mis;
     settings.scene_lights = !options.no_scene_lights;
     settings.seed = options.seed;
+    settings.noise_threshold = options.noise_threshold;
+    settings.min_samples = options.min_samples;
     try {
         check_path_settings(settings);
     } catch (const std::invalid_argument& error) {

@@ -58,6 +58,10 @@ TiledOutput merge_output(const MergeOptions& options, ImageFormat format) {
     } catch (const std::invalid_argument& error) {
         throw UsageError(error.what());
     }
+    if (output.aovs.samples || output.aovs.variance) {
+        throw UsageError(
+            "--aov samples and variance are not kept in parts: fgr merge cannot write them");
+    }
     // As fgr render: an EXR's alpha is its A channel.
     if (format == ImageFormat::Exr) output.aovs.alpha = output.aovs.alpha || options.alpha;
     return output;

@@ -27,6 +27,7 @@
 #include "output/still_image.hpp"
 #include "output/tiled/streaming_image.hpp"
 #include "output/tiled/tiled_still.hpp"
+#include "render/adaptive_sampling.hpp"
 #include "render/render_cost.hpp"
 #include "render/renderer.hpp"
 #include "render/sample_budget.hpp"
@@ -152,6 +153,12 @@ void check_render_options(const RenderOptions& options) {
     }
     parsed_view_override(options.view_override);  // a malformed vector fails before any loading
     check_output_path(options.output);
+    if (options.mode.noise_threshold > 0.0f &&
+        (part_render_wanted(options) || tiled_render_wanted(options))) {
+        throw UsageError(
+            "--noise-threshold decides each pixel's samples from the whole image's rounds: not "
+            "with --part, --tile or a tiled render (give --spp)");
+    }
     if (part_render_wanted(options)) {
         check_part_options(options);
     }
@@ -163,6 +170,13 @@ void check_render_options(const RenderOptions& options) {
         throw UsageError(
             "--denoise filters the whole image at once: not with a tiled render (--tile-size, "
             "over 16 Mpx), --part or --tile (denoise the merged image's EXR instead)");
+    }
+    const Aovs aovs = parse_aovs(options.aovs);
+    if ((aovs.samples || aovs.variance) &&
+        (part_render_wanted(options) || tiled_render_wanted(options))) {
+        throw UsageError(
+            "--aov samples and variance are written by a render of the whole image in one "
+            "process: not with --part, --tile or a tiled render");
     }
 }
 
@@ -216,6 +230,11 @@ StillJob still_job(const Scene& scene, const FrameRequest& request, const Render
     settings.precision = options.precision;
     settings.mode = chosen_mode(options.mode, scene);
     const Aovs aovs = parse_aovs(options.aovs);
+    if ((aovs.samples || aovs.variance) && settings.mode != RenderMode::Path) {
+        throw UsageError(fmt::format(
+            "--aov samples and variance are the path mode's (the {} mode estimates no variance)",
+            render_mode_name(settings.mode)));
+    }
     // Every mode renders every layer; the kernel writes alpha and layers only when asked.
     settings.aovs = options.alpha || aovs.need_aov_planes();
     if (settings.mode == RenderMode::Brute) {
@@ -263,12 +282,21 @@ void report_and_write(const Scene& scene, const FrameRequest& request, int sampl
     fmt::print("render_ms {:.1f}\n", frame.render_ms);
     fmt::print("hits {}\n", frame.hits);
     fmt::print("samples_per_pixel {}\n", frame.samples);
-    if (options.time_limit && frame.samples < samples_asked) {
+    if (frame.adaptive) {
+        spdlog::info("{}", adaptive_summary(*frame.adaptive));
+        fmt::print("adaptive_converged_share {:.4f}\n", frame.adaptive->share_converged);
+        fmt::print("adaptive_mean_error {:.5f}\n", frame.adaptive->mean_error);
+        fmt::print("adaptive_error_p95 {:.5f}\n", frame.adaptive->error_p95);
+        fmt::print("adaptive_spp_min_mean_max {:g} {:.2f} {:g}\n", frame.adaptive->min_spp,
+                   frame.adaptive->mean_spp, frame.adaptive->max_spp);
+        fmt::print("adaptive_samples_saved {:.4f}\n", frame.adaptive->saved());
+    }
+    if (options.time_limit && frame.samples < samples_asked && !frame.adaptive) {
         spdlog::info("--time-limit {:g} s reached after {} of {} samples per pixel",
                      *options.time_limit, frame.samples, samples_asked);
     }
-    fmt::print("samples_per_second {:.0f}\n", double(frame.samples) * request.width *
-                                                  request.height /
+    const double mean_samples = frame.adaptive ? frame.adaptive->mean_spp : double(frame.samples);
+    fmt::print("samples_per_second {:.0f}\n", mean_samples * request.width * request.height /
                                                   std::max(frame.render_ms / 1000.0, 1e-9));
     if (frame.lane_stats) {
         fmt::print("lane_utilisation {:.3f} ({} rays per work-item)\n",
@@ -423,6 +451,16 @@ int render_samples_across_ranks(Cluster& cluster, const Scene& scene, const Fram
 int render_across_ranks(Cluster& cluster, const Scene& scene, const FrameRequest& request,
                         const ComputeDevice& device, ProgramCache& cache,
                         const RenderOptions& options) {
+    if (const Aovs aovs = parse_aovs(options.aovs); aovs.samples || aovs.variance) {
+        throw UsageError(
+            "--aov samples and variance are for renders of one process: under mpirun the ranks' "
+            "sums carry neither");
+    }
+    if (options.mode.noise_threshold > 0.0f) {
+        throw UsageError(
+            "--noise-threshold decides each pixel's samples from its own rounds: under mpirun the "
+            "ranks sum fixed samples with their own seeds (give --spp)");
+    }
     if (sample_budget(chosen_mode(options.mode, scene)).seeded && !tiled_render_wanted(options)) {
         if (options.stats)
             throw UsageError("--stats is for renders of one process (without mpirun)");
@@ -532,7 +570,8 @@ void add_frame_options(CLI::App* command, RenderOptions& options, int max_side) 
         ->check(CLI::IsMember({8, 16}));
     command->add_option("--aov", options.aovs,
                         "EXR layers beside the linear image, in every mode: albedo,normal,depth,"
-                        "alpha (alpha: as --alpha)");
+                        "alpha (alpha: as --alpha); in path mode also samples (per pixel) and "
+                        "variance (of each pixel's estimate)");
     command->add_flag("--alpha", options.alpha,
                       "coverage as alpha with the background removed: an RGBA PNG (straight "
                       "alpha), or an EXR's A channel (colour premultiplied)");

@@ -112,9 +112,14 @@ Aovs parse_aovs(std::string_view list) {
             aovs.depth = true;
         } else if (name == "alpha") {
             aovs.alpha = true;
+        } else if (name == "samples") {
+            aovs.samples = true;
+        } else if (name == "variance") {
+            aovs.variance = true;
         } else {
             throw std::invalid_argument(fmt::format(
-                "unknown --aov layer '{}' (choose from albedo,normal,depth,alpha)", name));
+                "unknown --aov layer '{}' (choose from albedo,normal,depth,alpha,samples,variance)",
+                name));
         }
     }
     return aovs;

@@ -135,6 +135,15 @@ std::vector<ExrLayer> exr_layers(const Frame& frame, const Aovs& aovs, RowBand b
         }
         layers.push_back(std::move(depth));
     }
+    if (aovs.samples) {
+        require_layer(frame, frame.samples_per_pixel, 1, "samples (path mode)");
+        layers.push_back({"samples", {"Y"}, band_values(frame, frame.samples_per_pixel, 1, band)});
+    }
+    if (aovs.variance) {
+        require_layer(frame, frame.variance, 3, "variance (path mode)");
+        layers.push_back(
+            {"variance", {"R", "G", "B"}, band_values(frame, frame.variance, 3, band)});
+    }
     if (aovs.alpha) layers.push_back({"", {"A"}, band_values(frame, frame.alpha, 1, band)});
     if (!frame.raw_linear.empty()) {
         require_layer(frame, frame.raw_linear, 3, "raw");

@@ -30,7 +30,11 @@ struct Aovs {
     bool normal = false;  // the first hit's shading normal, averaged likewise
     bool depth = false;   // distance along the pixel centre's camera ray; +Inf where it missed
     bool alpha = false;   // coverage, with the colour premultiplied by it (see above)
-    bool any() const { return albedo || normal || depth || alpha; }
+    // Path mode: each pixel's samples (adaptive sampling gives each its own) and the variance of
+    // its estimate (Frame::samples_per_pixel, Frame::variance).
+    bool samples = false;
+    bool variance = false;
+    bool any() const { return albedo || normal || depth || alpha || samples || variance; }
     // Whether the frame needs the planes KernelSwitches::aovs adds (depth is always there).
     bool need_aov_planes() const { return albedo || normal || alpha; }
 };

@@ -19,6 +19,14 @@ void check_path_settings(const PathSettings& settings) {
     if (!std::isfinite(settings.radiance_clamp) || settings.radiance_clamp < 0.0f) {
         throw std::invalid_argument("radiance clamp must be 0 (off) or a positive number");
     }
+    if (!std::isfinite(settings.noise_threshold) || settings.noise_threshold < 0.0f ||
+        settings.noise_threshold > 1.0f) {
+        throw std::invalid_argument(
+            "noise threshold must be 0 (off) or a relative error in (0, 1], e.g. 0.01");
+    }
+    if (settings.min_samples < 0) {
+        throw std::invalid_argument("minimum samples per pixel must be 0 (automatic) or more");
+    }
 }
 
 }  // namespace fgr

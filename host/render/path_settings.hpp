@@ -23,6 +23,11 @@ struct PathSettings {
     // measure what stratification buys (the error then falls exactly as 1 / sqrt(samples)).
     bool stratified = true;
     uint32_t seed = 0;  // another seed, another noise pattern
+    // Adaptive sampling (render/adaptive_sampling.hpp): > 0 stops each pixel once the relative
+    // standard error of its estimate is estimated at most this, FrameRequest::samples being the
+    // cap; 0 gives every pixel the same samples.
+    float noise_threshold = 0.0f;
+    int min_samples = 0;  // what every pixel takes first under adaptive sampling; 0: automatic
     // What lights the scene; null renders with the default sky.
     std::shared_ptr<const PreparedEnvironment> environment;
     // The environment compares by identity: a prepared environment is never changed in place.

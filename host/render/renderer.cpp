@@ -20,6 +20,7 @@
 #include "camera/view_validation.hpp"
 #include "device/kernel_layout.hpp"
 #include "device/math_check.hpp"
+#include "render/adaptive_sampling.hpp"
 #include "render/camera_frame.hpp"
 #include "render/modes/mode_kernel.hpp"
 #include "render/prepass/cone_prepass.hpp"
@@ -69,6 +70,10 @@ void check_request(const Scene& scene, const FrameRequest& request) {
         throw std::invalid_argument("cannot render this view: " + problem);
     }
     check_projection(request.projection);
+    if (!request.sample_limits.empty() &&
+        request.sample_limits.size() != static_cast<size_t>(rendered_region(request).pixels())) {
+        throw std::invalid_argument("sample limits do not match the rendered region's pixels");
+    }
 }
 
 // Values a band of a frame's host loops holds at least: under it a thread costs more than it saves.
@@ -338,6 +343,9 @@ bool Renderer::launch_tiles(cl::Kernel& kernel, int tiles, int group,
 
 Frame Renderer::render(const FrameRequest& request) {
     check_request(scene_, request);
+    if (switches_.mode == RenderMode::Path && request.path.noise_threshold > 0.0f) {
+        return render_adaptive(*this, request);  // rounds of plain renders
+    }
     const PixelRegion region = rendered_region(request);
     const TileLayout layout = tile_layout(switches_.packet_width, region.width, region.height);
     const int plane = layout.plane_size();
@@ -378,6 +386,7 @@ Frame Renderer::render(const FrameRequest& request) {
                                             bytes(plane_count - FGR_COMMON_PLANES));
         }
     }
+    mode_->write_inputs(device_.queue, planes, layout, request);
     int done = 0;
     const int bands = progress_bands(request, region, scene_, switches_.mode);
     // The launches in all, as launch_tiles makes them (a cancellable frame's bands included).
@@ -414,8 +423,8 @@ Frame Renderer::render(const FrameRequest& request) {
     frame.samples = done;
     unpack_common_planes(host.values(), layout, region,
                          mode_->sums_samples() ? 1.0f / static_cast<float>(done) : 1.0f, frame);
-    fill_display_image(frame.linear, display_transform(scene_, request.params), frame.image);
     mode_->read_back(host.values(), layout, request, done, frame);
+    fill_display_image(frame.linear, display_transform(scene_, request.params), frame.image);
     if (frame.stats) {
         frame.stats->prepass_de_evaluations = prepass_->evaluations(starts, camera);
         frame.stats->de_evaluations += frame.stats->prepass_de_evaluations;

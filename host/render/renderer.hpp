@@ -81,6 +81,10 @@ struct FrameRequest {
     // earlier frame (render/prepass/reprojection.hpp; 0: no hint), taken where the prepass applies
     // and the DE at the hinted point is clear of the surface. Empty: none.
     std::vector<float> start_hints{};
+    // Render mode "path": per pixel of the region, row-major, the pixel takes only the samples
+    // whose index is below this (adaptive sampling; render/adaptive_sampling.hpp hands these out
+    // round by round). Empty: every pixel takes every sample.
+    std::vector<float> sample_limits{};
 };
 
 // The primary rays' work, from sample 0 of a render built with KernelSwitches::stats.
@@ -129,6 +133,22 @@ struct LaneStats {
     }
 };
 
+// How adaptive sampling went (render/adaptive_sampling.hpp): what it spent and the error it
+// reached, by its own estimate.
+struct AdaptiveReport {
+    float threshold = 0.0f;
+    int rounds = 0;
+    int cap = 0;           // the samples fixed sampling would have taken (--spp)
+    int min_samples = 0;   // what every pixel took in the first round
+    float min_spp = 0.0f;  // samples per pixel: least, mean, most
+    double mean_spp = 0.0;
+    float max_spp = 0.0f;
+    double share_converged = 0.0;  // pixels whose estimated relative error is at most threshold
+    double mean_error = 0.0;       // estimated relative standard error, over pixels
+    double error_p95 = 0.0;        // its 95th percentile
+    double saved() const { return cap > 0 ? 1.0 - mean_spp / double(cap) : 0.0; }
+};
+
 // How deep an IFS image went (shaded mode): the levels of the nodes its pixels hit, which the
 // depth slider caps and the pixel footprint stops short of where detail would be sub-pixel.
 struct IfsLevels {
@@ -162,14 +182,18 @@ struct Frame {
     // Path mode: per pixel (row-major) the samples it received, which differ between pixels under
     // adaptive sampling, and the estimated variance of the pixel's linear RGB estimate (of the
     // mean over its samples, not of one sample; 3 floats a pixel), which guides adaptive sampling
-    // and the denoiser. Empty where a mode does not estimate them.
+    // and the denoiser. The variance comes from the two halves of the samples (odd and even
+    // indices): it is itself noisy (a few degrees of freedom a pixel), unbiased, and -1 in all
+    // three channels where a pixel had fewer than two samples (no estimate). Empty where a mode
+    // does not estimate them (shaded and brute).
     std::vector<float> samples_per_pixel;
     std::vector<float> variance;
     // The linear colour as rendered, when `linear` holds a denoised image of it (3 floats a
     // pixel); empty otherwise.
     std::vector<float> raw_linear;
-    std::optional<LaneStats> lane_stats;  // path mode built with stats
-    std::optional<IfsLevels> ifs_levels;  // IFS scenes in the shaded mode
+    std::optional<LaneStats> lane_stats;     // path mode built with stats
+    std::optional<AdaptiveReport> adaptive;  // path mode with PathSettings::noise_threshold > 0
+    std::optional<IfsLevels> ifs_levels;     // IFS scenes in the shaded mode
     // Render mode "brute" built with stats: inside tests per pixel, all passes of this frame.
     std::optional<double> inside_tests_per_pixel;
 };

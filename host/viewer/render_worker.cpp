@@ -320,6 +320,7 @@ void RenderWorker::render_preview(Renderer& renderer, const ViewState& state, fl
     // Previews are short by design and never cancelled: while the view keeps changing, every
     // one of them would be.
     FrameRequest request = frame_request(state, width, height);
+    request.path.noise_threshold = 0.0f;  // one sample: nothing to adapt
     request.start_hints = preview_start_hints(renderer, state, width, height);
     Frame frame = renderer.render(request);
     last_preview_ =
@@ -348,6 +349,10 @@ std::vector<float> RenderWorker::preview_start_hints(const Renderer& renderer,
 }
 
 void RenderWorker::refine(Renderer& renderer, const ViewState& state, int sample) {
+    if (state.mode == RenderMode::Path && state.path.noise_threshold > 0.0f) {
+        refine_adaptive(renderer, state, sample);
+        return;
+    }
     FrameRequest request = frame_request(state, state.width, state.height);
     request.first_sample = sample;
     request.cancel = [this, generation = state.generation] {
@@ -442,6 +447,62 @@ Image8 RenderWorker::denoised_preview(const ViewState& state) {
         spdlog::warn("denoising the preview: {}", error.what());
         return display_image(*state.scene, state.params, mean, state.width, state.height, 1.0f);
     }
+}
+
+void RenderWorker::refine_adaptive(Renderer& renderer, const ViewState& state, int sample) {
+    int cap = sample_budget(state.mode).standing_view;
+    if (cap <= 0) {
+        std::lock_guard lock(mutex_);
+        cap = std::max(quality_.settings().sample_cap, 1);
+    }
+    if (sample == 0 || !adaptive_) {
+        FrameRequest request = frame_request(state, state.width, state.height);
+        request.samples = cap;
+        adaptive_.emplace(request);
+    }
+    const FrameRequest* planned = adaptive_->next_round();
+    if (planned == nullptr) {
+        accumulated_samples_ = cap;  // every pixel is done: the next pass is idle
+        return;
+    }
+    FrameRequest round = *planned;
+    round.cancel = [this, generation = state.generation] {
+        std::lock_guard lock(mutex_);
+        return stopping_ || (state_ && state_->generation != generation);
+    };
+    const Frame frame = renderer.render(round);
+    if (frame.cancelled) {
+        adaptive_.reset();  // a new view starts its rounds anew
+        return;
+    }
+    {
+        std::lock_guard lock(mutex_);
+        quality_.record_frame(int64_t{state.width} * state.height * round.samples, frame.render_ms);
+    }
+    if (sample == 0) ifs_depth_reached_ = frame.ifs_levels ? frame.ifs_levels->deepest : -1;
+    adaptive_->add_round(frame);
+    accumulated_samples_ = static_cast<int>(std::min<long>(adaptive_->samples_started(), cap));
+    Frame shown = adaptive_->frame(*state.scene);
+    if (state.denoise && shown.variance.size() == shown.linear.size()) {
+        // The rounds' combined estimate with its variance: the preview's fast filter over it.
+        const size_t pixels = size_t(state.width) * size_t(state.height);
+        const auto plane = [pixels](const std::vector<float>& values, size_t per_pixel) {
+            return values.size() == pixels * per_pixel ? std::span<const float>(values)
+                                                       : std::span<const float>();
+        };
+        const std::vector<float> denoised =
+            denoise(DenoiseInput{state.width, state.height, shown.linear, shown.variance,
+                                 plane(shown.albedo, 3), plane(shown.normal, 3),
+                                 plane(shown.depth, 1), plane(shown.alpha, 1)},
+                    DenoiseSettings{DenoiseMethod::Atrous, 0});
+        shown.image =
+            display_image(*state.scene, state.params, denoised, state.width, state.height, 1.0f);
+    }
+    double taken = 0.0;  // pixel samples this round
+    for (float limit : round.sample_limits) taken += limit;
+    publish({std::move(shown.image), 1.0f, accumulated_samples_, frame.render_ms,
+             frame.render_ms > 0.0 ? taken * 1000.0 / frame.render_ms : 0.0,
+             renderer.switches().double_precision, state.generation});
 }
 
 void RenderWorker::take_screenshot(const ScreenshotRequest& request) {

@@ -25,6 +25,7 @@
 #include "device/opencl_device.hpp"
 #include "device/program_cache.hpp"
 #include "image/image_io.hpp"
+#include "render/adaptive_sampling.hpp"
 #include "render/path_settings.hpp"
 #include "render/precision.hpp"
 #include "render/prepass/reprojection.hpp"
@@ -174,6 +175,9 @@ private:
     // them), and the image of the samples so far, denoised.
     void accumulate_features(const Frame& frame, bool first);
     Image8 denoised_preview(const ViewState& state);
+    // Path mode with a noise threshold: one round of adaptive sampling a pass (sample 0 starts
+    // them), up to the standing view's sample cap.
+    void refine_adaptive(Renderer& renderer, const ViewState& state, int sample);
     void take_screenshot(const ScreenshotRequest& request);
     void probe_camera(Renderer& renderer, const ViewState& state);
     void publish(DisplayFrame frame);
@@ -200,6 +204,7 @@ private:
     // For the denoised preview: sums of the squares of linear RGB, of albedo, normal and alpha
     // over the samples, and sample 0's depth (empty unless the state denoises).
     std::vector<float> squares_, albedo_sum_, normal_sum_, alpha_sum_, first_depth_;
+    std::optional<AdaptiveSampler> adaptive_;  // the rounds so far, under a noise threshold
     // The last preview's depths and what they were rendered with: the next preview starts its
     // rays from them, reprojected (render/prepass/reprojection.hpp), when only the camera moved.
     struct LastPreview {

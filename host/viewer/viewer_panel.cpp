@@ -425,6 +425,14 @@ void ViewerPanel::draw_mode_section() {
     ImGui::TextDisabled("accumulates while the camera stands still");
     if (draw_environment_controls()) host_.environment_changed();
     ImGui::SliderInt("bounces", &choices_.path.max_bounces, 0, 32);
+    if (ImGui::SliderFloat("noise threshold", &choices_.path.noise_threshold, 0.0f, 0.1f, "%.3f")) {
+        choices_.path.noise_threshold = std::clamp(choices_.path.noise_threshold, 0.0f, 1.0f);
+    }
+    if (ImGui::IsItemHovered()) {
+        ImGui::SetTooltip(
+            "adaptive sampling: each pixel stops once the relative standard error of its "
+            "estimate is about this (0.01: 1%%), in rounds up to the sample cap; 0: off");
+    }
     ImGui::Checkbox("light sampling", &choices_.path.light_sampling);
     ImGui::SameLine();
     ImGui::Checkbox("MIS", &choices_.path.mis);

@@ -21,7 +21,9 @@
  *
  * Planes (FGR_PATH_*_PLANE, shared/fgr_layout_planes.h): radiance (summed over samples), depth
  * of the first hit (sample 0), then the auxiliary outputs summed over samples: albedo of the
- * first hit, its normal, alpha (1 where the camera ray met the surface); with FGR_STATS the DE
+ * first hit, its normal, alpha (1 where the camera ray met the surface), the radiance of the
+ * odd-numbered samples (accumulate_odd_half), and the per-pixel sample limit the kernel reads
+ * (sample_wanted, adaptive sampling); with FGR_STATS the DE
  * evaluations each lane took part in and those its packet made (for lane utilisation), summed
  * over samples; with FGR_AOVS (a still that writes alpha) then the radiance of the samples whose
  * camera ray met the surface: the foreground without the environment seen past it, for straight
@@ -180,12 +182,31 @@ inline light_sample sample_light(vec3 p, real u_pick, real u1, real u2,
     return s;
 }
 
+/* Adaptive sampling: the lanes whose pixel takes sample `sample`, those whose index is below the
+ * pixel's limit in FGR_PATH_SAMPLE_LIMIT_PLANE (the host's; lanes it leaves out trace nothing and
+ * add nothing to the sums). */
+inline mask sample_wanted(int sample, int tile, __global const float* planes, int plane_size) {
+    return fgr_load(tile, planes + FGR_PATH_SAMPLE_LIMIT_PLANE * plane_size) > (float)sample;
+}
+
+/* The radiance of the odd-numbered samples, summed apart from the others: the two halves' means
+ * differ by about the pixel's noise, which gives the host each pixel's variance (two
+ * half-buffers, as Rousselle et al. 2012 and Cycles' adaptive sampling use). */
+inline void accumulate_odd_half(vec3 radiance, int sample, int tile, __global float* planes,
+                                int plane_size) {
+    const real odd = fgr_real((float)(sample & 1));
+    __global float* odd_planes = planes + FGR_PATH_ODD_RADIANCE_PLANE * plane_size;
+    accumulate_plane(radiance.x * odd, sample, tile, odd_planes);
+    accumulate_plane(radiance.y * odd, sample, tile, odd_planes + plane_size);
+    accumulate_plane(radiance.z * odd, sample, tile, odd_planes + 2 * plane_size);
+}
+
 __kernel void fgr_render(FGR_RENDER_ARGS, __constant const float* lights, path_settings settings,
                          ENVIRONMENT) {
     const int tile = get_global_id(0);
     if (tile >= tile_count) return;
     const tile_pixels pixels = pixels_of_tile(tile, camera);
-    mask active = pixels.inside;
+    mask active = pixels.inside & sample_wanted(sample, tile, planes, plane_size);
 
     /* Stratified: sample `sample` of one scrambled Sobol sequence per pixel. Independent (to
      * measure what stratification buys): the first point of a sequence scrambled anew for every
@@ -345,6 +366,7 @@ __kernel void fgr_render(FGR_RENDER_ARGS, __constant const float* lights, path_s
     accumulate_plane(radiance.x, sample, tile, colour_planes);
     accumulate_plane(radiance.y, sample, tile, colour_planes + plane_size);
     accumulate_plane(radiance.z, sample, tile, colour_planes + 2 * plane_size);
+    accumulate_odd_half(radiance, sample, tile, planes, plane_size);
     if (sample == 0) fgr_store(depth, tile, planes + FGR_DEPTH_PLANE * plane_size);
     __global float* albedo_planes = planes + FGR_PATH_ALBEDO_PLANE * plane_size;
     accumulate_plane(first_albedo.x, sample, tile, albedo_planes);

@@ -54,22 +54,27 @@
 
 /* --- Path (fgr_mode_path.cl) ---------------------------------------------------------------- */
 
-/* Always, summed over samples: the first hit's albedo, normal and coverage. */
-#define FGR_PATH_ALBEDO_PLANE 4 /* 3 */
-#define FGR_PATH_NORMAL_PLANE 7 /* 3 */
-#define FGR_PATH_ALPHA_PLANE 10 /* 1 where the camera ray met the surface */
-#define FGR_PATH_AUXILIARY_PLANES 7
+/* Always, summed over samples: the first hit's albedo, normal and coverage; then the radiance of
+ * the odd-numbered samples alone (the two halves of the samples give each pixel's variance); then
+ * one the host writes: each pixel takes the samples whose index is below its value there (adaptive
+ * sampling; the host writes a huge value when every pixel takes every sample). */
+#define FGR_PATH_ALBEDO_PLANE 4        /* 3 */
+#define FGR_PATH_NORMAL_PLANE 7        /* 3 */
+#define FGR_PATH_ALPHA_PLANE 10        /* 1 where the camera ray met the surface */
+#define FGR_PATH_ODD_RADIANCE_PLANE 11 /* 3 */
+#define FGR_PATH_SAMPLE_LIMIT_PLANE 14 /* read, not written, by the kernel */
+#define FGR_PATH_AUXILIARY_PLANES 11
 
 /* With stats, summed over samples: the DE evaluations each lane took part in, and those its
  * packet made (for lane utilisation). */
-#define FGR_PATH_LANE_STEPS_PLANE 11
-#define FGR_PATH_PACKET_STEPS_PLANE 12
+#define FGR_PATH_LANE_STEPS_PLANE 15
+#define FGR_PATH_PACKET_STEPS_PLANE 16
 #define FGR_PATH_STATS_PLANES 2
 
 /* With aovs, after those: the radiance of the samples whose camera ray met the surface (3
  * planes), the foreground without the environment seen past it. */
 #define FGR_PATH_FOREGROUND_PLANE(stats) \
-    (FGR_PATH_ALPHA_PLANE + 1 + ((stats) ? FGR_PATH_STATS_PLANES : 0))
+    (FGR_PATH_SAMPLE_LIMIT_PLANE + 1 + ((stats) ? FGR_PATH_STATS_PLANES : 0))
 #define FGR_PATH_FOREGROUND_PLANES 3
 
 /* --- Brute (fgr_mode_brute.cl) -------------------------------------------------------------- */

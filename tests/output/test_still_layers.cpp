@@ -348,6 +348,28 @@ TEST(StillLayers, RgbaRowsHoldTheStraightColourAndCoverage) {
     EXPECT_THROW(rgba8_rows(frame, {}, RowBand{0, 2}, rgba8), std::invalid_argument);
 }
 
+// Path mode's sample counts and variance go to layers of their own, after the others and before
+// alpha; a frame without them (another mode) is refused in one line.
+TEST(StillLayers, SamplesAndVarianceLayers) {
+    Frame frame = four_pixels();
+    frame.samples_per_pixel = {4.0f, 16.0f, 64.0f, 8.0f};
+    frame.variance.assign(12, 0.01f);
+    Aovs aovs;
+    aovs.samples = true;
+    aovs.variance = true;
+    aovs.alpha = true;
+    const std::vector<ExrLayer> layers = exr_layers(frame, aovs, whole_frame(frame));
+    ASSERT_EQ(layers.size(), 4u);
+    EXPECT_EQ(layers[1].name, "samples");
+    EXPECT_EQ(layers[1].values, frame.samples_per_pixel);
+    EXPECT_EQ(layers[2].name, "variance");
+    EXPECT_EQ(layers[2].values, frame.variance);
+    EXPECT_EQ(layers[3].values, frame.alpha);
+    EXPECT_EQ(parse_aovs("samples,variance").samples, true);
+    frame.samples_per_pixel.clear();
+    EXPECT_THROW(exr_layers(frame, aovs, whole_frame(frame)), std::invalid_argument);
+}
+
 // One named float channel of an EXR file, rows top first.
 std::vector<float> exr_channel(const fs::path& file, const char* name) {
     Imf::InputFile input(file.c_str());

@@ -24,6 +24,7 @@
 #include "mandelbulb_reference.hpp"
 #include "render/precision.hpp"
 #include "render/renderer.hpp"
+#include "render/sample_budget.hpp"
 #include "scene/ifs/ifs.hpp"
 #include "scene/parameters.hpp"
 #include "test_scenes.hpp"
@@ -147,6 +148,35 @@ TEST_F(RenderWorkerTest, StillViewIsRefinedToTheSampleCapThenLeftAlone) {
     // Idle means idle: nothing more arrives for the same view.
     std::this_thread::sleep_for(200ms);
     EXPECT_FALSE(worker_->take_frame().has_value());
+}
+
+// Under a noise threshold a standing path-traced view refines a round of adaptive sampling a
+// pass, until every pixel is done, and ends on the image fgr render gives the same request.
+TEST_F(RenderWorkerTest, AdaptiveSamplingRefinesInRoundsToTheStillsImage) {
+    ViewState view = state(kSphere, 32, 24, 1);
+    view.mode = RenderMode::Path;
+    view.path.noise_threshold = 0.2f;
+    view.path.min_samples = 4;
+    worker_->submit(view);
+    ASSERT_TRUE(wait_idle(1));
+    ASSERT_FALSE(frames_.empty());
+    const DisplayFrame& last = frames_.back();
+    ProgramCache cache{std::filesystem::path()};
+    KernelSwitches switches{preferred_packet_width(device().info), scenes_[kSphere]->effects};
+    switches.mode = RenderMode::Path;
+    Renderer renderer(device(), cache, *scenes_[kSphere], switches);
+    FrameRequest request{32, 24, view.view, view.params};
+    request.samples = kMaxSamples;  // the standing view's cap in path mode
+    request.path = view.path;
+    const Frame still = renderer.render(request);
+    ASSERT_TRUE(still.adaptive.has_value());
+    EXPECT_LT(still.adaptive->mean_spp, double(kMaxSamples));
+    EXPECT_GT(still.adaptive->rounds, 1);
+    int largest = 0;
+    for (size_t i = 0; i < still.image.rgb.size(); ++i) {
+        largest = std::max(largest, std::abs(int(still.image.rgb[i]) - int(last.image.rgb[i])));
+    }
+    EXPECT_LE(largest, 1);
 }
 
 // An IFS scene's frames say how deep the image went, for the viewer's status line: the depth

@@ -35,6 +35,16 @@ public:
     // that shade as they sample.
     virtual cl::Kernel* resolve_kernel() { return nullptr; }
 
+    // Writes the planes the kernel reads (after the renderer has zeroed those it sums into),
+    // before the frame's first launch; nothing for modes that only write planes.
+    virtual void write_inputs(const cl::CommandQueue& queue, const cl::Buffer& planes,
+                              const TileLayout& layout, const FrameRequest& request) {
+        static_cast<void>(queue);
+        static_cast<void>(planes);
+        static_cast<void>(layout);
+        static_cast<void>(request);
+    }
+
     // Whether the colour planes hold a sum over the samples, which the renderer divides by their
     // count, or the finished colour.
     virtual bool sums_samples() const { return true; }

@@ -12,6 +12,10 @@
 namespace fgr {
 namespace {
 
+// The sample limit of a pixel that takes every sample (FGR_PATH_SAMPLE_LIMIT_PLANE): past any
+// sample index.
+constexpr float kEverySample = 3.0e38f;
+
 float luminance(glm::vec3 rgb) { return 0.2126f * rgb.r + 0.7152f * rgb.g + 0.0722f * rgb.b; }
 
 struct LightList {
@@ -156,9 +160,30 @@ void PathMode::bind(cl::Kernel& kernel, const FrameRequest& request, const TileL
                                    bound_environment_->intensity));
 }
 
+void PathMode::write_inputs(const cl::CommandQueue& queue, const cl::Buffer& planes,
+                            const TileLayout& layout, const FrameRequest& request) {
+    const size_t plane = static_cast<size_t>(layout.plane_size());
+    const size_t offset = sizeof(float) * plane * FGR_PATH_SAMPLE_LIMIT_PLANE;
+    if (request.sample_limits.empty()) {
+        queue.enqueueFillBuffer(planes, kEverySample, offset, sizeof(float) * plane);
+        return;
+    }
+    // Padding lanes (past the region's edge) take none; they trace nothing anyway.
+    std::vector<float> limits(plane, 0.0f);
+    const PixelRegion region = rendered_region(request);
+    for (int y = 0; y < region.height; ++y) {
+        for (int x = 0; x < region.width; ++x) {
+            limits[static_cast<size_t>(layout.index(x, y))] =
+                request.sample_limits[static_cast<size_t>(y) * region.width + x];
+        }
+    }
+    queue.enqueueWriteBuffer(planes, CL_TRUE, offset, sizeof(float) * plane, limits.data());
+}
+
 void PathMode::read_back(std::span<const float> planes, const TileLayout& layout,
-                         const FrameRequest&, int samples, Frame& frame) const {
+                         const FrameRequest& request, int samples, Frame& frame) const {
     const int width = frame.image.width, height = frame.image.height;  // the region's
+    const size_t pixels = static_cast<size_t>(width) * static_cast<size_t>(height);
     const float average = 1.0f / static_cast<float>(std::max(samples, 1));
     frame.albedo = planes_in_rows(planes, layout, FGR_PATH_ALBEDO_PLANE, 3, width, height, average);
     frame.normal = planes_in_rows(planes, layout, FGR_PATH_NORMAL_PLANE, 3, width, height, average);
@@ -166,6 +191,47 @@ void PathMode::read_back(std::span<const float> planes, const TileLayout& layout
     if (aovs_) {
         frame.foreground = planes_in_rows(planes, layout, FGR_PATH_FOREGROUND_PLANE(stats_),
                                           FGR_PATH_FOREGROUND_PLANES, width, height, average);
+    }
+    // Each pixel's samples: first_sample .. its limit, of those launched. The planes above were
+    // averaged over all launched samples; a pixel that took fewer is rescaled to its own count.
+    const std::vector<float> odd =
+        planes_in_rows(planes, layout, FGR_PATH_ODD_RADIANCE_PLANE, 3, width, height);
+    frame.samples_per_pixel.assign(pixels, static_cast<float>(samples));
+    frame.variance.assign(pixels * 3, -1.0f);
+    const long first = request.first_sample;
+    for (size_t pixel = 0; pixel < pixels; ++pixel) {
+        long taken = samples;
+        if (!request.sample_limits.empty()) {
+            const double limit = std::floor(double(request.sample_limits[pixel]));
+            taken = static_cast<long>(std::clamp(limit - double(first), 0.0, double(samples)));
+            frame.samples_per_pixel[pixel] = static_cast<float>(taken);
+            const float rescale = taken > 0 ? float(samples) / float(taken) : 0.0f;
+            if (taken != samples) {
+                for (int c = 0; c < 3; ++c) {
+                    frame.linear[pixel * 3 + c] *= rescale;
+                    frame.albedo[pixel * 3 + c] *= rescale;
+                    frame.normal[pixel * 3 + c] *= rescale;
+                    if (aovs_) frame.foreground[pixel * 3 + c] *= rescale;
+                }
+                frame.alpha[pixel] *= rescale;
+            }
+        }
+        // The odd and even samples among first .. first + taken - 1 (x / 2 odd numbers are below
+        // x), whose means differ by about the noise: Var(odd mean - even mean) = s^2 (1/o + 1/e)
+        // for a per-sample variance s^2, so (difference)^2 / (1/o + 1/e) estimates s^2 without
+        // bias, and s^2 / taken the variance of the pixel's mean.
+        const long odd_count = (first + taken) / 2 - first / 2;
+        const long even_count = taken - odd_count;
+        if (odd_count < 1 || even_count < 1) continue;
+        for (int c = 0; c < 3; ++c) {
+            const double sum = double(frame.linear[pixel * 3 + c]) * double(taken);
+            const double odd_sum = odd[pixel * 3 + c];
+            const double difference =
+                odd_sum / double(odd_count) - (sum - odd_sum) / double(even_count);
+            const double per_sample =
+                difference * difference / (1.0 / double(odd_count) + 1.0 / double(even_count));
+            frame.variance[pixel * 3 + c] = static_cast<float>(per_sample / double(taken));
+        }
     }
     const size_t plane = static_cast<size_t>(layout.plane_size());
     if (!stats_) return;

@@ -9,12 +9,16 @@ namespace fgr {
 
 // Render mode "path" (kernels/modes/fgr_mode_path.cl): its arguments are the lights (the scene's
 // and the sky's sun), the path settings and the environment's tables; it writes the radiance, the
-// first hit's depth, albedo, normal and coverage, and with stats its lanes' work.
+// first hit's depth, albedo, normal and coverage, each pixel's sample count and variance (from
+// the odd samples' radiance, summed apart), and with stats its lanes' work.
 class PathMode final : public ModeKernel {
 public:
     PathMode(const ComputeDevice& device, const Scene& scene, const KernelSwitches& switches);
     int extra_planes(const KernelSwitches& switches) const override;
     void bind(cl::Kernel& kernel, const FrameRequest& request, const TileLayout& layout) override;
+    // The sample limit plane (FrameRequest::sample_limits, or every sample).
+    void write_inputs(const cl::CommandQueue& queue, const cl::Buffer& planes,
+                      const TileLayout& layout, const FrameRequest& request) override;
     void read_back(std::span<const float> planes, const TileLayout& layout,
                    const FrameRequest& request, int samples, Frame& frame) const override;
 
