@@ -338,6 +338,13 @@ bool Renderer::launch_tiles(cl::Kernel& kernel, int tiles, int group,
 
 Frame Renderer::render(const FrameRequest& request) {
     check_request(scene_, request);
+    // A specialised kernel reads some parameters as the constants it was built with.
+    if (const std::string mismatch =
+            specialisation_mismatch(scene_, switches_.specialised, request.params);
+        !mismatch.empty()) {
+        throw std::invalid_argument(
+            fmt::format("cannot render '{}' with this kernel: {}", scene_.id, mismatch));
+    }
     const PixelRegion region = rendered_region(request);
     const TileLayout layout = tile_layout(switches_.packet_width, region.width, region.height);
     const int plane = layout.plane_size();
