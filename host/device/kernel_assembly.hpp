@@ -17,7 +17,7 @@
 namespace fgr {
 
 // A parameter compiled into the kernel as a constant: its accessor reads `value`, never the
-// parameter buffer, so the compiler unrolls and folds what it shapes.
+// parameter buffer, so the compiler folds what it shapes.
 struct SpecialisedParam {
     std::string id;
     float value = 0.0f;

@@ -22,7 +22,7 @@ int declared_kernel_api(std::string_view source);
 // The parameters a scene lets the host compile in as constants, from
 // `#define FGR_SPECIALISABLE id id ...` on a line of its own outside comments (none without one):
 // integer parameters that shape its DE loop (a power, an iteration count), whose values the
-// compiler can then unroll and fold. The ids as written; kernel assembly checks them.
+// compiler can then fold. The ids as written; kernel assembly checks them.
 std::vector<std::string> declared_specialisable(std::string_view source);
 
 }  // namespace fgr

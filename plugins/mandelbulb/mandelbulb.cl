@@ -2,8 +2,9 @@
 /* Mandelbulb scene: the power-n Mandelbulb of kernels/fractals/fgr_fractals.cl (mandelbulb_de,
  * where the formulas are spelled out) with this scene's parameters, coloured by its orbit. */
 
-/* A whole-number power compiled in as a constant lets the compiler unroll the integer power's
- * multiplications (fgr_pown, complex_powi) instead of looping over its bits. */
+/* A whole-number power compiled in as a constant lets the compiler drop the fractional form and
+ * the branch to it, and fold the integer power's exponents into its loops (fgr_pown,
+ * complex_powi); the multiplications and their order stay the same, so the image does too. */
 #define FGR_SPECIALISABLE power
 
 inline real bulb_iterate(vec3 p, PARAMS, int record, orbit_trap* trap) {
