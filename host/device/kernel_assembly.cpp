@@ -154,6 +154,19 @@ std::vector<SpecialisedParam> specialisation_for(const Scene& scene,
     return specialised;
 }
 
+void set_specialised_values(const Scene& scene, const std::vector<SpecialisedParam>& specialised,
+                            std::vector<float>& params) {
+    const auto offsets = param_offsets(scene);
+    for (const SpecialisedParam& constant : specialised) {
+        for (size_t i = 0; i < scene.params.size(); ++i) {
+            const size_t offset = size_t(offsets[i]);
+            if (scene.params[i].id == constant.id && offset < params.size()) {
+                params[offset] = constant.value;
+            }
+        }
+    }
+}
+
 std::string specialisation_mismatch(const Scene& scene,
                                     const std::vector<SpecialisedParam>& specialised,
                                     const std::vector<float>& params) {
@@ -206,6 +219,8 @@ std::string switch_options(const KernelSwitches& switches) {
     if (switches.stats) options += " -DFGR_STATS";
     if (switches.double_precision) options += " -DFGR_DOUBLE";
     if (switches.aovs) options += " -DFGR_AOVS";
+    // Parameters compiled in: the library writes out what constants let the compiler fold.
+    if (!switches.specialised.empty()) options += " -DFGR_SPECIALISED";
     // A plain literal (`z * 2.0`) is a double in OpenCL C, which a float packet refuses ("scalar
     // operand type has greater rank"), while a double build takes it: a scene could work on one
     // device and not another. In float builds literals are made single precision, so scenes

@@ -64,6 +64,10 @@ inline constexpr float kMaxSpecialisedValue = 4096.0f;
 std::vector<SpecialisedParam> specialisation_for(const Scene& scene,
                                                  const std::vector<float>& params);
 
+// Writes the values `specialised` compiled in into `params` (the scene's values).
+void set_specialised_values(const Scene& scene, const std::vector<SpecialisedParam>& specialised,
+                            std::vector<float>& params);
+
 // "" when `params` holds the values `specialised` compiled in, else a one-line reason.
 std::string specialisation_mismatch(const Scene& scene,
                                     const std::vector<SpecialisedParam>& specialised,

@@ -294,6 +294,8 @@ void Renderer::warm_up() {
     tiny.height = 1;
     tiny.view = scene_.cameras.front().view;
     tiny.params = default_param_values(scene_);
+    // A specialised kernel renders only the values compiled into it.
+    set_specialised_values(scene_, switches_.specialised, tiny.params);
     const auto start = std::chrono::steady_clock::now();
     render(tiny);
     if (!scene_.inside_only()) {  // an inside-only scene has no DE to probe

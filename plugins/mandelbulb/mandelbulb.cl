@@ -3,8 +3,8 @@
  * where the formulas are spelled out) with this scene's parameters, coloured by its orbit. */
 
 /* A whole-number power compiled in as a constant lets the compiler drop the fractional form and
- * the branch to it, and fold the integer power's exponents into its loops (fgr_pown,
- * complex_powi); the multiplications and their order stay the same, so the image does too. */
+ * the branch to it, and turn the integer power's steps (fgr_pown, complex_powi) into
+ * straight-line multiplications in the same order, so the image stays the same. */
 #define FGR_SPECIALISABLE power
 
 inline real bulb_iterate(vec3 p, PARAMS, int record, orbit_trap* trap) {
