@@ -5,6 +5,7 @@
 
 #include <algorithm>
 #include <array>
+#include <cmath>
 #include <stdexcept>
 #include <string>
 #include <string_view>
@@ -90,8 +91,11 @@ std::vector<const KernelFile*> formula_families_called(std::string_view source) 
 // A parameter reads as the uniform value it is: the same in every lane, so `float`, `int` and (from
 // kernel API 4) `float3`, whose components are plain floats at every packet width. Before API 4 a
 // vec3 parameter reads as a vec3 of lanes, as scenes written then pass it to the vec3 helpers.
-std::string accessor(const ParamInfo& param, int offset, int kernel_api) {
-    const std::string slot = fmt::format("fgr_params[{}]", offset);
+std::string accessor(const ParamInfo& param, int offset, int kernel_api,
+                     const SpecialisedParam* constant) {
+    // A whole number (specialisation_for), written exactly; the float keeps `param_x` a float.
+    const std::string slot = constant ? fmt::format("{}.0f", static_cast<long>(constant->value))
+                                      : fmt::format("fgr_params[{}]", offset);
     switch (param.type) {
         case ParamType::Float:
             return fmt::format("#define param_{} ({})\n", param.id, slot);
@@ -111,13 +115,74 @@ std::string accessor(const ParamInfo& param, int offset, int kernel_api) {
 
 }  // namespace
 
-std::string param_accessors(const Scene& scene, int kernel_api) {
+std::string param_accessors(const Scene& scene, int kernel_api,
+                            const std::vector<SpecialisedParam>& specialised) {
     std::string out;
     const auto offsets = param_offsets(scene);
     for (size_t i = 0; i < scene.params.size(); ++i) {
-        out += accessor(scene.params[i], offsets[i], kernel_api);
+        const auto constant =
+            std::find_if(specialised.begin(), specialised.end(),
+                         [&](const SpecialisedParam& s) { return s.id == scene.params[i].id; });
+        out += accessor(scene.params[i], offsets[i], kernel_api,
+                        constant == specialised.end() ? nullptr : &*constant);
     }
     return out;
+}
+
+std::vector<SpecialisedParam> specialisation_for(const Scene& scene,
+                                                 const std::vector<float>& params) {
+    std::vector<SpecialisedParam> specialised;
+    const auto offsets = param_offsets(scene);
+    for (const std::string& id : declared_specialisable(scene.source)) {
+        const auto param = std::find_if(scene.params.begin(), scene.params.end(),
+                                        [&](const ParamInfo& p) { return p.id == id; });
+        if (param == scene.params.end() ||
+            (param->type != ParamType::Int && param->type != ParamType::Float)) {
+            throw std::invalid_argument(fmt::format(
+                "{}: FGR_SPECIALISABLE names '{}', which is not an int or float parameter of "
+                "scene '{}'",
+                scene.source_name, id, scene.id));
+        }
+        const size_t offset = size_t(offsets[size_t(param - scene.params.begin())]);
+        if (offset >= params.size()) continue;
+        const float value = params[offset];
+        if (std::isfinite(value) && std::floor(value) == value &&
+            std::fabs(value) <= kMaxSpecialisedValue) {
+            specialised.push_back({id, value});
+        }
+    }
+    return specialised;
+}
+
+void set_specialised_values(const Scene& scene, const std::vector<SpecialisedParam>& specialised,
+                            std::vector<float>& params) {
+    const auto offsets = param_offsets(scene);
+    for (const SpecialisedParam& constant : specialised) {
+        for (size_t i = 0; i < scene.params.size(); ++i) {
+            const size_t offset = size_t(offsets[i]);
+            if (scene.params[i].id == constant.id && offset < params.size()) {
+                params[offset] = constant.value;
+            }
+        }
+    }
+}
+
+std::string specialisation_mismatch(const Scene& scene,
+                                    const std::vector<SpecialisedParam>& specialised,
+                                    const std::vector<float>& params) {
+    const auto offsets = param_offsets(scene);
+    for (const SpecialisedParam& constant : specialised) {
+        for (size_t i = 0; i < scene.params.size(); ++i) {
+            if (scene.params[i].id != constant.id) continue;
+            const size_t offset = size_t(offsets[i]);
+            if (offset >= params.size() || params[offset] != constant.value) {
+                return fmt::format("the kernel was built with {} = {}, and the frame asks for {}",
+                                   constant.id, constant.value,
+                                   offset < params.size() ? params[offset] : 0.0f);
+            }
+        }
+    }
+    return "";
 }
 
 std::string build_error_hint(int kernel_api, std::string_view log) {
@@ -154,6 +219,8 @@ std::string switch_options(const KernelSwitches& switches) {
     if (switches.stats) options += " -DFGR_STATS";
     if (switches.double_precision) options += " -DFGR_DOUBLE";
     if (switches.aovs) options += " -DFGR_AOVS";
+    // Parameters compiled in: the library writes out what constants let the compiler fold.
+    if (!switches.specialised.empty()) options += " -DFGR_SPECIALISED";
     // A plain literal (`z * 2.0`) is a double in OpenCL C, which a float packet refuses ("scalar
     // operand type has greater rank"), while a double build takes it: a scene could work on one
     // device and not another. In float builds literals are made single precision, so scenes
@@ -174,7 +241,7 @@ AssembledProgram assemble_program(const Scene& scene, const KernelSwitches& swit
                 fmt::format("#define FGR_KERNEL_API {}\n", kernel_api).c_str());
     for (const auto& file : kernel_prelude()) append_file(source, file.name, file.source);
     append_file(source, fmt::format("<parameters of {}>", scene.id),
-                param_accessors(scene, kernel_api).c_str());
+                param_accessors(scene, kernel_api, switches.specialised).c_str());
     const std::vector<const KernelFile*> families = formula_families_called(scene.source);
     if (!families.empty() && kernel_api < 2) {
         throw std::invalid_argument(

@@ -7,6 +7,7 @@
 #include <cstdint>
 #include <string>
 #include <string_view>
+#include <vector>
 
 #include "fgr/plugin.h"
 #include "scene/effects.hpp"
@@ -14,6 +15,14 @@
 #include "scene/scene.hpp"
 
 namespace fgr {
+
+// A parameter compiled into the kernel as a constant: its accessor reads `value`, never the
+// parameter buffer, so the compiler folds what it shapes.
+struct SpecialisedParam {
+    std::string id;
+    float value = 0.0f;
+    bool operator==(const SpecialisedParam&) const = default;
+};
 
 // Compile-time choices: each distinct set is a distinct program.
 struct KernelSwitches {
@@ -26,6 +35,9 @@ struct KernelSwitches {
     // where the mode does not always write it: the shaded mode's layers, the path mode's
     // foreground. Off, the kernel is exactly the plain one.
     bool aovs = false;
+    // Parameters compiled in as constants (specialisation_for); empty: the generic kernel, which
+    // reads every parameter from the buffer. A renderer so built renders only those values.
+    std::vector<SpecialisedParam> specialised{};
 };
 
 struct AssembledProgram {
@@ -38,7 +50,28 @@ AssembledProgram assemble_program(const Scene& scene, const KernelSwitches& swit
 
 // "#define param_<id> ..." lines reading each parameter from the buffer `fgr_params`, as the
 // kernel API version the scene's source declares reads it (a vec3 is a float3 from version 4).
-std::string param_accessors(const Scene& scene, int kernel_api);
+// Parameters in `specialised` read as their constant value instead.
+std::string param_accessors(const Scene& scene, int kernel_api,
+                            const std::vector<SpecialisedParam>& specialised = {});
+
+// The largest magnitude a specialised value may have: beyond it the generic kernel is used.
+inline constexpr float kMaxSpecialisedValue = 4096.0f;
+
+// What of `params` (the scene's values) to compile in: each parameter the scene's source declares
+// specialisable (declared_specialisable) whose value is a whole number no larger than
+// kMaxSpecialisedValue; empty when none is. Throws std::invalid_argument naming the source file
+// when the declaration names no parameter of the scene, or one that is not an int or a float.
+std::vector<SpecialisedParam> specialisation_for(const Scene& scene,
+                                                 const std::vector<float>& params);
+
+// Writes the values `specialised` compiled in into `params` (the scene's values).
+void set_specialised_values(const Scene& scene, const std::vector<SpecialisedParam>& specialised,
+                            std::vector<float>& params);
+
+// "" when `params` holds the values `specialised` compiled in, else a one-line reason.
+std::string specialisation_mismatch(const Scene& scene,
+                                    const std::vector<SpecialisedParam>& specialised,
+                                    const std::vector<float>& params);
 
 // What to change when a build log shows a lane value and a uniform one mixed up, as reading
 // parameters invites: a `real` (one value per lane) where a float is wanted, which a vec3

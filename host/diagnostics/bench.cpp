@@ -87,15 +87,23 @@ std::string origin_name(BuildReport::Origin origin) {
     return "memory cache";
 }
 
+// What a benchmark builds: its frames all render the scene's defaults, so the parameters the scene
+// lets the host compile in are compiled in, as `fgr render` does.
+KernelSwitches bench_switches(const Scene& scene, const ComputeDevice& device,
+                              const BenchSettings& settings) {
+    KernelSwitches switches{
+        settings.packet_width ? settings.packet_width : preferred_packet_width(device.info),
+        scene.effects, false, false, settings.render_mode};
+    switches.specialised = specialisation_for(scene, default_param_values(scene));
+    return switches;
+}
+
 // A benchmark's float and double renderers, each built when a frame first needs it, and the
 // choice between them frame by frame.
 struct BenchRenderers {
     BenchRenderers(const Scene& scene, const ComputeDevice& device, ProgramCache& cache,
                    const BenchSettings& settings)
-        : renderers(
-              device, cache, scene,
-              {settings.packet_width ? settings.packet_width : preferred_packet_width(device.info),
-               scene.effects, false, false, settings.render_mode}),
+        : renderers(device, cache, scene, bench_switches(scene, device, settings)),
           chooser(device.info, [](const std::string& warning) { spdlog::warn("{}", warning); }) {}
 
     PrecisionRenderers renderers;

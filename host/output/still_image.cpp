@@ -70,7 +70,11 @@ Renderer& choose_still_renderer(PrecisionRenderers& renderers, const Scene& scen
 
 Frame render_still(const Scene& scene, const FrameRequest& request, const ComputeDevice& device,
                    ProgramCache& cache, const StillSettings& settings) {
-    PrecisionRenderers renderers(device, cache, scene, still_switches(device, settings));
+    // One frame at known values: the kernel compiled with the scene's specialisable parameters
+    // as constants (it is cached, so the next render with the same values builds nothing).
+    KernelSwitches switches = still_switches(device, settings);
+    switches.specialised = specialisation_for(scene, request.params);
+    PrecisionRenderers renderers(device, cache, scene, switches);
     Frame frame =
         choose_still_renderer(renderers, scene, request, device, settings).render(request);
     check_finite_frame(scene, frame);

@@ -299,6 +299,8 @@ void Renderer::warm_up() {
     tiny.height = 1;
     tiny.view = scene_.cameras.front().view;
     tiny.params = default_param_values(scene_);
+    // A specialised kernel renders only the values compiled into it.
+    set_specialised_values(scene_, switches_.specialised, tiny.params);
     const auto start = std::chrono::steady_clock::now();
     render(tiny);
     if (!scene_.inside_only()) {  // an inside-only scene has no DE to probe
@@ -343,6 +345,13 @@ bool Renderer::launch_tiles(cl::Kernel& kernel, int tiles, int group,
 
 Frame Renderer::render(const FrameRequest& request) {
     check_request(scene_, request);
+    // A specialised kernel reads some parameters as the constants it was built with.
+    if (const std::string mismatch =
+            specialisation_mismatch(scene_, switches_.specialised, request.params);
+        !mismatch.empty()) {
+        throw std::invalid_argument(
+            fmt::format("cannot render '{}' with this kernel: {}", scene_.id, mismatch));
+    }
     if (switches_.mode == RenderMode::Path && request.path.noise_threshold > 0.0f) {
         return render_adaptive(*this, request);  // rounds of plain renders
     }

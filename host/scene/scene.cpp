@@ -205,6 +205,26 @@ int declared_kernel_api(std::string_view source) {
     return version;
 }
 
+std::vector<std::string> declared_specialisable(std::string_view source) {
+    static const std::regex directive(R"(^[ \t]*#[ \t]*define[ \t]+FGR_SPECIALISABLE\b([^\r\n]*)$)",
+                                      std::regex::multiline);
+    std::vector<std::string> ids;
+    if (source.find("FGR_SPECIALISABLE") == std::string_view::npos) return ids;
+    const std::string code = without_comments(source);
+    std::smatch match;
+    if (!std::regex_search(code, match, directive)) return ids;
+    const std::string list = match[1].str();
+    size_t at = 0;
+    while (at < list.size()) {
+        at = list.find_first_not_of(" \t\r", at);
+        if (at == std::string::npos) break;
+        const size_t end = std::min(list.find_first_of(" \t\r", at), list.size());
+        ids.push_back(list.substr(at, end - at));
+        at = end;
+    }
+    return ids;
+}
+
 namespace {
 
 // The knobs of the brute-force mode (kernels/modes/fgr_mode_brute.cl); other modes never read them.

@@ -8,6 +8,9 @@
 #include <cmath>
 #include <glm/geometric.hpp>
 #include <span>
+#include <string>
+#include <utility>
+#include <vector>
 
 #include "denoise/denoise.hpp"
 #include "output/denoised_frame.hpp"
@@ -40,6 +43,7 @@ RenderWorker::RenderWorker(int device_index, int packet_width, QualitySettings q
     : device_(open_device(device_index)),
       packet_width_(packet_width ? packet_width : preferred_packet_width(device_.info)),
       cache_(ProgramCache::default_directory()),
+      specialise_cache_(ProgramCache::default_directory()),
       precision_chooser_(device_.info,
                          [this](const std::string& warning) { post_message(warning); }),
       quality_(quality) {
@@ -55,6 +59,12 @@ void RenderWorker::stop() {
     }
     wake_.notify_all();
     if (thread_.joinable()) thread_.join();
+    if (specialiser_.joinable()) specialiser_.join();
+}
+
+void RenderWorker::set_specialise_gate(std::function<void()> gate) {
+    std::lock_guard lock(mutex_);
+    specialise_gate_ = std::move(gate);
 }
 
 void RenderWorker::submit(ViewState state) {
@@ -122,8 +132,10 @@ void RenderWorker::post_message(std::string message) {
     messages_.push_back(std::move(message));
 }
 
-void RenderWorker::publish(DisplayFrame frame) {
+void RenderWorker::publish(DisplayFrame frame, const Renderer& renderer) {
     frame.ifs_depth_reached = ifs_depth_reached_;
+    frame.double_precision = renderer.switches().double_precision;
+    frame.specialised = !renderer.switches().specialised.empty();
     std::lock_guard lock(mutex_);
     frame_ = std::move(frame);
 }
@@ -180,7 +192,7 @@ void RenderWorker::run() {
                 mark_idle(state.generation);  // the build failed: nothing to refine
                 continue;
             }
-            render_pass(*renderer, state);
+            render_pass(*specialised_or(*renderer, state), state);
         } catch (const std::exception& error) {
             // A render that fails (device out of memory, lost device) must not end the viewer:
             // report it and wait for the next change.
@@ -289,6 +301,91 @@ void RenderWorker::reload(const ReloadRequest& request) {
     status_.pending_reloads = static_cast<int>(reloads_.size());
 }
 
+namespace {
+
+std::string specialised_text(const std::vector<SpecialisedParam>& values) {
+    std::string text;
+    for (const SpecialisedParam& value : values) {
+        text += fmt::format("{}{} = {}", text.empty() ? "" : ", ", value.id, value.value);
+    }
+    return text;
+}
+
+}  // namespace
+
+void RenderWorker::collect_specialised() {
+    std::unique_ptr<Renderer> built;
+    {
+        std::lock_guard lock(mutex_);
+        if (!specialised_done_) return;
+        specialised_done_ = false;
+        built = std::move(specialised_built_);
+        status_.specialising = false;
+    }
+    if (specialiser_.joinable()) specialiser_.join();
+    const SpecialisedKey key = *std::exchange(specialising_, std::nullopt);
+    if (!built) {
+        specialise_failed_[key] = true;
+        return;
+    }
+    std::shared_ptr<const Scene> scene;
+    for (const auto& [renderer_key, cached] : renderers_) {
+        if (cached.renderer.get() == key.first) scene = cached.scene;
+    }
+    specialised_[key] = {scene, std::move(built)};
+    // Show it now: the view refines again from its first sample with the specialised kernel.
+    accumulated_generation_ = UINT64_MAX;
+}
+
+Renderer* RenderWorker::specialised_or(Renderer& generic, const ViewState& state) {
+    collect_specialised();
+    std::vector<SpecialisedParam> values;
+    try {
+        values = specialisation_for(*state.scene, state.params);
+    } catch (const std::invalid_argument&) {
+        return &generic;  // a declaration naming no such parameter: the generic kernel serves
+    }
+    if (values.empty()) return &generic;
+    const SpecialisedKey key{&generic, specialised_text(values)};
+    if (auto found = specialised_.find(key); found != specialised_.end()) {
+        return found->second.renderer.get();
+    }
+    if (specialise_failed_.count(key) || specialising_) return &generic;
+    // One build at a time, on its own thread with its own program cache (the render thread's is
+    // not shared); the generic kernel renders meanwhile, so a slider never waits for a compile.
+    specialising_ = key;
+    KernelSwitches switches = generic.switches();
+    switches.specialised = values;
+    std::function<void()> gate;
+    {
+        std::lock_guard lock(mutex_);
+        status_.specialising = true;
+        gate = specialise_gate_;
+    }
+    spdlog::info("building '{}' with {} compiled in", state.scene->id, key.second);
+    specialiser_ = std::thread([this, scene = state.scene, switches, gate] {
+        if (gate) gate();
+        std::unique_ptr<Renderer> built;
+        try {
+            built = std::make_unique<Renderer>(device_, specialise_cache_, *scene, switches);
+        } catch (const std::exception& error) {
+            spdlog::warn(
+                "the specialised kernel of '{}' did not build ({}): the generic one "
+                "renders",
+                scene->id, error.what());
+        }
+        {
+            std::lock_guard lock(mutex_);
+            specialised_built_ = std::move(built);
+            specialised_done_ = true;
+            status_.idle = false;  // render again, with the new kernel
+            previewed_generation_ = UINT64_MAX;
+        }
+        wake_.notify_all();
+    });
+    return &generic;
+}
+
 void RenderWorker::render_pass(Renderer& renderer, const ViewState& state) {
     if (accumulated_generation_ != state.generation) {
         accumulated_generation_ = state.generation;
@@ -334,7 +431,8 @@ void RenderWorker::render_preview(Renderer& renderer, const ViewState& state, fl
     ifs_depth_reached_ = frame.ifs_levels ? frame.ifs_levels->deepest : -1;
     publish({std::move(frame.image), scale, 1, frame.render_ms,
              samples_per_second(width, height, frame.render_ms),
-             renderer.switches().double_precision, state.generation});
+             renderer.switches().double_precision, state.generation},
+            renderer);
 }
 
 std::vector<float> RenderWorker::preview_start_hints(const Renderer& renderer,
@@ -371,7 +469,8 @@ void RenderWorker::refine(Renderer& renderer, const ViewState& state, int sample
         accumulated_samples_ = sample + 1;
         publish({std::move(frame.image), 1.0f, accumulated_samples_, frame.render_ms,
                  samples_per_second(state.width, state.height, frame.render_ms),
-                 renderer.switches().double_precision, state.generation});
+                 renderer.switches().double_precision, state.generation},
+                renderer);
         return;
     }
     const bool denoising = state.denoise && state.mode == RenderMode::Path;
@@ -382,7 +481,8 @@ void RenderWorker::refine(Renderer& renderer, const ViewState& state, int sample
         accumulated_samples_ = 1;
         publish({std::move(frame.image), 1.0f, 1, frame.render_ms,
                  samples_per_second(state.width, state.height, frame.render_ms),
-                 renderer.switches().double_precision, state.generation});
+                 renderer.switches().double_precision, state.generation},
+                renderer);
         return;
     }
     for (size_t i = 0; i < accumulation_.size(); ++i) accumulation_[i] += frame.linear[i];
@@ -393,7 +493,8 @@ void RenderWorker::refine(Renderer& renderer, const ViewState& state, int sample
                                              state.height, inverse);
     publish({std::move(image), 1.0f, accumulated_samples_, frame.render_ms,
              samples_per_second(state.width, state.height, frame.render_ms),
-             renderer.switches().double_precision, state.generation});
+             renderer.switches().double_precision, state.generation},
+            renderer);
 }
 
 void RenderWorker::accumulate_features(const Frame& frame, bool first) {
@@ -502,7 +603,8 @@ void RenderWorker::refine_adaptive(Renderer& renderer, const ViewState& state, i
     for (float limit : round.sample_limits) taken += limit;
     publish({std::move(shown.image), 1.0f, accumulated_samples_, frame.render_ms,
              frame.render_ms > 0.0 ? taken * 1000.0 / frame.render_ms : 0.0,
-             renderer.switches().double_precision, state.generation});
+             renderer.switches().double_precision, state.generation},
+            renderer);
 }
 
 void RenderWorker::take_screenshot(const ScreenshotRequest& request) {

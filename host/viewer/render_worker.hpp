@@ -13,6 +13,7 @@
 #include <cstdint>
 #include <deque>
 #include <filesystem>
+#include <functional>
 #include <map>
 #include <memory>
 #include <mutex>
@@ -67,6 +68,9 @@ struct DisplayFrame {
     bool double_precision = false;  // rendered with double lanes
     uint64_t generation = 0;
     int ifs_depth_reached = -1;  // IFS scenes: the deepest level a pixel hit (-1: none or not IFS)
+    // Rendered by a kernel with the scene's specialisable parameters compiled in (KernelSwitches::
+    // specialised); the generic kernel renders until that one is built.
+    bool specialised = false;
 };
 
 struct WorkerStatus {
@@ -80,6 +84,7 @@ struct WorkerStatus {
     uint64_t idle_generation = 0;   // ... for this generation
     int pending_screenshots = 0;
     int pending_reloads = 0;
+    bool specialising = false;  // a kernel with the parameters compiled in is building meanwhile
 };
 
 // A screenshot is the still of a view file (view_still.hpp), rendered and written as `fgr render`
@@ -131,6 +136,10 @@ public:
     // Finishes pending screenshots, abandons refinement, and stops the thread.
     void stop();
 
+    // Called on the thread that builds a specialised kernel, before it builds: a test holds it
+    // there to see what the viewer shows meanwhile. Set before the first submit.
+    void set_specialise_gate(std::function<void()> gate);
+
 private:
     struct RendererKey {
         const Scene* scene;
@@ -164,6 +173,12 @@ private:
                              bool double_precision, RenderMode mode,
                              std::pair<std::string, std::string>* failure);
     void reload(const ReloadRequest& request);
+    // The renderer with the state's specialisable parameters compiled in when it is built, else
+    // `generic`, whose kernel reads every parameter (and the specialised one's build is started on
+    // its own thread, so no frame waits for the compiler).
+    Renderer* specialised_or(Renderer& generic, const ViewState& state);
+    // Takes over a specialised renderer whose build has finished (render thread).
+    void collect_specialised();
     void render_pass(Renderer& renderer, const ViewState& state);
     void render_preview(Renderer& renderer, const ViewState& state, float scale);
     // Start hints for a preview of `state` at width x height from the last preview's depths
@@ -180,7 +195,7 @@ private:
     void refine_adaptive(Renderer& renderer, const ViewState& state, int sample);
     void take_screenshot(const ScreenshotRequest& request);
     void probe_camera(Renderer& renderer, const ViewState& state);
-    void publish(DisplayFrame frame);
+    void publish(DisplayFrame frame, const Renderer& renderer);
     void mark_idle(uint64_t generation);
     void post_message(std::string message);
 
@@ -195,6 +210,19 @@ private:
         std::pair<std::string, std::string> message;  // summary, log
     };
     std::map<RendererKey, Failure> failures_;
+
+    // Specialised renderers, by the generic renderer they stand in for (which lives as long as the
+    // worker) and the values compiled in; render thread only. A failed build is not retried.
+    using SpecialisedKey = std::pair<const Renderer*, std::string>;
+    std::map<SpecialisedKey, CachedRenderer> specialised_;
+    std::map<SpecialisedKey, bool> specialise_failed_;
+    std::optional<SpecialisedKey> specialising_;  // the build in flight
+    std::thread specialiser_;                     // ... its thread, which has its own cache
+    ProgramCache specialise_cache_;
+    // Handed over under mutex_ when the build ends: the renderer, or null when it failed.
+    bool specialised_done_ = false;
+    std::unique_ptr<Renderer> specialised_built_;
+    std::function<void()> specialise_gate_;
 
     // Refinement of the current generation (render thread only).
     uint64_t accumulated_generation_ = UINT64_MAX;

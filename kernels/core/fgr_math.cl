@@ -10,13 +10,41 @@
  * packet where one fails. For finite inputs, float lanes compute what the plain built-ins
  * compute, except fgr_pown, which multiplies. Scenes should use them too. */
 
+/* One step of binary exponentiation with exponent bits e: multiply in the base for a set low bit,
+ * shift, square the base while bits remain. */
+#define FGR_BINARY_POWER_STEP(e, multiply, square) \
+    if ((e) > 0) {                                 \
+        if ((e)&1) multiply;                       \
+        (e) >>= 1;                                 \
+        if ((e) > 0) square;                       \
+    }
+
+/* A kernel built with parameters compiled in (FGR_SPECIALISED) often has constant exponents, yet
+ * PoCL keeps the loop below even then: there the first five steps are written out, for the
+ * compiler to fold (the same multiplications in the same order, so the same bits), and the power
+ * helpers are inlined into packet code. Measured slower in the kernel that reads parameters from
+ * the buffer, so that one keeps the plain loop. */
+#if defined(FGR_SPECIALISED) && FGR_WIDTH > 1
+#define FGR_POWER_FUNCTION inline __attribute__((always_inline))
+#define FGR_POWER_STEPS_AHEAD(e, multiply, square) \
+    FGR_BINARY_POWER_STEP(e, multiply, square)     \
+    FGR_BINARY_POWER_STEP(e, multiply, square)     \
+    FGR_BINARY_POWER_STEP(e, multiply, square)     \
+    FGR_BINARY_POWER_STEP(e, multiply, square)     \
+    FGR_BINARY_POWER_STEP(e, multiply, square)
+#else
+#define FGR_POWER_FUNCTION inline
+#define FGR_POWER_STEPS_AHEAD(e, multiply, square)
+#endif
+
 /* x^n for an integer n (the same for every lane): binary exponentiation, exact to a few
  * roundings (n = 7 is four multiplications), in float too: PoCL's float16 pown costs more than
  * the rest of a Mandelbulb iteration together (the canonical view rendered in 2.2x the time). */
-inline real fgr_pown(real x, int n) {
+FGR_POWER_FUNCTION real fgr_pown(real x, int n) {
     int e = abs(n);
     real result = fgr_real(1.0f);
     real base = x;
+    FGR_POWER_STEPS_AHEAD(e, result *= base, base *= base)
     while (e > 0) {
         if (e & 1) result *= base;
         e >>= 1;

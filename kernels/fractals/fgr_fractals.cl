@@ -27,10 +27,12 @@ inline complex_packet complex_mul(complex_packet a, complex_packet b) {
 }
 
 /* a^n for integer n >= 1, by binary exponentiation (3 squarings for n = 8). */
-inline complex_packet complex_powi(complex_packet a, int n) {
+FGR_POWER_FUNCTION complex_packet complex_powi(complex_packet a, int n) {
     complex_packet result = a;
     complex_packet base = a;
     int remaining = n - 1;
+    FGR_POWER_STEPS_AHEAD(remaining, result = complex_mul(result, base),
+                          base = complex_mul(base, base))
     while (remaining > 0) {
         if (remaining & 1) result = complex_mul(result, base);
         remaining >>= 1;
@@ -50,7 +52,7 @@ inline complex_packet unit_complex(real re, real im, real inv_len, real fallback
 inline real safe_inverse(real len) { return select(1.0f / len, fgr_real(0.0f), len <= 0.0f); }
 
 /* z^n for integer n: r^n times the unit direction at angles (n theta, n phi). */
-inline vec3 bulb_power_integer(vec3 z, real r, real r_n, int n, int latitude_form) {
+FGR_POWER_FUNCTION vec3 bulb_power_integer(vec3 z, real r, real r_n, int n, int latitude_form) {
     real rho = sqrt(z.x * z.x + z.y * z.y);
     complex_packet azimuth = complex_powi(unit_complex(z.x, z.y, safe_inverse(rho), 1.0f), n);
     real inv_r = safe_inverse(r);

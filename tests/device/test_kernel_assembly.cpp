@@ -138,6 +138,43 @@ TEST(KernelAssembly, AccessorsFollowTheBufferLayout) {
     EXPECT_NE(accessors.find("#define param_max_steps ((int)fgr_params[6])"), std::string::npos);
 }
 
+// A scene declares which parameters may be compiled in; only whole values within bounds are, and
+// their accessors read the constant instead of the buffer.
+TEST(KernelAssembly, SpecialisableParametersCompileInAsConstants) {
+    Scene scene = test::inline_scene(
+        "/* #define FGR_SPECIALISABLE scale */\n"
+        "#define FGR_SPECIALISABLE  count\tscale \n"
+        "real scene_de(vec3 p, PARAMS) { return v3_length(p) - param_scale; }");
+    scene.params.insert(scene.params.begin(), {ParamInfo{.id = "scale", .type = ParamType::Float},
+                                               ParamInfo{.id = "count", .type = ParamType::Int}});
+    EXPECT_EQ(declared_specialisable(scene.source), (std::vector<std::string>{"count", "scale"}));
+    EXPECT_TRUE(declared_specialisable("// #define FGR_SPECIALISABLE count\n").empty());
+    std::vector<float> params = default_param_values(scene);
+    params[0] = 8.0f;
+    params[1] = 12.0f;
+    const std::vector<SpecialisedParam> whole = specialisation_for(scene, params);
+    ASSERT_EQ(whole.size(), 2u);
+    EXPECT_EQ(whole[0], (SpecialisedParam{"count", 12.0f}));
+    EXPECT_EQ(whole[1], (SpecialisedParam{"scale", 8.0f}));
+    const std::string accessors = param_accessors(scene, kKernelApiLatest, whole);
+    EXPECT_NE(accessors.find("#define param_scale (8.0f)"), std::string::npos) << accessors;
+    EXPECT_NE(accessors.find("#define param_count ((int)12.0f)"), std::string::npos) << accessors;
+    EXPECT_EQ(specialisation_mismatch(scene, whole, params), "");
+    EXPECT_NE(specialisation_mismatch(scene, whole, default_param_values(scene)), "");
+    // A fraction or a huge value leaves the parameter to the buffer.
+    params[0] = 7.5f;
+    params[1] = 1e6f;
+    EXPECT_TRUE(specialisation_for(scene, params).empty());
+    // A declaration naming no int or float parameter is refused, naming the file.
+    scene.source = "#define FGR_SPECIALISABLE radius\n" + scene.source;
+    try {
+        specialisation_for(scene, params);
+        FAIL() << "no error for an unknown parameter";
+    } catch (const std::invalid_argument& error) {
+        EXPECT_NE(std::string(error.what()).find("'radius'"), std::string::npos) << error.what();
+    }
+}
+
 // The hint reads clang's words for a lane value where a float is wanted, and for a float3 where a
 // vec3 is wanted, each only in the kernel API where a parameter gives that type.
 TEST(KernelAssembly, BuildErrorsMixingLaneAndUniformValuesGetAHint) {

@@ -4,10 +4,13 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <filesystem>
 #include <set>
 #include <string>
+#include <vector>
 
 #include "camera/camera.hpp"
+#include "device/kernel_assembly.hpp"
 #include "device/program_cache.hpp"
 #include "image_compare.hpp"
 #include "mandelbulb_reference.hpp"
@@ -348,6 +351,27 @@ TEST_F(RenderTest, OverRelaxationTakesFewerStepsForTheSameHits) {
                 relaxed.stats->mean_steps);
     EXPECT_LT(relaxed.stats->mean_steps, 0.9 * plain.stats->mean_steps);
     EXPECT_NEAR(double(relaxed.hits), double(plain.hits), 0.001 * double(plain.hits));
+}
+
+// The Mandelbulb's power compiled in (as `fgr render` and the viewer build it) renders exactly the
+// generic kernel's image: the same operations in the same order, unrolled. A frame asking for
+// another power is refused by the specialised kernel rather than drawn with the wrong one.
+TEST_F(RenderTest, SpecialisedKernelRendersTheGenericImage) {
+    const Scene& scene = *mandelbulb_;
+    FrameRequest request{32, 24, scene.cameras.front().view, default_param_values(scene)};
+    // Not the default power: the kernel's own warm-up frame must use the compiled-in value too.
+    set_param_from_text(scene, request.params, "power=7");
+    ProgramCache cache{std::filesystem::path()};
+    KernelSwitches switches{16, scene.effects};
+    const Frame generic = Renderer(*device_, cache, scene, switches).render(request);
+    switches.specialised = specialisation_for(scene, request.params);
+    ASSERT_EQ(switches.specialised, (std::vector<SpecialisedParam>{{"power", 7.0f}}));
+    Renderer specialised(*device_, cache, scene, switches);
+    const Frame frame = specialised.render(request);
+    EXPECT_EQ(frame.linear, generic.linear);
+    EXPECT_EQ(frame.depth, generic.depth);
+    set_param_from_text(scene, request.params, "power=8");
+    EXPECT_THROW(specialised.render(request), std::invalid_argument);
 }
 
 }  // namespace

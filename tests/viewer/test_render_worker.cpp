@@ -7,9 +7,11 @@
 // or the camera flown up to the surface) render in double under auto.
 #include <gtest/gtest.h>
 
+#include <atomic>
 #include <chrono>
 #include <filesystem>
 #include <functional>
+#include <future>
 #include <glm/geometric.hpp>
 #include <thread>
 
@@ -177,6 +179,44 @@ TEST_F(RenderWorkerTest, AdaptiveSamplingRefinesInRoundsToTheStillsImage) {
         largest = std::max(largest, std::abs(int(still.image.rgb[i]) - int(last.image.rgb[i])));
     }
     EXPECT_LE(largest, 1);
+}
+
+// A scene whose parameter may be compiled in is shown by the generic kernel while the specialised
+// one builds on its own thread (held at the gate here, so the order is certain), then by the
+// specialised one, which draws the same image.
+TEST_F(RenderWorkerTest, TheGenericKernelShowsUntilTheSpecialisedOneIsBuilt) {
+    auto specialisable = std::make_shared<const Scene>(
+        test::inline_scene("#define FGR_SPECIALISABLE iterations\n"
+                           "real scene_de(vec3 p, PARAMS) {\n"
+                           "    return v3_length(p) - 0.05f * (float)param_iterations;\n"
+                           "}\n"));
+    std::promise<void> release;
+    std::shared_future<void> released = release.get_future().share();
+    std::atomic<bool> at_gate{false};
+    worker_->set_specialise_gate([&at_gate, released] {
+        at_gate = true;
+        released.wait();
+    });
+    ViewState view = state(kSphere, 32, 24, 1);
+    view.scene = specialisable;
+    view.effects = specialisable->effects;
+    view.params = default_param_values(*specialisable);
+    worker_->submit(view);
+    // Refined to the sample cap while the specialised build waits at the gate.
+    ASSERT_TRUE(wait_idle(1));
+    ASSERT_TRUE(wait_for([&] { return at_gate.load(); }));
+    EXPECT_TRUE(worker_->status().specialising);
+    ASSERT_FALSE(frames_.empty());
+    for (const DisplayFrame& frame : frames_) EXPECT_FALSE(frame.specialised);
+    const DisplayFrame generic = frames_.back();
+    EXPECT_EQ(generic.samples, 3);
+    frames_.clear();
+    release.set_value();
+    ASSERT_TRUE(wait_for([&] {
+        return !frames_.empty() && frames_.back().specialised && frames_.back().samples == 3;
+    }));
+    EXPECT_FALSE(worker_->status().specialising);
+    EXPECT_EQ(frames_.back().image.rgb, generic.image.rgb);
 }
 
 // An IFS scene's frames say how deep the image went, for the viewer's status line: the depth
