@@ -106,6 +106,7 @@ struct ModeOptions {
     bool no_light_sampling = false;
     bool no_mis = false;
     bool no_scene_lights = false;
+    bool no_regroup = false;
     uint32_t seed = 0;
 };
 void add_mode_options(CLI::App* command, ModeOptions& options);

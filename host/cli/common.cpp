@@ -216,6 +216,11 @@ void add_mode_options(CLI::App* command, ModeOptions& options) {
                    "furnace test with --environment uniform wants")
         ->group(path);
     command->add_option("--seed", options.seed, "noise pattern of the path tracer")->group(path);
+    command
+        ->add_flag("--no-regroup", options.no_regroup,
+                   "one sample a launch, each lane tracing its own pixel's path to its end (the "
+                   "same image, slower: to measure what regrouping the lanes buys)")
+        ->group(path);
 }
 
 RenderMode chosen_mode(const ModeOptions& options, const Scene& scene) {
@@ -238,6 +243,7 @@ PathSettings path_settings_from(const ModeOptions& options) {
     settings.mis = !options.no_mis;
     settings.scene_lights = !options.no_scene_lights;
     settings.seed = options.seed;
+    settings.regroup = !options.no_regroup;
     try {
         check_path_settings(settings);
     } catch (const std::invalid_argument& error) {

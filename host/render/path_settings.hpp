@@ -23,6 +23,12 @@ struct PathSettings {
     // measure what stratification buys (the error then falls exactly as 1 / sqrt(samples)).
     bool stratified = true;
     uint32_t seed = 0;  // another seed, another noise pattern
+    // Regrouped packets: a launch traces several samples of each pixel and a lane whose path
+    // ends starts the next one at once, so the lanes stay busy after the first bounce; false
+    // runs the packet kernel, a sample a launch, whose lanes idle as their paths end (to
+    // measure what regrouping buys). The image is the same either way, up to the order in which
+    // a pixel's samples are summed.
+    bool regroup = true;
     // What lights the scene; null renders with the default sky.
     std::shared_ptr<const PreparedEnvironment> environment;
     // The environment compares by identity: a prepared environment is never changed in place.
@@ -31,6 +37,10 @@ struct PathSettings {
 
 // Limits fgr accepts, checked by check_path_settings (std::invalid_argument, one line).
 constexpr int kMaxBounces = 1024;
+// Samples of each pixel a regrouped launch traces at most (PathSettings::regroup): the more, the
+// shorter the tail in which a packet's last paths end with its other lanes idle, but the coarser
+// the steps at which a render reports each finished sample and can stop (FrameRequest::enough).
+constexpr int kRegroupLaunchSamples = 8;
 void check_path_settings(const PathSettings& settings);
 
 }  // namespace fgr

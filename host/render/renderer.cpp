@@ -175,13 +175,13 @@ int band_tiles(int tiles, int group, int bands) {
 // more, so that a costly frame of few pixels (an IFS scene whose rays open many nodes) reports its
 // progress too.
 int progress_bands(const FrameRequest& request, const PixelRegion& region, const Scene& scene,
-                   RenderMode mode) {
+                   RenderMode mode, int sample_launches) {
     if (!request.on_progress) return 1;
     const double pixel_samples = double(region.width) * region.height * request.samples;
     const double weight = std::max(
         1.0, estimate_render_cost(scene, request, mode).steps_per_sample / kPlainSampleSteps);
     if (pixel_samples * weight < double(kBandedPixelSamples)) return 1;
-    return std::clamp((kProgressLaunches + request.samples - 1) / request.samples, 1, kCancelBands);
+    return std::clamp((kProgressLaunches + sample_launches - 1) / sample_launches, 1, kCancelBands);
 }
 
 cl::NDRange global_range(int items, int group) {
@@ -379,10 +379,13 @@ Frame Renderer::render(const FrameRequest& request) {
         }
     }
     int done = 0;
-    const int bands = progress_bands(request, region, scene_, switches_.mode);
+    // A mode may trace several samples a launch (the path tracer's regrouped packets).
+    const int per_launch = std::max(1, mode_->launch_samples(request));
+    const int sample_launches = (request.samples + per_launch - 1) / per_launch;
+    const int bands = progress_bands(request, region, scene_, switches_.mode, sample_launches);
     // The launches in all, as launch_tiles makes them (a cancellable frame's bands included).
     const int band = band_tiles(tiles, group, launch_bands(request.cancel, bands));
-    const long launches = static_cast<long>(request.samples) * ((tiles + band - 1) / band);
+    const long launches = static_cast<long>(sample_launches) * ((tiles + band - 1) / band);
     long launched = 0;
     std::function<void()> band_done;
     if (request.on_progress) {
@@ -390,11 +393,13 @@ Frame Renderer::render(const FrameRequest& request) {
         band_done = [&] { request.on_progress(++launched, launches); };
     }
     while (done < request.samples) {
+        const int count = std::min(per_launch, request.samples - done);
+        mode_->bind_launch(render_kernel_, count);
         render_kernel_.setArg(FGR_RENDER_ARG_SAMPLE, request.first_sample + done);
         if (!launch_tiles(render_kernel_, tiles, group, request.cancel, bands, band_done)) {
             return cancelled_frame();
         }
-        ++done;
+        done += count;
         if (request.on_sample || request.enough) {
             device_.queue.finish();  // report each sample as it completes
             if (request.on_sample) request.on_sample(done, request.samples);

@@ -79,7 +79,7 @@ march_result ifs_trace_rays(vec3 origin, vec3 dir, mask active, real travelled, 
 #endif
 
 inline march_result march_rays_core(vec3 origin, vec3 dir, mask active, real start, real travelled,
-                                    real reach, march_limits limits, int departing, PARAMS) {
+                                    real reach, march_limits limits, mask departing, PARAMS) {
 #ifdef FGR_GEOMETRY_IFS
     (void)departing; /* an exact hit ahead of the origin never is the surface the ray leaves */
     (void)start;     /* the prepass never runs for IFS scenes */
@@ -105,11 +105,12 @@ inline march_result march_rays_core(vec3 origin, vec3 dir, mask active, real sta
     mask stretched = (mask)(0);
     const bool relaxing = limits.relaxation > 1.0f;
     /* Lanes that started on or in the surface (the eye's DE <= 0, see the top of the file):
-     * `escaping` while their DE is still <= 0, `leaving` from then on (every lane of a departing
-     * march). */
+     * `escaping` while their DE is still <= 0, `leaving` from then on (the lanes of `departing`,
+     * which leave a surface). */
     mask escaping = (mask)(0);
-    mask leaving = departing ? FGR_TRUE : (mask)(0);
-    int any_leaving = departing;
+    mask leaving = departing;
+    int any_leaving = fgr_any(departing);
+    const int all_departing = fgr_all(departing);
     for (int step = 0; step < limits.max_steps; ++step) {
         if (!fgr_any(active)) break;
         const real t_here = result.t;
@@ -138,7 +139,7 @@ inline march_result march_rays_core(vec3 origin, vec3 dir, mask active, real sta
             escaping &= dist <= 0.0f;
             now_hit &= !escaping;
         }
-        if (departing) {
+        if (all_departing) {
             /* A ray leaving a surface may start within the footprint of a wall beside it (in a
              * crevice): only a surface it approaches (the DE falling) stops it. */
             now_hit &= dist < last_dist;
@@ -193,7 +194,7 @@ inline march_result march_rays_core(vec3 origin, vec3 dir, mask active, real sta
 
 inline march_result march_rays_within(vec3 origin, vec3 dir, mask active, real travelled,
                                       real reach, march_limits limits, PARAMS) {
-    return march_rays_core(origin, dir, active, fgr_real(0.0f), travelled, reach, limits, 0,
+    return march_rays_core(origin, dir, active, fgr_real(0.0f), travelled, reach, limits, (mask)(0),
                            PARAMS_PASS);
 }
 
@@ -202,8 +203,8 @@ inline march_result march_rays_within(vec3 origin, vec3 dir, mask active, real t
  * a wall the ray starts beside and moves away from never stops it. */
 inline march_result march_rays_departing(vec3 origin, vec3 dir, mask active, real travelled,
                                          real reach, march_limits limits, PARAMS) {
-    return march_rays_core(origin, dir, active, fgr_real(0.0f), travelled, reach, limits, 1,
-                           PARAMS_PASS);
+    return march_rays_core(origin, dir, active, fgr_real(0.0f), travelled, reach, limits,
+                           (mask)(FGR_TRUE), PARAMS_PASS);
 }
 
 /* Whether anything blocks the ray before `reach` (shadow rays): march_rays_within, except that
@@ -214,8 +215,8 @@ inline march_result march_rays_occluded(vec3 origin, vec3 dir, mask active, real
     (void)departing;
     return ifs_trace_rays(origin, dir, active, travelled, reach, limits, 1, PARAMS_PASS);
 #else
-    return march_rays_core(origin, dir, active, fgr_real(0.0f), travelled, reach, limits, departing,
-                           PARAMS_PASS);
+    return march_rays_core(origin, dir, active, fgr_real(0.0f), travelled, reach, limits,
+                           departing ? (mask)(FGR_TRUE) : (mask)(0), PARAMS_PASS);
 #endif
 }
 
@@ -234,7 +235,18 @@ inline march_result march_rays(vec3 origin, vec3 dir, mask active, march_limits 
 inline march_result march_camera_rays(vec3 origin, vec3 dir, mask active, real start,
                                       march_limits limits, PARAMS) {
     return march_rays_core(origin, dir, active, start, fgr_real(0.0f),
-                           fgr_real(limits.max_distance), limits, 0, PARAMS_PASS);
+                           fgr_real(limits.max_distance), limits, (mask)(0), PARAMS_PASS);
+}
+
+/* Camera rays and bounces in one march, each lane its own (the path tracer's regrouped packets,
+ * whose lanes are at different bounces): the lanes of `departing` march as
+ * march_rays_departing's from their origin, having `travelled` before it; the others as
+ * march_camera_rays' from `start`. */
+inline march_result march_rays_mixed(vec3 origin, vec3 dir, mask active, real start, real travelled,
+                                     mask departing, march_limits limits, PARAMS) {
+    return march_rays_core(origin, dir, active, select(start, fgr_real(0.0f), departing),
+                           select(fgr_real(0.0f), travelled, departing),
+                           fgr_real(limits.max_distance), limits, departing, PARAMS_PASS);
 }
 
 /* Surface normal from the DE's gradient, with the four-tap tetrahedron stencil (four DE

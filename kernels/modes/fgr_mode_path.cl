@@ -180,10 +180,11 @@ inline light_sample sample_light(vec3 p, real u_pick, real u1, real u2,
     return s;
 }
 
-__kernel void fgr_render(FGR_RENDER_ARGS, __constant const float* lights, path_settings settings,
-                         ENVIRONMENT) {
-    const int tile = get_global_id(0);
-    if (tile >= tile_count) return;
+/* One sample of every pixel of `tile`, each lane tracing its own pixel's path to its end: lanes
+ * whose path has ended idle until the packet's last path ends (--no-regroup). */
+inline void render_packet_sample(int tile, FGR_RENDER_ARGS, __constant const float* lights,
+                                 path_settings settings, ENVIRONMENT) {
+    (void)tile_count;
     const tile_pixels pixels = pixels_of_tile(tile, camera);
     mask active = pixels.inside;
 
@@ -368,4 +369,386 @@ __kernel void fgr_render(FGR_RENDER_ARGS, __constant const float* lights, path_s
     accumulate_plane(radiance.y * alpha, sample, tile, foreground + plane_size);
     accumulate_plane(radiance.z * alpha, sample, tile, foreground + 2 * plane_size);
 #endif
+}
+
+/* --- Regrouped packets: path regeneration (Novak, Havran and Dachsbacher, "Path Regeneration for
+ * Interactive Path Tracing", Eurographics 2010 short papers). A launch traces `launch_samples`
+ * samples of every pixel of the tile: a queue of paths, path k being sample first + k / W of the
+ * tile's pixel k % W (W = FGR_WIDTH, pixels outside the image skipped). A lane whose path ends
+ * adds it to its pixel's sums and takes the next path of the queue at once, so the packet's lanes
+ * stay busy until the queue runs dry, whatever bounce each path is at: camera rays and bounces
+ * march together (march_rays_mixed). A lane serves any pixel of its tile, not only its own, or a
+ * tile on the silhouette would wait on its surface pixels while its sky lanes idle. Each path
+ * draws exactly the numbers of its (pixel, sample) (lane_sampler), so the image is the one the
+ * packet kernel makes, but for the order in which a pixel's samples are summed. */
+
+/* What the launch sums per pixel of the tile, in its private sums: float `sums[PATH_SUMS][W]`. */
+#define PATH_SUM_RADIANCE 0    /* 3: radiance, clamped when settings.radiance_clamp > 0 */
+#define PATH_SUM_ALBEDO 3      /* 3: the first hit's albedo */
+#define PATH_SUM_NORMAL 6      /* 3: the first hit's normal */
+#define PATH_SUM_ALPHA 9       /* 1: 1 where the camera ray met the surface */
+#define PATH_SUM_LANE_STEPS 10 /* 1: DE evaluations of the pixel's paths (FGR_STATS) */
+#define PATH_SUM_FOREGROUND 11 /* 3: radiance of the paths whose camera ray met the surface */
+#define PATH_SUMS 14
+
+/* A path's state in its lane (one per lane of the packet). */
+typedef struct path_lanes {
+    vec3 origin, dir;
+    vec3 radiance, throughput;
+    real seen_at;       /* how far the camera saw the surface (0 before the first hit) */
+    mask light_sampled; /* light sampling also covered the last bounce's BSDF sample */
+    real last_pdf;      /* that sample's pdf */
+    mask bounce;        /* the vertices met so far: 0 for a camera ray */
+    real camera_start;  /* where a camera ray's march starts (prepass, hints) */
+    real depth;         /* the first hit's distance, -1 before or without one */
+    vec3 first_albedo, first_normal;
+    real alpha;
+    mask steps; /* DE evaluations of the path (FGR_STATS) */
+} path_lanes;
+
+/* Which lanes hold (1.0f) or not (0.0f), lane by lane in a private array. */
+inline void lanes_of_mask(mask m, float* lanes) {
+    fgr_store(select(fgr_real(0.0f), fgr_real(1.0f), m), 0, lanes);
+}
+
+/* Values of the tile's pixels (`by_slot`, one per pixel of the tile) gathered into the lanes
+ * serving them (`lane_slot`). */
+inline real gather_slots(const float* by_slot, const int* lane_slot) {
+    float lanes[FGR_WIDTH];
+    for (int lane = 0; lane < FGR_WIDTH; ++lane) lanes[lane] = by_slot[lane_slot[lane]];
+    return fgr_load(0, lanes);
+}
+
+/* Hands the paths still queued to the lanes of `free_lanes`, in queue order; returns the lanes
+ * that got one (`lane_slot`, `lane_sample`: each lane's pixel and sample). */
+inline mask take_queued_paths(mask free_lanes, int* next, int paths, int first,
+                              const float* slot_inside, int* lane_slot, float* lane_sample) {
+    float free_lane[FGR_WIDTH], taken[FGR_WIDTH];
+    lanes_of_mask(free_lanes, free_lane);
+    for (int lane = 0; lane < FGR_WIDTH; ++lane) taken[lane] = 0.0f;
+    for (int lane = 0; lane < FGR_WIDTH; ++lane) {
+        if (free_lane[lane] == 0.0f) continue;
+        while (*next < paths && slot_inside[*next % FGR_WIDTH] == 0.0f) ++*next;
+        if (*next >= paths) break;
+        lane_slot[lane] = *next % FGR_WIDTH;
+        lane_sample[lane] = (float)(first + *next / FGR_WIDTH);
+        taken[lane] = 1.0f;
+        ++*next;
+    }
+    return fgr_load(0, taken) != 0.0f;
+}
+
+/* Adds the paths that ended in the lanes of `ended` to their pixels' sums (and the depth of a
+ * pixel's sample 0 to `slot_depth`). Two lanes may end paths of the same pixel at once, so the
+ * lanes are added one after the other: a vector scatter would keep only one of them. Each path's
+ * values reach its pixel here and nowhere else. */
+inline void add_ended_paths(float sums[PATH_SUMS][FGR_WIDTH], float* slot_depth, mask ended,
+                            path_lanes path, const int* lane_slot, const float* lane_sample,
+                            path_settings settings) {
+    vec3 radiance = path.radiance;
+    if (settings.radiance_clamp > 0.0f) {
+        const real largest = fmax(fmax(radiance.x, radiance.y), radiance.z);
+        radiance = v3_scale(radiance, select(fgr_real(1.0f), settings.radiance_clamp / largest,
+                                             largest > settings.radiance_clamp));
+    }
+    float values[PATH_SUMS][FGR_WIDTH], depth[FGR_WIDTH], ended_lane[FGR_WIDTH];
+    fgr_store(radiance.x, 0, values[PATH_SUM_RADIANCE]);
+    fgr_store(radiance.y, 0, values[PATH_SUM_RADIANCE + 1]);
+    fgr_store(radiance.z, 0, values[PATH_SUM_RADIANCE + 2]);
+    fgr_store(path.first_albedo.x, 0, values[PATH_SUM_ALBEDO]);
+    fgr_store(path.first_albedo.y, 0, values[PATH_SUM_ALBEDO + 1]);
+    fgr_store(path.first_albedo.z, 0, values[PATH_SUM_ALBEDO + 2]);
+    fgr_store(path.first_normal.x, 0, values[PATH_SUM_NORMAL]);
+    fgr_store(path.first_normal.y, 0, values[PATH_SUM_NORMAL + 1]);
+    fgr_store(path.first_normal.z, 0, values[PATH_SUM_NORMAL + 2]);
+    fgr_store(path.alpha, 0, values[PATH_SUM_ALPHA]);
+    fgr_store(convert_real(path.steps), 0, values[PATH_SUM_LANE_STEPS]);
+    /* alpha is 1 or 0 for one path: the whole radiance of a path whose camera ray hit. */
+    fgr_store(radiance.x * path.alpha, 0, values[PATH_SUM_FOREGROUND]);
+    fgr_store(radiance.y * path.alpha, 0, values[PATH_SUM_FOREGROUND + 1]);
+    fgr_store(radiance.z * path.alpha, 0, values[PATH_SUM_FOREGROUND + 2]);
+    fgr_store(path.depth, 0, depth);
+    lanes_of_mask(ended, ended_lane);
+    for (int lane = 0; lane < FGR_WIDTH; ++lane) {
+        if (ended_lane[lane] == 0.0f) continue;
+        const int slot = lane_slot[lane];
+        for (int c = 0; c < PATH_SUMS; ++c) sums[c][slot] += values[c][lane];
+        if (lane_sample[lane] == 0.0f) slot_depth[slot] = depth[lane];
+    }
+}
+
+/* The sums of the launch added to the planes of the tile (sample `first` on: the first launch
+ * writes them). */
+inline void store_path_sums(float sums[PATH_SUMS][FGR_WIDTH], const float* slot_depth,
+                            int packet_steps, int first, int tile, __global float* planes,
+                            int plane_size) {
+    __global float* colour_planes = planes + FGR_COLOUR_PLANE * plane_size;
+    for (int c = 0; c < 3; ++c) {
+        accumulate_plane(fgr_load(0, sums[PATH_SUM_RADIANCE + c]), first, tile,
+                         colour_planes + c * plane_size);
+        accumulate_plane(fgr_load(0, sums[PATH_SUM_ALBEDO + c]), first, tile,
+                         planes + (FGR_PATH_ALBEDO_PLANE + c) * plane_size);
+        accumulate_plane(fgr_load(0, sums[PATH_SUM_NORMAL + c]), first, tile,
+                         planes + (FGR_PATH_NORMAL_PLANE + c) * plane_size);
+    }
+    if (first == 0) fgr_store(fgr_load(0, slot_depth), tile, planes + FGR_DEPTH_PLANE * plane_size);
+    accumulate_plane(fgr_load(0, sums[PATH_SUM_ALPHA]), first, tile,
+                     planes + FGR_PATH_ALPHA_PLANE * plane_size);
+#ifdef FGR_STATS
+    accumulate_plane(fgr_load(0, sums[PATH_SUM_LANE_STEPS]), first, tile,
+                     planes + FGR_PATH_LANE_STEPS_PLANE * plane_size);
+    accumulate_plane(fgr_real((float)packet_steps), first, tile,
+                     planes + FGR_PATH_PACKET_STEPS_PLANE * plane_size);
+#else
+    (void)packet_steps;
+#endif
+#ifdef FGR_AOVS
+    __global float* foreground = planes + FGR_PATH_FOREGROUND_PLANE(FGR_STATS_ON) * plane_size;
+    for (int c = 0; c < 3; ++c) {
+        accumulate_plane(fgr_load(0, sums[PATH_SUM_FOREGROUND + c]), first, tile,
+                         foreground + c * plane_size);
+    }
+#endif
+}
+
+/* The lanes of `fresh` start the camera rays of their new paths (lane_slot, lane_sample). */
+inline void start_camera_paths(path_lanes* path, lane_sampler* rng, mask fresh,
+                               const int* lane_slot, const float* lane_sample, const float* slot_px,
+                               const float* slot_py, const float* slot_start,
+                               const float* slot_hint, int has_hints, bool independent,
+                               camera_frame camera, march_limits limits, path_settings settings,
+                               PARAMS) {
+    const real px = gather_slots(slot_px, lane_slot), py = gather_slots(slot_py, lane_slot);
+    const uint_lanes index = convert_uint_lanes(fgr_load(0, lane_sample));
+    /* As the packet kernel seeds each sample (render_packet_sample). */
+    lane_sampler started =
+        independent ? lane_sampler_start(px, py, (uint_lanes)(0u),
+                                         (uint_lanes)(settings.seed) + index * 0x9e3779b9u)
+                    : lane_sampler_start(px, py, index, (uint_lanes)(settings.seed));
+    const real2 in_pixel = lane_sampler_next_2d(&started);
+    const real2 on_lens = lane_sampler_next_2d(&started);
+    lane_sampler_take(rng, started, fresh);
+    camera_sample jitter;
+    jitter.pixel_x = in_pixel.x;
+    jitter.pixel_y = in_pixel.y;
+    const real lens_radius = sqrt(on_lens.x), lens_angle = 6.28318530717958647692f * on_lens.y;
+    jitter.lens_x = lens_radius * fgr_cos(lens_angle);
+    jitter.lens_y = lens_radius * fgr_sin(lens_angle);
+    const camera_ray ray = camera_ray_through(camera, px, py, jitter, PARAMS_PASS);
+    path->origin = v3_select(path->origin, ray.origin, fresh);
+    path->dir = v3_select(path->dir, ray.dir, fresh);
+    const vec3 zero = v3_splat(0.0f, 0.0f, 0.0f);
+    path->radiance = v3_select(path->radiance, zero, fresh);
+    path->throughput = v3_select(path->throughput, v3_splat(1.0f, 1.0f, 1.0f), fresh);
+    path->first_albedo = v3_select(path->first_albedo, zero, fresh);
+    path->first_normal = v3_select(path->first_normal, zero, fresh);
+    path->seen_at = select(path->seen_at, fgr_real(0.0f), fresh);
+    path->last_pdf = select(path->last_pdf, fgr_real(0.0f), fresh);
+    path->alpha = select(path->alpha, fgr_real(0.0f), fresh);
+    path->depth = select(path->depth, fgr_real(-1.0f), fresh);
+    path->light_sampled &= ~fresh;
+    path->bounce = select(path->bounce, (mask)(0), fresh);
+    mask hint_evaluations = (mask)(0); /* counted with the stats */
+    real start = gather_slots(slot_start, lane_slot);
+    if (has_hints) {
+        start = march_start_with_hint(start, gather_slots(slot_hint, lane_slot), ray.origin,
+                                      ray.dir, fresh, limits, &hint_evaluations, PARAMS_PASS);
+    }
+    path->camera_start = select(path->camera_start, start, fresh);
+    path->steps = select(path->steps, hint_evaluations, fresh);
+}
+
+/* One vertex of each path of `*active`: its ray marched (a camera ray or a bounce), what it
+ * found added (the environment, emission, a light sample), and the path continued by sampling the
+ * BSDF. Lanes whose path ends (it escaped, met the bounce cap, or was absorbed) leave *active.
+ * The per-bounce random numbers are those of render_packet_sample's bounce loop. */
+inline void trace_path_vertex(path_lanes* path, lane_sampler* rng, mask* active_lanes,
+                              int* packet_steps, __constant const float* lights,
+                              path_settings settings, bool light_sampling, bool mis,
+                              camera_frame camera, march_limits limits, PARAMS, ENVIRONMENT) {
+    mask active = *active_lanes;
+    const mask camera_rays = path->bounce == (mask)(0);
+    const march_result hit = march_rays_mixed(path->origin, path->dir, active, path->camera_start,
+                                              path->seen_at, !camera_rays, limits, PARAMS_PASS);
+#ifdef FGR_STATS
+    path->steps += hit.steps;
+    *packet_steps += fgr_lanes_max(hit.steps);
+#else
+    (void)packet_steps;
+#endif
+    const mask escaped = active & !hit.hit;
+    if (fgr_any(escaped)) {
+        const vec3 arriving = escaped_radiance(path->dir, path->light_sampled, mis, path->last_pdf,
+                                               lights, settings, ENVIRONMENT_PASS);
+        path->radiance = v3_select(
+            path->radiance, v3_add(path->radiance, v3_mul(path->throughput, arriving)), escaped);
+    }
+    active &= hit.hit;
+    if (!fgr_any(active)) {
+        *active_lanes = active;
+        return;
+    }
+    const mask first_hit = active & camera_rays;
+    const vec3 p = v3_mad(path->origin, path->dir, hit.t);
+    path->seen_at = select(path->seen_at, hit.t, first_hit);
+    const real path_length = path->seen_at;
+    const real eps = fmax(path_length * camera.pixel_angle * param_normal_epsilon, FGR_MIN_LENGTH);
+    vec3 n = surface_normal(hit, p, eps, PARAMS_PASS);
+#if defined(FGR_STATS) && !defined(FGR_GEOMETRY_IFS)
+    path->steps += select((mask)(0), (mask)(4), active);
+    *packet_steps += 4;
+#endif
+    const vec3 wo = v3_neg(path->dir);
+    n = v3_select(n, wo, !(v3_length2(n) > 0.5f));
+    n = v3_select(n, v3_neg(n), active & (v3_dot(n, wo) < 0.0f));
+    const material m = surface_material(hit, p, PARAMS_PASS);
+    path->radiance = v3_select(
+        path->radiance, v3_add(path->radiance, v3_mul(path->throughput, m.emission)), active);
+    if (fgr_any(first_hit)) {
+        path->depth = select(path->depth, hit.t, first_hit);
+        path->first_albedo =
+            v3_select(path->first_albedo,
+                      v3_min(v3_add(m.albedo, m.specular), v3_splat(1.0f, 1.0f, 1.0f)), first_hit);
+        path->first_normal = v3_select(path->first_normal, n, first_hit);
+        path->alpha = select(path->alpha, fgr_real(1.0f), first_hit);
+    }
+    active &= path->bounce < (mask)(settings.max_bounces);
+    if (!fgr_any(active)) {
+        *active_lanes = active;
+        return;
+    }
+
+    const vec3 leave = leave_surface(p, n, path_length, limits);
+    const real2 light_u = lane_sampler_next_2d(rng);
+    const real light_pick = lane_sampler_next_1d(rng);
+    const real2 bsdf_u = lane_sampler_next_2d(rng);
+    const real lobe_u = lane_sampler_next_1d(rng);
+    const real roulette_u = lane_sampler_next_1d(rng);
+
+    if (light_sampling) {
+        const light_sample light = sample_light(p, light_pick, light_u.x, light_u.y, lights,
+                                                settings, limits.max_distance, ENVIRONMENT_PASS);
+        const vec3 f = bsdf_eval(m, n, wo, light.dir);
+        mask lit = active & (v3_dot(light.dir, n) > 0.0f) & (fmax(fmax(f.x, f.y), f.z) > 0.0f) &
+                   (fmax(fmax(light.radiance.x, light.radiance.y), light.radiance.z) > 0.0f);
+        if (fgr_any(lit)) {
+            const march_result shadow = march_rays_occluded(leave, light.dir, lit, path_length,
+                                                            light.reach, limits, 1, PARAMS_PASS);
+#ifdef FGR_STATS
+            path->steps += shadow.steps;
+            *packet_steps += fgr_lanes_max(shadow.steps);
+#endif
+            lit &= !shadow.hit;
+            const mask delta_light = light.pdf <= 0.0f;
+            const real w = select(
+                mis ? power_heuristic(light.pdf, bsdf_pdf(m, n, wo, light.dir)) : fgr_real(1.0f),
+                fgr_real(1.0f), delta_light);
+            const real scale = select(w / light.pdf, fgr_real(1.0f), delta_light);
+            const vec3 contribution = v3_scale(v3_mul(f, light.radiance), scale);
+            path->radiance =
+                v3_select(path->radiance,
+                          v3_add(path->radiance, v3_mul(path->throughput, contribution)), lit);
+        }
+    }
+
+    const bsdf_sample scattered = bsdf_sample_direction(m, n, wo, lobe_u, bsdf_u.x, bsdf_u.y);
+    active &= scattered.valid;
+    path->throughput =
+        v3_select(path->throughput, v3_mul(path->throughput, scattered.weight), active);
+    path->light_sampled = light_sampling ? !scattered.delta : (mask)(0);
+    path->last_pdf = scattered.pdf;
+
+    /* Russian roulette, in the lanes whose path has reached its depth. */
+    const mask roulette = active & (path->bounce + 1 >= (mask)(settings.roulette_depth));
+    if (fgr_any(roulette)) {
+        const vec3 t = path->throughput;
+        const real q = fmin(fmax(fmax(t.x, t.y), t.z), 1.0f);
+        const mask survives = roulette_u < q;
+        path->throughput =
+            v3_select(t, v3_scale(t, select(fgr_real(0.0f), 1.0f / q, survives)), roulette);
+        active &= survives | !roulette;
+    }
+    path->origin = v3_select(path->origin, leave, active);
+    path->dir = v3_select(path->dir, scattered.wi, active);
+    path->bounce = select(path->bounce, path->bounce + 1, active);
+    *active_lanes = active;
+}
+
+/* `launch_samples` samples of every pixel of `tile`, regrouped (see above). */
+inline void render_regrouped(int tile, FGR_RENDER_ARGS, __constant const float* lights,
+                             path_settings settings, ENVIRONMENT) {
+    (void)tile_count;
+    const int first = sample;
+    const tile_pixels pixels = pixels_of_tile(tile, camera);
+    const march_limits limits = scene_march_limits(camera.pixel_angle, PARAMS_PASS);
+    const bool light_sampling = (settings.flags & FGR_PATH_LIGHT_SAMPLING) != 0;
+    const bool mis = (settings.flags & FGR_PATH_MIS) != 0;
+    const bool independent = (settings.flags & FGR_PATH_INDEPENDENT) != 0;
+
+    /* The tile's pixels by slot (the lane each has in the packet kernel), for lanes to gather. */
+    float slot_px[FGR_WIDTH], slot_py[FGR_WIDTH], slot_inside[FGR_WIDTH];
+    float slot_start[FGR_WIDTH], slot_hint[FGR_WIDTH], slot_depth[FGR_WIDTH];
+    fgr_store(pixels.px, 0, slot_px);
+    fgr_store(pixels.py, 0, slot_py);
+    lanes_of_mask(pixels.inside, slot_inside);
+    fgr_store(march_start_of(march_starts, pixels, camera), 0, slot_start);
+    fgr_store(has_hints ? fgr_load(tile, march_hints) : fgr_real(0.0f), 0, slot_hint);
+    float sums[PATH_SUMS][FGR_WIDTH];
+    for (int lane = 0; lane < FGR_WIDTH; ++lane) {
+        slot_depth[lane] = -1.0f;
+        for (int c = 0; c < PATH_SUMS; ++c) sums[c][lane] = 0.0f;
+    }
+
+    int lane_slot[FGR_WIDTH];
+    float lane_sample[FGR_WIDTH];
+    for (int lane = 0; lane < FGR_WIDTH; ++lane) {
+        lane_slot[lane] = lane;
+        lane_sample[lane] = (float)first;
+    }
+    const int paths = FGR_WIDTH * max(settings.launch_samples, 1);
+    int next = 0;
+    int packet_steps = 0;
+
+    path_lanes path;
+    path.origin = path.dir = path.radiance = path.throughput = v3_splat(0.0f, 0.0f, 0.0f);
+    path.first_albedo = path.first_normal = v3_splat(0.0f, 0.0f, 0.0f);
+    path.seen_at = path.last_pdf = path.camera_start = path.alpha = fgr_real(0.0f);
+    path.depth = fgr_real(-1.0f);
+    path.light_sampled = path.bounce = path.steps = (mask)(0);
+    lane_sampler rng =
+        lane_sampler_start(pixels.px, pixels.py, (uint_lanes)(0u), (uint_lanes)(settings.seed));
+    mask fresh = take_queued_paths((mask)(FGR_TRUE), &next, paths, first, slot_inside, lane_slot,
+                                   lane_sample);
+    mask live = fresh;
+    while (fgr_any(live)) {
+        if (fgr_any(fresh))
+            start_camera_paths(&path, &rng, fresh, lane_slot, lane_sample, slot_px, slot_py,
+                               slot_start, slot_hint, has_hints, independent, camera, limits,
+                               settings, PARAMS_PASS);
+        mask active = live;
+        trace_path_vertex(&path, &rng, &active, &packet_steps, lights, settings, light_sampling,
+                          mis, camera, limits, PARAMS_PASS, ENVIRONMENT_PASS);
+        if (fgr_any(live & !active)) {
+            add_ended_paths(sums, slot_depth, live & !active, path, lane_slot, lane_sample,
+                            settings);
+        }
+        live = active;
+        fresh = take_queued_paths(!live, &next, paths, first, slot_inside, lane_slot, lane_sample);
+        live |= fresh;
+    }
+    store_path_sums(sums, slot_depth, packet_steps, first, tile, planes, plane_size);
+}
+
+__kernel void fgr_render(FGR_RENDER_ARGS, __constant const float* lights, path_settings settings,
+                         ENVIRONMENT) {
+    const int tile = get_global_id(0);
+    if (tile >= tile_count) return;
+    if (settings.flags & FGR_PATH_REGROUP) {
+        render_regrouped(tile, planes, plane_size, tile_count, camera, sample, PARAMS_PASS,
+                         march_starts, march_hints, has_hints, lights, settings, ENVIRONMENT_PASS);
+    } else {
+        render_packet_sample(tile, planes, plane_size, tile_count, camera, sample, PARAMS_PASS,
+                             march_starts, march_hints, has_hints, lights, settings,
+                             ENVIRONMENT_PASS);
+    }
 }

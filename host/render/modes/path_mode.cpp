@@ -144,16 +144,29 @@ void PathMode::bind(cl::Kernel& kernel, const FrameRequest& request, const TileL
     argument.flags = (settings.light_sampling ? FGR_PATH_LIGHT_SAMPLING : 0) |
                      (settings.mis ? FGR_PATH_MIS : 0) |
                      (settings.environment_importance ? FGR_PATH_ENVIRONMENT_IS : 0) |
-                     (settings.stratified ? 0 : FGR_PATH_INDEPENDENT);
+                     (settings.stratified ? 0 : FGR_PATH_INDEPENDENT) |
+                     (settings.regroup ? FGR_PATH_REGROUP : 0);
+    argument.launch_samples = 1;
     argument.seed = settings.seed;
     argument.light_count = light_count_;
     argument.environment_pick = environment_pick_;
     kernel.setArg(FGR_PATH_ARG_LIGHTS, lights_);
     kernel.setArg(FGR_PATH_ARG_SETTINGS, argument);
+    bound_settings_ = argument;
     kernel.setArg(FGR_PATH_ARG_ENV_DATA, environment_data_);
     kernel.setArg(FGR_PATH_ARG_ENVIRONMENT,
                   environment_info(bound_environment_->tables, bound_environment_->rotation_degrees,
                                    bound_environment_->intensity));
+}
+
+int PathMode::launch_samples(const FrameRequest& request) const {
+    return request.path.regroup ? kRegroupLaunchSamples : 1;
+}
+
+void PathMode::bind_launch(cl::Kernel& kernel, int count) {
+    if (bound_settings_.launch_samples == count) return;
+    bound_settings_.launch_samples = count;
+    kernel.setArg(FGR_PATH_ARG_SETTINGS, bound_settings_);
 }
 
 void PathMode::read_back(std::span<const float> planes, const TileLayout& layout,

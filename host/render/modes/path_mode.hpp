@@ -15,6 +15,8 @@ public:
     PathMode(const ComputeDevice& device, const Scene& scene, const KernelSwitches& switches);
     int extra_planes(const KernelSwitches& switches) const override;
     void bind(cl::Kernel& kernel, const FrameRequest& request, const TileLayout& layout) override;
+    int launch_samples(const FrameRequest& request) const override;
+    void bind_launch(cl::Kernel& kernel, int count) override;
     void read_back(std::span<const float> planes, const TileLayout& layout,
                    const FrameRequest& request, int samples, Frame& frame) const override;
 
@@ -33,6 +35,7 @@ private:
     cl::Buffer lights_;
     int light_count_ = 0;
     float environment_pick_ = 1.0f;
+    layout::path_settings bound_settings_{};  // the kernel's settings, as bind set them
 };
 
 }  // namespace fgr
