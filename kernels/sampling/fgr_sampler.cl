@@ -239,11 +239,13 @@ inline void lane_sampler_take(lane_sampler* s, lane_sampler fresh, mask m) {
     s->dimension = lane_sampler_pick(s->dimension, fresh.dimension, m);
 }
 
-/* sampler_next_slot with each lane's own index and dimension. */
-inline uint_lanes lane_sampler_next_slot(lane_sampler* s, uint_lanes* seed_x, uint_lanes* seed_y) {
+/* sampler_next_slot with each lane's own index and dimension; only the lanes of `drawing` move
+ * on to their next dimension (the others are at another point of their paths). */
+inline uint_lanes lane_sampler_next_slot(lane_sampler* s, mask drawing, uint_lanes* seed_x,
+                                         uint_lanes* seed_y) {
     const uint_lanes slot =
         sampler_mix(s->pixel ^ sampler_mix(s->dimension * 0x9e3779b9u + 0x632be5abu));
-    s->dimension += 1u;
+    s->dimension += convert_uint_lanes(drawing) & 1u;
     const uint_lanes seed_index = sampler_mix(slot ^ 0x1b873593u);
     *seed_x = sampler_mix(slot ^ 0xcc9e2d51u);
     *seed_y = sampler_mix(slot ^ 0xe6546b64u);
@@ -251,9 +253,9 @@ inline uint_lanes lane_sampler_next_slot(lane_sampler* s, uint_lanes* seed_x, ui
     return sampler_reverse_bits(sampler_owen_reversed(reversed, seed_index));
 }
 
-inline real2 lane_sampler_next_2d(lane_sampler* s) {
+inline real2 lane_sampler_next_2d(lane_sampler* s, mask drawing) {
     uint_lanes seed_x, seed_y;
-    const uint_lanes index = lane_sampler_next_slot(s, &seed_x, &seed_y);
+    const uint_lanes index = lane_sampler_next_slot(s, drawing, &seed_x, &seed_y);
     real2 u;
     u.x = sampler_to_real(sampler_reverse_bits(sampler_owen_reversed(index, seed_x)));
     u.y = sampler_to_real(
@@ -261,9 +263,9 @@ inline real2 lane_sampler_next_2d(lane_sampler* s) {
     return u;
 }
 
-inline real lane_sampler_next_1d(lane_sampler* s) {
+inline real lane_sampler_next_1d(lane_sampler* s, mask drawing) {
     uint_lanes seed_x, seed_y;
-    const uint_lanes index = lane_sampler_next_slot(s, &seed_x, &seed_y);
+    const uint_lanes index = lane_sampler_next_slot(s, drawing, &seed_x, &seed_y);
     return sampler_to_real(sampler_reverse_bits(sampler_owen_reversed(index, seed_x)));
 }
 

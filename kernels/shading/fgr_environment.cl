@@ -122,16 +122,24 @@ inline real environment_pdf(vec3 dir, ENVIRONMENT) {
 
 /* A unit direction drawn by importance from (u1, u2) in [0, 1)^2 (u2 picks the row, u1 the
  * column; each is reused inside the texel, so stratified input stays stratified), and its
- * solid-angle pdf in *pdf (> 0 for every direction it returns). */
-inline vec3 environment_sample(real u1, real u2, ENVIRONMENT, real* pdf) {
+ * solid-angle pdf in *pdf (> 0 for every direction it returns). Lanes outside `wanted` skip the
+ * search, the costly part, and get the first texel's top edge. */
+inline vec3 environment_sample(real u1, real u2, mask wanted, ENVIRONMENT, real* pdf) {
     ENV_SCALAR su1[FGR_WIDTH], su2[FGR_WIDTH];
     ENV_SCALAR rows[FGR_WIDTH], columns[FGR_WIDTH], fraction_v[FGR_WIDTH], fraction_u[FGR_WIDTH],
         p[FGR_WIDTH];
     /* NaN lanes become 0 through fmax; u = 1 would leave the CDF's last interval. */
     env_from_lanes(fmin(fmax(u1, fgr_real(0.0f)), fgr_real(ENV_ONE_BELOW)), su1);
     env_from_lanes(fmin(fmax(u2, fgr_real(0.0f)), fgr_real(ENV_ONE_BELOW)), su2);
+    ENV_SCALAR searched[FGR_WIDTH];
+    env_from_lanes(select(fgr_real(0.0f), fgr_real(1.0f), wanted), searched);
     __global const float* marginal = env_data + env.marginal_offset;
     for (int lane = 0; lane < FGR_WIDTH; ++lane) {
+        if (searched[lane] == 0) {
+            rows[lane] = columns[lane] = fraction_v[lane] = fraction_u[lane] = 0;
+            p[lane] = 1;
+            continue;
+        }
         const ENV_SCALAR v = su2[lane] >= 0 ? su2[lane] : (ENV_SCALAR)0; /* NaN-safe */
         const int row = env_find_interval(marginal, env.height, v);
         const ENV_SCALAR m0 = marginal[row], m1 = marginal[row + 1];
