@@ -517,18 +517,17 @@ TEST_F(PathTracer, EveryPacketWidthRendersTheSameImage) {
 // samples are added in another order; a path grazing an edge may branch differently after a
 // last-bit difference), so a path dropped or counted twice shows at once. With another seed the
 // image means agree within their standard errors (a z-test of the two kernels' estimates). A
-// 24x24 Mandelbulb (silhouette tiles, sky and surface lanes side by side), 6 samples a pixel: a
-// regrouped launch traces up to kRegroupLaunchSamples, so the frame takes a full launch and a
-// partial one, and first_sample 5 checks the sample numbering.
+// 24x24 Mandelbulb (silhouette tiles, sky and surface lanes side by side): a regrouped launch
+// traces up to kRegroupLaunchSamples samples, so kRegroupLaunchSamples + 2 take a full launch and
+// a partial one, and 3 samples from sample 5 check the sample numbering.
 TEST_F(PathTracer, RegroupedPacketsTraceThePacketKernelsPaths) {
     set("albedo=0.7,0.7,0.7");
     PathSettings regrouped = uniform_light(1.0f);
     regrouped.max_bounces = 6;
     PathSettings packet = regrouped;
     packet.regroup = false;
-    constexpr int samples = 6;
-    static_assert(samples > kRegroupLaunchSamples / 2 && samples < 2 * kRegroupLaunchSamples);
-    for (int first_sample : {0, 5}) {
+    for (const auto [first_sample, samples] :
+         {std::pair{0, kRegroupLaunchSamples + 2}, std::pair{5, 3}}) {
         const Frame a = render(kMandelbulb, regrouped, samples, 24, first_sample);
         const Frame b = render(kMandelbulb, packet, samples, 24, first_sample);
         ASSERT_EQ(a.samples, samples);
@@ -554,10 +553,10 @@ TEST_F(PathTracer, RegroupedPacketsTraceThePacketKernelsPaths) {
 }
 
 // With the stats counters, lane utilisation counts what the lanes really do: the paths are the
-// packet kernel's, so the DE evaluations the lanes took part in are the same, while the packets'
-// evaluations (each lane's share of the work a packet pays for) fall. The counts are
-// deterministic, so their bounds are exact: on this 24x24 Mandelbulb at 8 samples the packet
-// kernel keeps its lanes 0.4 busy and regrouping over 0.75 (measured 0.38 and 0.81).
+// packet kernel's, so the DE evaluations the lanes took part in are the same, while the
+// packets' evaluations (the work a packet pays for in all its lanes) fall. The counts are
+// deterministic (no clock): on this 24x24 Mandelbulb at 8 samples the packet kernel keeps its
+// lanes under half busy and regrouping well over two thirds (measured 0.476 and 0.751).
 TEST_F(PathTracer, RegroupingFillsTheLanes) {
     KernelSwitches switches;
     switches.packet_width = 16;
@@ -578,10 +577,12 @@ TEST_F(PathTracer, RegroupingFillsTheLanes) {
     ASSERT_TRUE(regrouped.lane_stats && packet.lane_stats);
     const LaneStats& a = *regrouped.lane_stats;
     const LaneStats& b = *packet.lane_stats;
-    std::printf("lane utilisation %.3f regrouped, %.3f packet kernel (lane evaluations %.0f, %.0f)\n",
-                a.utilisation(), b.utilisation(), a.lane_evaluations, b.lane_evaluations);
-    EXPECT_NEAR(a.lane_evaluations, b.lane_evaluations, 0.01 * b.lane_evaluations);
-    EXPECT_GT(a.utilisation(), 0.75);
+    std::printf(
+        "lane utilisation %.3f regrouped, %.3f packet kernel (lane evaluations %.0f, %.0f)\n",
+        a.utilisation(), b.utilisation(), a.lane_evaluations, b.lane_evaluations);
+    // Exactly equal here; a path that grazes an edge could branch differently on another CPU.
+    EXPECT_NEAR(a.lane_evaluations, b.lane_evaluations, 0.005 * b.lane_evaluations);
+    EXPECT_GT(a.utilisation(), 0.7);
     EXPECT_LT(b.utilisation(), 0.5);
 }
 

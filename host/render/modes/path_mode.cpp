@@ -145,7 +145,7 @@ void PathMode::bind(cl::Kernel& kernel, const FrameRequest& request, const TileL
                      (settings.mis ? FGR_PATH_MIS : 0) |
                      (settings.environment_importance ? FGR_PATH_ENVIRONMENT_IS : 0) |
                      (settings.stratified ? 0 : FGR_PATH_INDEPENDENT) |
-                     (settings.regroup ? FGR_PATH_REGROUP : 0);
+                     (regrouped(settings) ? FGR_PATH_REGROUP : 0);
     argument.launch_samples = 1;
     argument.seed = settings.seed;
     argument.light_count = light_count_;
@@ -159,8 +159,14 @@ void PathMode::bind(cl::Kernel& kernel, const FrameRequest& request, const TileL
                                    bound_environment_->intensity));
 }
 
+// IFS scenes trace their rays whole (kernels/geometry/fgr_ifs.cl), which the regrouped kernel's
+// one DE evaluation a turn cannot interleave: they keep the packet kernel.
+bool PathMode::regrouped(const PathSettings& settings) const {
+    return settings.regroup && scene_.ifs == nullptr;
+}
+
 int PathMode::launch_samples(const FrameRequest& request) const {
-    return request.path.regroup ? kRegroupLaunchSamples : 1;
+    return regrouped(request.path) ? kRegroupLaunchSamples : 1;
 }
 
 void PathMode::bind_launch(cl::Kernel& kernel, int count) {

@@ -21,6 +21,8 @@ public:
                    const FrameRequest& request, int samples, Frame& frame) const override;
 
 private:
+    // Whether the regrouped kernel renders with these settings.
+    bool regrouped(const PathSettings& settings) const;
     // Uploads the environment's tables and the light list when they change.
     void prepare(const PathSettings& settings);
 
