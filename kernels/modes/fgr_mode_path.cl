@@ -68,8 +68,10 @@ inline vec3 environment_light_sample(real u1, real u2, mask wanted, path_setting
     return v3(r * fgr_cos(phi), r * fgr_sin(phi), z);
 }
 
-inline real environment_light_pdf(vec3 dir, path_settings settings, ENVIRONMENT) {
-    if (settings.flags & FGR_PATH_ENVIRONMENT_IS) return environment_pdf(dir, ENVIRONMENT_PASS);
+inline real environment_light_pdf(vec3 dir, mask wanted, path_settings settings, ENVIRONMENT) {
+    if (settings.flags & FGR_PATH_ENVIRONMENT_IS) {
+        return environment_pdf(dir, wanted, ENVIRONMENT_PASS);
+    }
     return fgr_real(1.0f / (4.0f * 3.14159265358979323846f));
 }
 
@@ -94,13 +96,14 @@ inline real escaped_weight(mask light_sampled, bool mis, real bsdf_pdf, real lig
     return select(fgr_real(1.0f), shared, light_sampled);
 }
 
-/* Radiance arriving along `dir` from the environment and the sun discs, for a ray that left the
- * scene, weighted as escaped_weight says (bsdf_pdf: the BSDF's pdf of dir at the last vertex). */
-inline vec3 escaped_radiance(vec3 dir, mask light_sampled, bool mis, real bsdf_pdf,
+/* Radiance arriving along `dir` from the environment and the sun discs, for the lanes of `wanted`
+ * whose ray left the scene, weighted as escaped_weight says (bsdf_pdf: the BSDF's pdf of dir at the
+ * last vertex); the environment's tables are read for those lanes alone. */
+inline vec3 escaped_radiance(vec3 dir, mask wanted, mask light_sampled, bool mis, real bsdf_pdf,
                              __constant const float* lights, path_settings settings, ENVIRONMENT) {
-    vec3 radiance = environment_radiance(dir, ENVIRONMENT_PASS);
+    vec3 radiance = environment_radiance(dir, wanted, ENVIRONMENT_PASS);
     const real env_pdf =
-        settings.environment_pick * environment_light_pdf(dir, settings, ENVIRONMENT_PASS);
+        settings.environment_pick * environment_light_pdf(dir, wanted, settings, ENVIRONMENT_PASS);
     radiance = v3_scale(radiance, escaped_weight(light_sampled, mis, bsdf_pdf, env_pdf));
     float picked_before = settings.environment_pick;
     for (int i = 0; i < settings.light_count; ++i) {
@@ -138,7 +141,7 @@ inline light_sample sample_light(vec3 p, real u_pick, real u1, real u2, mask wan
     /* The environment, when it is picked. */
     real env_pdf = fgr_real(0.0f);
     s.dir = environment_light_sample(u1, u2, wanted, settings, ENVIRONMENT_PASS, &env_pdf);
-    s.radiance = environment_radiance(s.dir, ENVIRONMENT_PASS);
+    s.radiance = environment_radiance(s.dir, wanted, ENVIRONMENT_PASS);
     s.pdf = settings.environment_pick * env_pdf;
     s.reach = fgr_real(max_distance);
     float picked_before = settings.environment_pick;
@@ -246,8 +249,8 @@ inline void render_packet_sample(int tile, FGR_RENDER_ARGS, __constant const flo
 #endif
         const mask escaped = active & !hit.hit;
         if (fgr_any(escaped)) {
-            const vec3 arriving = escaped_radiance(dir, light_sampled, mis, last_pdf, lights,
-                                                   settings, ENVIRONMENT_PASS);
+            const vec3 arriving = escaped_radiance(dir, (mask)(FGR_TRUE), light_sampled, mis,
+                                                   last_pdf, lights, settings, ENVIRONMENT_PASS);
             radiance = v3_select(radiance, v3_add(radiance, v3_mul(throughput, arriving)), escaped);
         }
         active &= hit.hit;
@@ -604,8 +607,8 @@ inline void start_camera_paths(path_lanes* path, lane_sampler* rng, mask fresh,
  * sees, weighted as escaped_radiance says. */
 inline void add_escaped_radiance(path_lanes* path, mask escaped, __constant const float* lights,
                                  path_settings settings, bool mis, ENVIRONMENT) {
-    const vec3 arriving = escaped_radiance(path->dir, path->light_sampled, mis, path->last_pdf,
-                                           lights, settings, ENVIRONMENT_PASS);
+    const vec3 arriving = escaped_radiance(path->dir, escaped, path->light_sampled, mis,
+                                           path->last_pdf, lights, settings, ENVIRONMENT_PASS);
     path->radiance = v3_select(path->radiance,
                                v3_add(path->radiance, v3_mul(path->throughput, arriving)), escaped);
 }
