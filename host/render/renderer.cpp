@@ -148,8 +148,8 @@ int work_group_size(const ComputeDevice& device) { return device.info.is_cpu ? 8
 
 // A cancellable frame runs in this many launches.
 constexpr int kCancelBands = 32;
-// A long frame that reports its progress runs in about this many launches in all (samples times
-// bands).
+// A long frame that reports its progress runs in about this many launches in all (the samples'
+// launches times bands).
 constexpr int kProgressLaunches = 64;
 // A frame of fewer pixel samples reports its progress a sample at a time, however few it has: it
 // is short. Splitting a sample into bands costs a launch at a global offset, for which PoCL
@@ -169,8 +169,8 @@ int band_tiles(int tiles, int group, int bands) {
     return std::max(1, (groups + bands - 1) / bands) * group;
 }
 
-// The bands each sample's launch is split into: when a long frame reports its progress, enough for
-// about kProgressLaunches in all, at most kCancelBands; otherwise one. A frame is long by its
+// The bands each launch of samples is split into: when a long frame reports its progress, enough
+// for about kProgressLaunches in all, at most kCancelBands; otherwise one. A frame is long by its
 // estimated cost (render/render_cost.hpp), as many steps as kBandedPixelSamples plain samples or
 // more, so that a costly frame of few pixels (an IFS scene whose rays open many nodes) reports its
 // progress too.
@@ -366,8 +366,9 @@ Frame Renderer::render(const FrameRequest& request) {
         kernel->setArg(FGR_RENDER_ARG_HAS_HINTS, has_hints);
     }
     mode_->bind(render_kernel_, request, layout);
-    // Samples accumulate in the planes, one launch each, in order (in-order queue). Sample 0
-    // overwrites them; a request starting later starts from zeroed planes instead.
+    // Samples accumulate in the planes, one or more a launch (the mode's launch_samples), in
+    // order (in-order queue). The launch of sample 0 overwrites them; a request starting later
+    // starts from zeroed planes instead.
     if (request.first_sample > 0) {
         const auto bytes = [plane](int count) { return sizeof(float) * count * plane; };
         device_.queue.enqueueFillBuffer(planes, 0.0f, bytes(FGR_COLOUR_PLANE),
@@ -401,7 +402,7 @@ Frame Renderer::render(const FrameRequest& request) {
         }
         done += count;
         if (request.on_sample || request.enough) {
-            device_.queue.finish();  // report each sample as it completes
+            device_.queue.finish();  // report each launch's samples as they complete
             if (request.on_sample) request.on_sample(done, request.samples);
             if (request.enough && done < request.samples && request.enough()) break;
         }

@@ -166,7 +166,8 @@ bool PathMode::regrouped(const PathSettings& settings) const {
 }
 
 int PathMode::launch_samples(const FrameRequest& request) const {
-    return regrouped(request.path) ? kRegroupLaunchSamples : 1;
+    if (!regrouped(request.path)) return 1;
+    return request.enough ? kRegroupTimedLaunchSamples : kRegroupLaunchSamples;
 }
 
 void PathMode::bind_launch(cl::Kernel& kernel, int count) {
