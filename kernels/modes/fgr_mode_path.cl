@@ -1,8 +1,8 @@
 // SPDX-License-Identifier: Apache-2.0
 /* fgr render mode "path": unbiased Monte Carlo path tracing of the scene's DE surface.
  *
- * Each launch adds one sample to every pixel: a camera ray (jittered in the pixel and, with depth
- * of field, on the lens) is marched to the surface; there the scene's material (scene_material, by
+ * Each sample of a pixel is a path: a camera ray (jittered in the pixel and, with depth of field,
+ * on the lens) is marched to the surface; there the scene's material (scene_material, by
  * default a diffuse surface of the scene's colour) scatters it by BSDF sampling, bounce after
  * bounce, until it leaves the scene into the environment, is absorbed by Russian roulette or hits
  * the bounce cap. At every diffuse or glossy vertex one light is also sampled (next-event
@@ -12,7 +12,12 @@
  * power heuristic (Veach 1997, multiple importance sampling): a sun of any size converges, from a
  * point-like one (light sampling wins) to a broad one (BSDF sampling wins). The sample generator
  * (fgr_sampler.cl) is indexed by dimension, so every decision draws its own stratified numbers.
-
+ *
+ * Two kernels trace the same paths: the regrouped one (the default, render_regrouped below), whose
+ * launch traces settings.launch_samples samples of every pixel and keeps its lanes busy by
+ * handing each lane the next path as soon as its last one ends; and the packet kernel
+ * (render_packet_sample, FGR_PATH_REGROUP unset: `--no-regroup`, and IFS scenes), whose launch
+ * adds one sample to every pixel, each lane tracing its own pixel's path.
  *
  * Arguments (FGR_PATH_ARG_*, shared/fgr_layout_arguments.h): those every mode takes (planes ..
  * has_hints, see fgr_camera.cl), then the lights (the scene's and the sky's sun,
@@ -22,10 +27,10 @@
  * Planes (FGR_PATH_*_PLANE, shared/fgr_layout_planes.h): radiance (summed over samples), depth
  * of the first hit (sample 0), then the auxiliary outputs summed over samples: albedo of the
  * first hit, its normal, alpha (1 where the camera ray met the surface); with FGR_STATS the DE
- * evaluations each lane took part in and those its packet made (for lane utilisation), summed
- * over samples; with FGR_AOVS (a still that writes alpha) then the radiance of the samples whose
- * camera ray met the surface: the foreground without the environment seen past it, for straight
- * or premultiplied alpha. */
+ * evaluations the pixel's paths took (in whichever lane) and those the packet made (for lane
+ * utilisation; the same in every lane of the tile), summed over samples; with FGR_AOVS (a still
+ * that writes alpha) then the radiance of the samples whose camera ray met the surface: the
+ * foreground without the environment seen past it, for straight or premultiplied alpha. */
 
 #ifndef FGR_SCENE_HAS_MATERIAL
 /* A scene without its own materials is diffuse, coloured by scene_colour. */
