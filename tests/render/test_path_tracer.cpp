@@ -584,6 +584,33 @@ TEST_F(PathTracer, RegroupingFillsTheLanes) {
     EXPECT_NEAR(a.lane_evaluations, b.lane_evaluations, 0.005 * b.lane_evaluations);
     EXPECT_GT(a.utilisation(), 0.7);
     EXPECT_LT(b.utilisation(), 0.5);
+
+    // Adaptive sampling's per-pixel limits (FrameRequest::sample_limits): two pixels in three stop
+    // after 2 of the 8 samples. The regrouped kernel traces the same paths as the packet kernel
+    // (the same lane evaluations) and never queues those past a pixel's limit, so its packets
+    // keep the lanes busy with the pixels still sampling and do about half the full render's work.
+    request.sample_limits.assign(size_t(24 * 24), 8.0f);
+    for (size_t i = 0; i < request.sample_limits.size(); ++i) {
+        if (i % 3 != 0) request.sample_limits[i] = 2.0f;
+    }
+    const Frame limited_packet = counting.render(request);
+    request.path.regroup = true;
+    const Frame limited = counting.render(request);
+    ASSERT_TRUE(limited.lane_stats && limited_packet.lane_stats);
+    const LaneStats& c = *limited.lane_stats;
+    const LaneStats& d = *limited_packet.lane_stats;
+    std::printf(
+        "under sample limits: lane utilisation %.3f regrouped, %.3f packet kernel (lane "
+        "evaluations %.0f, %.0f; packet evaluations %.0f, %.0f of the full render)\n",
+        c.utilisation(), d.utilisation(), c.lane_evaluations, d.lane_evaluations,
+        c.packet_evaluations, a.packet_evaluations);
+    for (size_t i = 0; i < limited.samples_per_pixel.size(); ++i) {
+        ASSERT_EQ(limited.samples_per_pixel[i], request.sample_limits[i]) << i;
+    }
+    EXPECT_NEAR(c.lane_evaluations, d.lane_evaluations, 0.005 * d.lane_evaluations);
+    EXPECT_LT(c.lane_evaluations, 0.7 * a.lane_evaluations);
+    EXPECT_LT(c.packet_evaluations, 0.7 * a.packet_evaluations);
+    EXPECT_GT(c.utilisation(), 0.65);
 }
 
 // The stability suite's hard camera placements (`fgr check`, host/diagnostics/scene_check.cpp)
