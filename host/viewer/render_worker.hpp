@@ -173,7 +173,8 @@ private:
     void refine(Renderer& renderer, const ViewState& state, int sample);
     // The denoised preview's sums, added from one more sample (`first`: sample 0, which starts
     // them), and the image of the samples so far, denoised.
-    void accumulate_features(const Frame& frame, bool first);
+    // Adds a refine frame of `samples` samples to the denoised preview's sums.
+    void accumulate_features(const Frame& frame, bool first, int samples);
     Image8 denoised_preview(const ViewState& state);
     // Path mode with a noise threshold: one round of adaptive sampling a pass (sample 0 starts
     // them), up to the standing view's sample cap.
