@@ -34,12 +34,10 @@ double samples_per_second(int width, int height, double render_ms) {
     return render_ms > 0.0 ? double(width) * double(height) * 1000.0 / render_ms : 0.0;
 }
 
-// Samples a refine pass adds from sample `sample` on: one, or with the path tracer's regrouped
-// lanes (whose launch of several samples keeps its lanes fuller than one of a sample) as many as
-// the cost per pixel sample measured so far fits in the viewer's target frame time, at most a
-// regrouped launch's and what the cap leaves.
-int refine_samples(const ViewState& state, int sample, int cap, double ms_per_pixel_sample,
-                   double target_ms) {
+}  // namespace
+
+int refine_pass_samples(const ViewState& state, int sample, int cap, double ms_per_pixel_sample,
+                        double target_ms) {
     const bool regrouped =
         state.mode == RenderMode::Path && state.path.regroup && state.scene->ifs == nullptr;
     const int left = cap - sample;
@@ -48,8 +46,6 @@ int refine_samples(const ViewState& state, int sample, int cap, double ms_per_pi
     const double fits = std::floor(target_ms / pass_ms);
     return static_cast<int>(std::clamp(fits, 1.0, double(std::min(left, kRegroupLaunchSamples))));
 }
-
-}  // namespace
 
 RenderWorker::RenderWorker(int device_index, int packet_width, QualitySettings quality)
     : device_(open_device(device_index)),
@@ -374,8 +370,8 @@ void RenderWorker::refine(Renderer& renderer, const ViewState& state, int sample
         int cap = sample_budget(state.mode).standing_view;
         std::lock_guard lock(mutex_);
         if (cap <= 0) cap = std::max(quality_.settings().sample_cap, 1);
-        request.samples = refine_samples(state, sample, cap, quality_.ms_per_pixel(),
-                                         quality_.settings().target_ms);
+        request.samples = refine_pass_samples(state, sample, cap, quality_.ms_per_pixel(),
+                                              quality_.settings().target_ms);
     }
     request.cancel = [this, generation = state.generation] {
         std::lock_guard lock(mutex_);

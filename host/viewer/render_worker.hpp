@@ -105,6 +105,13 @@ struct ReloadResult {
     std::string error_log;  // the compiler's output, when it has one
 };
 
+// Samples a refine pass adds from sample `sample` on: one, or with the path tracer's regrouped
+// lanes (whose launch of several samples keeps its lanes fuller than one of a sample) as many as
+// the cost per pixel sample measured so far fits in the viewer's target frame time, at most a
+// regrouped launch's and what the cap leaves.
+int refine_pass_samples(const ViewState& state, int sample, int cap, double ms_per_pixel_sample,
+                        double target_ms);
+
 class RenderWorker {
 public:
     // Opens the OpenCL device on the calling thread (throws std::runtime_error when there is
