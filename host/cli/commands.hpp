@@ -106,6 +106,7 @@ struct ModeOptions {
     bool no_light_sampling = false;
     bool no_mis = false;
     bool no_scene_lights = false;
+    bool no_regroup = false;
     uint32_t seed = 0;
     bool denoise = false;  // --denoise (render, video; the viewer's toggle starts on)
     float noise_threshold = 0.0f;  // adaptive sampling's relative error; 0: off

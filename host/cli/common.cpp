@@ -229,6 +229,11 @@ void add_mode_options(CLI::App* command, ModeOptions& options) {
                      "--spp / 32, at least 4)")
         ->check(CLI::Range(2, 1 << 20))
         ->group(path);
+    command
+        ->add_flag("--no-regroup", options.no_regroup,
+                   "one sample a launch, each lane tracing its own pixel's path to its end (the "
+                   "same image, slower: to measure what regrouping the lanes buys)")
+        ->group(path);
 }
 
 void add_denoise_option(CLI::App* command, bool& denoise, const std::string& what) {
@@ -277,6 +282,7 @@ PathSettings path_settings_from(const ModeOptions& options) {
     settings.seed = options.seed;
     settings.noise_threshold = options.noise_threshold;
     settings.min_samples = options.min_samples;
+    settings.regroup = !options.no_regroup;
     try {
         check_path_settings(settings);
     } catch (const std::invalid_argument& error) {

@@ -56,7 +56,7 @@ static_assert(offsetof(path_settings, flags) == 12);
 static_assert(offsetof(path_settings, seed) == 16);
 static_assert(offsetof(path_settings, light_count) == 20);
 static_assert(offsetof(path_settings, environment_pick) == 24);
-static_assert(offsetof(path_settings, padding) == 28);
+static_assert(offsetof(path_settings, launch_samples) == 28);
 
 // Each count covers the planes it counts, one block after the other.
 static_assert(FGR_COLOUR_PLANE + FGR_COLOUR_PLANES == FGR_DEPTH_PLANE &&

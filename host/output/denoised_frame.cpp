@@ -14,6 +14,21 @@ Frame render_with_variance(const FrameRequest& request,
         throw std::invalid_argument(
             "denoising needs at least 2 samples per pixel to estimate the noise (--spp 2 or more)");
     }
+    // The path tracer estimates each pixel's variance itself (from its odd and even samples):
+    // one render does.
+    Frame whole = render(request);
+    if (whole.cancelled) return whole;
+    if (whole.variance.size() == whole.linear.size() && !whole.linear.empty()) {
+        if (whole.samples < 2) {
+            throw std::runtime_error(
+                "denoising needs at least 2 samples per pixel to estimate the noise, and the "
+                "time limit left fewer");
+        }
+        return whole;
+    }
+    // A renderer without its own estimate (none in fgr's modes that denoise; the fallback keeps
+    // this usable with any): two halves of the samples, whose difference is noise, the whole
+    // render above discarded.
     FrameRequest first = request;
     first.samples = request.samples / 2;
     Frame merged = render(first);

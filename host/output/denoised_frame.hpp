@@ -12,13 +12,14 @@
 
 namespace fgr {
 
-// Renders `request` through `render` as two renders of half the samples each (samples first ..
+// Renders `request` through `render` with the variance of its estimate in Frame::variance, which
+// the denoiser needs: one render when `render` estimates it (the path tracer does, from each
+// pixel's odd and even samples); otherwise two renders of half the samples each (samples first ..
 // first + n/2 - 1, then the rest: together the same estimate as one render of all of them,
-// FrameRequest::first_sample), merged, with the variance of the merged estimate in
-// Frame::variance, which the denoiser needs: from the halves' own (Frame::variance) when `render`
-// estimates them, else from the difference of the halves. Throws std::invalid_argument when the
-// request has a single sample (nothing to estimate a variance from) and std::runtime_error when a
-// time limit left the second half no sample.
+// FrameRequest::first_sample), merged, the variance from the difference of the halves (or their
+// own when the second render has it). Throws std::invalid_argument when the request has a single
+// sample (nothing to estimate a variance from) and std::runtime_error when a time limit left
+// fewer than 2 samples (or the second half none).
 Frame render_with_variance(const FrameRequest& request,
                            const std::function<Frame(const FrameRequest&)>& render);
 

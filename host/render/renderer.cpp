@@ -153,8 +153,8 @@ int work_group_size(const ComputeDevice& device) { return device.info.is_cpu ? 8
 
 // A cancellable frame runs in this many launches.
 constexpr int kCancelBands = 32;
-// A long frame that reports its progress runs in about this many launches in all (samples times
-// bands).
+// A long frame that reports its progress runs in about this many launches in all (the samples'
+// launches times bands).
 constexpr int kProgressLaunches = 64;
 // A frame of fewer pixel samples reports its progress a sample at a time, however few it has: it
 // is short. Splitting a sample into bands costs a launch at a global offset, for which PoCL
@@ -174,19 +174,19 @@ int band_tiles(int tiles, int group, int bands) {
     return std::max(1, (groups + bands - 1) / bands) * group;
 }
 
-// The bands each sample's launch is split into: when a long frame reports its progress, enough for
-// about kProgressLaunches in all, at most kCancelBands; otherwise one. A frame is long by its
+// The bands each launch of samples is split into: when a long frame reports its progress, enough
+// for about kProgressLaunches in all, at most kCancelBands; otherwise one. A frame is long by its
 // estimated cost (render/render_cost.hpp), as many steps as kBandedPixelSamples plain samples or
 // more, so that a costly frame of few pixels (an IFS scene whose rays open many nodes) reports its
 // progress too.
 int progress_bands(const FrameRequest& request, const PixelRegion& region, const Scene& scene,
-                   RenderMode mode) {
+                   RenderMode mode, int sample_launches) {
     if (!request.on_progress) return 1;
     const double pixel_samples = double(region.width) * region.height * request.samples;
     const double weight = std::max(
         1.0, estimate_render_cost(scene, request, mode).steps_per_sample / kPlainSampleSteps);
     if (pixel_samples * weight < double(kBandedPixelSamples)) return 1;
-    return std::clamp((kProgressLaunches + request.samples - 1) / request.samples, 1, kCancelBands);
+    return std::clamp((kProgressLaunches + sample_launches - 1) / sample_launches, 1, kCancelBands);
 }
 
 cl::NDRange global_range(int items, int group) {
@@ -383,8 +383,9 @@ Frame Renderer::render(const FrameRequest& request) {
         kernel->setArg(FGR_RENDER_ARG_HAS_HINTS, has_hints);
     }
     mode_->bind(render_kernel_, request, layout);
-    // Samples accumulate in the planes, one launch each, in order (in-order queue). Sample 0
-    // overwrites them; a request starting later starts from zeroed planes instead.
+    // Samples accumulate in the planes, one or more a launch (the mode's launch_samples), in
+    // order (in-order queue). The launch of sample 0 overwrites them; a request starting later
+    // starts from zeroed planes instead.
     if (request.first_sample > 0) {
         const auto bytes = [plane](int count) { return sizeof(float) * count * plane; };
         device_.queue.enqueueFillBuffer(planes, 0.0f, bytes(FGR_COLOUR_PLANE),
@@ -397,10 +398,13 @@ Frame Renderer::render(const FrameRequest& request) {
     }
     mode_->write_inputs(device_.queue, planes, layout, request);
     int done = 0;
-    const int bands = progress_bands(request, region, scene_, switches_.mode);
+    // A mode may trace several samples a launch (the path tracer's regrouped packets).
+    const int per_launch = std::max(1, mode_->launch_samples(request));
+    const int sample_launches = (request.samples + per_launch - 1) / per_launch;
+    const int bands = progress_bands(request, region, scene_, switches_.mode, sample_launches);
     // The launches in all, as launch_tiles makes them (a cancellable frame's bands included).
     const int band = band_tiles(tiles, group, launch_bands(request.cancel, bands));
-    const long launches = static_cast<long>(request.samples) * ((tiles + band - 1) / band);
+    const long launches = static_cast<long>(sample_launches) * ((tiles + band - 1) / band);
     long launched = 0;
     std::function<void()> band_done;
     if (request.on_progress) {
@@ -408,13 +412,15 @@ Frame Renderer::render(const FrameRequest& request) {
         band_done = [&] { request.on_progress(++launched, launches); };
     }
     while (done < request.samples) {
+        const int count = std::min(per_launch, request.samples - done);
+        mode_->bind_launch(render_kernel_, count);
         render_kernel_.setArg(FGR_RENDER_ARG_SAMPLE, request.first_sample + done);
         if (!launch_tiles(render_kernel_, tiles, group, request.cancel, bands, band_done)) {
             return cancelled_frame();
         }
-        ++done;
+        done += count;
         if (request.on_sample || request.enough) {
-            device_.queue.finish();  // report each sample as it completes
+            device_.queue.finish();  // report each launch's samples as they complete
             if (request.on_sample) request.on_sample(done, request.samples);
             if (request.enough && done < request.samples && request.enough()) break;
         }

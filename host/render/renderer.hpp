@@ -56,19 +56,22 @@ struct FrameRequest {
     // a caller can accumulate one sample at a time and get the same image as one long render
     // (sample 0 is the pixel centre, later ones are jittered).
     int first_sample = 0;
-    // Called after each finished sample with (samples done, samples in all), when set.
+    // Called after each finished launch with (samples done, samples in all), when set: a sample
+    // a launch, or up to the mode's launch_samples (the path tracer's regrouped packets trace
+    // several).
     std::function<void(int, int)> on_sample{};
     // Called as the frame renders, when set, with the launches done and the launches in all (0 of
-    // them when the first starts): a launch a sample, or, in a frame of few samples and many
-    // pixels, each sample's launch split into bands of tiles, so that it reports its progress too.
+    // them when the first starts): a launch a sample (or a few, see on_sample), or, in a frame of
+    // few samples and many pixels, each launch split into bands of tiles, so that it reports its
+    // progress too.
     std::function<void(long done, long total)> on_progress{};
     // Polled between bands of tiles, when set: returning true abandons the frame
     // (Frame::cancelled), so an interactive caller never waits for a slow frame it no longer wants.
     std::function<bool()> cancel{};
     // Render mode "path" only: bounces, strategies and the environment.
     PathSettings path{};
-    // Polled after each finished sample, when set: returning true ends the render there with the
-    // samples done so far (Frame::samples), e.g. at a time budget.
+    // Polled after each finished launch (see on_sample), when set: returning true ends the render
+    // there with the samples done so far (Frame::samples), e.g. at a time budget.
     std::function<bool()> enough{};
     // How pixels map to rays: pinhole, panoramas, stereo pairs (camera/projection.hpp).
     Projection projection{};

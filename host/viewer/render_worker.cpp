@@ -39,6 +39,17 @@ double samples_per_second(int width, int height, double render_ms) {
 
 }  // namespace
 
+int refine_pass_samples(const ViewState& state, int sample, int cap, double ms_per_pixel_sample,
+                        double target_ms) {
+    const bool regrouped =
+        state.mode == RenderMode::Path && state.path.regroup && state.scene->ifs == nullptr;
+    const int left = cap - sample;
+    if (!regrouped || left <= 1 || !(ms_per_pixel_sample > 0.0) || !(target_ms > 0.0)) return 1;
+    const double pass_ms = ms_per_pixel_sample * double(state.width) * double(state.height);
+    const double fits = std::floor(target_ms / pass_ms);
+    return static_cast<int>(std::clamp(fits, 1.0, double(std::min(left, kRegroupLaunchSamples))));
+}
+
 RenderWorker::RenderWorker(int device_index, int packet_width, QualitySettings quality)
     : device_(open_device(device_index)),
       packet_width_(packet_width ? packet_width : preferred_packet_width(device_.info)),
@@ -453,15 +464,24 @@ void RenderWorker::refine(Renderer& renderer, const ViewState& state, int sample
     }
     FrameRequest request = frame_request(state, state.width, state.height);
     request.first_sample = sample;
+    if (state.mode == RenderMode::Path) {
+        int cap = sample_budget(state.mode).standing_view;
+        std::lock_guard lock(mutex_);
+        if (cap <= 0) cap = std::max(quality_.settings().sample_cap, 1);
+        request.samples = refine_pass_samples(state, sample, cap, quality_.ms_per_pixel(),
+                                              quality_.settings().target_ms);
+    }
     request.cancel = [this, generation = state.generation] {
         std::lock_guard lock(mutex_);
         return stopping_ || (state_ && state_->generation != generation);
     };
     Frame frame = renderer.render(request);
     if (frame.cancelled) return;
+    const int added = std::max(frame.samples, 1);
     {
+        // The cost per pixel sample, as a preview's single sample measures it.
         std::lock_guard lock(mutex_);
-        quality_.record_frame(int64_t{state.width} * state.height, frame.render_ms);
+        quality_.record_frame(int64_t{state.width} * state.height * added, frame.render_ms);
     }
     if (state.mode == RenderMode::Brute) {
         // The renderer carries the depth buffer from pass to pass: each frame is the whole image
@@ -474,40 +494,55 @@ void RenderWorker::refine(Renderer& renderer, const ViewState& state, int sample
         return;
     }
     const bool denoising = state.denoise && state.mode == RenderMode::Path;
-    if (denoising) accumulate_features(frame, sample == 0);
+    if (denoising) accumulate_features(frame, sample == 0, added);
+    // The accumulation holds the sum of the samples; the frame their mean.
     if (sample == 0) {
         ifs_depth_reached_ = frame.ifs_levels ? frame.ifs_levels->deepest : -1;
         accumulation_ = std::move(frame.linear);
-        accumulated_samples_ = 1;
+        for (float& value : accumulation_) value *= static_cast<float>(added);
+        accumulated_samples_ = added;
+    } else {
+        for (size_t i = 0; i < accumulation_.size(); ++i) {
+            accumulation_[i] += frame.linear[i] * static_cast<float>(added);
+        }
+        accumulated_samples_ += added;
+    }
+    if (accumulated_samples_ == 1) {
         publish({std::move(frame.image), 1.0f, 1, frame.render_ms,
                  samples_per_second(state.width, state.height, frame.render_ms),
                  renderer.switches().double_precision, state.generation},
                 renderer);
         return;
     }
-    for (size_t i = 0; i < accumulation_.size(); ++i) accumulation_[i] += frame.linear[i];
-    ++accumulated_samples_;
     const float inverse = 1.0f / static_cast<float>(accumulated_samples_);
     Image8 image = denoising ? denoised_preview(state)
                              : display_image(*state.scene, state.params, accumulation_, state.width,
                                              state.height, inverse);
     publish({std::move(image), 1.0f, accumulated_samples_, frame.render_ms,
-             samples_per_second(state.width, state.height, frame.render_ms),
+             samples_per_second(state.width, state.height, frame.render_ms / added),
              renderer.switches().double_precision, state.generation},
             renderer);
 }
 
-void RenderWorker::accumulate_features(const Frame& frame, bool first) {
-    const auto add = [first](std::vector<float>& sum, const std::vector<float>& values) {
-        if (first || sum.size() != values.size()) {
-            sum = values;
-        } else {
-            for (size_t i = 0; i < sum.size(); ++i) sum[i] += values[i];
-        }
+void RenderWorker::accumulate_features(const Frame& frame, bool first, int samples) {
+    const float n = static_cast<float>(samples);
+    const auto add = [first, n](std::vector<float>& sum, const std::vector<float>& means) {
+        if (first || sum.size() != means.size()) sum.assign(means.size(), 0.0f);
+        for (size_t i = 0; i < sum.size(); ++i) sum[i] += means[i] * n;
     };
+    // The frame's samples' squares summed: one sample's square, or for several (whose values
+    // the frame does not keep) n m^2 + (n - 1) s^2 from their mean m and the per-sample variance
+    // s^2 = n Var(m) that Frame::variance estimates without bias, so the sum stays right on
+    // average.
+    const bool several = samples > 1 && frame.variance.size() == frame.linear.size();
     std::vector<float> squares(frame.linear.size());
-    for (size_t i = 0; i < squares.size(); ++i) squares[i] = frame.linear[i] * frame.linear[i];
-    add(squares_, squares);
+    for (size_t i = 0; i < squares.size(); ++i) {
+        const float mean = frame.linear[i];
+        const float spread = several ? std::max(frame.variance[i], 0.0f) * n : 0.0f;
+        squares[i] = n * mean * mean + (n - 1.0f) * spread;
+    }
+    if (first || squares_.size() != squares.size()) squares_.assign(squares.size(), 0.0f);
+    for (size_t i = 0; i < squares.size(); ++i) squares_[i] += squares[i];
     add(albedo_sum_, frame.albedo);
     add(normal_sum_, frame.normal);
     add(alpha_sum_, frame.alpha);

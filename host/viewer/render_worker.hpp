@@ -110,6 +110,13 @@ struct ReloadResult {
     std::string error_log;  // the compiler's output, when it has one
 };
 
+// Samples a refine pass adds from sample `sample` on: one, or with the path tracer's regrouped
+// lanes (whose launch of several samples keeps its lanes fuller than one of a sample) as many as
+// the cost per pixel sample measured so far fits in the viewer's target frame time, at most a
+// regrouped launch's and what the cap leaves.
+int refine_pass_samples(const ViewState& state, int sample, int cap, double ms_per_pixel_sample,
+                        double target_ms);
+
 class RenderWorker {
 public:
     // Opens the OpenCL device on the calling thread (throws std::runtime_error when there is
@@ -188,7 +195,8 @@ private:
     void refine(Renderer& renderer, const ViewState& state, int sample);
     // The denoised preview's sums, added from one more sample (`first`: sample 0, which starts
     // them), and the image of the samples so far, denoised.
-    void accumulate_features(const Frame& frame, bool first);
+    // Adds a refine frame of `samples` samples to the denoised preview's sums.
+    void accumulate_features(const Frame& frame, bool first, int samples);
     Image8 denoised_preview(const ViewState& state);
     // Path mode with a noise threshold: one round of adaptive sampling a pass (sample 0 starts
     // them), up to the standing view's sample cap.

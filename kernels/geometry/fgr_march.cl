@@ -261,3 +261,110 @@ inline vec3 surface_normal(march_result hit, vec3 p, real eps, PARAMS) {
     return estimate_normal(p, eps, PARAMS_PASS);
 #endif
 }
+
+#ifndef FGR_GEOMETRY_IFS
+/* --- A march one DE evaluation at a time, each lane its own ray at its own step: march_rays_core
+ * lane by lane, for a caller that evaluates the DE of many rays' points at once and starts a new
+ * ray in a lane as soon as its last one ends (the path tracer's regrouped packets). A lane's ray
+ * takes exactly the steps march_rays_core takes it (departing or not, relaxed or not), so it
+ * meets the same surface at the same t. */
+typedef struct march_lanes {
+    vec3 origin, dir;
+    real t; /* the point the next evaluation is at; where the ray hit once it has */
+    real travelled, reach;
+    real last_radius, last_step, last_dist; /* as march_rays_core's */
+    mask stretched, escaping, leaving;
+    mask steps;    /* DE evaluations so far */
+    mask marching; /* lanes whose ray is still on its way */
+    mask hit;      /* lanes whose ray met the surface (once it stopped) */
+} march_lanes;
+
+inline march_lanes march_lanes_none(void) {
+    march_lanes m;
+    m.origin = m.dir = v3_splat(0.0f, 0.0f, 0.0f);
+    m.t = m.travelled = m.reach = m.last_radius = m.last_step = fgr_real(0.0f);
+    m.last_dist = fgr_real(INFINITY);
+    m.stretched = m.escaping = m.leaving = m.steps = m.marching = m.hit = (mask)(0);
+    return m;
+}
+
+/* The lanes of `lanes` start a ray: from `start` along it (a camera ray's prepass distance; 0
+ * for others), having `travelled` before origin, up to `reach`; `departing` lanes leave a
+ * surface (march_rays_departing). A ray starting past its reach ends at once, having missed. */
+inline void march_lanes_start(march_lanes* m, mask lanes, vec3 origin, vec3 dir, real start,
+                              real travelled, real reach, mask departing) {
+    m->origin = v3_select(m->origin, origin, lanes);
+    m->dir = v3_select(m->dir, dir, lanes);
+    m->t = select(m->t, start, lanes);
+    m->travelled = select(m->travelled, travelled, lanes);
+    m->reach = select(m->reach, reach, lanes);
+    m->last_radius = select(m->last_radius, fgr_real(0.0f), lanes);
+    m->last_step = select(m->last_step, fgr_real(0.0f), lanes);
+    m->last_dist = select(m->last_dist, fgr_real(INFINITY), lanes);
+    m->stretched &= ~lanes;
+    m->escaping &= ~lanes;
+    m->leaving = select(m->leaving, departing, lanes);
+    m->steps = select(m->steps, (mask)(0), lanes);
+    m->hit &= ~lanes;
+    m->marching = select(m->marching, start <= reach, lanes);
+}
+
+/* Where each marching lane evaluates the DE next. */
+inline vec3 march_lanes_point(const march_lanes* m) { return v3_mad(m->origin, m->dir, m->t); }
+
+/* One step of the lanes of m->marching, given the DE at their points: march_rays_core's loop
+ * body. Lanes whose ray hits, passes its reach or takes its last step stop marching. */
+inline void march_lanes_step(march_lanes* m, real dist, march_limits limits) {
+    mask active = m->marching;
+    const real t_here = m->t;
+    /* Only at the eye itself: no distance covered before, so no footprint there. */
+    const mask first = active & (m->steps == (mask)(0));
+    m->escaping =
+        select(m->escaping, (dist <= 0.0f) & (m->travelled <= 0.0f) & (t_here <= 0.0f), first);
+    m->leaving |= m->escaping & first;
+    real radius = fgr_real(0.0f), shrink = fgr_real(0.0f);
+    mask overshot = (mask)(0);
+    const bool relaxing = limits.relaxation > 1.0f;
+    if (relaxing) {
+        radius = fabs(dist) * limits.step_factor;
+        shrink = 2.0f * limits.step_factor * limits.footprint * (m->t + m->travelled);
+        overshot = m->stretched & active & (radius + m->last_radius - shrink < m->last_step);
+    }
+    mask now_hit = active & !overshot & (dist < (m->t + m->travelled) * limits.footprint);
+    m->escaping &= dist <= 0.0f;
+    now_hit &= !m->escaping;
+    now_hit &= (dist < m->last_dist) | !m->leaving;
+    m->last_dist = select(m->last_dist, dist, m->leaving & active & !overshot);
+    m->hit |= now_hit;
+    active &= !now_hit;
+    if (relaxing) {
+        real travel = limits.step_factor * m->last_step;
+        real fall = fmax(m->last_radius - radius, 0.0f);
+        real stride =
+            (1.9f * radius - shrink) * travel / fmax(travel + fall, fgr_real(FGR_MIN_LENGTH));
+        stride =
+            select(radius, clamp(stride, radius, radius * limits.relaxation), m->last_step > 0.0f);
+        stride = select(stride, radius, m->t + stride > m->reach);
+        real next_step = select(stride, m->last_radius - m->last_step, overshot);
+        m->last_radius = select(m->last_radius, radius, active & !overshot);
+        m->last_step = select(m->last_step, next_step, active);
+        m->stretched = active & !overshot & (stride > radius);
+        m->t = select(m->t, m->t + next_step, active);
+    } else {
+        m->t = select(m->t, mad(dist, limits.step_factor, m->t), active);
+    }
+    const mask in_surface = m->escaping & active;
+    if (fgr_any(in_surface)) {
+        real escape =
+            fmax(fabs(dist) * limits.step_factor,
+                 fmax(t_here * limits.footprint, fgr_real(FGR_ESCAPE_STEP * limits.max_distance)));
+        m->t = select(m->t, t_here + escape, in_surface);
+        m->last_step = select(m->last_step, fgr_real(0.0f), in_surface);
+        m->last_radius = select(m->last_radius, fgr_real(0.0f), in_surface);
+        m->stretched &= !in_surface;
+    }
+    fgr_count_if(m->steps, m->marching);
+    active &= m->t <= m->reach;
+    m->marching = active & (m->steps < (mask)(limits.max_steps));
+}
+#endif

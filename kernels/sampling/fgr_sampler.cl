@@ -205,6 +205,70 @@ inline real sampler_next_1d(sampler* s) {
     return sampler_to_real(sampler_reverse_bits(sampler_owen_reversed(index, seed_x)));
 }
 
+/* --- The same sequence for a packet whose lanes trace different samples, each at its own
+ * dimension: the path tracer's regrouped kernel (fgr_mode_path.cl), where a lane whose path has
+ * ended starts another (pixel, sample) at once while its neighbours are still bouncing. A path
+ * draws exactly the numbers sampler_start/sampler_next_* give it, whichever lane traces it. */
+typedef struct lane_sampler {
+    uint_lanes pixel;     /* the hash of (pixel, render seed) that seeds every dimension */
+    uint_lanes index;     /* each lane's sample index */
+    uint_lanes dimension; /* each lane's next dimension slot */
+} lane_sampler;
+
+/* Sample `sample` of the pixels (px, py) of a render seeded with `seed`, per lane. */
+inline lane_sampler lane_sampler_start(real px, real py, uint_lanes sample, uint_lanes seed) {
+    lane_sampler s;
+    const uint_lanes h = sampler_mix(convert_uint_lanes(py) ^ sampler_mix(seed));
+    s.pixel = sampler_mix(convert_uint_lanes(px) ^ h);
+    s.index = sample;
+    s.dimension = (uint_lanes)(0u);
+    return s;
+}
+
+/* `fresh` where the lanes of `m` hold (a mask: -1 in vector lanes, 1 for scalars), `old`
+ * elsewhere: the sampler's lanes are 32 bits even where masks are 64. */
+inline uint_lanes lane_sampler_pick(uint_lanes old, uint_lanes fresh, mask m) {
+    const uint_lanes bits = (uint_lanes)(0u) - (convert_uint_lanes(m) & 1u);
+    return (fresh & bits) | (old & ~bits);
+}
+
+/* The lanes of `m` take the state of `fresh`, the others keep theirs. */
+inline void lane_sampler_take(lane_sampler* s, lane_sampler fresh, mask m) {
+    s->pixel = lane_sampler_pick(s->pixel, fresh.pixel, m);
+    s->index = lane_sampler_pick(s->index, fresh.index, m);
+    s->dimension = lane_sampler_pick(s->dimension, fresh.dimension, m);
+}
+
+/* sampler_next_slot with each lane's own index and dimension; only the lanes of `drawing` move
+ * on to their next dimension (the others are at another point of their paths). */
+inline uint_lanes lane_sampler_next_slot(lane_sampler* s, mask drawing, uint_lanes* seed_x,
+                                         uint_lanes* seed_y) {
+    const uint_lanes slot =
+        sampler_mix(s->pixel ^ sampler_mix(s->dimension * 0x9e3779b9u + 0x632be5abu));
+    s->dimension += convert_uint_lanes(drawing) & 1u;
+    const uint_lanes seed_index = sampler_mix(slot ^ 0x1b873593u);
+    *seed_x = sampler_mix(slot ^ 0xcc9e2d51u);
+    *seed_y = sampler_mix(slot ^ 0xe6546b64u);
+    const uint_lanes reversed = sampler_reverse_bits(s->index);
+    return sampler_reverse_bits(sampler_owen_reversed(reversed, seed_index));
+}
+
+inline real2 lane_sampler_next_2d(lane_sampler* s, mask drawing) {
+    uint_lanes seed_x, seed_y;
+    const uint_lanes index = lane_sampler_next_slot(s, drawing, &seed_x, &seed_y);
+    real2 u;
+    u.x = sampler_to_real(sampler_reverse_bits(sampler_owen_reversed(index, seed_x)));
+    u.y = sampler_to_real(
+        sampler_reverse_bits(sampler_owen_reversed(sampler_sobol1_reversed(index), seed_y)));
+    return u;
+}
+
+inline real lane_sampler_next_1d(lane_sampler* s, mask drawing) {
+    uint_lanes seed_x, seed_y;
+    const uint_lanes index = lane_sampler_next_slot(s, drawing, &seed_x, &seed_y);
+    return sampler_to_real(sampler_reverse_bits(sampler_owen_reversed(index, seed_x)));
+}
+
 /* --- The camera's sampling: anti-aliasing jitter and thin-lens depth of field, in every mode.
  * Always compiled: the sample count is a runtime choice. */
 

@@ -75,14 +75,21 @@ inline void env_locate(vec3 dir, environment_info env, real* row, real* column) 
     *column = u * (float)env.width;
 }
 
-/* Gathers each lane's texel colour and probability at the continuous (row, column) given. */
+/* Gathers each lane's texel colour and probability at the continuous (row, column) given; lanes
+ * outside `wanted` skip the loads and get black of probability 1. */
 inline void env_gather(__global const float* env_data, environment_info env, real row_f,
-                       real column_f, vec3* colour, real* probability, real* row_out) {
-    ENV_SCALAR rows[FGR_WIDTH], columns[FGR_WIDTH];
+                       real column_f, mask wanted, vec3* colour, real* probability, real* row_out) {
+    ENV_SCALAR rows[FGR_WIDTH], columns[FGR_WIDTH], gathered[FGR_WIDTH];
     ENV_SCALAR r[FGR_WIDTH], g[FGR_WIDTH], b[FGR_WIDTH], p[FGR_WIDTH], row_index[FGR_WIDTH];
     env_from_lanes(row_f, rows);
     env_from_lanes(column_f, columns);
+    env_from_lanes(select(fgr_real(0.0f), fgr_real(1.0f), wanted), gathered);
     for (int lane = 0; lane < FGR_WIDTH; ++lane) {
+        if (gathered[lane] == 0) {
+            r[lane] = g[lane] = b[lane] = row_index[lane] = 0;
+            p[lane] = 1;
+            continue;
+        }
         const int row = env_cell(rows[lane], env.height);
         const int column = env_cell(columns[lane], env.width);
         __global const float* texel = env_data + 3 * (row * env.width + column);
@@ -102,36 +109,44 @@ inline void env_gather(__global const float* env_data, environment_info env, rea
 }
 
 /* Radiance arriving from unit direction `dir` (from the environment towards the scene, i.e. seen
- * looking along dir): the texel dir falls in, times the intensity. */
-inline vec3 environment_radiance(vec3 dir, ENVIRONMENT) {
+ * looking along dir): the texel dir falls in, times the intensity (black outside `wanted`). */
+inline vec3 environment_radiance(vec3 dir, mask wanted, ENVIRONMENT) {
     real row_f, column_f, probability, row;
     vec3 colour;
     env_locate(dir, env, &row_f, &column_f);
-    env_gather(env_data, env, row_f, column_f, &colour, &probability, &row);
+    env_gather(env_data, env, row_f, column_f, wanted, &colour, &probability, &row);
     return v3_scale(colour, fgr_real(env.transform.y));
 }
 
 /* Solid-angle density with which environment_sample picks direction `dir`. */
-inline real environment_pdf(vec3 dir, ENVIRONMENT) {
+inline real environment_pdf(vec3 dir, mask wanted, ENVIRONMENT) {
     real row_f, column_f, probability, row;
     vec3 colour;
     env_locate(dir, env, &row_f, &column_f);
-    env_gather(env_data, env, row_f, column_f, &colour, &probability, &row);
+    env_gather(env_data, env, row_f, column_f, wanted, &colour, &probability, &row);
     return probability / env_texel_solid_angle(row, env);
 }
 
 /* A unit direction drawn by importance from (u1, u2) in [0, 1)^2 (u2 picks the row, u1 the
  * column; each is reused inside the texel, so stratified input stays stratified), and its
- * solid-angle pdf in *pdf (> 0 for every direction it returns). */
-inline vec3 environment_sample(real u1, real u2, ENVIRONMENT, real* pdf) {
+ * solid-angle pdf in *pdf (> 0 for every direction it returns). Lanes outside `wanted` skip the
+ * search, the costly part, and get the first texel's top edge. */
+inline vec3 environment_sample(real u1, real u2, mask wanted, ENVIRONMENT, real* pdf) {
     ENV_SCALAR su1[FGR_WIDTH], su2[FGR_WIDTH];
     ENV_SCALAR rows[FGR_WIDTH], columns[FGR_WIDTH], fraction_v[FGR_WIDTH], fraction_u[FGR_WIDTH],
         p[FGR_WIDTH];
     /* NaN lanes become 0 through fmax; u = 1 would leave the CDF's last interval. */
     env_from_lanes(fmin(fmax(u1, fgr_real(0.0f)), fgr_real(ENV_ONE_BELOW)), su1);
     env_from_lanes(fmin(fmax(u2, fgr_real(0.0f)), fgr_real(ENV_ONE_BELOW)), su2);
+    ENV_SCALAR searched[FGR_WIDTH];
+    env_from_lanes(select(fgr_real(0.0f), fgr_real(1.0f), wanted), searched);
     __global const float* marginal = env_data + env.marginal_offset;
     for (int lane = 0; lane < FGR_WIDTH; ++lane) {
+        if (searched[lane] == 0) {
+            rows[lane] = columns[lane] = fraction_v[lane] = fraction_u[lane] = 0;
+            p[lane] = 1;
+            continue;
+        }
         const ENV_SCALAR v = su2[lane] >= 0 ? su2[lane] : (ENV_SCALAR)0; /* NaN-safe */
         const int row = env_find_interval(marginal, env.height, v);
         const ENV_SCALAR m0 = marginal[row], m1 = marginal[row + 1];

@@ -14,6 +14,7 @@
 #define FGR_PATH_MIS 2            /* weigh light and BSDF sampling by the power heuristic */
 #define FGR_PATH_ENVIRONMENT_IS 4 /* sample the environment by importance, not uniformly */
 #define FGR_PATH_INDEPENDENT 8    /* independent random samples instead of stratified ones */
+#define FGR_PATH_REGROUP 16       /* regrouped packets: a lane whose path ends starts another */
 
 #ifdef __cplusplus
 namespace fgr::layout {
@@ -29,7 +30,8 @@ typedef struct path_settings {
     fgr_layout_int light_count;        /* lights in the light list */
     fgr_layout_float environment_pick; /* probability of sampling the environment rather than
                                         * a light */
-    fgr_layout_int padding;            /* unused; the host sends 0 */
+    fgr_layout_int launch_samples;     /* with FGR_PATH_REGROUP: samples of every pixel this
+                                        * launch traces, from `sample` on */
 } path_settings;
 
 #ifdef __cplusplus

@@ -53,7 +53,7 @@ namespace {
     X(path_settings, seed)                  \
     X(path_settings, light_count)           \
     X(path_settings, environment_pick)      \
-    X(path_settings, padding)
+    X(path_settings, launch_samples)
 
 #define FGR_SHARED_STRUCTS(X) X(camera_frame) X(environment_info) X(path_settings)
 

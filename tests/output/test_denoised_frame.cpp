@@ -67,7 +67,8 @@ TEST(DenoisedFrame, HalvesMakeTheWholeRenderAndTheirDifferenceItsVariance) {
         asked.emplace_back(half.first_sample, half.samples);
         return fake_render(half, false);
     });
-    ASSERT_EQ(asked, (std::vector<std::pair<int, int>>{{5, 3}, {8, 4}}));
+    // The whole render first, which has no variance of its own here; then the halves.
+    ASSERT_EQ(asked, (std::vector<std::pair<int, int>>{{5, 7}, {5, 3}, {8, 4}}));
     EXPECT_EQ(frame.samples, 7);
     FrameRequest second = request;
     second.first_sample = 8;
@@ -84,13 +85,19 @@ TEST(DenoisedFrame, HalvesMakeTheWholeRenderAndTheirDifferenceItsVariance) {
     }
 }
 
-TEST(DenoisedFrame, TheRenderersOwnVariancesAreWeighedByTheHalvesShares) {
+// A renderer that estimates the variance itself (the path tracer) renders once.
+TEST(DenoisedFrame, TheRenderersOwnVarianceTakesOneRender) {
     FrameRequest request;
     request.samples = 4;
-    const Frame frame = render_with_variance(
-        request, [](const FrameRequest& half) { return fake_render(half, true); });
-    // Each half of 2 samples reports 0.002; the mean of both has a quarter of each.
-    for (float v : frame.variance) EXPECT_NEAR(v, 0.25f * 0.002f + 0.25f * 0.002f, 1e-9f);
+    request.first_sample = 3;
+    std::vector<std::pair<int, int>> asked;
+    const Frame frame = render_with_variance(request, [&](const FrameRequest& whole) {
+        asked.emplace_back(whole.first_sample, whole.samples);
+        return fake_render(whole, true);
+    });
+    ASSERT_EQ(asked, (std::vector<std::pair<int, int>>{{3, 4}}));
+    EXPECT_EQ(frame.samples, 4);
+    for (float v : frame.variance) EXPECT_EQ(v, 0.001f * 4.0f);
 }
 
 TEST(DenoisedFrame, RefusesOneSample) {

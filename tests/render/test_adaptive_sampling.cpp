@@ -15,6 +15,7 @@
 
 #include "device/opencl_device.hpp"
 #include "device/program_cache.hpp"
+#include "output/denoised_frame.hpp"
 #include "render/adaptive_sampling.hpp"
 #include "render/environment.hpp"
 #include "render/path_settings.hpp"
@@ -281,6 +282,28 @@ TEST_F(AdaptiveSampling, FlatSkyTakesFewerSamplesThanTheNoisySurface) {
     surface /= double(surface_pixels);
     std::printf("samples per pixel: sky %.1f, surface %.1f\n", sky, surface);
     EXPECT_LT(sky, 0.5 * surface);
+}
+
+// --denoise with --noise-threshold: the adaptive render (one, its rounds inside) carries each
+// pixel's variance, which the denoiser takes as it is.
+TEST_F(AdaptiveSampling, DenoisingTakesTheAdaptiveRendersVariance) {
+    PathSettings path = lit_by(0.3f, true);
+    path.seed = 6;
+    path.noise_threshold = 0.05f;
+    path.min_samples = 4;
+    int renders = 0;
+    Frame frame = render_with_variance(request(kSphere, "", path, 32), [&](const FrameRequest& r) {
+        ++renders;
+        return renderer().render(r);
+    });
+    EXPECT_EQ(renders, 1);
+    ASSERT_TRUE(frame.adaptive);
+    ASSERT_EQ(frame.variance.size(), frame.linear.size());
+    for (float v : frame.variance) ASSERT_GE(v, 0.0f);
+    const std::vector<float> raw = frame.linear;
+    denoise_frame(frame, DisplayTransform{}, DenoiseSettings{});
+    EXPECT_EQ(frame.raw_linear, raw);
+    EXPECT_NE(frame.linear, raw);
 }
 
 // Frame::variance against the variance it estimates. Inside the emitting sphere every pixel's

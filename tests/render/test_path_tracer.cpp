@@ -511,6 +511,110 @@ TEST_F(PathTracer, EveryPacketWidthRendersTheSameImage) {
     }
 }
 
+// Regrouped packets (PathSettings::regroup, the default) trace exactly the packet kernel's paths,
+// each with the random numbers of its (pixel, sample), only in other lanes and launches: with the
+// same seed nearly every pixel matches the packet kernel's to float rounding (the sums of a pixel's
+// samples are added in another order; a path grazing an edge may branch differently after a
+// last-bit difference), so a path dropped or counted twice shows at once. With another seed the
+// image means agree within their standard errors (a z-test of the two kernels' estimates). A
+// 24x24 Mandelbulb (silhouette tiles, sky and surface lanes side by side): a regrouped launch
+// traces up to kRegroupLaunchSamples samples, so kRegroupLaunchSamples + 2 take a full launch and
+// a partial one, and 3 samples from sample 5 check the sample numbering.
+TEST_F(PathTracer, RegroupedPacketsTraceThePacketKernelsPaths) {
+    set("albedo=0.7,0.7,0.7");
+    PathSettings regrouped = uniform_light(1.0f);
+    regrouped.max_bounces = 6;
+    PathSettings packet = regrouped;
+    packet.regroup = false;
+    for (const auto& [first_sample, samples] :
+         {std::pair{0, kRegroupLaunchSamples + 2}, std::pair{5, 3}}) {
+        const Frame a = render(kMandelbulb, regrouped, samples, 24, first_sample);
+        const Frame b = render(kMandelbulb, packet, samples, 24, first_sample);
+        ASSERT_EQ(a.samples, samples);
+        long differing = 0;
+        for (size_t i = 0; i < a.linear.size(); ++i) {
+            differing += std::fabs(a.linear[i] - b.linear[i]) > 1e-4f * std::max(1.0f, b.linear[i]);
+        }
+        std::printf("first sample %d: %ld of %zu channels differ\n", first_sample, differing,
+                    a.linear.size());
+        EXPECT_LT(differing, long(a.linear.size() / 50)) << "first sample " << first_sample;
+        EXPECT_EQ(a.alpha, b.alpha);
+        long albedo_differing = 0;
+        for (size_t i = 0; i < a.albedo.size(); ++i) {
+            albedo_differing += std::fabs(a.albedo[i] - b.albedo[i]) > 1e-5f;
+        }
+        EXPECT_EQ(albedo_differing, 0) << "the first hits are the same";
+        if (first_sample == 0) {
+            EXPECT_EQ(a.depth, b.depth);
+        }
+    }
+    packet.seed = 77;  // independent of the regrouped render's samples
+    const Estimate with = estimate(render(kMandelbulb, regrouped, 16));
+    const Estimate without = estimate(render(kMandelbulb, packet, 16));
+    expect_within(with, without.mean, without.standard_error, "regrouped against packet kernel");
+}
+
+// With the stats counters, lane utilisation counts what the lanes really do: the paths are the
+// packet kernel's, so the DE evaluations the lanes took part in are the same, while the
+// packets' evaluations (the work a packet pays for in all its lanes) fall. The counts are
+// deterministic (no clock): on this 24x24 Mandelbulb at 8 samples the packet kernel keeps its
+// lanes under half busy and regrouping well over two thirds (measured 0.476 and 0.751).
+TEST_F(PathTracer, RegroupingFillsTheLanes) {
+    KernelSwitches switches;
+    switches.packet_width = 16;
+    switches.mode = RenderMode::Path;
+    switches.stats = true;
+    Renderer counting(device(), cache_, *scene_, switches);
+    set("albedo=0.7,0.7,0.7");
+    set("shape=2");
+    FrameRequest request;
+    request.width = request.height = 24;
+    request.view = view_for(kMandelbulb);
+    request.params = params_;
+    request.samples = 8;
+    request.path = uniform_light(1.0f);
+    const Frame regrouped = counting.render(request);
+    request.path.regroup = false;
+    const Frame packet = counting.render(request);
+    ASSERT_TRUE(regrouped.lane_stats && packet.lane_stats);
+    const LaneStats& a = *regrouped.lane_stats;
+    const LaneStats& b = *packet.lane_stats;
+    std::printf(
+        "lane utilisation %.3f regrouped, %.3f packet kernel (lane evaluations %.0f, %.0f)\n",
+        a.utilisation(), b.utilisation(), a.lane_evaluations, b.lane_evaluations);
+    // Exactly equal here; a path that grazes an edge could branch differently on another CPU.
+    EXPECT_NEAR(a.lane_evaluations, b.lane_evaluations, 0.005 * b.lane_evaluations);
+    EXPECT_GT(a.utilisation(), 0.7);
+    EXPECT_LT(b.utilisation(), 0.5);
+
+    // Adaptive sampling's per-pixel limits (FrameRequest::sample_limits): two pixels in three stop
+    // after 2 of the 8 samples. The regrouped kernel traces the same paths as the packet kernel
+    // (the same lane evaluations) and never queues those past a pixel's limit, so its packets
+    // keep the lanes busy with the pixels still sampling and do about half the full render's work.
+    request.sample_limits.assign(size_t(24 * 24), 8.0f);
+    for (size_t i = 0; i < request.sample_limits.size(); ++i) {
+        if (i % 3 != 0) request.sample_limits[i] = 2.0f;
+    }
+    const Frame limited_packet = counting.render(request);
+    request.path.regroup = true;
+    const Frame limited = counting.render(request);
+    ASSERT_TRUE(limited.lane_stats && limited_packet.lane_stats);
+    const LaneStats& c = *limited.lane_stats;
+    const LaneStats& d = *limited_packet.lane_stats;
+    std::printf(
+        "under sample limits: lane utilisation %.3f regrouped, %.3f packet kernel (lane "
+        "evaluations %.0f, %.0f; packet evaluations %.0f, %.0f of the full render)\n",
+        c.utilisation(), d.utilisation(), c.lane_evaluations, d.lane_evaluations,
+        c.packet_evaluations, a.packet_evaluations);
+    for (size_t i = 0; i < limited.samples_per_pixel.size(); ++i) {
+        ASSERT_EQ(limited.samples_per_pixel[i], request.sample_limits[i]) << i;
+    }
+    EXPECT_NEAR(c.lane_evaluations, d.lane_evaluations, 0.005 * d.lane_evaluations);
+    EXPECT_LT(c.lane_evaluations, 0.7 * a.lane_evaluations);
+    EXPECT_LT(c.packet_evaluations, 0.7 * a.packet_evaluations);
+    EXPECT_GT(c.utilisation(), 0.65);
+}
+
 // The stability suite's hard camera placements (`fgr check`, host/diagnostics/scene_check.cpp)
 // beside a scene's own cameras: at the origin (inside most fractals), a centre ray through the
 // origin, a narrow view grazing the silhouette, and a camera 1000 times farther out.

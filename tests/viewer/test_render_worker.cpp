@@ -475,5 +475,27 @@ TEST_F(RenderWorkerPrecision, FlyingUpToTheSurfaceSwitchesToDoubleAndProbesInDou
     EXPECT_NEAR(worker_->status().de_at_camera, double(reference), 1e-3 * double(reference));
 }
 
+// A standing path view's refine pass takes as many regrouped samples as fit in the target frame
+// time (the cost per pixel sample measured so far), at most a regrouped launch's and what the cap
+// leaves; one with the packet kernel, in other modes and before any measurement.
+TEST(RenderWorkerPasses, RegroupedPathPassesFitTheTargetFrameTime) {
+    ViewState view;
+    view.scene = std::make_shared<const Scene>(test::sphere_scene());
+    view.width = 100;
+    view.height = 100;
+    view.mode = RenderMode::Path;
+    const double per_sample = 5.0 / 10000.0;  // 5 ms a sample of the 100x100 view
+    EXPECT_EQ(refine_pass_samples(view, 0, 4096, per_sample, 33.0), 6);
+    EXPECT_EQ(refine_pass_samples(view, 4093, 4096, per_sample, 33.0), 3);
+    EXPECT_EQ(refine_pass_samples(view, 8, 4096, per_sample / 100.0, 33.0), kRegroupLaunchSamples);
+    EXPECT_EQ(refine_pass_samples(view, 8, 4096, per_sample * 10.0, 33.0), 1);
+    EXPECT_EQ(refine_pass_samples(view, 8, 4096, 0.0, 33.0), 1);
+    view.path.regroup = false;
+    EXPECT_EQ(refine_pass_samples(view, 0, 4096, per_sample, 33.0), 1);
+    view.path.regroup = true;
+    view.mode = RenderMode::Shaded;
+    EXPECT_EQ(refine_pass_samples(view, 0, 4096, per_sample, 33.0), 1);
+}
+
 }  // namespace
 }  // namespace fgr::viewer

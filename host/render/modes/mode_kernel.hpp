@@ -29,6 +29,14 @@ public:
     virtual void bind(cl::Kernel& kernel, const FrameRequest& request,
                       const TileLayout& layout) = 0;
 
+    // Samples of each pixel one launch may trace, at most, for `request` (each launch renders
+    // samples first .. first + count - 1 of every pixel): 1 for a mode that adds one a launch.
+    virtual int launch_samples(const FrameRequest&) const { return 1; }
+
+    // Sets what changes between the launches of a frame: `count` samples in the next one (at
+    // most launch_samples()).
+    virtual void bind_launch(cl::Kernel&, int /*count*/) {}
+
     // A second kernel the renderer runs once after the samples, over the same tiles and with the
     // same first arguments (FGR_RENDER_ARGS, `sample` being the samples done), for a mode whose
     // colour needs the whole image (the brute-force mode's screen-space shading); null for modes

@@ -148,12 +148,15 @@ void PathMode::bind(cl::Kernel& kernel, const FrameRequest& request, const TileL
     argument.flags = (settings.light_sampling ? FGR_PATH_LIGHT_SAMPLING : 0) |
                      (settings.mis ? FGR_PATH_MIS : 0) |
                      (settings.environment_importance ? FGR_PATH_ENVIRONMENT_IS : 0) |
-                     (settings.stratified ? 0 : FGR_PATH_INDEPENDENT);
+                     (settings.stratified ? 0 : FGR_PATH_INDEPENDENT) |
+                     (regrouped(settings) ? FGR_PATH_REGROUP : 0);
+    argument.launch_samples = 1;
     argument.seed = settings.seed;
     argument.light_count = light_count_;
     argument.environment_pick = environment_pick_;
     kernel.setArg(FGR_PATH_ARG_LIGHTS, lights_);
     kernel.setArg(FGR_PATH_ARG_SETTINGS, argument);
+    bound_settings_ = argument;
     kernel.setArg(FGR_PATH_ARG_ENV_DATA, environment_data_);
     kernel.setArg(FGR_PATH_ARG_ENVIRONMENT,
                   environment_info(bound_environment_->tables, bound_environment_->rotation_degrees,
@@ -178,6 +181,23 @@ void PathMode::write_inputs(const cl::CommandQueue& queue, const cl::Buffer& pla
         }
     }
     queue.enqueueWriteBuffer(planes, CL_TRUE, offset, sizeof(float) * plane, limits.data());
+}
+
+// IFS scenes trace their rays whole (kernels/geometry/fgr_ifs.cl), which the regrouped kernel's
+// one DE evaluation a turn cannot interleave: they keep the packet kernel.
+bool PathMode::regrouped(const PathSettings& settings) const {
+    return settings.regroup && scene_.ifs == nullptr;
+}
+
+int PathMode::launch_samples(const FrameRequest& request) const {
+    if (!regrouped(request.path)) return 1;
+    return request.enough ? kRegroupTimedLaunchSamples : kRegroupLaunchSamples;
+}
+
+void PathMode::bind_launch(cl::Kernel& kernel, int count) {
+    if (bound_settings_.launch_samples == count) return;
+    bound_settings_.launch_samples = count;
+    kernel.setArg(FGR_PATH_ARG_SETTINGS, bound_settings_);
 }
 
 void PathMode::read_back(std::span<const float> planes, const TileLayout& layout,

@@ -19,10 +19,14 @@ public:
     // The sample limit plane (FrameRequest::sample_limits, or every sample).
     void write_inputs(const cl::CommandQueue& queue, const cl::Buffer& planes,
                       const TileLayout& layout, const FrameRequest& request) override;
+    int launch_samples(const FrameRequest& request) const override;
+    void bind_launch(cl::Kernel& kernel, int count) override;
     void read_back(std::span<const float> planes, const TileLayout& layout,
                    const FrameRequest& request, int samples, Frame& frame) const override;
 
 private:
+    // Whether the regrouped kernel renders with these settings.
+    bool regrouped(const PathSettings& settings) const;
     // Uploads the environment's tables and the light list when they change.
     void prepare(const PathSettings& settings);
 
@@ -37,6 +41,7 @@ private:
     cl::Buffer lights_;
     int light_count_ = 0;
     float environment_pick_ = 1.0f;
+    layout::path_settings bound_settings_{};  // the kernel's settings, as bind set them
 };
 
 }  // namespace fgr
