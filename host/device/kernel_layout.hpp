@@ -45,8 +45,8 @@ static_assert(sizeof(environment_info) == 32 && alignof(environment_info) == 16)
 static_assert(offsetof(environment_info, transform) == 0);
 static_assert(offsetof(environment_info, width) == 16);
 static_assert(offsetof(environment_info, height) == 20);
-static_assert(offsetof(environment_info, marginal_offset) == 24);
-static_assert(offsetof(environment_info, conditional_offset) == 28);
+static_assert(offsetof(environment_info, rows_offset) == 24);
+static_assert(offsetof(environment_info, columns_offset) == 28);
 
 static_assert(sizeof(path_settings) == 32 && alignof(path_settings) == 4);
 static_assert(offsetof(path_settings, max_bounces) == 0);

@@ -7,6 +7,7 @@
 #include <array>
 #include <climits>
 #include <cmath>
+#include <cstring>
 #include <glm/geometric.hpp>
 #include <numbers>
 #include <stdexcept>
@@ -418,13 +419,61 @@ HdrImage uniform_environment(glm::vec3 radiance) {
     return map;
 }
 
+namespace {
+
+// Walker's alias method, built as Vose does ("A linear algorithm for generating random numbers
+// with a given distribution", IEEE TSE 1991), for `weights` (non-negative, not all 0): writes
+// FGR_ENV_ALIAS_FLOATS per entry to `table` and returns the probability of each index that the
+// stored (float) thresholds realise, which is what the kernel's pdf must use.
+std::vector<double> build_alias_table(const std::vector<double>& weights, float* table) {
+    const size_t n = weights.size();
+    double sum = 0.0;
+    for (double weight : weights) sum += weight;
+    std::vector<double> scaled(n);
+    std::vector<int> small, large;
+    for (size_t i = 0; i < n; ++i) {
+        scaled[i] = weights[i] * double(n) / sum;
+        (scaled[i] < 1.0 ? small : large).push_back(int(i));
+    }
+    std::vector<double> threshold(n, 1.0);
+    std::vector<int> alias(n);
+    for (size_t i = 0; i < n; ++i) alias[i] = int(i);
+    while (!small.empty() && !large.empty()) {
+        const int less = small.back(), more = large.back();
+        small.pop_back();
+        threshold[size_t(less)] = scaled[size_t(less)];
+        alias[size_t(less)] = more;
+        scaled[size_t(more)] -= 1.0 - scaled[size_t(less)];
+        if (scaled[size_t(more)] < 1.0) {
+            large.pop_back();
+            small.push_back(more);
+        }
+    }
+    // What rounding leaves in either list keeps its own index (threshold 1). A threshold below
+    // 2^-24 becomes 0: the kernel's uniform fraction could not realise it, and the texel's
+    // probability, a product of two such, could fall below float's range while the kernel still
+    // picked it.
+    std::vector<double> realised(n, 0.0);
+    for (size_t k = 0; k < n; ++k) {
+        const double kept = threshold[k] < 0x1p-24 ? 0.0 : std::min(threshold[k], 1.0);
+        const float stored = float(kept);
+        table[FGR_ENV_ALIAS_FLOATS * k + FGR_ENV_ALIAS_THRESHOLD] = stored;
+        std::memcpy(&table[FGR_ENV_ALIAS_FLOATS * k + FGR_ENV_ALIAS_INDEX], &alias[k], sizeof(int));
+        realised[k] += double(stored) / double(n);
+        realised[size_t(alias[k])] += (1.0 - double(stored)) / double(n);
+    }
+    return realised;
+}
+
+}  // namespace
+
 EnvironmentTables environment_tables(const HdrImage& map, std::string_view name) {
     if (map.width <= 0 || map.height <= 0) {
         throw std::invalid_argument(
             fmt::format("{}: empty ({} x {} pixels)", name, map.width, map.height));
     }
     const int64_t w = map.width, h = map.height;
-    const int64_t floats = 3 * w * h + (h + 1) + h * (w + 1);
+    const int64_t floats = FGR_ENV_TEXEL_FLOATS * w * h + FGR_ENV_ALIAS_FLOATS * (h + w * h);
     if (floats > int64_t(INT_MAX)) {
         throw std::invalid_argument(
             fmt::format("{}: {} x {} pixels is too large", name, map.width, map.height));
@@ -447,10 +496,13 @@ EnvironmentTables environment_tables(const HdrImage& map, std::string_view name)
     EnvironmentTables tables;
     tables.width = map.width;
     tables.height = map.height;
-    tables.marginal_offset = int(3 * w * h);
-    tables.conditional_offset = int(3 * w * h + h + 1);
+    tables.rows_offset = int(FGR_ENV_TEXEL_FLOATS * w * h);
+    tables.columns_offset = int(FGR_ENV_TEXEL_FLOATS * w * h + FGR_ENV_ALIAS_FLOATS * h);
     tables.data.assign(size_t(floats), 0.0f);
-    std::copy(map.rgb.begin(), map.rgb.end(), tables.data.begin());
+    for (size_t i = 0; i < size_t(w * h); ++i) {
+        std::copy_n(map.rgb.begin() + ptrdiff_t(3 * i), 3,
+                    tables.data.begin() + ptrdiff_t(FGR_ENV_TEXEL_FLOATS * i));
+    }
 
     // Weights: luminance times solid angle, in double.
     std::vector<double> weights(size_t(w * h));
@@ -477,29 +529,22 @@ EnvironmentTables environment_tables(const HdrImage& map, std::string_view name)
     for (int64_t y = 0; y < h; ++y) {
         for (int64_t x = 0; x < w; ++x) row_sums[size_t(y)] += weights[size_t(y * w + x)];
     }
-    double all_rows = 0.0;
-    for (double sum : row_sums) all_rows += sum;
-
-    float* marginal = tables.data.data() + tables.marginal_offset;
-    double running = 0.0;
-    marginal[0] = 0.0f;
+    const std::vector<double> rows =
+        build_alias_table(row_sums, tables.data.data() + tables.rows_offset);
+    std::vector<double> row_weights(static_cast<size_t>(w));
     for (int64_t y = 0; y < h; ++y) {
-        running += row_sums[size_t(y)];
-        marginal[y + 1] = float(running / all_rows);
-    }
-    marginal[h] = 1.0f;
-
-    for (int64_t y = 0; y < h; ++y) {
-        float* conditional = tables.data.data() + tables.conditional_offset + y * (w + 1);
-        conditional[0] = 0.0f;
-        const double row_sum = row_sums[size_t(y)];
-        double row_running = 0.0;
-        for (int64_t x = 0; x < w; ++x) {
-            row_running += weights[size_t(y * w + x)];
-            conditional[x + 1] =
-                row_sum > 0.0 ? float(row_running / row_sum) : float(double(x + 1) / double(w));
+        // A row of weight 0 is never picked; its columns get a uniform table all the same.
+        if (row_sums[size_t(y)] > 0.0) {
+            std::copy_n(weights.begin() + y * w, w, row_weights.begin());
+        } else {
+            std::fill(row_weights.begin(), row_weights.end(), 1.0);
         }
-        conditional[w] = 1.0f;
+        const std::vector<double> columns = build_alias_table(
+            row_weights, tables.data.data() + tables.columns_offset + FGR_ENV_ALIAS_FLOATS * y * w);
+        for (int64_t x = 0; x < w; ++x) {
+            tables.data[size_t(FGR_ENV_TEXEL_FLOATS * (y * w + x) + FGR_ENV_TEXEL_PROBABILITY)] =
+                float(rows[size_t(y)] * columns[size_t(x)]);
+        }
     }
     return tables;
 }
@@ -521,8 +566,8 @@ EnvironmentInfo environment_info(const EnvironmentTables& tables, double rotatio
     info.transform.s[1] = intensity;
     info.width = tables.width;
     info.height = tables.height;
-    info.marginal_offset = tables.marginal_offset;
-    info.conditional_offset = tables.conditional_offset;
+    info.rows_offset = tables.rows_offset;
+    info.columns_offset = tables.columns_offset;
     return info;
 }
 

@@ -106,24 +106,22 @@ HdrImage uniform_environment(glm::vec3 radiance);
 
 // Kernel-ready tables for importance sampling a map by luminance (Rec. 709 Y) times each texel's
 // solid angle: a piecewise-constant distribution over the sphere that is constant within each
-// texel (pbrt's Distribution2D, with rows chosen by a marginal CDF and columns by the row's
-// conditional CDF, but uniform in solid angle inside a texel, so radiance / pdf is exactly
-// constant where luminance is). A map that is black everywhere is sampled uniformly.
+// texel (pbrt's Distribution2D, a row picked by its share and then a column by its share of the
+// row, but uniform in solid angle inside a texel, so radiance / pdf is exactly constant where
+// luminance is). Rows and columns are picked through alias tables (Walker, Vose), in constant
+// time a lane. A map that is black everywhere is sampled uniformly.
 //
-// `data` is one flat float buffer for the kernel (environment_info names the offsets):
-//   [0, 3 w h)                    the texels, R G B, row-major from the top row (as HdrImage)
-//   [marginal_offset, + h + 1)    the marginal CDF over rows: cdf[0] = 0, cdf[h] = 1
-//   [conditional_offset, + h (w + 1))   per row, its conditional CDF over columns (w + 1 values,
-//                                 0 to 1; a row of probability 0 gets a uniform one)
-// Probabilities are differences of these stored floats, in the kernel's sampling and pdf alike,
-// so the two agree exactly; a texel whose probability is below float's resolution of the CDF
-// (~6e-8 of the total) gets probability 0.
+// `data` is one flat float buffer for the kernel, laid out as kernels/shared/
+// fgr_layout_environment.h says (the texels with the probability of each, the rows' alias table
+// at rows_offset, the rows' columns' alias tables at columns_offset). Each texel's probability is
+// the one the stored thresholds realise, so the kernel's sampling and pdf agree to a float's
+// rounding; a texel of luminance 0 has probability 0.
 struct EnvironmentTables {
     int width = 0;
     int height = 0;
     std::vector<float> data;
-    int marginal_offset = 0;
-    int conditional_offset = 0;
+    int rows_offset = 0;
+    int columns_offset = 0;
     double luminance_integral = 0.0;  // integral of luminance over the sphere (0: black map)
 };
 

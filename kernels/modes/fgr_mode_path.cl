@@ -63,24 +63,31 @@ inline real power_heuristic(real a, real b) {
 }
 
 /* The environment as a light: sampled by its importance (fgr_environment.cl), or uniformly over
- * the sphere when that is switched off (to show what importance sampling buys). */
+ * the sphere when that is switched off (to show what importance sampling buys), with the radiance
+ * along the direction drawn in *radiance. */
 inline vec3 environment_light_sample(real u1, real u2, mask wanted, path_settings settings,
-                                     ENVIRONMENT, real* pdf) {
+                                     ENVIRONMENT, real* pdf, vec3* radiance) {
     if (settings.flags & FGR_PATH_ENVIRONMENT_IS) {
-        return environment_sample(u1, u2, wanted, ENVIRONMENT_PASS, pdf);
+        return environment_sample_radiance(u1, u2, wanted, ENVIRONMENT_PASS, pdf, radiance);
     }
     const real z = 1.0f - 2.0f * u1;
     const real r = sqrt(fmax(1.0f - z * z, 0.0f));
     const real phi = 6.28318530717958647692f * u2;
     *pdf = fgr_real(1.0f / (4.0f * 3.14159265358979323846f));
-    return v3(r * fgr_cos(phi), r * fgr_sin(phi), z);
+    const vec3 dir = v3(r * fgr_cos(phi), r * fgr_sin(phi), z);
+    *radiance = environment_radiance(dir, wanted, ENVIRONMENT_PASS);
+    return dir;
 }
 
-inline real environment_light_pdf(vec3 dir, mask wanted, path_settings settings, ENVIRONMENT) {
+/* The environment's radiance along dir, and the pdf with which environment_light_sample draws
+ * dir, from one lookup. */
+inline vec3 environment_light_radiance(vec3 dir, mask wanted, path_settings settings, ENVIRONMENT,
+                                       real* pdf) {
     if (settings.flags & FGR_PATH_ENVIRONMENT_IS) {
-        return environment_pdf(dir, wanted, ENVIRONMENT_PASS);
+        return environment_radiance_pdf(dir, wanted, ENVIRONMENT_PASS, pdf);
     }
-    return fgr_real(1.0f / (4.0f * 3.14159265358979323846f));
+    *pdf = fgr_real(1.0f / (4.0f * 3.14159265358979323846f));
+    return environment_radiance(dir, wanted, ENVIRONMENT_PASS);
 }
 
 /* Unit direction uniformly inside the cone of cosine cos_max around axis (a sun disc). */
@@ -109,9 +116,9 @@ inline real escaped_weight(mask light_sampled, bool mis, real bsdf_pdf, real lig
  * last vertex); the environment's tables are read for those lanes alone. */
 inline vec3 escaped_radiance(vec3 dir, mask wanted, mask light_sampled, bool mis, real bsdf_pdf,
                              __constant const float* lights, path_settings settings, ENVIRONMENT) {
-    vec3 radiance = environment_radiance(dir, wanted, ENVIRONMENT_PASS);
-    const real env_pdf =
-        settings.environment_pick * environment_light_pdf(dir, wanted, settings, ENVIRONMENT_PASS);
+    real env_pdf;
+    vec3 radiance = environment_light_radiance(dir, wanted, settings, ENVIRONMENT_PASS, &env_pdf);
+    env_pdf *= settings.environment_pick;
     radiance = v3_scale(radiance, escaped_weight(light_sampled, mis, bsdf_pdf, env_pdf));
     float picked_before = settings.environment_pick;
     for (int i = 0; i < settings.light_count; ++i) {
@@ -146,10 +153,12 @@ inline light_sample sample_light(vec3 p, real u_pick, real u1, real u2, mask wan
                                  __constant const float* lights, path_settings settings,
                                  float max_distance, ENVIRONMENT) {
     light_sample s;
-    /* The environment, when it is picked. */
+    /* The environment, for the lanes that pick it (the last light's pick ends at 1, so the
+     * others all take a light below). */
     real env_pdf = fgr_real(0.0f);
-    s.dir = environment_light_sample(u1, u2, wanted, settings, ENVIRONMENT_PASS, &env_pdf);
-    s.radiance = environment_radiance(s.dir, wanted, ENVIRONMENT_PASS);
+    const mask env_picked = wanted & (u_pick < settings.environment_pick);
+    s.dir = environment_light_sample(u1, u2, env_picked, settings, ENVIRONMENT_PASS, &env_pdf,
+                                     &s.radiance);
     s.pdf = settings.environment_pick * env_pdf;
     s.reach = fgr_real(max_distance);
     float picked_before = settings.environment_pick;

@@ -10,12 +10,13 @@
  * rotation turns the map about +z: what the map shows at phi is seen at phi + rotation.
  *
  * Radiance is nearest-texel, and sampling is piecewise constant over the same texels: a row by
- * the marginal CDF, a column by that row's conditional CDF (binary searches, one lane at a time),
+ * the rows' alias table, a column by that row's alias table (constant time, one lane at a time),
  * then a point uniform in solid angle inside the texel (cos theta uniform across the row's band).
- * The pdf per solid angle is therefore constant in each texel: P(texel) / solid_angle(texel).
+ * The pdf per solid angle is therefore constant in each texel: P(texel) / solid_angle(texel),
+ * P being stored beside the texel's colour.
  *
  * Kernel arguments: ENVIRONMENT in a parameter list, ENVIRONMENT_PASS in a call:
- *     env_data  the tables' flat buffer (texels, marginal CDF, conditional CDFs)
+ *     env_data  the tables' flat buffer (shared/fgr_layout_environment.h)
  *     env       environment_info by value (shared/fgr_layout_environment.h) */
 
 #define ENVIRONMENT __global const float *env_data, environment_info env
@@ -35,19 +36,22 @@
 /* The largest value below 1, where a sample u must stay. */
 #define ENV_ONE_BELOW FGR_LANES(0x1.fffffep-1f, 0x1.fffffffffffffp-1)
 
-/* The largest i in [0, n - 1] with cdf[i] <= u: for cdf[0] = 0 <= u < 1 = cdf[n] the interval
- * [cdf[i], cdf[i + 1]) holds u and is not empty. */
-inline int env_find_interval(__global const float* cdf, int n, ENV_SCALAR u) {
-    int low = 0, high = n - 1;
-    while (low < high) {
-        const int middle = (low + high + 1) / 2;
-        if ((ENV_SCALAR)cdf[middle] <= u) {
-            low = middle;
-        } else {
-            high = middle - 1;
-        }
+/* One draw from the alias table of `n` entries at `table` with u in [0, 1): the entry u * n picks,
+ * kept when the fraction of u * n falls below its threshold, else its alias; *fraction gets that
+ * fraction stretched back over [0, 1) (uniform inside the chosen cell, so it places the point
+ * inside the texel). */
+inline int env_alias_pick(__global const float* table, int n, ENV_SCALAR u, ENV_SCALAR* fraction) {
+    const ENV_SCALAR x = u * (ENV_SCALAR)n;
+    const int k = min((int)x, n - 1);
+    const ENV_SCALAR f = fmin(x - (ENV_SCALAR)k, (ENV_SCALAR)ENV_ONE_BELOW);
+    __global const float* entry = table + FGR_ENV_ALIAS_FLOATS * k;
+    const ENV_SCALAR threshold = entry[FGR_ENV_ALIAS_THRESHOLD];
+    if (f < threshold) {
+        *fraction = fmin(f / threshold, (ENV_SCALAR)ENV_ONE_BELOW);
+        return k;
     }
-    return low;
+    *fraction = fmin((f - threshold) / ((ENV_SCALAR)1 - threshold), (ENV_SCALAR)ENV_ONE_BELOW);
+    return ((__global const int*)entry)[FGR_ENV_ALIAS_INDEX];
 }
 
 /* A continuous coordinate as a cell index in [0, count - 1]; NaN (inactive lanes) gives 0. */
@@ -92,15 +96,11 @@ inline void env_gather(__global const float* env_data, environment_info env, rea
         }
         const int row = env_cell(rows[lane], env.height);
         const int column = env_cell(columns[lane], env.width);
-        __global const float* texel = env_data + 3 * (row * env.width + column);
+        __global const float* texel = env_data + FGR_ENV_TEXEL_FLOATS * (row * env.width + column);
         r[lane] = texel[0];
         g[lane] = texel[1];
         b[lane] = texel[2];
-        __global const float* marginal = env_data + env.marginal_offset + row;
-        __global const float* conditional =
-            env_data + env.conditional_offset + row * (env.width + 1) + column;
-        p[lane] = ((ENV_SCALAR)marginal[1] - (ENV_SCALAR)marginal[0]) *
-                  ((ENV_SCALAR)conditional[1] - (ENV_SCALAR)conditional[0]);
+        p[lane] = texel[FGR_ENV_TEXEL_PROBABILITY];
         row_index[lane] = (ENV_SCALAR)row;
     }
     *colour = v3(env_to_lanes(r), env_to_lanes(g), env_to_lanes(b));
@@ -118,6 +118,16 @@ inline vec3 environment_radiance(vec3 dir, mask wanted, ENVIRONMENT) {
     return v3_scale(colour, fgr_real(env.transform.y));
 }
 
+/* environment_radiance and environment_pdf from one lookup. */
+inline vec3 environment_radiance_pdf(vec3 dir, mask wanted, ENVIRONMENT, real* pdf) {
+    real row_f, column_f, probability, row;
+    vec3 colour;
+    env_locate(dir, env, &row_f, &column_f);
+    env_gather(env_data, env, row_f, column_f, wanted, &colour, &probability, &row);
+    *pdf = probability / env_texel_solid_angle(row, env);
+    return v3_scale(colour, fgr_real(env.transform.y));
+}
+
 /* Solid-angle density with which environment_sample picks direction `dir`. */
 inline real environment_pdf(vec3 dir, mask wanted, ENVIRONMENT) {
     real row_f, column_f, probability, row;
@@ -128,39 +138,43 @@ inline real environment_pdf(vec3 dir, mask wanted, ENVIRONMENT) {
 }
 
 /* A unit direction drawn by importance from (u1, u2) in [0, 1)^2 (u2 picks the row, u1 the
- * column; each is reused inside the texel, so stratified input stays stratified), and its
- * solid-angle pdf in *pdf (> 0 for every direction it returns). Lanes outside `wanted` skip the
- * search, the costly part, and get the first texel's top edge. */
-inline vec3 environment_sample(real u1, real u2, mask wanted, ENVIRONMENT, real* pdf) {
+ * column; what is left of each places the point inside the texel), its solid-angle pdf in *pdf
+ * (> 0 for every direction it returns) and the environment's radiance along it in *radiance (as
+ * environment_radiance gives it, from the same texel). Lanes outside `wanted` skip the tables and
+ * get the first texel's top edge, probability 1 and black. */
+inline vec3 environment_sample_radiance(real u1, real u2, mask wanted, ENVIRONMENT, real* pdf,
+                                        vec3* radiance) {
     ENV_SCALAR su1[FGR_WIDTH], su2[FGR_WIDTH];
     ENV_SCALAR rows[FGR_WIDTH], columns[FGR_WIDTH], fraction_v[FGR_WIDTH], fraction_u[FGR_WIDTH],
-        p[FGR_WIDTH];
-    /* NaN lanes become 0 through fmax; u = 1 would leave the CDF's last interval. */
+        p[FGR_WIDTH], r[FGR_WIDTH], g[FGR_WIDTH], b[FGR_WIDTH];
+    /* NaN lanes become 0 through fmax; u = 1 would leave the table's last entry. */
     env_from_lanes(fmin(fmax(u1, fgr_real(0.0f)), fgr_real(ENV_ONE_BELOW)), su1);
     env_from_lanes(fmin(fmax(u2, fgr_real(0.0f)), fgr_real(ENV_ONE_BELOW)), su2);
     ENV_SCALAR searched[FGR_WIDTH];
     env_from_lanes(select(fgr_real(0.0f), fgr_real(1.0f), wanted), searched);
-    __global const float* marginal = env_data + env.marginal_offset;
     for (int lane = 0; lane < FGR_WIDTH; ++lane) {
         if (searched[lane] == 0) {
             rows[lane] = columns[lane] = fraction_v[lane] = fraction_u[lane] = 0;
+            r[lane] = g[lane] = b[lane] = 0;
             p[lane] = 1;
             continue;
         }
         const ENV_SCALAR v = su2[lane] >= 0 ? su2[lane] : (ENV_SCALAR)0; /* NaN-safe */
-        const int row = env_find_interval(marginal, env.height, v);
-        const ENV_SCALAR m0 = marginal[row], m1 = marginal[row + 1];
-        __global const float* conditional =
-            env_data + env.conditional_offset + row * (env.width + 1);
         const ENV_SCALAR u = su1[lane] >= 0 ? su1[lane] : (ENV_SCALAR)0;
-        const int column = env_find_interval(conditional, env.width, u);
-        const ENV_SCALAR c0 = conditional[column], c1 = conditional[column + 1];
+        ENV_SCALAR fv, fu;
+        const int row = env_alias_pick(env_data + env.rows_offset, env.height, v, &fv);
+        const int column =
+            env_alias_pick(env_data + env.columns_offset + FGR_ENV_ALIAS_FLOATS * row * env.width,
+                           env.width, u, &fu);
+        __global const float* texel = env_data + FGR_ENV_TEXEL_FLOATS * (row * env.width + column);
         rows[lane] = (ENV_SCALAR)row;
         columns[lane] = (ENV_SCALAR)column;
-        /* Where u fell inside its interval, in [0, 1) (the intervals are never empty). */
-        fraction_v[lane] = fmin((v - m0) / (m1 - m0), (ENV_SCALAR)ENV_ONE_BELOW);
-        fraction_u[lane] = fmin((u - c0) / (c1 - c0), (ENV_SCALAR)ENV_ONE_BELOW);
-        p[lane] = (m1 - m0) * (c1 - c0);
+        fraction_v[lane] = fv;
+        fraction_u[lane] = fu;
+        r[lane] = texel[0];
+        g[lane] = texel[1];
+        b[lane] = texel[2];
+        p[lane] = texel[FGR_ENV_TEXEL_PROBABILITY];
     }
     const real row = env_to_lanes(rows);
     const real band = ENV_PI / (float)env.height;
@@ -175,5 +189,13 @@ inline vec3 environment_sample(real u1, real u2, mask wanted, ENVIRONMENT, real*
         2.0f * ENV_PI *
         ((env_to_lanes(columns) + env_to_lanes(fraction_u)) / (float)env.width + env.transform.x);
     *pdf = env_to_lanes(p) / env_texel_solid_angle(row, env);
+    *radiance =
+        v3_scale(v3(env_to_lanes(r), env_to_lanes(g), env_to_lanes(b)), fgr_real(env.transform.y));
     return v3(-sin_theta * fgr_cos(phi), sin_theta * fgr_sin(phi), z);
+}
+
+/* environment_sample_radiance without the radiance. */
+inline vec3 environment_sample(real u1, real u2, mask wanted, ENVIRONMENT, real* pdf) {
+    vec3 radiance;
+    return environment_sample_radiance(u1, u2, wanted, ENVIRONMENT_PASS, pdf, &radiance);
 }

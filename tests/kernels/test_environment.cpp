@@ -10,6 +10,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstring>
 #include <filesystem>
 #include <glm/geometric.hpp>
 #include <limits>
@@ -42,17 +43,22 @@ constexpr const char* kEnvironmentTestKernels = R"CL(
 #define t_store(v, i, p) FGR_PASTE(vstore, FGR_WIDTH)(convert_float_lanes(v), (i), (p))
 #endif
 
-/* out: x, y, z, pdf planes of the directions drawn from (u1, u2). */
+/* out: x, y, z, pdf, r, g, b planes of the directions drawn from (u1, u2) and their radiance. */
 __kernel void env_test_sample(__global const float* u1, __global const float* u2,
                               __global float* out, int plane, int packets, ENVIRONMENT) {
     const int p = get_global_id(0);
     if (p >= packets) return;
     real pdf;
-    vec3 d = environment_sample(t_load(p, u1), t_load(p, u2), ENVIRONMENT_PASS, &pdf);
+    vec3 c;
+    vec3 d = environment_sample_radiance(t_load(p, u1), t_load(p, u2), FGR_TRUE,
+                                         ENVIRONMENT_PASS, &pdf, &c);
     t_store(d.x, p, out);
     t_store(d.y, p, out + plane);
     t_store(d.z, p, out + 2 * plane);
     t_store(pdf, p, out + 3 * plane);
+    t_store(c.x, p, out + 4 * plane);
+    t_store(c.y, p, out + 5 * plane);
+    t_store(c.z, p, out + 6 * plane);
 }
 
 /* dirs: x, y, z planes; out: r, g, b, pdf planes. */
@@ -61,11 +67,11 @@ __kernel void env_test_evaluate(__global const float* dirs, __global float* out,
     const int p = get_global_id(0);
     if (p >= packets) return;
     vec3 d = v3(t_load(p, dirs), t_load(p, dirs + plane), t_load(p, dirs + 2 * plane));
-    vec3 c = environment_radiance(d, ENVIRONMENT_PASS);
+    vec3 c = environment_radiance(d, FGR_TRUE, ENVIRONMENT_PASS);
     t_store(c.x, p, out);
     t_store(c.y, p, out + plane);
     t_store(c.z, p, out + 2 * plane);
-    t_store(environment_pdf(d, ENVIRONMENT_PASS), p, out + 3 * plane);
+    t_store(environment_pdf(d, FGR_TRUE, ENVIRONMENT_PASS), p, out + 3 * plane);
 }
 )CL";
 
@@ -83,6 +89,7 @@ double luminance(glm::dvec3 c) { return 0.2126 * c.x + 0.7152 * c.y + 0.0722 * c
 struct Sampled {
     std::vector<glm::dvec3> directions;
     std::vector<double> pdf;
+    std::vector<glm::dvec3> radiance;
 };
 struct Evaluated {
     std::vector<glm::dvec3> radiance;
@@ -162,11 +169,12 @@ protected:
 
     static Sampled sample(Variant v, const EnvironmentTables& tables, const EnvironmentInfo& info,
                           const std::vector<float>& u1, const std::vector<float>& u2) {
-        const auto planes = run(v, "env_test_sample", {u1, u2}, 4, tables, info, u1.size());
+        const auto planes = run(v, "env_test_sample", {u1, u2}, 7, tables, info, u1.size());
         Sampled result;
         for (size_t i = 0; i < u1.size(); ++i) {
             result.directions.emplace_back(planes[0][i], planes[1][i], planes[2][i]);
             result.pdf.push_back(planes[3][i]);
+            result.radiance.emplace_back(planes[4][i], planes[5][i], planes[6][i]);
         }
         return result;
     }
@@ -321,11 +329,12 @@ TEST_F(EnvironmentTest, SampledDirectionsFollowThePdf) {
     }
 }
 
-// The pdf environment_sample reports for each direction is environment_pdf's there.
+// The pdf and radiance environment_sample_radiance reports for each direction are
+// environment_pdf's and environment_radiance's there.
 TEST_F(EnvironmentTest, SampleReportsThePdfOfItsDirection) {
     const HdrImage map = spot_and_gradient(24, 12);
     const EnvironmentTables tables = environment_tables(map);
-    const EnvironmentInfo info = environment_info(tables, 200.0);
+    const EnvironmentInfo info = environment_info(tables, 200.0, 1.5f);
     for (const Variant v : variants()) {
         SCOPED_TRACE(label(v));
         std::mt19937 random(99u);
@@ -335,7 +344,11 @@ TEST_F(EnvironmentTest, SampleReportsThePdfOfItsDirection) {
         size_t differing = 0;
         for (size_t i = 0; i < drawn.pdf.size(); ++i) {
             // A float direction within rounding of a texel edge may land in the neighbour.
-            if (std::abs(at.pdf[i] - drawn.pdf[i]) > 1e-4 * drawn.pdf[i]) ++differing;
+            if (std::abs(at.pdf[i] - drawn.pdf[i]) > 1e-4 * drawn.pdf[i] ||
+                glm::length(at.radiance[i] - drawn.radiance[i]) >
+                    1e-6 * glm::length(drawn.radiance[i])) {
+                ++differing;
+            }
         }
         EXPECT_LE(differing, 4u);
     }
@@ -608,27 +621,55 @@ TEST(EnvironmentTables, RejectBadMapsInOneLine) {
     EXPECT_THROW(uniform_environment(glm::vec3(1.0f, -1.0f, 1.0f)), std::invalid_argument);
 }
 
-// The CDFs' layout as documented: marginal from 0 to 1, each conditional from 0 to 1, and the
-// probability of a texel proportional to luminance times solid angle.
-TEST(EnvironmentTables, ProbabilitiesFollowLuminanceTimesSolidAngle) {
-    const HdrImage map = spot_and_gradient(16, 8);
-    const EnvironmentTables tables = environment_tables(map);
-    ASSERT_EQ(tables.data.size(), size_t(3 * 16 * 8 + 9 + 8 * 17));
-    const float* marginal = tables.data.data() + tables.marginal_offset;
-    EXPECT_EQ(marginal[0], 0.0f);
-    EXPECT_EQ(marginal[8], 1.0f);
-    for (int y = 0; y < 8; ++y) {
-        const float* conditional = tables.data.data() + tables.conditional_offset + y * 17;
-        EXPECT_EQ(conditional[0], 0.0f);
-        EXPECT_EQ(conditional[16], 1.0f);
-        for (int x = 0; x < 16; ++x) {
-            const double p =
-                double(marginal[y + 1] - marginal[y]) * double(conditional[x + 1] - conditional[x]);
-            const double expected = luminance(texel(map, x, y)) *
-                                    environment_texel_solid_angle(y, 16, 8) /
-                                    tables.luminance_integral;
-            EXPECT_NEAR(p, expected, 1e-6 + 1e-5 * expected) << x << ", " << y;
+// The tables' layout (kernels/shared/fgr_layout_environment.h): each texel's colour and the
+// probability stored beside it, proportional to luminance times solid angle (0 for black texels);
+// and that probability is exactly what the rows' and columns' alias tables realise (worked out
+// here from the stored entries), so the kernel's pdf is its sampling's density.
+TEST(EnvironmentTables, AliasTablesRealiseTheStoredProbabilities) {
+    for (const auto& [width, height] : {std::pair{16, 8}, std::pair{37, 5}, std::pair{1, 1}}) {
+        SCOPED_TRACE(fmt::format("{} x {}", width, height));
+        const HdrImage map = spot_and_gradient(width, height);
+        const EnvironmentTables tables = environment_tables(map);
+        const size_t w = size_t(width), h = size_t(height);
+        ASSERT_EQ(tables.data.size(),
+                  FGR_ENV_TEXEL_FLOATS * w * h + FGR_ENV_ALIAS_FLOATS * (h + w * h));
+        const auto realised = [&](int offset, size_t n) {
+            std::vector<double> p(n, 0.0);
+            for (size_t k = 0; k < n; ++k) {
+                const float* entry = tables.data.data() + offset + FGR_ENV_ALIAS_FLOATS * k;
+                const double threshold = entry[FGR_ENV_ALIAS_THRESHOLD];
+                int alias = 0;
+                std::memcpy(&alias, entry + FGR_ENV_ALIAS_INDEX, sizeof(int));
+                EXPECT_TRUE(threshold >= 0.0 && threshold <= 1.0) << k;
+                EXPECT_TRUE(alias >= 0 && size_t(alias) < n) << k;
+                if (alias < 0 || size_t(alias) >= n) continue;
+                p[k] += threshold / double(n);
+                p[size_t(alias)] += (1.0 - threshold) / double(n);
+            }
+            return p;
+        };
+        const std::vector<double> rows = realised(tables.rows_offset, h);
+        double sum = 0.0;
+        for (size_t y = 0; y < h; ++y) {
+            const std::vector<double> columns =
+                realised(tables.columns_offset + int(FGR_ENV_ALIAS_FLOATS * y * w), w);
+            for (size_t x = 0; x < w; ++x) {
+                const float* stored = tables.data.data() + FGR_ENV_TEXEL_FLOATS * (y * w + x);
+                const glm::dvec3 colour = texel(map, int(x), int(y));
+                EXPECT_EQ(glm::dvec3(stored[0], stored[1], stored[2]), colour);
+                const double p = stored[FGR_ENV_TEXEL_PROBABILITY];
+                EXPECT_NEAR(p, rows[y] * columns[x], 1e-6 * p) << x << ", " << y;
+                const double expected = luminance(colour) *
+                                        environment_texel_solid_angle(int(y), width, height) /
+                                        tables.luminance_integral;
+                EXPECT_NEAR(p, expected, 1e-12 + 1e-5 * expected) << x << ", " << y;
+                if (expected == 0.0) {
+                    EXPECT_EQ(p, 0.0) << x << ", " << y;
+                }
+                sum += p;
+            }
         }
+        EXPECT_NEAR(sum, 1.0, 1e-5);
     }
 }
 
