@@ -251,7 +251,7 @@ else
     deadline=$((SECONDS + check_limit))
     echo "${#checks[@]} scenes, $shards at once, limit $check_limit s"
     : > "$work/checks"
-    running=0
+    running=0 check_pids=()
     for scene in "${checks[@]}"; do
         name=$(basename "$scene" .so)
         limit=$((deadline - SECONDS))
@@ -264,12 +264,14 @@ else
                 > "$work/check-$name.log" 2>&1
             echo "$name $?" >> "$work/checks"
         ) &
+        check_pids+=($!)
         if ((++running >= shards)); then
-            wait -n
+            wait -n "${check_pids[@]}"
             ((running--))
         fi
     done
-    wait
+    # By id: a bare `wait` would wait for the tee of this script's output too, which never ends.
+    wait "${check_pids[@]}"
     for scene in "${checks[@]}"; do
         name=$(basename "$scene" .so)
         echo "#### $name"

@@ -18,9 +18,9 @@ static const fgr_param_desc params[] = {
                      "diffuse albedo of the wall at -x"),
     FGR_COLOUR_PARAM("right_colour", "Right wall colour", "Materials", 0.16f, 0.55f, 0.2f,
                      "diffuse albedo of the wall at +x"),
-    FGR_FLOAT_PARAM("lamp", "Lamp panel radiance", "Light", 0.0f, 50.0f, 2.0f,
-                    "radiance of the square panel in the ceiling (the point light below it "
-                    "gives most of the light)"),
+    FGR_FLOAT_PARAM("lamp", "Lamp panel radiance", "Light", 0.0f, 50.0f, 0.0f,
+                    "radiance of the square panel in the ceiling (0: dark; the point light "
+                    "below it lights the room)"),
 };
 
 /* Inside the room, from near the front wall, looking at the sponge slightly from above. */

@@ -8,7 +8,9 @@
  * `sponge_size` and set on the floor; the room is the inside of an axis-aligned box, whose DE is
  * the distance to its nearest wall (exact inside). Materials: white diffuse walls, floor and
  * ceiling, a red wall on the left and a green one on the right (they tint the light they pass
- * on), a diffuse sponge, and a square lamp panel in the ceiling that emits. */
+ * on), a diffuse sponge, and a square lamp panel in the ceiling above the point light. The panel
+ * glows with `lamp` (0 by default: an emitter only the paths that happen to hit it find adds
+ * fireflies, where the point light is sampled at every bounce). */
 
 #define FGR_KERNEL_API 2
 
