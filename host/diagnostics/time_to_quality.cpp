@@ -172,6 +172,7 @@ std::string quality_gnuplot(const std::vector<QualityPoint>& points, double thre
         }
     }
     std::string script = fmt::format(
+        "# SPDX-License-Identifier: Apache-2.0\n"
         "# Time to quality: 1 - SSIM against a long reference render over render time, one line\n"
         "# per configuration (written by fgr bench quality).\n"
         "set terminal pngcairo size {},520 font 'sans,10'\n"

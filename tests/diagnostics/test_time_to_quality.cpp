@@ -113,6 +113,7 @@ TEST(TimeToQuality, GnuplotScriptHoldsEveryLadderAndTheThreshold) {
     std::vector<QualityPoint> points = power_ladder("path", 0.1, 0.5, 3);
     points.push_back({"sky", "it's", "1", 20.0, 0.004});
     const std::string script = quality_gnuplot(points, 0.005, "quality.png");
+    EXPECT_EQ(script.rfind("# SPDX-License-Identifier: Apache-2.0\n", 0), 0u) << script;
     EXPECT_NE(script.find("set output 'quality.png'"), std::string::npos);
     EXPECT_NE(script.find("set multiplot layout 1,2"), std::string::npos);
     EXPECT_NE(script.find("$ladder1 << EOD\n20,0.004,1\nEOD"), std::string::npos) << script;

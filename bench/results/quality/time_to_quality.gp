@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: Apache-2.0
 # Time to quality: 1 - SSIM against a long reference render over render time, one line
 # per configuration (written by fgr bench quality).
 set terminal pngcairo size 1680,520 font 'sans,10'
