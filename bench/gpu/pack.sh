@@ -16,15 +16,15 @@
 #                                 is the loader, whose folder is fgr's, so plugins are found alike
 #   lib/                          every library ldd names but glibc's; lib/fgr/plugins the scenes
 #   glibc/                        libc, libm, libdl, libpthread, librt, libresolv of the build machine
-#   run.sh, deep_zoom.json        the device script and the deep-zoom view it renders
+#   run.sh                        the device script
 #   kit.env                       what was packed: commit, build type, the test paths built in
 #                                 (the plugin folder, fgr, the drivers' cache)
 #
-# fgr_tests links FFmpeg for its video tests and SDL2 for its viewer tests, and they pull in some
-# 150 MB of libraries (FFmpeg's codecs, X11, Wayland, audio). The kit replaces the FFmpeg and SDL2
-# libraries fgr_tests names with stubs: every symbol it imports from them, under its version, as a
-# function that aborts with the symbol's name. The tests run.sh runs call neither; a video or
-# viewer test would abort, saying which function it reached.
+# The build must be headless (no viewer, video or MPI), so neither fgr_tests nor anything else in
+# the kit needs FFmpeg, SDL2, OpenGL or MPI: configure it as
+#   cmake -S . -B build-gpu -G Ninja -DCMAKE_BUILD_TYPE=Release -DFGR_BUILD_VIEWER=OFF \
+#       -DFGR_BUILD_VIDEO=OFF -DFGR_MPI=OFF -DFGR_BUILD_TESTS=ON
+# pack.sh refuses another build, and a packed object that names one of those libraries.
 set -euo pipefail
 
 script_dir=$(cd "$(dirname "${BASH_SOURCE[0]}")" && pwd)
@@ -38,8 +38,17 @@ plugins=$build/lib/fgr/plugins
 for needed in "$fgr" "$tests" "$plugins"; do
     [[ -e $needed ]] || { echo "pack: $needed is missing; build fgr fgr_scenes fgr_tests first" >&2; exit 1; }
 done
+cache=$build/CMakeCache.txt
+for option in FGR_BUILD_VIEWER FGR_BUILD_VIDEO FGR_MPI; do
+    if [[ $(sed -n "s/^$option:[A-Z]*=//p" "$cache") != OFF ]]; then
+        echo "pack: $build is not headless ($option is not OFF); configure it with" \
+            "-DFGR_BUILD_VIEWER=OFF -DFGR_BUILD_VIDEO=OFF -DFGR_MPI=OFF" >&2
+        exit 1
+    fi
+done
 
-stub_pattern='^lib(avcodec|avformat|avutil|swscale|swresample|avfilter|avdevice|postproc|SDL2-2\.0)\.so'
+# What a headless build never needs: a packed object that names one was built with them.
+unwanted='^lib(avcodec|avformat|avutil|swscale|swresample|avfilter|avdevice|postproc|SDL2-2\.0|GL|OpenGL|GLX|EGL|mpi[a-z_]*)\.so'
 glibc_names=(libc.so.6 libm.so.6 libdl.so.2 libpthread.so.0 librt.so.1 libresolv.so.2)
 
 rm -rf "$kit"
@@ -47,7 +56,6 @@ mkdir -p "$kit/bin" "$kit/lib/fgr" "$kit/glibc"
 cp "$fgr" "$tests" "$kit/bin/"
 cp -r "$plugins" "$kit/lib/fgr/plugins"
 cp "$script_dir/run.sh" "$kit/run.sh"
-cp "$repo/bench/deep_zoom.json" "$kit/deep_zoom.json"
 
 is_glibc() {
     local name=$1 g
@@ -56,8 +64,7 @@ is_glibc() {
     return 1
 }
 
-# The libraries a file needs, by path, through its whole closure (ldd), less the subtrees of
-# stubbed libraries: those are followed from each direct need that is not stubbed.
+# The libraries a file needs, by path, through its whole closure (ldd).
 declare -A shipped=()
 add_closure_of() {
     local object=$1 name path
@@ -66,16 +73,15 @@ add_closure_of() {
         shipped[$name]=$path
     done < <(ldd "$object" | awk '$2 == "=>" && $3 ~ /^\// { print $1, $3 }')
 }
-declare -A stubbed=()
 for object in "$fgr" "$tests" "$plugins"/*.so; do
     mapfile -t needs < <(readelf -d "$object" | sed -n 's/.*(NEEDED).*\[\(.*\)\]/\1/p')
     declare -A where=()
     while read -r name path; do where[$name]=$path; done \
         < <(ldd "$object" | awk '$2 == "=>" && $3 ~ /^\// { print $1, $3 }')
     for name in "${needs[@]}"; do
-        if [[ $name =~ $stub_pattern ]]; then
-            stubbed[$name]=${where[$name]}
-            continue
+        if [[ $name =~ $unwanted ]]; then
+            echo "pack: $object needs $name: the build is not headless" >&2
+            exit 1
         fi
         path=${where[$name]:-}
         [[ -n $path ]] || continue  # the loader itself
@@ -101,44 +107,6 @@ done
 loader=$(ldd "$fgr" | awk '/ld-linux-x86-64\.so\.2/ { print ($3 ~ /^\//) ? $3 : $1 }' | head -n 1)
 cp -L "$loader" "$kit/bin/ld-linux-x86-64.so.2"
 
-# The stubs: one C file and a version script per library: every symbol fgr_tests imports that the
-# real library defines, under the version fgr_tests asks for.
-work=$(mktemp -d)
-trap 'rm -rf "$work"' EXIT
-nm -D --undefined-only "$tests" | awk '{ n = split($NF, part, "@+"); print part[1], part[2] }' |
-    sort -u > "$work/imports"  # symbol, version (or none)
-for name in "${!stubbed[@]}"; do
-    base=${name%%.so*}  # libavcodec
-    declare -A versions=()
-    {
-        echo '#include <stdio.h>'
-        echo '#include <stdlib.h>'
-        echo 'static void fgr_kit_stub(const char* name) {'
-        echo "    fprintf(stderr, \"fgr kit: $name is a stub; %s was called\\n\", name);"
-        echo '    abort();'
-        echo '}'
-        while read -r symbol version; do
-            versions[${version:--}]+="$symbol; "
-            echo "void $symbol(void) { fgr_kit_stub(\"$symbol\"); }"
-        done < <(nm -D --defined-only "${stubbed[$name]}" | awk '{ sub(/@.*/, "", $NF); print $NF }' |
-            awk 'NR == FNR { defined[$1] = 1; next } ($1 in defined) { print $1, $2 }' - "$work/imports")
-    } > "$work/$base.c"
-    # Unversioned symbols (SDL2 has no versions) go into the first node, or an anonymous one.
-    unversioned=${versions[-]:-}
-    unset 'versions[-]'
-    : > "$work/$base.map"
-    local_rest="local: *;"  # in the first node: an anonymous node may not join named ones
-    for version in "${!versions[@]}"; do
-        echo "$version { global: ${versions[$version]} $unversioned $local_rest };" >> "$work/$base.map"
-        local_rest= unversioned=
-    done
-    [[ -n $local_rest ]] && echo "{ global: $unversioned $local_rest };" >> "$work/$base.map"
-    cc -shared -fPIC -O1 -o "$kit/lib/$name" -Wl,-soname,"$name" \
-        -Wl,--version-script="$work/$base.map" "$work/$base.c"
-    unset versions
-done
-
-cache=$build/CMakeCache.txt
 {
     echo "# written by bench/gpu/pack.sh"
     echo "packed_at=$(date -u +%Y-%m-%dT%H:%M:%SZ)"
@@ -149,7 +117,6 @@ cache=$build/CMakeCache.txt
     echo "test_plugin_dir=$plugins"
     echo "test_fgr_exe=$fgr"
     echo "test_driver_cache=$(sed -n 's/^FGR_TEST_DRIVER_CACHE:[A-Z]*=//p' "$cache")"
-    echo "stubbed=${!stubbed[*]}"
 } > "$kit/kit.env"
 
 # Ignored by the checkout the kit lies in.
@@ -162,5 +129,5 @@ if top=$(git -C "$(dirname "$kit")" rev-parse --show-toplevel 2>/dev/null); then
     fi
 fi
 
-echo "packed $(du -sh "$kit" | cut -f1) into $kit: $(ls "$kit/lib" | wc -l) libraries," \
-    "glibc $(ls "$kit/glibc" | wc -l), stubs: ${!stubbed[*]}"
+echo "packed $(du -sh "$kit" | cut -f1) into $kit: $(ls "$kit/lib" | wc -l) libraries" \
+    "(libOpenCL.so.1 among them), glibc $(ls "$kit/glibc" | wc -l)"

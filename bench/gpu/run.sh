@@ -1,28 +1,30 @@
 #!/usr/bin/env bash
 # SPDX-License-Identifier: Apache-2.0
-# fgr's GPU checks, run from a kit that bench/gpu/pack.sh made (pack.sh copies this script into
-# it): finds the NVIDIA OpenCL driver and points the kit's ICD loader at it (else OpenCL's own
-# vendors, e.g. PoCL, are used), then runs, each step under a time limit and whatever the last one
-# did:
-#   fgr info and fgr info --math-check          the devices and the math self-test's verdicts
-#   fgr render (shaded), 1920x1080, --stats     PNG to OUT, twice (cold and with the kernel cached)
-#   fgr bench benchmark, fgr bench mandelbulb   the README's frame-rate protocol, 1280x720, 10 s;
-#                                               the Mandelbulb in float and in double
-#   fgr render --mode path, 1920x1080, --stats  PNG to OUT, 256 samples per pixel or 30 s
-#   the deep zoom (bench/deep_zoom.json)        float and double, 1920x1080
-#   fgr_tests: lane safety (float; the          sharded over the machine's cores; the tests open
-#   Mandelbulb in double), packet widths        the first GPU (else the first device) themselves
+# fgr's GPU checks, run from a kit that bench/gpu/pack.sh made of a headless build (pack.sh copies
+# this script into it). It finds the NVIDIA OpenCL driver, writes an ICD file naming its
+# libnvidia-opencl.so.1 and points the kit's own ICD loader at it (without the driver, OpenCL's
+# own vendors, e.g. PoCL, are used), then runs, each step under a time limit and whatever the last
+# one did:
+#   fgr info, fgr info --math-check              the devices and the math self-test's verdicts
+#   fgr_tests Scenes/LaneSafety.*_float          every scene's lane safety at packet width 1 (the
+#                                                layout a GPU renders with), sharded
+#   fgr check SCENE                              the numerical stability suite on every plugin
+#                                                scene, several at once
+#   fgr bench mandelbulb, fgr bench benchmark    1920x1080 in every mode the scene has (shaded,
+#                                                path, brute), 5 s each
+#   fgr render mandelbulb, shaded and path       1920x1080 PNGs to OUT, to compare with a CPU's
 #
 #   bash .gpu-kit/run.sh
 #
 # Environment: OUT (results; default ./gpu-kit-out), FGR_KIT_BUDGET (seconds for all the steps,
-# default 400: a step gets at most what is left), FGR_KIT_TESTS (the tests' gtest filter),
-# FGR_KIT_SHARDS (test processes at once; default half the cores, at most 8), FGR_KIT_QUICK=1
-# (small images, short benches, few tests: to try the kit on a CPU).
+# default 450, inside the 8 minutes the kit is given: a step gets at most its own limit and what
+# is left), FGR_KIT_TESTS (the tests' gtest filter), FGR_KIT_SHARDS (test processes at once;
+# default half the cores, at most 8), FGR_KIT_QUICK=1 (320x180, 2 s benches, the Mandelbulb's
+# tests and check only: to try the kit on a 2-core CPU in a few minutes).
 #
-# OUT receives run.log (everything), tests.log, the two 1920x1080 PNGs and extras.tar.gz (the
-# benches' JSON and CSV, the deep-zoom PNGs). Exit status 0 once all steps have run; each step's
-# own is in the summary at the end.
+# OUT receives run.log (everything), tests.log, checks.log, the two PNGs and bench.tar.gz (each
+# bench's JSON and CSV). Exit status 0 once all steps have run; each step's own is in the summary at
+# the end.
 set -uo pipefail
 export LC_ALL=C
 
@@ -31,30 +33,24 @@ OUT=${OUT:-$PWD/gpu-kit-out}
 mkdir -p "$OUT"
 OUT=$(cd "$OUT" && pwd)
 work=$(mktemp -d /tmp/fgr-kit.XXXXXX)
-budget=${FGR_KIT_BUDGET:-400}
+budget=${FGR_KIT_BUDGET:-450}
 quick=${FGR_KIT_QUICK:-0}
 exec > >(tee -a "$OUT/run.log") 2>&1
 tee_pid=$!
 
 if [[ $quick == 1 ]]; then
-    width=320 height=180 bench_args=(--duration 2) spp=4 path_limit=10
-    default_tests='MathCheckTest.ScalarAndFloatBuiltinsPass:RenderTest.EveryPacketWidthRendersTheSameImage:Scenes/LaneSafety.*/mandelbulb_float'
+    width=320 height=180 duration=2 spp=4
+    default_tests='Scenes/LaneSafety.*/mandelbulb_float'
 else
-    width=1920 height=1080 bench_args=() spp=256 path_limit=30
-    # Every scene's float lane-safety case and the Mandelbulb's double one: NVIDIA's compiler took
-    # about 40 s per double program on an H200, so all 18 double cases (3 programs each) and the
-    # FloatAndDouble suite do not fit one run (FGR_KIT_TESTS names them).
-    default_tests='Scenes/LaneSafety.*_float:Scenes/LaneSafety.*/mandelbulb_double'
-    default_tests+=':MathCheckTest.*:RenderTest.*:*.EveryPacketWidth*:BruteModeTest.PacketWidthsAgreePerPixel'
-    default_tests+=':SamplerTest.SameNumbersAtEveryWidthAndPrecision:BsdfTest.LanesDoNotAffectEachOther'
-    default_tests+=':SdfRobustness.*'
+    width=1920 height=1080 duration=5 spp=64
+    default_tests='Scenes/LaneSafety.*_float'
 fi
 test_filter=${FGR_KIT_TESTS:-$default_tests}
 
 start=$SECONDS
 summary=()
 left() { echo $((budget - (SECONDS - start))); }
-note() { summary+=("$(printf '%-34s %s' "$1" "$2")"); }
+note() { summary+=("$(printf '%-40s %s' "$1" "$2")"); }
 
 # step NAME LIMIT COMMAND...: runs COMMAND under min(LIMIT, what is left of the budget).
 step() {
@@ -87,7 +83,7 @@ echo "== fgr GPU kit, $(date -u +%Y-%m-%dT%H:%M:%SZ)"
 sed 's/^/kit: /' "$kit/kit.env"
 echo "host: $(uname -srm), $(. /etc/os-release 2>/dev/null && echo "$PRETTY_NAME"), $(nproc) cores"
 echo "system glibc: $(ldd --version 2>/dev/null | head -n 1 | awk '{ print $NF }')"
-echo "OUT: $OUT"
+echo "OUT: $OUT, budget $budget s"
 
 echo
 echo "== nvidia-smi"
@@ -118,7 +114,8 @@ if [[ -n $driver ]]; then
     export OCL_ICD_VENDORS=$work/icd
     echo "using $driver: OCL_ICD_VENDORS=$OCL_ICD_VENDORS (nvidia.icd names it)"
 else
-    echo "no libnvidia-opencl.so.1: OpenCL's own vendors are used (PoCL where it is installed)"
+    echo "no libnvidia-opencl.so.1: OpenCL's own vendors are used" \
+        "(OCL_ICD_VENDORS=${OCL_ICD_VENDORS:-unset}; PoCL where it is installed)"
 fi
 
 # Two ways to start the kit's programs: through the kit's own glibc loader (runs on any x86-64
@@ -168,31 +165,12 @@ fgr=("${launch[@]}" "$kit/bin/fgr")
 dev=(--device "$device")
 size=(--width "$width" --height "$height")
 
-step "info --math-check" 120 "${fgr[@]}" info --math-check
-step "render shaded ${width}x$height" 90 "${fgr[@]}" render mandelbulb "${size[@]}" --stats "${dev[@]}" \
-    -o "$OUT/mandelbulb-shaded-${width}x$height.png"
-step "render shaded, kernel cached" 60 "${fgr[@]}" render mandelbulb "${size[@]}" --stats "${dev[@]}" \
-    -o "$work/shaded-again.png"
-step "bench benchmark 1280x720" 60 "${fgr[@]}" bench benchmark "${bench_args[@]}" "${dev[@]}" \
-    -o "$work/bench-benchmark"
-step "bench mandelbulb float" 60 "${fgr[@]}" bench mandelbulb --precision float "${bench_args[@]}" \
-    "${dev[@]}" -o "$work/bench-mandelbulb-float"
-step "bench mandelbulb double" 60 "${fgr[@]}" bench mandelbulb --precision double "${bench_args[@]}" \
-    "${dev[@]}" -o "$work/bench-mandelbulb-double"
-step "bench benchmark ${width}x$height" 45 "${fgr[@]}" bench benchmark "${size[@]}" --duration 5 \
-    "${dev[@]}" -o "$work/bench-benchmark-${width}x$height"
-step "render path ${width}x$height" 90 "${fgr[@]}" render mandelbulb --mode path --spp "$spp" \
-    --time-limit "$path_limit" "${size[@]}" --stats "${dev[@]}" -o "$OUT/mandelbulb-path-${width}x$height.png"
-for precision in float double; do
-    step "deep zoom $precision" 45 "${fgr[@]}" render mandelbulb --camera-path "$kit/deep_zoom.json" \
-        --time 0 --precision "$precision" "${size[@]}" --stats "${dev[@]}" \
-        -o "$work/deep-zoom-$precision.png"
-done
+step "info --math-check" 90 "${fgr[@]}" info --math-check
 
 # The tests: paths compiled into fgr_tests (the build's plugin folder, the drivers' cache) are
 # linked to the kit where they do not exist.
 echo
-echo "== fgr_tests"
+echo "== fgr_tests: lane safety at packet width 1"
 plugin_dir=$(kv test_plugin_dir)
 driver_cache=$(kv test_driver_cache)
 if [[ ! -e $plugin_dir ]]; then
@@ -203,34 +181,25 @@ if [[ ! -e $plugin_dir ]]; then
     fi
 fi
 [[ -n $driver_cache ]] && mkdir -p "$driver_cache" 2>/dev/null
-# Tests that run fgr itself start the path compiled in: a script there starts the kit's fgr.
-fgr_exe=$(kv test_fgr_exe)
-if [[ -n $fgr_exe && ! -e $fgr_exe ]]; then
-    if mkdir -p "$(dirname "$fgr_exe")" &&
-        printf '#!/bin/sh\nexec %s "$@"\n' "$(printf '%q ' "${fgr[@]}")" > "$fgr_exe" &&
-        chmod +x "$fgr_exe"; then
-        echo "wrote $fgr_exe: starts the kit's fgr"
-    else
-        echo "cannot write $fgr_exe: the tests that run fgr will fail"
-    fi
-fi
 cores=$(nproc)
 shards=${FGR_KIT_SHARDS:-$((cores / 2 > 8 ? 8 : (cores / 2 < 1 ? 1 : cores / 2)))}
-echo "filter: $test_filter"
+echo "filter: $test_filter; FGR_TEST_PACKET_WIDTHS=1"
 echo "$shards shards at once; the tests open the first GPU, else the first device (open_device(-1))"
 tests=("${launch[@]}" "$kit/bin/fgr_tests")
 remaining=$(left)
-if ((remaining < 20)); then
+test_limit=$((quick == 1 ? 240 : 180))
+((test_limit > remaining - 5)) && test_limit=$((remaining - 5))
+if ((test_limit < 15)); then
     echo "== fgr_tests: skipped, the budget is spent"
-    note "fgr_tests" "skipped (budget)"
+    note "lane safety, width 1" "skipped (budget)"
 else
     t0=$SECONDS
-    limit=$((remaining - 5))
-    echo "== fgr_tests (limit $limit s)"
+    echo "== fgr_tests (limit $test_limit s)"
     pids=()
     for ((shard = 0; shard < shards; ++shard)); do
-        GTEST_TOTAL_SHARDS=$shards GTEST_SHARD_INDEX=$shard timeout -k 5 "$limit" "${tests[@]}" \
-            --gtest_filter="$test_filter" > "$work/tests-$shard.log" 2>&1 &
+        FGR_TEST_PACKET_WIDTHS=1 GTEST_TOTAL_SHARDS=$shards GTEST_SHARD_INDEX=$shard \
+            timeout -k 5 "$test_limit" "${tests[@]}" --gtest_filter="$test_filter" \
+            > "$work/tests-$shard.log" 2>&1 &
         pids+=($!)
     done
     worst=0
@@ -258,18 +227,84 @@ else
     sed 's/^/failed: /' "$work/failed"
     # Started and never finished: the shard's limit stopped it there.
     sort -u "$work/ok" "$work/failed" "$work/skipped" | comm -23 "$work/ran" - | sed 's/^/cut short: /'
-    note "fgr_tests ($shards shards)" "exit $worst, $((SECONDS - t0)) s, $passed passed, $failed failed"
+    note "lane safety, width 1 ($shards shards)" "exit $worst, $((SECONDS - t0)) s, $passed passed, $failed failed"
 fi
 
+# The stability suite (`fgr check`) on every plugin scene at packet width 1 (a GPU's layout), as
+# many at once as the test shards, all within one limit.
 echo
-echo "== the benches"
+echo "== fgr check: the numerical stability suite at packet width 1"
+checks=()  # scene files (a scene id in the quick trial)
+if [[ $quick == 1 ]]; then
+    checks=(mandelbulb)
+else
+    checks=("$kit"/lib/fgr/plugins/*.so)
+fi
+remaining=$(left)
+check_limit=120
+((check_limit > remaining - 5)) && check_limit=$((remaining - 5))
+if ((check_limit < 15)); then
+    echo "== fgr check: skipped, the budget is spent"
+    note "fgr check, width 1" "skipped (budget)"
+else
+    t0=$SECONDS
+    deadline=$((SECONDS + check_limit))
+    echo "${#checks[@]} scenes, $shards at once, limit $check_limit s"
+    : > "$work/checks"
+    running=0 check_pids=()
+    for scene in "${checks[@]}"; do
+        name=$(basename "$scene" .so)
+        limit=$((deadline - SECONDS))
+        if ((limit < 5)); then
+            echo "$name skipped" >> "$work/checks"
+            continue
+        fi
+        (
+            timeout -k 5 "$limit" "${fgr[@]}" check "$scene" --packet-width 1 "${dev[@]}" \
+                > "$work/check-$name.log" 2>&1
+            echo "$name $?" >> "$work/checks"
+        ) &
+        check_pids+=($!)
+        if ((++running >= shards)); then
+            wait -n "${check_pids[@]}"
+            ((running--))
+        fi
+    done
+    # By id: a bare `wait` would wait for the tee of this script's output too, which never ends.
+    wait "${check_pids[@]}"
+    for scene in "${checks[@]}"; do
+        name=$(basename "$scene" .so)
+        echo "#### $name"
+        cat "$work/check-$name.log" 2> /dev/null
+    done > "$OUT/checks.log"
+    checked=$(grep -c ' 0$' "$work/checks")
+    echo "checks: $checked of ${#checks[@]} passed"
+    awk '$2 != 0 { print "check not passed: " $1 " (" ($2 == "skipped" ? "skipped" : "exit " $2) ")" }' \
+        "$work/checks"
+    note "fgr check, width 1 (${#checks[@]} scenes)" "$checked passed, $((SECONDS - t0)) s"
+fi
+
+# The benches: both scenes at the full resolution in every mode they have.
+for scene in mandelbulb benchmark; do
+    for mode in shaded path brute; do
+        step "bench $scene $mode ${width}x$height" 60 "${fgr[@]}" bench "$scene" --mode "$mode" \
+            "${size[@]}" --duration "$duration" "${dev[@]}" -o "$work/bench-$scene-$mode"
+    done
+done
+step "render mandelbulb shaded ${width}x$height" 40 "${fgr[@]}" render mandelbulb "${size[@]}" \
+    --stats "${dev[@]}" -o "$OUT/mandelbulb-shaded-${width}x$height.png"
+step "render mandelbulb path ${width}x$height" 40 "${fgr[@]}" render mandelbulb --mode path \
+    --spp "$spp" --time-limit 20 "${size[@]}" "${dev[@]}" -o "$OUT/mandelbulb-path-${width}x$height.png"
+
+echo
+echo "== the benches (mean fps)"
 for csv in "$work"/bench-*.csv; do
     [[ -e $csv ]] || continue
-    echo "-- $(basename "$csv")"
+    echo "-- $(basename "$csv" .csv)"
     cat "$csv"
 done
-extras=$(cd "$work" && ls bench-* deep-zoom-*.png 2>/dev/null)
-[[ -n $extras ]] && tar -czf "$OUT/extras.tar.gz" -C "$work" $extras
+extras=$(cd "$work" && ls bench-* 2>/dev/null)
+[[ -n $extras ]] && tar -czf "$OUT/bench.tar.gz" -C "$work" $extras
 echo
 echo "== summary (device $device, $((SECONDS - start)) s)"
 printf '%s\n' "${summary[@]}"

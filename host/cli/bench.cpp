@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: Apache-2.0
 // fgr bench: the benchmark protocol along a camera path (the accuracy sweep, `fgr bench accuracy`,
-// is in bench_accuracy.cpp).
+// is in bench_accuracy.cpp; time to quality, `fgr bench quality` and `fgr bench compare`, in
+// bench_quality.cpp).
 #include <fmt/format.h>
 #include <spdlog/spdlog.h>
 
@@ -84,12 +85,15 @@ void add_bench_command(CLI::App& app, BenchOptions& options) {
     add_device_options(bench, options.device, options.settings.packet_width);
     add_mode_options(bench, options.mode);
     add_bench_accuracy_command(*bench, options);
+    add_bench_quality_commands(*bench, options);
 }
 
 int command_bench(BenchOptions& options) {
     if (options.accuracy_command->parsed()) {
         return command_bench_accuracy(options.accuracy, options.device);
     }
+    if (options.quality_command->parsed()) return command_bench_quality(options.quality);
+    if (options.compare_command->parsed()) return command_bench_compare(options.compare);
     if (options.scene.empty()) throw UsageError("bench needs a SCENE (see `fgr list`)");
     if (!options.view_override.empty() && !options.settings.path.empty()) {
         throw UsageError(

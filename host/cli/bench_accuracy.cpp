@@ -47,22 +47,8 @@ void add_bench_accuracy_command(CLI::App& bench, BenchOptions& options) {
     add_mode_options(accuracy, sweep.mode);
 }
 
-namespace {
-
-// The sweep's progress on `progress`: renders done of all, what renders now and the pace.
-AccuracyProgress accuracy_progress(DelayedProgress& progress) {
-    return [&progress, clock = PaceClock()](int done, int total, const std::string& what) mutable {
-        const double seconds = clock.seconds();
-        progress.update(done, total, seconds,
-                        fmt::format("{} | {:.2g} renders/s", what,
-                                    seconds > 0.0 ? double(done) / seconds : 0.0));
-    };
-}
-
-// Runs gnuplot on `script` beside it (so the script's relative names resolve), making `png`;
-// without gnuplot, says how to get the plot later.
-void plot(const std::filesystem::path& csv, const std::filesystem::path& script,
-          const std::filesystem::path& png) {
+void plot_with_gnuplot(const std::filesystem::path& csv, const std::filesystem::path& script,
+                       const std::filesystem::path& png) {
     fmt::print("wrote {} and {}\n", csv.string(), script.string());
     const std::string directory = csv.has_parent_path() ? csv.parent_path().string() : ".";
     const std::string command =
@@ -76,6 +62,18 @@ void plot(const std::filesystem::path& csv, const std::filesystem::path& script,
         throw RuntimeFailure(fmt::format("gnuplot failed on {}", script.string()));
     }
     fmt::print("wrote {}\n", png.string());
+}
+
+namespace {
+
+// The sweep's progress on `progress`: renders done of all, what renders now and the pace.
+AccuracyProgress accuracy_progress(DelayedProgress& progress) {
+    return [&progress, clock = PaceClock()](int done, int total, const std::string& what) mutable {
+        const double seconds = clock.seconds();
+        progress.update(done, total, seconds,
+                        fmt::format("{} | {:.2g} renders/s", what,
+                                    seconds > 0.0 ? double(done) / seconds : 0.0));
+    };
 }
 
 // --mode brute: the depth's convergence over passes (diagnostics/brute_accuracy.hpp).
@@ -123,7 +121,7 @@ void brute_accuracy(const Scene& scene, const AccuracySettings& settings,
     write_output(csv, brute_convergence_csv(result));
     write_output(script, brute_convergence_gnuplot(result, scene.id, csv.filename().string(),
                                                    png.filename().string()));
-    plot(csv, script, png);
+    plot_with_gnuplot(csv, script, png);
 }
 
 }  // namespace
@@ -168,7 +166,7 @@ int command_bench_accuracy(const AccuracyOptions& options, int device_index) {
     write_output(csv, accuracy_csv(report));
     write_output(script, accuracy_gnuplot(report, scene.id, csv.filename().string(),
                                           png.filename().string()));
-    plot(csv, script, png);
+    plot_with_gnuplot(csv, script, png);
     return 0;
 }
 

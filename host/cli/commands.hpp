@@ -108,7 +108,7 @@ struct ModeOptions {
     bool no_scene_lights = false;
     bool no_regroup = false;
     uint32_t seed = 0;
-    bool denoise = false;  // --denoise (render, video; the viewer's toggle starts on)
+    bool denoise = false;          // --denoise (render, video; the viewer's toggle starts on)
     float noise_threshold = 0.0f;  // adaptive sampling's relative error; 0: off
     int min_samples = 0;           // adaptive sampling's first round; 0: automatic
 };
@@ -315,13 +315,27 @@ struct ViewCommandOptions {
 void add_view_command(CLI::App& app, ViewCommandOptions& options);
 int command_view(ViewCommandOptions& options);
 
-// --- fgr bench, fgr bench accuracy ---------------------------------------------------------------
+// --- fgr bench, fgr bench accuracy, fgr bench quality, fgr bench compare ------------------------
 
 struct AccuracyOptions {
     std::string scene;
     AccuracySettings settings;
     ModeOptions mode;    // --mode path sweeps the path tracer's noise knobs instead
     std::string output;  // prefix of the .csv, .gp and .png files
+};
+
+// fgr bench quality: a time-to-quality CSV summarised (diagnostics/time_to_quality.hpp).
+struct QualityOptions {
+    std::string measurements;  // the CSV bench/time_to_quality.sh writes
+    double threshold = 0.005;  // the 1 - SSIM each configuration must reach
+    std::string baseline;      // the configuration speed-ups are measured against; "": the first
+    std::string output;        // prefix of the .md, .gp and .png files
+};
+
+// fgr bench compare: one image's error against a reference.
+struct CompareOptions {
+    std::string image;
+    std::string reference;
 };
 
 struct BenchOptions {
@@ -335,6 +349,10 @@ struct BenchOptions {
     ViewOverrideText view_override;  // a still view to bench instead of a camera path
     AccuracyOptions accuracy;
     CLI::App* accuracy_command = nullptr;
+    QualityOptions quality;
+    CLI::App* quality_command = nullptr;
+    CompareOptions compare;
+    CLI::App* compare_command = nullptr;
 };
 
 // Adds `bench` and its subcommand `accuracy` (bench_accuracy.cpp adds the latter's options).
@@ -342,6 +360,14 @@ void add_bench_command(CLI::App& app, BenchOptions& options);
 void add_bench_accuracy_command(CLI::App& bench, BenchOptions& options);
 int command_bench(BenchOptions& options);
 int command_bench_accuracy(const AccuracyOptions& options, int device_index);
+// Adds `bench quality` and `bench compare` (bench_quality.cpp).
+void add_bench_quality_commands(CLI::App& bench, BenchOptions& options);
+int command_bench_quality(const QualityOptions& options);
+int command_bench_compare(const CompareOptions& options);
+// Runs gnuplot on `script` beside it (so the script's relative names resolve), making `png`, and
+// says what was written (`data` and `script`); without gnuplot, says how to get the plot later.
+void plot_with_gnuplot(const std::filesystem::path& data, const std::filesystem::path& script,
+                       const std::filesystem::path& png);
 
 // --- fgr check -----------------------------------------------------------------------------------
 

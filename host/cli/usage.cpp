@@ -104,6 +104,8 @@ std::string heading_of(const std::string& command, const std::string& name) {
         {"--runs", "Benchmark"},
         {"--reference-spp", "Benchmark"},
         {"--repeats", "Benchmark"},
+        {"--threshold", "Benchmark"},
+        {"--baseline", "Benchmark"},
         {"--preset", "Window"},
         {"view --width", "Window"},
         {"view --height", "Window"},

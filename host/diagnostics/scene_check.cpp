@@ -17,6 +17,7 @@
 #include <stdexcept>
 
 #include "camera/camera.hpp"
+#include "render/environment.hpp"
 #include "scene/parameters.hpp"
 
 namespace fgr {
@@ -884,7 +885,12 @@ CheckResult SceneChecker::default_view() {
                                       "closer or aim it at the fractal")
                         : std::string("move the default camera closer or aim it at the fractal"));
     }
-    if (hit_fraction >= 0.97) {
+    // A closed scene (its own environment black: nothing outside lights it, menger-room) shows
+    // walls wherever one looks.
+    const bool enclosed = !scene_.environment.empty() &&
+                          parse_environment(scene_.environment).kind == EnvironmentKind::Uniform &&
+                          parse_environment(scene_.environment).radiance == glm::vec3(0.0f);
+    if (hit_fraction >= 0.97 && !enclosed) {
         return fail(made, measured + ": the fractal covers the whole view",
                     "move the default camera back, or out of the fractal");
     }

@@ -631,8 +631,12 @@ EnvironmentChoice with_scene_environment(EnvironmentChoice choice, const Scene& 
 std::string path_lights_text(const EnvironmentChoice& choice, const Scene& scene,
                              bool scene_lights) {
     const bool sky = choice.kind == EnvironmentKind::Sky;
+    // A black uniform environment is a closed scene's, lit from inside: no furnace test.
+    const bool black =
+        choice.kind == EnvironmentKind::Uniform && choice.radiance == glm::vec3(0.0f);
     const std::string environment = sky                                      ? "the sky and its sun"
                                     : choice.kind == EnvironmentKind::Studio ? "the studio"
+                                    : black                                  ? "a black environment"
                                     : choice.kind == EnvironmentKind::Uniform
                                         ? "the uniform environment"
                                         : "the environment map";
@@ -646,7 +650,7 @@ std::string path_lights_text(const EnvironmentChoice& choice, const Scene& scene
     std::string text = fmt::format("{} and the scene's {}{} light{}", environment,
                                    replaced ? "other " : "", shining, shining == 1 ? "" : "s");
     if (replaced) text += " (the sun in place of its key light)";
-    if (choice.kind == EnvironmentKind::Uniform) {
+    if (choice.kind == EnvironmentKind::Uniform && !black) {
         text += ": a furnace test wants the environment alone, --no-scene-lights";
     }
     return text;

@@ -175,7 +175,8 @@ EnvironmentChoice with_scene_environment(EnvironmentChoice choice, const Scene& 
 // under the sky its sun takes the place of the scene's key light (its first directional light)
 // and the scene's other lights shine too; under any other environment every scene light shines
 // besides it; with `scene_lights` off the environment (and the sky's sun) alone. Under a uniform
-// environment with scene lights it says that a furnace test wants --no-scene-lights.
+// environment with scene lights it says that a furnace test wants --no-scene-lights, unless the
+// environment is black (a closed room's: no light from outside, no furnace test).
 std::string path_lights_text(const EnvironmentChoice& choice, const Scene& scene,
                              bool scene_lights);
 

@@ -429,14 +429,15 @@ inline void render_packet_sample(int tile, FGR_RENDER_ARGS, __constant const flo
 
 #ifndef FGR_GEOMETRY_IFS
 /* What the launch sums per pixel of the tile, in its private sums: float `sums[PATH_SUMS][W]`. */
-#define PATH_SUM_RADIANCE 0      /* 3: radiance, clamped when settings.radiance_clamp > 0 */
-#define PATH_SUM_ALBEDO 3        /* 3: the first hit's albedo */
-#define PATH_SUM_NORMAL 6        /* 3: the first hit's normal */
-#define PATH_SUM_ALPHA 9         /* 1: 1 where the camera ray met the surface */
-#define PATH_SUM_LANE_STEPS 10   /* 1: DE evaluations of the pixel's paths (FGR_STATS) */
-#define PATH_SUM_FOREGROUND 11   /* 3: radiance of the paths whose camera ray met the surface */
-#define PATH_SUM_ODD_RADIANCE 14 /* 3: radiance of the odd-numbered samples (accumulate_odd_half) \
-                                  */
+#define PATH_SUM_RADIANCE 0    /* 3: radiance, clamped when settings.radiance_clamp > 0 */
+#define PATH_SUM_ALBEDO 3      /* 3: the first hit's albedo */
+#define PATH_SUM_NORMAL 6      /* 3: the first hit's normal */
+#define PATH_SUM_ALPHA 9       /* 1: 1 where the camera ray met the surface */
+#define PATH_SUM_LANE_STEPS 10 /* 1: DE evaluations of the pixel's paths (FGR_STATS) */
+#define PATH_SUM_FOREGROUND 11 /* 3: radiance of the paths whose camera ray met the surface */
+#define PATH_SUM_ODD_RADIANCE                                           \
+    14 /* 3: radiance of the odd-numbered samples (accumulate_odd_half) \
+        */
 #define PATH_SUMS 17
 
 /* A path's state in its lane (one per lane of the packet). Each lane is in one phase at a time,

@@ -166,10 +166,22 @@ TEST_F(Usage, MistypedNamesOfferTheNearestOne) {
 // left in CLI11's catch-all "Options:" but --help) and gives the defaults, those computed at run
 // time in words.
 TEST_F(Usage, HelpFilesEveryOptionUnderAHeadingWithItsDefault) {
-    const std::vector<std::vector<std::string>> commands = {
-        {"list"},  {"info"},          {"render"},         {"video"},      {"merge"},
-        {"view"},  {"check"},         {"new-scene"},      {"bench"},      {"bench", "accuracy"},
-        {"cache"}, {"cache", "size"}, {"cache", "clear"}, {"environment"}};
+    const std::vector<std::vector<std::string>> commands = {{"list"},
+                                                            {"info"},
+                                                            {"render"},
+                                                            {"video"},
+                                                            {"merge"},
+                                                            {"view"},
+                                                            {"check"},
+                                                            {"new-scene"},
+                                                            {"bench"},
+                                                            {"bench", "accuracy"},
+                                                            {"bench", "quality"},
+                                                            {"bench", "compare"},
+                                                            {"cache"},
+                                                            {"cache", "size"},
+                                                            {"cache", "clear"},
+                                                            {"environment"}};
     for (std::vector<std::string> command : commands) {
         std::string name = "fgr";
         for (const std::string& word : command) name += " " + word;

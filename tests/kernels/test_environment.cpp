@@ -964,7 +964,7 @@ TEST(EnvironmentChoice, TheScenesOwnStandsInForOneTheUserDidNotName) {
 
 // The log says what lights the path mode: under the sky its sun in place of the key light, under
 // any other environment every scene light besides it, and a uniform one with scene lights says a
-// furnace test wants --no-scene-lights.
+// furnace test wants --no-scene-lights (unless it is black).
 TEST(EnvironmentChoice, TheLightsThatShineAreNamed) {
     const Scene scene = scene_with_lights("");
     EXPECT_EQ(path_lights_text(parse_environment("sky"), scene, true),
@@ -979,6 +979,9 @@ TEST(EnvironmentChoice, TheLightsThatShineAreNamed) {
               "environment alone, --no-scene-lights");
     EXPECT_EQ(path_lights_text(parse_environment("uniform"), scene, false),
               "the uniform environment alone (--no-scene-lights)");
+    // A black one lights nothing: a closed scene's, no furnace test.
+    EXPECT_EQ(path_lights_text(parse_environment("uniform:0"), scene, true),
+              "a black environment and the scene's 2 lights");
 }
 
 }  // namespace

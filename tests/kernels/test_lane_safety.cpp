@@ -9,8 +9,11 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdlib>
 #include <glm/geometric.hpp>
 #include <ostream>
+#include <sstream>
+#include <stdexcept>
 #include <string>
 #include <vector>
 
@@ -47,6 +50,24 @@ std::vector<LaneCase> lane_cases() {
     return cases;
 }
 
+// The packet widths to try: 1, 4, 8 and 16, or those FGR_TEST_PACKET_WIDTHS lists (e.g. "1": the
+// GPU kit, bench/gpu/run.sh, runs the one-ray-per-work-item layout a GPU renders with).
+std::vector<int> packet_widths() {
+    const char* listed = std::getenv("FGR_TEST_PACKET_WIDTHS");
+    if (listed == nullptr || *listed == '\0') return {1, 4, 8, 16};
+    std::vector<int> widths;
+    std::stringstream in(listed);
+    std::string item;
+    while (std::getline(in, item, ',')) {
+        if (item != "1" && item != "4" && item != "8" && item != "16") {
+            throw std::invalid_argument("FGR_TEST_PACKET_WIDTHS: '" + item +
+                                        "' is not 1, 4, 8 or 16");
+        }
+        widths.push_back(std::stoi(item));
+    }
+    return widths;
+}
+
 class LaneSafety : public ::testing::TestWithParam<LaneCase> {
 protected:
     static ComputeDevice& device() {
@@ -73,7 +94,7 @@ TEST_P(LaneSafety, ColourDepthAndNormalsAreFiniteAtEveryWidth) {
     const float footprint = pixel_angle(basis, request.width);
 
     // Double lanes need at least 4 rays per work-item (see precision.hpp).
-    for (int width : {1, 4, 8, 16}) {
+    for (int width : packet_widths()) {
         if (lane_case.double_precision && width == 1) continue;
         SCOPED_TRACE("requested packet width " + std::to_string(width));
         // A scene with only an inside test renders only by brute force.
