@@ -66,6 +66,7 @@ configurations=(
     "+ regrouping||spp|--no-regroup"
     "+ adaptive|--noise-threshold {} --min-spp 4 --spp $THRESHOLD_CAP|threshold|--no-regroup"
     "+ denoiser|--noise-threshold {} --min-spp 4 --spp $THRESHOLD_CAP --denoise|threshold|--no-regroup"
+    "regrouping + denoiser|--denoise|spp|--no-regroup"
 )
 
 [[ -x $FGR ]] || { echo "time_to_quality: no fgr at $FGR (build it, or set FGR)" >&2; exit 1; }
@@ -168,6 +169,8 @@ measure() {
                     if [[ $ladder == spp ]]; then
                         budget=${spp[$rung]:-}
                         run_flags="$flags --spp $budget"
+                        # The denoiser measures the noise from two halves of the samples.
+                        if [[ $flags == *--denoise* && -n $budget && $budget -lt 2 ]]; then continue; fi
                     else
                         budget=${thresholds[$rung]:-}
                         run_flags=${flags//\{\}/$budget}
@@ -193,6 +196,7 @@ measure() {
             if [[ $ladder == spp ]]; then budgets=$SPP_LADDER; else budgets=$THRESHOLD_LADDER; fi
             for budget in $budgets; do
                 local key="$c|$budget"
+                [[ -n ${best[$key]:-} ]] || continue  # a budget this configuration skips
                 echo "$name,$configuration,$budget,${best[$key]},${error[$key]},${samples[$key]}" >> "$csv"
             done
         done
