@@ -16,6 +16,7 @@
 #include "device/opencl_device.hpp"
 #include "device/program_cache.hpp"
 #include "output/denoised_frame.hpp"
+#include "pixel_estimate.hpp"
 #include "render/adaptive_sampling.hpp"
 #include "render/environment.hpp"
 #include "render/path_settings.hpp"
@@ -72,30 +73,7 @@ material scene_material(vec3 p, PARAMS) {
     return scene;
 }
 
-struct Estimate {
-    double mean = 0.0;
-    double standard_error = 0.0;
-    long pixels = 0;
-};
-
-// Mean of the red channel over the pixels `keep` selects, with its standard error from their
-// spread.
-template <typename Keep>
-Estimate estimate(const Frame& frame, Keep keep) {
-    std::vector<double> values;
-    for (size_t i = 0; i < frame.alpha.size(); ++i) {
-        if (keep(i)) values.push_back(frame.linear[i * 3]);
-    }
-    Estimate result;
-    result.pixels = static_cast<long>(values.size());
-    if (values.size() < 2) return result;
-    for (double v : values) result.mean += v;
-    result.mean /= double(values.size());
-    double squares = 0.0;
-    for (double v : values) squares += (v - result.mean) * (v - result.mean);
-    result.standard_error = std::sqrt(squares / double(values.size() - 1) / double(values.size()));
-    return result;
-}
+using Estimate = test::PixelEstimate;
 
 bool agree(const Estimate& a, const Estimate& b, const char* what, double sigmas = 4.0) {
     const double tolerance = sigmas * std::hypot(a.standard_error, b.standard_error);
@@ -191,13 +169,13 @@ TEST_F(AdaptiveSampling, MeanMatchesTheClosedFormAndFixedSampling) {
                 p.seed = seed;
                 p.stratified = stratified;
                 total +=
-                    estimate(
+                    test::red_channel_estimate(
                         renderer().render(request(kInsideSphere, "emission=0.5,0.5,0.5", p, 64)),
                         kEveryPixel)
                         .mean;
                 p.noise_threshold = 0.0f;
                 total_fixed +=
-                    estimate(
+                    test::red_channel_estimate(
                         renderer().render(request(kInsideSphere, "emission=0.5,0.5,0.5", p, 16)),
                         kEveryPixel)
                         .mean;
@@ -208,10 +186,11 @@ TEST_F(AdaptiveSampling, MeanMatchesTheClosedFormAndFixedSampling) {
     }
     std::printf("%s\n", adaptive_summary(*adaptive.adaptive).c_str());
     const Estimate exact{1.0, 0.0, 1};
-    EXPECT_TRUE(agree(estimate(adaptive, kEveryPixel), exact, "adaptive against 1"));
-    EXPECT_TRUE(agree(estimate(fixed, kEveryPixel), exact, "fixed against 1"));
-    EXPECT_TRUE(agree(estimate(adaptive, kEveryPixel), estimate(fixed, kEveryPixel),
-                      "adaptive against fixed"));
+    EXPECT_TRUE(
+        agree(test::red_channel_estimate(adaptive, kEveryPixel), exact, "adaptive against 1"));
+    EXPECT_TRUE(agree(test::red_channel_estimate(fixed, kEveryPixel), exact, "fixed against 1"));
+    EXPECT_TRUE(agree(test::red_channel_estimate(adaptive, kEveryPixel),
+                      test::red_channel_estimate(fixed, kEveryPixel), "adaptive against fixed"));
     EXPECT_LT(adaptive.adaptive->mean_spp, 64.0);
     EXPECT_EQ(adaptive.samples_per_pixel.size(), size_t(kSize * kSize));
 }
@@ -226,7 +205,7 @@ TEST_F(AdaptiveSampling, RareBrightLightBiasesTheNaiveRuleOnly) {
     reference_path.seed = 3;
     const Frame reference = renderer().render(request(kSphere, "", reference_path, 64));
     const auto on_sphere = [&reference](size_t i) { return reference.alpha[i] == 1.0f; };
-    const Estimate truth = estimate(reference, on_sphere);
+    const Estimate truth = test::red_channel_estimate(reference, on_sphere);
 
     PathSettings path = rare_sun(11);
     path.noise_threshold = 0.1f;
@@ -242,7 +221,7 @@ TEST_F(AdaptiveSampling, RareBrightLightBiasesTheNaiveRuleOnly) {
         adaptive_request.path.seed = 11 + 101 * static_cast<uint32_t>(seed);
         const Frame frame = render_adaptive(renderer(), adaptive_request, AdaptiveRule::Unbiased);
         if (seed == 0) std::printf("default rule: %s\n", adaptive_summary(*frame.adaptive).c_str());
-        const Estimate one = estimate(frame, on_sphere);
+        const Estimate one = test::red_channel_estimate(frame, on_sphere);
         unbiased.mean += one.mean / kSeeds;
         unbiased.standard_error += one.standard_error * one.standard_error / (kSeeds * kSeeds);
         unbiased.pixels += one.pixels;
@@ -253,8 +232,9 @@ TEST_F(AdaptiveSampling, RareBrightLightBiasesTheNaiveRuleOnly) {
     EXPECT_TRUE(agree(unbiased, truth, "default rule against the truth"));
     // Fewer samples than fixed sampling's cap, or the test shows nothing.
     EXPECT_LT(spp, 128.0 * 0.8);
-    EXPECT_FALSE(agree(estimate(naive, on_sphere), truth, "naive rule against the truth"));
-    EXPECT_LT(estimate(naive, on_sphere).mean, truth.mean);
+    EXPECT_FALSE(
+        agree(test::red_channel_estimate(naive, on_sphere), truth, "naive rule against the truth"));
+    EXPECT_LT(test::red_channel_estimate(naive, on_sphere).mean, truth.mean);
 }
 
 // Flat regions (the uniform sky around the sphere: every sample reads the same) stop at the

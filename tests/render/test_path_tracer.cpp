@@ -18,6 +18,7 @@
 
 #include "device/opencl_device.hpp"
 #include "device/program_cache.hpp"
+#include "pixel_estimate.hpp"
 #include "render/environment.hpp"
 #include "render/path_settings.hpp"
 #include "render/renderer.hpp"
@@ -86,12 +87,7 @@ material scene_material(vec3 p, PARAMS) {
     return scene;
 }
 
-struct Estimate {
-    double mean = 0.0;
-    double standard_error = 0.0;  // of the mean, from the spread of the pixels' estimates
-    double variance = 0.0;        // of one pixel's estimate
-    long pixels = 0;
-};
+using Estimate = test::PixelEstimate;
 
 class PathTracer : public ::testing::Test {
 protected:
@@ -161,20 +157,7 @@ protected:
     // The mean over the pixels the camera ray met in every sample (alpha 1) of the red channel
     // (the scenes are grey), with its standard error.
     static Estimate estimate(const Frame& frame) {
-        std::vector<double> values;
-        for (size_t i = 0; i < frame.alpha.size(); ++i) {
-            if (frame.alpha[i] == 1.0f) values.push_back(frame.linear[i * 3]);
-        }
-        Estimate result;
-        result.pixels = static_cast<long>(values.size());
-        if (values.size() < 2) return result;
-        for (double v : values) result.mean += v;
-        result.mean /= double(values.size());
-        double squares = 0.0;
-        for (double v : values) squares += (v - result.mean) * (v - result.mean);
-        result.variance = squares / double(values.size() - 1);
-        result.standard_error = std::sqrt(result.variance / double(values.size()));
-        return result;
+        return test::red_channel_estimate(frame, [&](size_t i) { return frame.alpha[i] == 1.0f; });
     }
 
     // The variance of one pixel's estimate (at `samples` spp), free of the image's own variation:
