@@ -55,6 +55,18 @@ inline material surface_material(march_result hit, vec3 p, PARAMS) {
 #endif
 }
 
+/* A camera ray's jitter from two uniform pairs: a point in the pixel, and one uniform on the lens's
+ * unit disc (radius sqrt(u), angle 2 pi v). */
+inline camera_sample camera_jitter(real2 in_pixel, real2 on_lens) {
+    camera_sample jitter;
+    jitter.pixel_x = in_pixel.x;
+    jitter.pixel_y = in_pixel.y;
+    const real lens_radius = sqrt(on_lens.x), lens_angle = 6.28318530717958647692f * on_lens.y;
+    jitter.lens_x = lens_radius * fgr_cos(lens_angle);
+    jitter.lens_y = lens_radius * fgr_sin(lens_angle);
+    return jitter;
+}
+
 /* The power heuristic with exponent 2 for one sample of each strategy: the weight of the strategy
  * with pdf `a` when the other has pdf `b`. */
 inline real power_heuristic(real a, real b) {
@@ -236,14 +248,8 @@ inline void render_packet_sample(int tile, FGR_RENDER_ARGS, __constant const flo
                       independent ? settings.seed + (uint)sample * 0x9e3779b9u : settings.seed);
     const real2 in_pixel = sampler_next_2d(&rng);
     const real2 on_lens = sampler_next_2d(&rng);
-    camera_sample jitter;
-    jitter.pixel_x = in_pixel.x;
-    jitter.pixel_y = in_pixel.y;
-    /* Uniform on the unit disc: radius sqrt(u), angle 2 pi v. */
-    const real lens_radius = sqrt(on_lens.x), lens_angle = 6.28318530717958647692f * on_lens.y;
-    jitter.lens_x = lens_radius * fgr_cos(lens_angle);
-    jitter.lens_y = lens_radius * fgr_sin(lens_angle);
-    const camera_ray ray = camera_ray_through(camera, pixels.px, pixels.py, jitter, PARAMS_PASS);
+    const camera_ray ray = camera_ray_through(camera, pixels.px, pixels.py,
+                                              camera_jitter(in_pixel, on_lens), PARAMS_PASS);
 
     const march_limits limits = scene_march_limits(camera.pixel_angle, PARAMS_PASS);
     const bool light_sampling = (settings.flags & FGR_PATH_LIGHT_SAMPLING) != 0;
@@ -626,13 +632,8 @@ inline void start_camera_paths(path_lanes* path, lane_sampler* rng, mask fresh,
     const real2 in_pixel = lane_sampler_next_2d(&started, (mask)(FGR_TRUE));
     const real2 on_lens = lane_sampler_next_2d(&started, (mask)(FGR_TRUE));
     lane_sampler_take(rng, started, fresh);
-    camera_sample jitter;
-    jitter.pixel_x = in_pixel.x;
-    jitter.pixel_y = in_pixel.y;
-    const real lens_radius = sqrt(on_lens.x), lens_angle = 6.28318530717958647692f * on_lens.y;
-    jitter.lens_x = lens_radius * fgr_cos(lens_angle);
-    jitter.lens_y = lens_radius * fgr_sin(lens_angle);
-    const camera_ray ray = camera_ray_through(camera, px, py, jitter, PARAMS_PASS);
+    const camera_ray ray =
+        camera_ray_through(camera, px, py, camera_jitter(in_pixel, on_lens), PARAMS_PASS);
     const vec3 zero = v3_splat(0.0f, 0.0f, 0.0f);
     path->radiance = v3_select(path->radiance, zero, fresh);
     path->throughput = v3_select(path->throughput, v3_splat(1.0f, 1.0f, 1.0f), fresh);
