@@ -69,6 +69,79 @@ FGR_POWER_FUNCTION vec3 bulb_power_integer(vec3 z, real r, real r_n, int n, int 
     return v3_scale(v3(horizontal * azimuth.re, horizontal * azimuth.im, vertical), r_n);
 }
 
+/* a + i rho b with rho = |(x, y)| known only through rho^2. The square of z + i rho is
+ * (z^2 - rho^2) + i rho (2 z), of this form, and products keep it:
+ * (a + i rho b)(c + i rho d) = (ac - rho^2 bd) + i rho (ad + bc). So the even powers of the polar
+ * base need no square root until the end. */
+typedef struct rho_complex {
+    real a, b;
+} rho_complex;
+
+inline rho_complex rho_complex_mul(rho_complex u, rho_complex v, real rho2) {
+    rho_complex w;
+    w.a = u.a * v.a - rho2 * (u.b * v.b);
+    w.b = u.a * v.b + u.b * v.a;
+    return w;
+}
+
+/* c^n for integer n >= 1, by binary exponentiation as complex_powi. */
+FGR_POWER_FUNCTION rho_complex rho_complex_powi(rho_complex c, int n, real rho2) {
+    rho_complex result = c;
+    rho_complex base = c;
+    int remaining = n - 1;
+    FGR_POWER_STEPS_AHEAD(remaining, result = rho_complex_mul(result, base, rho2),
+                          base = rho_complex_mul(base, base, rho2))
+    while (remaining > 0) {
+        if (remaining & 1) result = rho_complex_mul(result, base, rho2);
+        remaining >>= 1;
+        if (remaining > 0) base = rho_complex_mul(base, base, rho2);
+    }
+    return result;
+}
+
+/* z^n for integer n, as bulb_power_integer(z, |z|, |z|^n, n, latitude_form) gives it but without
+ * r, with rho = |(x, y)|. The polar factor r^n e^(i n theta) is the n-th power of
+ * z + i rho (colatitude) or rho + i z (latitude) itself, and the azimuth e^(i n phi) the n-th
+ * power of (x + iy) / rho. For even n both are powers of squares that need only rho^2:
+ * e^(2 i phi) = (x^2 - y^2 + 2ixy) / rho^2, one division, and the polar square in rho_complex
+ * form, whose one factor rho is taken at the end, beside the chain. So an iteration's chain from
+ * z to the next z holds a division but no square root. Odd n take rho and 1 / rho. */
+FGR_POWER_FUNCTION vec3 bulb_integer_power(vec3 z, int n, int latitude_form) {
+    const real x2 = z.x * z.x, y2 = z.y * z.y;
+    const real rho2 = x2 + y2;
+    /* Below 1e-30 the azimuth is taken as on the axis (atan2(0, 0) = 0): what that moves is at
+     * most n |z|^(n-1) rho < 1e-14 |z|^(n-1). */
+    const mask on_axis = rho2 < 1e-30f;
+    real horizontal, vertical; /* r^n sin, cos of n theta (colatitude), cos, sin (latitude) */
+    complex_packet azimuth;
+    if ((n & 1) == 0) {
+        const real inv_rho2 = select(1.0f / rho2, fgr_real(0.0f), on_axis);
+        complex_packet twice;
+        twice.re = select((x2 - y2) * inv_rho2, fgr_real(1.0f), on_axis);
+        twice.im = 2.0f * z.x * z.y * inv_rho2;
+        azimuth = complex_powi(twice, n / 2);
+        const real z2 = z.z * z.z;
+        rho_complex square;
+        square.a = latitude_form ? rho2 - z2 : z2 - rho2;
+        square.b = 2.0f * z.z;
+        const rho_complex polar = rho_complex_powi(square, n / 2, rho2);
+        const real rho = sqrt(rho2);
+        horizontal = latitude_form ? polar.a : rho * polar.b;
+        vertical = latitude_form ? rho * polar.b : polar.a;
+    } else {
+        const real inv_rho = select(rsqrt(rho2), fgr_real(0.0f), on_axis);
+        const real rho = rho2 * inv_rho;
+        azimuth = complex_powi(unit_complex(z.x, z.y, inv_rho, 1.0f), n);
+        complex_packet base;
+        base.re = latitude_form ? rho : z.z;
+        base.im = latitude_form ? z.z : rho;
+        const complex_packet polar = complex_powi(base, n);
+        horizontal = latitude_form ? polar.re : polar.im;
+        vertical = latitude_form ? polar.im : polar.re;
+    }
+    return v3(horizontal * azimuth.re, horizontal * azimuth.im, vertical);
+}
+
 /* z^n for any real n, with trigonometry. At r = 0 every angle is finite (atan2(0, 0) = 0) and
  * r^n = 0, so the origin maps to the origin. */
 inline vec3 bulb_power_real(vec3 z, real r, real r_n, float n, int latitude_form) {
@@ -84,21 +157,21 @@ inline vec3 bulb_power_real(vec3 z, real r, real r_n, float n, int latitude_form
 
 /* One Mandelbulb iteration for the lanes still inside the bailout: z -> z^power + p and the
  * running derivative, with integer_power choosing the trigonometry-free form. */
-#define FGR_BULB_ITERATE(integer_power)                                           \
-    do {                                                                          \
-        real r_pow;                                                               \
-        vec3 z_n;                                                                 \
-        if (integer_power) {                                                      \
-            r_pow = fgr_pown(r, (int)power - 1);                                  \
-            z_n = bulb_power_integer(z, r, r_pow * r, (int)power, latitude_form); \
-        } else {                                                                  \
-            r_pow = fgr_pow(r, fgr_real(power - 1.0f));                           \
-            z_n = bulb_power_real(z, r, r_pow * r, power, latitude_form);         \
-        }                                                                         \
-        dr = select(dr, power * r_pow * dr + 1.0f, active);                       \
-        z = v3_select(z, v3_add(z_n, p), active);                                 \
-        r = v3_length(z);                                                         \
-        if (record) *trap = trap_update(*trap, z, active);                        \
+#define FGR_BULB_ITERATE(integer_power)                                   \
+    do {                                                                  \
+        real r_pow;                                                       \
+        vec3 z_n;                                                         \
+        if (integer_power) {                                              \
+            r_pow = fgr_pown(r, (int)power - 1);                          \
+            z_n = bulb_integer_power(z, (int)power, latitude_form);       \
+        } else {                                                          \
+            r_pow = fgr_pow(r, fgr_real(power - 1.0f));                   \
+            z_n = bulb_power_real(z, r, r_pow * r, power, latitude_form); \
+        }                                                                 \
+        dr = select(dr, power * r_pow * dr + 1.0f, active);               \
+        z = v3_select(z, v3_add(z_n, p), active);                         \
+        r = v3_length(z);                                                 \
+        if (record) *trap = trap_update(*trap, z, active);                \
     } while (0)
 
 /* The Mandelbulb's distance estimate at p: iterates z -> z^power + p at most `iterations` times

@@ -90,8 +90,9 @@ TEST_P(MandelbulbDe, FiniteAtSingularPoints) {
     // The origin, signed zeros, the polar axis (rho = 0, where atan2(0, 0) decides the angle),
     // denormal-scale and exact-bailout points: all must agree with the reference DE.
     const std::vector<glm::vec3> points{
-        {0, 0, 0},    {-0.0f, 0, -0.0f}, {0, 0, 0.5f}, {0, 0, -0.5f}, {0.5f, 0, 0}, {0, 0.5f, 0},
-        {tiny, 0, 0}, {0, 0, tiny},      {2, 0, 0},    {0, 0, 2},     {1.2f, 0, 0}, {0, -1.1f, 0}};
+        {0, 0, 0},    {-0.0f, 0, -0.0f}, {0, 0, 0.5f},      {0, 0, -0.5f},     {0.5f, 0, 0},
+        {0, 0.5f, 0}, {tiny, 0, 0},      {0, 0, tiny},      {2, 0, 0},         {0, 0, 2},
+        {1.2f, 0, 0}, {0, -1.1f, 0},     {1e-16f, 0, 0.5f}, {0, 2e-15f, -0.7f}};
     const auto distances = kernel_de(points);
     for (size_t i = 0; i < points.size(); ++i) {
         const double expected =
@@ -119,7 +120,10 @@ INSTANTIATE_TEST_SUITE_P(Forms, MandelbulbDe,
                                            DeCase{16, test::BulbForm::Latitude, 8.0},
                                            DeCase{8, test::BulbForm::Latitude, 8.0},
                                            DeCase{16, test::BulbForm::Colatitude, 7.5},
-                                           DeCase{4, test::BulbForm::Latitude, 3.0}),
+                                           DeCase{4, test::BulbForm::Latitude, 3.0},
+                                           DeCase{16, test::BulbForm::Colatitude, 2.0},
+                                           DeCase{16, test::BulbForm::Colatitude, 5.0},
+                                           DeCase{16, test::BulbForm::Latitude, 6.0}),
                          [](const auto& test_info) {
                              const DeCase& c = test_info.param;
                              return std::string(c.form == test::BulbForm::Colatitude ? "Colatitude"

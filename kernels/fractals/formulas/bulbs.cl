@@ -6,7 +6,7 @@
  *
  * Every formula has the shape formula_NAME(&z, &w, &dr, c, parameters...): z the orbit point, w a
  * fourth component only the hypercomplex formulas use (the others leave it alone), dr the running
- * derivative, c the point whose distance is asked. bulb_power_integer and bulb_power_real
+ * derivative, c the point whose distance is asked. bulb_integer_power and bulb_power_real
  * (fgr_fractals.cl) give z^n. */
 
 /* z^n of the triplex z: integer powers without trigonometry. latitude: polar angle from the
@@ -15,7 +15,7 @@ inline vec3 formula_bulb_power(vec3 z, float power, int latitude, real* r_pow) {
     const real r = v3_length(z);
     if (power == floor(power)) {
         *r_pow = fgr_pown(r, (int)power - 1);
-        return bulb_power_integer(z, r, *r_pow * r, (int)power, latitude);
+        return bulb_integer_power(z, (int)power, latitude);
     }
     *r_pow = fgr_pow(r, fgr_real(power - 1.0f));
     return bulb_power_real(z, r, *r_pow * r, power, latitude);
