@@ -495,9 +495,11 @@ inline int lanes_in(mask m) {
 #endif
 }
 
-/* Lanes that wait, their phase ended, before they move on together (see render_regrouped). */
+/* Lanes that wait, their phase ended, before they move on together (see render_regrouped):
+ * 6 of 16. Waiting for 8 left 0.77 of the lanes at work for the same speed, for 4 0.85 but 11-15%
+ * slower (the shading passes come twice as often). */
 #ifndef FGR_REGROUP_BATCH
-#define FGR_REGROUP_BATCH (FGR_WIDTH / 2 > 0 ? FGR_WIDTH / 2 : 1)
+#define FGR_REGROUP_BATCH (3 * FGR_WIDTH / 8 > 0 ? 3 * FGR_WIDTH / 8 : 1)
 #endif
 
 /* Values of the tile's pixels (`by_slot`, one per pixel of the tile) gathered into the lanes
