@@ -541,7 +541,8 @@ TEST_F(PathTracer, RegroupedPacketsTraceThePacketKernelsPaths) {
 // packet kernel's, so the DE evaluations the lanes took part in are the same, while the
 // packets' evaluations (the work a packet pays for in all its lanes) fall. The counts are
 // deterministic (no clock): on this 24x24 Mandelbulb at 8 samples the packet kernel keeps its
-// lanes under half busy and regrouping well over two thirds (measured 0.476 and 0.751).
+// lanes under half busy and regrouping over four fifths (measured 0.478 and 0.813; waiting for 8
+// lanes instead of 6 before shading gave 0.751).
 TEST_F(PathTracer, RegroupingFillsTheLanes) {
     KernelSwitches switches;
     switches.packet_width = 16;
@@ -567,7 +568,7 @@ TEST_F(PathTracer, RegroupingFillsTheLanes) {
         a.utilisation(), b.utilisation(), a.lane_evaluations, b.lane_evaluations);
     // Exactly equal here; a path that grazes an edge could branch differently on another CPU.
     EXPECT_NEAR(a.lane_evaluations, b.lane_evaluations, 0.005 * b.lane_evaluations);
-    EXPECT_GT(a.utilisation(), 0.7);
+    EXPECT_GT(a.utilisation(), 0.78);
     EXPECT_LT(b.utilisation(), 0.5);
 
     // Adaptive sampling's per-pixel limits (FrameRequest::sample_limits): two pixels in three stop
