@@ -1,18 +1,25 @@
 #!/usr/bin/env bash
 # SPDX-License-Identifier: Apache-2.0
 # Time to quality: how long each configuration of the path tracer takes to reach 1 - SSIM <= 0.005
-# against a 4096-samples-per-pixel reference, on three scenes: bulb-stage under the sky, the
-# Mandelbulb in the studio, and the Menger sponge in a closed room (menger-room), where most light
-# arrives after several bounces.
+# against a converged reference, on three scenes: bulb-stage under the sky, the Mandelbulb in the
+# studio, and the Menger sponge in a closed room (menger-room), where most light arrives after
+# several bounces.
 #
-#   bench/time_to_quality.sh references   the references (4096 spp each, a few minutes a scene)
-#   bench/time_to_quality.sh measure      the ladders, the table and the plot (~15 min)
+#   bench/time_to_quality.sh references   the references (~12 min in all)
+#   bench/time_to_quality.sh measure      the ladders, the table and the plot (~25 min)
 #   bench/time_to_quality.sh              both; references that exist are kept
+#
+# A reference must be far closer to the truth than the threshold, or no image can reach it: two
+# 4096-spp renders of menger-room with different seeds differ by 1 - SSIM = 0.016, of bulb-stage
+# by 0.0075, so their references take 32768 samples per pixel (that noise falls as 1 / spp), the
+# Mandelbulb's 4096 (0.0008 between two).
 #
 # Each configuration is one line of the table below: its name, the flags it adds to
 # `fgr render SCENE --mode path`, and what its ladder varies: "spp" (1, 2, 4 ... 1024 samples per
 # pixel) or "threshold" (--noise-threshold T from 0.3 down to 0.005, the sample cap
-# --spp THRESHOLD_CAP). Every render of a scene has the same seed, the reference another. Each
+# --spp THRESHOLD_CAP). A configuration's ladder stops at the first render at or below the
+# threshold: the crossing lies between it and the one before. Every render of a scene has the
+# same seed, the reference another. Each
 # render's time is the render_ms fgr prints (the denoiser's time included), the best of
 # REPEATS rounds that alternate the configurations; its error is `fgr bench compare`'s 1 - SSIM of
 # the display luma against the scene's reference. A configuration whose flags this fgr does not
@@ -25,9 +32,10 @@
 # and speed-ups over the first configuration), .gp and .png (error against time, log-log, one panel
 # a scene, one line a configuration, the threshold dashed).
 #
-# Environment: FGR (default build/bin/fgr), OUT, WIDTH x HEIGHT (160x120), REFERENCE_SPP (4096),
-# REPEATS (2), THRESHOLD (0.005), SPP_LADDER ("1 2 4 ... 1024"), THRESHOLD_LADDER
-# ("0.3 0.2 0.1 0.05 0.03 0.02 0.01 0.005"), THRESHOLD_CAP (1024), SCENES (a subset of the scene
+# Environment: FGR (default build/bin/fgr), OUT, WIDTH x HEIGHT (160x120), REFERENCE_SPP (each
+# scene's own, below), REPEATS (2), THRESHOLD (0.005), SPP_LADDER ("1 2 4 ... 4096", fgr's most),
+# THRESHOLD_LADDER ("0.3 0.2 0.1 0.05 0.03 0.02 0.01 0.005 0.003 0.002"), THRESHOLD_CAP (4096),
+# SCENES (a subset of the scene
 # names below), QUICK=1 (48x36, 64-spp references, short ladders, one round: tries the harness in
 # a minute, into OUT=/tmp/fgr-quality-quick unless OUT is set).
 set -euo pipefail
@@ -44,20 +52,20 @@ fi
 OUT=${OUT:-$repo/bench/results/quality}
 WIDTH=${WIDTH:-160}
 HEIGHT=${HEIGHT:-120}
-REFERENCE_SPP=${REFERENCE_SPP:-4096}
+REFERENCE_SPP=${REFERENCE_SPP:-}
 REPEATS=${REPEATS:-2}
 THRESHOLD=${THRESHOLD:-0.005}
-SPP_LADDER=${SPP_LADDER:-"1 2 4 8 16 32 64 128 256 512 1024"}
-THRESHOLD_LADDER=${THRESHOLD_LADDER:-"0.3 0.2 0.1 0.05 0.03 0.02 0.01 0.005"}
-THRESHOLD_CAP=${THRESHOLD_CAP:-1024}
-SEED=7            # every measured render
-REFERENCE_SEED=1  # the references: noise independent of the measured renders'
+SPP_LADDER=${SPP_LADDER:-"1 2 4 8 16 32 64 128 256 512 1024 2048 4096"}
+THRESHOLD_LADDER=${THRESHOLD_LADDER:-"0.3 0.2 0.1 0.05 0.03 0.02 0.01 0.005 0.003 0.002"}
+THRESHOLD_CAP=${THRESHOLD_CAP:-4096}
+SEED=7               # every measured render
+REFERENCE_SEED=1000  # the references (and their parts, 1000, 1001 ...): noise of their own
 
-# The scenes: name|scene id|flags (the view is each scene's first camera).
+# The scenes: name|scene id|flags|reference spp (the view is each scene's first camera).
 all_scenes=(
-    "bulb-stage-sky|bulb-stage|--environment sky"
-    "mandelbulb-studio|mandelbulb|--environment studio"
-    "menger-room|menger-room|"
+    "bulb-stage-sky|bulb-stage|--environment sky|32768"
+    "mandelbulb-studio|mandelbulb|--environment studio|4096"
+    "menger-room|menger-room||32768"
 )
 # The configurations: name|flags|ladder|flags fgr must have for it to mean anything ({} in the
 # flags is the ladder's threshold). The first is the baseline the speed-ups are against.
@@ -89,16 +97,34 @@ references() {
     for entry in "${selected_scenes[@]}"; do
         fields "$entry"
         local name=${field[0]} scene=${field[1]} flags=${field[2]}
-        local reference=$OUT/ref-$name.exr
+        local reference=$OUT/ref-$name.exr reference_spp=${REFERENCE_SPP:-${field[3]}}
         if [[ -e $reference ]]; then
             echo "reference $name: kept $reference"
             continue
         fi
-        echo "reference $name: $REFERENCE_SPP spp at ${WIDTH}x$HEIGHT"
-        # shellcheck disable=SC2086  # flags are words
-        "$FGR" render "$scene" --mode path $flags "${size[@]}" --spp "$REFERENCE_SPP" \
-            --seed "$REFERENCE_SEED" --no-cost-limit -o "$reference" | grep -E '^render_ms' |
-            sed "s/^/  /"
+        # Over fgr's 4096 samples a render, the reference is parts of 4096 with seeds of their
+        # own, which `fgr merge` averages (as a render farm would make it).
+        local parts=$(((reference_spp + 4095) / 4096)) part part_files=()
+        local part_spp=$((reference_spp / parts))
+        echo "reference $name: $((part_spp * parts)) spp at ${WIDTH}x$HEIGHT ($parts of $part_spp)"
+        for ((part = 0; part < parts; ++part)); do
+            local file=$work/ref-$name-$part.exr
+            # shellcheck disable=SC2086  # flags are words
+            "$FGR" render "$scene" --mode path $flags "${size[@]}" --spp "$part_spp" --part \
+                --seed $((REFERENCE_SEED + part)) --no-cost-limit -o "$file" > "$work/ref.log" 2>&1 || {
+                echo "time_to_quality: the reference of $name failed:" >&2
+                cat "$work/ref.log" >&2
+                exit 1
+            }
+            grep -E '^render_ms' "$work/ref.log" | sed "s/^/  /"
+            part_files+=("$file")
+        done
+        "$FGR" merge "${part_files[@]}" -o "$reference" > "$work/ref.log" 2>&1 || {
+            echo "time_to_quality: merging the reference of $name failed:" >&2
+            cat "$work/ref.log" >&2
+            exit 1
+        }
+        rm -f "${part_files[@]}"
     done
 }
 
@@ -156,7 +182,7 @@ measure() {
         local name=${field[0]} scene=${field[1]} scene_flags=${field[2]}
         local reference=$OUT/ref-$name.exr
         [[ -e $reference ]] || { echo "time_to_quality: no $reference (run references first)" >&2; exit 1; }
-        declare -A best=() error=() samples=()
+        declare -A best=() error=() samples=() crossed=()
         local round rung c
         local spp=($SPP_LADDER) thresholds=($THRESHOLD_LADDER)
         local rungs=$((${#spp[@]} > ${#thresholds[@]} ? ${#spp[@]} : ${#thresholds[@]}))
@@ -176,6 +202,8 @@ measure() {
                         run_flags=${flags//\{\}/$budget}
                     fi
                     [[ -n $budget ]] || continue
+                    # Past the threshold the ladder stops; later rounds repeat only its renders.
+                    if [[ -n ${crossed[$c]:-} && -z ${error["$c|$budget"]:-} ]]; then continue; fi
                     local key="$c|$budget" image=$work/image.exr result ms
                     # shellcheck disable=SC2086  # flags are words
                     result=$(render_once "$scene" $scene_flags $run_flags -o "$image")
@@ -186,6 +214,9 @@ measure() {
                     if [[ -z ${error[$key]:-} ]]; then
                         error[$key]=$("$FGR" bench compare "$image" "$reference" | awk '$1 == "one_minus_ssim" { print $2 }')
                         samples[$key]=${result#* }
+                        if awk -v e="${error[$key]}" -v t="$THRESHOLD" 'BEGIN { exit !(e <= t) }'; then
+                            crossed[$c]=1
+                        fi
                     fi
                 done
             done
@@ -200,7 +231,7 @@ measure() {
                 echo "$name,$configuration,$budget,${best[$key]},${error[$key]},${samples[$key]}" >> "$csv"
             done
         done
-        unset best error samples
+        unset best error samples crossed
     done
     cp "$csv" "$OUT/time_to_quality.csv"
     "$FGR" bench quality "$OUT/time_to_quality.csv" --threshold "$THRESHOLD" \
