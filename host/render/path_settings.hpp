@@ -49,6 +49,10 @@ constexpr int kMaxBounces = 1024;
 // takes the smaller launches.
 constexpr int kRegroupLaunchSamples = 16;
 constexpr int kRegroupTimedLaunchSamples = 4;
+// Samples a regrouped launch traces at most under per-pixel limits (an adaptive round,
+// FrameRequest::sample_limits): a late round's few noisy pixels then fill a tile's queue, where
+// launches of 16 samples left them a short queue each and repeated the launch overhead.
+constexpr int kRegroupLimitedLaunchSamples = 256;
 void check_path_settings(const PathSettings& settings);
 
 }  // namespace fgr

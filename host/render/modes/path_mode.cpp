@@ -191,7 +191,8 @@ bool PathMode::regrouped(const PathSettings& settings) const {
 
 int PathMode::launch_samples(const FrameRequest& request) const {
     if (!regrouped(request.path)) return 1;
-    return request.enough ? kRegroupTimedLaunchSamples : kRegroupLaunchSamples;
+    if (request.enough) return kRegroupTimedLaunchSamples;
+    return request.sample_limits.empty() ? kRegroupLaunchSamples : kRegroupLimitedLaunchSamples;
 }
 
 void PathMode::bind_launch(cl::Kernel& kernel, int count) {
