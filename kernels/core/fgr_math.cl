@@ -37,6 +37,16 @@
 #define FGR_POWER_STEPS_AHEAD(e, multiply, square)
 #endif
 
+/* Binary exponentiation: for each bit of e from the lowest, `multiply` folds the base into the
+ * result where the bit is set and `square` squares the base while bits remain; the first steps
+ * written out where that pays. fgr_pown, complex_powi and rho_complex_powi share it, each with
+ * its own multiplication. */
+#define FGR_BINARY_POWER(e, multiply, square)      \
+    FGR_POWER_STEPS_AHEAD(e, multiply, square)     \
+    while ((e) > 0) {                              \
+        FGR_BINARY_POWER_STEP(e, multiply, square) \
+    }
+
 /* x^n for an integer n (the same for every lane): binary exponentiation, exact to a few
  * roundings (n = 7 is four multiplications), in float too: PoCL's float16 pown costs more than
  * the rest of a Mandelbulb iteration together (the canonical view rendered in 2.2x the time). */
@@ -44,12 +54,7 @@ FGR_POWER_FUNCTION real fgr_pown(real x, int n) {
     int e = abs(n);
     real result = fgr_real(1.0f);
     real base = x;
-    FGR_POWER_STEPS_AHEAD(e, result *= base, base *= base)
-    while (e > 0) {
-        if (e & 1) result *= base;
-        e >>= 1;
-        if (e > 0) base *= base;
-    }
+    FGR_BINARY_POWER(e, result *= base, base *= base)
     return n < 0 ? 1.0f / result : result;
 }
 

@@ -31,13 +31,7 @@ FGR_POWER_FUNCTION complex_packet complex_powi(complex_packet a, int n) {
     complex_packet result = a;
     complex_packet base = a;
     int remaining = n - 1;
-    FGR_POWER_STEPS_AHEAD(remaining, result = complex_mul(result, base),
-                          base = complex_mul(base, base))
-    while (remaining > 0) {
-        if (remaining & 1) result = complex_mul(result, base);
-        remaining >>= 1;
-        if (remaining > 0) base = complex_mul(base, base);
-    }
+    FGR_BINARY_POWER(remaining, result = complex_mul(result, base), base = complex_mul(base, base))
     return result;
 }
 
@@ -84,18 +78,13 @@ inline rho_complex rho_complex_mul(rho_complex u, rho_complex v, real rho2) {
     return w;
 }
 
-/* c^n for integer n >= 1, by binary exponentiation as complex_powi. */
+/* c^n for integer n >= 1, by binary exponentiation. */
 FGR_POWER_FUNCTION rho_complex rho_complex_powi(rho_complex c, int n, real rho2) {
     rho_complex result = c;
     rho_complex base = c;
     int remaining = n - 1;
-    FGR_POWER_STEPS_AHEAD(remaining, result = rho_complex_mul(result, base, rho2),
-                          base = rho_complex_mul(base, base, rho2))
-    while (remaining > 0) {
-        if (remaining & 1) result = rho_complex_mul(result, base, rho2);
-        remaining >>= 1;
-        if (remaining > 0) base = rho_complex_mul(base, base, rho2);
-    }
+    FGR_BINARY_POWER(remaining, result = rho_complex_mul(result, base, rho2),
+                     base = rho_complex_mul(base, base, rho2))
     return result;
 }
 
@@ -116,10 +105,7 @@ FGR_POWER_FUNCTION vec3 bulb_integer_power(vec3 z, int n, int latitude_form) {
     complex_packet azimuth;
     if ((n & 1) == 0) {
         const real inv_rho2 = select(1.0f / rho2, fgr_real(0.0f), on_axis);
-        complex_packet twice;
-        twice.re = select((x2 - y2) * inv_rho2, fgr_real(1.0f), on_axis);
-        twice.im = 2.0f * z.x * z.y * inv_rho2;
-        azimuth = complex_powi(twice, n / 2);
+        azimuth = complex_powi(unit_complex(x2 - y2, 2.0f * z.x * z.y, inv_rho2, 1.0f), n / 2);
         const real z2 = z.z * z.z;
         rho_complex square;
         square.a = latitude_form ? rho2 - z2 : z2 - rho2;
