@@ -15,14 +15,13 @@
 # Mandelbulb's 4096 (0.0008 between two).
 #
 # Each configuration is one line of the table below: its name, the flags it adds to
-# `fgr render SCENE --mode path`, and what its ladder varies: "spp" (1, 2, 4 ... 1024 samples per
-# pixel) or "threshold" (--noise-threshold T from 0.3 down to 0.005, the sample cap
+# `fgr render SCENE --mode path`, and what its ladder varies: "spp" (1, 2, 4 ... 4096 samples per
+# pixel) or "threshold" (--noise-threshold T from 0.3 down to 0.002, the sample cap
 # --spp THRESHOLD_CAP). A configuration's ladder stops at the first render at or below the
 # threshold: the crossing lies between it and the one before. Every render of a scene has the
-# same seed, the reference another. Each
-# render's time is the render_ms fgr prints (the denoiser's time included), the best of
-# REPEATS rounds that alternate the configurations; its error is `fgr bench compare`'s 1 - SSIM of
-# the display luma against the scene's reference. A configuration whose flags this fgr does not
+# same seed, the reference others. Each render's time is the render_ms fgr prints (the
+# denoiser's time included), the best of REPEATS rounds that alternate the configurations; its
+# error is `fgr bench compare`'s 1 - SSIM of the display luma against the scene's reference. A configuration whose flags this fgr does not
 # have is left out with a note, and so is one that adds to regrouping where fgr has none (no
 # --no-regroup); the baseline then runs without --no-regroup (it is the only path tracer there is).
 #
@@ -35,9 +34,8 @@
 # Environment: FGR (default build/bin/fgr), OUT, WIDTH x HEIGHT (160x120), REFERENCE_SPP (each
 # scene's own, below), REPEATS (2), THRESHOLD (0.005), SPP_LADDER ("1 2 4 ... 4096", fgr's most),
 # THRESHOLD_LADDER ("0.3 0.2 0.1 0.05 0.03 0.02 0.01 0.005 0.003 0.002"), THRESHOLD_CAP (4096),
-# SCENES (a subset of the scene
-# names below), QUICK=1 (48x36, 64-spp references, short ladders, one round: tries the harness in
-# a minute, into OUT=/tmp/fgr-quality-quick unless OUT is set).
+# SCENES (a subset of the scene names below), QUICK=1 (48x36, 64-spp references, short ladders,
+# one round: tries the harness in a minute, into OUT=/tmp/fgr-quality-quick unless OUT is set).
 set -euo pipefail
 export LC_ALL=C
 
