@@ -21,7 +21,8 @@ namespace {
 constexpr int kWidth = 48;
 constexpr int kHeight = 32;
 constexpr size_t kPixels = size_t(kWidth) * kHeight;
-const DenoiseMethod kMethods[] = {DenoiseMethod::Atrous, DenoiseMethod::NlMeans};
+const DenoiseMethod kMethods[] = {DenoiseMethod::Atrous, DenoiseMethod::NlMeans,
+                                  DenoiseMethod::Regression};
 
 // A synthetic render: colour, the variance of its estimate, and first-hit features.
 struct Planes {
