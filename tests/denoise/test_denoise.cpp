@@ -130,6 +130,35 @@ TEST(Denoise, LowersTheErrorOfANoisyImage) {
     }
 }
 
+// A fractal's surface seen at a fold a pixel: the normal tilts from each pixel to the next by
+// random angles about two axes, so that few pixels of a window face alike, and the shading
+// follows it (Lambert, linear in the normal). The mean can only mix pixels that face alike; the
+// regression fits the shading as it changes with the normal and takes the noise out of all.
+TEST(Denoise, RegressionFollowsShadingThatTurnsWithTheNormal) {
+    Planes reference;
+    Noise angles(11);
+    const float light[3] = {0.48f, 0.36f, 0.8f};
+    for (size_t p = 0; p < kPixels; ++p) {
+        const float a = 0.6f * angles.next(), b = 0.6f * angles.next();
+        const float normal[3] = {std::sin(a) * std::cos(b), std::sin(b), std::cos(a) * std::cos(b)};
+        const float lambert = normal[0] * light[0] + normal[1] * light[1] + normal[2] * light[2];
+        for (size_t c = 0; c < 3; ++c) {
+            reference.albedo[3 * p + c] = 0.6f;
+            reference.colour[3 * p + c] = 0.6f * (0.2f + 0.6f * lambert);
+            reference.normal[3 * p + c] = normal[c];
+        }
+        reference.depth[p] = 2.0f;
+    }
+    const Planes input = noisy(reference, 0.05f, 5);
+    const double before = mean_squared_error(input.colour, reference.colour);
+    const double mean =
+        mean_squared_error(denoise(input.input(), {DenoiseMethod::NlMeans, 0}), reference.colour);
+    const double fit = mean_squared_error(denoise(input.input(), {DenoiseMethod::Regression, 0}),
+                                          reference.colour);
+    EXPECT_LT(fit, 0.25 * before);
+    EXPECT_LT(fit, 0.5 * mean);
+}
+
 TEST(Denoise, KeepsAnAlbedoEdgeWithinAPixel) {
     // Left of column 24 a dark albedo, right of it a bright one, the same flat lighting; noise
     // strong enough that a filter blind to albedo would blur the step over several pixels.
