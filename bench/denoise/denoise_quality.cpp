@@ -191,7 +191,8 @@ int main(int argc, char** argv) {
     };
     printf("%dx%d, detail pixels %.1f%%\n", w, h, 100.0 * masked / n);
     report("noisy", mean, 0);
-    for (auto method : {fgr::DenoiseMethod::Atrous, fgr::DenoiseMethod::NlMeans}) {
+    for (auto method : {fgr::DenoiseMethod::Atrous, fgr::DenoiseMethod::NlMeans,
+                        fgr::DenoiseMethod::Regression}) {
         fgr::DenoiseInput in{w, h, mean, var, albedo, normal, depth, alpha};
         double best = 1e9;
         std::vector<float> out;
@@ -204,7 +205,9 @@ int main(int argc, char** argv) {
         }
         report(fgr::denoise_method_name(method), out, best);
         fgr::DenoiseInput blind{w, h, mean, var};
-        report(method == fgr::DenoiseMethod::Atrous ? "a-t blind" : "nlm blind",
-               fgr::denoise(blind, {method, 0}), 0);
+        const char* blind_name = method == fgr::DenoiseMethod::Atrous    ? "a-t blind"
+                                 : method == fgr::DenoiseMethod::NlMeans ? "nlm blind"
+                                                                         : "reg blind";
+        report(blind_name, fgr::denoise(blind, {method, 0}), 0);
     }
 }
