@@ -14,6 +14,7 @@
 #include <system_error>
 #include <utility>
 
+#include "render/sample_budget.hpp"
 #include "util/files.hpp"
 #include "util/strings.hpp"
 
@@ -54,6 +55,7 @@ constexpr std::array kEventSyntax{
     EventSyntax{"browser_search", ReplayAction::BrowserSearch, 1, 1, "browser_search TEXT"},
     EventSyntax{"browser_pick", ReplayAction::BrowserPick, 1, 1, "browser_pick N"},
     EventSyntax{"wait_thumbnails", ReplayAction::WaitThumbnails, 0, 0, "wait_thumbnails"},
+    EventSyntax{"wait_samples", ReplayAction::WaitSamples, 1, 1, "wait_samples N"},
     EventSyntax{"hybrid_add", ReplayAction::HybridAdd, 1, 1, "hybrid_add NAME"},
     EventSyntax{"hybrid_remove", ReplayAction::HybridRemove, 1, 1, "hybrid_remove N"},
     EventSyntax{"hybrid_move", ReplayAction::HybridMove, 2, 2, "hybrid_move N OFFSET"},
@@ -195,6 +197,9 @@ void read_arguments(const LineParser& parser, const std::vector<std::string>& ar
         case ReplayAction::BrowserPick:
             event.count = parser.integer(args[0], "N", 1, kMaxPick) - 1;
             break;
+        case ReplayAction::WaitSamples:
+            event.count = parser.integer(args[0], "N", 1, kMaxSamples);
+            break;
         case ReplayAction::HybridRemove:
             event.slot = parser.integer(args[0], "N", 1, kMaxSlotNumber) - 1;
             break;
@@ -275,7 +280,7 @@ std::vector<ReplayEvent> load_replay(const std::filesystem::path& file) {
 
 bool is_wait(ReplayAction action) {
     return action == ReplayAction::WaitIdle || action == ReplayAction::WaitReload ||
-           action == ReplayAction::WaitThumbnails;
+           action == ReplayAction::WaitThumbnails || action == ReplayAction::WaitSamples;
 }
 
 ReplayClock::ReplayClock(std::vector<ReplayEvent> events) : events_(std::move(events)) {}

@@ -62,7 +62,8 @@ enum class ReplayAction {
     HybridMove,
     HybridRepeat,
     HybridSave,
-    SetParameter
+    SetParameter,
+    WaitSamples
 };
 
 struct ReplayEvent {
@@ -94,7 +95,7 @@ std::vector<ReplayEvent> load_replay(const std::filesystem::path& file);
 bool is_wait(ReplayAction action);
 
 // Plays a script against a clock: due events come out in order, and a wait (WaitIdle, WaitReload,
-// WaitThumbnails)
+// WaitThumbnails, WaitSamples)
 // holds everything after it until resume() is called (the viewer calls it once what the wait
 // names has happened).
 class ReplayClock {

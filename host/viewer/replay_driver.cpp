@@ -60,6 +60,7 @@ void ReplayDriver::feed(double now_seconds) {
         if (still_waiting()) return;
         thumbnails_awaited_ = false;
         awaited_changes_.reset();
+        awaited_samples_.reset();
         window_size_.reset();
         clock_.resume(now_seconds);
     }
@@ -73,6 +74,7 @@ bool ReplayDriver::window_size_pending() const {
 bool ReplayDriver::still_waiting() const {
     if (thumbnails_awaited_) return !host_.thumbnails_done();
     if (awaited_changes_) return host_.changes_handled() <= *awaited_changes_;
+    if (awaited_samples_) return host_.full_size_samples() < *awaited_samples_;
     return !host_.view_idle();
 }
 
@@ -100,6 +102,9 @@ void ReplayDriver::push(const ReplayEvent& event) {
             break;
         case ReplayAction::WaitThumbnails:
             thumbnails_awaited_ = true;
+            break;
+        case ReplayAction::WaitSamples:
+            awaited_samples_ = event.count;
             break;
         case ReplayAction::Quit:
             host_.quit();

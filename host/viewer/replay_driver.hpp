@@ -23,6 +23,8 @@ struct ReplayHost {
     std::function<void(int width, int height)> resize_window;
     std::function<bool()> view_idle;        // wait_idle
     std::function<bool()> thumbnails_done;  // wait_thumbnails
+    // wait_samples: the samples (passes) of the frame on screen if it is full size, else 0.
+    std::function<int()> full_size_samples;
     // wait_reload: the count of changes to watched files dealt with so far.
     std::function<uint64_t()> changes_handled;
     std::function<void()> quit;
@@ -57,6 +59,8 @@ private:
     bool thumbnails_awaited_ = false;  // wait_thumbnails is holding the script
     // The count of changes dealt with when wait_reload began: the script goes on once it grows.
     std::optional<uint64_t> awaited_changes_;
+    // The samples wait_samples holds the script for, until the frame on screen has them.
+    std::optional<int> awaited_samples_;
     // The window size the last resize asked for, until the next wait is over.
     std::optional<std::pair<int, int>> window_size_;
 };

@@ -297,6 +297,8 @@ ReplayHost ViewerApp::replay_host() {
         .resize_window = [this](int width, int height) { window_.set_size(width, height); },
         .view_idle = [this] { return view_idle(); },
         .thumbnails_done = [this] { return browser_.thumbnails_done(); },
+        .full_size_samples =
+            [this] { return shown_ && shown_->scale >= 1.0f ? shown_->samples : 0; },
         .changes_handled = [this] { return reloader_.changes_handled(); },
         .quit = [this] { quit_ = true; },
         .browser_event = [this](const ReplayEvent& event) { browser_.apply_replay_event(event); },

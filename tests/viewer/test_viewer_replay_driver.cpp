@@ -26,6 +26,7 @@ struct FakeViewer {
     std::pair<int, int> window_size{400, 300};
     bool view_idle = false;
     bool thumbnails_done = false;
+    int full_size_samples = 0;
     uint64_t changes_handled = 0;
     bool quit = false;
     std::vector<std::pair<int, int>> resizes;
@@ -40,6 +41,7 @@ struct FakeViewer {
             .resize_window = [this](int w, int h) { resizes.emplace_back(w, h); },
             .view_idle = [this] { return view_idle; },
             .thumbnails_done = [this] { return thumbnails_done; },
+            .full_size_samples = [this] { return full_size_samples; },
             .changes_handled = [this] { return changes_handled; },
             .quit = [this] { quit = true; },
             .browser_event = [this](const ReplayEvent& e) { browser_events.push_back(e.action); },
@@ -106,6 +108,19 @@ TEST_F(ViewerReplayDriver, WaitIdleHoldsTheScriptUntilTheViewIsIdle) {
     driver.feed(1.0);
     EXPECT_FALSE(viewer.quit);
     viewer.view_idle = true;
+    driver.feed(2.0);
+    EXPECT_TRUE(viewer.quit);
+}
+
+TEST_F(ViewerReplayDriver, WaitSamplesHoldsTheScriptUntilTheFullSizeFrameHasThem) {
+    FakeViewer viewer;
+    viewer.view_idle = true;  // not what wait_samples waits for
+    ReplayDriver driver(script("0 wait_samples 3\n0 quit\n"), viewer.host());
+    driver.feed(0.0);
+    viewer.full_size_samples = 2;
+    driver.feed(1.0);
+    EXPECT_FALSE(viewer.quit);
+    viewer.full_size_samples = 3;
     driver.feed(2.0);
     EXPECT_TRUE(viewer.quit);
 }
