@@ -275,7 +275,8 @@ std::vector<float> atrous(const Planes& planes, const DenoiseSettings& settings)
 // (Regression). The regressors are 1 and the feature differences q - p: normal (3), albedo (3)
 // and depth (relative to the pixel's, over the window's reach); misses have none but the 1.
 constexpr int kRegressors = 8;
-constexpr int kGramTerms = kRegressors * (kRegressors + 1) / 2;
+// The upper triangle of the normal equations' matrix for `regressors` regressors.
+constexpr int gram_terms(int regressors) { return regressors * (regressors + 1) / 2; }
 // Ridge on the feature coefficients, relative to the sum of the weights: enough to keep a window
 // whose features do not vary (the sky, a flat wall) solvable, too little to bias a fit that has
 // the data (measured: 1e-2 changes nothing, 1e-1 blurs).
@@ -356,7 +357,7 @@ bool solve_fit(const float* gram, const float* moments, float* rgb) {
 // with them: the weighted mean, or the first-order regression.
 std::vector<float> local_regression(const Planes& planes, const DenoiseSettings& settings) {
     const LocalFit fit = local_fit(settings.method);
-    const int terms = fit.regressors * (fit.regressors + 1) / 2;
+    const int terms = gram_terms(fit.regressors);
     const std::vector<float> variance = smoothed_variance(planes);
     const int w = planes.width, h = planes.height;
     std::vector<float> out(planes.colour.size());

@@ -20,7 +20,7 @@
 //            renderings", EGSR 2016) and Moon, Carr and Yoon's weighted local regression (2014).
 //            Shading on a fractal changes from pixel to pixel with the normal; the fit follows
 //            that change, so neighbours whose normals differ still lend their samples, where the
-//            mean has to leave them out. About twice the error reduction of the mean on the
+//            mean has to leave them out. About 1.6 times the error reduction of the mean on the
 //            Mandelbulb; the default for stills and videos.
 //
 // In all three a neighbour's weight falls to zero when its colour differs from the pixel's by more
