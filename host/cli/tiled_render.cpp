@@ -179,6 +179,7 @@ int render_tiled(const Scene& scene, const FrameRequest& request, const ComputeD
     const InterruptScope interrupt_scope;
     FrameRequest tile_request = whole;
     tile_request.cancel = interrupted;
+    tile_request.cancel_response = CancelResponse::Batch;
     const TiledRender render = [&] {
         try {
             return TiledRender(renderer, tile_request, output,

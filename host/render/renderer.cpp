@@ -151,42 +151,19 @@ void unpack_common_planes(std::span<const float> planes, const TileLayout& layou
 // its code per local size), keeping JIT time out of render_ms.
 int work_group_size(const ComputeDevice& device) { return device.info.is_cpu ? 8 : 64; }
 
-// A cancellable frame runs in this many launches.
-constexpr int kCancelBands = 32;
-// A long frame that reports its progress runs in about this many launches in all (the samples'
-// launches times bands).
-constexpr int kProgressLaunches = 64;
-// A frame of fewer pixel samples reports its progress a sample at a time, however few it has: it
-// is short. Splitting a sample into bands costs a launch at a global offset, for which PoCL
-// compiles the kernel's work-group function once more (about half a second, then cached): worth
-// it only where it is a small part of the frame.
-constexpr long kBandedPixelSamples = 4L << 20;
-
-// The bands launch_tiles splits a launch into: a cancellable one into at least kCancelBands, so
-// that cancelling costs at most one band.
-int launch_bands(const std::function<bool()>& cancel, int bands) {
-    return cancel ? std::max(bands, kCancelBands) : bands;
-}
-
-// Tiles a band of launch_tiles holds: whole work-groups, about 1/bands of them.
-int band_tiles(int tiles, int group, int bands) {
-    const int groups = (tiles + group - 1) / group;
-    return std::max(1, (groups + bands - 1) / bands) * group;
-}
-
-// The bands each launch of samples is split into: when a long frame reports its progress, enough
-// for about kProgressLaunches in all, at most kCancelBands; otherwise one. A frame is long by its
-// estimated cost (render/render_cost.hpp), as many steps as kBandedPixelSamples plain samples or
-// more, so that a costly frame of few pixels (an IFS scene whose rays open many nodes) reports its
-// progress too.
-int progress_bands(const FrameRequest& request, const PixelRegion& region, const Scene& scene,
-                   RenderMode mode, int sample_launches) {
-    if (!request.on_progress) return 1;
-    const double pixel_samples = double(region.width) * region.height * request.samples;
+// The bands each launch of `per_launch` samples is split into (render/launch_bands.hpp), its
+// work weighed by the frame's estimated cost (render/render_cost.hpp), so that a costly launch of
+// few pixels (an IFS scene whose rays open many nodes) is split too.
+int frame_bands(const FrameRequest& request, const PixelRegion& region, const Scene& scene,
+                RenderMode mode, int per_launch) {
+    const BandNeeds needs{static_cast<bool>(request.on_progress), static_cast<bool>(request.cancel),
+                          request.cancel_response};
+    if (!needs.progress && !needs.cancellable) return 1;
     const double weight = std::max(
         1.0, estimate_render_cost(scene, request, mode).steps_per_sample / kPlainSampleSteps);
-    if (pixel_samples * weight < double(kBandedPixelSamples)) return 1;
-    return std::clamp((kProgressLaunches + sample_launches - 1) / sample_launches, 1, kCancelBands);
+    const double pixel_samples =
+        double(region.width) * region.height * std::min(per_launch, request.samples);
+    return launch_bands(pixel_samples * weight, needs);
 }
 
 cl::NDRange global_range(int items, int group) {
@@ -319,14 +296,13 @@ cl::Buffer Renderer::upload(const std::vector<float>& values) {
 bool Renderer::launch_tiles(cl::Kernel& kernel, int tiles, int group,
                             const std::function<bool()>& cancel, int bands,
                             const std::function<void()>& band_done) {
-    bands = launch_bands(cancel, bands);
     if (bands <= 1) {
+        if (cancel && cancel()) return false;
         device_.queue.enqueueNDRangeKernel(kernel, cl::NullRange, global_range(tiles, group),
                                            cl::NDRange(group));
-        if (band_done) {
-            device_.queue.finish();
-            band_done();
-        }
+        // A cancel is polled before the next launch: this one must end first.
+        if (band_done || cancel) device_.queue.finish();
+        if (band_done) band_done();
         return true;
     }
     // Bands of whole work-groups, offset through the global work offset (get_global_id includes
@@ -401,9 +377,9 @@ Frame Renderer::render(const FrameRequest& request) {
     // A mode may trace several samples a launch (the path tracer's regrouped packets).
     const int per_launch = std::max(1, mode_->launch_samples(request));
     const int sample_launches = (request.samples + per_launch - 1) / per_launch;
-    const int bands = progress_bands(request, region, scene_, switches_.mode, sample_launches);
-    // The launches in all, as launch_tiles makes them (a cancellable frame's bands included).
-    const int band = band_tiles(tiles, group, launch_bands(request.cancel, bands));
+    const int bands = frame_bands(request, region, scene_, switches_.mode, per_launch);
+    // The launches in all, as launch_tiles makes them.
+    const int band = band_tiles(tiles, group, bands);
     const long launches = static_cast<long>(sample_launches) * ((tiles + band - 1) / band);
     long launched = 0;
     std::function<void()> band_done;

@@ -16,6 +16,7 @@
 #include "device/program_cache.hpp"
 #include "image/display.hpp"
 #include "image/image_io.hpp"
+#include "render/launch_bands.hpp"
 #include "render/path_settings.hpp"
 #include "scene/scene.hpp"
 
@@ -65,9 +66,13 @@ struct FrameRequest {
     // few samples and many pixels, each launch split into bands of tiles, so that it reports its
     // progress too.
     std::function<void(long done, long total)> on_progress{};
-    // Polled between bands of tiles, when set: returning true abandons the frame
+    // Polled between launches and bands of tiles, when set: returning true abandons the frame
     // (Frame::cancelled), so an interactive caller never waits for a slow frame it no longer wants.
     std::function<bool()> cancel{};
+    // How soon `cancel` must be obeyed (render/launch_bands.hpp): at once, in bands of every
+    // launch, or, for a batch render a signal may stop, within a fraction of a second, so that
+    // its launches stay whole where they are short.
+    CancelResponse cancel_response = CancelResponse::Interactive;
     // Render mode "path" only: bounces, strategies and the environment.
     PathSettings path{};
     // Polled after each finished launch (see on_sample), when set: returning true ends the render
@@ -249,8 +254,8 @@ private:
     void warm_up();
     cl::Buffer upload(const std::vector<float>& values);
     // Launches `kernel` (the render kernel or the mode's resolve kernel) over `tiles`, in `bands`
-    // launches (at least kCancelBands when `cancel` is set), calling `band_done` (if set) after
-    // each; false when `cancel` (if set) asked to stop.
+    // launches, calling `band_done` (if set) after each; false when `cancel` (if set), polled
+    // before each, asked to stop.
     bool launch_tiles(cl::Kernel& kernel, int tiles, int group, const std::function<bool()>& cancel,
                       int bands = 1, const std::function<void()>& band_done = {});
     // Points as the probes take them (FGR_PROBE_POINT_PLANES: x, y, z as the nearest floats,

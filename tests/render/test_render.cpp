@@ -273,6 +273,33 @@ TEST_F(RenderTest, CancelStopsAFrameAndANeverCancellingHookChangesNothing) {
     EXPECT_EQ(banded.hits, plain.hits);
 }
 
+// A batch frame (a part, a tile, a video frame, which a signal may stop) is polled between its
+// launches, and a launch as short as these stays whole instead of waiting on its slowest tile
+// in each of many bands.
+TEST_F(RenderTest, ABatchCancelIsPolledBetweenWholeLaunches) {
+    FrameRequest request{64, 48, mandelbulb_->cameras.front().view,
+                         default_param_values(*mandelbulb_)};
+    request.samples = 6;  // a launch each
+    const Frame plain = render(*mandelbulb_, request);
+    request.cancel_response = CancelResponse::Batch;
+    int polls = 0;
+    request.cancel = [&] { return ++polls > 3; };
+    const Frame stopped = render(*mandelbulb_, request);
+    EXPECT_TRUE(stopped.cancelled);
+    EXPECT_EQ(polls, 4) << "polled once per launch until it said stop";
+    polls = 0;
+    request.cancel = [&] {
+        ++polls;
+        return false;
+    };
+    const Frame whole = render(*mandelbulb_, request);
+    EXPECT_FALSE(whole.cancelled);
+    // Before each sample's launch, and before the mode's resolve launch if it has one.
+    EXPECT_GE(polls, request.samples);
+    EXPECT_LE(polls, request.samples + 1);
+    EXPECT_EQ(whole.image.rgb, plain.image.rgb);
+}
+
 // `fgr render --stats`: counting the work changes no pixel, and the counts add up.
 TEST_F(RenderTest, MarchStatsCountStepsAndRaysThatRanOutOfSteps) {
     FrameRequest request{96, 72, mandelbulb_->cameras.front().view,

@@ -317,6 +317,7 @@ PartResult render_part(Renderer& renderer, const FrameRequest& request,
     std::vector<float> band;
     FrameRequest launch = request;
     launch.cancel = settings.interrupted;
+    launch.cancel_response = CancelResponse::Batch;
     for (int b = 0; b < plan.bands(); ++b) {
         const int band_y = region.y + b * plan.band_rows;
         const int rows = std::min(plan.band_rows, region.y + region.height - band_y);

@@ -233,6 +233,7 @@ TiledResult render_tiled_still(Renderer& renderer, const FrameRequest& request,
                                const TiledOutput& output, const TiledSettings& settings) {
     FrameRequest tile_request = request;
     tile_request.cancel = settings.interrupted;
+    tile_request.cancel_response = CancelResponse::Batch;
     const TiledRender render(renderer, tile_request, output, settings.tile_size);
     TiledFile file(render, output, settings.resume);
     TiledResult result;

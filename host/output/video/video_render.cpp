@@ -45,7 +45,10 @@ std::filesystem::path video_frame_file(const VideoOutput& output, int index) {
 VideoResult render_video(const VideoFrames& frames, FrameRequest request,
                          const VideoFrameRender& render, const VideoOutput& output,
                          FrameDispatch& dispatch, const VideoHooks& hooks) {
-    if (hooks.interrupted) request.cancel = hooks.interrupted;
+    if (hooks.interrupted) {
+        request.cancel = hooks.interrupted;
+        request.cancel_response = CancelResponse::Batch;
+    }
     const bool frame_files = !output.frames_directory.empty();
     // What travels from the rank that rendered a frame is what gets written: the display image,
     // and the planes too when frame files are written (an EXR's layers, a 16-bit PNG's colour).

@@ -1,0 +1,23 @@
+// SPDX-License-Identifier: Apache-2.0
+#include "render/launch_bands.hpp"
+
+#include <algorithm>
+#include <cmath>
+
+namespace fgr {
+
+int launch_bands(double launch_work, const BandNeeds& needs) {
+    if (needs.cancellable && needs.response == CancelResponse::Interactive) {
+        return kInteractiveBands;
+    }
+    if (!needs.progress && !needs.cancellable) return 1;
+    const double bands = std::ceil(std::max(launch_work, 0.0) / kBandPixelSamples);
+    return static_cast<int>(std::clamp(bands, 1.0, double(kInteractiveBands)));
+}
+
+int band_tiles(int tiles, int group, int bands) {
+    const int groups = (tiles + group - 1) / group;
+    return std::max(1, (groups + bands - 1) / bands) * group;
+}
+
+}  // namespace fgr
