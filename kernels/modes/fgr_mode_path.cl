@@ -542,9 +542,9 @@ inline mask take_queued_paths(mask free_lanes, int* next, int paths, int first,
  * lanes are added one after the other: a vector scatter would keep only one of them. Each path's
  * values reach its pixel here and nowhere else. */
 inline void add_ended_paths(float sums[PATH_SUMS][FGR_WIDTH], float* slot_depth, mask ended,
-                            path_lanes path, const int* lane_slot, const float* lane_sample,
+                            const path_lanes* path, const int* lane_slot, const float* lane_sample,
                             path_settings settings) {
-    vec3 radiance = path.radiance;
+    vec3 radiance = path->radiance;
     if (settings.radiance_clamp > 0.0f) {
         const real largest = fmax(fmax(radiance.x, radiance.y), radiance.z);
         radiance = v3_scale(radiance, select(fgr_real(1.0f), settings.radiance_clamp / largest,
@@ -554,19 +554,19 @@ inline void add_ended_paths(float sums[PATH_SUMS][FGR_WIDTH], float* slot_depth,
     fgr_store(radiance.x, 0, values[PATH_SUM_RADIANCE]);
     fgr_store(radiance.y, 0, values[PATH_SUM_RADIANCE + 1]);
     fgr_store(radiance.z, 0, values[PATH_SUM_RADIANCE + 2]);
-    fgr_store(path.first_albedo.x, 0, values[PATH_SUM_ALBEDO]);
-    fgr_store(path.first_albedo.y, 0, values[PATH_SUM_ALBEDO + 1]);
-    fgr_store(path.first_albedo.z, 0, values[PATH_SUM_ALBEDO + 2]);
-    fgr_store(path.first_normal.x, 0, values[PATH_SUM_NORMAL]);
-    fgr_store(path.first_normal.y, 0, values[PATH_SUM_NORMAL + 1]);
-    fgr_store(path.first_normal.z, 0, values[PATH_SUM_NORMAL + 2]);
-    fgr_store(path.alpha, 0, values[PATH_SUM_ALPHA]);
-    fgr_store(convert_real(path.steps), 0, values[PATH_SUM_LANE_STEPS]);
+    fgr_store(path->first_albedo.x, 0, values[PATH_SUM_ALBEDO]);
+    fgr_store(path->first_albedo.y, 0, values[PATH_SUM_ALBEDO + 1]);
+    fgr_store(path->first_albedo.z, 0, values[PATH_SUM_ALBEDO + 2]);
+    fgr_store(path->first_normal.x, 0, values[PATH_SUM_NORMAL]);
+    fgr_store(path->first_normal.y, 0, values[PATH_SUM_NORMAL + 1]);
+    fgr_store(path->first_normal.z, 0, values[PATH_SUM_NORMAL + 2]);
+    fgr_store(path->alpha, 0, values[PATH_SUM_ALPHA]);
+    fgr_store(convert_real(path->steps), 0, values[PATH_SUM_LANE_STEPS]);
     /* alpha is 1 or 0 for one path: the whole radiance of a path whose camera ray hit. */
-    fgr_store(radiance.x * path.alpha, 0, values[PATH_SUM_FOREGROUND]);
-    fgr_store(radiance.y * path.alpha, 0, values[PATH_SUM_FOREGROUND + 1]);
-    fgr_store(radiance.z * path.alpha, 0, values[PATH_SUM_FOREGROUND + 2]);
-    fgr_store(path.depth, 0, depth);
+    fgr_store(radiance.x * path->alpha, 0, values[PATH_SUM_FOREGROUND]);
+    fgr_store(radiance.y * path->alpha, 0, values[PATH_SUM_FOREGROUND + 1]);
+    fgr_store(radiance.z * path->alpha, 0, values[PATH_SUM_FOREGROUND + 2]);
+    fgr_store(path->depth, 0, depth);
     lanes_of_mask(ended, ended_lane);
     for (int lane = 0; lane < FGR_WIDTH; ++lane) {
         if (ended_lane[lane] == 0.0f) continue;
@@ -890,7 +890,7 @@ inline void render_regrouped(int tile, FGR_RENDER_ARGS, __constant const float* 
             if (fgr_any(escaped)) {
                 add_escaped_radiance(&path, escaped, lights, settings, mis, ENVIRONMENT_PASS);
             }
-            add_ended_paths(sums, slot_depth, ends, path, lane_slot, lane_sample, settings);
+            add_ended_paths(sums, slot_depth, ends, &path, lane_slot, lane_sample, settings);
             escaped = ending = (mask)(0);
             fresh =
                 take_queued_paths(ends, &next, paths, first, slot_limit, lane_slot, lane_sample);
