@@ -6,11 +6,13 @@
 
 namespace fgr {
 
+bool bands_follow_work(const BandNeeds& needs) {
+    const bool interactive = needs.cancellable && needs.response == CancelResponse::Interactive;
+    return !interactive && (needs.progress || needs.cancellable);
+}
+
 int launch_bands(double launch_work, const BandNeeds& needs) {
-    if (needs.cancellable && needs.response == CancelResponse::Interactive) {
-        return kInteractiveBands;
-    }
-    if (!needs.progress && !needs.cancellable) return 1;
+    if (!bands_follow_work(needs)) return needs.cancellable ? kInteractiveBands : 1;
     const double bands = std::ceil(std::max(launch_work, 0.0) / kBandPixelSamples);
     return static_cast<int>(std::clamp(bands, 1.0, double(kInteractiveBands)));
 }

@@ -34,6 +34,11 @@ struct BandNeeds {
     CancelResponse response = CancelResponse::Interactive;
 };
 
+// Whether launch_bands depends on the launch's work: for progress reports and batch cancels,
+// not for an interactive cancel (always kInteractiveBands) or a frame that needs no bands (1), so
+// that those need no cost estimate.
+bool bands_follow_work(const BandNeeds& needs);
+
 // Bands a launch of `launch_work` plain pixel samples is split into: kInteractiveBands for an
 // interactively cancellable frame; for progress reports or a batch cancel, bands of about
 // kBandPixelSamples each (1 for a launch of less), at most kInteractiveBands; otherwise 1.

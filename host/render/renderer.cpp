@@ -153,12 +153,13 @@ int work_group_size(const ComputeDevice& device) { return device.info.is_cpu ? 8
 
 // The bands each launch of `per_launch` samples is split into (render/launch_bands.hpp), its
 // work weighed by the frame's estimated cost (render/render_cost.hpp), so that a costly launch of
-// few pixels (an IFS scene whose rays open many nodes) is split too.
+// few pixels (an IFS scene whose rays open many nodes) is split too. The viewer's frames, whose
+// bands do not follow the work, skip the estimate (an IFS scene's searches a depth).
 int frame_bands(const FrameRequest& request, const PixelRegion& region, const Scene& scene,
                 RenderMode mode, int per_launch) {
     const BandNeeds needs{static_cast<bool>(request.on_progress), static_cast<bool>(request.cancel),
                           request.cancel_response};
-    if (!needs.progress && !needs.cancellable) return 1;
+    if (!bands_follow_work(needs)) return launch_bands(0.0, needs);  // no estimate needed
     const double weight = std::max(
         1.0, estimate_render_cost(scene, request, mode).steps_per_sample / kPlainSampleSteps);
     const double pixel_samples =

@@ -95,9 +95,8 @@ std::vector<ReplayEvent> load_replay(const std::filesystem::path& file);
 bool is_wait(ReplayAction action);
 
 // Plays a script against a clock: due events come out in order, and a wait (WaitIdle, WaitReload,
-// WaitThumbnails, WaitSamples)
-// holds everything after it until resume() is called (the viewer calls it once what the wait
-// names has happened).
+// WaitThumbnails, WaitSamples) holds everything after it until resume() is called (the viewer
+// calls it once what the wait names has happened).
 class ReplayClock {
 public:
     explicit ReplayClock(std::vector<ReplayEvent> events);

@@ -19,11 +19,14 @@ TEST(LaunchBands, AnInteractiveCancelSplitsEveryLaunchWhateverItsSize) {
     EXPECT_EQ(launch_bands(1.0, kInteractiveCancel), kInteractiveBands);
     EXPECT_EQ(launch_bands(1e12, kInteractiveCancel), kInteractiveBands);
     EXPECT_EQ(launch_bands(1.0, {true, true, CancelResponse::Interactive}), kInteractiveBands);
+    // So the viewer's frames need no cost estimate.
+    EXPECT_FALSE(bands_follow_work(kInteractiveCancel));
 }
 
 TEST(LaunchBands, ProgressAndBatchCancelsSplitALaunchOnlyAsFarAsItsWorkNeeds) {
     for (const BandNeeds& needs :
          {kProgress, kBatchCancel, BandNeeds{true, true, CancelResponse::Batch}}) {
+        EXPECT_TRUE(bands_follow_work(needs));
         // A path-traced part of 160x120 pixels, 16 samples a launch, about 7 plain samples
         // each: 2.2 M plain pixel samples, under a band's worth, so the launch stays whole.
         EXPECT_EQ(launch_bands(160.0 * 120 * 16 * 7, needs), 1);
@@ -40,6 +43,7 @@ TEST(LaunchBands, ProgressAndBatchCancelsSplitALaunchOnlyAsFarAsItsWorkNeeds) {
 
 TEST(LaunchBands, AFrameNobodyWatchesOrCancelsIsNeverSplit) {
     EXPECT_EQ(launch_bands(1e12, BandNeeds{}), 1);
+    EXPECT_FALSE(bands_follow_work(BandNeeds{}));
 }
 
 TEST(LaunchBands, BandsAreWholeWorkGroupsThatCoverEveryTile) {
