@@ -22,6 +22,7 @@
 #include "device/math_check.hpp"
 #include "render/adaptive_sampling.hpp"
 #include "render/camera_frame.hpp"
+#include "render/frame_planes.hpp"
 #include "render/modes/mode_kernel.hpp"
 #include "render/prepass/cone_prepass.hpp"
 #include "render/render_cost.hpp"
@@ -78,33 +79,6 @@ void check_request(const Scene& scene, const FrameRequest& request) {
 
 // Values a band of a frame's host loops holds at least: under it a thread costs more than it saves.
 constexpr size_t kMinHostBand = 1 << 16;
-
-// The planes on the host while a frame is read back, unmapped when done. Mapped, not copied: on a
-// CPU device the buffer is host memory already, and copying it (into pages touched for the first
-// time) took as long as unpacking it.
-class MappedPlanes {
-public:
-    MappedPlanes(const cl::CommandQueue& queue, const cl::Buffer& buffer, size_t count)
-        : queue_(queue),
-          buffer_(buffer),
-          count_(count),
-          data_(static_cast<float*>(
-              queue.enqueueMapBuffer(buffer, CL_TRUE, CL_MAP_READ, 0, count * sizeof(float)))) {}
-    MappedPlanes(const MappedPlanes&) = delete;
-    MappedPlanes& operator=(const MappedPlanes&) = delete;
-    ~MappedPlanes() {
-        // The buffer is released after this anyway: an unmap that fails changes nothing.
-        cl_int ignored = clEnqueueUnmapMemObject(queue_(), buffer_(), data_, 0, nullptr, nullptr);
-        static_cast<void>(ignored);
-    }
-    std::span<const float> values() const { return {data_, count_}; }
-
-private:
-    cl::CommandQueue queue_;
-    cl::Buffer buffer_;
-    size_t count_;
-    float* data_;
-};
 
 // A frame of `region`'s size: depth, linear colour and display image, zeroed.
 Frame sized_frame(const PixelRegion& region) {
@@ -265,6 +239,7 @@ Renderer::Renderer(const ComputeDevice& device, ProgramCache& cache, const Scene
     normal_kernel_ = cl::Kernel(program_, "fgr_probe_normal");
     mode_ = make_mode_kernel(switches_, device, program_, scene);
     prepass_ = std::make_unique<ConePrepass>(device, program_, scene, switches_);
+    planes_ = std::make_unique<FramePlanes>(device, FramePlanes::preferred_view(device.info));
     warm_up();
 }
 
@@ -339,7 +314,8 @@ Frame Renderer::render(const FrameRequest& request) {
 
     cl::Buffer params = upload(request.params);
     const int plane_count = FGR_COMMON_PLANES + mode_->extra_planes(switches_);
-    cl::Buffer planes(device_.context, CL_MEM_READ_WRITE, sizeof(float) * plane_count * plane);
+    const size_t plane_floats = static_cast<size_t>(plane) * static_cast<size_t>(plane_count);
+    const cl::Buffer& planes = planes_->reserve(plane_floats);
     const int tiles = layout.tiles_x * layout.tiles_y;
     const CameraFrame camera =
         camera_frame(request.view, request.projection, request.width, request.height, region);
@@ -410,12 +386,12 @@ Frame Renderer::render(const FrameRequest& request) {
     // fault each on first touch) took 3 ms of a 640x480 frame when it followed the render.
     device_.queue.flush();
     Frame frame = sized_frame(region);
-    const MappedPlanes host(device_.queue, planes, static_cast<size_t>(plane) * plane_count);
+    const std::span<const float> host = planes_->read(plane_floats);
     frame.double_precision = switches_.double_precision;
     frame.samples = done;
-    unpack_common_planes(host.values(), layout, region,
+    unpack_common_planes(host, layout, region,
                          mode_->sums_samples() ? 1.0f / static_cast<float>(done) : 1.0f, frame);
-    mode_->read_back(host.values(), layout, request, done, frame);
+    mode_->read_back(host, layout, request, done, frame);
     fill_display_image(frame.linear, display_transform(scene_, request.params), frame.image);
     if (frame.stats) {
         frame.stats->prepass_de_evaluations = prepass_->evaluations(starts, camera);

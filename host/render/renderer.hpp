@@ -24,6 +24,7 @@ namespace fgr {
 
 class ModeKernel;
 class ConePrepass;
+class FramePlanes;
 
 // A rectangle of an image, in pixels from its top-left corner.
 struct PixelRegion {
@@ -279,6 +280,7 @@ private:
     cl::Kernel normal_kernel_;
     std::unique_ptr<ModeKernel> mode_;      // the render mode's own arguments and planes
     std::unique_ptr<ConePrepass> prepass_;  // where camera rays start
+    std::unique_ptr<FramePlanes> planes_;   // what the kernels write, kept between frames
 };
 
 // Linear RGB planes (tile-major, as the kernel stores them) to an sRGB image in rows.

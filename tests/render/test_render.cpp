@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: Apache-2.0
 // Rendering: the canonical view against a scalar C++ march, the same image at every packet width,
 // determinism, partial tiles, lighting, and parameters and camera paths reaching the image.
+#include <fmt/format.h>
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -154,6 +155,29 @@ TEST_F(RenderTest, SameSettingsGiveBitIdenticalImages) {
     const Frame second = render(*mandelbulb_, 64, 48);
     EXPECT_EQ(first.image.rgb, second.image.rgb);
     EXPECT_EQ(first.depth, second.depth);
+}
+
+// A renderer keeps its planes' buffer between frames: a frame larger than the last, and one
+// smaller, come out as a fresh renderer draws them, in every mode (each writes planes of its own).
+TEST_F(RenderTest, OneRendererDrawsFramesOfChangingSizesAsFreshOnesDo) {
+    for (const RenderMode mode : {RenderMode::Shaded, RenderMode::Path, RenderMode::Brute}) {
+        KernelSwitches switches{preferred_packet_width(device_->info), mandelbulb_->effects};
+        switches.mode = mode;
+        switches.aovs = true;
+        Renderer kept(*device_, cache_, *mandelbulb_, switches);
+        for (const auto& [width, height] : {std::pair{32, 24}, {72, 56}, {40, 30}, {72, 56}}) {
+            FrameRequest request{width, height, mandelbulb_->cameras.front().view,
+                                 default_param_values(*mandelbulb_)};
+            request.samples = mode == RenderMode::Shaded ? 1 : 4;
+            const Frame again = kept.render(request);
+            const Frame fresh = Renderer(*device_, cache_, *mandelbulb_, switches).render(request);
+            const std::string what = fmt::format("{} {}x{}", render_mode_name(mode), width, height);
+            EXPECT_EQ(again.image.rgb, fresh.image.rgb) << what;
+            EXPECT_EQ(again.depth, fresh.depth) << what;
+            EXPECT_EQ(again.albedo, fresh.albedo) << what;
+            EXPECT_EQ(again.normal, fresh.normal) << what;
+        }
+    }
 }
 
 TEST_F(RenderTest, DefaultViewIsANonTrivialImage) {
