@@ -13,6 +13,7 @@
 #include <string>
 
 #include "commands.hpp"
+#include "device/opencl_device.hpp"
 #include "device/program_cache.hpp"
 #include "distributed/cluster.hpp"
 #include "reference.hpp"
@@ -176,6 +177,15 @@ int run_cli(int argc, char** argv) {
             std::fputs(conventional_build_log(error.build_log()).c_str(), stderr);
         }
         return report_error(error.what(), kExitFailure);
+    } catch (const cl::Error& error) {
+        // what() names only the call; the code says why. A GPU driver reports a kernel that
+        // faulted at the next call that waits for it, as one of these two.
+        const bool kernel_fault =
+            error.err() == CL_INVALID_COMMAND_QUEUE || error.err() == CL_OUT_OF_RESOURCES;
+        return report_error(
+            fmt::format("OpenCL call {} failed: {}{}", error.what(), cl_error_name(error.err()),
+                        kernel_fault ? " (a kernel before it may have faulted)" : ""),
+            kExitFailure);
     } catch (const std::exception& error) {
         return report_error(error.what(), kExitFailure);
     }

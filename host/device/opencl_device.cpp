@@ -129,6 +129,27 @@ std::string cl_error_name(int code) {
         case CL_OUT_OF_HOST_MEMORY:
             name = "CL_OUT_OF_HOST_MEMORY";
             break;
+        case CL_MAP_FAILURE:
+            name = "CL_MAP_FAILURE";
+            break;
+        case CL_INVALID_DEVICE:
+            name = "CL_INVALID_DEVICE";
+            break;
+        case CL_INVALID_CONTEXT:
+            name = "CL_INVALID_CONTEXT";
+            break;
+        case CL_INVALID_COMMAND_QUEUE:
+            name = "CL_INVALID_COMMAND_QUEUE";
+            break;
+        case CL_INVALID_MEM_OBJECT:
+            name = "CL_INVALID_MEM_OBJECT";
+            break;
+        case CL_INVALID_OPERATION:
+            name = "CL_INVALID_OPERATION";
+            break;
+        case CL_INVALID_GLOBAL_WORK_SIZE:
+            name = "CL_INVALID_GLOBAL_WORK_SIZE";
+            break;
         case CL_BUILD_PROGRAM_FAILURE:
             name = "CL_BUILD_PROGRAM_FAILURE";
             break;
