@@ -251,7 +251,7 @@ else
     deadline=$((SECONDS + check_limit))
     echo "${#checks[@]} scenes, $shards at once, limit $check_limit s"
     : > "$work/checks"
-    running=0 check_pids=()
+    declare -A live=()  # the checks still running, by process id
     for scene in "${checks[@]}"; do
         name=$(basename "$scene" .so)
         limit=$((deadline - SECONDS))
@@ -264,14 +264,15 @@ else
                 > "$work/check-$name.log" 2>&1
             echo "$name $?" >> "$work/checks"
         ) &
-        check_pids+=($!)
-        if ((++running >= shards)); then
-            wait -n "${check_pids[@]}"
-            ((running--))
+        live[$!]=1
+        if ((${#live[@]} >= shards)); then
+            # -p names the one that ended, so it is not waited for again (bash: "no such job").
+            wait -n -p ended "${!live[@]}"
+            unset "live[$ended]"
         fi
     done
     # By id: a bare `wait` would wait for the tee of this script's output too, which never ends.
-    wait "${check_pids[@]}"
+    ((${#live[@]} > 0)) && wait "${!live[@]}"
     for scene in "${checks[@]}"; do
         name=$(basename "$scene" .so)
         echo "#### $name"
