@@ -56,6 +56,7 @@ constexpr std::array kEventSyntax{
     EventSyntax{"browser_pick", ReplayAction::BrowserPick, 1, 1, "browser_pick N"},
     EventSyntax{"wait_thumbnails", ReplayAction::WaitThumbnails, 0, 0, "wait_thumbnails"},
     EventSyntax{"wait_samples", ReplayAction::WaitSamples, 1, 1, "wait_samples N"},
+    EventSyntax{"wait_frames", ReplayAction::WaitFrames, 1, 1, "wait_frames N"},
     EventSyntax{"hybrid_add", ReplayAction::HybridAdd, 1, 1, "hybrid_add NAME"},
     EventSyntax{"hybrid_remove", ReplayAction::HybridRemove, 1, 1, "hybrid_remove N"},
     EventSyntax{"hybrid_move", ReplayAction::HybridMove, 2, 2, "hybrid_move N OFFSET"},
@@ -69,6 +70,8 @@ constexpr std::array kEventSyntax{
 constexpr int kMaxSlotNumber = 64;
 constexpr int kMaxMove = 16;
 constexpr int kMaxPick = 100000;
+// Frames wait_frames may hold a script for: minutes of frames at any rate a viewer reaches.
+constexpr int kMaxWaitFrames = 100000;
 
 // SDL's button numbering.
 constexpr std::array<std::pair<std::string_view, int>, 3> kButtons{{
@@ -200,6 +203,9 @@ void read_arguments(const LineParser& parser, const std::vector<std::string>& ar
         case ReplayAction::WaitSamples:
             event.count = parser.integer(args[0], "N", 1, kMaxSamples);
             break;
+        case ReplayAction::WaitFrames:
+            event.count = parser.integer(args[0], "N", 1, kMaxWaitFrames);
+            break;
         case ReplayAction::HybridRemove:
             event.slot = parser.integer(args[0], "N", 1, kMaxSlotNumber) - 1;
             break;
@@ -280,7 +286,8 @@ std::vector<ReplayEvent> load_replay(const std::filesystem::path& file) {
 
 bool is_wait(ReplayAction action) {
     return action == ReplayAction::WaitIdle || action == ReplayAction::WaitReload ||
-           action == ReplayAction::WaitThumbnails || action == ReplayAction::WaitSamples;
+           action == ReplayAction::WaitThumbnails || action == ReplayAction::WaitSamples ||
+           action == ReplayAction::WaitFrames;
 }
 
 ReplayClock::ReplayClock(std::vector<ReplayEvent> events) : events_(std::move(events)) {}

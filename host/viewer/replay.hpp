@@ -63,7 +63,8 @@ enum class ReplayAction {
     HybridRepeat,
     HybridSave,
     SetParameter,
-    WaitSamples
+    WaitSamples,
+    WaitFrames
 };
 
 struct ReplayEvent {
@@ -78,7 +79,7 @@ struct ReplayEvent {
                                 // hybrid_save: the new scene's id; set: ID=VALUE
     int slot = 0;               // hybrid edits: the formula's place, 0 the first
     int count = 0;              // browser_pick: the scene, 0 the first; hybrid_move: the offset;
-                                // hybrid_repeat: the repeat count
+                                // hybrid_repeat: the repeat count; wait_samples, wait_frames: N
     int line = 0;               // line number in the file, for messages
 };
 
@@ -95,8 +96,8 @@ std::vector<ReplayEvent> load_replay(const std::filesystem::path& file);
 bool is_wait(ReplayAction action);
 
 // Plays a script against a clock: due events come out in order, and a wait (WaitIdle, WaitReload,
-// WaitThumbnails, WaitSamples) holds everything after it until resume() is called (the viewer
-// calls it once what the wait names has happened).
+// WaitThumbnails, WaitSamples, WaitFrames) holds everything after it until resume() is called
+// (the viewer calls it once what the wait names has happened).
 class ReplayClock {
 public:
     explicit ReplayClock(std::vector<ReplayEvent> events);

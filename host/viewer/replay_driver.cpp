@@ -61,6 +61,7 @@ void ReplayDriver::feed(double now_seconds) {
         thumbnails_awaited_ = false;
         awaited_changes_.reset();
         awaited_samples_.reset();
+        awaited_frames_.reset();
         window_size_.reset();
         clock_.resume(now_seconds);
     }
@@ -75,6 +76,7 @@ bool ReplayDriver::still_waiting() const {
     if (thumbnails_awaited_) return !host_.thumbnails_done();
     if (awaited_changes_) return host_.changes_handled() <= *awaited_changes_;
     if (awaited_samples_) return host_.full_size_samples() < *awaited_samples_;
+    if (awaited_frames_) return host_.frames_shown() < *awaited_frames_;
     return !host_.view_idle();
 }
 
@@ -105,6 +107,9 @@ void ReplayDriver::push(const ReplayEvent& event) {
             break;
         case ReplayAction::WaitSamples:
             awaited_samples_ = event.count;
+            break;
+        case ReplayAction::WaitFrames:
+            awaited_frames_ = host_.frames_shown() + event.count;
             break;
         case ReplayAction::Quit:
             host_.quit();

@@ -25,6 +25,8 @@ struct ReplayHost {
     std::function<bool()> thumbnails_done;  // wait_thumbnails
     // wait_samples: the samples (passes) of the frame on screen if it is full size, else 0.
     std::function<int()> full_size_samples;
+    // wait_frames: the frames shown so far, previews included.
+    std::function<long()> frames_shown;
     // wait_reload: the count of changes to watched files dealt with so far.
     std::function<uint64_t()> changes_handled;
     std::function<void()> quit;
@@ -61,6 +63,8 @@ private:
     std::optional<uint64_t> awaited_changes_;
     // The samples wait_samples holds the script for, until the frame on screen has them.
     std::optional<int> awaited_samples_;
+    // The count of frames shown that wait_frames holds the script for.
+    std::optional<long> awaited_frames_;
     // The window size the last resize asked for, until the next wait is over.
     std::optional<std::pair<int, int>> window_size_;
 };

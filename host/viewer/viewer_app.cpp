@@ -299,6 +299,7 @@ ReplayHost ViewerApp::replay_host() {
         .thumbnails_done = [this] { return browser_.thumbnails_done(); },
         .full_size_samples =
             [this] { return shown_ && shown_->scale >= 1.0f ? shown_->samples : 0; },
+        .frames_shown = [this] { return stats_.frames_shown(); },
         .changes_handled = [this] { return reloader_.changes_handled(); },
         .quit = [this] { quit_ = true; },
         .browser_event = [this](const ReplayEvent& event) { browser_.apply_replay_event(event); },

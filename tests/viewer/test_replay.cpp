@@ -131,6 +131,17 @@ TEST(ReplayParse, WaitReload) {
               "demo.replay:1: wait_reload takes wait_reload, got 1 argument");
 }
 
+TEST(ReplayParse, WaitFramesCountsFrames) {
+    const auto events = parse("0.2 wait_frames 6\n");
+    ASSERT_EQ(events.size(), 1u);
+    EXPECT_EQ(events[0].action, ReplayAction::WaitFrames);
+    EXPECT_EQ(events[0].count, 6);
+    EXPECT_TRUE(is_wait(events[0].action));
+    EXPECT_EQ(parse_error("0 wait_frames 0\n"), "demo.replay:1: N 0 is out of range [1, 100000]");
+    EXPECT_EQ(parse_error("0 wait_frames\n"),
+              "demo.replay:1: wait_frames takes wait_frames N, got 0 arguments");
+}
+
 TEST(ReplayParse, BrowserAndHybridEditorEvents) {
     const auto events = parse(
         "0 browser_search box_julia\n0 browser_search -\n0 browser_pick 3\n0 wait_thumbnails\n"

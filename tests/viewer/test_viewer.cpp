@@ -267,7 +267,9 @@ TEST_F(ViewerTest, FlyingAndLookingMoveTheCamera) {
 0 wait_idle
 0 key F12
 0.3 key_down W
-1.0 key_up W
+# a second's flight, and six frames of it however slowly this machine renders them
+1.0 wait_frames 6
+0 key_up W
 0.1 mouse_down right
 0.1 mouse_move 120 0
 0.1 mouse_up right

@@ -27,6 +27,7 @@ struct FakeViewer {
     bool view_idle = false;
     bool thumbnails_done = false;
     int full_size_samples = 0;
+    long frames_shown = 0;
     uint64_t changes_handled = 0;
     bool quit = false;
     std::vector<std::pair<int, int>> resizes;
@@ -42,6 +43,7 @@ struct FakeViewer {
             .view_idle = [this] { return view_idle; },
             .thumbnails_done = [this] { return thumbnails_done; },
             .full_size_samples = [this] { return full_size_samples; },
+            .frames_shown = [this] { return frames_shown; },
             .changes_handled = [this] { return changes_handled; },
             .quit = [this] { quit = true; },
             .browser_event = [this](const ReplayEvent& e) { browser_events.push_back(e.action); },
@@ -122,6 +124,21 @@ TEST_F(ViewerReplayDriver, WaitSamplesHoldsTheScriptUntilTheFullSizeFrameHasThem
     EXPECT_FALSE(viewer.quit);
     viewer.full_size_samples = 3;
     driver.feed(2.0);
+    EXPECT_TRUE(viewer.quit);
+}
+
+TEST_F(ViewerReplayDriver, WaitFramesHoldsTheScriptUntilThatManyMoreFramesAreShown) {
+    FakeViewer viewer;
+    viewer.view_idle = true;   // not what wait_frames waits for
+    viewer.frames_shown = 10;  // shown before the wait: they do not count
+    ReplayDriver driver(script("0 key_down W\n0 wait_frames 3\n0 key_up W\n0 quit\n"),
+                        viewer.host());
+    driver.feed(0.0);
+    viewer.frames_shown = 12;
+    driver.feed(5.0);  // however long it takes
+    EXPECT_FALSE(viewer.quit);
+    viewer.frames_shown = 13;
+    driver.feed(5.1);
     EXPECT_TRUE(viewer.quit);
 }
 
