@@ -77,9 +77,6 @@ void check_request(const Scene& scene, const FrameRequest& request) {
     }
 }
 
-// Values a band of a frame's host loops holds at least: under it a thread costs more than it saves.
-constexpr size_t kMinHostBand = 1 << 16;
-
 // A frame of `region`'s size: depth, linear colour and display image, zeroed.
 Frame sized_frame(const PixelRegion& region) {
     Frame frame;
@@ -98,25 +95,24 @@ void unpack_common_planes(std::span<const float> planes, const TileLayout& layou
     const std::vector<int> columns = layout.column_offsets(region.width);
     const size_t width = static_cast<size_t>(region.width);
     std::atomic<long> hits = 0;
-    in_parallel_bands(static_cast<size_t>(region.height), kMinHostBand / std::max<size_t>(width, 1),
-                      [&](size_t first_row, size_t last_row) {
-                          long band_hits = 0;
-                          for (size_t y = first_row; y < last_row; ++y) {
-                              const size_t row =
-                                  static_cast<size_t>(layout.row_offset(static_cast<int>(y)));
-                              for (size_t x = 0; x < width; ++x) {
-                                  const size_t source = row + static_cast<size_t>(columns[x]);
-                                  const size_t pixel = y * width + x;
-                                  for (size_t c = 0; c < 3; ++c) {
-                                      frame.linear[pixel * 3 + c] =
-                                          planes[(FGR_COLOUR_PLANE + c) * plane + source] * average;
-                                  }
-                                  frame.depth[pixel] = planes[FGR_DEPTH_PLANE * plane + source];
-                                  band_hits += frame.depth[pixel] >= 0.0f;
-                              }
-                          }
-                          hits += band_hits;
-                      });
+    in_parallel_rows(
+        static_cast<size_t>(region.height), width, [&](size_t first_row, size_t last_row) {
+            long band_hits = 0;
+            for (size_t y = first_row; y < last_row; ++y) {
+                const size_t row = static_cast<size_t>(layout.row_offset(static_cast<int>(y)));
+                for (size_t x = 0; x < width; ++x) {
+                    const size_t source = row + static_cast<size_t>(columns[x]);
+                    const size_t pixel = y * width + x;
+                    for (size_t c = 0; c < 3; ++c) {
+                        frame.linear[pixel * 3 + c] =
+                            planes[(FGR_COLOUR_PLANE + c) * plane + source] * average;
+                    }
+                    frame.depth[pixel] = planes[FGR_DEPTH_PLANE * plane + source];
+                    band_hits += frame.depth[pixel] >= 0.0f;
+                }
+            }
+            hits += band_hits;
+        });
     frame.hits = hits;
 }
 

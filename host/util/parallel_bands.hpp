@@ -15,4 +15,14 @@ namespace fgr {
 void in_parallel_bands(std::size_t count, std::size_t min_band,
                        const std::function<void(std::size_t, std::size_t)>& work);
 
+// Values a band of a frame's host loops holds at least: under it a thread costs more than it saves.
+constexpr std::size_t kMinHostBand = std::size_t{1} << 16;
+
+// in_parallel_bands over the rows of an image `width` values wide, each band kMinHostBand values
+// at least.
+inline void in_parallel_rows(std::size_t rows, std::size_t width,
+                             const std::function<void(std::size_t, std::size_t)>& work) {
+    in_parallel_bands(rows, kMinHostBand / (width > 0 ? width : 1), work);
+}
+
 }  // namespace fgr

@@ -8,6 +8,7 @@
 #include "render/modes/mode_kernel.hpp"
 #include "render/modes/path_mode.hpp"
 #include "render/modes/shaded_mode.hpp"
+#include "util/parallel_bands.hpp"
 
 namespace fgr {
 
@@ -23,16 +24,21 @@ std::vector<float> planes_in_rows(std::span<const float> planes, const TileLayou
     const size_t plane = static_cast<size_t>(layout.plane_size());
     std::vector<float> rows(static_cast<size_t>(width) * height * count);
     const std::vector<int> columns = layout.column_offsets(width);
-    for (int y = 0; y < height; ++y) {
-        const int row = layout.row_offset(y);
-        for (int x = 0; x < width; ++x) {
-            const size_t source = static_cast<size_t>(row + columns[static_cast<size_t>(x)]);
-            const size_t pixel = static_cast<size_t>(y) * width + x;
-            for (int c = 0; c < count; ++c) {
-                rows[pixel * count + c] = planes[(first + c) * plane + source] * scale;
-            }
-        }
-    }
+    in_parallel_rows(static_cast<size_t>(height), static_cast<size_t>(width) * count,
+                     [&](size_t first_row, size_t last_row) {
+                         for (size_t y = first_row; y < last_row; ++y) {
+                             const int row = layout.row_offset(static_cast<int>(y));
+                             for (int x = 0; x < width; ++x) {
+                                 const size_t source =
+                                     static_cast<size_t>(row + columns[static_cast<size_t>(x)]);
+                                 const size_t pixel = y * static_cast<size_t>(width) + x;
+                                 for (int c = 0; c < count; ++c) {
+                                     rows[pixel * count + c] =
+                                         planes[(first + c) * plane + source] * scale;
+                                 }
+                             }
+                         }
+                     });
     return rows;
 }
 

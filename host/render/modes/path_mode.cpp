@@ -8,6 +8,7 @@
 #include <glm/trigonometric.hpp>
 
 #include "device/kernel_layout.hpp"
+#include "util/parallel_bands.hpp"
 
 namespace fgr {
 namespace {
@@ -220,40 +221,44 @@ void PathMode::read_back(std::span<const float> planes, const TileLayout& layout
     frame.samples_per_pixel.assign(pixels, static_cast<float>(samples));
     frame.variance.assign(pixels * 3, -1.0f);
     const long first = request.first_sample;
-    for (size_t pixel = 0; pixel < pixels; ++pixel) {
-        long taken = samples;
-        if (!request.sample_limits.empty()) {
-            const double limit = std::floor(double(request.sample_limits[pixel]));
-            taken = static_cast<long>(std::clamp(limit - double(first), 0.0, double(samples)));
-            frame.samples_per_pixel[pixel] = static_cast<float>(taken);
-            const float rescale = taken > 0 ? float(samples) / float(taken) : 0.0f;
-            if (taken != samples) {
-                for (int c = 0; c < 3; ++c) {
-                    frame.linear[pixel * 3 + c] *= rescale;
-                    frame.albedo[pixel * 3 + c] *= rescale;
-                    frame.normal[pixel * 3 + c] *= rescale;
-                    if (aovs_) frame.foreground[pixel * 3 + c] *= rescale;
+    // Pixels are independent: bands of them on the host's threads (on a GPU the host's work is
+    // much of a path-traced frame).
+    in_parallel_bands(pixels, kMinHostBand, [&](size_t first_pixel, size_t last_pixel) {
+        for (size_t pixel = first_pixel; pixel < last_pixel; ++pixel) {
+            long taken = samples;
+            if (!request.sample_limits.empty()) {
+                const double limit = std::floor(double(request.sample_limits[pixel]));
+                taken = static_cast<long>(std::clamp(limit - double(first), 0.0, double(samples)));
+                frame.samples_per_pixel[pixel] = static_cast<float>(taken);
+                const float rescale = taken > 0 ? float(samples) / float(taken) : 0.0f;
+                if (taken != samples) {
+                    for (int c = 0; c < 3; ++c) {
+                        frame.linear[pixel * 3 + c] *= rescale;
+                        frame.albedo[pixel * 3 + c] *= rescale;
+                        frame.normal[pixel * 3 + c] *= rescale;
+                        if (aovs_) frame.foreground[pixel * 3 + c] *= rescale;
+                    }
+                    frame.alpha[pixel] *= rescale;
                 }
-                frame.alpha[pixel] *= rescale;
+            }
+            // The odd and even samples among first .. first + taken - 1 (x / 2 odd numbers are
+            // below x), whose means differ by about the noise: Var(odd mean - even mean) =
+            // s^2 (1/o + 1/e) for a per-sample variance s^2, so (difference)^2 / (1/o + 1/e)
+            // estimates s^2 without bias, and s^2 / taken the variance of the pixel's mean.
+            const long odd_count = (first + taken) / 2 - first / 2;
+            const long even_count = taken - odd_count;
+            if (odd_count < 1 || even_count < 1) continue;
+            for (int c = 0; c < 3; ++c) {
+                const double sum = double(frame.linear[pixel * 3 + c]) * double(taken);
+                const double odd_sum = odd[pixel * 3 + c];
+                const double difference =
+                    odd_sum / double(odd_count) - (sum - odd_sum) / double(even_count);
+                const double per_sample =
+                    difference * difference / (1.0 / double(odd_count) + 1.0 / double(even_count));
+                frame.variance[pixel * 3 + c] = static_cast<float>(per_sample / double(taken));
             }
         }
-        // The odd and even samples among first .. first + taken - 1 (x / 2 odd numbers are below
-        // x), whose means differ by about the noise: Var(odd mean - even mean) = s^2 (1/o + 1/e)
-        // for a per-sample variance s^2, so (difference)^2 / (1/o + 1/e) estimates s^2 without
-        // bias, and s^2 / taken the variance of the pixel's mean.
-        const long odd_count = (first + taken) / 2 - first / 2;
-        const long even_count = taken - odd_count;
-        if (odd_count < 1 || even_count < 1) continue;
-        for (int c = 0; c < 3; ++c) {
-            const double sum = double(frame.linear[pixel * 3 + c]) * double(taken);
-            const double odd_sum = odd[pixel * 3 + c];
-            const double difference =
-                odd_sum / double(odd_count) - (sum - odd_sum) / double(even_count);
-            const double per_sample =
-                difference * difference / (1.0 / double(odd_count) + 1.0 / double(even_count));
-            frame.variance[pixel * 3 + c] = static_cast<float>(per_sample / double(taken));
-        }
-    }
+    });
     const size_t plane = static_cast<size_t>(layout.plane_size());
     if (!stats_) return;
     // Sum the lanes' evaluations over every pixel; a packet's count is the same in all of its
