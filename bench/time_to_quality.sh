@@ -31,6 +31,11 @@
 # and speed-ups over the first configuration), .gp and .png (error against time, log-log, one panel
 # a scene, one line a configuration, the threshold dashed).
 #
+# PREVIOUS_FGR, when set, is an earlier fgr (the release before these techniques: see
+# docs/performance.md for how to build it) measured as a configuration of its own, "previous
+# release", in the same alternating rounds and first in the table, so that the speed-ups are
+# against it; PREVIOUS_PLUGIN_PATH gives it the scene plugins it lacks (its FGR_PLUGIN_PATH).
+#
 # Environment: FGR (default build/bin/fgr), OUT, WIDTH x HEIGHT (160x120), REFERENCE_SPP (each
 # scene's own, below), REPEATS (2), THRESHOLD (0.005), SPP_LADDER ("1 2 4 ... 4096", fgr's most),
 # THRESHOLD_LADDER ("0.3 0.2 0.1 0.05 0.03 0.02 0.01 0.005 0.003 0.002"), THRESHOLD_CAP (4096),
@@ -66,8 +71,14 @@ all_scenes=(
     "menger-room|menger-room||32768"
 )
 # The configurations: name|flags|ladder|flags fgr must have for it to mean anything ({} in the
-# flags is the ladder's threshold). The first is the baseline the speed-ups are against.
-configurations=(
+# flags is the ladder's threshold)|which fgr renders it ("previous": PREVIOUS_FGR). The first is
+# the baseline the speed-ups are against.
+configurations=()
+if [[ -n ${PREVIOUS_FGR:-} ]]; then
+    [[ -x $PREVIOUS_FGR ]] || { echo "time_to_quality: no fgr at PREVIOUS_FGR=$PREVIOUS_FGR" >&2; exit 1; }
+    configurations+=("previous release||spp||previous")
+fi
+configurations+=(
     "path tracer|--no-regroup|spp|"
     "+ regrouping||spp|--no-regroup"
     "+ adaptive|--noise-threshold {} --min-spp 4 --spp $THRESHOLD_CAP|threshold|--no-regroup"
@@ -146,11 +157,17 @@ usable_flags() {
     echo "${out[*]}"
 }
 
-# render SCENE FLAGS... -o FILE: prints "render_ms samples" (with --denoise, render_ms includes the
-# denoiser's time, which fgr also prints as denoise_ms).
+# render BINARY SCENE FLAGS... -o FILE: prints "render_ms samples" (with --denoise, render_ms
+# includes the denoiser's time, which fgr also prints as denoise_ms). BINARY: "previous" for
+# PREVIOUS_FGR, anything else for FGR.
 render_once() {
-    local log=$work/render.log
-    "$FGR" render "$@" --mode path "${size[@]}" --seed "$SEED" --no-cost-limit > "$log" 2>&1 || {
+    local log=$work/render.log binary=$1
+    shift
+    local command=("$FGR")
+    if [[ $binary == previous ]]; then
+        command=(env "FGR_PLUGIN_PATH=${PREVIOUS_PLUGIN_PATH:-}" "$PREVIOUS_FGR")
+    fi
+    "${command[@]}" render "$@" --mode path "${size[@]}" --seed "$SEED" --no-cost-limit > "$log" 2>&1 || {
         echo "time_to_quality: fgr render $* failed:" >&2
         cat "$log" >&2
         exit 1
@@ -166,12 +183,13 @@ measure() {
     for entry in "${configurations[@]}"; do
         fields "$entry"
         local flags
-        flags=$(usable_flags "${field[1]}" "${field[3]}")
+        flags=${field[1]}
+        [[ ${field[4]:-} == previous ]] || flags=$(usable_flags "${field[1]}" "${field[3]}")
         if [[ $flags == missing* ]]; then
             echo "configuration '${field[0]}': left out, this fgr has no ${flags#missing }"
             continue
         fi
-        active+=("${field[0]}|$flags|${field[2]}")
+        active+=("${field[0]}|$flags|${field[2]}|${field[4]:-}")
         local shown=${flags:-no flags}
         echo "configuration '${field[0]}': $shown, ladder over ${field[2]}"
     done
@@ -189,7 +207,7 @@ measure() {
             for ((rung = 0; rung < rungs; ++rung)); do
                 for ((c = 0; c < ${#active[@]}; ++c)); do  # alternating configurations
                     fields "${active[$c]}"
-                    local flags=${field[1]} ladder=${field[2]} budget run_flags
+                    local flags=${field[1]} ladder=${field[2]} binary=${field[3]:-} budget run_flags
                     if [[ $ladder == spp ]]; then
                         budget=${spp[$rung]:-}
                         run_flags="$flags --spp $budget"
@@ -204,7 +222,7 @@ measure() {
                     if [[ -n ${crossed[$c]:-} && -z ${error["$c|$budget"]:-} ]]; then continue; fi
                     local key="$c|$budget" image=$work/image.exr result ms
                     # shellcheck disable=SC2086  # flags are words
-                    result=$(render_once "$scene" $scene_flags $run_flags -o "$image")
+                    result=$(render_once "$binary" "$scene" $scene_flags $run_flags -o "$image")
                     ms=${result% *}
                     if [[ -z ${best[$key]:-} ]] || awk -v a="$ms" -v b="${best[$key]}" 'BEGIN { exit !(a < b) }'; then
                         best[$key]=$ms
