@@ -13,6 +13,10 @@
 #   fgr bench mandelbulb, fgr bench benchmark    1920x1080 in every mode the scene has (shaded,
 #                                                path, brute), 5 s each
 #   fgr render mandelbulb, shaded and path       1920x1080 PNGs to OUT, to compare with a CPU's
+#   narrowing a failed bench                     320x180 renders of that scene and mode at 1, 4
+#                                                and 8 rays per work-item (path: and without
+#                                                regrouping), to tell a layout's fault from the
+#                                                scene's
 #
 #   bash .gpu-kit/run.sh
 #
@@ -20,7 +24,9 @@
 # default 450, inside the 8 minutes the kit is given: a step gets at most its own limit and what
 # is left), FGR_KIT_TESTS (the tests' gtest filter), FGR_KIT_SHARDS (test processes at once;
 # default half the cores, at most 8), FGR_KIT_QUICK=1 (320x180, 2 s benches, the Mandelbulb's
-# tests and check only: to try the kit on a 2-core CPU in a few minutes).
+# tests and check only: to try the kit on a 2-core CPU in a few minutes), FGR_KIT_NARROW (extra
+# SCENE/MODE pairs to narrow down as if their bench had failed, e.g. "benchmark/path": to try that
+# step where nothing fails).
 #
 # OUT receives run.log (everything), tests.log, checks.log, the two PNGs and bench.tar.gz (each
 # bench's JSON and CSV). Exit status 0 once all steps have run; each step's own is in the summary at
@@ -74,8 +80,10 @@ step() {
     ((rc == 124 || rc == 137)) && verdict="exit $rc (timed out)"
     echo "== $name: $verdict after $((SECONDS - t0)) s"
     note "$name" "$verdict, $((SECONDS - t0)) s"
+    step_rc=$rc
     return 0
 }
+step_rc=0  # the exit status of the last step that ran (0 for one skipped)
 
 kv() { sed -n "s/^$1=//p" "$kit/kit.env"; }
 
@@ -286,10 +294,34 @@ else
 fi
 
 # The benches: both scenes at the full resolution in every mode they have.
+failed=()  # SCENE/MODE of each bench that failed
 for scene in mandelbulb benchmark; do
     for mode in shaded path brute; do
+        step_rc=0
         step "bench $scene $mode ${width}x$height" 60 "${fgr[@]}" bench "$scene" --mode "$mode" \
             "${size[@]}" --duration "$duration" "${dev[@]}" -o "$work/bench-$scene-$mode"
+        ((step_rc == 0)) || failed+=("$scene/$mode")
+    done
+done
+
+# A failed bench narrowed down: the same scene and mode rendered small at each packet width (a
+# fault at some widths only is the layout's, at every width the scene's), and the path mode also
+# without regrouping (its batch of lanes changes with the width). Each render is short; a timeout
+# reads as a hang.
+for pair in "${failed[@]}" ${FGR_KIT_NARROW:-}; do
+    scene=${pair%/*} mode=${pair#*/}
+    variants=("1" "4" "8")  # rays per work-item, then flags
+    samples=()
+    if [[ $mode == path ]]; then
+        variants+=("1 --no-regroup" "4 --no-regroup")
+        samples=(--spp 4)
+    fi
+    for variant in "${variants[@]}"; do
+        read -r packet_width flags <<< "$variant"
+        # shellcheck disable=SC2086  # the flags are words
+        step "narrow $scene $mode w$packet_width ${flags#--}" 30 "${fgr[@]}" render "$scene" \
+            --mode "$mode" --width 320 --height 180 "${samples[@]}" --packet-width "$packet_width" \
+            $flags "${dev[@]}" -o "$work/narrow.png"
     done
 done
 step "render mandelbulb shaded ${width}x$height" 40 "${fgr[@]}" render mandelbulb "${size[@]}" \
