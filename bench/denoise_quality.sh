@@ -11,7 +11,7 @@ fgr=${FGR:-build/bin/fgr}
 out=bench/results/denoise
 mkdir -p "$out"
 tool="$out/denoise_quality"
-g++ -std=c++20 -O2 -Ihost -I/usr/include/OpenEXR -I/usr/include/Imath \
+g++ -std=c++20 -O3 -Ihost -I/usr/include/OpenEXR -I/usr/include/Imath \
     bench/denoise/denoise_quality.cpp host/denoise/denoise.cpp host/util/parallel_bands.cpp \
     -o "$tool" -lOpenEXR -lImath -lfmt -lpthread
 size=(--width 160 --height 120)

@@ -235,6 +235,47 @@ TEST(Denoise, ThreadsChangeNothing) {
     }
 }
 
+// The filters work through an image a few rows at a time. Rows added above the image move every
+// boundary between those groups; they repeat the top row, sky, which no pixel of the surface
+// takes as a neighbour, so every surface pixel (from row 8, below the sky and the patches and
+// prefilter that reach into it) sees the same neighbours in the same order and must come out bit
+// for bit the same.
+TEST(Denoise, RowsAddedAboveChangeNothingBeyondTheirReach) {
+    constexpr int kReach = 8;
+    const Planes input = noisy(detailed_scene(), 0.08f, 5);
+    for (const int added : {1, 2, 3, 5}) {
+        const int height = kHeight + added;
+        const size_t shift = size_t(added) * kWidth;
+        // The first row repeated `added` times above the image, every plane alike.
+        const auto taller = [&](const std::vector<float>& plane) {
+            const size_t channels = plane.size() / kPixels;
+            std::vector<float> out(plane.begin(),
+                                   plane.begin() + std::ptrdiff_t(channels * kWidth));
+            for (int row = 1; row < added; ++row) {
+                out.insert(out.end(), plane.begin(),
+                           plane.begin() + std::ptrdiff_t(channels * kWidth));
+            }
+            out.insert(out.end(), plane.begin(), plane.end());
+            return out;
+        };
+        const std::vector<float> colour = taller(input.colour), variance = taller(input.variance),
+                                 albedo = taller(input.albedo), normal = taller(input.normal),
+                                 depth = taller(input.depth), alpha = taller(input.alpha);
+        const DenoiseInput tall{kWidth, height, colour, variance, albedo, normal, depth, alpha};
+        for (const DenoiseMethod method : kMethods) {
+            for (const int threads : {1, 0}) {
+                const std::vector<float> plain = denoise(input.input(), {method, threads});
+                const std::vector<float> shifted = denoise(tall, {method, threads});
+                for (size_t i = 3 * size_t(kReach) * kWidth; i < plain.size(); ++i) {
+                    ASSERT_EQ(plain[i], shifted[i + 3 * shift])
+                        << denoise_method_name(method) << ", " << added << " rows added, "
+                        << threads << " threads, pixel " << i / 3;
+                }
+            }
+        }
+    }
+}
+
 TEST(Denoise, RefusesPlanesOfTheWrongSize) {
     const Planes planes = detailed_scene();
     const auto message = [](const DenoiseInput& input) {
