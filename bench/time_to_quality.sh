@@ -75,7 +75,10 @@ all_scenes=(
 # the baseline the speed-ups are against.
 configurations=()
 if [[ -n ${PREVIOUS_FGR:-} ]]; then
-    [[ -x $PREVIOUS_FGR ]] || { echo "time_to_quality: no fgr at PREVIOUS_FGR=$PREVIOUS_FGR" >&2; exit 1; }
+    [[ -x $PREVIOUS_FGR ]] || {
+        echo "time_to_quality: no fgr at PREVIOUS_FGR=$PREVIOUS_FGR" >&2
+        exit 1
+    }
     configurations+=("previous release||spp||previous")
 fi
 configurations+=(
@@ -165,7 +168,7 @@ render_once() {
     shift
     local command=("$FGR")
     if [[ $binary == previous ]]; then
-        command=(env "FGR_PLUGIN_PATH=${PREVIOUS_PLUGIN_PATH:-}" "$PREVIOUS_FGR")
+        command=(env ${PREVIOUS_PLUGIN_PATH:+"FGR_PLUGIN_PATH=$PREVIOUS_PLUGIN_PATH"} "$PREVIOUS_FGR")
     fi
     "${command[@]}" render "$@" --mode path "${size[@]}" --seed "$SEED" --no-cost-limit > "$log" 2>&1 || {
         echo "time_to_quality: fgr render $* failed:" >&2
