@@ -399,11 +399,11 @@ std::vector<float> local_regression(const Planes& planes, const DenoiseSettings&
     const auto filter_rows = [&](size_t first, size_t last) {
         const int y0 = int(first), y1 = int(last);
         const int rows = y1 - y0 + 2 * kPatchRadius;
-        // Per offset: each pixel pair's colour distance over the band's rows and the patch's
-        // margin (distance), summed along rows over the patch (row_sums), then down columns.
+        // Per offset: each pixel pair's colour distance over these rows and the patch's margin
+        // (distance), summed along rows over the patch (row_sums), then down columns.
         std::vector<float> distance(size_t(rows) * size_t(w)), row_sums(distance.size());
-        // Per row of the band, term by term across the row (so that the loops over a row's
-        // pixels vectorise): the weighted sums of the regressors' products (gram, upper
+        // Per row, term by term across the row (so that the loops over a row's pixels
+        // vectorise): the weighted sums of the regressors' products (gram, upper
         // triangle; gram term 0 is the sum of the weights) and of the regressors times the
         // colour (moments).
         const size_t row_gram = size_t(terms) * size_t(w);
@@ -411,9 +411,9 @@ std::vector<float> local_regression(const Planes& planes, const DenoiseSettings&
         std::vector<float> gram(size_t(y1 - y0) * row_gram, 0.0f);
         std::vector<float> moments(size_t(y1 - y0) * row_moments, 0.0f);
         // One row's neighbours at one offset: each pixel's weight (0 for none), the neighbour's
-        // regressors and colour, term by term across the row.
+        // regressors and colour, term by term across the row. The mean's one regressor is 1.
         const size_t row_pixels = static_cast<size_t>(w);
-        std::vector<float> weights(row_pixels), xs(size_t(fit.regressors) * row_pixels),
+        std::vector<float> weights(row_pixels), xs(size_t(fit.regressors) * row_pixels, 1.0f),
             colours(3 * row_pixels), weighted(row_pixels);
         const auto clamp_x = [w](int x) { return std::clamp(x, 0, w - 1); };
         const auto clamp_y = [h](int y) { return std::clamp(y, 0, h - 1); };
@@ -481,10 +481,7 @@ std::vector<float> local_regression(const Planes& planes, const DenoiseSettings&
                         for (size_t c = 0; c < 3; ++c) {
                             colours[c * size_t(w) + size_t(x)] = planes.colour[3 * q + c];
                         }
-                        if (fit.regressors == 1) {
-                            xs[size_t(x)] = 1.0f;
-                            continue;
-                        }
+                        if (fit.regressors == 1) continue;
                         const std::array<float, kRegressors> xq = regressors(gp, gq, float(radius));
                         for (int i = 0; i < kRegressors; ++i) {
                             xs[size_t(i) * size_t(w) + size_t(x)] = xq[size_t(i)];

@@ -248,13 +248,10 @@ TEST(Denoise, RowsAddedAboveChangeNothingBeyondTheirReach) {
         const size_t shift = size_t(added) * kWidth;
         // The first row repeated `added` times above the image, every plane alike.
         const auto taller = [&](const std::vector<float>& plane) {
-            const size_t channels = plane.size() / kPixels;
-            std::vector<float> out(plane.begin(),
-                                   plane.begin() + std::ptrdiff_t(channels * kWidth));
-            for (int row = 1; row < added; ++row) {
-                out.insert(out.end(), plane.begin(),
-                           plane.begin() + std::ptrdiff_t(channels * kWidth));
-            }
+            const auto first_row_end = plane.begin() + std::ptrdiff_t(plane.size() / kHeight);
+            std::vector<float> out;
+            for (int row = 0; row < added; ++row)
+                out.insert(out.end(), plane.begin(), first_row_end);
             out.insert(out.end(), plane.begin(), plane.end());
             return out;
         };
