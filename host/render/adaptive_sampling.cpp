@@ -72,16 +72,27 @@ std::vector<double> planning_variances(const std::vector<AdaptivePixel>& pixels,
     return planned;
 }
 
+// How close to its floor a pixel that cannot reach the threshold is taken. With m more samples
+// sharing the weight left, rest, a pixel's relative variance is relative * (weight_terms +
+// rest^2 / m): it never falls below relative * weight_terms, what the rounds already weighted
+// carry. Where the threshold lies below that floor (a round planned from a variance estimate
+// that came out low gave its few samples much weight), every sample the cap leaves would bring it
+// only nearer the floor: the pixel takes enough for the rest to add a quarter of the floor (its
+// error then within 12% of the least it can have) and stops, instead of taking the cap.
+constexpr double kFloorMargin = 0.25;
+
 // The samples a pixel still needs for its final estimate's relative variance to reach
 // threshold^2, if the remaining weight were spread over them evenly, given the relative
-// per-sample variance `relative`; at least `least` (a last round that rests on a sample or two
-// would carry most of the pixel's weight on them) and at most what the cap leaves.
+// per-sample variance `relative` (or to come within kFloorMargin of its floor, where the
+// threshold lies below it); at least `least` (a last round that rests on a sample or two would
+// carry most of the pixel's weight on them) and at most what the cap leaves.
 long samples_needed(const AdaptivePixel& pixel, double relative, double threshold, long least,
                     long cap) {
     const long left = cap - pixel.samples;
     if (left <= least) return std::max(left, 1L);
     if (relative <= 0.0) return least;
-    const double room = threshold * threshold / relative - pixel.weight_terms;
+    const double room = std::max(threshold * threshold / relative - pixel.weight_terms,
+                                 kFloorMargin * pixel.weight_terms);
     if (room <= 0.0) return left;
     const double rest = 1.0 - pixel.weight;
     const double needed = std::ceil(rest * rest / room);

@@ -337,6 +337,54 @@ TEST_F(AdaptiveSampling, VarianceEstimateMatchesTheSpread) {
     check(renderer().render(request(kInsideSphere, "emission=0.5,0.5,0.5", path, 64)), "adaptive");
 }
 
+// A pixel whose second round was planned from a variance estimate that came out low (few samples
+// given much weight) cannot reach the threshold once later rounds show the real variance: more
+// samples only bring it nearer the floor that round's weight sets. It stops near that floor
+// instead of taking every sample the cap allows, and its weights still sum to 1. The rounds are
+// fed frames made up here (every pixel alike), so the rule is tested without the renderer's noise.
+TEST_F(AdaptiveSampling, PixelThatCannotReachTheThresholdStopsNearItsFloor) {
+    constexpr int kSide = 4;
+    constexpr size_t kPixels = kSide * kSide;
+    PathSettings path = lit_by(0.3f, false);
+    path.noise_threshold = 0.1f;
+    path.min_samples = 4;
+    FrameRequest adaptive = request(kSphere, "", path, 4096);
+    adaptive.width = kSide;
+    adaptive.height = kSide;
+    AdaptiveSampler sampler(adaptive);
+    // A frame of `samples` samples of value 1 whose per-sample relative variance reads `relative`.
+    const auto round_frame = [&](double relative, int samples) {
+        Frame frame;
+        frame.samples = samples;
+        frame.linear.assign(kPixels * 3, 1.0f);
+        frame.variance.assign(kPixels * 3, static_cast<float>(relative / samples));
+        frame.albedo.assign(kPixels * 3, 0.5f);
+        frame.normal.assign(kPixels * 3, 0.0f);
+        frame.alpha.assign(kPixels, 1.0f);
+        frame.depth.assign(kPixels, 1.0f);
+        return frame;
+    };
+    // The first round reads a relative variance of 0.08, so the second is planned as a pixel
+    // needing 8 samples (0.08 / 0.1^2) and its 4 get half the weight; from then on every round
+    // reads 10, the pixel's real variance.
+    int rounds = 0;
+    while (const FrameRequest* round = sampler.next_round()) {
+        ASSERT_LT(rounds, 20);
+        sampler.add_round(round_frame(rounds == 0 ? 0.08 : 10.0, round->samples));
+        ++rounds;
+    }
+    // With half its weight on 4 samples, the pixel's relative variance is at least
+    // 10 * 0.5^2 / 4 = 0.625, far above 0.1^2: the rule takes what brings the rest of the weight
+    // within a quarter of that floor (16 samples more) and stops there.
+    const Frame frame = sampler.frame(*scene_);
+    for (size_t i = 0; i < kPixels; ++i) {
+        EXPECT_LE(frame.samples_per_pixel[i], 64.0f) << i;
+        EXPECT_NEAR(frame.linear[i * 3], 1.0f, 1e-6f) << i;
+    }
+    ASSERT_TRUE(frame.adaptive);
+    EXPECT_EQ(frame.adaptive->share_converged, 0.0);
+}
+
 // Fixed sampling fills the sample counts and variance too (the denoiser reads them), and a pixel
 // whose limit stops it after its first samples reads what a render of only those samples reads.
 TEST_F(AdaptiveSampling, SampleLimitsGiveEachPixelItsOwnSamples) {
