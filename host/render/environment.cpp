@@ -65,6 +65,7 @@ HdrImage generate_map(int width, int n, F&& radiance) {
         const double cos_bottom = std::cos(kPi * (y + 1) / map.height);
         for (int j = 0; j < n; ++j) {
             const double z = cos_top + (cos_bottom - cos_top) * (j + 0.5) / n;
+            // pi times v = acos(z) / pi, rounded as environment_direction(u, v) rounds it.
             const double theta = kPi * (std::acos(std::clamp(z, -1.0, 1.0)) / kPi);
             sin_theta[j] = std::sin(theta);
             cos_theta[j] = std::cos(theta);
