@@ -40,6 +40,13 @@ void validate_width(int width, const char* what) {
     }
 }
 
+// The map's direction at polar angle theta (from +z) and azimuth phi, from their sines and
+// cosines: (-sin theta cos phi, sin theta sin phi, cos theta).
+glm::dvec3 direction_from_angles(double sin_theta, double cos_theta, double cos_phi,
+                                 double sin_phi) {
+    return {-sin_theta * cos_phi, sin_theta * sin_phi, cos_theta};
+}
+
 // Fills a width x width / 2 map with `radiance(direction)` averaged over n x n points of each
 // texel, equally spaced in cos theta and phi (so equally weighted by solid angle). The points'
 // sines and cosines are computed once per row and once per column, as environment_direction
@@ -75,9 +82,8 @@ HdrImage generate_map(int width, int n, F&& radiance) {
             for (int j = 0; j < n; ++j) {
                 for (int i = 0; i < n; ++i) {
                     const size_t column = size_t(x) * n + i;
-                    sum += glm::dvec3(
-                        radiance(glm::dvec3(-sin_theta[j] * cos_phi[column],
-                                            sin_theta[j] * sin_phi[column], cos_theta[j])));
+                    sum += glm::dvec3(radiance(direction_from_angles(
+                        sin_theta[j], cos_theta[j], cos_phi[column], sin_phi[column])));
                 }
             }
             const glm::dvec3 mean = sum / double(n * n);
@@ -349,8 +355,7 @@ PreethamModel sky_model_with_ground(const SkySettings& sky) {
 glm::dvec3 environment_direction(double u, double v) {
     const double phi = 2.0 * kPi * u;
     const double theta = kPi * v;
-    const double s = std::sin(theta);
-    return {-s * std::cos(phi), s * std::sin(phi), std::cos(theta)};
+    return direction_from_angles(std::sin(theta), std::cos(theta), std::cos(phi), std::sin(phi));
 }
 
 glm::dvec2 environment_coordinates(glm::dvec3 direction) {
