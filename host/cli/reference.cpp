@@ -17,6 +17,7 @@
 
 #include "commands.hpp"
 #include "device/cache_directory.hpp"
+#include "device/program_cache.hpp"
 #include "scene/kernel_api.hpp"
 #include "util/strings.hpp"
 #include "util/version.hpp"
@@ -607,9 +608,10 @@ std::string cli_man_page(const CliCommand& top) {
                roff_text("JSON Schemas of the files fgr reads and writes (view files, camera "
                          "paths, formula and IFS scenes)."));
     roff_entry(out, "\\fI$XDG_CACHE_HOME/fgr/kernels\\fR, \\fI~/.cache/fgr/kernels\\fR",
-               roff_text("The kernel cache: compiled programs, the device math self-test's "
-                         "verdicts and the scene index. `fgr cache size` and `fgr cache clear` "
-                         "manage it."));
+               roff_text("The kernel cache: compiled programs (for drivers that keep none of "
+                         "their own: PoCL keeps its own in ~/.cache/pocl), the device math "
+                         "self-test's verdicts and the scene index. `fgr cache size` and `fgr "
+                         "cache clear` manage it."));
     out += ".SH ENVIRONMENT\n";
     roff_entry(out, "\\fBFGR_PLUGIN_PATH\\fR",
                roff_text("Directories (separated by colons) searched for scenes before the "
@@ -620,6 +622,10 @@ std::string cli_man_page(const CliCommand& top) {
                roff_text(fmt::format("The kernel cache's size limit in MiB (default {}); the "
                                      "least recently used entries are evicted past it.",
                                      kDefaultCacheLimitBytes >> 20)));
+    roff_entry(out, fmt::format("\\fB{}\\fR", roff_text(kStoredProgramsVariable)),
+               roff_text("always: store compiled programs in the kernel cache for every driver, "
+                         "PoCL too (whose own cache keeps them otherwise); auto (the default): "
+                         "only for drivers that keep none."));
     roff_entry(out, "\\fBFGR_MPI_RANK0_RENDERS\\fR",
                roff_text("Under mpirun, 0 keeps rank 0 to coordinating the other ranks instead of "
                          "rendering too."));

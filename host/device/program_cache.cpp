@@ -4,6 +4,7 @@
 #include <fmt/format.h>
 #include <spdlog/spdlog.h>
 
+#include <atomic>
 #include <chrono>
 #include <cstdlib>
 #include <exception>
@@ -74,8 +75,37 @@ std::string first_build_error(const std::string& log) {
     return "";
 }
 
-ProgramCache::ProgramCache(std::filesystem::path directory, std::uintmax_t size_limit)
-    : directory_(std::move(directory)), size_limit_(size_limit) {}
+StoredPrograms stored_programs_setting() {
+    const char* text = std::getenv(kStoredProgramsVariable);
+    if (text == nullptr || *text == '\0' || std::string_view(text) == "auto") {
+        return StoredPrograms::WhereTheDriverKeepsNone;
+    }
+    if (std::string_view(text) == "always") return StoredPrograms::Always;
+    static std::atomic<bool> warned{false};
+    if (!warned.exchange(true)) {
+        spdlog::warn(
+            "{}='{}' is neither 'auto' nor 'always': storing programs only where the "
+            "driver keeps none",
+            kStoredProgramsVariable, printable_excerpt(text));
+    }
+    return StoredPrograms::WhereTheDriverKeepsNone;
+}
+
+bool driver_keeps_programs(const DeviceInfo& info) {
+    const bool pocl = info.platform == "Portable Computing Language" ||
+                      info.version.find("PoCL") != std::string::npos;
+    const char* cache = std::getenv("POCL_KERNEL_CACHE");
+    return pocl && !(cache && std::string_view(cache) == "0");
+}
+
+ProgramCache::ProgramCache(std::filesystem::path directory, std::uintmax_t size_limit,
+                           StoredPrograms stored)
+    : directory_(std::move(directory)), size_limit_(size_limit), stored_(stored) {}
+
+bool ProgramCache::stores_binaries(const DeviceInfo& device) const {
+    return !directory_.empty() &&
+           (stored_ == StoredPrograms::Always || !driver_keeps_programs(device));
+}
 
 std::filesystem::path ProgramCache::default_directory() {
     if (const char* dir = std::getenv("FGR_CACHE_DIR"); dir && *dir) return dir;
@@ -131,7 +161,7 @@ cl::Program ProgramCache::build(const ComputeDevice& device, const AssembledProg
         if (const std::string log = build_log(built, device.device); log.size() > 1) {
             spdlog::debug("OpenCL build log:\n{}", log);
         }
-        if (!file.empty()) store_binary(built, key, file);
+        if (stores_binaries(device.info)) store_binary(built, key, file);
     }
     result.build_ms = elapsed_ms(start);
     spdlog::debug("program {} ready in {:.0f} ms ({})", key, result.build_ms,

@@ -31,6 +31,7 @@
 
 #include "child_process.hpp"
 #include "cli/commands.hpp"
+#include "device/program_cache.hpp"
 #include "image/embedded_view.hpp"
 #include "image/hdr_io.hpp"
 #include "image/image_io.hpp"
@@ -1296,11 +1297,13 @@ TEST_F(CliUncomputable, NonFinitePixelsAreAnErrorAndNoFile) {
 
 class CliCache : public CliWithOwnCache {
 protected:
-    RunResult render(const std::vector<std::string>& extra = {},
-                     const Environment& environment = {}) {
+    // fgr render, storing its programs' binaries as it does for a driver that keeps none (PoCL,
+    // the tests' driver, keeps its own: StoredPrograms).
+    RunResult render(const std::vector<std::string>& extra = {}, Environment environment = {}) {
         std::vector<std::string> args{"render",  "mandelbulb", "-o",       out_png().string(),
                                       "--width", "16",         "--height", "12"};
         args.insert(args.end(), extra.begin(), extra.end());
+        environment.emplace(kStoredProgramsVariable, "always");
         return run_with(args, {}, environment);
     }
 
@@ -1362,6 +1365,29 @@ TEST_F(CliCache, WithoutASubcommandItSaysWhichThereAre) {
     EXPECT_EQ(result.exit_code, 2) << result;
     expect_one_error_line(result);
     EXPECT_TRUE(contains_ignoring_case(result.err, "size or clear")) << result;
+}
+
+// PoCL, the tests' driver, keeps the programs it compiles in its own cache: by default a render
+// leaves no program binary in fgr's (StoredPrograms), and a value of FGR_CACHE_PROGRAMS that fgr
+// does not know is one warning, the default kept.
+TEST_F(CliWithOwnCache, OnPoclTheProgramsStayInPoclsOwnCache) {
+    const std::vector<std::string> args{"render",  "mandelbulb", "-o",       out_png().string(),
+                                        "--width", "16",         "--height", "12"};
+    const auto no_binaries = [&] {
+        for (const std::string& name : directory_listing(cache_dir())) {
+            EXPECT_FALSE(name.ends_with(".bin")) << name;
+        }
+    };
+    const RunResult result = run_with(args);
+    ASSERT_EQ(result.exit_code, 0) << result;
+    no_binaries();
+    const RunResult unknown = run_with(args, {}, {{kStoredProgramsVariable, "sometimes"}});
+    ASSERT_EQ(unknown.exit_code, 0) << unknown;
+    EXPECT_NE(unknown.err.find("warning: FGR_CACHE_PROGRAMS='sometimes' is neither 'auto' nor "
+                               "'always'"),
+              std::string::npos)
+        << unknown;
+    no_binaries();
 }
 
 // Three programs of ~0.5 MB each (and the math self-test's) against a 1 MiB limit.

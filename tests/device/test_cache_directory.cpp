@@ -10,6 +10,7 @@
 #include <cstdlib>
 #include <filesystem>
 #include <fstream>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -75,6 +76,58 @@ TEST(CacheDirectory, LimitComesFromTheEnvironmentInMebibytes) {
     ::unsetenv(kCacheLimitVariable);
     EXPECT_EQ(cache_size_limit(), kDefaultCacheLimitBytes);
     if (saved) ::setenv(kCacheLimitVariable, restore.c_str(), 1);
+}
+
+// Restores an environment variable as it was when the scope ends.
+class SavedVariable {
+public:
+    explicit SavedVariable(const char* name) : name_(name) {
+        if (const char* value = std::getenv(name)) saved_ = value;
+    }
+    ~SavedVariable() {
+        if (saved_) {
+            ::setenv(name_, saved_->c_str(), 1);
+        } else {
+            ::unsetenv(name_);
+        }
+    }
+    SavedVariable(const SavedVariable&) = delete;
+    SavedVariable& operator=(const SavedVariable&) = delete;
+
+private:
+    const char* name_;
+    std::optional<std::string> saved_;
+};
+
+// PoCL keeps every program it compiles unless POCL_KERNEL_CACHE=0; a GPU driver keeps none that
+// fgr could count on. $FGR_CACHE_PROGRAMS=always stores binaries for every driver.
+TEST(StoredPrograms, PoclKeepsItsProgramsUnlessItsCacheIsOff) {
+    DeviceInfo pocl;
+    pocl.platform = "Portable Computing Language";
+    pocl.version = "OpenCL 3.0 PoCL 3.1+debian  Linux, None+Asserts, RELOC, LLVM 15.0.6";
+    DeviceInfo nvidia;
+    nvidia.platform = "NVIDIA CUDA";
+    nvidia.version = "OpenCL 3.0 CUDA";
+    const SavedVariable saved_pocl("POCL_KERNEL_CACHE");
+    ::unsetenv("POCL_KERNEL_CACHE");
+    EXPECT_TRUE(driver_keeps_programs(pocl));
+    EXPECT_FALSE(driver_keeps_programs(nvidia));
+    ::setenv("POCL_KERNEL_CACHE", "1", 1);
+    EXPECT_TRUE(driver_keeps_programs(pocl));
+    ::setenv("POCL_KERNEL_CACHE", "0", 1);
+    EXPECT_FALSE(driver_keeps_programs(pocl));
+
+    const SavedVariable saved_setting(kStoredProgramsVariable);
+    ::unsetenv(kStoredProgramsVariable);
+    EXPECT_EQ(stored_programs_setting(), StoredPrograms::WhereTheDriverKeepsNone);
+    for (const char* value : {"", "auto"}) {
+        ::setenv(kStoredProgramsVariable, value, 1);
+        EXPECT_EQ(stored_programs_setting(), StoredPrograms::WhereTheDriverKeepsNone) << value;
+    }
+    ::setenv(kStoredProgramsVariable, "always", 1);
+    EXPECT_EQ(stored_programs_setting(), StoredPrograms::Always);
+    ::setenv(kStoredProgramsVariable, "sometimes", 1);
+    EXPECT_EQ(stored_programs_setting(), StoredPrograms::WhereTheDriverKeepsNone);
 }
 
 TEST(CacheDirectory, TrimEvictsTheLeastRecentlyUsedEntriesAndNothingElse) {
@@ -151,19 +204,49 @@ protected:
     fs::path entry(const AssembledProgram& built) const {
         return dir_.path() / (ProgramCache::cache_key(device_, built) + ".bin");
     }
+    // A cache that stores every program's binary, as for a driver without a cache of its own.
+    ProgramCache stored_cache(std::uintmax_t limit = cache_size_limit()) const {
+        return ProgramCache(dir_.path(), limit, StoredPrograms::Always);
+    }
 
     const ComputeDevice device_ = open_device(-1);
     const test::TempDir dir_{"fgr_program_cache_test"};
 };
 
+// The tests' driver is PoCL, whose own cache keeps the programs it compiles: fgr stores a binary
+// only when told to (or, on another driver, by default).
+TEST_F(ProgramCacheDisk, BinariesAreStoredOnlyWhereTheDriverKeepsNoneOrWhenAsked) {
+    ASSERT_TRUE(driver_keeps_programs(device_.info)) << device_.info.platform;
+    const AssembledProgram a = program(0.5f);
+    ProgramCache by_default(dir_.path(), cache_size_limit(),
+                            StoredPrograms::WhereTheDriverKeepsNone);
+    EXPECT_FALSE(by_default.stores_binaries(device_.info));
+    BuildReport report;
+    by_default.build(device_, a, &report);
+    EXPECT_EQ(report.origin, BuildReport::Origin::Compiled);
+    EXPECT_EQ(names(dir_.path()), std::vector<std::string>{}) << "a binary was stored";
+
+    DeviceInfo gpu = device_.info;
+    gpu.platform = "NVIDIA CUDA";
+    gpu.version = "OpenCL 3.0 CUDA";
+    EXPECT_TRUE(by_default.stores_binaries(gpu));
+    EXPECT_FALSE(
+        ProgramCache(fs::path(), cache_size_limit(), StoredPrograms::Always).stores_binaries(gpu))
+        << "a cache without a directory stores nothing";
+
+    stored_cache().build(device_, a, &report);
+    EXPECT_EQ(report.origin, BuildReport::Origin::Compiled);
+    EXPECT_TRUE(fs::exists(entry(a)));
+}
+
 TEST_F(ProgramCacheDisk, ADiskHitMarksTheEntryAsRecentlyUsed) {
     const AssembledProgram a = program(0.5f);
-    ProgramCache(dir_.path()).build(device_, a);
+    stored_cache().build(device_, a);
     ASSERT_TRUE(fs::exists(entry(a)));
     age(entry(a), hours(48));
     const auto before = fs::last_write_time(entry(a));
     BuildReport report;
-    ProgramCache(dir_.path()).build(device_, a, &report);
+    stored_cache().build(device_, a, &report);
     ASSERT_EQ(report.origin, BuildReport::Origin::Disk);
     EXPECT_GT(fs::last_write_time(entry(a)), before + hours(47)) << "the hit did not mark it used";
 }
@@ -171,20 +254,20 @@ TEST_F(ProgramCacheDisk, ADiskHitMarksTheEntryAsRecentlyUsed) {
 TEST_F(ProgramCacheDisk, StoringEvictsTheLeastRecentlyUsedBeyondTheLimit) {
     const AssembledProgram a = program(0.5f), b = program(0.6f), c = program(0.7f);
     // Each entry's size, from a first round.
-    ProgramCache(dir_.path()).build(device_, a);
-    ProgramCache(dir_.path()).build(device_, b);
-    ProgramCache(dir_.path()).build(device_, c);
+    stored_cache().build(device_, a);
+    stored_cache().build(device_, b);
+    stored_cache().build(device_, c);
     const std::uintmax_t size_a = fs::file_size(entry(a)), size_c = fs::file_size(entry(c));
     fs::remove(entry(c));
 
     // b was stored after a, but a is used again later: b is the least recently used.
     age(entry(a), hours(2));
     age(entry(b), hours(1));
-    ProgramCache(dir_.path()).build(device_, a);  // a disk hit
+    stored_cache().build(device_, a);  // a disk hit
     BuildReport report;
     // Room for a and c with a margin (a rebuilt binary may differ by a few bytes), not for b too.
     const std::uintmax_t limit = size_a + size_c + fs::file_size(entry(b)) / 2;
-    ProgramCache(dir_.path(), limit).build(device_, c, &report);
+    stored_cache(limit).build(device_, c, &report);
     EXPECT_EQ(report.origin, BuildReport::Origin::Compiled);
     EXPECT_TRUE(fs::exists(entry(a)));
     EXPECT_FALSE(fs::exists(entry(b))) << "the least recently used entry was kept";
@@ -192,7 +275,7 @@ TEST_F(ProgramCacheDisk, StoringEvictsTheLeastRecentlyUsedBeyondTheLimit) {
     EXPECT_LE(cache_usage(dir_.path()).bytes, limit);
 
     // A limit smaller than one entry keeps just the newest.
-    ProgramCache(dir_.path(), 1).build(device_, b);
+    stored_cache(1).build(device_, b);
     EXPECT_EQ(names(dir_.path()), std::vector<std::string>{entry(b).filename().string()});
 }
 

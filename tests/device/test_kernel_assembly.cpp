@@ -322,19 +322,21 @@ TEST_F(ProgramCacheTest, SecondBuildComesFromDiskAndADamagedEntryIsRebuilt) {
         test::inline_scene("real scene_de(vec3 p, PARAMS) { return v3_length(p) - 0.5f; }");
     const AssembledProgram program = assemble_program(scene, {4, 0});
     BuildReport report;
-    ProgramCache(directory_).build(device, program, &report);
+    ProgramCache(directory_, cache_size_limit(), StoredPrograms::Always)
+        .build(device, program, &report);
     EXPECT_EQ(report.origin, BuildReport::Origin::Compiled);
     const auto entry = directory_ / (ProgramCache::cache_key(device, program) + ".bin");
     ASSERT_TRUE(std::filesystem::exists(entry));
 
-    ProgramCache fresh(directory_);
+    ProgramCache fresh(directory_, cache_size_limit(), StoredPrograms::Always);
     fresh.build(device, program, &report);
     EXPECT_EQ(report.origin, BuildReport::Origin::Disk);
     fresh.build(device, program, &report);
     EXPECT_EQ(report.origin, BuildReport::Origin::Memory);
 
     std::ofstream(entry, std::ios::binary | std::ios::trunc) << "not a program binary";
-    ProgramCache(directory_).build(device, program, &report);
+    ProgramCache(directory_, cache_size_limit(), StoredPrograms::Always)
+        .build(device, program, &report);
     EXPECT_EQ(report.origin, BuildReport::Origin::Compiled);
 }
 

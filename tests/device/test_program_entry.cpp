@@ -155,7 +155,7 @@ TEST(ProgramCacheEntries, ADamagedEntryIsRemovedWithAWarningAndCompiledAgain) {
     const AssembledProgram program = assemble_program(scene, {4, 0});
     const std::string key = ProgramCache::cache_key(device, program);
     const fs::path entry = dir.path() / (key + ".bin");
-    ProgramCache(dir.path()).build(device, program);
+    ProgramCache(dir.path(), cache_size_limit(), StoredPrograms::Always).build(device, program);
     const std::string sound = test::read_file(entry);
     ASSERT_EQ(check_program_entry(sound, key).problem, "");
     const std::string binary(check_program_entry(sound, key).binary);
@@ -197,7 +197,8 @@ TEST(ProgramCacheEntries, ADamagedEntryIsRemovedWithAWarningAndCompiledAgain) {
         damage.make();
         BuildReport report;
         const test::LogCapture log;
-        ProgramCache(dir.path()).build(device, program, &report);
+        ProgramCache(dir.path(), cache_size_limit(), StoredPrograms::Always)
+            .build(device, program, &report);
         EXPECT_EQ(report.origin, BuildReport::Origin::Compiled);
         const std::vector<std::string> lines = log.lines();
         ASSERT_EQ(lines.size(), 1u) << ::testing::PrintToString(lines);
@@ -210,7 +211,8 @@ TEST(ProgramCacheEntries, ADamagedEntryIsRemovedWithAWarningAndCompiledAgain) {
     // And the sound entry is a disk hit, with nothing said.
     BuildReport report;
     const test::LogCapture log;
-    ProgramCache(dir.path()).build(device, program, &report);
+    ProgramCache(dir.path(), cache_size_limit(), StoredPrograms::Always)
+        .build(device, program, &report);
     EXPECT_EQ(report.origin, BuildReport::Origin::Disk);
     EXPECT_TRUE(log.lines().empty()) << ::testing::PrintToString(log.lines());
 }
@@ -224,6 +226,7 @@ TEST(ProgramCacheEntries, ARenderWithDamagedEntriesSucceedsAndSaysSo) {
     test::ChildOptions options;
     options.working_dir = dir.path();
     options.environment["FGR_CACHE_DIR"] = cache.string();
+    options.environment[kStoredProgramsVariable] = "always";  // PoCL keeps its own otherwise
     options.environment["FGR_PLUGIN_PATH"] = std::nullopt;
     const std::vector<std::string> render{"render",   "mandelbulb", "--width", "16",
                                           "--height", "12",         "-o",      "out.png"};
