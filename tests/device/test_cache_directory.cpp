@@ -7,10 +7,8 @@
 
 #include <algorithm>
 #include <chrono>
-#include <cstdlib>
 #include <filesystem>
 #include <fstream>
-#include <optional>
 #include <string>
 #include <vector>
 
@@ -20,6 +18,7 @@
 #include "device/opencl_device.hpp"
 #include "device/program_cache.hpp"
 #include "scene/scene_index.hpp"
+#include "scoped_env.hpp"
 #include "test_scenes.hpp"
 
 namespace fgr {
@@ -67,37 +66,13 @@ TEST(CacheDirectory, LimitComesFromTheEnvironmentInMebibytes) {
     for (const char* bad : {"", "0", "-1", "1.5", "12x", " 3", "x", "99999999999999999999999"}) {
         EXPECT_FALSE(parse_cache_limit(bad).has_value()) << bad;
     }
-    const char* saved = std::getenv(kCacheLimitVariable);
-    const std::string restore = saved ? saved : "";
-    ::setenv(kCacheLimitVariable, "7", 1);
+    test::ScopedEnv limit(kCacheLimitVariable, "7");
     EXPECT_EQ(cache_size_limit(), std::uintmax_t{7} << 20);
-    ::setenv(kCacheLimitVariable, "seven", 1);
+    limit.set("seven");
     EXPECT_EQ(cache_size_limit(), kDefaultCacheLimitBytes);
-    ::unsetenv(kCacheLimitVariable);
+    limit.set(nullptr);
     EXPECT_EQ(cache_size_limit(), kDefaultCacheLimitBytes);
-    if (saved) ::setenv(kCacheLimitVariable, restore.c_str(), 1);
 }
-
-// Restores an environment variable as it was when the scope ends.
-class SavedVariable {
-public:
-    explicit SavedVariable(const char* name) : name_(name) {
-        if (const char* value = std::getenv(name)) saved_ = value;
-    }
-    ~SavedVariable() {
-        if (saved_) {
-            ::setenv(name_, saved_->c_str(), 1);
-        } else {
-            ::unsetenv(name_);
-        }
-    }
-    SavedVariable(const SavedVariable&) = delete;
-    SavedVariable& operator=(const SavedVariable&) = delete;
-
-private:
-    const char* name_;
-    std::optional<std::string> saved_;
-};
 
 // PoCL keeps every program it compiles unless POCL_KERNEL_CACHE=0; a GPU driver keeps none that
 // fgr could count on. $FGR_CACHE_PROGRAMS=always stores binaries for every driver.
@@ -108,25 +83,23 @@ TEST(StoredPrograms, PoclKeepsItsProgramsUnlessItsCacheIsOff) {
     DeviceInfo nvidia;
     nvidia.platform = "NVIDIA CUDA";
     nvidia.version = "OpenCL 3.0 CUDA";
-    const SavedVariable saved_pocl("POCL_KERNEL_CACHE");
-    ::unsetenv("POCL_KERNEL_CACHE");
+    test::ScopedEnv pocl_cache("POCL_KERNEL_CACHE", nullptr);
     EXPECT_TRUE(driver_keeps_programs(pocl));
     EXPECT_FALSE(driver_keeps_programs(nvidia));
-    ::setenv("POCL_KERNEL_CACHE", "1", 1);
+    pocl_cache.set("1");
     EXPECT_TRUE(driver_keeps_programs(pocl));
-    ::setenv("POCL_KERNEL_CACHE", "0", 1);
+    pocl_cache.set("0");
     EXPECT_FALSE(driver_keeps_programs(pocl));
 
-    const SavedVariable saved_setting(kStoredProgramsVariable);
-    ::unsetenv(kStoredProgramsVariable);
+    test::ScopedEnv setting(kStoredProgramsVariable, nullptr);
     EXPECT_EQ(stored_programs_setting(), StoredPrograms::WhereTheDriverKeepsNone);
     for (const char* value : {"", "auto"}) {
-        ::setenv(kStoredProgramsVariable, value, 1);
+        setting.set(value);
         EXPECT_EQ(stored_programs_setting(), StoredPrograms::WhereTheDriverKeepsNone) << value;
     }
-    ::setenv(kStoredProgramsVariable, "always", 1);
+    setting.set("always");
     EXPECT_EQ(stored_programs_setting(), StoredPrograms::Always);
-    ::setenv(kStoredProgramsVariable, "sometimes", 1);
+    setting.set("sometimes");
     EXPECT_EQ(stored_programs_setting(), StoredPrograms::WhereTheDriverKeepsNone);
 }
 

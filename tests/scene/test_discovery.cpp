@@ -24,6 +24,7 @@
 #include "scene/discovery.hpp"
 #include "scene/plugin_loader.hpp"
 #include "scene/scene_index.hpp"
+#include "scoped_env.hpp"
 #include "test_files.hpp"
 
 namespace fgr {
@@ -32,29 +33,6 @@ namespace fs = std::filesystem;
 
 using test::kFixtureDir;
 using test::kPluginDir;
-
-// Sets (or unsets) an environment variable for one test and restores the old value afterwards.
-class ScopedEnv {
-public:
-    ScopedEnv(const char* name, const char* value) : name_(name) {
-        if (const char* old = std::getenv(name)) old_value_ = old;
-        set(value);
-    }
-    ScopedEnv(const ScopedEnv&) = delete;
-    ScopedEnv& operator=(const ScopedEnv&) = delete;
-    ~ScopedEnv() { set(old_value_ ? old_value_->c_str() : nullptr); }
-
-private:
-    void set(const char* value) {
-        if (value != nullptr) {
-            setenv(name_.c_str(), value, 1);
-        } else {
-            unsetenv(name_.c_str());
-        }
-    }
-    std::string name_;
-    std::optional<std::string> old_value_;
-};
 
 const SkippedPlugin* find_skipped_named(const Discovery& discovery, const std::string& file_name) {
     for (const SkippedPlugin& skipped : discovery.skipped) {
@@ -149,8 +127,8 @@ TEST(LoadScenePlugin, RefusesMissingFile) {
 }
 
 TEST(PluginSearchPath, EnvironmentThenExecutableThenHome) {
-    const ScopedEnv plugin_path("FGR_PLUGIN_PATH", "/first::/second/dir:");
-    const ScopedEnv home("HOME", "/home/tester");
+    const test::ScopedEnv plugin_path("FGR_PLUGIN_PATH", "/first::/second/dir:");
+    const test::ScopedEnv home("HOME", "/home/tester");
     const std::vector<fs::path> expected = {"/first", "/second/dir",
                                             "/opt/fgr/" FGR_TEST_LIBDIR "/fgr/plugins",
                                             "/home/tester/.local/share/fgr/plugins"};
@@ -158,8 +136,8 @@ TEST(PluginSearchPath, EnvironmentThenExecutableThenHome) {
 }
 
 TEST(PluginSearchPath, WithoutEnvironment) {
-    const ScopedEnv plugin_path("FGR_PLUGIN_PATH", nullptr);
-    const ScopedEnv home("HOME", nullptr);
+    const test::ScopedEnv plugin_path("FGR_PLUGIN_PATH", nullptr);
+    const test::ScopedEnv home("HOME", nullptr);
     EXPECT_EQ(plugin_search_path("/opt/fgr/bin"),
               std::vector<fs::path>{"/opt/fgr/" FGR_TEST_LIBDIR "/fgr/plugins"});
 }
@@ -168,7 +146,7 @@ TEST(PluginSearchPath, EnvironmentRestoredAfterScope) {
     const char* before = std::getenv("FGR_PLUGIN_PATH");
     const std::optional<std::string> saved =
         before ? std::optional<std::string>(before) : std::nullopt;
-    { const ScopedEnv plugin_path("FGR_PLUGIN_PATH", "/changed"); }
+    { const test::ScopedEnv plugin_path("FGR_PLUGIN_PATH", "/changed"); }
     const char* after = std::getenv("FGR_PLUGIN_PATH");
     EXPECT_EQ(after ? std::optional<std::string>(after) : std::nullopt, saved);
 }

@@ -6,15 +6,14 @@
 #include <gtest/gtest.h>
 
 #include <chrono>
-#include <cstdlib>
 #include <filesystem>
 #include <fstream>
-#include <optional>
 #include <string>
 
 #include "child_process.hpp"
 #include "scene/parameters.hpp"
 #include "scene/plugin_loader.hpp"
+#include "scoped_env.hpp"
 #include "test_scenes.hpp"
 #include "viewer/file_watcher.hpp"
 
@@ -134,24 +133,11 @@ TEST(CarryParamValues, KeepsValuesOfParametersThatStillExist) {
 // reload_scene_plugin makes (and must remove) can be counted.
 class OwnTemporaryDirectory {
 public:
-    OwnTemporaryDirectory() {
-        if (const char* tmpdir = std::getenv("TMPDIR")) saved_ = tmpdir;
-        ::setenv("TMPDIR", dir_.path().c_str(), 1);
-    }
-    OwnTemporaryDirectory(const OwnTemporaryDirectory&) = delete;
-    OwnTemporaryDirectory& operator=(const OwnTemporaryDirectory&) = delete;
-    ~OwnTemporaryDirectory() {
-        if (saved_) {
-            ::setenv("TMPDIR", saved_->c_str(), 1);
-        } else {
-            ::unsetenv("TMPDIR");
-        }
-    }
     const fs::path& path() const { return dir_.path(); }
 
 private:
     test::TempDir dir_{"fgr_reload_tmp"};
-    std::optional<std::string> saved_;
+    test::ScopedEnv tmpdir_{"TMPDIR", dir_.path().c_str()};
 };
 
 float scale_default(const LoadResult& loaded) {
