@@ -161,23 +161,35 @@ typedef struct light_sample {
     real reach;
 } light_sample;
 
-inline light_sample sample_light(vec3 p, real u_pick, real u1, real u2, mask wanted,
+/* Where u, uniform in [low, low + width), falls in that interval, as a uniform number in [0, 1)
+ * (lanes outside it get a number in [0, 1) too, which they ignore). */
+inline real rescaled_within(real u, float low, float width) {
+    return fmax(fmin((u - low) / width, fgr_real(0.99999994f)), fgr_real(0.0f));
+}
+
+/* The light is picked by u1, which the picked source then uses again, rescaled to [0, 1), for
+ * its direction. A pixel's (u1, u2) are a stratified 2D set, and those that fall in one source's
+ * interval of u1 stay one, stretched: each source's directions are stratified over the samples
+ * that pick it. A pick of its own dimension would hand each source a random subset of the
+ * points, no better spread than independent ones. */
+inline light_sample sample_light(vec3 p, real u1, real u2, mask wanted,
                                  __constant const float* lights, path_settings settings,
                                  float max_distance, ENVIRONMENT) {
     light_sample s;
     /* The environment, for the lanes that pick it (the last light's pick ends at 1, so the
      * others all take a light below). */
     real env_pdf = fgr_real(0.0f);
-    const mask env_picked = wanted & (u_pick < settings.environment_pick);
-    s.dir = environment_light_sample(u1, u2, env_picked, settings, ENVIRONMENT_PASS, &env_pdf,
-                                     &s.radiance);
+    const mask env_picked = wanted & (u1 < settings.environment_pick);
+    s.dir = environment_light_sample(rescaled_within(u1, 0.0f, settings.environment_pick), u2,
+                                     env_picked, settings, ENVIRONMENT_PASS, &env_pdf, &s.radiance);
     s.pdf = settings.environment_pick * env_pdf;
     s.reach = fgr_real(max_distance);
     float picked_before = settings.environment_pick;
     for (int i = 0; i < settings.light_count; ++i) {
         __constant const float* light = lights + i * FGR_PATH_LIGHT_FLOATS;
         const float pick = light[FGR_PATH_LIGHT_PICK_UNTIL] - picked_before;
-        const mask chosen = (u_pick >= picked_before) & (u_pick < light[FGR_PATH_LIGHT_PICK_UNTIL]);
+        const float picked_from = picked_before;
+        const mask chosen = (u1 >= picked_from) & (u1 < light[FGR_PATH_LIGHT_PICK_UNTIL]);
         picked_before = light[FGR_PATH_LIGHT_PICK_UNTIL];
         if (!fgr_any(chosen)) continue;
         const vec3 vector = light_vec3(light, FGR_PATH_LIGHT_VECTOR);
@@ -199,7 +211,8 @@ inline light_sample sample_light(vec3 p, real u_pick, real u1, real u2, mask wan
             pdf = fgr_real(0.0f);
             reach = fgr_real(max_distance);
         } else {
-            dir = sample_cone(vector, fgr_real(cos_max), u1, u2);
+            dir =
+                sample_cone(vector, fgr_real(cos_max), rescaled_within(u1, picked_from, pick), u2);
             radiance = colour;
             pdf = fgr_real(pick * cone_pdf(cos_max));
             reach = fgr_real(max_distance);
@@ -329,7 +342,6 @@ inline void render_packet_sample(int tile, FGR_RENDER_ARGS, __constant const flo
 
         const vec3 leave = leave_surface(p, n, path_length, limits);
         const real2 light_u = sampler_next_2d(&rng);
-        const real light_pick = sampler_next_1d(&rng);
         const real2 bsdf_u = sampler_next_2d(&rng);
         const real lobe_u = sampler_next_1d(&rng);
         const real roulette_u = sampler_next_1d(&rng);
@@ -337,8 +349,8 @@ inline void render_packet_sample(int tile, FGR_RENDER_ARGS, __constant const flo
         /* Next-event estimation, where the surface is not a perfect mirror there. */
         if (light_sampling) {
             const light_sample light =
-                sample_light(p, light_pick, light_u.x, light_u.y, (mask)(FGR_TRUE), lights,
-                             settings, limits.max_distance, ENVIRONMENT_PASS);
+                sample_light(p, light_u.x, light_u.y, (mask)(FGR_TRUE), lights, settings,
+                             limits.max_distance, ENVIRONMENT_PASS);
             const vec3 f = bsdf_eval(m, n, wo, light.dir);
             mask lit = active & (v3_dot(light.dir, n) > 0.0f) & (fmax(fmax(f.x, f.y), f.z) > 0.0f) &
                        (fmax(fmax(light.radiance.x, light.radiance.y), light.radiance.z) > 0.0f);
@@ -739,7 +751,6 @@ inline void shade_path_vertex(path_lanes* path, lane_sampler* rng, mask shaded, 
 
     const vec3 leave = leave_surface(p, n, path_length, limits);
     const real2 light_u = lane_sampler_next_2d(rng, active);
-    const real light_pick = lane_sampler_next_1d(rng, active);
     const real2 bsdf_u = lane_sampler_next_2d(rng, active);
     const real lobe_u = lane_sampler_next_1d(rng, active);
     const real roulette_u = lane_sampler_next_1d(rng, active);
@@ -747,8 +758,8 @@ inline void shade_path_vertex(path_lanes* path, lane_sampler* rng, mask shaded, 
     mask lit = (mask)(0);
     if (light_sampling) {
         /* Only the lanes shaded here search the environment's tables. */
-        const light_sample light = sample_light(p, light_pick, light_u.x, light_u.y, active, lights,
-                                                settings, limits.max_distance, ENVIRONMENT_PASS);
+        const light_sample light = sample_light(p, light_u.x, light_u.y, active, lights, settings,
+                                                limits.max_distance, ENVIRONMENT_PASS);
         const vec3 f = bsdf_eval(m, n, wo, light.dir);
         lit = active & (v3_dot(light.dir, n) > 0.0f) & (fmax(fmax(f.x, f.y), f.z) > 0.0f) &
               (fmax(fmax(light.radiance.x, light.radiance.y), light.radiance.z) > 0.0f);

@@ -18,13 +18,8 @@ struct PixelEstimate {
     long pixels = 0;
 };
 
-// The red channel's mean over the pixels `keep(i)` selects (i: the pixel's row-major index).
-template <typename Keep>
-PixelEstimate red_channel_estimate(const Frame& frame, Keep keep) {
-    std::vector<double> values;
-    for (size_t i = 0; i < frame.alpha.size(); ++i) {
-        if (keep(i)) values.push_back(frame.linear[i * 3]);
-    }
+// The mean of per-pixel values, each one independent draw, with its standard error.
+inline PixelEstimate estimate_of(const std::vector<double>& values) {
     PixelEstimate result;
     result.pixels = static_cast<long>(values.size());
     if (values.size() < 2) return result;
@@ -35,6 +30,16 @@ PixelEstimate red_channel_estimate(const Frame& frame, Keep keep) {
     result.variance = squares / double(values.size() - 1);
     result.standard_error = std::sqrt(result.variance / double(values.size()));
     return result;
+}
+
+// The red channel's mean over the pixels `keep(i)` selects (i: the pixel's row-major index).
+template <typename Keep>
+PixelEstimate red_channel_estimate(const Frame& frame, Keep keep) {
+    std::vector<double> values;
+    for (size_t i = 0; i < frame.alpha.size(); ++i) {
+        if (keep(i)) values.push_back(frame.linear[i * 3]);
+    }
+    return estimate_of(values);
 }
 
 }  // namespace fgr::test
