@@ -11,8 +11,10 @@
 #include <cmath>
 #include <cstdio>
 #include <glm/geometric.hpp>
+#include <limits>
 #include <map>
 #include <memory>
+#include <stdexcept>
 #include <string>
 #include <vector>
 
@@ -476,6 +478,19 @@ TEST_F(PathTracer, PicksFavourTheSourcesWhoseSamplesVary) {
     // and 0.36 (the renders are deterministic: these seeds always give these figures).
     EXPECT_LT(noise_quarter, 0.9 * noise_by_irradiance);
     EXPECT_LT(noise_quarter, 0.31 * noise_independent);
+}
+
+// A delta light that is never picked would never be lit: a weight of 0, or one that is not a
+// number, is refused before anything renders.
+TEST_F(PathTracer, EveryDeltaLightKeepsAChanceToBePicked) {
+    PathSettings settings = studio_and_two_lights(*scene_, true);
+    renderers_.clear();
+    for (float weight : {0.0f, -1.0f, std::nanf(""), std::numeric_limits<float>::infinity()}) {
+        settings.delta_light_pick_weight = weight;
+        EXPECT_THROW(render(kSphere, settings, 1), std::invalid_argument) << weight;
+    }
+    settings.delta_light_pick_weight = 0.01f;
+    EXPECT_EQ(render(kSphere, settings, 1).linear.size(), 24u * 24u * 3u);
 }
 
 // The least-squares slope of log RMSE against log spp, RMSE against `reference`, for renders at
