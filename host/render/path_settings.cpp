@@ -24,10 +24,6 @@ void check_path_settings(const PathSettings& settings) {
         throw std::invalid_argument(
             "noise threshold must be 0 (off) or a relative error in (0, 1], e.g. 0.01");
     }
-    if (!std::isfinite(settings.delta_light_pick_weight) ||
-        settings.delta_light_pick_weight <= 0.0f) {
-        throw std::invalid_argument("a delta light's pick weight must be a positive number");
-    }
     if (settings.min_samples < 0) {
         throw std::invalid_argument("minimum samples per pixel must be 0 (automatic) or more");
     }

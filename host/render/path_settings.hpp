@@ -19,10 +19,6 @@ struct PathSettings {
     bool mis = true;              // power-heuristic weights between light and BSDF sampling
     bool environment_importance = true;  // sample the environment by its luminance
     bool scene_lights = true;            // the scene's own lights shine besides the environment
-    // Light sampling picks each source by its irradiance, a delta light's (a point, or a
-    // directional light without a disc) weighed by this (> 0; render/modes/path_mode.cpp says
-    // why it is less than 1). Any positive weight leaves the estimate unbiased.
-    float delta_light_pick_weight = 0.25f;
     // Stratified samples (scrambled Sobol per pixel); false draws independent random ones, to
     // measure what stratification buys (the error then falls exactly as 1 / sqrt(samples)).
     bool stratified = true;

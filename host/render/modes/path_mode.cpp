@@ -67,12 +67,8 @@ PathLight sun_light(const SunDisc& sun, float intensity) {
     return path;
 }
 
-// Whether light sampling draws this light in a single direction (a point, or a directional
-// light without a disc): its sample varies only by what blocks it, not by the direction drawn.
-bool is_delta(const PathLight& light) { return light.point || light.cos_max >= 1.0f; }
-
-LightList light_list(const Scene& scene, const PreparedEnvironment& environment, bool scene_lights,
-                     float delta_light_pick_weight) {
+LightList light_list(const Scene& scene, const PreparedEnvironment& environment,
+                     bool scene_lights) {
     std::vector<PathLight> lights;
     if (environment.sun) lights.push_back(sun_light(*environment.sun, environment.intensity));
     if (scene_lights) {
@@ -86,21 +82,11 @@ LightList light_list(const Scene& scene, const PreparedEnvironment& environment,
             lights.push_back(scene_light(light));
         }
     }
-    // Pick probabilities follow each source's irradiance (a uniform environment of radiance L
-    // gives pi L to a surface facing it), the delta lights' weighed down. The best share of a
-    // source is its estimate's spread, not its mean (Neyman's allocation): a delta light's
-    // sample is exact wherever it is unblocked, while a sample of the environment or of a disc
-    // also varies with the direction drawn. The light is picked from the same stratified number as
-    // the direction it draws (fgr_mode_path.cl), so each source's share of a pixel's samples is
-    // close to exact and picking a delta light less often costs it little. Measured on the
-    // Mandelbulb in the studio with its two directional lights at 64 samples per pixel: weights 1,
-    // 1/2, 1/4 and 1/8 leave 1 - SSIM 0.0204, 0.0166, 0.0142 and 0.0150 (two seeds each).
+    // Pick probabilities follow each source's irradiance: a uniform environment of radiance L
+    // gives pi L to a surface facing it.
     const float environment_weight = 3.14159265f * environment.mean_luminance;
     float total = environment_weight;
-    for (PathLight& light : lights) {
-        if (is_delta(light)) light.weight *= delta_light_pick_weight;
-        total += light.weight;
-    }
+    for (const PathLight& light : lights) total += light.weight;
     LightList list;
     list.environment_pick = total > 0.0f ? environment_weight / total : 1.0f;
     float cumulative = list.environment_pick;
@@ -141,19 +127,14 @@ void PathMode::prepare(const PathSettings& settings) {
         }
         environment = default_environment_;
     }
-    if (environment == bound_environment_ && settings.scene_lights == bound_scene_lights_ &&
-        settings.delta_light_pick_weight == bound_delta_light_pick_weight_) {
-        return;
-    }
+    if (environment == bound_environment_ && settings.scene_lights == bound_scene_lights_) return;
     environment_data_ = upload_floats(device_, environment->tables.data);
-    const LightList lights =
-        light_list(scene_, *environment, settings.scene_lights, settings.delta_light_pick_weight);
+    const LightList lights = light_list(scene_, *environment, settings.scene_lights);
     lights_ = upload_floats(device_, lights.values);
     light_count_ = static_cast<int>(lights.values.size() / FGR_PATH_LIGHT_FLOATS);
     environment_pick_ = lights.environment_pick;
     bound_environment_ = environment;
     bound_scene_lights_ = settings.scene_lights;
-    bound_delta_light_pick_weight_ = settings.delta_light_pick_weight;
 }
 
 void PathMode::bind(cl::Kernel& kernel, const FrameRequest& request, const TileLayout&) {

@@ -37,7 +37,6 @@ private:
     std::shared_ptr<const PreparedEnvironment> default_environment_;  // the sky, made once
     std::shared_ptr<const PreparedEnvironment> bound_environment_;
     bool bound_scene_lights_ = true;
-    float bound_delta_light_pick_weight_ = 0.0f;
     cl::Buffer environment_data_;
     cl::Buffer lights_;
     int light_count_ = 0;
