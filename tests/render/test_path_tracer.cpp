@@ -11,10 +11,8 @@
 #include <cmath>
 #include <cstdio>
 #include <glm/geometric.hpp>
-#include <limits>
 #include <map>
 #include <memory>
-#include <stdexcept>
 #include <string>
 #include <vector>
 
@@ -128,6 +126,34 @@ protected:
         choice.kind = EnvironmentKind::Uniform;
         choice.radiance = glm::vec3(radiance);
         settings.environment = prepare_environment(choice, *scene_);
+        return settings;
+    }
+
+    // The studio, the scene's own lights off.
+    PathSettings studio_light() const {
+        PathSettings settings;
+        settings.scene_lights = false;
+        EnvironmentChoice choice;
+        choice.kind = EnvironmentKind::Studio;
+        settings.environment = prepare_environment(choice, *scene_);
+        return settings;
+    }
+
+    // The studio beside two directional lights of the scene, a delta light and a disc (a source
+    // of each kind light sampling picks between), the scene's lights on or off; two bounces.
+    PathSettings studio_and_two_lights(bool scene_lights) {
+        Light key;
+        key.vector = {-0.1f, -0.75f, 0.75f};
+        key.intensity = 1.1f;
+        Light disc;
+        disc.vector = {0.7f, -0.5f, 0.3f};
+        disc.intensity = 0.5f;
+        disc.angular_radius = 0.1f;
+        scene_->lights = {key, disc};
+        renderers_.clear();  // a renderer uploads the scene's lights once, with its environment
+        PathSettings settings = studio_light();
+        settings.scene_lights = scene_lights;
+        settings.max_bounces = 2;
         return settings;
     }
 
@@ -322,11 +348,7 @@ TEST_F(PathTracer, GlossyFurnaceLosesEnergyOnlyAtHighRoughness) {
 // the environment and light sampling lower the variance.
 TEST_F(PathTracer, SamplingStrategiesAgreeInMeanAndDifferInVariance) {
     set("albedo=0.7,0.7,0.7");
-    PathSettings base;
-    base.scene_lights = false;
-    EnvironmentChoice studio;
-    studio.kind = EnvironmentKind::Studio;
-    base.environment = prepare_environment(studio, *scene_);
+    PathSettings base = studio_light();
     base.max_bounces = 6;
     PathSettings no_mis = base, no_light_sampling = base, uniform_environment = base;
     no_mis.mis = false;
@@ -396,26 +418,6 @@ TEST_F(PathTracer, ASmallSunConvergesWithLightSamplingAndMis) {
     EXPECT_LT(noise_with_all, 1.5 * noise_light_only);
 }
 
-// The studio beside two directional lights of the scene, a delta light and a disc: a source of
-// each kind light sampling picks between.
-PathSettings studio_and_two_lights(Scene& scene, bool scene_lights) {
-    Light key;
-    key.vector = {-0.1f, -0.75f, 0.75f};
-    key.intensity = 1.1f;
-    Light disc;
-    disc.vector = {0.7f, -0.5f, 0.3f};
-    disc.intensity = 0.5f;
-    disc.angular_radius = 0.1f;
-    scene.lights = {key, disc};
-    PathSettings settings;
-    settings.scene_lights = scene_lights;
-    EnvironmentChoice studio;
-    studio.kind = EnvironmentKind::Studio;
-    settings.environment = prepare_environment(studio, scene);
-    settings.max_bounces = 2;
-    return settings;
-}
-
 // Per pixel, a - b - c (red channel) over the pixels all three met the surface in every sample,
 // with its standard error: the pixels' estimates are independent, so this is a paired z-test of
 // the means, free of the image's own variation.
@@ -434,9 +436,8 @@ Estimate difference(const Frame& a, const Frame& b, const Frame& c) {
 // and the lights alone add up to, pixel by pixel, within 4 standard errors of the difference.
 TEST_F(PathTracer, PickingOneSourceASampleLeavesTheMeanAlone) {
     set("albedo=0.7,0.7,0.7");
-    const PathSettings together = studio_and_two_lights(*scene_, true);
-    renderers_.clear();
-    const PathSettings studio_alone = studio_and_two_lights(*scene_, false);
+    const PathSettings together = studio_and_two_lights(true);
+    const PathSettings studio_alone = studio_and_two_lights(false);
     PathSettings lights_alone = uniform_light(0.0f);
     lights_alone.scene_lights = true;
     lights_alone.max_bounces = together.max_bounces;
@@ -455,7 +456,7 @@ TEST_F(PathTracer, PickingOneSourceASampleLeavesTheMeanAlone) {
 // always give these figures).
 TEST_F(PathTracer, EachSourceKeepsItsSamplesStratified) {
     set("albedo=0.7,0.7,0.7");
-    PathSettings stratified = studio_and_two_lights(*scene_, true);
+    PathSettings stratified = studio_and_two_lights(true);
     scene_->lights.resize(1);  // the delta light alone beside the studio
     scene_->lights[0].intensity = 0.4f;
     renderers_.clear();
@@ -492,11 +493,7 @@ double error_slope(const std::vector<std::pair<int, double>>& rmse_by_spp) {
 // fractal in the studio, four bounces.
 TEST_F(PathTracer, ErrorFallsAsOneOverRootSamples) {
     set("albedo=0.7,0.7,0.7");
-    PathSettings settings;
-    settings.scene_lights = false;
-    EnvironmentChoice studio;
-    studio.kind = EnvironmentKind::Studio;
-    settings.environment = prepare_environment(studio, *scene_);
+    PathSettings settings = studio_light();
     settings.max_bounces = 4;
     constexpr int size = 16;
     PathSettings reference_settings = settings;
