@@ -55,7 +55,7 @@ static_assert(offsetof(path_settings, radiance_clamp) == 8);
 static_assert(offsetof(path_settings, flags) == 12);
 static_assert(offsetof(path_settings, seed) == 16);
 static_assert(offsetof(path_settings, light_count) == 20);
-static_assert(offsetof(path_settings, environment_pick) == 24);
+static_assert(offsetof(path_settings, environment_weight) == 24);
 static_assert(offsetof(path_settings, launch_samples) == 28);
 
 // Each count covers the planes it counts, one block after the other.
@@ -75,7 +75,7 @@ static_assert(FGR_PATH_ALBEDO_PLANE == FGR_COMMON_PLANES &&
 static_assert(FGR_BRUTE_ALBEDO_PLANE == FGR_COMMON_PLANES &&
               FGR_BRUTE_STATS_PLANE == FGR_COMMON_PLANES + FGR_BRUTE_SURFACE_PLANES);
 static_assert(FGR_LIGHT_INTENSITY < FGR_LIGHT_FLOATS &&
-              FGR_PATH_LIGHT_PICK_UNTIL < FGR_PATH_LIGHT_FLOATS);
+              FGR_PATH_LIGHT_COS_MAX < FGR_PATH_LIGHT_FLOATS);
 static_assert(FGR_PREPASS_EVALUATIONS_PLANE < FGR_PREPASS_PLANES &&
               FGR_PROBE_POINT_REST_PLANE + 3 == FGR_PROBE_POINT_PLANES);
 

@@ -188,7 +188,7 @@ struct PreparedEnvironment {
     std::optional<SunDisc> sun;
     float rotation_degrees = 0.0f;
     float intensity = 1.0f;
-    float mean_luminance = 0.0f;  // over the sphere, intensity applied: its share of light picks
+    float mean_luminance = 0.0f;  // over the sphere, intensity applied: light sampling weighs by it
     std::string description;      // one line for logs, e.g. "sky (turbidity 3, sun 35 deg up)"
 };
 

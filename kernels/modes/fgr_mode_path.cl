@@ -123,99 +123,201 @@ inline real escaped_weight(mask light_sampled, bool mis, real bsdf_pdf, real lig
     return select(fgr_real(1.0f), shared, light_sampled);
 }
 
-/* Radiance arriving along `dir` from the environment and the sun discs, for the lanes of `wanted`
- * whose ray left the scene, weighted as escaped_weight says (bsdf_pdf: the BSDF's pdf of dir at the
- * last vertex); the environment's tables are read for those lanes alone. */
-inline vec3 escaped_radiance(vec3 dir, mask wanted, mask light_sampled, bool mis, real bsdf_pdf,
-                             __constant const float* lights, path_settings settings, ENVIRONMENT) {
-    real env_pdf;
-    vec3 radiance = environment_light_radiance(dir, wanted, settings, ENVIRONMENT_PASS, &env_pdf);
-    env_pdf *= settings.environment_pick;
-    radiance = v3_scale(radiance, escaped_weight(light_sampled, mis, bsdf_pdf, env_pdf));
-    float picked_before = settings.environment_pick;
+/* What light sampling weighs its sources by at a shading point: the point, the frame of its
+ * normal, wo in that frame and the material's lobes seen from wo. */
+typedef struct shading_point {
+    vec3 p;
+    bsdf_frame frame;
+    vec3 wo; /* in the frame */
+    bsdf_lobes lobes;
+} shading_point;
+
+inline shading_point shading_point_of(vec3 p, material m, vec3 n, vec3 wo) {
+    shading_point at;
+    at.p = p;
+    at.frame = bsdf_frame_of(n);
+    at.wo = bsdf_to_local(at.frame, wo);
+    at.lobes = bsdf_lobes_of(m, at.wo.z);
+    return at;
+}
+
+/* A light's direction at p and the irradiance it gives a surface facing it there. */
+inline vec3 light_irradiance(__constant const float* light, vec3 p, vec3* dir) {
+    const vec3 vector = light_vec3(light, FGR_PATH_LIGHT_VECTOR);
+    const vec3 colour = light_vec3(light, FGR_PATH_LIGHT_RADIANCE);
+    const float cos_max = light[FGR_PATH_LIGHT_COS_MAX];
+    if ((int)light[FGR_PATH_LIGHT_KIND] == FGR_LIGHT_KIND_POINT) {
+        const vec3 to_light = v3_sub(vector, p);
+        const real dist2 = fmax(v3_length2(to_light), FGR_MIN_LENGTH * FGR_MIN_LENGTH);
+        *dir = v3_scale(to_light, rsqrt(dist2));
+        return v3_scale(colour, 1.0f / dist2);
+    }
+    *dir = vector;
+    /* A disc of radiance L gives L times its solid angle. */
+    return cos_max >= 1.0f ? colour : v3_scale(colour, 6.28318530717958647692f * (1.0f - cos_max));
+}
+
+/* How much light sampling weighs a light at a shading point: the luminance of what it would
+ * add there if nothing blocked it, E f(wo, wi) cos, with wi its direction (a disc's centre).
+ * For a delta light that is exact: a light behind the surface, or one whose highlight the
+ * surface does not show, takes no samples; a metal's highlight takes most. A disc adds a floor
+ * of 1% of what it would give a white diffuse surface while any of it stands above the horizon,
+ * so every direction it can light keeps a chance however f varies across it. */
+inline real light_pick_weight(__constant const float* light, const shading_point* at) {
+    vec3 dir;
+    const vec3 irradiance = light_irradiance(light, at->p, &dir);
+    vec3 f_cos;
+    real pdf;
+    bsdf_eval_pdf_local(at->lobes, at->wo, bsdf_to_local(at->frame, dir), &f_cos, &pdf);
+    real weight = bsdf_luminance(v3_mul(irradiance, f_cos));
+    const float cos_max = light[FGR_PATH_LIGHT_COS_MAX];
+    if ((int)light[FGR_PATH_LIGHT_KIND] != FGR_LIGHT_KIND_POINT && cos_max < 1.0f) {
+        const real sin_max = fgr_real(sqrt(fmax(1.0f - cos_max * cos_max, 0.0f)));
+        const real above = fmax(v3_dot(dir, at->frame.n) + sin_max, 0.0f);
+        weight =
+            mad(0.01f * FGR_LANES(M_1_PI_F, M_1_PI) * bsdf_luminance(irradiance), above, weight);
+    }
+    return weight;
+}
+
+/* How much light sampling weighs the environment at a shading point: what the surface would
+ * return of a uniform environment of the same mean luminance, that mean times the luminance of
+ * its diffuse reflectance and of its glossy lobe's Fresnel at wo. */
+inline real environment_pick_weight(path_settings settings, const shading_point* at) {
+    const real reflectance =
+        bsdf_luminance(at->lobes.kd) + bsdf_luminance(bsdf_fresnel(at->lobes, at->wo.z));
+    return settings.environment_weight * reflectance;
+}
+
+/* The environment's weight and all the lights' at a shading point, summed. */
+inline real pick_weight_total(const shading_point* at, __constant const float* lights,
+                              path_settings settings) {
+    real total = environment_pick_weight(settings, at);
+    for (int i = 0; i < settings.light_count; ++i) {
+        total += light_pick_weight(lights + i * FGR_PATH_LIGHT_FLOATS, at);
+    }
+    return total;
+}
+
+/* The probability of picking a weight out of a total (0 where nothing can be picked). */
+inline real pick_probability(real weight, real total) {
+    return select(weight / total, fgr_real(0.0f), total <= 0.0f);
+}
+
+/* Radiance arriving along `dir` from the sun discs, for a ray that left a shading point (`at`,
+ * where light sampling's weights summed to `pick_total`) by BSDF sampling with pdf bsdf_pdf,
+ * weighted as escaped_weight says; `at` is read only where MIS needs the discs' pick there. It is
+ * reckoned where the ray starts, from the weights there, and added if the ray escapes. */
+inline vec3 disc_radiance(vec3 dir, mask light_sampled, bool mis, real bsdf_pdf,
+                          const shading_point* at, real pick_total, __constant const float* lights,
+                          path_settings settings) {
+    vec3 radiance = v3_splat(0.0f, 0.0f, 0.0f);
     for (int i = 0; i < settings.light_count; ++i) {
         __constant const float* light = lights + i * FGR_PATH_LIGHT_FLOATS;
-        const float pick = light[FGR_PATH_LIGHT_PICK_UNTIL] - picked_before;
-        picked_before = light[FGR_PATH_LIGHT_PICK_UNTIL];
         const float cos_max = light[FGR_PATH_LIGHT_COS_MAX];
         if ((int)light[FGR_PATH_LIGHT_KIND] == FGR_LIGHT_KIND_POINT || cos_max >= 1.0f) {
             continue; /* delta lights */
         }
         const mask in_disc = v3_dot(dir, light_vec3(light, FGR_PATH_LIGHT_VECTOR)) >= cos_max;
         if (!fgr_any(in_disc)) continue;
-        const real w =
-            escaped_weight(light_sampled, mis, bsdf_pdf, fgr_real(pick * cone_pdf(cos_max)));
+        real w = fgr_real(1.0f);
+        if (fgr_any(in_disc & light_sampled)) {
+            const real pick = pick_probability(light_pick_weight(light, at), pick_total);
+            w = escaped_weight(light_sampled, mis, bsdf_pdf, pick * cone_pdf(cos_max));
+        }
         const vec3 disc = v3_scale(light_vec3(light, FGR_PATH_LIGHT_RADIANCE), w);
         radiance = v3_add(radiance, v3_select(v3_splat(0.0f, 0.0f, 0.0f), disc, in_disc));
     }
     return radiance;
 }
 
-/* One light sample for next-event estimation at p: a direction, the radiance arriving along it
- * if nothing blocks it, its pdf (solid angle, including the pick; 0 for delta lights, which MIS
- * leaves alone) and how far a shadow ray must look. */
+/* Radiance arriving along `dir` from the environment, for the lanes of `wanted` whose ray left
+ * the scene, weighted as escaped_weight says (bsdf_pdf: the BSDF's pdf of dir at the last vertex,
+ * environment_pick: the probability light sampling picked the environment there), plus the sun
+ * discs' share (disc_radiance, reckoned where the ray started); the environment's tables are read
+ * for those lanes alone. */
+inline vec3 escaped_radiance(vec3 dir, mask wanted, mask light_sampled, bool mis, real bsdf_pdf,
+                             real environment_pick, vec3 discs, path_settings settings,
+                             ENVIRONMENT) {
+    real env_pdf;
+    const vec3 radiance =
+        environment_light_radiance(dir, wanted, settings, ENVIRONMENT_PASS, &env_pdf);
+    const real w = escaped_weight(light_sampled, mis, bsdf_pdf, environment_pick * env_pdf);
+    return v3_add(v3_scale(radiance, w), discs);
+}
+
+/* One light sample for next-event estimation at a shading point: a direction, the radiance
+ * arriving along it if nothing blocks it, its pdf (solid angle, including the pick; 0 for delta
+ * lights, which MIS leaves alone) and how far a shadow ray must look; and what the escaped ray of
+ * the same vertex needs for MIS: the sum of the sources' weights and the environment's pick. */
 typedef struct light_sample {
     vec3 dir;
-    vec3 radiance; /* already divided by the pick probability for delta lights */
+    vec3 radiance; /* already divided by the pick probability for delta lights; 0 where no
+                      source could be picked */
     real pdf;      /* solid-angle pdf, pick included; 0 marks a delta light */
     real reach;
+    real pick_total;
+    real environment_pick;
 } light_sample;
 
 /* Where u, uniform in [low, low + width), falls in that interval, as a uniform number in [0, 1)
  * (lanes outside it get a number in [0, 1) too, which they ignore). */
-inline real rescaled_within(real u, float low, float width) {
-    return fmax(fmin((u - low) / width, fgr_real(0.99999994f)), fgr_real(0.0f));
+inline real rescaled_within(real u, real low, real width) {
+    const real safe_width = select(width, fgr_real(1.0f), width <= 0.0f);
+    return fmax(fmin((u - low) / safe_width, fgr_real(0.99999994f)), fgr_real(0.0f));
 }
 
-/* The light is picked by u1, which the picked source then uses again, rescaled to [0, 1), for
- * its direction. A pixel's (u1, u2) are a stratified 2D set, and those that fall in one source's
- * interval of u1 stay one, stretched: each source's directions are stratified over the samples
- * that pick it. A pick of its own dimension would hand each source a random subset of the
+/* The source is picked in proportion to its weight at the point (light_pick_weight,
+ * environment_pick_weight) by u1, which the picked source then uses again, rescaled to [0, 1),
+ * for its direction. A pixel's (u1, u2) are a stratified 2D set, and those that fall in one
+ * source's interval of u1 stay one, stretched: each source's directions are stratified over the
+ * samples that pick it. A pick of its own dimension would hand each source a random subset of the
  * points, no better spread than independent ones. */
-inline light_sample sample_light(vec3 p, real u1, real u2, mask wanted,
+inline light_sample sample_light(const shading_point* at, real u1, real u2, mask wanted,
                                  __constant const float* lights, path_settings settings,
                                  float max_distance, ENVIRONMENT) {
     light_sample s;
-    /* The environment, for the lanes that pick it (the last light's pick ends at 1, so the
-     * others all take a light below). */
+    const real total = pick_weight_total(at, lights, settings);
+    s.pick_total = total;
+    /* Just below the total, so that rounding never takes u1 past the last interval's end. */
+    const real target = u1 * (total * 0.99999988f);
+    const real env_weight = environment_pick_weight(settings, at);
+    s.environment_pick = pick_probability(env_weight, total);
     real env_pdf = fgr_real(0.0f);
-    const mask env_picked = wanted & (u1 < settings.environment_pick);
-    s.dir = environment_light_sample(rescaled_within(u1, 0.0f, settings.environment_pick), u2,
+    const mask env_picked = wanted & (target < env_weight);
+    s.dir = environment_light_sample(rescaled_within(target, fgr_real(0.0f), env_weight), u2,
                                      env_picked, settings, ENVIRONMENT_PASS, &env_pdf, &s.radiance);
-    s.pdf = settings.environment_pick * env_pdf;
+    s.radiance = v3_select(v3_splat(0.0f, 0.0f, 0.0f), s.radiance, env_picked);
+    s.pdf = s.environment_pick * env_pdf;
     s.reach = fgr_real(max_distance);
-    float picked_before = settings.environment_pick;
+    real picked_before = env_weight;
     for (int i = 0; i < settings.light_count; ++i) {
         __constant const float* light = lights + i * FGR_PATH_LIGHT_FLOATS;
-        const float pick = light[FGR_PATH_LIGHT_PICK_UNTIL] - picked_before;
-        const float picked_from = picked_before;
-        const mask chosen = (u1 >= picked_from) & (u1 < light[FGR_PATH_LIGHT_PICK_UNTIL]);
-        picked_before = light[FGR_PATH_LIGHT_PICK_UNTIL];
+        const real weight = light_pick_weight(light, at);
+        const real picked_from = picked_before;
+        picked_before = picked_from + weight;
+        const mask chosen = wanted & (target >= picked_from) & (target < picked_before);
         if (!fgr_any(chosen)) continue;
-        const vec3 vector = light_vec3(light, FGR_PATH_LIGHT_VECTOR);
-        const vec3 colour = light_vec3(light, FGR_PATH_LIGHT_RADIANCE);
-        const float cos_max = light[FGR_PATH_LIGHT_COS_MAX];
+        const real pick = pick_probability(weight, total);
         vec3 dir;
+        const vec3 irradiance = light_irradiance(light, at->p, &dir);
+        const float cos_max = light[FGR_PATH_LIGHT_COS_MAX];
         vec3 radiance;
-        real pdf, reach;
+        real pdf, reach = fgr_real(max_distance);
         if ((int)light[FGR_PATH_LIGHT_KIND] == FGR_LIGHT_KIND_POINT) {
-            const vec3 to_light = v3_sub(vector, p);
-            const real dist2 = fmax(v3_length2(to_light), FGR_MIN_LENGTH * FGR_MIN_LENGTH);
-            dir = v3_scale(to_light, rsqrt(dist2));
-            radiance = v3_scale(colour, 1.0f / (pick * dist2));
+            radiance = v3_scale(irradiance, 1.0f / pick);
             pdf = fgr_real(0.0f);
-            reach = fmin(sqrt(dist2), max_distance);
+            const vec3 to_light = v3_sub(light_vec3(light, FGR_PATH_LIGHT_VECTOR), at->p);
+            reach = fmin(sqrt(fmax(v3_length2(to_light), FGR_MIN_LENGTH * FGR_MIN_LENGTH)),
+                         fgr_real(max_distance));
         } else if (cos_max >= 1.0f) {
-            dir = vector;
-            radiance = v3_scale(colour, 1.0f / pick);
+            radiance = v3_scale(irradiance, 1.0f / pick);
             pdf = fgr_real(0.0f);
-            reach = fgr_real(max_distance);
         } else {
-            dir =
-                sample_cone(vector, fgr_real(cos_max), rescaled_within(u1, picked_from, pick), u2);
-            radiance = colour;
-            pdf = fgr_real(pick * cone_pdf(cos_max));
-            reach = fgr_real(max_distance);
+            dir = sample_cone(dir, fgr_real(cos_max), rescaled_within(target, picked_from, weight),
+                              u2);
+            radiance = light_vec3(light, FGR_PATH_LIGHT_RADIANCE);
+            pdf = pick * cone_pdf(cos_max);
         }
         s.dir = v3_select(s.dir, dir, chosen);
         s.radiance = v3_select(s.radiance, radiance, chosen);
@@ -280,6 +382,11 @@ inline void render_packet_sample(int tile, FGR_RENDER_ARGS, __constant const flo
     /* Whether light sampling also covered the last bounce's BSDF sample, and that sample's pdf. */
     mask light_sampled = (mask)(0);
     real last_pdf = fgr_real(0.0f);
+    /* The environment's pick at the last vertex, and the sun discs the ray from it would see. */
+    real last_environment_pick = fgr_real(0.0f);
+    shading_point at; /* the last vertex, read for the discs' picks only where light_sampled */
+    vec3 discs =
+        disc_radiance(dir, (mask)(0), mis, fgr_real(0.0f), &at, fgr_real(0.0f), lights, settings);
     /* The first hit, for depth and the auxiliary planes. */
     real depth = fgr_real(-1.0f);
     vec3 first_albedo = v3_splat(0.0f, 0.0f, 0.0f), first_normal = v3_splat(0.0f, 0.0f, 0.0f);
@@ -304,8 +411,9 @@ inline void render_packet_sample(int tile, FGR_RENDER_ARGS, __constant const flo
 #endif
         const mask escaped = active & !hit.hit;
         if (fgr_any(escaped)) {
-            const vec3 arriving = escaped_radiance(dir, (mask)(FGR_TRUE), light_sampled, mis,
-                                                   last_pdf, lights, settings, ENVIRONMENT_PASS);
+            const vec3 arriving =
+                escaped_radiance(dir, (mask)(FGR_TRUE), light_sampled, mis, last_pdf,
+                                 last_environment_pick, discs, settings, ENVIRONMENT_PASS);
             radiance = v3_select(radiance, v3_add(radiance, v3_mul(throughput, arriving)), escaped);
         }
         active &= hit.hit;
@@ -347,10 +455,15 @@ inline void render_packet_sample(int tile, FGR_RENDER_ARGS, __constant const flo
         const real roulette_u = sampler_next_1d(&rng);
 
         /* Next-event estimation, where the surface is not a perfect mirror there. */
+        at = shading_point_of(p, m, n, wo);
+        real pick_total = fgr_real(0.0f);
+        last_environment_pick = fgr_real(0.0f);
         if (light_sampling) {
             const light_sample light =
-                sample_light(p, light_u.x, light_u.y, (mask)(FGR_TRUE), lights, settings,
+                sample_light(&at, light_u.x, light_u.y, (mask)(FGR_TRUE), lights, settings,
                              limits.max_distance, ENVIRONMENT_PASS);
+            pick_total = light.pick_total;
+            last_environment_pick = light.environment_pick;
             const vec3 f = bsdf_eval(m, n, wo, light.dir);
             mask lit = active & (v3_dot(light.dir, n) > 0.0f) & (fmax(fmax(f.x, f.y), f.z) > 0.0f) &
                        (fmax(fmax(light.radiance.x, light.radiance.y), light.radiance.z) > 0.0f);
@@ -380,6 +493,8 @@ inline void render_packet_sample(int tile, FGR_RENDER_ARGS, __constant const flo
         throughput = v3_mul(throughput, scattered.weight);
         light_sampled = light_sampling ? !scattered.delta : (mask)(0);
         last_pdf = scattered.pdf;
+        discs = disc_radiance(scattered.wi, light_sampled, mis, scattered.pdf, &at, pick_total,
+                              lights, settings);
 
         /* Russian roulette: a path continues with probability q (its throughput's largest
          * component, at most 1) and is weighted by 1/q when it does: unbiased. */
@@ -476,6 +591,8 @@ typedef struct path_lanes {
     real seen_at;               /* how far the camera saw the surface (0 before the first hit) */
     mask light_sampled;         /* light sampling also covered the last bounce's BSDF sample */
     real last_pdf;              /* that sample's pdf */
+    real environment_pick;      /* the environment's pick there */
+    vec3 discs;                 /* the sun discs the path's ray sees (disc_radiance) */
     mask bounce;                /* the vertices met so far: 0 for a camera ray */
     real depth;                 /* the first hit's distance, -1 before or without one */
     vec3 first_albedo, first_normal;
@@ -634,7 +751,8 @@ inline void start_camera_paths(path_lanes* path, lane_sampler* rng, mask fresh,
                                const int* lane_slot, const float* lane_sample, const float* slot_px,
                                const float* slot_py, const float* slot_start,
                                const float* slot_hint, int has_hints, bool independent,
-                               camera_frame camera, march_limits limits, path_settings settings,
+                               camera_frame camera, march_limits limits,
+                               __constant const float* lights, path_settings settings,
                                int* packet_steps, PARAMS) {
     const real px = gather_slots(slot_px, lane_slot), py = gather_slots(slot_py, lane_slot);
     const uint_lanes index = convert_uint_lanes(fgr_load(0, lane_sample));
@@ -656,6 +774,12 @@ inline void start_camera_paths(path_lanes* path, lane_sampler* rng, mask fresh,
     path->dir = v3_select(path->dir, ray.dir, fresh);
     path->seen_at = select(path->seen_at, fgr_real(0.0f), fresh);
     path->last_pdf = select(path->last_pdf, fgr_real(0.0f), fresh);
+    path->environment_pick = select(path->environment_pick, fgr_real(0.0f), fresh);
+    shading_point nowhere; /* camera rays take no pick: disc_radiance reads no point */
+    path->discs = v3_select(path->discs,
+                            disc_radiance(ray.dir, (mask)(0), false, fgr_real(0.0f), &nowhere,
+                                          fgr_real(0.0f), lights, settings),
+                            fresh);
     path->alpha = select(path->alpha, fgr_real(0.0f), fresh);
     path->depth = select(path->depth, fgr_real(-1.0f), fresh);
     path->light_sampled &= ~fresh;
@@ -675,10 +799,11 @@ inline void start_camera_paths(path_lanes* path, lane_sampler* rng, mask fresh,
 
 /* The lanes of `escaped`, whose path's ray left the scene: the environment and sun discs it
  * sees, weighted as escaped_radiance says. */
-inline void add_escaped_radiance(path_lanes* path, mask escaped, __constant const float* lights,
-                                 path_settings settings, bool mis, ENVIRONMENT) {
-    const vec3 arriving = escaped_radiance(path->dir, escaped, path->light_sampled, mis,
-                                           path->last_pdf, lights, settings, ENVIRONMENT_PASS);
+inline void add_escaped_radiance(path_lanes* path, mask escaped, path_settings settings, bool mis,
+                                 ENVIRONMENT) {
+    const vec3 arriving =
+        escaped_radiance(path->dir, escaped, path->light_sampled, mis, path->last_pdf,
+                         path->environment_pick, path->discs, settings, ENVIRONMENT_PASS);
     path->radiance = v3_select(path->radiance,
                                v3_add(path->radiance, v3_mul(path->throughput, arriving)), escaped);
 }
@@ -756,10 +881,14 @@ inline void shade_path_vertex(path_lanes* path, lane_sampler* rng, mask shaded, 
     const real roulette_u = lane_sampler_next_1d(rng, active);
 
     mask lit = (mask)(0);
+    const shading_point at = shading_point_of(p, m, n, wo);
+    real pick_total = fgr_real(0.0f), environment_pick = fgr_real(0.0f);
     if (light_sampling) {
         /* Only the lanes shaded here search the environment's tables. */
-        const light_sample light = sample_light(p, light_u.x, light_u.y, active, lights, settings,
+        const light_sample light = sample_light(&at, light_u.x, light_u.y, active, lights, settings,
                                                 limits.max_distance, ENVIRONMENT_PASS);
+        pick_total = light.pick_total;
+        environment_pick = light.environment_pick;
         const vec3 f = bsdf_eval(m, n, wo, light.dir);
         lit = active & (v3_dot(light.dir, n) > 0.0f) & (fmax(fmax(f.x, f.y), f.z) > 0.0f) &
               (fmax(fmax(light.radiance.x, light.radiance.y), light.radiance.z) > 0.0f);
@@ -782,9 +911,14 @@ inline void shade_path_vertex(path_lanes* path, lane_sampler* rng, mask shaded, 
     mask goes_on = active & scattered.valid;
     path->throughput =
         v3_select(path->throughput, v3_mul(path->throughput, scattered.weight), active);
-    path->light_sampled =
-        select(path->light_sampled, light_sampling ? !scattered.delta : (mask)(0), active);
+    const mask light_sampled = light_sampling ? !scattered.delta : (mask)(0);
+    path->light_sampled = select(path->light_sampled, light_sampled, active);
     path->last_pdf = select(path->last_pdf, scattered.pdf, active);
+    path->environment_pick = select(path->environment_pick, environment_pick, active);
+    path->discs = v3_select(path->discs,
+                            disc_radiance(scattered.wi, light_sampled, mis, scattered.pdf, &at,
+                                          pick_total, lights, settings),
+                            active);
     /* Russian roulette, in the lanes whose path has reached its depth. */
     const mask roulette = goes_on & (path->bounce + 1 >= (mask)(settings.roulette_depth));
     if (fgr_any(roulette)) {
@@ -865,7 +999,8 @@ inline void render_regrouped(int tile, FGR_RENDER_ARGS, __constant const float* 
     path.ray = march_lanes_none();
     path.p = path.gradient = path.radiance = path.throughput = path.unshadowed = zero;
     path.next_origin = path.next_dir = path.dir = path.first_albedo = path.first_normal = zero;
-    path.eps = path.seen_at = path.last_pdf = path.alpha = fgr_real(0.0f);
+    path.eps = path.seen_at = path.last_pdf = path.alpha = path.environment_pick = fgr_real(0.0f);
+    path.discs = zero;
     path.depth = fgr_real(-1.0f);
     path.shadow_ray = path.tapping = path.tap = path.goes_on = (mask)(0);
     path.light_sampled = path.bounce = path.steps = (mask)(0);
@@ -884,7 +1019,7 @@ inline void render_regrouped(int tile, FGR_RENDER_ARGS, __constant const float* 
             if (fgr_any(fresh)) {
                 start_camera_paths(&path, &rng, fresh, lane_slot, lane_sample, slot_px, slot_py,
                                    slot_start, slot_hint, has_hints, independent, camera, limits,
-                                   settings, &packet_steps, PARAMS_PASS);
+                                   lights, settings, &packet_steps, PARAMS_PASS);
                 ray_ended = fresh & !path.ray.marching;
                 fresh = (mask)(0);
                 if (fgr_any(ray_ended)) {
@@ -899,7 +1034,7 @@ inline void render_regrouped(int tile, FGR_RENDER_ARGS, __constant const float* 
             const mask ends = escaped | ending;
             if (!fgr_any(ends)) break;
             if (fgr_any(escaped)) {
-                add_escaped_radiance(&path, escaped, lights, settings, mis, ENVIRONMENT_PASS);
+                add_escaped_radiance(&path, escaped, settings, mis, ENVIRONMENT_PASS);
             }
             add_ended_paths(sums, slot_depth, ends, &path, lane_slot, lane_sample, settings);
             escaped = ending = (mask)(0);

@@ -24,9 +24,6 @@
 #define FGR_PATH_LIGHT_VECTOR 1   /* 3: as FGR_LIGHT_VECTOR */
 #define FGR_PATH_LIGHT_RADIANCE 4 /* 3: a disc's radiance; a point light's intensity, W/sr-like */
 #define FGR_PATH_LIGHT_COS_MAX 7  /* cosine of a disc's angular radius; 1: a delta light */
-/* The cumulative probability of picking lights 0 to this one for next-event estimation (the last
- * one's is 1). */
-#define FGR_PATH_LIGHT_PICK_UNTIL 8
-#define FGR_PATH_LIGHT_FLOATS 10 /* the tenth float is unused */
+#define FGR_PATH_LIGHT_FLOATS 8
 
 #endif /* FGR_LAYOUT_LIGHTS_H */

@@ -21,17 +21,17 @@ namespace fgr::layout {
 #endif
 
 typedef struct path_settings {
-    fgr_layout_int max_bounces;        /* scattering events after the camera ray at most */
-    fgr_layout_int roulette_depth;     /* Russian roulette from this bounce on */
-    fgr_layout_float radiance_clamp;   /* > 0: each sample's radiance is clamped to it (biased);
-                                        * 0: off */
-    fgr_layout_int flags;              /* FGR_PATH_* */
-    fgr_layout_uint seed;              /* the render's seed: another seed, another noise */
-    fgr_layout_int light_count;        /* lights in the light list */
-    fgr_layout_float environment_pick; /* probability of sampling the environment rather than
-                                        * a light */
-    fgr_layout_int launch_samples;     /* with FGR_PATH_REGROUP: samples of every pixel this
-                                        * launch traces, from `sample` on */
+    fgr_layout_int max_bounces;          /* scattering events after the camera ray at most */
+    fgr_layout_int roulette_depth;       /* Russian roulette from this bounce on */
+    fgr_layout_float radiance_clamp;     /* > 0: each sample's radiance is clamped to it (biased);
+                                          * 0: off */
+    fgr_layout_int flags;                /* FGR_PATH_* */
+    fgr_layout_uint seed;                /* the render's seed: another seed, another noise */
+    fgr_layout_int light_count;          /* lights in the light list */
+    fgr_layout_float environment_weight; /* the environment's mean luminance: what light
+                                          * sampling weighs it by, times the reflectance */
+    fgr_layout_int launch_samples;       /* with FGR_PATH_REGROUP: samples of every pixel this
+                                          * launch traces, from `sample` on */
 } path_settings;
 
 #ifdef __cplusplus

@@ -24,35 +24,35 @@ namespace {
 
 // Every shared struct's fields, as (struct, field): the host takes offsetof, the device the
 // distance of the field's address from the struct's.
-#define FGR_SHARED_FIELDS(X)            \
-    X(camera_frame, eye)                \
-    X(camera_frame, forward)            \
-    X(camera_frame, right)              \
-    X(camera_frame, up)                 \
-    X(camera_frame, tan_half_fov)       \
-    X(camera_frame, pixel_angle)        \
-    X(camera_frame, width)              \
-    X(camera_frame, height)             \
-    X(camera_frame, projection)         \
-    X(camera_frame, fisheye_half_fov)   \
-    X(camera_frame, eye_separation)     \
-    X(camera_frame, convergence)        \
-    X(camera_frame, region_x)           \
-    X(camera_frame, region_y)           \
-    X(camera_frame, region_width)       \
-    X(camera_frame, region_height)      \
-    X(environment_info, transform)      \
-    X(environment_info, width)          \
-    X(environment_info, height)         \
-    X(environment_info, rows_offset)    \
-    X(environment_info, columns_offset) \
-    X(path_settings, max_bounces)       \
-    X(path_settings, roulette_depth)    \
-    X(path_settings, radiance_clamp)    \
-    X(path_settings, flags)             \
-    X(path_settings, seed)              \
-    X(path_settings, light_count)       \
-    X(path_settings, environment_pick)  \
+#define FGR_SHARED_FIELDS(X)             \
+    X(camera_frame, eye)                 \
+    X(camera_frame, forward)             \
+    X(camera_frame, right)               \
+    X(camera_frame, up)                  \
+    X(camera_frame, tan_half_fov)        \
+    X(camera_frame, pixel_angle)         \
+    X(camera_frame, width)               \
+    X(camera_frame, height)              \
+    X(camera_frame, projection)          \
+    X(camera_frame, fisheye_half_fov)    \
+    X(camera_frame, eye_separation)      \
+    X(camera_frame, convergence)         \
+    X(camera_frame, region_x)            \
+    X(camera_frame, region_y)            \
+    X(camera_frame, region_width)        \
+    X(camera_frame, region_height)       \
+    X(environment_info, transform)       \
+    X(environment_info, width)           \
+    X(environment_info, height)          \
+    X(environment_info, rows_offset)     \
+    X(environment_info, columns_offset)  \
+    X(path_settings, max_bounces)        \
+    X(path_settings, roulette_depth)     \
+    X(path_settings, radiance_clamp)     \
+    X(path_settings, flags)              \
+    X(path_settings, seed)               \
+    X(path_settings, light_count)        \
+    X(path_settings, environment_weight) \
     X(path_settings, launch_samples)
 
 #define FGR_SHARED_STRUCTS(X) X(camera_frame) X(environment_info) X(path_settings)

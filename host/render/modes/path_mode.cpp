@@ -17,22 +17,15 @@ namespace {
 // sample index.
 constexpr float kEverySample = 3.0e38f;
 
-float luminance(glm::vec3 rgb) { return 0.2126f * rgb.r + 0.7152f * rgb.g + 0.0722f * rgb.b; }
-
-struct LightList {
-    std::vector<float> values;  // FGR_PATH_LIGHT_FLOATS per light
-    float environment_pick = 1.0f;
-};
-
-// One light in the kernel's layout, with `weight` (its irradiance's luminance, roughly) for the
-// pick probabilities. Lights keep the shaded mode's meaning: a light of intensity I lights a
-// white diffuse surface facing it to radiance I, so its irradiance is pi I.
+// One light in the kernel's layout. Lights keep the shaded mode's meaning: a light of intensity
+// I lights a white diffuse surface facing it to radiance I, so its irradiance is pi I. Light
+// sampling weighs each light at each shading point by what it would add there
+// (light_pick_weight in fgr_mode_path.cl), so the list carries no pick probabilities.
 struct PathLight {
     bool point = false;
     glm::vec3 vector{0.0f, 0.0f, 1.0f};
     glm::vec3 radiance{0.0f};  // a disc's radiance, or a delta light's irradiance (times 1/d^2)
     float cos_max = 1.0f;
-    float weight = 0.0f;
 };
 
 PathLight scene_light(const Light& light) {
@@ -49,26 +42,20 @@ PathLight scene_light(const Light& light) {
     } else {
         path.radiance = irradiance;
     }
-    // A point light's weight as seen from the scene's origin, where fractals sit.
-    const float falloff =
-        path.point ? 1.0f / std::max(glm::dot(light.vector, light.vector), 1e-6f) : 1.0f;
-    path.weight = luminance(irradiance) * falloff;
     return path;
 }
 
 PathLight sun_light(const SunDisc& sun, float intensity) {
-    constexpr float pi = 3.14159265358979f;
     PathLight path;
     path.vector = glm::normalize(sun.direction);
     path.radiance = sun.radiance * intensity;
     path.cos_max = std::cos(sun.angular_radius_radians);
-    const float sin_r = std::sin(sun.angular_radius_radians);
-    path.weight = luminance(path.radiance) * pi * sin_r * sin_r;
     return path;
 }
 
-LightList light_list(const Scene& scene, const PreparedEnvironment& environment,
-                     bool scene_lights) {
+// The path tracer's lights, FGR_PATH_LIGHT_FLOATS floats each: the sky's sun, then the scene's.
+std::vector<float> light_list(const Scene& scene, const PreparedEnvironment& environment,
+                              bool scene_lights) {
     std::vector<PathLight> lights;
     if (environment.sun) lights.push_back(sun_light(*environment.sun, environment.intensity));
     if (scene_lights) {
@@ -82,31 +69,19 @@ LightList light_list(const Scene& scene, const PreparedEnvironment& environment,
             lights.push_back(scene_light(light));
         }
     }
-    // Pick probabilities follow each source's irradiance: a uniform environment of radiance L
-    // gives pi L to a surface facing it.
-    const float environment_weight = 3.14159265f * environment.mean_luminance;
-    float total = environment_weight;
-    for (const PathLight& light : lights) total += light.weight;
-    LightList list;
-    list.environment_pick = total > 0.0f ? environment_weight / total : 1.0f;
-    float cumulative = list.environment_pick;
-    for (size_t i = 0; i < lights.size(); ++i) {
-        const PathLight& light = lights[i];
-        cumulative += total > 0.0f ? light.weight / total : 0.0f;
-        // The last light closes the distribution at exactly 1, whatever rounding left.
-        const float pick_until = i + 1 == lights.size() ? 1.0f : cumulative;
-        std::array<float, FGR_PATH_LIGHT_FLOATS> values{};
-        values[FGR_PATH_LIGHT_KIND] =
+    std::vector<float> values;
+    for (const PathLight& light : lights) {
+        std::array<float, FGR_PATH_LIGHT_FLOATS> light_values{};
+        light_values[FGR_PATH_LIGHT_KIND] =
             static_cast<float>(light.point ? FGR_LIGHT_KIND_POINT : FGR_LIGHT_KIND_DIRECTIONAL);
         for (int c = 0; c < 3; ++c) {
-            values[FGR_PATH_LIGHT_VECTOR + c] = light.vector[c];
-            values[FGR_PATH_LIGHT_RADIANCE + c] = light.radiance[c];
+            light_values[FGR_PATH_LIGHT_VECTOR + c] = light.vector[c];
+            light_values[FGR_PATH_LIGHT_RADIANCE + c] = light.radiance[c];
         }
-        values[FGR_PATH_LIGHT_COS_MAX] = light.cos_max;
-        values[FGR_PATH_LIGHT_PICK_UNTIL] = pick_until;
-        list.values.insert(list.values.end(), values.begin(), values.end());
+        light_values[FGR_PATH_LIGHT_COS_MAX] = light.cos_max;
+        values.insert(values.end(), light_values.begin(), light_values.end());
     }
-    return list;
+    return values;
 }
 
 }  // namespace
@@ -129,10 +104,10 @@ void PathMode::prepare(const PathSettings& settings) {
     }
     if (environment == bound_environment_ && settings.scene_lights == bound_scene_lights_) return;
     environment_data_ = upload_floats(device_, environment->tables.data);
-    const LightList lights = light_list(scene_, *environment, settings.scene_lights);
-    lights_ = upload_floats(device_, lights.values);
-    light_count_ = static_cast<int>(lights.values.size() / FGR_PATH_LIGHT_FLOATS);
-    environment_pick_ = lights.environment_pick;
+    const std::vector<float> lights = light_list(scene_, *environment, settings.scene_lights);
+    lights_ = upload_floats(device_, lights);
+    light_count_ = static_cast<int>(lights.size() / FGR_PATH_LIGHT_FLOATS);
+    environment_weight_ = environment->mean_luminance;
     bound_environment_ = environment;
     bound_scene_lights_ = settings.scene_lights;
 }
@@ -154,7 +129,7 @@ void PathMode::bind(cl::Kernel& kernel, const FrameRequest& request, const TileL
     argument.launch_samples = 1;
     argument.seed = settings.seed;
     argument.light_count = light_count_;
-    argument.environment_pick = environment_pick_;
+    argument.environment_weight = environment_weight_;
     kernel.setArg(FGR_PATH_ARG_LIGHTS, lights_);
     kernel.setArg(FGR_PATH_ARG_SETTINGS, argument);
     bound_settings_ = argument;

@@ -40,7 +40,7 @@ private:
     cl::Buffer environment_data_;
     cl::Buffer lights_;
     int light_count_ = 0;
-    float environment_pick_ = 1.0f;
+    float environment_weight_ = 0.0f;
     layout::path_settings bound_settings_{};  // the kernel's settings, as bind set them
 };
 
