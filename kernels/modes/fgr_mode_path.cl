@@ -141,6 +141,14 @@ inline shading_point shading_point_of(vec3 p, material m, vec3 n, vec3 wo) {
     return at;
 }
 
+/* f(wo, wi) max(n.wi, 0) and the BSDF's sampling pdf of wi at a shading point: bsdf_eval and
+ * bsdf_pdf from one evaluation, with the frame and lobes the point already holds. */
+inline vec3 bsdf_eval_at(const shading_point* at, vec3 wi, real* pdf) {
+    vec3 f_cos;
+    bsdf_eval_pdf_local(at->lobes, at->wo, bsdf_to_local(at->frame, wi), &f_cos, pdf);
+    return f_cos;
+}
+
 /* A light's direction at p and the irradiance it gives a surface facing it there. */
 inline vec3 light_irradiance(__constant const float* light, vec3 p, vec3* dir) {
     const vec3 vector = light_vec3(light, FGR_PATH_LIGHT_VECTOR);
@@ -166,10 +174,8 @@ inline vec3 light_irradiance(__constant const float* light, vec3 p, vec3* dir) {
 inline real light_pick_weight(__constant const float* light, const shading_point* at) {
     vec3 dir;
     const vec3 irradiance = light_irradiance(light, at->p, &dir);
-    vec3 f_cos;
     real pdf;
-    bsdf_eval_pdf_local(at->lobes, at->wo, bsdf_to_local(at->frame, dir), &f_cos, &pdf);
-    real weight = bsdf_luminance(v3_mul(irradiance, f_cos));
+    real weight = bsdf_luminance(v3_mul(irradiance, bsdf_eval_at(at, dir, &pdf)));
     const float cos_max = light[FGR_PATH_LIGHT_COS_MAX];
     if ((int)light[FGR_PATH_LIGHT_KIND] != FGR_LIGHT_KIND_POINT && cos_max < 1.0f) {
         const real sin_max = fgr_real(sqrt(fmax(1.0f - cos_max * cos_max, 0.0f)));
@@ -189,10 +195,11 @@ inline real environment_pick_weight(path_settings settings, const shading_point*
     return settings.environment_weight * reflectance;
 }
 
-/* The environment's weight and all the lights' at a shading point, summed. */
-inline real pick_weight_total(const shading_point* at, __constant const float* lights,
-                              path_settings settings) {
-    real total = environment_pick_weight(settings, at);
+/* The environment's weight at a shading point and all the lights', summed in the order
+ * sample_light lays out their intervals, so that the last one ends at the total. */
+inline real pick_weight_total(real environment_weight, const shading_point* at,
+                              __constant const float* lights, path_settings settings) {
+    real total = environment_weight;
     for (int i = 0; i < settings.light_count; ++i) {
         total += light_pick_weight(lights + i * FGR_PATH_LIGHT_FLOATS, at);
     }
@@ -277,11 +284,11 @@ inline light_sample sample_light(const shading_point* at, real u1, real u2, mask
                                  __constant const float* lights, path_settings settings,
                                  float max_distance, ENVIRONMENT) {
     light_sample s;
-    const real total = pick_weight_total(at, lights, settings);
+    const real env_weight = environment_pick_weight(settings, at);
+    const real total = pick_weight_total(env_weight, at, lights, settings);
     s.pick_total = total;
     /* Just below the total, so that rounding never takes u1 past the last interval's end. */
     const real target = u1 * (total * 0.99999988f);
-    const real env_weight = environment_pick_weight(settings, at);
     s.environment_pick = pick_probability(env_weight, total);
     real env_pdf = fgr_real(0.0f);
     const mask env_picked = wanted & (target < env_weight);
@@ -464,7 +471,8 @@ inline void render_packet_sample(int tile, FGR_RENDER_ARGS, __constant const flo
                              limits.max_distance, ENVIRONMENT_PASS);
             pick_total = light.pick_total;
             last_environment_pick = light.environment_pick;
-            const vec3 f = bsdf_eval(m, n, wo, light.dir);
+            real bsdf_pdf_of_light;
+            const vec3 f = bsdf_eval_at(&at, light.dir, &bsdf_pdf_of_light);
             mask lit = active & (v3_dot(light.dir, n) > 0.0f) & (fmax(fmax(f.x, f.y), f.z) > 0.0f) &
                        (fmax(fmax(light.radiance.x, light.radiance.y), light.radiance.z) > 0.0f);
             if (fgr_any(lit)) {
@@ -477,8 +485,7 @@ inline void render_packet_sample(int tile, FGR_RENDER_ARGS, __constant const flo
                 lit &= !shadow.hit;
                 const mask delta_light = light.pdf <= 0.0f;
                 const real w =
-                    select(mis ? power_heuristic(light.pdf, bsdf_pdf(m, n, wo, light.dir))
-                               : fgr_real(1.0f),
+                    select(mis ? power_heuristic(light.pdf, bsdf_pdf_of_light) : fgr_real(1.0f),
                            fgr_real(1.0f), delta_light);
                 const real scale = select(w / light.pdf, fgr_real(1.0f), delta_light);
                 const vec3 contribution = v3_scale(v3_mul(f, light.radiance), scale);
@@ -889,14 +896,15 @@ inline void shade_path_vertex(path_lanes* path, lane_sampler* rng, mask shaded, 
                                                 limits.max_distance, ENVIRONMENT_PASS);
         pick_total = light.pick_total;
         environment_pick = light.environment_pick;
-        const vec3 f = bsdf_eval(m, n, wo, light.dir);
+        real bsdf_pdf_of_light;
+        const vec3 f = bsdf_eval_at(&at, light.dir, &bsdf_pdf_of_light);
         lit = active & (v3_dot(light.dir, n) > 0.0f) & (fmax(fmax(f.x, f.y), f.z) > 0.0f) &
               (fmax(fmax(light.radiance.x, light.radiance.y), light.radiance.z) > 0.0f);
         if (fgr_any(lit)) {
             const mask delta_light = light.pdf <= 0.0f;
-            const real w = select(
-                mis ? power_heuristic(light.pdf, bsdf_pdf(m, n, wo, light.dir)) : fgr_real(1.0f),
-                fgr_real(1.0f), delta_light);
+            const real w =
+                select(mis ? power_heuristic(light.pdf, bsdf_pdf_of_light) : fgr_real(1.0f),
+                       fgr_real(1.0f), delta_light);
             const real scale = select(w / light.pdf, fgr_real(1.0f), delta_light);
             const vec3 contribution = v3_scale(v3_mul(f, light.radiance), scale);
             path->unshadowed =
