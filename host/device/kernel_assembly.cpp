@@ -229,10 +229,17 @@ std::string switch_options(const KernelSwitches& switches) {
     return options;
 }
 
+bool pairs_tiles(const Scene& scene, const KernelSwitches& switches) {
+    return switches.mode == RenderMode::Shaded && switches.packet_width > 1 &&
+           scene.has_distance_estimator() && scene.pairs_distances() &&
+           (switches.effects & FGR_EFFECT_GLOW) == 0;
+}
+
 AssembledProgram assemble_program(const Scene& scene, const KernelSwitches& switches) {
     check_supported_effects(scene, switches.effects);
     AssembledProgram program;
     program.options = switch_options(switches);
+    if (pairs_tiles(scene, switches)) program.options += " -DFGR_PAIRED_TILES";
     std::string& source = program.source;
     // The library shows the scene the names of the kernel API version its source is written for.
     const int kernel_api = declared_kernel_api(scene.source);

@@ -48,6 +48,12 @@ struct AssembledProgram {
 
 AssembledProgram assemble_program(const Scene& scene, const KernelSwitches& switches);
 
+// Whether the shaded kernel takes two tiles a work-item and marches their camera rays together
+// (FGR_PAIRED_TILES, kernels/modes/fgr_mode_shaded.cl): for a DE scene that gives its DE at two
+// points in one call, in packets (the processor overlaps the two chains; a GPU hides latency
+// with other work-items instead), without glow (the paired march keeps no closest approach).
+bool pairs_tiles(const Scene& scene, const KernelSwitches& switches);
+
 // "#define param_<id> ..." lines reading each parameter from the buffer `fgr_params`, as the
 // kernel API version the scene's source declares reads it (a vec3 is a float3 from version 4).
 // Parameters in `specialised` read as their constant value instead.

@@ -265,12 +265,12 @@ cl::Buffer Renderer::upload(const std::vector<float>& values) {
                       values.size() * sizeof(float), const_cast<float*>(values.data()));
 }
 
-bool Renderer::launch_tiles(cl::Kernel& kernel, int tiles, int group,
+bool Renderer::launch_tiles(cl::Kernel& kernel, int items, int group,
                             const std::function<bool()>& cancel, int bands,
                             const std::function<void()>& band_done) {
     if (bands <= 1) {
         if (cancel && cancel()) return false;
-        device_.queue.enqueueNDRangeKernel(kernel, cl::NullRange, global_range(tiles, group),
+        device_.queue.enqueueNDRangeKernel(kernel, cl::NullRange, global_range(items, group),
                                            cl::NDRange(group));
         // A cancel is polled before the next launch: this one must end first.
         if (band_done || cancel) device_.queue.finish();
@@ -279,11 +279,11 @@ bool Renderer::launch_tiles(cl::Kernel& kernel, int tiles, int group,
     }
     // Bands of whole work-groups, offset through the global work offset (get_global_id includes
     // it), so cancelling costs at most one band.
-    const int band = band_tiles(tiles, group, bands);
-    for (int first = 0; first < tiles; first += band) {
+    const int band = band_tiles(items, group, bands);
+    for (int first = 0; first < items; first += band) {
         if (cancel && cancel()) return false;
         device_.queue.enqueueNDRangeKernel(kernel, cl::NDRange(first),
-                                           global_range(std::min(band, tiles - first), group),
+                                           global_range(std::min(band, items - first), group),
                                            cl::NDRange(group));
         device_.queue.finish();
         if (band_done) band_done();
@@ -351,9 +351,11 @@ Frame Renderer::render(const FrameRequest& request) {
     const int per_launch = std::max(1, mode_->launch_samples(request));
     const int sample_launches = (request.samples + per_launch - 1) / per_launch;
     const int bands = frame_bands(request, region, scene_, switches_.mode, per_launch);
+    // The render kernel's work-items: a tile each, or a pair of tiles (pairs_tiles).
+    const int items = pairs_tiles(scene_, switches_) ? (tiles + 1) / 2 : tiles;
     // The launches in all, as launch_tiles makes them.
-    const int band = band_tiles(tiles, group, bands);
-    const long launches = static_cast<long>(sample_launches) * ((tiles + band - 1) / band);
+    const int band = band_tiles(items, group, bands);
+    const long launches = static_cast<long>(sample_launches) * ((items + band - 1) / band);
     long launched = 0;
     std::function<void()> band_done;
     if (request.on_progress) {
@@ -364,7 +366,7 @@ Frame Renderer::render(const FrameRequest& request) {
         const int count = std::min(per_launch, request.samples - done);
         mode_->bind_launch(render_kernel_, count);
         render_kernel_.setArg(FGR_RENDER_ARG_SAMPLE, request.first_sample + done);
-        if (!launch_tiles(render_kernel_, tiles, group, request.cancel, bands, band_done)) {
+        if (!launch_tiles(render_kernel_, items, group, request.cancel, bands, band_done)) {
             return cancelled_frame();
         }
         done += count;

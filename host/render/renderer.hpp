@@ -254,10 +254,11 @@ private:
     // timed frame (counted in build_report().build_ms).
     void warm_up();
     cl::Buffer upload(const std::vector<float>& values);
-    // Launches `kernel` (the render kernel or the mode's resolve kernel) over `tiles`, in `bands`
-    // launches, calling `band_done` (if set) after each; false when `cancel` (if set), polled
-    // before each, asked to stop.
-    bool launch_tiles(cl::Kernel& kernel, int tiles, int group, const std::function<bool()>& cancel,
+    // Launches `kernel` (the render kernel or the mode's resolve kernel) over `items` work-items
+    // (a tile each, or a pair of tiles for a render kernel that pairs them), in `bands` launches,
+    // calling `band_done` (if set) after each; false when `cancel` (if set), polled before each,
+    // asked to stop.
+    bool launch_tiles(cl::Kernel& kernel, int items, int group, const std::function<bool()>& cancel,
                       int bands = 1, const std::function<void()>& band_done = {});
     // Points as the probes take them (FGR_PROBE_POINT_PLANES: x, y, z as the nearest floats,
     // then x, y, z of what the floats miss of the double points), padded to whole packets, and

@@ -172,12 +172,10 @@ std::string without_comments(std::string_view source) {
     return out;
 }
 
-// Whether the source says `#define FGR_SCENE_INSIDE_ONLY` on a line of its own (a scene with an
-// inside test and no distance estimator, see kernels/geometry/fgr_geometry.cl).
-bool declares_inside_only(std::string_view source) {
-    static const std::regex directive(R"(^[ \t]*#[ \t]*define[ \t]+FGR_SCENE_INSIDE_ONLY\b)",
-                                      std::regex::multiline);
-    if (source.find("FGR_SCENE_INSIDE_ONLY") == std::string_view::npos) return false;
+// Whether the source says `#define NAME` on a line of its own, outside comments.
+bool declares(std::string_view source, const std::string& name) {
+    if (source.find(name) == std::string_view::npos) return false;
+    const std::regex directive("^[ \t]*#[ \t]*define[ \t]+" + name + "\\b", std::regex::multiline);
     const std::string code = without_comments(source);
     return std::regex_search(code, directive);
 }
@@ -265,7 +263,9 @@ std::string offered_choices_text(const ParamInfo& param) {
     return names;
 }
 
-bool Scene::inside_only() const { return declares_inside_only(source); }
+bool Scene::inside_only() const { return declares(source, "FGR_SCENE_INSIDE_ONLY"); }
+
+bool Scene::pairs_distances() const { return declares(source, "FGR_SCENE_HAS_DE_PAIR"); }
 
 bool Scene::has_distance_estimator() const { return ifs == nullptr && !inside_only(); }
 

@@ -101,6 +101,9 @@ struct Scene {
     bool inside_only() const;
     // A distance estimator to march: not for IFS scenes (traced exactly) nor inside-only ones.
     bool has_distance_estimator() const;
+    // Whether the source gives the DE at two points in one call (`#define FGR_SCENE_HAS_DE_PAIR`
+    // and scene_de_pair, see kernels/geometry/fgr_geometry.cl).
+    bool pairs_distances() const;
 
     const ParamInfo* find_param(const std::string& param_id) const;
     const NamedCamera* find_camera(const std::string& camera_name) const;

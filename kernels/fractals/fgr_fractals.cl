@@ -141,9 +141,10 @@ inline vec3 bulb_power_real(vec3 z, real r, real r_n, float n, int latitude_form
     return v3_scale(v3(horizontal * cos_phi, horizontal * sin_phi, vertical), r_n);
 }
 
-/* One Mandelbulb iteration for the lanes still inside the bailout: z -> z^power + p and the
- * running derivative, with integer_power choosing the trigonometry-free form. */
-#define FGR_BULB_ITERATE(integer_power)                                   \
+/* One Mandelbulb iteration of orbit (z, dr, r) from c = p, for the lanes still inside the
+ * bailout: z -> z^power + p and the running derivative, with integer_power choosing the
+ * trigonometry-free form. */
+#define FGR_BULB_ITERATE(integer_power, z, dr, r, p, active)              \
     do {                                                                  \
         real r_pow;                                                       \
         vec3 z_n;                                                         \
@@ -157,8 +158,13 @@ inline vec3 bulb_power_real(vec3 z, real r, real r_n, float n, int latitude_form
         dr = select(dr, power * r_pow * dr + 1.0f, active);               \
         z = v3_select(z, v3_add(z_n, p), active);                         \
         r = v3_length(z);                                                 \
-        if (record) *trap = trap_update(*trap, z, active);                \
     } while (0)
+
+/* The distance estimate from an orbit's last r and dr. r = 0 never escapes (the origin is
+ * inside): distance 0, never log(0) * 0 = NaN. */
+inline real bulb_distance(real r, real dr) {
+    return select(0.5f * log(r) * r / dr, fgr_real(0.0f), r <= 0.0f);
+}
 
 /* The Mandelbulb's distance estimate at p: iterates z -> z^power + p at most `iterations` times
  * or until |z| > bailout, and returns 0.5 log(r) r / dr. When `record` is set it also fills *trap
@@ -174,15 +180,56 @@ inline real mandelbulb_de(vec3 p, float power, float bailout, int iterations, in
         for (int i = 0; i < iterations; ++i) {
             const mask active = r <= bailout;
             if (!fgr_any(active)) break;
-            FGR_BULB_ITERATE(1);
+            FGR_BULB_ITERATE(1, z, dr, r, p, active);
+            if (record) *trap = trap_update(*trap, z, active);
         }
     } else {
         for (int i = 0; i < iterations; ++i) {
             const mask active = r <= bailout;
             if (!fgr_any(active)) break;
-            FGR_BULB_ITERATE(0);
+            FGR_BULB_ITERATE(0, z, dr, r, p, active);
+            if (record) *trap = trap_update(*trap, z, active);
         }
     }
-    /* r = 0 never escapes (the origin is inside): distance 0, never log(0) * 0 = NaN. */
-    return select(0.5f * log(r) * r / dr, fgr_real(0.0f), r <= 0.0f);
+    return bulb_distance(r, dr);
+}
+
+/* Both orbits while both have lanes inside the bailout, one iteration of each per pass, then
+ * the one left on its own: two independent chains in one loop, which the processor overlaps
+ * (an iteration waits on the latency of its square roots, division and squarings, not on the
+ * arithmetic units). Each lane takes exactly the steps mandelbulb_de takes it. */
+#define FGR_BULB_PAIR_LOOPS(integer_power)                                 \
+    do {                                                                   \
+        int i = 0;                                                         \
+        for (; i < iterations; ++i) {                                      \
+            const mask active_a = ra <= bailout, active_b = rb <= bailout; \
+            if (!fgr_any(active_a) || !fgr_any(active_b)) break;           \
+            FGR_BULB_ITERATE(integer_power, za, dra, ra, a, active_a);     \
+            FGR_BULB_ITERATE(integer_power, zb, drb, rb, b, active_b);     \
+        }                                                                  \
+        for (int j = i; j < iterations; ++j) {                             \
+            const mask active_a = ra <= bailout;                           \
+            if (!fgr_any(active_a)) break;                                 \
+            FGR_BULB_ITERATE(integer_power, za, dra, ra, a, active_a);     \
+        }                                                                  \
+        for (int j = i; j < iterations; ++j) {                             \
+            const mask active_b = rb <= bailout;                           \
+            if (!fgr_any(active_b)) break;                                 \
+            FGR_BULB_ITERATE(integer_power, zb, drb, rb, b, active_b);     \
+        }                                                                  \
+    } while (0)
+
+/* mandelbulb_de at two points at once (without the orbit trap), the same bits. */
+inline void mandelbulb_de_pair(vec3 a, vec3 b, float power, float bailout, int iterations,
+                               int latitude_form, real* da, real* db) {
+    vec3 za = a, zb = b;
+    real dra = fgr_real(1.0f), drb = fgr_real(1.0f);
+    real ra = v3_length(za), rb = v3_length(zb);
+    if (power == floor(power)) {
+        FGR_BULB_PAIR_LOOPS(1);
+    } else {
+        FGR_BULB_PAIR_LOOPS(0);
+    }
+    *da = bulb_distance(ra, dra);
+    *db = bulb_distance(rb, drb);
 }

@@ -26,6 +26,17 @@ inline real scene_de(vec3 p, PARAMS) {
 }
 #endif
 
+/* The DE at two points. A scene whose DE loops may give its own, after
+ * `#define FGR_SCENE_HAS_DE_PAIR` on a line of its own: one loop over both points' iterations
+ * overlaps two independent chains, where two calls run one after the other. It must give each
+ * lane what scene_de gives it. */
+#ifndef FGR_SCENE_HAS_DE_PAIR
+inline void scene_de_pair(vec3 a, vec3 b, real* da, real* db, PARAMS) {
+    *da = scene_de(a, PARAMS_PASS);
+    *db = scene_de(b, PARAMS_PASS);
+}
+#endif
+
 /* Whether p is in the solid, as a canonical mask (all bits set in true vector lanes, 1 for
  * scalars), so two answers compare with ==. */
 inline mask surface_inside(vec3 p, real footprint, PARAMS) {

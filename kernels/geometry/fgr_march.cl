@@ -241,10 +241,11 @@ inline march_result march_camera_rays(vec3 origin, vec3 dir, mask active, real s
  * evaluations instead of six for central differences). `eps` is per lane so the stencil scales
  * with the pixel footprint at the hit. */
 inline vec3 estimate_normal(vec3 p, real eps, PARAMS) {
-    real a = scene_de(v3(p.x + eps, p.y - eps, p.z - eps), PARAMS_PASS);
-    real b = scene_de(v3(p.x - eps, p.y - eps, p.z + eps), PARAMS_PASS);
-    real c = scene_de(v3(p.x - eps, p.y + eps, p.z - eps), PARAMS_PASS);
-    real d = scene_de(v3(p.x + eps, p.y + eps, p.z + eps), PARAMS_PASS);
+    real a, b, c, d;
+    scene_de_pair(v3(p.x + eps, p.y - eps, p.z - eps), v3(p.x - eps, p.y - eps, p.z + eps), &a, &b,
+                  PARAMS_PASS);
+    scene_de_pair(v3(p.x - eps, p.y + eps, p.z - eps), v3(p.x + eps, p.y + eps, p.z + eps), &c, &d,
+                  PARAMS_PASS);
     return v3_normalize(v3(a - b - c + d, -a - b + c + d, -a + b - c + d));
 }
 
@@ -367,4 +368,50 @@ inline void march_lanes_step(march_lanes* m, real dist, march_limits limits) {
     active &= m->t <= m->reach;
     m->marching = active & (m->steps < (mask)(limits.max_steps));
 }
+
+#ifndef FGR_EFFECT_GLOW
+/* What march_lanes holds of a finished march, as march_rays_core returns it. */
+inline march_result march_lanes_result(const march_lanes* m) {
+    march_result result;
+    result.t = m->t;
+    result.hit = m->hit;
+    result.steps = m->steps;
+    return result;
+}
+
+/* Two packets of camera rays marched side by side, each exactly as march_camera_rays marches it
+ * (the same steps, hits and t): while both have rays on their way, one scene_de_pair call takes
+ * a step of each, so that a scene iterating both points in one loop overlaps the two chains of
+ * dependent operations; then the packet left marches alone. (No glow: march_lanes keeps no
+ * closest approach.) */
+inline void march_camera_ray_pair(vec3 origin_a, vec3 dir_a, mask active_a, real start_a,
+                                  vec3 origin_b, vec3 dir_b, mask active_b, real start_b,
+                                  march_limits limits, march_result* a, march_result* b, PARAMS) {
+    const real reach = fgr_real(limits.max_distance);
+    march_lanes ma = march_lanes_none(), mb = march_lanes_none();
+    /* Every lane starts, as in march_rays_core (t = start even where the lane is inactive). */
+    march_lanes_start(&ma, FGR_TRUE, origin_a, dir_a, start_a, fgr_real(0.0f), reach, (mask)(0));
+    march_lanes_start(&mb, FGR_TRUE, origin_b, dir_b, start_b, fgr_real(0.0f), reach, (mask)(0));
+    ma.marching &= active_a;
+    mb.marching &= active_b;
+    for (;;) {
+        const int marching_a = fgr_any(ma.marching), marching_b = fgr_any(mb.marching);
+        if (marching_a && marching_b) {
+            real dist_a, dist_b;
+            scene_de_pair(march_lanes_point(&ma), march_lanes_point(&mb), &dist_a, &dist_b,
+                          PARAMS_PASS);
+            march_lanes_step(&ma, dist_a, limits);
+            march_lanes_step(&mb, dist_b, limits);
+        } else if (marching_a) {
+            march_lanes_step(&ma, scene_de(march_lanes_point(&ma), PARAMS_PASS), limits);
+        } else if (marching_b) {
+            march_lanes_step(&mb, scene_de(march_lanes_point(&mb), PARAMS_PASS), limits);
+        } else {
+            break;
+        }
+    }
+    *a = march_lanes_result(&ma);
+    *b = march_lanes_result(&mb);
+}
+#endif
 #endif

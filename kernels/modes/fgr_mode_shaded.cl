@@ -38,26 +38,42 @@ inline void store_aovs(vec3 albedo, vec3 normal, mask hit, vec3 colour, int samp
 }
 #endif
 
-/* Renders sample `sample` of every pixel of the tile. Sample 0 writes the planes; later samples
- * add to them (the host divides by the sample count), and only sample 0 writes depth (and, with
- * FGR_STATS, the stats planes, and the IFS level plane). */
-__kernel void fgr_render(FGR_RENDER_ARGS, __constant const float* lights, int light_count) {
-    const int tile = get_global_id(0);
-    if (tile >= tile_count) return;
+/* A tile's camera rays for this sample and where their march starts (the cone prepass and its
+ * hints). */
+typedef struct tile_rays {
+    vec3 eye, dir;
+    mask inside;
+    real start;
+    mask hint_evaluations; /* DE evaluations the hints took, per lane */
+} tile_rays;
+
+inline tile_rays camera_rays_of_tile(int tile, camera_frame camera, int sample,
+                                     __global const float* march_starts,
+                                     __global const float* march_hints, int has_hints,
+                                     march_limits limits, PARAMS) {
+    tile_rays rays;
     const tile_pixels pixels = pixels_of_tile(tile, camera);
-    const real px = pixels.px, py = pixels.py;
-    const mask inside = pixels.inside;
+    const camera_sample jitter = sample_camera(pixels.px, pixels.py, sample);
+    const camera_ray ray = camera_ray_through(camera, pixels.px, pixels.py, jitter, PARAMS_PASS);
+    rays.eye = ray.origin;
+    rays.dir = ray.dir;
+    rays.inside = pixels.inside;
+    rays.hint_evaluations = (mask)(0);
+    rays.start =
+        camera_ray_start(march_starts, march_hints, has_hints, tile, pixels, camera, rays.eye,
+                         rays.dir, rays.inside, limits, &rays.hint_evaluations, PARAMS_PASS);
+    return rays;
+}
 
-    const camera_sample jitter = sample_camera(px, py, sample);
-    const camera_ray ray = camera_ray_through(camera, px, py, jitter, PARAMS_PASS);
-    const vec3 eye = ray.origin, dir = ray.dir;
-
-    const march_limits limits = scene_march_limits(camera.pixel_angle, PARAMS_PASS);
-    mask hint_evaluations = (mask)(0);
-    const real start = camera_ray_start(march_starts, march_hints, has_hints, tile, pixels, camera,
-                                        eye, dir, inside, limits, &hint_evaluations, PARAMS_PASS);
-    march_result hit = march_camera_rays(eye, dir, inside, start, limits, PARAMS_PASS);
-    hit.steps += hint_evaluations;
+/* Shades the tile's march and writes its planes (sample 0 writes them; later samples add to
+ * them, and the host divides by the sample count; only sample 0 writes depth, and, with
+ * FGR_STATS, the stats planes, and the IFS level plane). */
+inline void shade_tile(int tile, tile_rays rays, march_result hit, camera_frame camera, int sample,
+                       march_limits limits, __constant const float* lights, int light_count,
+                       __global float* planes, int plane_size, PARAMS) {
+    const vec3 eye = rays.eye, dir = rays.dir;
+    const mask inside = rays.inside;
+    hit.steps += rays.hint_evaluations;
 
     vec3 colour = background(dir);
     real depth = fgr_real(-1.0f);
@@ -133,5 +149,43 @@ __kernel void fgr_render(FGR_RENDER_ARGS, __constant const float* lights, int li
         fgr_store(convert_real(secondary_steps[0]), tile,
                   planes + FGR_SHADED_SECONDARY_STEPS_PLANE * plane_size);
     }
+#endif
+}
+
+/* Renders sample `sample` of every pixel of its tile, or with FGR_PAIRED_TILES of two tiles
+ * side by side (2i and 2i + 1), whose camera rays march together (march_camera_ray_pair): the
+ * host launches a work-item per tile or per pair. */
+__kernel void fgr_render(FGR_RENDER_ARGS, __constant const float* lights, int light_count) {
+    const march_limits limits = scene_march_limits(camera.pixel_angle, PARAMS_PASS);
+#ifdef FGR_PAIRED_TILES
+    const int tile = 2 * (int)get_global_id(0);
+    if (tile >= tile_count) return;
+    const int has_second = tile + 1 < tile_count;
+    const tile_rays first = camera_rays_of_tile(tile, camera, sample, march_starts, march_hints,
+                                                has_hints, limits, PARAMS_PASS);
+    /* A last pair without its second tile marches the first's rays again, all lanes idle. */
+    tile_rays second =
+        camera_rays_of_tile(has_second ? tile + 1 : tile, camera, sample, march_starts, march_hints,
+                            has_hints, limits, PARAMS_PASS);
+    if (!has_second) second.inside = (mask)(0);
+    march_result hit_first, hit_second;
+    march_camera_ray_pair(first.eye, first.dir, first.inside, first.start, second.eye, second.dir,
+                          second.inside, second.start, limits, &hit_first, &hit_second,
+                          PARAMS_PASS);
+    shade_tile(tile, first, hit_first, camera, sample, limits, lights, light_count, planes,
+               plane_size, PARAMS_PASS);
+    if (has_second) {
+        shade_tile(tile + 1, second, hit_second, camera, sample, limits, lights, light_count,
+                   planes, plane_size, PARAMS_PASS);
+    }
+#else
+    const int tile = get_global_id(0);
+    if (tile >= tile_count) return;
+    const tile_rays rays = camera_rays_of_tile(tile, camera, sample, march_starts, march_hints,
+                                               has_hints, limits, PARAMS_PASS);
+    const march_result hit =
+        march_camera_rays(rays.eye, rays.dir, rays.inside, rays.start, limits, PARAMS_PASS);
+    shade_tile(tile, rays, hit, camera, sample, limits, lights, light_count, planes, plane_size,
+               PARAMS_PASS);
 #endif
 }

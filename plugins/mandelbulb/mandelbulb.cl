@@ -14,3 +14,10 @@ inline real bulb_iterate(vec3 p, PARAMS, int record, orbit_trap* trap) {
 
 #define FGR_SCENE_HAS_COLOUR
 FGR_TRAP_COLOURED_SCENE(bulb_iterate)
+
+/* Two points' DEs in one loop (mandelbulb_de_pair), for the library's paired evaluations. */
+#define FGR_SCENE_HAS_DE_PAIR
+inline void scene_de_pair(vec3 a, vec3 b, real* da, real* db, PARAMS) {
+    mandelbulb_de_pair(a, b, param_power, param_bailout, param_iterations, param_variant == 1, da,
+                       db);
+}

@@ -15,6 +15,7 @@
 #include "device/program_cache.hpp"
 #include "image_compare.hpp"
 #include "mandelbulb_reference.hpp"
+#include "random_points.hpp"
 #include "render/renderer.hpp"
 #include "scene/parameters.hpp"
 #include "test_scenes.hpp"
@@ -147,6 +148,60 @@ TEST_F(RenderTest, PartialTilesAtOddSizesMatchOneRayPerWorkItem) {
         const Frame packets = render(*mandelbulb_, request, width);
         ASSERT_EQ(packets.image.rgb.size(), size_t(kW * kH * 3));
         expect_same_pixels(packets, scalar, "37x23 at width " + std::to_string(width));
+    }
+}
+
+// The Mandelbulb gives its DE at two points in one loop (scene_de_pair), so the shaded kernel
+// takes two tiles a work-item and marches them together. Without the pair (the same source, its
+// pair renamed away) each tile marches alone and every DE is a call of its own: the images,
+// depths and step counts must be the same to the bit. Sizes with an odd number of tiles leave a
+// last pair without its second tile.
+TEST_F(RenderTest, PairedTilesRenderExactlyWhatOneTileAWorkItemRenders) {
+    Scene unpaired = *mandelbulb_;
+    for (const auto& [from, to] :
+         {std::pair<std::string, std::string>{"FGR_SCENE_HAS_DE_PAIR", "FGR_SCENE_PAIR_UNUSED"},
+          {"scene_de_pair", "unused_de_pair"}}) {
+        for (size_t at = unpaired.source.find(from); at != std::string::npos;
+             at = unpaired.source.find(from, at + to.size())) {
+            unpaired.source.replace(at, from.size(), to);
+        }
+    }
+    ASSERT_TRUE(mandelbulb_->pairs_distances());
+    ASSERT_FALSE(unpaired.pairs_distances());
+    // Tiles of 2x2, 4x2 and 4x4 lanes: 36x20 has 45 tiles of 4x4, 37x23 has 12x10 of 2x2 and
+    // 10x6 of 4x4 (partial ones at the edges), 44x26 has 11x13 of 4x2.
+    for (int width : {4, 8, 16}) {
+        KernelSwitches switches{width, mandelbulb_->effects};
+        switches.stats = true;
+        ASSERT_TRUE(pairs_tiles(*mandelbulb_, switches));
+        ASSERT_FALSE(pairs_tiles(unpaired, switches));
+        Renderer paired_renderer(*device_, cache_, *mandelbulb_, switches);
+        Renderer alone_renderer(*device_, cache_, unpaired, switches);
+        for (const auto& [w, h] : {std::pair{36, 20}, {37, 23}, {44, 26}}) {
+            FrameRequest request{w, h, mandelbulb_->cameras.front().view,
+                                 default_param_values(*mandelbulb_)};
+            request.view.fov_degrees = 30.0f;
+            request.samples = 2;
+            const Frame paired = paired_renderer.render(request);
+            const Frame alone = alone_renderer.render(request);
+            const std::string what = fmt::format("{}x{} at width {}", w, h, width);
+            ASSERT_GT(alone.hits, w * h / 4) << what;
+            EXPECT_EQ(paired.linear, alone.linear) << what;
+            EXPECT_EQ(paired.depth, alone.depth) << what;
+            ASSERT_TRUE(paired.stats && alone.stats) << what;
+            EXPECT_EQ(paired.stats->de_evaluations, alone.stats->de_evaluations) << what;
+            EXPECT_EQ(paired.stats->lane_steps, alone.stats->lane_steps) << what;
+        }
+        // Normals anywhere in the bulb's box, coarse and fine: the stencil's taps take their DEs
+        // in pairs, one tap's orbit often escaping long before the other's, whose iterations then
+        // go on alone.
+        const std::vector<float> params = default_param_values(*mandelbulb_);
+        const std::vector<glm::vec3> points = test::random_points(2000, 1.2f, 11);
+        for (const float eps : {0.03f, 1e-3f}) {
+            EXPECT_EQ(paired_renderer.probe_normals(points, params, eps),
+                      alone_renderer.probe_normals(points, params, eps))
+                << "width " << width << ", eps " << eps;
+        }
     }
 }
 
