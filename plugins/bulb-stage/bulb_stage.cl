@@ -23,6 +23,15 @@ real scene_de(vec3 p, PARAMS) {
     return fmin(stage_bulb(p, PARAMS_PASS), stage_floor(p, PARAMS_PASS));
 }
 
+/* Two points' DEs with the bulb's orbits in one loop (mandelbulb_de_pair): the same values. */
+#define FGR_SCENE_HAS_DE_PAIR
+inline void scene_de_pair(vec3 a, vec3 b, real* da, real* db, PARAMS) {
+    real bulb_a, bulb_b;
+    mandelbulb_de_pair(a, b, param_power, 2.0f, param_iterations, 0, &bulb_a, &bulb_b);
+    *da = fmin(bulb_a, stage_floor(a, PARAMS_PASS));
+    *db = fmin(bulb_b, stage_floor(b, PARAMS_PASS));
+}
+
 /* Tiles of side `tile`, every other one a little darker. */
 inline vec3 floor_colour(vec3 p, PARAMS) {
     const real checker = fgr_parity(floor(p.x / param_tile) + floor(p.y / param_tile));
