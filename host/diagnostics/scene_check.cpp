@@ -236,8 +236,9 @@ bool SceneCheckReport::passed() const {
 
 const std::vector<std::string>& scene_check_names() {
     static const std::vector<std::string> names{
-        "hard-points",       "hard-cameras",     "parameter-extremes", "lipschitz",
-        "march-safety",      "packet-agreement", "normals-at-hits",    "relaxed-steps",
+        "hard-points",       "hard-cameras",    "parameter-extremes",
+        "lipschitz",         "march-safety",    "packet-agreement",
+        "de-pair",           "normals-at-hits", "relaxed-steps",
         "cameras-and-paths", "default-view"};
     return names;
 }
@@ -669,6 +670,45 @@ CheckResult SceneChecker::packet_agreement() {
     return pass(made, measured);
 }
 
+// A scene's own scene_de_pair gives each point exactly what scene_de gives it, as the first point
+// of a pair and as the second, at points around the default view: each packet is paired with one
+// half the points away, so that the two orbits escape at different iterations.
+CheckResult SceneChecker::de_pair() {
+    const std::string name = "de-pair", title = "scene_de_pair gives what scene_de gives";
+    if (auto skipped = skip_without_de(name, title)) return *skipped;
+    CheckResult made = result(name, title);
+    if (scene_.ifs || !scene_.pairs_distances()) {
+        made.status = CheckStatus::Skipped;
+        made.detail = "the scene gives no scene_de_pair of its own";
+        return made;
+    }
+    const std::vector<glm::vec3> points = region_points(4096, 31);
+    const std::vector<float> alone = renderer_->probe_de(points, params_);
+    const PairedDistances paired = renderer_->probe_de_pairs(points, params_);
+    const auto same = [](float a, float b) { return a == b || (std::isnan(a) && std::isnan(b)); };
+    long differing = 0;
+    size_t first = 0;
+    for (size_t i = 0; i < points.size(); ++i) {
+        if (!same(paired.first[i], alone[i]) || !same(paired.second[i], alone[i])) {
+            if (differing++ == 0) first = i;
+        }
+    }
+    if (differing > 0) {
+        return fail(made,
+                    fmt::format("{} of {} points get another DE from scene_de_pair than from "
+                                "scene_de (first at {}: {} as the first of a pair, {} as the "
+                                "second, against {})",
+                                differing, points.size(), point_text(points[first]),
+                                value_text(paired.first[first]), value_text(paired.second[first]),
+                                value_text(alone[first])),
+                    "give each lane what scene_de gives it: iterate each point's orbit under "
+                    "its own lanes' mask, and let the orbit still going when the other is done "
+                    "finish its iterations alone");
+    }
+    return pass(made, fmt::format("{} points, each the first of one pair and the second of another",
+                                  points.size()));
+}
+
 // Wherever a primary ray hits, the shading normal (the kernel's own stencil and eps) is finite and
 // of unit length. The probe points are the hits themselves: each pixel's centre ray (the ray
 // sample 0 traced) at the pixel's depth, so the DE there is under the hit footprint, as the march
@@ -914,6 +954,7 @@ SceneCheckReport SceneChecker::run_all(const std::optional<std::string>& only) {
         {"lipschitz", &SceneChecker::lipschitz},
         {"march-safety", &SceneChecker::march_safety},
         {"packet-agreement", &SceneChecker::packet_agreement},
+        {"de-pair", &SceneChecker::de_pair},
         {"normals-at-hits", &SceneChecker::normals_at_hits},
         {"relaxed-steps", &SceneChecker::relaxed_steps},
         {"cameras-and-paths", &SceneChecker::cameras_and_paths},

@@ -68,6 +68,8 @@ public:
     CheckResult march_safety();
     // One ray per work-item renders the packets' image within one 8-bit level, the same hits.
     CheckResult packet_agreement();
+    // The scene's own scene_de_pair gives each point what scene_de gives it (skipped without one).
+    CheckResult de_pair();
     // The shading normal at every hit of the default view is finite and of unit length.
     CheckResult normals_at_hits();
     // Over-relaxed steps agree with a cautious march (no holes, no hits behind thin parts).

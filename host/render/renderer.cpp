@@ -233,6 +233,7 @@ Renderer::Renderer(const ComputeDevice& device, ProgramCache& cache, const Scene
     render_kernel_ = cl::Kernel(program_, "fgr_render");
     probe_kernel_ = cl::Kernel(program_, "fgr_probe_de");
     normal_kernel_ = cl::Kernel(program_, "fgr_probe_normal");
+    pair_probe_kernel_ = cl::Kernel(program_, "fgr_probe_de_pair");
     mode_ = make_mode_kernel(switches_, device, program_, scene);
     prepass_ = std::make_unique<ConePrepass>(device, program_, scene, switches_);
     planes_ = std::make_unique<FramePlanes>(device, FramePlanes::preferred_view(device.info));
@@ -470,6 +471,26 @@ std::vector<glm::vec3> Renderer::probe_normals(std::span<const glm::vec3> points
         normals[i] = {planes[i], planes[plane + i], planes[2 * static_cast<size_t>(plane) + i]};
     }
     return normals;
+}
+
+PairedDistances Renderer::probe_de_pairs(std::span<const glm::vec3> points,
+                                         const std::vector<float>& params) {
+    require_distance_estimator(scene_, "probe");
+    if (points.empty()) return {};
+    int plane = 0;
+    const std::vector<glm::dvec3> wide(points.begin(), points.end());
+    const int packets =
+        (static_cast<int>(points.size()) + switches_.packet_width - 1) / switches_.packet_width;
+    // Half the packets apart: a first point's partner lies far from it, its orbit its own.
+    const int shift = std::max(1, packets / 2);
+    const std::vector<float> planes = run_probe(
+        pair_probe_kernel_, wide, params, FGR_PROBE_DE_PAIR_PLANES,
+        [shift](cl::Kernel& kernel) { kernel.setArg(FGR_PROBE_ARG_SHIFT, shift); }, &plane);
+    PairedDistances distances;
+    distances.first.assign(planes.begin(), planes.begin() + static_cast<long>(points.size()));
+    distances.second.assign(planes.begin() + plane,
+                            planes.begin() + plane + static_cast<long>(points.size()));
+    return distances;
 }
 
 }  // namespace fgr

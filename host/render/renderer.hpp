@@ -221,6 +221,11 @@ PixelRegion rendered_region(const FrameRequest& request);
 // in `mode`: inside-only scenes render only in the brute mode, which IFS scenes cannot.
 void check_mode_supported(const Scene& scene, RenderMode mode);
 
+// Renderer::probe_de_pairs: each point's DE as the first of a pair and as the second.
+struct PairedDistances {
+    std::vector<float> first, second;
+};
+
 class Renderer {
 public:
     // Throws KernelBuildError when the scene's source does not compile, std::invalid_argument
@@ -244,6 +249,10 @@ public:
     // The shading normal at each point, with finite-difference stencil size eps.
     std::vector<glm::vec3> probe_normals(std::span<const glm::vec3> points,
                                          const std::vector<float>& params, float eps);
+    // The scene's DE at each point through scene_de_pair (kernels/geometry/fgr_geometry.cl), the
+    // point's packet paired with another's: as the first point of a pair, and as the second.
+    PairedDistances probe_de_pairs(std::span<const glm::vec3> points,
+                                   const std::vector<float>& params);
 
     const BuildReport& build_report() const { return build_report_; }
     const Scene& scene() const { return scene_; }
@@ -279,6 +288,7 @@ private:
     cl::Kernel render_kernel_;
     cl::Kernel probe_kernel_;
     cl::Kernel normal_kernel_;
+    cl::Kernel pair_probe_kernel_;
     std::unique_ptr<ModeKernel> mode_;      // the render mode's own arguments and planes
     std::unique_ptr<ConePrepass> prepass_;  // where camera rays start
     std::unique_ptr<FramePlanes> planes_;   // what the kernels write, kept between frames

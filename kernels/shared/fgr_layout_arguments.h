@@ -43,13 +43,14 @@
 #define FGR_PREPASS_ARG_PARAMS 4       /* __constant float* */
 #define FGR_PREPASS_ARG_CONE_SCALE 5   /* float: 1 for the safe cone */
 
-/* The probes, fgr_probe_de and fgr_probe_normal. */
+/* The probes, fgr_probe_de, fgr_probe_normal and fgr_probe_de_pair. */
 #define FGR_PROBE_ARG_POINTS 0       /* __global const float*: FGR_PROBE_POINT_PLANES planes */
 #define FGR_PROBE_ARG_PLANE_SIZE 1   /* int: floats per plane (whole packets) */
 #define FGR_PROBE_ARG_PACKET_COUNT 2 /* int */
 #define FGR_PROBE_ARG_OUT 3          /* __global float*: FGR_PROBE_*_PLANES planes */
 #define FGR_PROBE_ARG_PARAMS 4       /* __constant float* */
 #define FGR_PROBE_ARG_EPS 5          /* fgr_probe_normal: float, the stencil's size */
+#define FGR_PROBE_ARG_SHIFT 5        /* fgr_probe_de_pair: int, packets to a first's partner */
 
 /* The device math self-test's kernels, fgr_check_<function> (fgr_math_check.cl). */
 #define FGR_MATH_CHECK_ARG_A 0          /* __global const lane_scalar*: first operands */

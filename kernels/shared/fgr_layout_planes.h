@@ -111,5 +111,7 @@
 /* Their outputs: fgr_probe_de's distance, fgr_probe_normal's x, y, z from plane 0. */
 #define FGR_PROBE_DE_PLANES 1
 #define FGR_PROBE_NORMAL_PLANES 3
+/* fgr_probe_de_pair: each point's DE as the first point of a pair, then as the second */
+#define FGR_PROBE_DE_PAIR_PLANES 2
 
 #endif /* FGR_LAYOUT_PLANES_H */

@@ -40,6 +40,17 @@ Scene ball(const std::string& de, float step_factor = 1.0f) {
     return scene;
 }
 
+// The same ball with `#define FGR_SCENE_HAS_DE_PAIR` and a scene_de_pair whose body is `pair`
+// (points a and b, results *da and *db).
+Scene ball_with_pair(const std::string& de, const std::string& pair) {
+    Scene scene = ball(de);
+    scene.source +=
+        "\n#define FGR_SCENE_HAS_DE_PAIR\ninline void scene_de_pair(vec3 a, vec3 b, "
+        "real* da, real* db, PARAMS) { " +
+        pair + " }\n";
+    return scene;
+}
+
 const CheckResult& find_check(const SceneCheckReport& report, const std::string& name) {
     for (const CheckResult& check : report.results) {
         if (check.name == name) return check;
@@ -59,7 +70,8 @@ protected:
 std::string failures(const SceneCheckReport& report) { return format_check_report(report); }
 
 TEST_F(SceneCheckTest, AnExactBallPassesEveryCheck) {
-    const SceneCheckReport report = check(ball("return v3_length(p) - 1.0f;"));
+    const SceneCheckReport report = check(ball_with_pair(
+        "return v3_length(p) - 1.0f;", "*da = v3_length(a) - 1.0f; *db = v3_length(b) - 1.0f;"));
     EXPECT_TRUE(report.passed()) << failures(report);
     ASSERT_EQ(report.results.size(), scene_check_names().size());
     for (const CheckResult& result : report.results) {
@@ -188,6 +200,28 @@ TEST_F(SceneCheckTest, LanesThatDisagreeWithSingleRaysFail) {
     EXPECT_NE(agreement.detail.find("width 1 vs 4"), std::string::npos) << agreement.detail;
 }
 
+// A pair must give each point what scene_de gives it. One that gives the second point a DE
+// nudged by a few ulps (as a pair computed in another order might) fails, naming the points;
+// without a pair of its own the check is skipped.
+TEST_F(SceneCheckTest, APairThatDisagreesWithTheDeFails) {
+    const std::string de = "return v3_length(p) - 1.0f;";
+    const Scene nudged = ball_with_pair(de,
+                                        "*da = scene_de(a, PARAMS_PASS); "
+                                        "*db = scene_de(b, PARAMS_PASS) * 1.0000005f;");
+    const CheckResult bad = SceneChecker(shared_device(), cache_, nudged).de_pair();
+    ASSERT_EQ(bad.status, CheckStatus::Failed) << bad.detail;
+    EXPECT_NE(bad.detail.find("points get another DE from scene_de_pair"), std::string::npos)
+        << bad.detail;
+    const Scene right = ball_with_pair(de,
+                                       "*da = scene_de(a, PARAMS_PASS); "
+                                       "*db = scene_de(b, PARAMS_PASS);");
+    const CheckResult good = SceneChecker(shared_device(), cache_, right).de_pair();
+    EXPECT_EQ(good.status, CheckStatus::Passed) << good.detail;
+    const Scene without = ball(de);
+    EXPECT_EQ(SceneChecker(shared_device(), cache_, without).de_pair().status,
+              CheckStatus::Skipped);
+}
+
 TEST_F(SceneCheckTest, ACameraThatSeesNothingFails) {
     Scene scene = ball("return v3_length(p) - 1.0f;");
     scene.cameras[1].view.target = {3.0, 2.0, 10.0};  // looking up, away from the ball
@@ -206,7 +240,7 @@ TEST_F(SceneCheckTest, AnInsideOnlySceneSkipsTheDistanceChecks) {
     const SceneCheckReport report = check(scene);
     EXPECT_TRUE(report.passed()) << failures(report);
     for (const char* name : {"hard-points", "lipschitz", "march-safety", "normals-at-hits",
-                             "relaxed-steps", "packet-agreement", "default-view"}) {
+                             "relaxed-steps", "packet-agreement", "de-pair", "default-view"}) {
         EXPECT_EQ(find_check(report, name).status, CheckStatus::Skipped) << name;
     }
     for (const char* name : {"hard-cameras", "parameter-extremes", "cameras-and-paths"}) {
