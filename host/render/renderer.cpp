@@ -241,6 +241,7 @@ Renderer::Renderer(const ComputeDevice& device, ProgramCache& cache, const Scene
     switches_.packet_width = trusted_packet_width(device, cache, switches.double_precision,
                                                   switches.packet_width, warn_once);
     program_ = cache.build(device, assemble_program(scene, switches_), &build_report_);
+    tiles_per_item_ = pairs_tiles(scene, switches_) ? 2 : 1;
     render_kernel_ = cl::Kernel(program_, "fgr_render");
     probe_kernel_ = cl::Kernel(program_, "fgr_probe_de");
     normal_kernel_ = cl::Kernel(program_, "fgr_probe_normal");
@@ -367,8 +368,7 @@ Frame Renderer::render(const FrameRequest& request) {
     const int per_launch = std::max(1, mode_->launch_samples(request));
     const int sample_launches = (request.samples + per_launch - 1) / per_launch;
     const int bands = frame_bands(request, region, scene_, switches_.mode, per_launch);
-    // The render kernel's work-items: a tile each, or a pair of tiles (pairs_tiles).
-    const int items = pairs_tiles(scene_, switches_) ? (tiles + 1) / 2 : tiles;
+    const int items = (tiles + tiles_per_item_ - 1) / tiles_per_item_;  // the render kernel's
     // The launches in all, as launch_tiles makes them.
     const int band = band_tiles(items, group, bands);
     const long launches = static_cast<long>(sample_launches) * ((items + band - 1) / band);
@@ -492,13 +492,8 @@ PairedDistances Renderer::probe_de_pairs(std::span<const glm::vec3> points,
     if (points.empty()) return {};
     int plane = 0;
     const std::vector<glm::dvec3> wide(points.begin(), points.end());
-    const int packets =
-        (static_cast<int>(points.size()) + switches_.packet_width - 1) / switches_.packet_width;
-    // Half the packets apart: a first point's partner lies far from it, its orbit its own.
-    const int shift = std::max(1, packets / 2);
     const std::vector<float> planes = run_probe(
-        pair_probe_kernel_, wide, params, FGR_PROBE_DE_PAIR_PLANES,
-        [shift](cl::Kernel& kernel) { kernel.setArg(FGR_PROBE_ARG_SHIFT, shift); }, &plane);
+        pair_probe_kernel_, wide, params, FGR_PROBE_DE_PAIR_PLANES, [](cl::Kernel&) {}, &plane);
     PairedDistances distances;
     distances.first.assign(planes.begin(), planes.begin() + static_cast<long>(points.size()));
     distances.second.assign(planes.begin() + plane,

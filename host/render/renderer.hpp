@@ -289,6 +289,7 @@ private:
     cl::Kernel probe_kernel_;
     cl::Kernel normal_kernel_;
     cl::Kernel pair_probe_kernel_;
+    int tiles_per_item_ = 1;  // the render kernel's tiles a work-item: 2 where it pairs them
     std::unique_ptr<ModeKernel> mode_;      // the render mode's own arguments and planes
     std::unique_ptr<ConePrepass> prepass_;  // where camera rays start
     std::unique_ptr<FramePlanes> planes_;   // what the kernels write, kept between frames

@@ -172,10 +172,15 @@ std::string without_comments(std::string_view source) {
     return out;
 }
 
-// Whether the source says `#define NAME` on a line of its own, outside comments.
-bool declares(std::string_view source, const std::string& name) {
+// The line `#define NAME` (NAME a plain identifier), for declares.
+std::regex define_directive(const std::string& name) {
+    return std::regex("^[ \t]*#[ \t]*define[ \t]+" + name + "\\b", std::regex::multiline);
+}
+
+// Whether the source says `#define NAME` on a line of its own, outside comments; `directive` is
+// define_directive(name), built once by the caller.
+bool declares(std::string_view source, std::string_view name, const std::regex& directive) {
     if (source.find(name) == std::string_view::npos) return false;
-    const std::regex directive("^[ \t]*#[ \t]*define[ \t]+" + name + "\\b", std::regex::multiline);
     const std::string code = without_comments(source);
     return std::regex_search(code, directive);
 }
@@ -263,9 +268,15 @@ std::string offered_choices_text(const ParamInfo& param) {
     return names;
 }
 
-bool Scene::inside_only() const { return declares(source, "FGR_SCENE_INSIDE_ONLY"); }
+bool Scene::inside_only() const {
+    static const std::regex directive = define_directive("FGR_SCENE_INSIDE_ONLY");
+    return declares(source, "FGR_SCENE_INSIDE_ONLY", directive);
+}
 
-bool Scene::pairs_distances() const { return declares(source, "FGR_SCENE_HAS_DE_PAIR"); }
+bool Scene::pairs_distances() const {
+    static const std::regex directive = define_directive("FGR_SCENE_HAS_DE_PAIR");
+    return declares(source, "FGR_SCENE_HAS_DE_PAIR", directive);
+}
 
 bool Scene::has_distance_estimator() const { return ifs == nullptr && !inside_only(); }
 
