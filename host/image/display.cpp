@@ -101,7 +101,7 @@ void encode_display(const std::vector<float>& linear, float exposure, Curve curv
             const Indices index = table_index(curve(lanes * exposure));
             for (size_t lane = 0; lane < kLanes; ++lane) encoded[i + lane] = table[index[lane]];
         }
-        for (; i < last; ++i) encoded[i] = table[table_index(curve(values[i] * exposure))];
+        for (; i < last; ++i) encoded[i] = encode_srgb_with(table, curve(values[i] * exposure));
     });
 }
 

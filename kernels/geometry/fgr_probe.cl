@@ -43,15 +43,15 @@ __kernel void fgr_probe_normal(__global const float* points, int plane_size, int
     fgr_store(n.z, packet, out + 2 * plane_size);
 }
 
-/* scene_de_pair over pairs of packets: packet i as the first of a pair with packet
- * (i + shift) % packet_count as the second, so that every packet is the first of one pair and the
- * second of another (plane 0: its DE as the first, plane 1: as the second). `fgr check` compares
- * both with scene_de. */
+/* scene_de_pair over pairs of packets: packet i as the first of a pair with the packet half the
+ * packets on (modulo their count) as the second, so that every packet is the first of one pair
+ * and the second of another, far from it (plane 0: its DE as the first, plane 1: as the second).
+ * `fgr check` compares both with scene_de. */
 __kernel void fgr_probe_de_pair(__global const float* points, int plane_size, int packet_count,
-                                __global float* out, PARAMS, int shift) {
+                                __global float* out, PARAMS) {
     const int packet = get_global_id(0);
     if (packet >= packet_count) return;
-    const int partner = (packet + shift) % packet_count;
+    const int partner = (packet + max(packet_count / 2, 1)) % packet_count;
     real first, second;
     scene_de_pair(load_probe_point(points, plane_size, packet),
                   load_probe_point(points, plane_size, partner), &first, &second, PARAMS_PASS);

@@ -50,7 +50,6 @@
 #define FGR_PROBE_ARG_OUT 3          /* __global float*: FGR_PROBE_*_PLANES planes */
 #define FGR_PROBE_ARG_PARAMS 4       /* __constant float* */
 #define FGR_PROBE_ARG_EPS 5          /* fgr_probe_normal: float, the stencil's size */
-#define FGR_PROBE_ARG_SHIFT 5        /* fgr_probe_de_pair: int, packets to a first's partner */
 
 /* The device math self-test's kernels, fgr_check_<function> (fgr_math_check.cl). */
 #define FGR_MATH_CHECK_ARG_A 0          /* __global const lane_scalar*: first operands */
